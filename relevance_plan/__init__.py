@@ -1,0 +1,3 @@
+"""relevance-plan: prune what does not matter, then plan."""
+
+__version__ = "0.1.0"

@@ -1,0 +1,64 @@
+"""One exception hierarchy for the whole package.
+
+Library code raises these; only ``cli.py`` turns them into exit codes.
+Each error carries the offending file and, where known, the line, so the
+CLI can print one precise line.
+"""
+
+from __future__ import annotations
+
+
+class RelevancePlanError(Exception):
+    """Root of every error this package raises on purpose."""
+
+    def __init__(self, message: str, *, path: str | None = None, line: int | None = None):
+        super().__init__(message)
+        self.message = message
+        self.path = str(path) if path is not None else None
+        self.line = line
+
+    def __str__(self) -> str:
+        where = ""
+        if self.path:
+            where = self.path + (f":{self.line}" if self.line else "") + ": "
+        return where + self.message
+
+
+class UsageError(RelevancePlanError):
+    """A bad argument value: threshold outside [0, 1], negative count, unknown name."""
+
+
+class InputFileError(RelevancePlanError):
+    """A file or directory that is missing, unreadable or unwritable."""
+
+
+class PDDLParseError(RelevancePlanError):
+    """Malformed PDDL text."""
+
+
+class UnsupportedFeatureError(RelevancePlanError):
+    """Legal PDDL that this tool does not handle (durative actions, fluents, ...)."""
+
+
+class DomainMismatchError(RelevancePlanError):
+    """A problem that does not belong to the given domain."""
+
+
+class ModelError(RelevancePlanError):
+    """An invalid knowledge-model file (bad YAML, probability outside [0, 1], ...)."""
+
+
+class PlannerError(RelevancePlanError):
+    """The planner cannot be found or started."""
+
+
+class ValidatorUnavailableError(RelevancePlanError):
+    """No plan validator could run."""
+
+
+class StoreError(RelevancePlanError):
+    """A results store that cannot be opened or belongs to an incompatible version."""
+
+
+class SchedulerError(RelevancePlanError):
+    """A Dask scheduler that cannot be reached."""

@@ -1,0 +1,76 @@
+"""Exit codes of the ``relevance-plan`` command, grouped by tens.
+
+Modelled on Fast Downward's ``driver/returncodes.py``: 0-9 success,
+10-19 no plan, 20-29 resource limits, 30-39 bad input, 40-49 tool errors.
+``cli.py`` is the only module that calls ``sys.exit``.
+"""
+
+from __future__ import annotations
+
+from enum import IntEnum
+
+from . import errors
+
+
+class ExitCode(IntEnum):
+    SUCCESS = 0
+    # 2 is click's own code for a malformed command line (unknown option, missing argument).
+    COMMAND_LINE = 2
+    UNSOLVABLE = 10
+    NO_VALID_PLAN = 11
+    INSUFFICIENT_CUES = 12
+    OUT_OF_TIME = 20
+    OUT_OF_MEMORY = 21
+    USAGE = 30
+    INPUT_FILE = 31
+    PDDL_SYNTAX = 32
+    UNSUPPORTED_PDDL = 33
+    DOMAIN_MISMATCH = 34
+    MODEL = 35
+    STORE = 36
+    SCHEDULER = 37
+    PLANNER = 40
+    VALIDATOR = 41
+    INTERRUPTED = 130
+
+
+EXIT_CODE_DESCRIPTIONS: dict[ExitCode, str] = {
+    ExitCode.SUCCESS: "success: a plan was found and validated on the original problem (or the command finished)",
+    ExitCode.COMMAND_LINE: "malformed command line (unknown option, missing argument)",
+    ExitCode.UNSOLVABLE: "the original problem is unsolvable",
+    ExitCode.NO_VALID_PLAN: "no valid plan: search ended without one (incomplete search, invalid plans, or --no-relax failure)",
+    ExitCode.INSUFFICIENT_CUES: "insufficient cues: relevance cannot be decided; give --task, --objective or --human",
+    ExitCode.OUT_OF_TIME: "out of time",
+    ExitCode.OUT_OF_MEMORY: "out of memory",
+    ExitCode.USAGE: "bad argument value (threshold outside [0, 1], unknown method, negative count, ...)",
+    ExitCode.INPUT_FILE: "missing, unreadable or unwritable file or directory",
+    ExitCode.PDDL_SYNTAX: "malformed PDDL",
+    ExitCode.UNSUPPORTED_PDDL: "PDDL feature not supported",
+    ExitCode.DOMAIN_MISMATCH: "problem does not belong to the domain",
+    ExitCode.MODEL: "invalid knowledge model (YAML, schema, probability, unknown human or objective)",
+    ExitCode.STORE: "results store unusable or from an incompatible version",
+    ExitCode.SCHEDULER: "Dask scheduler unreachable or Dask not installed",
+    ExitCode.PLANNER: "planner not found, failed to start, or crashed",
+    ExitCode.VALIDATOR: "no plan validator could run",
+    ExitCode.INTERRUPTED: "interrupted (Ctrl-C); finished results are kept",
+}
+
+_ERROR_CODES: tuple[tuple[type[errors.RelevancePlanError], ExitCode], ...] = (
+    (errors.UsageError, ExitCode.USAGE),
+    (errors.InputFileError, ExitCode.INPUT_FILE),
+    (errors.PDDLParseError, ExitCode.PDDL_SYNTAX),
+    (errors.UnsupportedFeatureError, ExitCode.UNSUPPORTED_PDDL),
+    (errors.DomainMismatchError, ExitCode.DOMAIN_MISMATCH),
+    (errors.ModelError, ExitCode.MODEL),
+    (errors.StoreError, ExitCode.STORE),
+    (errors.SchedulerError, ExitCode.SCHEDULER),
+    (errors.PlannerError, ExitCode.PLANNER),
+    (errors.ValidatorUnavailableError, ExitCode.VALIDATOR),
+)
+
+
+def exit_code_for_error(error: errors.RelevancePlanError) -> ExitCode:
+    for error_type, code in _ERROR_CODES:
+        if isinstance(error, error_type):
+            return code
+    return ExitCode.USAGE
