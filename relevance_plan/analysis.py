@@ -154,13 +154,6 @@ def analyse_goal(domain: Domain, problem: Problem, index: InitIndex | None = Non
     index = index or index_init(problem)
     objects = dict(domain.constants)
     objects.update(problem.objects)
-    def narrower(a: str, b: str) -> str | None:
-        if domain.is_subtype(a, b):
-            return a
-        if domain.is_subtype(b, a):
-            return b
-        return None
-
     goal_types = set()
     start: list[tuple[tuple, int]] = []
     stack = [(problem.goal, {})]
@@ -211,67 +204,31 @@ def analyse_goal(domain: Domain, problem: Problem, index: InitIndex | None = Non
         best[pattern] = depth
         if initially_satisfiable(pattern):
             continue
-        predicate, pattern_args = pattern
-        for action, added, condition in achievers.get(predicate, ()):
-            params = dict(action.parameters)
-            bound: dict[str, tuple] = {}
-            ok = True
-            for arg, want in zip(added[2], pattern_args):
-                if arg.startswith("?"):
-                    declared = params.get(arg, "object")
-                    if want[0] == "obj":
-                        kind = objects.get(want[1])
-                        if kind is None or not domain.is_subtype(kind, declared):
-                            ok = False
-                            break
-                        bound[arg] = want
-                    else:
-                        narrowed = narrower(declared, want[1])
-                        if narrowed is None:
-                            ok = False
-                            break
-                        bound[arg] = ("type", narrowed)
-                elif want[0] == "obj" and want[1] != arg:
-                    ok = False
-                    break
-            if not ok:
+        options = []
+        for action, added, condition in achievers.get(pattern[0], ()):
+            bound = _unify(domain, objects, action, added, pattern[1])
+            if bound is not None:
+                pre_atoms = [a for a in _atoms_with_polarity(("and", action.precondition, condition)) if a[2]]
+                options.append((action, bound, pre_atoms, _roles(action, bound, pre_atoms, index)))
+        if not options:
+            continue
+        # Only the achievers that need the fewest new roles count: picking up a
+        # cup needs nothing new, unstacking it from "some item" would make every
+        # item look useful.
+        fewest = min(len(option[3]) for option in options)
+        for action, bound, pre_atoms, roles_here in options:
+            if len(roles_here) != fewest:
                 continue
-            pre_atoms = [a for a in _atoms_with_polarity(("and", action.precondition, condition)) if a[2]]
-            anchored = set(bound)
-            new_vars = [p for p in params if p not in bound]
-            changed = True
-            while changed:
-                changed = False
-                for var in new_vars:
-                    if var in anchored:
-                        continue
-                    for predicate_name, args, _ in pre_atoms:
-                        if var not in args:
-                            continue
-                        if predicate_name in index.singletons:
-                            anchored.add(var)
-                            break
-                        position = args.index(var)
-                        if any(
-                            (other in anchored or not other.startswith("?"))
-                            and (predicate_name, j, position) in index.functional
-                            for j, other in enumerate(args)
-                            if j != position
-                        ):
-                            anchored.add(var)
-                            break
-                    if var in anchored:
-                        changed = True
-            roles_here = {v for v in new_vars if v not in anchored}
+            params = dict(action.parameters)
             for var in roles_here:
                 type_name = params[var]
                 if role_depth.get(type_name, 1 << 30) > depth + 1:
                     role_depth[type_name] = depth + 1
             for predicate_name, args, _ in pre_atoms:
-                # A condition on a newly introduced role is one step further away.
-                next_depth = depth + (1 if roles_here.intersection(args) else 0)
                 if predicate_name == "=":
                     continue
+                # A condition on a newly introduced role is one step further away.
+                next_depth = depth + (1 if roles_here.intersection(args) else 0)
                 new_args = []
                 for arg in args:
                     if arg in bound:
@@ -310,3 +267,52 @@ def single_valued_predicates(domain: Domain, index: InitIndex) -> frozenset:
         ):
             result.add(predicate)
     return frozenset(result)
+
+
+def _unify(domain: Domain, objects: Mapping[str, str], action, added, pattern_args) -> dict | None:
+    """Bind the achiever's parameters to the pattern's objects and types, or None if they clash."""
+    params = dict(action.parameters)
+    bound: dict[str, tuple] = {}
+    for arg, want in zip(added[2], pattern_args):
+        if arg.startswith("?"):
+            declared = params.get(arg, "object")
+            if want[0] == "obj":
+                kind = objects.get(want[1])
+                if kind is None or not domain.is_subtype(kind, declared):
+                    return None
+                bound[arg] = want
+            elif domain.is_subtype(declared, want[1]):
+                bound[arg] = ("type", declared)
+            elif domain.is_subtype(want[1], declared):
+                bound[arg] = ("type", want[1])
+            else:
+                return None
+        elif want[0] == "obj" and want[1] != arg:
+            return None
+    return bound
+
+
+def _roles(action, bound: Mapping[str, tuple], pre_atoms, index: InitIndex) -> set:
+    """New parameters the initial state does not determine from known ones."""
+    anchored = set(bound)
+    new_vars = [name for name, _ in action.parameters if name not in bound]
+    changed = True
+    while changed:
+        changed = False
+        for var in new_vars:
+            if var in anchored:
+                continue
+            for predicate_name, args, _ in pre_atoms:
+                if var not in args:
+                    continue
+                position = args.index(var)
+                if predicate_name in index.singletons or any(
+                    (other in anchored or not other.startswith("?"))
+                    and (predicate_name, j, position) in index.functional
+                    for j, other in enumerate(args)
+                    if j != position
+                ):
+                    anchored.add(var)
+                    changed = True
+                    break
+    return {var for var in new_vars if var not in anchored}

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 import os
 import tempfile
 from pathlib import Path
@@ -50,6 +51,60 @@ def write_text_atomic(path: str | os.PathLike, text: str) -> Path:
     try:
         with os.fdopen(handle, "w", encoding="utf-8") as stream:
             stream.write(text)
+        os.replace(temporary, path)
+    except OSError as error:
+        try:
+            os.unlink(temporary)
+        except OSError:
+            pass
+        raise InputFileError(f"cannot write file: {error.strerror}", path=str(path)) from None
+    return path
+
+
+@contextlib.contextmanager
+def scratch_directory(prefix: str = "relevance-plan-"):
+    """A private temporary directory for pruned problems, removed afterwards."""
+    with tempfile.TemporaryDirectory(prefix=prefix) as directory:
+        yield Path(directory)
+
+
+def read_sidecar(path: str | os.PathLike) -> dict:
+    """A generator sidecar (PROBLEM.json): ground truth and provenance."""
+    import json
+
+    try:
+        data = json.loads(read_text(path, "sidecar"))
+    except ValueError as error:
+        raise InputFileError(f"sidecar is not valid JSON: {error}", path=str(path)) from None
+    if not isinstance(data, dict):
+        raise InputFileError("sidecar must hold a JSON object", path=str(path))
+    return data
+
+
+def find_suite_problems(directory: str | os.PathLike) -> tuple[Path, list[Path]]:
+    """The suite's domain file and its problem files, sorted by name."""
+    directory = Path(directory)
+    if not directory.is_dir():
+        raise InputFileError("suite directory not found", path=str(directory))
+    domain = directory / "domain.pddl"
+    if not domain.is_file():
+        raise InputFileError("suite has no domain.pddl", path=str(directory))
+    problems = sorted(p for p in directory.glob("*.pddl") if p.name != "domain.pddl")
+    if not problems:
+        raise InputFileError("suite has no problem files", path=str(directory))
+    return domain, problems
+
+
+def write_bytes_atomic(path: str | os.PathLike, data: bytes) -> Path:
+    """Binary twin of ``write_text_atomic`` (figures)."""
+    path = Path(path)
+    directory = path.parent if str(path.parent) else Path(".")
+    if not directory.is_dir():
+        raise InputFileError("output directory does not exist", path=str(directory))
+    handle, temporary = tempfile.mkstemp(prefix="." + path.name + ".", suffix=".tmp", dir=directory)
+    try:
+        with os.fdopen(handle, "wb") as stream:
+            stream.write(data)
         os.replace(temporary, path)
     except OSError as error:
         try:

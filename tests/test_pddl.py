@@ -1,0 +1,105 @@
+"""Reading PDDL, error lines, and writing pruned problems that keep the user's text."""
+
+import pytest
+
+from relevance_plan.errors import DomainMismatchError, PDDLParseError, UnsupportedFeatureError
+from relevance_plan.io import load_domain
+from relevance_plan.pddl import goal_objects, read_domain, read_problem
+from relevance_plan.writer import write_pruned_problem
+
+from kitchen import coffee_problem
+
+
+@pytest.fixture
+def coffee(coffee_domain_path):
+    return load_domain(coffee_domain_path)
+
+
+def test_domain_has_types_predicates_actions(coffee):
+    assert coffee.name == "coffee"
+    assert coffee.is_subtype("cup", "item") and coffee.is_subtype("container", "place")
+    assert not coffee.is_subtype("cup", "place")
+    assert {a.name for a in coffee.actions} >= {"pick", "put-down", "stack", "unstack", "serve-coffee"}
+    assert coffee.predicates["on"] == (("?x", "item"), ("?y", "item"))
+
+
+def test_problem_reads_objects_init_goal(coffee):
+    problem = read_problem(coffee_problem(), coffee, "p.pddl")
+    assert problem.objects["plastic_cup_1"] == "cup"
+    assert ("on", "dinner_plate_1", "plastic_cup_1") in problem.init
+    assert goal_objects(problem, coffee) == {"alice"}
+
+
+def test_names_are_case_insensitive_but_spelling_is_kept(coffee):
+    text = coffee_problem().replace("plastic_cup_1 paper_cup_1 - cup", "Plastic_Cup_1 paper_cup_1 - cup")
+    problem = read_problem(text, coffee)
+    assert "plastic_cup_1" in problem.objects
+    assert problem.display("plastic_cup_1") == "Plastic_Cup_1"
+
+
+@pytest.mark.parametrize(
+    "mutate, error, line",
+    [
+        (lambda t: t.replace("(hand-empty)", "(hand-empty"), PDDLParseError, None),
+        (lambda t: t.replace("(:domain coffee)", "(:domain cereal)"), DomainMismatchError, 2),
+        (lambda t: t.replace("(hand-empty)", "(hand-full)"), DomainMismatchError, None),
+        (lambda t: t.replace("(robot-at counter_1)", "(robot-at kitchen_9)"), DomainMismatchError, None),
+        (lambda t: t.replace("- plate", "- saucer"), DomainMismatchError, None),
+        (lambda t: t + "(extra)", PDDLParseError, None),
+    ],
+)
+def test_bad_problems_raise_errors_with_file_and_line(coffee, mutate, error, line):
+    with pytest.raises(error) as caught:
+        read_problem(mutate(coffee_problem()), coffee, "bad.pddl")
+    assert caught.value.path == "bad.pddl"
+    assert caught.value.line is not None
+    if line is not None:
+        assert caught.value.line == line
+    assert "\n" not in str(caught.value)
+
+
+def test_unsupported_features_are_named(coffee_domain_path):
+    text = coffee_domain_path.read_text().replace(":negative-preconditions", ":negative-preconditions :durative-actions")
+    with pytest.raises(UnsupportedFeatureError, match="durative-actions"):
+        read_domain(text, "d.pddl")
+    with pytest.raises(UnsupportedFeatureError, match="derived"):
+        read_domain("(define (domain d) (:predicates (p)) (:derived (p) (and)))", "d.pddl")
+
+
+def test_problem_file_given_as_domain_is_explained(coffee):
+    with pytest.raises(PDDLParseError, match="problem file, not a domain"):
+        read_domain(coffee_problem(), "swapped.pddl")
+
+
+def test_pruned_problem_keeps_names_layout_and_drops_facts(coffee):
+    text = coffee_problem().replace("plastic_cup_1 paper_cup_1 - cup", "Plastic_Cup_1 paper_cup_1 - cup")
+    problem = read_problem(text, coffee, "p.pddl")
+    kept = set(problem.objects) - {"paper_cup_1", "dinner_plate_2"}
+    pruned = write_pruned_problem(problem, kept)
+    again = read_problem(pruned, coffee)
+    assert set(again.objects) == kept
+    assert again.init == {atom for atom in problem.init if set(atom[1:]) <= kept}
+    assert "Plastic_Cup_1 - cup" in pruned  # user's spelling and grouping survive
+    assert "paper_cup_1" not in pruned and "dinner_plate_2" not in pruned
+    assert again.goal == problem.goal
+    # every line is an original line, at most minus the removed names
+    original_lines = set(text.splitlines())
+    for line in pruned.splitlines():
+        assert line in original_lines or any(
+            line == original.replace(f"{name} ", "") for original in original_lines
+            for name in ("paper_cup_1", "dinner_plate_2")
+        ), line
+
+
+def test_pruning_a_whole_type_group_removes_its_type(coffee):
+    problem = read_problem(coffee_problem(), coffee)
+    kept = set(problem.objects) - {"dinner_plate_1", "dinner_plate_2"}
+    pruned = write_pruned_problem(problem, kept)
+    assert "- plate" not in pruned
+    assert set(read_problem(pruned, coffee).objects) == kept
+
+
+def test_keeping_everything_returns_the_text_unchanged(coffee):
+    text = coffee_problem()
+    problem = read_problem(text, coffee)
+    assert write_pruned_problem(problem, set(problem.objects)) == text
