@@ -1,0 +1,245 @@
+"""The relevance model's formulas, cue sufficiency, closure rules and scorers on tiny problems."""
+
+import math
+from types import MappingProxyType
+
+import pytest
+
+from relevance_plan.analysis import index_init, infer_constraint_rules, single_valued_predicates
+from relevance_plan.closure import close_over_constraints
+from relevance_plan.errors import ModelError, UsageError
+from relevance_plan.io import load_domain
+from relevance_plan.knowledge import parse_model
+from relevance_plan.pddl import read_domain, read_problem
+from relevance_plan.prune import Thresholds, prune_with_scores, select_relevant
+from relevance_plan.scorers import SCORERS, ScoreRequest, Task
+from relevance_plan.scorers.model import task_entropy
+
+from kitchen import coffee_problem
+from worlds import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
+
+MODEL = """
+version: 1
+domain: coffee
+entropy_bound: 1.0
+defaults: {unknown_class_relevance: 0.05, kind_relevance: 0.5}
+objectives:
+  coffee:
+    goal_predicates: [coffee-served]
+    tasks: {hot: 0.75, iced: 0.25}
+  drink:
+    tasks: {hot: 0.4, tea: 0.35, water: 0.25}
+tasks:
+  hot: {coffee: 1.0, cup: 0.9, whitener: 0.8, stirrer: 0.6}
+  iced: {coffee: 1.0, cup: 0.9, whitener: 0.4}
+  tea: {cup: 0.9}
+  water: {cup: 0.5}
+classes:
+  coffee: {types: [coffee-source]}
+  cup:
+    types: [cup]
+    kind_relevance: {plastic_cup: 0.8, paper_cup: 0.4}
+  whitener: {types: [whitener], kind_relevance: {default: 0.5}}
+  stirrer: {types: [stirrer]}
+  plate: {types: [plate]}
+  person: {types: [human], relevance: 1.0}
+  location: {types: [place], relevance_from: contents}
+placement:
+  in-closed-container: 0.8
+  covered: 0.9
+humans:
+  dana:
+    objectives:
+      drink: {tea: 1.0}
+    tasks:
+      tea: {whitener: 0.7}
+    kind_relevance:
+      cup: {paper_cup: 1.0}
+"""
+
+
+@pytest.fixture
+def task(coffee_domain_path):
+    domain = load_domain(coffee_domain_path)
+    return Task(domain, read_problem(coffee_problem(), domain, "p.pddl"))
+
+
+@pytest.fixture
+def model():
+    return parse_model(MODEL, "m.yaml")
+
+
+def score(planning_task, model, **kwargs):
+    return SCORERS["model"](planning_task, ScoreRequest(model=model, **kwargs))
+
+
+def test_class_relevance_sums_over_tasks(task, model):
+    result = score(task, model)
+    assert result.objective == "coffee"
+    assert result.class_scores["cup"] == pytest.approx(0.9 * 0.75 + 0.9 * 0.25)
+    assert result.class_scores["whitener"] == pytest.approx(0.8 * 0.75 + 0.4 * 0.25)
+    assert result.class_scores["stirrer"] == pytest.approx(0.6 * 0.75)  # iced does not mention stirrers
+    assert result.class_scores["plate"] == 0.0
+
+
+def test_element_relevance_is_class_times_kind_times_placement(task, model):
+    result = score(task, model)
+    r_cup = result.class_scores["cup"]
+    # the plastic cup has a plate on it: covered 0.9
+    assert result.element_scores["plastic_cup_1"] == pytest.approx(r_cup * 0.8 * 0.9)
+    assert result.element_scores["paper_cup_1"] == pytest.approx(r_cup * 0.4)
+    # the creamer is in the closed fridge: placement 0.8; class default kind 0.5
+    assert result.element_scores["creamer_1"] == pytest.approx(result.class_scores["whitener"] * 0.5 * 0.8)
+    # places are as relevant as the best item they hold
+    assert result.element_scores["fridge_1"] == pytest.approx(result.element_scores["creamer_1"])
+
+
+def test_entropy_test_reports_ambiguity_with_leading_tasks(task, model):
+    result = score(task, model, objective="drink")
+    assert not result.sufficient
+    assert result.task_entropy == pytest.approx(task_entropy({"hot": 0.4, "tea": 0.35, "water": 0.25}))
+    assert result.task_entropy == pytest.approx(-(0.4 * math.log(0.4) + 0.35 * math.log(0.35) + 0.25 * math.log(0.25)))
+    assert "objective ambiguous: hot 0.40, tea 0.35" in result.insufficiency
+    assert "--task or --human" in result.insufficiency
+
+
+def test_task_or_human_resolves_ambiguity(task, model):
+    assert score(task, model, objective="drink", task="hot").sufficient
+    preferred = score(task, model, objective="drink", human="dana")
+    assert preferred.sufficient and preferred.task_distribution == {"tea": 1.0}
+    assert preferred.class_scores["whitener"] == pytest.approx(0.7)  # the human's preference, not the prior (absent)
+    assert preferred.element_scores["paper_cup_1"] == pytest.approx(0.9 * 1.0)  # dana's kind preference
+
+
+def test_no_matching_objective_is_insufficient(coffee_domain_path, model):
+    domain = load_domain(coffee_domain_path)
+    text = coffee_problem().replace("(coffee-served alice)", "(stirred plastic_cup_1)")
+    result = score(Task(domain, read_problem(text, domain)), model)
+    assert not result.sufficient and "--objective" in result.insufficiency
+
+
+@pytest.mark.parametrize(
+    "kwargs, match",
+    [({"human": "zed"}, "unknown human 'zed'"), ({"objective": "lunch"}, "unknown objective 'lunch'"),
+     ({"task": "soup"}, "unknown task 'soup'")],
+)
+def test_unknown_names_are_errors(task, model, kwargs, match):
+    with pytest.raises(ModelError, match=match):
+        score(task, model, **kwargs)
+
+
+def test_unknown_classes_get_the_default_and_are_listed(coffee_domain_path, model):
+    domain = load_domain(coffee_domain_path)
+    text = coffee_problem().replace("dinner_plate_1 dinner_plate_2 - plate", "dinner_plate_1 dinner_plate_2 - board")
+    result = score(Task(domain, read_problem(text, domain)), model)
+    assert set(result.unknown) == {"dinner_plate_1", "dinner_plate_2"}
+    assert result.element_scores["dinner_plate_2"] == 0.05
+
+
+def test_thresholds_apply_to_classes_then_elements(task, model):
+    result = score(task, model)
+    selected = select_relevant(task, result, Thresholds(0.2, 0.2))
+    assert {"plastic_cup_1", "paper_cup_1", "cold_brew_1", "creamer_1", "stir_stick_1", "alice"} <= selected
+    assert "dinner_plate_2" not in selected
+    # a class threshold above R(stirrer) drops the stick though its element score alone would pass
+    strict = select_relevant(task, result, Thresholds(0.5, 0.2))
+    assert "stir_stick_1" not in strict and "plastic_cup_1" in strict
+    assert "alice" in select_relevant(task, result, Thresholds(1.0, 1.0))  # goal objects always
+
+
+@pytest.mark.parametrize("value", [-0.1, 1.5])
+def test_thresholds_outside_unit_interval_are_rejected(value):
+    with pytest.raises(UsageError):
+        Thresholds(value, 0.2)
+
+
+def test_closure_restores_blockers_places_and_robot_position(task, model):
+    result = prune_with_scores(task, score(task, model), Thresholds(), model)
+    reasons = {r.name: r for r in result.restored}
+    assert reasons["dinner_plate_1"].rule == "blocker"
+    assert reasons["dinner_plate_1"].reason == "on top of plastic_cup_1 (on dinner_plate_1 plastic_cup_1)"
+    assert "dinner_plate_2" in result.removed
+    kept_places = {"counter_1", "fridge_1", "table_1"} & result.kept
+    assert kept_places == {"counter_1", "fridge_1", "table_1"}
+
+
+def test_closure_rules_are_inferred_from_schemas(task):
+    rules = infer_constraint_rules(task.domain, task.init_index)
+    kinds = {(r.predicate, r.when_kept, r.restore, r.kind) for r in rules}
+    assert ("on", 1, 0, "blocker") in kinds  # what stands on a kept item
+    assert ("at", 0, 1, "anchor") in kinds  # the place of a kept item
+    assert single_valued_predicates(task.domain, task.init_index) == {"robot-at"}
+
+
+def test_closure_is_transitive_and_pure():
+    domain = read_domain(BLOCKSWORLD_DOMAIN)
+    problem = read_problem(blocksworld_problem(10, in_the_way=3), domain)
+    index = index_init(problem)
+    kept = frozenset({"a", "b", "c"})
+    closed, restored = close_over_constraints(kept, infer_constraint_rules(domain, index), index, problem.objects.keys())
+    assert {"x1", "x2", "x3"} <= closed
+    assert kept == {"a", "b", "c"}  # input unchanged
+    assert [r.name for r in restored][:3] == ["x1", "x2", "x3"]
+
+
+def test_model_dependencies_extend_closure(task):
+    text = MODEL + "dependencies:\n  - {predicate: human-at, when_kept: 2, restore: 1, reason: who sits there}\n"
+    model = parse_model(text, "m.yaml")
+    result = prune_with_scores(task, score(task, model), Thresholds(), model)
+    assert "alice" in result.kept
+
+
+def test_goal_scorer_finds_roles_without_a_model(task):
+    result = SCORERS["goal"](task, ScoreRequest())
+    assert result.element_scores["alice"] == 1.0
+    assert result.element_scores["plastic_cup_1"] == pytest.approx(0.6)
+    assert result.element_scores["creamer_1"] == pytest.approx(0.36)
+    assert result.element_scores["dinner_plate_2"] == 0.0
+
+
+def test_goal_scorer_on_classic_domains():
+    domain = read_domain(GRIPPER_DOMAIN)
+    task = Task(domain, read_problem(gripper_problem(30), domain))
+    result = prune_with_scores(task, SCORERS["goal"](task, ScoreRequest()))
+    assert {"ball1", "ball2", "left", "right", "r1", "r2"} <= result.kept
+    assert len(result.kept) < 15
+    domain = read_domain(BLOCKSWORLD_DOMAIN)
+    task = Task(domain, read_problem(blocksworld_problem(60, in_the_way=2), domain))
+    result = prune_with_scores(task, SCORERS["goal"](task, ScoreRequest()))
+    assert result.kept == {"a", "b", "c", "x1", "x2"}
+
+
+def test_random_scorer_is_seeded(task):
+    first = SCORERS["random"](task, ScoreRequest(seed=3))
+    again = SCORERS["random"](task, ScoreRequest(seed=3))
+    other = SCORERS["random"](task, ScoreRequest(seed=4))
+    assert first.element_scores == again.element_scores
+    assert first.element_scores != other.element_scores
+
+
+def test_oracle_needs_a_sidecar(task):
+    with pytest.raises(UsageError, match="sidecar"):
+        SCORERS["oracle"](task, ScoreRequest())
+    result = SCORERS["oracle"](task, ScoreRequest(necessary=frozenset({"paper_cup_1"})))
+    assert result.element_scores["paper_cup_1"] == 1.0 and result.element_scores["plastic_cup_1"] == 0.0
+
+
+@pytest.mark.parametrize(
+    "mutate, match, line",
+    [
+        (lambda t: t.replace("hot: 0.75, iced: 0.25", "hot: 0.75, iced: 1.25"), "outside \\[0, 1\\]", 9),
+        (lambda t: t.replace("hot: 0.75, iced: 0.25", "hot: 0.5, iced: 0.25"), "sums to 0.750", 9),
+        (lambda t: t.replace("cup: 0.9, whitener: 0.8", "cup: 0.9, milkk: 0.8"), "unknown class 'milkk'", 13),
+        (lambda t: t.replace("in-closed-container: 0.8", "in-closed-container: high"), "must be a number", 28),
+        (lambda t: t.replace("version: 1", "version: 7"), "'version' must be 1", 2),
+        (lambda t: t.replace("  tea: {cup: 0.9}\n", ""), "task 'tea' that has no entry", None),
+        (lambda t: t.replace("tasks: {hot: 0.75", "tasks: {hot: [0.75"), "invalid YAML", 9),
+        (lambda t: t + "colors: [red]\n", "unknown key 'colors'", None),
+    ],
+)
+def test_invalid_models_name_file_and_line(mutate, match, line):
+    with pytest.raises(ModelError, match=match) as caught:
+        parse_model(mutate(MODEL), "bad.yaml")
+    assert caught.value.path == "bad.yaml"
+    if line is not None:
+        assert caught.value.line == line
