@@ -53,6 +53,7 @@ class PlanOptions:
     relax_factor: float = 0.5  # thresholds shrink by this factor at each widening
     first_share: float = 0.5  # share of the remaining time a pruned attempt may use
     scorer: str | None = None  # overrides the method's scorer
+    goal_filter: bool = True  # for 'relevance': drop relevant objects no goal-directed action can use
     model_path: str | None = None
     objective: str | None = None
     task: str | None = None
@@ -245,7 +246,8 @@ def plan_task(
             objects_total=total,
             message=scores.insufficiency,
         )
-    pruned = prune_with_scores(task, scores, options.thresholds, model)
+    goal_filter = options.goal_filter and options.method == "relevance"
+    pruned = prune_with_scores(task, scores, options.thresholds, model, goal_filter=goal_filter)
     relevance_time = time.perf_counter() - started
     say(f"kept {len(pruned.kept)} of {total} objects ({len(pruned.restored)} restored by closure)")
 
@@ -277,7 +279,7 @@ def plan_task(
             thresholds = thresholds.scaled(options.relax_factor)
             ranked = ranked_by_score(current)
             extra = extra | frozenset(ranked[: max(4, len(ranked) // 4)])
-            current = prune_with_scores(task, scores, thresholds, model, extra)
+            current = prune_with_scores(task, scores, thresholds, model, extra, goal_filter=goal_filter)
             relevance_time += time.perf_counter() - widen_started
     return _finish(task, options, attempts, started, relevance_time, pruned)
 

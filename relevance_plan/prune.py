@@ -57,15 +57,27 @@ def constraint_rules(task: Task, model: KnowledgeModel | None) -> tuple[Constrai
     return tuple(rules)
 
 
-def select_relevant(task: Task, scores: ScoreResult, thresholds: Thresholds) -> frozenset:
-    """Elements whose class passes tau_c (when classes are scored) and whose score passes tau_e."""
+def can_serve_goal(task: Task, name: str) -> bool:
+    """Whether the object can fill a role toward the goal (see ``analysis.analyse_goal``)."""
+    roles = task.goal_analysis.role_depth
+    return name in task.goal_objects or any(t in roles for t in task.domain.ancestors(task.problem.objects[name]))
+
+
+def select_relevant(task: Task, scores: ScoreResult, thresholds: Thresholds, goal_filter: bool = False) -> frozenset:
+    """Elements whose class passes tau_c (when classes are scored) and whose score passes tau_e.
+
+    With ``goal_filter``, relevant objects no action toward the goal can use
+    (a napkin the domain can only carry around) are left out too: relevant to
+    the human, useless to the planner.  Closure still puts back what the kept
+    objects need (their places, what stands on them).
+    """
     selected = set(task.goal_objects & task.problem.objects.keys())
     for name, score in scores.element_scores.items():
         if scores.class_scores:
             class_name = scores.element_class.get(name)
             if scores.class_scores.get(class_name, 0.0) <= thresholds.tau_class:
                 continue
-        if score > thresholds.tau_element:
+        if score > thresholds.tau_element and (not goal_filter or can_serve_goal(task, name)):
             selected.add(name)
     return frozenset(selected)
 
@@ -76,9 +88,10 @@ def prune_with_scores(
     thresholds: Thresholds = Thresholds(),
     model: KnowledgeModel | None = None,
     extra: AbstractSet[str] = frozenset(),
+    goal_filter: bool = False,
 ) -> PruneResult:
     """Threshold the scores, add ``extra`` objects, close over constraints, write the text."""
-    selected = select_relevant(task, scores, thresholds) | (frozenset(extra) & task.problem.objects.keys())
+    selected = select_relevant(task, scores, thresholds, goal_filter) | (frozenset(extra) & task.problem.objects.keys())
     kept, restored = close_over_constraints(
         selected,
         constraint_rules(task, model),
