@@ -1,0 +1,172 @@
+"""The command line: outputs, JSON fields, and one-line errors with documented exit codes."""
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from relevance_plan.cli import main
+from relevance_plan.exitcodes import ExitCode
+
+from kitchen import coffee_problem
+
+REPO = Path(__file__).resolve().parent.parent
+COFFEE_DOMAIN = REPO / "domains" / "coffee" / "domain.pddl"
+
+
+@pytest.fixture
+def runner():
+    return CliRunner()
+
+
+@pytest.fixture
+def problem(tmp_path):
+    path = tmp_path / "coffee.pddl"
+    path.write_text(coffee_problem(extra_plates=4).replace("plastic_cup_1 paper_cup_1", "Plastic_Cup_1 paper_cup_1"))
+    return path
+
+
+def invoke(runner, *args):
+    return runner.invoke(main, [str(a) for a in args], catch_exceptions=False)
+
+
+def test_score_table_and_json(runner, problem):
+    result = invoke(runner, "score", COFFEE_DOMAIN, problem)
+    assert result.exit_code == 0
+    assert "R(C)" in result.output and "side_plate_1" in result.output
+    assert "restored" in result.output and "on top of plastic_cup_1" in result.output
+    data = json.loads(invoke(runner, "score", COFFEE_DOMAIN, problem, "--json").output)
+    assert data["sufficient"] is True
+    assert {"kept", "removed", "restored", "scores", "sufficient"} <= set(data)
+    assert "Plastic_Cup_1" in data["kept"]  # the user's spelling
+    assert any(r["object"] == "dinner_plate_1" and "on top of" in r["reason"] for r in data["restored"])
+
+
+def test_score_inquiries(runner, problem):
+    data = json.loads(invoke(runner, "score", COFFEE_DOMAIN, problem, "--inquiries", "--json").output)
+    inquiries = data["inquiries"]
+    assert "cold_brew" in inquiries["necessary"]
+    assert {"plastic_cup", "paper_cup"} <= set(inquiries["questions"])
+    assert inquiries["no_relevance"] == len(data["scores"])
+    assert inquiries["with_necessity"] < inquiries["relevance_only"] < inquiries["no_relevance"]
+
+
+def test_prune_writes_a_problem_that_planners_read(runner, problem, tmp_path):
+    out = tmp_path / "pruned.pddl"
+    result = invoke(runner, "prune", COFFEE_DOMAIN, problem, "-o", out, "--json")
+    assert result.exit_code == 0
+    data = json.loads(result.output)
+    assert "side_plate_1" in data["removed"] and "Plastic_Cup_1" in data["kept"]
+    text = out.read_text()
+    assert "Plastic_Cup_1" in text and "side_plate_1" not in text
+    # unified-planning reads it
+    from unified_planning.io import PDDLReader
+
+    parsed = PDDLReader().parse_problem(str(COFFEE_DOMAIN), str(out))
+    assert len(list(parsed.all_objects)) == len(data["kept"])
+    # and Fast Downward solves it; the plan validates on the ORIGINAL problem
+    from relevance_plan.io import load_task
+    from relevance_plan.runner import run_fast_downward
+    from relevance_plan.validate import validate_plan
+
+    outcome = run_fast_downward(COFFEE_DOMAIN, out, time_limit=60)
+    assert outcome.solved
+    domain, original = load_task(COFFEE_DOMAIN, problem)
+    steps = [tuple(step.split()) for step in outcome.plan]
+    assert validate_plan(domain, original, steps).valid
+
+
+def test_plan_json_fields_and_plan_file(runner, problem, tmp_path):
+    plan_file = tmp_path / "out.plan"
+    result = invoke(runner, "plan", COFFEE_DOMAIN, problem, "--plan-file", plan_file, "--json")
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.output)
+    for key in ("status", "valid", "plan_length", "wall_time", "relevance_time", "planner_time", "objects_total",
+                "objects_kept", "attempts", "first_attempt_status"):
+        assert key in data
+    assert data["status"] == "solved" and data["valid"] is True
+    lines = [l for l in plan_file.read_text().splitlines() if not l.startswith(";")]
+    assert len(lines) == data["plan_length"]
+    assert any("Plastic_Cup_1" in l or "paper_cup_1" in l for l in lines)
+
+
+def test_plan_summary_text(runner, problem, tmp_path):
+    result = invoke(runner, "plan", COFFEE_DOMAIN, problem, "--plan-file", tmp_path / "p", "--method", "pure", "-q")
+    assert result.exit_code == 0
+    assert "valid on the original problem" in result.output
+
+
+def _bad_yaml(tmp_path):
+    path = tmp_path / "bad.yaml"
+    path.write_text("version: 1\ndomain: coffee\nobjectives: [\n")
+    return path
+
+
+def _bad_probability(tmp_path):
+    text = (REPO / "domains" / "coffee" / "relevance.yaml").read_text().replace("coffee: 0.98", "coffee: 1.98", 1)
+    path = tmp_path / "prob.yaml"
+    path.write_text(text)
+    return path
+
+
+@pytest.mark.parametrize(
+    "args, code, needle",
+    [
+        (lambda t, p: ["score", COFFEE_DOMAIN, t / "missing.pddl"], ExitCode.INPUT_FILE, "missing.pddl"),
+        (lambda t, p: ["score", t / "nodomain.pddl", p], ExitCode.INPUT_FILE, "nodomain.pddl"),
+        (lambda t, p: ["score", COFFEE_DOMAIN, _write(t, "broken.pddl", p.read_text().replace("(hand-empty)", "(hand-empty"))],
+         ExitCode.PDDL_SYNTAX, "broken.pddl"),
+        (lambda t, p: ["score", COFFEE_DOMAIN, _write(t, "other.pddl", p.read_text().replace("(:domain coffee)", "(:domain cereal)"))],
+         ExitCode.DOMAIN_MISMATCH, "other.pddl:2"),
+        (lambda t, p: ["score", COFFEE_DOMAIN, p, "--model", _bad_yaml(t)], ExitCode.MODEL, "bad.yaml:"),
+        (lambda t, p: ["score", COFFEE_DOMAIN, p, "--model", _bad_probability(t)], ExitCode.MODEL, "outside [0, 1]"),
+        (lambda t, p: ["score", COFFEE_DOMAIN, p, "--tau-class", "1.5"], ExitCode.USAGE, "--tau-class"),
+        (lambda t, p: ["score", COFFEE_DOMAIN, p, "--human", "nobody"], ExitCode.MODEL, "unknown human 'nobody'"),
+        (lambda t, p: ["score", COFFEE_DOMAIN, p, "--objective", "lunch"], ExitCode.MODEL, "unknown objective 'lunch'"),
+        (lambda t, p: ["plan", COFFEE_DOMAIN, p, "--timeout", "-3", "--plan-file", t / "x.plan"], ExitCode.USAGE, "--timeout"),
+        (lambda t, p: ["plan", COFFEE_DOMAIN, p, "--memory-limit", "2", "--plan-file", t / "x.plan"], ExitCode.USAGE, "--memory-limit"),
+        (lambda t, p: ["prune", COFFEE_DOMAIN, p, "-o", t / "x.pddl", "--objective", "drink-at-break"],
+         ExitCode.INSUFFICIENT_CUES, "objective ambiguous"),
+        (lambda t, p: ["prune", COFFEE_DOMAIN, p, "-o", t / "nodir" / "x.pddl"], ExitCode.INPUT_FILE, "nodir"),
+    ],
+)
+def test_bad_input_gives_one_line_and_exit_code(runner, problem, tmp_path, args, code, needle):
+    before = set(tmp_path.iterdir())
+    result = runner.invoke(main, [str(a) for a in args(tmp_path, problem)])
+    assert result.exit_code == int(code), result.output
+    assert needle in result.output
+    error_lines = [l for l in result.output.splitlines() if l.startswith("relevance-plan:")]
+    assert len(error_lines) >= 1 and "Traceback" not in result.output
+    created = set(tmp_path.iterdir()) - before
+    assert all(p.suffix in (".pddl", ".yaml") and p.name not in ("x.pddl", "x.plan") for p in created)
+
+
+def _write(directory, name, text):
+    path = directory / name
+    path.write_text(text)
+    return path
+
+
+def test_insufficient_cues_exit_code_from_plan(runner, problem, tmp_path):
+    result = runner.invoke(main, ["plan", str(COFFEE_DOMAIN), str(problem), "--objective", "drink-at-break",
+                                  "--plan-file", str(tmp_path / "p")])
+    assert result.exit_code == ExitCode.INSUFFICIENT_CUES
+    assert not (tmp_path / "p").exists()
+
+
+def test_no_traceback_from_the_real_command(tmp_path, problem):
+    completed = subprocess.run(
+        [sys.executable, "-m", "relevance_plan.cli", "score", str(COFFEE_DOMAIN), str(tmp_path / "nope.pddl")],
+        capture_output=True, text=True,
+    )
+    assert completed.returncode == ExitCode.INPUT_FILE
+    assert completed.stderr.strip().count("\n") == 0 and "Traceback" not in completed.stderr
+
+
+def test_exit_code_table_is_printed(runner):
+    result = invoke(runner, "exit-codes")
+    for code in ExitCode:
+        assert f"{int(code):>4}  {code.name}" in result.output

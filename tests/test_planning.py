@@ -1,0 +1,119 @@
+"""Prune-then-plan: every method's plan validates on the original; relaxation recovers."""
+
+import json
+import os
+import signal
+import time
+from pathlib import Path
+
+import pytest
+
+from relevance_plan.io import load_task
+from relevance_plan.planning import PlanOptions, PlanStatus, plan_task
+from relevance_plan.prune import Thresholds
+from relevance_plan.validate import ValidationStatus, validate_with_up
+
+from kitchen import coffee_problem
+from worlds import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
+
+REPO = Path(__file__).resolve().parent.parent
+
+
+@pytest.fixture
+def coffee_files(tmp_path, coffee_domain_path):
+    problem = tmp_path / "coffee.pddl"
+    problem.write_text(coffee_problem(extra_plates=6))
+    return coffee_domain_path, problem
+
+
+def assert_valid_on_original(domain_path, problem_path, result):
+    assert result.status is PlanStatus.SOLVED, result.message
+    assert result.valid
+    domain, problem = load_task(domain_path, problem_path)
+    # a second, independent validator agrees
+    assert validate_with_up(domain, problem, result.plan).status is ValidationStatus.VALID
+
+
+@pytest.mark.parametrize("method", ["relevance", "pure", "random"])
+def test_every_method_gives_a_plan_valid_on_the_original(coffee_files, method):
+    domain_path, problem_path = coffee_files
+    result = plan_task(domain_path, problem_path, PlanOptions(method=method, timeout=60))
+    assert_valid_on_original(domain_path, problem_path, result)
+    if method == "relevance":
+        assert result.objects_kept < result.objects_total
+        assert "side_plate_1" in result.prune.removed
+        assert "dinner_plate_1" in result.prune.kept  # it stands on the plastic cup
+    if method == "pure":
+        assert result.objects_kept == result.objects_total
+
+
+def test_oracle_uses_the_sidecar(coffee_files):
+    domain_path, problem_path = coffee_files
+    necessary = ["alice", "counter_1", "table_1", "paper_cup_1", "cold_brew_1", "creamer_1", "fridge_1", "stir_stick_1"]
+    problem_path.with_suffix(".json").write_text(json.dumps({"necessary": necessary}))
+    result = plan_task(domain_path, problem_path, PlanOptions(method="oracle", timeout=60))
+    assert_valid_on_original(domain_path, problem_path, result)
+    assert result.objects_kept == len(necessary)
+
+
+def test_relaxation_recovers_when_the_first_pruning_removed_a_needed_object(coffee_files):
+    domain_path, problem_path = coffee_files
+    strict = Thresholds(0.2, 0.85)  # keeps the cup and the coffee, drops whitener and stirrer
+    result = plan_task(domain_path, problem_path, PlanOptions(thresholds=strict, timeout=60))
+    assert_valid_on_original(domain_path, problem_path, result)
+    assert len(result.attempts) >= 2
+    assert result.first_attempt_status == "unsolvable"
+    assert result.attempts[0].objects_kept < result.attempts[-1].objects_kept
+
+
+def test_no_relax_reports_the_failed_pruning(coffee_files):
+    domain_path, problem_path = coffee_files
+    result = plan_task(domain_path, problem_path, PlanOptions(thresholds=Thresholds(0.2, 0.85), relax=False, timeout=60))
+    assert result.status is PlanStatus.NO_VALID_PLAN
+    assert len(result.attempts) == 1 and result.plan == ()
+
+
+def test_unsolvable_original_is_reported_as_unsolvable(tmp_path, coffee_domain_path):
+    problem = tmp_path / "no-cup.pddl"
+    text = coffee_problem(plate_on_cup=False).replace("plastic_cup_1 paper_cup_1 - cup", "")
+    text = "\n".join(line for line in text.splitlines() if "_cup_1" not in line)
+    problem.write_text(text)
+    result = plan_task(coffee_domain_path, problem, PlanOptions(timeout=60))
+    assert result.status is PlanStatus.UNSOLVABLE
+    assert result.attempts[-1].objects_kept == result.objects_total  # proven on the full problem
+
+
+def test_insufficient_cues_is_its_own_outcome(coffee_files):
+    domain_path, problem_path = coffee_files
+    result = plan_task(domain_path, problem_path, PlanOptions(objective="drink-at-break", timeout=60))
+    assert result.status is PlanStatus.INSUFFICIENT_CUES
+    assert "give --task or --human" in result.message
+    resolved = plan_task(domain_path, problem_path, PlanOptions(objective="drink-at-break", human="alice", timeout=60))
+    assert resolved.status is PlanStatus.SOLVED
+
+
+@pytest.mark.parametrize(
+    "domain_text, problem_text, expected_kept_at_most",
+    [
+        (BLOCKSWORLD_DOMAIN, blocksworld_problem(40, seed=2, in_the_way=2), 6),
+        (GRIPPER_DOMAIN, gripper_problem(40), 16),
+    ],
+)
+def test_goal_scorer_plans_on_classic_domains_without_a_model(tmp_path, domain_text, problem_text, expected_kept_at_most):
+    domain_path, problem_path = tmp_path / "domain.pddl", tmp_path / "problem.pddl"
+    domain_path.write_text(domain_text)
+    problem_path.write_text(problem_text)
+    result = plan_task(domain_path, problem_path, PlanOptions(timeout=60))
+    assert_valid_on_original(domain_path, problem_path, result)
+    assert result.prune.scores.scorer == "goal"
+    assert result.objects_kept <= expected_kept_at_most
+
+
+def test_out_of_time_is_reported(tmp_path):
+    domain_path, problem_path = tmp_path / "domain.pddl", tmp_path / "problem.pddl"
+    domain_path.write_text(BLOCKSWORLD_DOMAIN)
+    problem_path.write_text(blocksworld_problem(150, seed=1))
+    started = time.perf_counter()
+    result = plan_task(domain_path, problem_path, PlanOptions(method="pure", timeout=2))
+    assert result.status is PlanStatus.OUT_OF_TIME
+    assert time.perf_counter() - started < 15
