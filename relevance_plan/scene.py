@@ -68,12 +68,14 @@ def build_scene(domain: Domain, problem: Problem, predicates: ScenePredicates = 
             accessible.add(atom[1])
         elif name == predicates.human_location and len(atom) == 3:
             human_places.add(atom[2])
+            place_of.setdefault(atom[1], atom[2])  # a place matters to whoever is there too
     places = set(place_of.values())
+    humans = {atom[1] for atom in problem.init if atom[0] == predicates.human_location and len(atom) == 3}
     elements = {}
     for name, type_name in problem.objects.items():
         place = place_of.get(name)
         conditions = set()
-        if place is not None:
+        if place is not None and name not in humans:
             conditions.add("in-closed-container" if place not in accessible else "reachable")
             if place in human_places:
                 conditions.add("near-human")

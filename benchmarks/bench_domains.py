@@ -1,0 +1,57 @@
+"""Without a knowledge model: pure vs relevance (goal scorer) on classic domains.
+
+Blocksworld with extra towers and blocks stacked on the goal's blocks, and
+gripper with extra balls, in one run.  The relevance method here uses the
+domain-independent goal scorer (no model applies to these domains).
+
+    python benchmarks/bench_domains.py
+"""
+
+from __future__ import annotations
+
+import sys
+import tempfile
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(REPO))
+sys.path.insert(0, str(REPO / "tests"))
+
+from relevance_plan.planning import PlanOptions, PlanStatus, plan_task  # noqa: E402
+from worlds import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem  # noqa: E402
+
+CASES = [
+    ("blocksworld", BLOCKSWORLD_DOMAIN, lambda n: blocksworld_problem(n, seed=1, in_the_way=3), (100, 200, 300)),
+    ("gripper", GRIPPER_DOMAIN, lambda n: gripper_problem(n), (200, 500, 1000)),
+]
+
+
+def main() -> int:
+    timeout = float(sys.argv[1]) if len(sys.argv) > 1 else 120.0
+    print(f"timeout {timeout:g} s, lama-first; relevance = goal scorer (no knowledge model)")
+    print("| domain | extra objects | pure (s) | relevance (s) | pure/relevance | kept | plan valid |")
+    print("|---|---|---|---|---|---|---|")
+    with tempfile.TemporaryDirectory(prefix="bench-domains-") as scratch:
+        for name, domain_text, make, sizes in CASES:
+            domain_path = Path(scratch) / f"{name}-domain.pddl"
+            domain_path.write_text(domain_text)
+            for size in sizes:
+                problem_path = Path(scratch) / f"{name}-{size}.pddl"
+                problem_path.write_text(make(size))
+                pure = plan_task(domain_path, problem_path, PlanOptions(method="pure", timeout=timeout))
+                relevance = plan_task(domain_path, problem_path, PlanOptions(method="relevance", timeout=timeout))
+                pure_time = pure.wall_time if pure.status is PlanStatus.SOLVED else None
+                shown_pure = f"{pure.wall_time:.2f}" if pure_time else f"{pure.status.value} ({pure.wall_time:.0f})"
+                ratio = f"{pure.wall_time / relevance.wall_time:.1f}x" if relevance.status is PlanStatus.SOLVED else "–"
+                if pure_time is None and relevance.status is PlanStatus.SOLVED:
+                    ratio = ">" + ratio
+                print(
+                    f"| {name} | {size} | {shown_pure} | {relevance.wall_time:.2f} | {ratio} |"
+                    f" {relevance.objects_kept}/{relevance.objects_total} | {relevance.valid} |",
+                    flush=True,
+                )
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
