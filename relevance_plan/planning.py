@@ -38,6 +38,7 @@ class PlanStatus(enum.Enum):
     OUT_OF_MEMORY = "out-of-memory"
     INSUFFICIENT_CUES = "insufficient-cues"
     INPUT_ERROR = "input-error"
+    PLANNER_CONFIG_ERROR = "planner-config-error"
     PLANNER_ERROR = "planner-error"
     VALIDATOR_UNAVAILABLE = "validator-unavailable"
 
@@ -284,6 +285,10 @@ def plan_task(
     return _finish(task, options, attempts, started, relevance_time, pruned)
 
 
+# Driver exit codes that reject the planner configuration, not the task:
+# argparse usage error, search input error, unknown alias (driver input error).
+_CONFIG_ERROR_CODES = (2, 33, 36)
+
 _PLANNER_FAULTS = (PlannerStatus.INPUT_ERROR, PlannerStatus.UNSUPPORTED, PlannerStatus.PLANNER_CRASH)
 
 
@@ -356,6 +361,8 @@ def _finish(task: Task, options: PlanOptions, attempts: Sequence[Attempt], start
     last = attempts[-1]
     full = last.objects_kept >= total
     status = _PLANNER_TO_PLAN_STATUS.get(last.outcome.status, PlanStatus.PLANNER_ERROR)
+    if status is PlanStatus.INPUT_ERROR and last.outcome.exit_code in _CONFIG_ERROR_CODES:
+        status = PlanStatus.PLANNER_CONFIG_ERROR
     if status is PlanStatus.UNSOLVABLE and not full:
         # Only the full problem's unsolvability says anything about the user's problem.
         status = PlanStatus.NO_VALID_PLAN

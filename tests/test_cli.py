@@ -170,3 +170,13 @@ def test_exit_code_table_is_printed(runner):
     result = invoke(runner, "exit-codes")
     for code in ExitCode:
         assert f"{int(code):>4}  {code.name}" in result.output
+
+
+def test_plan_bad_planner_config_and_malformed_problem(runner, problem, tmp_path):
+    result = runner.invoke(main, ["plan", str(COFFEE_DOMAIN), str(problem), "--planner-config", "no-such-alias",
+                                  "--method", "pure", "--plan-file", str(tmp_path / "p")])
+    assert result.exit_code == ExitCode.USAGE
+    broken = _write(tmp_path, "broken.pddl", problem.read_text().replace("(:init", "(:init (at)"))
+    result = runner.invoke(main, ["plan", str(COFFEE_DOMAIN), str(broken), "--plan-file", str(tmp_path / "p")])
+    assert result.exit_code == ExitCode.DOMAIN_MISMATCH and "broken.pddl:" in result.output
+    assert not (tmp_path / "p").exists()

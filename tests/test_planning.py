@@ -117,3 +117,28 @@ def test_out_of_time_is_reported(tmp_path):
     result = plan_task(domain_path, problem_path, PlanOptions(method="pure", timeout=2))
     assert result.status is PlanStatus.OUT_OF_TIME
     assert time.perf_counter() - started < 15
+
+
+def test_out_of_memory_is_reported(tmp_path):
+    domain_path, problem_path = tmp_path / "domain.pddl", tmp_path / "problem.pddl"
+    domain_path.write_text(BLOCKSWORLD_DOMAIN)
+    problem_path.write_text(blocksworld_problem(120, seed=1))
+    result = plan_task(domain_path, problem_path, PlanOptions(method="pure", timeout=60, memory_limit_mb=60))
+    assert result.status is PlanStatus.OUT_OF_MEMORY
+
+
+def test_bad_planner_configuration_is_not_a_pddl_error(coffee_files):
+    domain_path, problem_path = coffee_files
+    result = plan_task(domain_path, problem_path, PlanOptions(method="pure", planner_config="no-such-alias", timeout=30))
+    assert result.status is PlanStatus.PLANNER_CONFIG_ERROR
+
+
+def test_a_planner_that_cannot_start_is_a_clear_error(coffee_files, monkeypatch, tmp_path):
+    from relevance_plan.errors import PlannerError
+    from relevance_plan import runner
+
+    monkeypatch.setenv("RELEVANCE_PLAN_FAST_DOWNWARD", str(tmp_path / "absent" / "fast-downward.py"))
+    runner.find_fast_downward.cache_clear() if hasattr(runner.find_fast_downward, "cache_clear") else None
+    domain_path, problem_path = coffee_files
+    with pytest.raises(PlannerError):
+        plan_task(domain_path, problem_path, PlanOptions(method="pure", timeout=30))
