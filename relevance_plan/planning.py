@@ -22,7 +22,7 @@ from typing import Callable, Sequence
 from .errors import UsageError
 from .io import load_domain, load_problem, read_text, scratch_directory, write_text_atomic
 from .knowledge import KnowledgeModel, check_model_applies, find_model, load_model
-from .prune import PruneResult, Thresholds, prune_with_scores, ranked_by_score, score_task
+from .prune import PruneResult, Thresholds, prune_with_scores, score_task, widen
 from .runner import PlannerStatus, RunOutcome, run_fast_downward
 from .scorers import ScoreRequest, Task
 from .validate import ValidationResult, ValidationStatus, validate_plan
@@ -277,10 +277,8 @@ def plan_task(
                 break
             # Widen: lower the thresholds and put back the best-ranked removed objects.
             widen_started = time.perf_counter()
-            thresholds = thresholds.scaled(options.relax_factor)
-            ranked = ranked_by_score(current)
-            extra = extra | frozenset(ranked[: max(4, len(ranked) // 4)])
-            current = prune_with_scores(task, scores, thresholds, model, extra, goal_filter=goal_filter)
+            current, extra = widen(current, options.relax_factor, extra, model, goal_filter)
+            thresholds = current.thresholds
             relevance_time += time.perf_counter() - widen_started
     return _finish(task, options, attempts, started, relevance_time, pruned)
 

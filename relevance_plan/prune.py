@@ -116,6 +116,21 @@ def score_task(task: Task, scorer: str, request: ScoreRequest) -> ScoreResult:
     return SCORERS[scorer](task, request)
 
 
+def widen(
+    result: PruneResult,
+    factor: float,
+    extra: AbstractSet[str] = frozenset(),
+    model: KnowledgeModel | None = None,
+    goal_filter: bool = False,
+) -> tuple[PruneResult, frozenset]:
+    """One relaxation step: scale the thresholds by ``factor`` and put back the best-ranked
+    quarter (at least 4) of the removed objects; returns the new result and the extra set."""
+    ranked = ranked_by_score(result)
+    extra = frozenset(extra) | frozenset(ranked[: max(4, len(ranked) // 4)])
+    widened = prune_with_scores(result.task, result.scores, result.thresholds.scaled(factor), model, extra, goal_filter)
+    return widened, extra
+
+
 def ranked_by_score(result: PruneResult) -> Sequence[str]:
     """Pruned objects, most relevant first: the order in which relaxation adds them back."""
     scores = result.scores.element_scores
@@ -130,6 +145,7 @@ __all__ = [
     "constraint_rules",
     "prune_with_scores",
     "ranked_by_score",
+    "widen",
     "score_task",
     "select_relevant",
 ]
