@@ -40,25 +40,7 @@ def load_task(domain_path: str | os.PathLike, problem_path: str | os.PathLike) -
 
 def write_text_atomic(path: str | os.PathLike, text: str) -> Path:
     """Write through a temporary file and rename, so no half-written file is ever seen."""
-    path = Path(path)
-    directory = path.parent if str(path.parent) else Path(".")
-    if not directory.is_dir():
-        raise InputFileError("output directory does not exist", path=str(directory))
-    try:
-        handle, temporary = tempfile.mkstemp(prefix="." + path.name + ".", suffix=".tmp", dir=directory)
-    except OSError as error:
-        raise InputFileError(f"cannot write here: {error.strerror}", path=str(directory)) from None
-    try:
-        with os.fdopen(handle, "w", encoding="utf-8") as stream:
-            stream.write(text)
-        os.replace(temporary, path)
-    except OSError as error:
-        try:
-            os.unlink(temporary)
-        except OSError:
-            pass
-        raise InputFileError(f"cannot write file: {error.strerror}", path=str(path)) from None
-    return path
+    return write_bytes_atomic(path, text.encode("utf-8"))
 
 
 @contextlib.contextmanager
@@ -96,12 +78,15 @@ def find_suite_problems(directory: str | os.PathLike) -> tuple[Path, list[Path]]
 
 
 def write_bytes_atomic(path: str | os.PathLike, data: bytes) -> Path:
-    """Binary twin of ``write_text_atomic`` (figures)."""
+    """Write through a temporary file in the same directory and rename it into place."""
     path = Path(path)
     directory = path.parent if str(path.parent) else Path(".")
     if not directory.is_dir():
         raise InputFileError("output directory does not exist", path=str(directory))
-    handle, temporary = tempfile.mkstemp(prefix="." + path.name + ".", suffix=".tmp", dir=directory)
+    try:
+        handle, temporary = tempfile.mkstemp(prefix="." + path.name + ".", suffix=".tmp", dir=directory)
+    except OSError as error:
+        raise InputFileError(f"cannot write here: {error.strerror}", path=str(directory)) from None
     try:
         with os.fdopen(handle, "wb") as stream:
             stream.write(data)
