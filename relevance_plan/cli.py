@@ -404,5 +404,12 @@ def exit_codes():
         click.echo(f"{int(code):>4}  {code.name:<18} {EXIT_CODE_DESCRIPTIONS[code]}")
 
 
+# The batch commands live in their own module; they import this one lazily.
+from .cli_batch import COMMANDS as BATCH_COMMANDS  # noqa: E402
+
+for _command in BATCH_COMMANDS:
+    main.add_command(_command)
+
+
 if __name__ == "__main__":  # pragma: no cover
     main()

@@ -17,11 +17,19 @@ class RelevancePlanError(Exception):
         self.path = str(path) if path is not None else None
         self.line = line
 
+    def __reduce__(self):
+        # Errors cross process boundaries (Dask workers); keep the path and line.
+        return (_rebuild_error, (type(self), self.message, self.path, self.line))
+
     def __str__(self) -> str:
         where = ""
         if self.path:
             where = self.path + (f":{self.line}" if self.line else "") + ": "
         return where + self.message
+
+
+def _rebuild_error(cls, message, path, line):
+    return cls(message, path=path, line=line)
 
 
 class UsageError(RelevancePlanError):

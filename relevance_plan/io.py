@@ -77,6 +77,17 @@ def find_suite_problems(directory: str | os.PathLike) -> tuple[Path, list[Path]]
     return domain, problems
 
 
+def _read_umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
+
+
+# Read once at import: os.umask is process-wide and briefly changing it while
+# worker threads create files would be a race.
+_UMASK = _read_umask()
+
+
 def write_bytes_atomic(path: str | os.PathLike, data: bytes) -> Path:
     """Write through a temporary file in the same directory and rename it into place."""
     path = Path(path)
@@ -90,6 +101,8 @@ def write_bytes_atomic(path: str | os.PathLike, data: bytes) -> Path:
     try:
         with os.fdopen(handle, "wb") as stream:
             stream.write(data)
+        # mkstemp creates 0600; give the file the mode an ordinary open() would.
+        os.chmod(temporary, 0o666 & ~_UMASK)
         os.replace(temporary, path)
     except OSError as error:
         try:

@@ -103,3 +103,25 @@ def test_keeping_everything_returns_the_text_unchanged(coffee):
     text = coffee_problem()
     problem = read_problem(text, coffee)
     assert write_pruned_problem(problem, set(problem.objects)) == text
+
+
+def test_atomic_write_gives_an_ordinary_file_mode(tmp_path):
+    import os
+
+    from relevance_plan.io import write_text_atomic
+
+    reference = tmp_path / "plain.txt"
+    reference.write_text("x")
+    written = write_text_atomic(tmp_path / "atomic.txt", "x")
+    assert os.stat(written).st_mode == os.stat(reference).st_mode
+    assert [p.name for p in tmp_path.iterdir() if p.name.endswith(".tmp")] == []
+
+
+def test_errors_keep_path_and_line_across_processes():
+    import pickle
+
+    from relevance_plan.errors import PDDLParseError
+
+    error = pickle.loads(pickle.dumps(PDDLParseError("unbalanced parenthesis", path="p.pddl", line=7)))
+    assert isinstance(error, PDDLParseError)
+    assert (error.path, error.line, str(error)) == ("p.pddl", 7, "p.pddl:7: unbalanced parenthesis")

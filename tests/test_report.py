@@ -1,0 +1,253 @@
+"""The report's numbers come from stored rows: a hand-made store gives a known table."""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import sys
+
+import click
+import pytest
+from click.testing import CliRunner
+
+from relevance_plan.errors import UsageError
+from relevance_plan.exitcodes import ExitCode
+from relevance_plan.report import build_report, format_report, job_time, write_plots
+from relevance_plan.store import COLUMNS, ResultStore
+
+TIMEOUT = 100.0
+
+
+def make_row(suite, problem, method, status="solved", wall=1.0, relevance=0.0, first=None, kept=10, total=20,
+             seed=0, config="c", exit_code=0):
+    config_json = json.dumps({"method": method, "timeout": TIMEOUT, "config": config}, sort_keys=True)
+    return {
+        "problem_hash": f"hash-{suite}-{problem}",
+        "method": method,
+        "config_hash": f"{config}-{seed}",
+        "planner_version": "1.0.0",
+        "suite": suite,
+        "problem": f"{problem}.pddl",
+        "world": "coffee",
+        "difficulty": "simple",
+        "seed": seed,
+        "status": status,
+        "valid": int(status == "solved"),
+        "exit_code": exit_code,
+        "wall_time": wall,
+        "relevance_time": relevance,
+        "planner_time": max(wall - relevance, 0.0),
+        "objects_total": total,
+        "objects_kept": kept,
+        "attempts": 1,
+        "first_attempt_status": first or status,
+        "plan_length": 10 if status == "solved" else None,
+        "timeout": TIMEOUT,
+        "message": "",
+        "config_json": config_json,
+        "finished_at": "2026-11-22T00:00:00.000+00:00",
+        "result_json": "{}",
+    }
+
+
+def known_rows():
+    """Suite 'alpha' with all four methods, 4 problems each; suite 'beta' with relevance only."""
+    rows = []
+    # pure: 10, 20, 30 s and one time-out (wall time 103 s, counted at 100 s).
+    for problem, wall in zip("abc", (10.0, 20.0, 30.0)):
+        rows.append(make_row("alpha", problem, "pure", wall=wall, kept=20, total=20))
+    rows.append(make_row("alpha", "d", "pure", status="out-of-time", wall=103.0, kept=20, total=20, exit_code=23))
+    # relevance: all solved; problem b needed a second attempt.
+    for problem, wall, first in zip("abcd", (1.0, 2.0, 3.0, 4.0), ("solved", "unsolvable", "solved", "solved")):
+        rows.append(make_row("alpha", problem, "relevance", wall=wall, relevance=0.5, first=first, kept=5, total=20))
+    # random: one planner crash (final failure), one time-out, two solved.
+    rows.append(make_row("alpha", "a", "random", wall=6.0, relevance=0.25, kept=10, total=20))
+    rows.append(make_row("alpha", "b", "random", wall=8.0, relevance=0.25, kept=10, total=20))
+    rows.append(make_row("alpha", "c", "random", status="planner-error", wall=2.0, relevance=0.25, kept=10,
+                         total=20, exit_code=35))
+    rows.append(make_row("alpha", "d", "random", status="out-of-time", wall=100.5, relevance=0.25,
+                         first="out_of_time", kept=10, total=20, exit_code=-9))
+    # oracle: 0.5 s everywhere, 4 of 20 kept.
+    for problem in "abcd":
+        rows.append(make_row("alpha", problem, "oracle", wall=0.5, relevance=0.1, kept=4, total=20))
+    rows.append(make_row("beta", "a", "relevance", wall=7.0, relevance=1.0, kept=3, total=12))
+    return rows
+
+
+@pytest.fixture
+def known_store(tmp_path):
+    path = tmp_path / "known.sqlite"
+    with ResultStore(path) as store:
+        for row in known_rows():
+            assert store.add(row)
+    return path
+
+
+def stored_rows(path):
+    with ResultStore(path, create=False) as store:
+        return store.rows()
+
+
+def test_job_time_counts_timeouts_at_the_timeout():
+    assert job_time(make_row("s", "a", "pure", wall=3.5)) == 3.5
+    assert job_time(make_row("s", "a", "pure", status="out-of-time", wall=131.0)) == TIMEOUT
+
+
+def test_report_numbers_from_a_known_store(known_store):
+    records = build_report(stored_rows(known_store))
+    by_key = {(r.suite, r.method): r for r in records}
+    assert [(r.suite, r.method) for r in records] == [
+        ("alpha", "relevance"), ("alpha", "pure"), ("alpha", "random"), ("alpha", "oracle"), ("beta", "relevance"),
+    ]
+
+    pure = by_key[("alpha", "pure")]
+    assert pure.n == 4 and pure.solved == 3
+    assert pure.mean_time == pytest.approx((10 + 20 + 30 + 100) / 4)  # the time-out counts at 100 s, not 103 s
+    assert pure.median_time == pytest.approx(25.0)
+    assert pure.timeout_rate == pytest.approx(0.25)
+    assert pure.first_failure_rate is None and pure.failure_rate is None  # not applicable to pure
+    assert pure.ratio_to_pure == pytest.approx(1.0)
+    assert pure.ratio_to_oracle == pytest.approx(50.0)
+    assert pure.mean_kept_fraction == pytest.approx(1.0)
+
+    relevance = by_key[("alpha", "relevance")]
+    assert relevance.mean_time == pytest.approx(2.5)
+    assert relevance.median_time == pytest.approx(2.5)
+    assert relevance.timeout_rate == 0.0
+    assert relevance.first_failure_rate == pytest.approx(0.25)  # problem b's first attempt
+    assert relevance.failure_rate == 0.0  # relaxation recovered it
+    assert relevance.ratio_to_pure == pytest.approx(0.1)
+    assert relevance.ratio_to_oracle == pytest.approx(5.0)
+    assert relevance.mean_objects_kept == pytest.approx(5.0)
+    assert relevance.mean_objects_total == pytest.approx(20.0)
+    assert relevance.mean_kept_fraction == pytest.approx(0.25)
+    assert relevance.mean_relevance_time == pytest.approx(0.5)
+
+    random = by_key[("alpha", "random")]
+    assert random.mean_time == pytest.approx((6 + 8 + 2 + 100) / 4)
+    assert random.median_time == pytest.approx(7.0)
+    assert random.timeout_rate == pytest.approx(0.25)
+    assert random.first_failure_rate == pytest.approx(0.5)  # the crash and the time-out
+    assert random.failure_rate == pytest.approx(0.25)  # only the crash: time-outs are not failures
+    assert random.ratio_to_pure == pytest.approx(7.0 / 25.0)
+    assert random.ratio_to_oracle == pytest.approx(14.0)
+    assert random.mean_relevance_time == pytest.approx(0.25)
+
+    oracle = by_key[("alpha", "oracle")]
+    assert oracle.ratio_to_oracle == pytest.approx(1.0)
+    assert oracle.mean_kept_fraction == pytest.approx(0.2)
+
+    beta = by_key[("beta", "relevance")]
+    assert beta.n == 1 and beta.median_time == pytest.approx(7.0)
+    assert beta.ratio_to_pure is None and beta.ratio_to_oracle is None  # no pure/oracle on beta
+    assert beta.mean_kept_fraction == pytest.approx(0.25)
+    assert all(r.configs == 1 for r in records)
+
+
+def test_markdown_has_the_papers_shape(known_store):
+    text = format_report(build_report(stored_rows(known_store)), "markdown")
+    lines = text.splitlines()
+    assert lines[0] == "| suite | metric | relevance | pure | random | oracle |"
+    assert "| alpha | time (s) | 2.50 | 40.00 | 29.00 | 0.50 |" in lines
+    assert "|  | timeout | 0.00 | 0.25 | 0.25 | 0.00 |" in lines
+    assert "|  | fail (first attempt) | 0.25 | – | 0.50 | 0.00 |" in lines
+    assert "|  | fail (final) | 0.00 | – | 0.25 | 0.00 |" in lines
+    assert "|  | median × pure | 0.10 | 1.00 | 0.28 | 0.02 |" in lines
+    assert "|  | median × oracle | 5.00 | 50.00 | 14.00 | 1.00 |" in lines
+    assert "|  | objects kept | 5.0/20.0 | 20.0/20.0 | 10.0/20.0 | 4.0/20.0 |" in lines
+    assert "|  | n | 4 | 4 | 4 | 4 |" in lines
+    # beta has no pure or oracle: no ratio rows, missing methods shown as '–'.
+    assert "| beta | time (s) | 7.00 | – | – | – |" in lines
+    beta = lines[lines.index("| beta | time (s) | 7.00 | – | – | – |"):]
+    assert not any("×" in line for line in beta)
+    assert any("counted at the timeout (100 s)" in line for line in lines)
+
+
+def test_csv_has_one_line_per_suite_and_method(known_store):
+    text = format_report(build_report(stored_rows(known_store)), "csv")
+    table = list(csv.DictReader(io.StringIO(text)))
+    assert len(table) == 5
+    pure = next(r for r in table if r["suite"] == "alpha" and r["method"] == "pure")
+    assert pure["failure_rate"] == "" and pure["first_failure_rate"] == ""
+    assert float(pure["mean_time"]) == pytest.approx(40.0)
+    random = next(r for r in table if r["method"] == "random")
+    assert float(random["failure_rate"]) == pytest.approx(0.25)
+    assert float(random["ratio_to_pure"]) == pytest.approx(0.28)
+
+
+def test_latex_table(known_store):
+    text = format_report(build_report(stored_rows(known_store)), "latex")
+    assert "\\begin{tabular}{llrrrr}" in text
+    assert "alpha & time (s) & 2.50 & 40.00 & 29.00 & 0.50 \\\\" in text
+    assert " & fail (final) & 0.00 & -- & 0.25 & 0.00 \\\\" in text
+    assert "median $\\times$ pure" in text
+    assert text.rstrip().endswith("\\end{tabular}")
+
+
+def test_pooled_option_sets_are_flagged():
+    rows = [make_row("s", "a", "pure", config="x"), make_row("s", "b", "pure", config="y")]
+    records = build_report(rows)
+    assert records[0].configs == 2
+    assert "pools 2 different option sets" in format_report(records, "markdown")
+
+
+def test_empty_and_unknown_format():
+    assert format_report([], "markdown") == "no results\n"
+    with pytest.raises(UsageError):
+        format_report([], "html")
+
+
+def test_plots_are_written_atomically_as_png(known_store, tmp_path):
+    written = write_plots(stored_rows(known_store), tmp_path / "plots")
+    assert [p.name for p in written] == ["cactus.png", "relevance-vs-pure.png"]
+    for path in written:
+        assert path.read_bytes().startswith(b"\x89PNG\r\n\x1a\n")
+    assert sorted(p.name for p in (tmp_path / "plots").iterdir()) == ["cactus.png", "relevance-vs-pure.png"]
+
+
+def test_plots_without_matplotlib_say_how_to_install(known_store, tmp_path, monkeypatch):
+    monkeypatch.setitem(sys.modules, "matplotlib.figure", None)
+    with pytest.raises(UsageError, match=r"relevance-plan\[plots\]"):
+        write_plots(stored_rows(known_store), tmp_path / "plots")
+    assert not (tmp_path / "plots").exists()
+
+
+# --------------------------------------------------------------------------- CLI
+
+
+def cli_group():
+    from relevance_plan import cli
+    from relevance_plan.cli_batch import COMMANDS
+
+    if "report" in cli.main.commands:
+        return cli.main
+    group = click.Group("relevance-plan")
+    for command in COMMANDS:
+        group.add_command(command)
+    return group
+
+
+def test_report_command(known_store, tmp_path):
+    runner = CliRunner()
+    before = known_store.read_bytes()
+    result = runner.invoke(cli_group(), ["report", str(known_store)])
+    assert result.exit_code == 0, result.output
+    assert result.stdout == format_report(build_report(known_rows()), "markdown")
+    result = runner.invoke(cli_group(), ["report", str(known_store), "--format", "csv", "--plots", str(tmp_path / "p")])
+    assert result.exit_code == 0, result.output
+    assert result.stdout.startswith("suite,method,n,")
+    assert (tmp_path / "p" / "cactus.png").is_file()
+    assert known_store.read_bytes() == before
+
+
+def test_report_on_a_missing_store_creates_nothing(tmp_path):
+    missing = tmp_path / "nothing.sqlite"
+    result = CliRunner().invoke(cli_group(), ["report", str(missing)])
+    assert result.exit_code == ExitCode.INPUT_FILE
+    assert result.stderr.count("\n") == 1 and "results store not found" in result.stderr
+    assert not missing.exists()
+
+
+def test_store_columns_cover_every_row_field():
+    assert set(make_row("s", "a", "pure")) == set(COLUMNS)
