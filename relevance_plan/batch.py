@@ -39,7 +39,7 @@ from typing import Any, Iterable, Sequence
 
 from . import runner
 from .errors import InputFileError, PlannerError, RelevancePlanError, SchedulerError, UsageError
-from .io import find_suite_problems
+from .io import find_suite_problems, read_bytes, read_sidecar
 from .planning import METHODS, PlanOptions, PlanResult, PlanStatus, plan_task
 from .prune import DEFAULT_TAU, Thresholds
 from .store import ResultKey, ResultStore
@@ -54,15 +54,6 @@ _ADDRESS_RE = re.compile(r"^(?:(?:tcp|tls|ws|wss|ucx)://)?[^\s/:]+:\d+$|^(?:tcp|
 # --------------------------------------------------------------------------- keys
 
 
-def _read_bytes(path: str | os.PathLike, what: str) -> bytes:
-    try:
-        return Path(path).read_bytes()
-    except FileNotFoundError:
-        raise InputFileError(f"{what} not found", path=str(path)) from None
-    except OSError as error:
-        raise InputFileError(f"cannot read {what}: {error.strerror}", path=str(path)) from None
-
-
 def _sha256(data: bytes) -> str:
     return hashlib.sha256(data).hexdigest()
 
@@ -72,15 +63,15 @@ def _file_hash(path: str | os.PathLike | None) -> str | None:
     if path is None:
         return None
     try:
-        return _sha256(Path(path).read_bytes())
-    except OSError:
+        return _sha256(read_bytes(path))
+    except InputFileError:
         return None
 
 
 def problem_hash(domain_path: str | os.PathLike, problem_path: str | os.PathLike) -> str:
     """sha256 of the domain text, a NUL byte, and the problem text."""
-    domain = _read_bytes(domain_path, "domain file")
-    problem = _read_bytes(problem_path, "problem file")
+    domain = read_bytes(domain_path, "domain file")
+    problem = read_bytes(problem_path, "problem file")
     return _sha256(domain + b"\0" + problem)
 
 
@@ -106,8 +97,8 @@ def _model_file(options: PlanOptions, domain_path: str) -> str | None:
     from .knowledge import find_model
 
     try:
-        name = _domain_name(Path(domain_path).read_text(encoding="utf-8", errors="replace"))
-    except OSError:
+        name = _domain_name(read_bytes(domain_path, "domain file").decode("utf-8", errors="replace"))
+    except InputFileError:
         return None
     found = find_model(name, domain_path) if name else None
     return str(found) if found is not None else None
@@ -278,10 +269,8 @@ def _now() -> str:
 def _sidecar_fields(problem_path: str) -> tuple[str | None, str | None]:
     """(world, difficulty) from the generator's sidecar, (None, None) without one."""
     try:
-        data = json.loads(Path(problem_path).with_suffix(".json").read_text(encoding="utf-8"))
-    except (OSError, ValueError):
-        return None, None
-    if not isinstance(data, dict):
+        data = read_sidecar(Path(problem_path).with_suffix(".json"))
+    except InputFileError:
         return None, None
     world, difficulty = data.get("world"), data.get("difficulty")
     return (world if isinstance(world, str) else None, difficulty if isinstance(difficulty, str) else None)

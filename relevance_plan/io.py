@@ -11,18 +11,24 @@ from .errors import InputFileError
 from .pddl import Domain, Problem, read_domain, read_problem
 
 
-def read_text(path: str | os.PathLike, what: str = "file") -> str:
+def read_bytes(path: str | os.PathLike, what: str = "file") -> bytes:
     path = Path(path)
     try:
-        return path.read_text(encoding="utf-8")
+        return path.read_bytes()
     except FileNotFoundError:
         raise InputFileError(f"{what} not found", path=str(path)) from None
     except IsADirectoryError:
         raise InputFileError(f"expected a {what}, found a directory", path=str(path)) from None
-    except UnicodeDecodeError as error:
-        raise InputFileError(f"not a UTF-8 text file ({error.reason})", path=str(path)) from None
     except OSError as error:
         raise InputFileError(f"cannot read {what}: {error.strerror}", path=str(path)) from None
+
+
+def read_text(path: str | os.PathLike, what: str = "file") -> str:
+    data = read_bytes(path, what)
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError as error:
+        raise InputFileError(f"not a UTF-8 text file ({error.reason})", path=str(path)) from None
 
 
 def load_domain(path: str | os.PathLike) -> Domain:
