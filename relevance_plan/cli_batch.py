@@ -122,11 +122,11 @@ def demo(workdir, count, timeout, jobs, distractors, tiny, quiet):
     """Generate coffee and cereal suites, compare relevance, pure, random and oracle, print the table."""
     import tempfile
 
-    from .demo import DEMO_DISTRACTORS, run_demo_full
+    from .demo import DEMO_DISTRACTORS, run_demo
 
     if workdir is None:
         workdir = tempfile.mkdtemp(prefix="relevance-plan-demo-")
-    run = run_demo_full(
+    run = run_demo(
         Path(workdir), count, timeout, jobs,
         distractors=DEMO_DISTRACTORS if distractors is None else distractors,
         tiny=tiny, progress=not quiet,

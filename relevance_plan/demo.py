@@ -36,7 +36,7 @@ class DemoRun:
     table: str
 
 
-def run_demo_full(
+def run_demo(
     workdir: str | os.PathLike,
     count: int = 3,
     timeout: float = 60.0,
@@ -46,7 +46,12 @@ def run_demo_full(
     tiny: bool = False,
     progress: bool = True,
 ) -> DemoRun:
-    """``run_demo`` with everything it produced (paths, run summary, table)."""
+    """Generate coffee-simple and cereal-simple suites (``count`` problems each,
+    seed 0, ``distractors`` distractors), compare relevance, pure, random and
+    oracle into ``workdir/results.sqlite``, and return what was produced.
+
+    ``tiny=True`` (for tests) means 1 problem per world with 5 distractors.
+    """
     from generators.generate import generate_suite
 
     if tiny:
@@ -70,21 +75,3 @@ def run_demo_full(
     table = format_report(build_report(rows), "markdown")
     return DemoRun(workdir, store_path, tuple(suites), summary, table)
 
-
-def run_demo(
-    workdir: str | os.PathLike,
-    count: int = 3,
-    timeout: float = 60.0,
-    jobs: int = 2,
-    *,
-    distractors: int = DEMO_DISTRACTORS,
-    tiny: bool = False,
-    progress: bool = True,
-) -> str:
-    """Generate coffee-simple and cereal-simple suites (``count`` problems each,
-    seed 0, ``distractors`` distractors), compare relevance, pure, random and
-    oracle into ``workdir/results.sqlite``, and return the markdown table.
-
-    ``tiny=True`` (for tests) means 1 problem per world with 5 distractors.
-    """
-    return run_demo_full(workdir, count, timeout, jobs, distractors=distractors, tiny=tiny, progress=progress).table

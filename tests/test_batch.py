@@ -84,6 +84,18 @@ def assert_one_line_error(result, code, fragment):
     assert fragment in result.stderr
 
 
+def foreign_store(path: Path, schema_version: int) -> Path:
+    """A SQLite file laid out like a store of another schema version."""
+    connection = sqlite3.connect(path)
+    connection.execute("CREATE TABLE meta (key TEXT PRIMARY KEY, value TEXT NOT NULL)")
+    connection.execute("INSERT INTO meta VALUES ('schema_version', ?), ('tool_version', '9.9.9')",
+                        (str(schema_version),))
+    connection.execute("CREATE TABLE results (problem_hash TEXT)")
+    connection.commit()
+    connection.close()
+    return path
+
+
 def snapshot(path: Path):
     """The store's bytes and its companion files (-wal, -shm, -journal)."""
     return path.read_bytes(), sorted(p.name for p in path.parent.glob(path.name + "*"))
@@ -154,13 +166,7 @@ def test_store_round_trip_in_wal_mode(tmp_path):
 
 
 def test_store_of_another_schema_version_is_refused_and_untouched(tmp_path):
-    path = tmp_path / "future.sqlite"
-    connection = sqlite3.connect(path)
-    connection.execute("CREATE TABLE meta (key TEXT PRIMARY KEY, value TEXT NOT NULL)")
-    connection.execute("INSERT INTO meta VALUES ('schema_version', '99'), ('tool_version', '9.9.9')")
-    connection.execute("CREATE TABLE results (problem_hash TEXT)")
-    connection.commit()
-    connection.close()
+    path = foreign_store(tmp_path / "future.sqlite", schema_version=99)
     before = snapshot(path)
     with pytest.raises(StoreError) as raised:
         ResultStore(path)
@@ -471,13 +477,7 @@ def test_cli_bad_input_gives_one_line_and_its_exit_code(tmp_path, suite, populat
 
 
 def test_cli_incompatible_or_foreign_store(tmp_path, suite):
-    future = tmp_path / "future.sqlite"
-    connection = sqlite3.connect(future)
-    connection.execute("CREATE TABLE meta (key TEXT PRIMARY KEY, value TEXT NOT NULL)")
-    connection.execute("INSERT INTO meta VALUES ('schema_version', '0')")
-    connection.execute("CREATE TABLE results (x)")
-    connection.commit()
-    connection.close()
+    future = foreign_store(tmp_path / "future.sqlite", schema_version=0)
     text = tmp_path / "results.csv"
     text.write_text("not,a,database\n")
     for store, fragment in ((future, "schema version 0"), (text, "not a SQLite database")):
