@@ -37,7 +37,7 @@ from functools import cached_property
 from pathlib import Path
 from typing import Any, Iterable, Sequence
 
-from . import runner
+from . import __version__, runner
 from .errors import InputFileError, PlannerError, RelevancePlanError, SchedulerError, UsageError
 from .io import find_suite_problems, read_bytes, read_sidecar
 from .planning import METHODS, PlanOptions, PlanResult, PlanStatus, plan_task
@@ -107,8 +107,9 @@ def _model_file(options: PlanOptions, domain_path: str) -> str | None:
 def config_fingerprint(options: PlanOptions, domain_path: str, problem_path: str) -> dict[str, Any]:
     """The options that influence a job's result, as a JSON-ready dict.
 
-    Every method: timeout, planner config, memory limit, validators, seed.
+    Every method: tool version, timeout, planner config, memory limit, validators, seed.
     Pruning methods add thresholds, relaxation (on/off, factor, first share),
+    the goal filter and the set-aside of blocked alternatives,
     scorer override, the sha256 of the knowledge-model file the run would use
     (explicit or found next to the domain), objective, task and human; the
     oracle adds the sha256 of the problem's sidecar (its ground truth).
@@ -116,6 +117,8 @@ def config_fingerprint(options: PlanOptions, domain_path: str, problem_path: str
     from .validate import default_validators
 
     config: dict[str, Any] = {
+        # a new release may prune or validate differently: its rows are not reused
+        "tool_version": __version__,
         "method": options.method,
         "timeout": float(options.timeout),
         "planner_config": options.planner_config,
@@ -130,6 +133,8 @@ def config_fingerprint(options: PlanOptions, domain_path: str, problem_path: str
             relax=bool(options.relax),
             relax_factor=float(options.relax_factor),
             first_share=float(options.first_share),
+            goal_filter=bool(options.goal_filter),
+            prefer_free=bool(options.prefer_free),
             scorer=options.scorer,
             model_hash=_file_hash(_model_file(options, domain_path)),
             objective=options.objective,
@@ -405,20 +410,31 @@ def _reporter(total: int, description: str, show: bool):
 
 
 @contextlib.contextmanager
-def _sigterm_as_interrupt():
-    """In the main thread, SIGTERM stops a batch like Ctrl-C (so planners get killed)."""
+def _stop_signals():
+    """An event that SIGINT and SIGTERM set while a batch runs (main thread only).
+
+    The handler only sets the event: the loops below check it between
+    completions and stop at a safe point.  A KeyboardInterrupt raised at an
+    arbitrary instruction could land inside a lock another thread needs.
+    SIGINT is set explicitly too, in case it was inherited as ignored.
+    """
+    stop = threading.Event()
     if threading.current_thread() is not threading.main_thread():
-        yield
+        yield stop
         return
 
-    def interrupt(signum, frame):
-        raise KeyboardInterrupt
+    def request_stop(signum, frame):
+        stop.set()
 
-    previous = signal.signal(signal.SIGTERM, interrupt)
+    previous = {signum: signal.signal(signum, request_stop) for signum in (signal.SIGINT, signal.SIGTERM)}
     try:
-        yield
+        yield stop
     finally:
-        signal.signal(signal.SIGTERM, previous)
+        for signum, handler in previous.items():
+            signal.signal(signum, handler)
+
+
+_POLL_SECONDS = 0.2  # how often a running batch looks at its stop event
 
 
 class _Recorder:
@@ -503,12 +519,12 @@ def compare(
         pending = [job for key, job in unique.items() if key not in stored]
         recorder = None
         if pending:
-            with _sigterm_as_interrupt(), _reporter(len(pending), f"compare ({len(pending)} jobs)", progress) as bar:
+            with _stop_signals() as stop, _reporter(len(pending), f"compare ({len(pending)} jobs)", progress) as bar:
                 recorder = _Recorder(store, bar)
                 if scheduler is None:
-                    _run_local(pending, jobs, recorder)
+                    _run_local(pending, jobs, recorder, stop)
                 else:
-                    _run_dask(pending, scheduler, scheduler_timeout, recorder)
+                    _run_dask(pending, scheduler, scheduler_timeout, recorder, stop)
         statuses = dict(recorder.statuses) if recorder else {}
     ran = sum(statuses.values())
     return CompareSummary(
@@ -524,15 +540,21 @@ def compare(
     )
 
 
-def _run_local(pending: Sequence[Job], workers: int, record: _Recorder) -> None:
+def _run_local(pending: Sequence[Job], workers: int, record: _Recorder, stop: threading.Event) -> None:
     pool = concurrent.futures.ThreadPoolExecutor(max_workers=workers, thread_name_prefix="relevance-plan-job")
     futures = [pool.submit(run_job, job) for job in pending]
     recorded: set = set()
     try:
-        for future in concurrent.futures.as_completed(futures):
-            row = future.result()  # an unexpected error stops the batch
-            recorded.add(future)
-            record(row)
+        waiting = set(futures)
+        while waiting:
+            done, waiting = concurrent.futures.wait(
+                waiting, timeout=_POLL_SECONDS, return_when=concurrent.futures.FIRST_COMPLETED)
+            for future in done:
+                row = future.result()  # an unexpected error stops the batch
+                recorded.add(future)
+                record(row)
+            if stop.is_set():
+                raise KeyboardInterrupt
     except BaseException as error:
         # Rows that were complete before the stop are genuine; keep them.
         finished = [f for f in futures if f not in recorded and f.done() and not f.cancelled() and f.exception() is None]
@@ -580,7 +602,7 @@ def _terminate_worker_runs() -> None:
     runner.terminate_all_runs()
 
 
-def _run_dask(pending: Sequence[Job], address: str, timeout: float, record: _Recorder) -> None:
+def _run_dask(pending: Sequence[Job], address: str, timeout: float, record: _Recorder, stop: threading.Event) -> None:
     from dask.distributed import as_completed
 
     try:
@@ -594,16 +616,23 @@ def _run_dask(pending: Sequence[Job], address: str, timeout: float, record: _Rec
         futures = [client.submit(run_job, job, pure=False, retries=2) for job in pending]
         recorded: set = set()
         try:
-            for future in as_completed(futures, loop=client.loop):
-                try:
-                    row = future.result()
-                except KilledWorker as error:
-                    raise SchedulerError(f"a Dask worker died running a job 3 times: {error}") from None
-                except concurrent.futures.CancelledError:
-                    raise SchedulerError(f"lost the Dask scheduler at {address}; rerun to resume") from None
-                recorded.add(future.key)
-                record(row)
-                future.release()
+            finished = as_completed(futures, loop=client.loop)
+            while not finished.is_empty():
+                if stop.is_set():
+                    raise KeyboardInterrupt
+                if not finished.has_ready():
+                    time.sleep(_POLL_SECONDS / 4)
+                    continue
+                for future in finished.next_batch(block=False):
+                    try:
+                        row = future.result()
+                    except KilledWorker as error:
+                        raise SchedulerError(f"a Dask worker died running a job 3 times: {error}") from None
+                    except concurrent.futures.CancelledError:
+                        raise SchedulerError(f"lost the Dask scheduler at {address}; rerun to resume") from None
+                    recorded.add(future.key)
+                    record(row)
+                    future.release()
         except BaseException as error:
             rows = []
             if isinstance(error, KeyboardInterrupt):

@@ -55,6 +55,7 @@ class PlanOptions:
     first_share: float = 0.5  # share of the remaining time a pruned attempt may use
     scorer: str | None = None  # overrides the method's scorer
     goal_filter: bool = True  # for 'relevance': drop relevant objects no goal-directed action can use
+    prefer_free: bool = True  # for 'relevance' with a model: first try without blocked alternatives
     model_path: str | None = None
     objective: str | None = None
     task: str | None = None
@@ -248,9 +249,14 @@ def plan_task(
             message=scores.insufficiency,
         )
     goal_filter = options.goal_filter and options.method == "relevance"
-    pruned = prune_with_scores(task, scores, options.thresholds, model, goal_filter=goal_filter)
+    # Setting blocked alternatives aside is a bet on the first attempt only: widening
+    # (which never sets aside) brings them back if the bet was wrong.
+    prefer_free = options.prefer_free and options.method == "relevance"
+    pruned = prune_with_scores(task, scores, options.thresholds, model, goal_filter=goal_filter,
+                               prefer_free=prefer_free)
     relevance_time = time.perf_counter() - started
-    say(f"kept {len(pruned.kept)} of {total} objects ({len(pruned.restored)} restored by closure)")
+    say(f"kept {len(pruned.kept)} of {total} objects ({len(pruned.restored)} restored by closure"
+        + (f", {len(pruned.set_aside)} blocked alternatives set aside)" if pruned.set_aside else ")"))
 
     attempts: list[Attempt] = []
     thresholds = options.thresholds

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections import defaultdict
 from dataclasses import dataclass, field
 from typing import AbstractSet, Sequence
 
@@ -37,6 +38,7 @@ class PruneResult:
     kept: frozenset  # after closure
     restored: tuple  # of Restored, in the order closure found them
     text: str = field(repr=False)  # the pruned problem in the user's own layout
+    set_aside: frozenset = frozenset()  # relevant alternatives left for a later attempt (see free_alternatives)
 
     @property
     def removed(self) -> tuple:
@@ -82,6 +84,32 @@ def select_relevant(task: Task, scores: ScoreResult, thresholds: Thresholds, goa
     return frozenset(selected)
 
 
+def free_alternatives(task: Task, scores: ScoreResult, selected: frozenset, restored: Sequence[Restored]) -> frozenset:
+    """``selected`` without the objects that something stands on, when another selected
+    object of the same model class stands free.
+
+    Any cup serves coffee: a cup under a plate costs the planner the plate as
+    well, and every extra item multiplies grounding.  Only classes of a
+    knowledge model are treated as interchangeable (a PDDL type is not: all
+    blocks of a tower are needed); goal objects always stay.
+    """
+    from .scorers.model import UNKNOWN_CLASS
+
+    if scores.scorer != "model":
+        return selected
+    encumbered = {item.because_of for item in restored if item.rule == "blocker"}
+    members_by_class: dict[str, set] = defaultdict(set)
+    for name in selected - task.goal_objects:
+        class_name = scores.element_class.get(name)
+        if class_name is not None and class_name != UNKNOWN_CLASS:
+            members_by_class[class_name].add(name)
+    set_aside = set()
+    for members in members_by_class.values():
+        if members - encumbered:
+            set_aside |= members & encumbered
+    return selected - set_aside
+
+
 def prune_with_scores(
     task: Task,
     scores: ScoreResult,
@@ -89,16 +117,30 @@ def prune_with_scores(
     model: KnowledgeModel | None = None,
     extra: AbstractSet[str] = frozenset(),
     goal_filter: bool = False,
+    prefer_free: bool = False,
 ) -> PruneResult:
-    """Threshold the scores, add ``extra`` objects, close over constraints, write the text."""
+    """Threshold the scores, add ``extra`` objects, close over constraints, write the text.
+
+    With ``prefer_free``, blocked alternatives are set aside (``free_alternatives``)
+    and closure runs again on what is left.
+    """
     selected = select_relevant(task, scores, thresholds, goal_filter) | (frozenset(extra) & task.problem.objects.keys())
-    kept, restored = close_over_constraints(
-        selected,
-        constraint_rules(task, model),
-        task.init_index,
-        candidates=task.problem.objects.keys(),
-        singleton_predicates=single_valued_predicates(task.domain, task.init_index),
-    )
+    rules = constraint_rules(task, model)
+    singletons = single_valued_predicates(task.domain, task.init_index)
+
+    def close(names):
+        return close_over_constraints(
+            names, rules, task.init_index, candidates=task.problem.objects.keys(), singleton_predicates=singletons
+        )
+
+    kept, restored = close(selected)
+    set_aside: frozenset = frozenset()
+    if prefer_free:
+        narrowed = free_alternatives(task, scores, selected, restored)
+        if narrowed != selected:
+            set_aside = selected - narrowed
+            selected = narrowed
+            kept, restored = close(selected)
     return PruneResult(
         task=task,
         scores=scores,
@@ -107,6 +149,7 @@ def prune_with_scores(
         kept=kept,
         restored=restored,
         text=write_pruned_problem(task.problem, kept),
+        set_aside=set_aside,
     )
 
 

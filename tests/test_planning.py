@@ -42,7 +42,9 @@ def test_every_method_gives_a_plan_valid_on_the_original(coffee_files, method):
     if method == "relevance":
         assert result.objects_kept < result.objects_total
         assert "side_plate_1" in result.prune.removed
-        assert "dinner_plate_1" in result.prune.kept  # it stands on the plastic cup
+        # the plate stands on the plastic cup, which is set aside for the free paper cup
+        assert result.prune.set_aside == {"plastic_cup_1"}
+        assert "dinner_plate_1" in result.prune.removed
     if method == "pure":
         assert result.objects_kept == result.objects_total
 
@@ -64,6 +66,28 @@ def test_relaxation_recovers_when_the_first_pruning_removed_a_needed_object(coff
     assert len(result.attempts) >= 2
     assert result.first_attempt_status == "unsolvable"
     assert result.attempts[0].objects_kept < result.attempts[-1].objects_kept
+
+
+def test_a_goal_object_is_never_set_aside(tmp_path, coffee_domain_path):
+    # the plate-covered plastic cup is named by the goal, so it stays with its plate
+    problem = tmp_path / "coffee.pddl"
+    problem.write_text(coffee_problem(extra_plates=2).replace(
+        "(coffee-served alice)", "(and (coffee-served alice) (holding plastic_cup_1))"))
+    result = plan_task(coffee_domain_path, problem, PlanOptions(timeout=60))
+    assert_valid_on_original(coffee_domain_path, problem, result)
+    assert result.prune.set_aside == frozenset()
+    assert {"plastic_cup_1", "dinner_plate_1"} <= result.prune.kept
+
+
+def test_widening_brings_back_a_set_aside_alternative_when_the_free_one_cannot_serve(tmp_path, coffee_domain_path):
+    # the free paper cup is not empty, so only the plastic cup under the plate can take coffee
+    problem = tmp_path / "coffee.pddl"
+    problem.write_text(coffee_problem(extra_plates=2).replace("(empty paper_cup_1)", ""))
+    result = plan_task(coffee_domain_path, problem, PlanOptions(timeout=60))
+    assert_valid_on_original(coffee_domain_path, problem, result)
+    assert result.prune.set_aside == {"plastic_cup_1"}
+    assert result.first_attempt_status == "unsolvable" and len(result.attempts) >= 2
+    assert any("plastic_cup_1" in step for step in result.plan)  # steps are (action, *arguments)
 
 
 def test_no_relax_reports_the_failed_pruning(coffee_files):

@@ -163,6 +163,32 @@ def test_closure_restores_blockers_places_and_robot_position(task, model):
     assert kept_places == {"counter_1", "fridge_1", "table_1"}
 
 
+def test_blocked_alternatives_are_set_aside_when_a_free_one_is_kept(task, model):
+    scores = score(task, model)
+    plain = prune_with_scores(task, scores, Thresholds(), model)
+    assert {"plastic_cup_1", "paper_cup_1", "dinner_plate_1"} <= plain.kept and plain.set_aside == frozenset()
+    narrowed = prune_with_scores(task, scores, Thresholds(), model, prefer_free=True)
+    # the plate stands on the plastic cup; the paper cup stands free and serves as well
+    assert narrowed.set_aside == {"plastic_cup_1"}
+    assert "paper_cup_1" in narrowed.kept
+    assert not {"plastic_cup_1", "dinner_plate_1"} & narrowed.kept
+    assert plain.kept - narrowed.kept == {"plastic_cup_1", "dinner_plate_1"}
+
+
+def test_a_blocked_object_without_a_free_alternative_stays(task, model):
+    # tau_e = 0.4 selects the plastic cup (R = 0.65) but not the paper cup (R = 0.36)
+    result = prune_with_scores(task, score(task, model), Thresholds(0.2, 0.4), model, prefer_free=True)
+    assert "paper_cup_1" not in result.selected
+    assert result.set_aside == frozenset()
+    assert {"plastic_cup_1", "dinner_plate_1"} <= result.kept
+
+
+def test_types_are_not_treated_as_alternatives(task):
+    # the goal scorer's classes are PDDL types: every block of a tower may be needed
+    scores = SCORERS["goal"](task, ScoreRequest())
+    assert prune_with_scores(task, scores, Thresholds(), prefer_free=True).set_aside == frozenset()
+
+
 def test_closure_rules_are_inferred_from_schemas(task):
     rules = infer_constraint_rules(task.domain, task.init_index)
     kinds = {(r.predicate, r.when_kept, r.restore, r.kind) for r in rules}
