@@ -17,7 +17,7 @@ REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))
 sys.path.insert(0, str(REPO / "tests"))
 
-from relevance_plan.planning import PlanOptions, PlanStatus, plan_task  # noqa: E402
+from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task  # noqa: E402
 from worlds import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem  # noqa: E402
 
 CASES = [

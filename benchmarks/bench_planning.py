@@ -22,8 +22,8 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))
 
-from generators.generate import generate_suite  # noqa: E402
-from relevance_plan.planning import PlanOptions, PlanStatus, plan_task  # noqa: E402
+from relevance_plan.generators.generate import generate_suite  # noqa: E402
+from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task  # noqa: E402
 
 
 def run(args: argparse.Namespace) -> int:

@@ -20,11 +20,11 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))
 
-from generators.generate import generate_problem  # noqa: E402
+from relevance_plan.generators.generate import generate_problem  # noqa: E402
 from relevance_plan.io import load_domain, load_problem, write_text_atomic  # noqa: E402
-from relevance_plan.knowledge import load_model  # noqa: E402
-from relevance_plan.prune import prune_with_scores, score_task  # noqa: E402
-from relevance_plan.scorers import ScoreRequest, Task  # noqa: E402
+from relevance_plan.relevance.knowledge import load_model  # noqa: E402
+from relevance_plan.relevance.prune import prune_with_scores, score_task  # noqa: E402
+from relevance_plan.relevance.scorers import ScoreRequest, Task  # noqa: E402
 
 TARGETS = {500: 0.3, 2000: 1.5}
 
@@ -69,7 +69,7 @@ def main() -> int:
                 for _ in range(3):
                     started = time.perf_counter()
                     subprocess.run(
-                        [sys.executable, "-m", "relevance_plan.cli", "prune", str(domain_path), str(problem_path),
+                        [sys.executable, "-m", "relevance_plan", "prune", str(domain_path), str(problem_path),
                          "-o", str(out), "--scorer", scorer],
                         check=True, capture_output=True,
                     )

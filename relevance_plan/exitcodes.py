@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from enum import IntEnum
 
-from . import errors
+from relevance_plan import errors
 
 
 class ExitCode(IntEnum):

@@ -7,8 +7,8 @@ import os
 import tempfile
 from pathlib import Path
 
-from .errors import InputFileError
-from .pddl import Domain, Problem, read_domain, read_problem
+from relevance_plan.errors import InputFileError
+from relevance_plan.pddl.reader import Domain, Problem, read_domain, read_problem
 
 
 def read_bytes(path: str | os.PathLike, what: str = "file") -> bytes:

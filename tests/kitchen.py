@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from relevance_plan.formatter import format_problem
+from relevance_plan.pddl.formatter import format_problem
 
 COFFEE_OBJECTS = {
     "surface": ["counter_1", "table_1"],

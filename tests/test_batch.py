@@ -18,14 +18,14 @@ import click
 import pytest
 from click.testing import CliRunner
 
-from generators.generate import generate_suite
-from relevance_plan import runner
-from relevance_plan.batch import build_jobs, compare, connect_scheduler, run_job
+from relevance_plan.generators.generate import generate_suite
+from relevance_plan.planning import runner
+from relevance_plan.batch.jobs import build_jobs, compare, connect_scheduler, run_job
 from relevance_plan.errors import InputFileError, SchedulerError, StoreError, UsageError
 from relevance_plan.exitcodes import ExitCode
-from relevance_plan.planning import PlanOptions
-from relevance_plan.prune import Thresholds
-from relevance_plan.store import SCHEMA_VERSION, ResultStore
+from relevance_plan.planning.loop import PlanOptions
+from relevance_plan.relevance.prune import Thresholds
+from relevance_plan.batch.store import SCHEMA_VERSION, ResultStore
 from test_report import make_row
 
 REPO = Path(__file__).resolve().parent.parent
@@ -55,22 +55,14 @@ def populated_store(tmp_path):
 
 
 def cli_group():
-    """The real ``relevance-plan`` group once it registers the batch commands, else a test group."""
-    from relevance_plan import cli
-    from relevance_plan.cli_batch import COMMANDS
+    """The real ``relevance-plan`` group."""
+    from relevance_plan.cli import main
 
-    if all(command.name in cli.main.commands for command in COMMANDS):
-        return cli.main
-    group = click.Group("relevance-plan")
-    for command in COMMANDS:
-        group.add_command(command)
-    return group
+    return main
 
 
 def cli_module() -> str:
-    from relevance_plan import cli
-
-    return "relevance_plan.cli" if "compare" in cli.main.commands else "relevance_plan.cli_batch"
+    return "relevance_plan"
 
 
 def invoke(*arguments):
@@ -299,7 +291,7 @@ def test_missing_planner_stops_the_batch_and_stores_nothing(suite, tmp_path, mon
 
 
 def test_run_job_returns_a_complete_row(suite):
-    from relevance_plan.store import COLUMNS
+    from relevance_plan.batch.store import COLUMNS
 
     (job,) = build_jobs([suite], "oracle", (0,), PlanOptions(timeout=30))[:1]
     row = run_job(job)

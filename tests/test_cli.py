@@ -69,8 +69,8 @@ def test_prune_writes_a_problem_that_planners_read(runner, problem, tmp_path):
     assert len(list(parsed.all_objects)) == len(data["kept"])
     # and Fast Downward solves it; the plan validates on the ORIGINAL problem
     from relevance_plan.io import load_task
-    from relevance_plan.runner import run_fast_downward
-    from relevance_plan.validate import validate_plan
+    from relevance_plan.planning.runner import run_fast_downward
+    from relevance_plan.planning.validate import validate_plan
 
     outcome = run_fast_downward(COFFEE_DOMAIN, out, time_limit=60)
     assert outcome.solved
@@ -159,7 +159,7 @@ def test_insufficient_cues_exit_code_from_plan(runner, problem, tmp_path):
 
 def test_no_traceback_from_the_real_command(tmp_path, problem):
     completed = subprocess.run(
-        [sys.executable, "-m", "relevance_plan.cli", "score", str(COFFEE_DOMAIN), str(tmp_path / "nope.pddl")],
+        [sys.executable, "-m", "relevance_plan", "score", str(COFFEE_DOMAIN), str(tmp_path / "nope.pddl")],
         capture_output=True, text=True,
     )
     assert completed.returncode == ExitCode.INPUT_FILE

@@ -24,7 +24,7 @@ ROOT = Path(__file__).resolve().parent.parent
 if str(ROOT) not in sys.path:  # the repository is not necessarily installed
     sys.path.insert(0, str(ROOT))
 
-from generators import (  # noqa: E402
+from relevance_plan.generators import (  # noqa: E402
     CATALOG,
     CONSTRAINT_COUNTS,
     DISTRACTOR_RANGES,
@@ -35,7 +35,7 @@ from generators import (  # noqa: E402
     kind_of,
     write_base_scenes,
 )
-from generators.problem import blockers, goal_objects, relevant_objects  # noqa: E402
+from relevance_plan.generators.problem import blockers, goal_objects, relevant_objects  # noqa: E402
 from relevance_plan.errors import InputFileError, UsageError  # noqa: E402
 
 DOMAINS = ROOT / "domains"
@@ -240,7 +240,7 @@ def test_committed_base_scenes_are_current(tmp_path):
     for name in SCENES:
         for suffix in (".pddl", ".json"):
             assert (tmp_path / f"{name}{suffix}").read_bytes() == (PROBLEMS / f"{name}{suffix}").read_bytes(), (
-                f"problems/{name}{suffix} is stale: run generators.write_base_scenes('problems')"
+                f"problems/{name}{suffix} is stale: run relevance_plan.generators.write_base_scenes('problems')"
             )
     for name, scene in SCENES.items():
         text = (PROBLEMS / f"{name}.pddl").read_text()

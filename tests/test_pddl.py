@@ -4,8 +4,8 @@ import pytest
 
 from relevance_plan.errors import DomainMismatchError, PDDLParseError, UnsupportedFeatureError
 from relevance_plan.io import load_domain
-from relevance_plan.pddl import goal_objects, read_domain, read_problem
-from relevance_plan.writer import write_pruned_problem
+from relevance_plan.pddl.reader import goal_objects, read_domain, read_problem
+from relevance_plan.pddl.writer import write_pruned_problem
 
 from kitchen import coffee_problem
 

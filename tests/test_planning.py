@@ -9,9 +9,9 @@ from pathlib import Path
 import pytest
 
 from relevance_plan.io import load_task
-from relevance_plan.planning import PlanOptions, PlanStatus, plan_task
-from relevance_plan.prune import Thresholds
-from relevance_plan.validate import ValidationStatus, validate_with_up
+from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task
+from relevance_plan.relevance.prune import Thresholds
+from relevance_plan.planning.validate import ValidationStatus, validate_with_up
 
 from kitchen import coffee_problem
 from worlds import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
@@ -159,7 +159,7 @@ def test_bad_planner_configuration_is_not_a_pddl_error(coffee_files):
 
 def test_a_planner_that_cannot_start_is_a_clear_error(coffee_files, monkeypatch, tmp_path):
     from relevance_plan.errors import PlannerError
-    from relevance_plan import runner
+    from relevance_plan.planning import runner
 
     monkeypatch.setenv("RELEVANCE_PLAN_FAST_DOWNWARD", str(tmp_path / "absent" / "fast-downward.py"))
     runner.find_fast_downward.cache_clear() if hasattr(runner.find_fast_downward, "cache_clear") else None

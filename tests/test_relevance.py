@@ -5,15 +5,15 @@ from types import MappingProxyType
 
 import pytest
 
-from relevance_plan.analysis import index_init, infer_constraint_rules, single_valued_predicates
-from relevance_plan.closure import close_over_constraints
+from relevance_plan.relevance.analysis import index_init, infer_constraint_rules, single_valued_predicates
+from relevance_plan.relevance.closure import close_over_constraints
 from relevance_plan.errors import ModelError, UsageError
 from relevance_plan.io import load_domain
-from relevance_plan.knowledge import parse_model
-from relevance_plan.pddl import read_domain, read_problem
-from relevance_plan.prune import Thresholds, prune_with_scores, select_relevant
-from relevance_plan.scorers import SCORERS, ScoreRequest, Task
-from relevance_plan.scorers.model import task_entropy
+from relevance_plan.relevance.knowledge import parse_model
+from relevance_plan.pddl.reader import read_domain, read_problem
+from relevance_plan.relevance.prune import Thresholds, prune_with_scores, select_relevant
+from relevance_plan.relevance.scorers import SCORERS, ScoreRequest, Task
+from relevance_plan.relevance.scorers.model import task_entropy
 
 from kitchen import coffee_problem
 from worlds import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem

@@ -13,8 +13,8 @@ from click.testing import CliRunner
 
 from relevance_plan.errors import UsageError
 from relevance_plan.exitcodes import ExitCode
-from relevance_plan.report import build_report, format_report, job_time, write_plots
-from relevance_plan.store import COLUMNS, ResultStore
+from relevance_plan.batch.report import build_report, format_report, job_time, write_plots
+from relevance_plan.batch.store import COLUMNS, ResultStore
 
 TIMEOUT = 100.0
 
@@ -217,15 +217,9 @@ def test_plots_without_matplotlib_say_how_to_install(known_store, tmp_path, monk
 
 
 def cli_group():
-    from relevance_plan import cli
-    from relevance_plan.cli_batch import COMMANDS
+    from relevance_plan.cli import main
 
-    if "report" in cli.main.commands:
-        return cli.main
-    group = click.Group("relevance-plan")
-    for command in COMMANDS:
-        group.add_command(command)
-    return group
+    return main
 
 
 def test_report_command(known_store, tmp_path):

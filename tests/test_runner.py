@@ -1,4 +1,4 @@
-"""Tests for relevance_plan.runner: real Fast Downward runs on tiny PDDL files."""
+"""Tests for relevance_plan.planning.runner: real Fast Downward runs on tiny PDDL files."""
 
 from __future__ import annotations
 
@@ -13,8 +13,9 @@ from pathlib import Path
 
 import pytest
 
-from relevance_plan import errors, runner
-from relevance_plan.runner import PlannerStatus
+from relevance_plan import errors
+from relevance_plan.planning import runner
+from relevance_plan.planning.runner import PlannerStatus
 
 GRIPPER_DOMAIN = """
 (define (domain gripper)
@@ -341,7 +342,7 @@ def test_terminate_all_runs_stops_every_running_planner(big40: tuple[Path, Path]
     """Batch Ctrl-C: every planner started from threads is killed, none survives."""
     import threading
 
-    from relevance_plan import runner
+    from relevance_plan.planning import runner
 
     domain, problem = big40
     outcomes = []

@@ -39,7 +39,7 @@ from unified_planning.shortcuts import (
 )
 
 from relevance_plan.errors import UsageError
-from relevance_plan.up_engine import lift_plan, register_relevance_engine, restrict_problem
+from relevance_plan.integrations.up_engine import lift_plan, register_relevance_engine, restrict_problem
 
 REPO = Path(__file__).resolve().parent.parent
 

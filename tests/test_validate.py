@@ -3,8 +3,8 @@
 import pytest
 
 from relevance_plan.io import load_domain
-from relevance_plan.pddl import read_domain, read_problem
-from relevance_plan.validate import (
+from relevance_plan.pddl.reader import read_domain, read_problem
+from relevance_plan.planning.validate import (
     ValidationStatus,
     format_plan,
     parse_plan_text,

@@ -1,0 +1,77 @@
+"""A small end-to-end comparison: generate two suites, compare the four methods, report.
+
+With the defaults (3 problems per world, 30 distractors each) pure planning
+takes a few seconds per problem while the pruned methods take well under
+one (about 12 times faster), and the whole demo takes about 25 s on 2 cores.  The work
+directory keeps the suites, the results store and nothing else; running the
+demo again in the same directory reuses the stored results.
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass
+from pathlib import Path
+
+from relevance_plan.batch.jobs import CompareSummary, compare
+from relevance_plan.errors import InputFileError, UsageError
+from relevance_plan.planning.loop import METHODS
+from relevance_plan.batch.report import build_report, format_report
+from relevance_plan.batch.store import KEY_COLUMNS, read_rows
+
+DEMO_SUITES = (("coffee", "simple"), ("cereal", "simple"))
+DEMO_SEED = 0
+DEMO_DISTRACTORS = 30
+TINY_COUNT = 1
+TINY_DISTRACTORS = 5
+STORE_NAME = "results.sqlite"
+
+
+@dataclass(frozen=True)
+class DemoRun:
+    workdir: Path
+    store_path: Path
+    suites: tuple
+    summary: CompareSummary
+    table: str
+
+
+def run_demo(
+    workdir: str | os.PathLike,
+    count: int = 3,
+    timeout: float = 60.0,
+    jobs: int = 2,
+    *,
+    distractors: int = DEMO_DISTRACTORS,
+    tiny: bool = False,
+    progress: bool = True,
+) -> DemoRun:
+    """Generate coffee-simple and cereal-simple suites (``count`` problems each,
+    seed 0, ``distractors`` distractors), compare relevance, pure, random and
+    oracle into ``workdir/results.sqlite``, and return what was produced.
+
+    ``tiny=True`` (for tests) means 1 problem per world with 5 distractors.
+    """
+    from relevance_plan.generators.generate import generate_suite
+
+    if tiny:
+        count, distractors = TINY_COUNT, TINY_DISTRACTORS
+    if isinstance(count, bool) or not isinstance(count, int) or count < 1:
+        raise UsageError(f"--count must be a positive integer, got {count!r}")
+    workdir = Path(workdir)
+    try:
+        workdir.mkdir(parents=True, exist_ok=True)
+    except OSError as error:
+        raise InputFileError(f"cannot create the demo directory: {error.strerror}", path=str(workdir)) from None
+    suites = []
+    for world, difficulty in DEMO_SUITES:
+        suite = workdir / "suites" / f"{world}-{difficulty}"
+        generate_suite(world, difficulty, count, DEMO_SEED, suite, distractors=distractors)
+        suites.append(suite)
+    store_path = workdir / STORE_NAME
+    summary = compare(suites, METHODS, timeout=timeout, jobs=jobs, store_path=store_path, progress=progress)
+    wanted = set(summary.keys)
+    rows = [row for row in read_rows(store_path) if tuple(row[name] for name in KEY_COLUMNS) in wanted]
+    table = format_report(build_report(rows), "markdown")
+    return DemoRun(workdir, store_path, tuple(suites), summary, table)
+

@@ -1,0 +1,655 @@
+"""Batch comparison of methods over benchmark suites: run → store (→ report).
+
+A *job* is one (problem, method, seed) under one set of options.  ``compare``
+builds every job, skips those whose key is already in the results store, and
+runs the rest:
+
+- locally, on ``jobs`` threads that each drive one planner subprocess
+  (measured faster and more robust than a process pool: one killed planner
+  affects only its own job).  Only the main thread writes to SQLite, one
+  transaction per finished job, as the futures complete;
+- or on a Dask cluster (``scheduler='tcp://HOST:PORT'``): the same jobs go
+  out with ``client.submit(run_job, job, pure=False, retries=2)`` and the
+  results land in the local store as they complete.  Workers must see the
+  suite files under the same paths and have the same packages installed.
+
+Ctrl-C (or SIGTERM) cancels the pending jobs, kills every running planner
+(``runner.terminate_all_runs``), keeps every row already stored, and
+re-raises ``KeyboardInterrupt``; rerunning the same command resumes.
+"""
+
+from __future__ import annotations
+
+import concurrent.futures
+import contextlib
+import dataclasses
+import hashlib
+import json
+import os
+import re
+import signal
+import threading
+import time
+from collections import Counter
+from dataclasses import dataclass
+from datetime import datetime, timezone
+from functools import cached_property
+from pathlib import Path
+from typing import Any, Iterable, Sequence
+
+from relevance_plan import __version__
+from relevance_plan.planning import runner
+from relevance_plan.errors import InputFileError, PlannerError, RelevancePlanError, SchedulerError, UsageError
+from relevance_plan.io import find_suite_problems, read_bytes, read_sidecar
+from relevance_plan.planning.loop import METHODS, PlanOptions, PlanResult, PlanStatus, plan_task
+from relevance_plan.relevance.prune import DEFAULT_TAU, Thresholds
+from relevance_plan.batch.store import ResultKey, ResultStore
+
+DASK_INSTALL_HINT = "pip install 'relevance-plan[dask]'"
+DEFAULT_SCHEDULER_TIMEOUT = 10.0
+_STOP_GRACE = 30.0  # seconds to wait for running jobs after their planners were killed
+_DOMAIN_NAME_RE = re.compile(r"\(\s*domain\s+([^\s()]+)", re.IGNORECASE)
+_ADDRESS_RE = re.compile(r"^(?:(?:tcp|tls|ws|wss|ucx)://)?[^\s/:]+:\d+$|^(?:tcp|tls|ws|wss|ucx)://\[[0-9a-fA-F:.]+\]:\d+$")
+
+
+# --------------------------------------------------------------------------- keys
+
+
+def _sha256(data: bytes) -> str:
+    return hashlib.sha256(data).hexdigest()
+
+
+def _file_hash(path: str | os.PathLike | None) -> str | None:
+    """sha256 of a file's bytes, None when there is no such file."""
+    if path is None:
+        return None
+    try:
+        return _sha256(read_bytes(path))
+    except InputFileError:
+        return None
+
+
+def problem_hash(domain_path: str | os.PathLike, problem_path: str | os.PathLike) -> str:
+    """sha256 of the domain text, a NUL byte, and the problem text."""
+    domain = read_bytes(domain_path, "domain file")
+    problem = read_bytes(problem_path, "problem file")
+    return _sha256(domain + b"\0" + problem)
+
+
+def planner_version() -> str:
+    """The up-fast-downward version; a driver override adds a digest of its file."""
+    version = runner.fast_downward_version()
+    override = os.environ.get(runner.FAST_DOWNWARD_ENV)
+    if override:
+        digest = _file_hash(Path(override).expanduser()) or "missing"
+        version += f"+custom-{digest[:12]}"
+    return version
+
+
+def _domain_name(domain_text: str) -> str | None:
+    match = _DOMAIN_NAME_RE.search(domain_text)
+    return match.group(1).lower() if match else None
+
+
+def _model_file(options: PlanOptions, domain_path: str) -> str | None:
+    """The knowledge-model file the run would use (as ``planning.resolve_model`` finds it)."""
+    if options.model_path is not None:
+        return options.model_path
+    from relevance_plan.relevance.knowledge import find_model
+
+    try:
+        name = _domain_name(read_bytes(domain_path, "domain file").decode("utf-8", errors="replace"))
+    except InputFileError:
+        return None
+    found = find_model(name, domain_path) if name else None
+    return str(found) if found is not None else None
+
+
+def config_fingerprint(options: PlanOptions, domain_path: str, problem_path: str) -> dict[str, Any]:
+    """The options that influence a job's result, as a JSON-ready dict.
+
+    Every method: tool version, timeout, planner config, memory limit, validators, seed.
+    Pruning methods add thresholds, relaxation (on/off, factor, first share),
+    the goal filter and the set-aside of blocked alternatives,
+    scorer override, the sha256 of the knowledge-model file the run would use
+    (explicit or found next to the domain), objective, task and human; the
+    oracle adds the sha256 of the problem's sidecar (its ground truth).
+    """
+    from relevance_plan.planning.validate import default_validators
+
+    config: dict[str, Any] = {
+        # a new release may prune or validate differently: its rows are not reused
+        "tool_version": __version__,
+        "method": options.method,
+        "timeout": float(options.timeout),
+        "planner_config": options.planner_config,
+        "memory_limit_mb": options.memory_limit_mb,
+        "validators": list(options.validators) if options.validators else list(default_validators()),
+        "seed": int(options.seed),
+    }
+    if options.method != "pure":
+        config.update(
+            tau_class=float(options.thresholds.tau_class),
+            tau_element=float(options.thresholds.tau_element),
+            relax=bool(options.relax),
+            relax_factor=float(options.relax_factor),
+            first_share=float(options.first_share),
+            goal_filter=bool(options.goal_filter),
+            prefer_free=bool(options.prefer_free),
+            scorer=options.scorer,
+            model_hash=_file_hash(_model_file(options, domain_path)),
+            objective=options.objective,
+            task=options.task,
+            human=options.human,
+        )
+        if options.method == "oracle" or options.scorer == "oracle":
+            config["sidecar_hash"] = _file_hash(Path(problem_path).with_suffix(".json"))
+    return config
+
+
+def canonical_json(config: dict[str, Any]) -> str:
+    """Sorted keys, no spaces: the same options always give the same text."""
+    return json.dumps(config, sort_keys=True, separators=(",", ":"))
+
+
+def config_hash(config: dict[str, Any]) -> str:
+    """sha256 of the canonical JSON of ``config``."""
+    return _sha256(canonical_json(config).encode("utf-8"))
+
+
+# --------------------------------------------------------------------------- jobs
+
+
+@dataclass(frozen=True)
+class Job:
+    """One method on one problem with one seed; ``options`` carries method and seed too."""
+
+    domain_path: str
+    problem_path: str
+    suite: str
+    method: str
+    seed: int
+    options: PlanOptions
+
+    @cached_property
+    def config(self) -> dict[str, Any]:
+        """The options that influence the result (see ``config_fingerprint``)."""
+        return config_fingerprint(self.options, self.domain_path, self.problem_path)
+
+    @cached_property
+    def key(self) -> ResultKey:
+        return ResultKey(
+            problem_hash=problem_hash(self.domain_path, self.problem_path),
+            method=self.method,
+            config_hash=config_hash(self.config),
+            planner_version=planner_version(),
+        )
+
+    @property
+    def problem(self) -> str:
+        return Path(self.problem_path).name
+
+    def describe(self) -> str:
+        return f"{self.suite}/{self.problem} {self.method} seed {self.seed}"
+
+
+def parse_methods(methods: str | Iterable[str]) -> tuple[str, ...]:
+    """Methods from 'relevance,pure' or a sequence; duplicates dropped, order kept."""
+    if isinstance(methods, str):
+        methods = methods.split(",")
+    chosen: list[str] = []
+    for method in (m.strip() for m in methods):
+        if not method:
+            continue
+        if method not in METHODS:
+            raise UsageError(f"unknown method '{method}' (choose from: {', '.join(METHODS)})")
+        if method not in chosen:
+            chosen.append(method)
+    if not chosen:
+        raise UsageError(f"no method given (choose from: {', '.join(METHODS)})")
+    return tuple(chosen)
+
+
+def parse_seeds(seeds: str | Iterable[int]) -> tuple[int, ...]:
+    """Seeds from '0,1' or a sequence of ints; duplicates dropped, order kept."""
+    if isinstance(seeds, str):
+        try:
+            values = [int(part) for part in seeds.split(",") if part.strip()]
+        except ValueError:
+            raise UsageError(f"--seeds must be comma-separated integers, got '{seeds}'") from None
+    else:
+        values = list(seeds)
+    for value in values:
+        if isinstance(value, bool) or not isinstance(value, int):
+            raise UsageError(f"seeds must be integers, got {value!r}")
+    chosen = list(dict.fromkeys(values))
+    if not chosen:
+        raise UsageError("no seed given")
+    return tuple(chosen)
+
+
+def build_jobs(
+    suites: Sequence[str | os.PathLike],
+    methods: str | Iterable[str],
+    seeds: str | Iterable[int] = (0,),
+    base_options: PlanOptions | None = None,
+) -> list[Job]:
+    """Every (problem, seed, method) of every suite, problems in file-name order.
+
+    A suite is a directory with ``domain.pddl`` and problem files (what
+    ``relevance-plan generate`` writes); its name in the store is the
+    directory's name.  Raises ``InputFileError`` for a missing suite or one
+    without problems, ``UsageError`` for an unknown method or bad seed.
+    """
+    methods = parse_methods(methods)
+    seeds = parse_seeds(seeds)
+    base = base_options if base_options is not None else PlanOptions()
+    if not suites:
+        raise UsageError("no suite directory given")
+    named: dict[str, Path] = {}
+    jobs: list[Job] = []
+    for suite in suites:
+        directory = Path(suite).resolve()
+        domain, problems = find_suite_problems(directory)
+        name = directory.name
+        if name in named:
+            if named[name] == directory:
+                continue  # the same suite twice
+            raise UsageError(f"two suites named '{name}' ({named[name]} and {directory}): rename one")
+        named[name] = directory
+        for problem in problems:
+            for seed in seeds:
+                for method in methods:
+                    options = dataclasses.replace(base, method=method, seed=seed)
+                    jobs.append(Job(str(domain), str(problem), name, method, seed, options))
+    return jobs
+
+
+# --------------------------------------------------------------------------- one job
+
+
+def _now() -> str:
+    return datetime.now(timezone.utc).isoformat(timespec="milliseconds")
+
+
+def _sidecar_fields(problem_path: str) -> tuple[str | None, str | None]:
+    """(world, difficulty) from the generator's sidecar, (None, None) without one."""
+    try:
+        data = read_sidecar(Path(problem_path).with_suffix(".json"))
+    except InputFileError:
+        return None, None
+    world, difficulty = data.get("world"), data.get("difficulty")
+    return (world if isinstance(world, str) else None, difficulty if isinstance(difficulty, str) else None)
+
+
+def _base_row(job: Job) -> dict[str, Any]:
+    world, difficulty = _sidecar_fields(job.problem_path)
+    return {
+        **job.key._asdict(),
+        "suite": job.suite,
+        "problem": job.problem,
+        "world": world,
+        "difficulty": difficulty,
+        "seed": job.seed,
+        "timeout": float(job.options.timeout),
+        "config_json": canonical_json(job.config),
+    }
+
+
+def result_row(job: Job, result: PlanResult) -> dict[str, Any]:
+    """The store row of a finished ``plan_task``."""
+    data = result.to_json()
+    log = data["attempt_log"]
+    return {
+        **_base_row(job),
+        "status": data["status"],
+        "valid": int(bool(data["valid"])),
+        "exit_code": log[-1]["planner_exit_code"] if log else None,
+        "wall_time": result.wall_time,
+        "relevance_time": result.relevance_time,
+        "planner_time": result.planner_time,
+        "objects_total": result.objects_total,
+        "objects_kept": result.objects_kept,
+        "attempts": len(result.attempts),
+        "first_attempt_status": data["first_attempt_status"],
+        "plan_length": data["plan_length"],
+        "message": result.message,
+        "finished_at": _now(),
+        "result_json": json.dumps(data, sort_keys=True),
+    }
+
+
+def error_row(job: Job, error: RelevancePlanError, elapsed: float) -> dict[str, Any]:
+    """The store row of a job whose input the library rejected (status 'input-error')."""
+    message = str(error)
+    data = {
+        "method": job.method,
+        "status": PlanStatus.INPUT_ERROR.value,
+        "valid": False,
+        "error": type(error).__name__,
+        "message": message,
+        "wall_time": round(elapsed, 4),
+    }
+    return {
+        **_base_row(job),
+        "status": PlanStatus.INPUT_ERROR.value,
+        "valid": 0,
+        "exit_code": None,
+        "wall_time": elapsed,
+        "relevance_time": 0.0,
+        "planner_time": 0.0,
+        "objects_total": 0,
+        "objects_kept": 0,
+        "attempts": 0,
+        "first_attempt_status": PlanStatus.INPUT_ERROR.value,
+        "plan_length": None,
+        "message": message,
+        "finished_at": _now(),
+        "result_json": json.dumps(data, sort_keys=True),
+    }
+
+
+def run_job(job: Job) -> dict[str, Any]:
+    """Run one job and return its store row (never writes to the store itself).
+
+    A library error about this job's input (bad PDDL, bad sidecar, model that
+    does not apply, ...) becomes a row with status 'input-error' and the
+    error's message.  ``PlannerError`` (no planner to run at all) is not about
+    the problem: it propagates and stops the batch.  A planner crash is an
+    ordinary result: status 'planner-error' with the planner's exit code.
+    """
+    started = time.perf_counter()
+    try:
+        result = plan_task(job.domain_path, job.problem_path, job.options)
+    except PlannerError:
+        raise
+    except RelevancePlanError as error:
+        return error_row(job, error, time.perf_counter() - started)
+    return result_row(job, result)
+
+
+# --------------------------------------------------------------------------- compare
+
+
+@dataclass(frozen=True)
+class CompareSummary:
+    store_path: str
+    total: int  # distinct jobs asked for
+    already_stored: int  # skipped: their rows were in the store
+    ran: int  # finished and stored by this run
+    failed: int  # of those, status other than 'solved'
+    statuses: dict
+    elapsed: float
+    scheduler: str | None = None
+    keys: tuple = ()  # the ResultKey of every job asked for (to select this run's rows)
+
+    def describe(self) -> str:
+        counts = ", ".join(f"{count} {status}" for status, count in sorted(self.statuses.items()))
+        return (
+            f"{self.total} jobs: {self.already_stored} already stored, {self.ran} run"
+            + (f" ({counts})" if counts else "")
+            + f" in {self.elapsed:.1f} s; results in {self.store_path}"
+        )
+
+
+class _Quiet:
+    """Stands in for a progress bar when progress is off."""
+
+    def advance(self, failed: bool = False, note: str | None = None) -> None:
+        pass
+
+
+@contextlib.contextmanager
+def _reporter(total: int, description: str, show: bool):
+    if not show:
+        yield _Quiet()
+        return
+    from relevance_plan.progress import progress
+
+    with progress(total, description) as bar:
+        yield bar
+
+
+@contextlib.contextmanager
+def _stop_signals():
+    """An event that SIGINT and SIGTERM set while a batch runs (main thread only).
+
+    The handler only sets the event: the loops below check it between
+    completions and stop at a safe point.  A KeyboardInterrupt raised at an
+    arbitrary instruction could land inside a lock another thread needs.
+    SIGINT is set explicitly too, in case it was inherited as ignored.
+    """
+    stop = threading.Event()
+    if threading.current_thread() is not threading.main_thread():
+        yield stop
+        return
+
+    def request_stop(signum, frame):
+        stop.set()
+
+    previous = {signum: signal.signal(signum, request_stop) for signum in (signal.SIGINT, signal.SIGTERM)}
+    try:
+        yield stop
+    finally:
+        for signum, handler in previous.items():
+            signal.signal(signum, handler)
+
+
+_POLL_SECONDS = 0.2  # how often a running batch looks at its stop event
+
+
+class _Recorder:
+    """Writes finished rows (main thread only) and counts them."""
+
+    def __init__(self, store: ResultStore, bar):
+        self.store = store
+        self.bar = bar
+        self.statuses: Counter = Counter()
+
+    def __call__(self, row: dict[str, Any]) -> None:
+        inserted = self.store.add(row)
+        if inserted:
+            self.statuses[row["status"]] += 1
+        self.bar.advance(failed=row["status"] != PlanStatus.SOLVED.value)
+
+
+def compare(
+    suites: Sequence[str | os.PathLike],
+    methods: str | Iterable[str],
+    *,
+    timeout: float = 120.0,
+    jobs: int = 1,
+    store_path: str | os.PathLike = "results.sqlite",
+    seeds: str | Iterable[int] = (0,),
+    scheduler: str | None = None,
+    scheduler_timeout: float = DEFAULT_SCHEDULER_TIMEOUT,
+    planner_config: str = "lama-first",
+    memory_limit_mb: int | None = None,
+    relax: bool = True,
+    tau_class: float = DEFAULT_TAU,
+    tau_element: float = DEFAULT_TAU,
+    scorer: str | None = None,
+    model_path: str | None = None,
+    objective: str | None = None,
+    task: str | None = None,
+    human: str | None = None,
+    validators: Sequence[str] | None = None,
+    progress: bool = True,
+) -> CompareSummary:
+    """Run every method on every problem of ``suites``; store one row per job.
+
+    Jobs already in the store are skipped, so rerunning an interrupted
+    command resumes it.  ``jobs`` threads run locally; with ``scheduler``
+    the Dask workers' threads run the jobs instead (``jobs`` is unused).
+    Returns counts for this run; the numbers themselves come from
+    ``report.build_report`` over the stored rows.
+
+    Raises ``UsageError`` (bad argument, unknown method), ``InputFileError``
+    (missing suite, suite without problems, store directory missing),
+    ``StoreError`` (store of another schema version, not SQLite),
+    ``SchedulerError`` (unreachable scheduler, Dask missing), ``PlannerError``
+    (no planner at all) and ``KeyboardInterrupt`` after Ctrl-C/SIGTERM.
+    """
+    started = time.perf_counter()
+    if isinstance(jobs, bool) or not isinstance(jobs, int) or jobs < 1:
+        raise UsageError(f"--jobs must be a positive integer, got {jobs!r}")
+    if scheduler is not None and not _ADDRESS_RE.match(scheduler):
+        raise UsageError(f"--scheduler must look like tcp://HOST:PORT, got '{scheduler}'")
+    if not scheduler_timeout > 0:
+        raise UsageError(f"scheduler timeout must be positive, got {scheduler_timeout}")
+    base = PlanOptions(
+        planner_config=planner_config,
+        timeout=timeout,
+        memory_limit_mb=memory_limit_mb,
+        thresholds=Thresholds(tau_class, tau_element),
+        relax=relax,
+        scorer=scorer,
+        model_path=model_path,
+        objective=objective,
+        task=task,
+        human=human,
+        validators=tuple(validators) if validators else None,
+    )
+    all_jobs = build_jobs(suites, methods, seeds, base)
+    unique: dict[ResultKey, Job] = {}
+    for job in all_jobs:
+        unique.setdefault(job.key, job)
+
+    with ResultStore(store_path) as store:
+        stored = store.keys()
+        pending = [job for key, job in unique.items() if key not in stored]
+        recorder = None
+        if pending:
+            with _stop_signals() as stop, _reporter(len(pending), f"compare ({len(pending)} jobs)", progress) as bar:
+                recorder = _Recorder(store, bar)
+                if scheduler is None:
+                    _run_local(pending, jobs, recorder, stop)
+                else:
+                    _run_dask(pending, scheduler, scheduler_timeout, recorder, stop)
+        statuses = dict(recorder.statuses) if recorder else {}
+    ran = sum(statuses.values())
+    return CompareSummary(
+        store_path=str(store_path),
+        total=len(unique),
+        already_stored=len(unique) - len(pending),
+        ran=ran,
+        failed=ran - statuses.get(PlanStatus.SOLVED.value, 0),
+        statuses=statuses,
+        elapsed=time.perf_counter() - started,
+        scheduler=scheduler,
+        keys=tuple(unique),
+    )
+
+
+def _run_local(pending: Sequence[Job], workers: int, record: _Recorder, stop: threading.Event) -> None:
+    pool = concurrent.futures.ThreadPoolExecutor(max_workers=workers, thread_name_prefix="relevance-plan-job")
+    futures = [pool.submit(run_job, job) for job in pending]
+    recorded: set = set()
+    try:
+        waiting = set(futures)
+        while waiting:
+            done, waiting = concurrent.futures.wait(
+                waiting, timeout=_POLL_SECONDS, return_when=concurrent.futures.FIRST_COMPLETED)
+            for future in done:
+                row = future.result()  # an unexpected error stops the batch
+                recorded.add(future)
+                record(row)
+            if stop.is_set():
+                raise KeyboardInterrupt
+    except BaseException as error:
+        # Rows that were complete before the stop are genuine; keep them.
+        finished = [f for f in futures if f not in recorded and f.done() and not f.cancelled() and f.exception() is None]
+        _stop_local(pool, futures)
+        if isinstance(error, KeyboardInterrupt):
+            for future in finished:
+                record(future.result())
+        raise
+    pool.shutdown(wait=True)
+
+
+def _stop_local(pool: concurrent.futures.ThreadPoolExecutor, futures: Sequence[concurrent.futures.Future]) -> None:
+    """Cancel what has not started, kill running planners until every running job has returned."""
+    pool.shutdown(wait=False, cancel_futures=True)
+    deadline = time.monotonic() + _STOP_GRACE
+    while True:
+        try:
+            # Again and again: a job between two attempts may start one more planner.
+            runner.terminate_all_runs()
+            running = [f for f in futures if not f.done()]
+            if not running or time.monotonic() > deadline:
+                return
+            concurrent.futures.wait(running, timeout=0.1)
+        except KeyboardInterrupt:
+            continue  # a second Ctrl-C: finish stopping the planners first
+
+
+# --------------------------------------------------------------------------- Dask
+
+
+def connect_scheduler(address: str, timeout: float = DEFAULT_SCHEDULER_TIMEOUT):
+    """A ``dask.distributed.Client`` for ``address``; ``SchedulerError`` when unreachable or Dask is missing."""
+    try:
+        from dask.distributed import Client
+    except ImportError:
+        raise SchedulerError(f"Dask is not installed: {DASK_INSTALL_HINT}") from None
+    try:
+        return Client(address, timeout=timeout, set_as_default=False)
+    except (OSError, TimeoutError, ValueError) as error:
+        detail = " ".join(str(error).split()) or type(error).__name__
+        raise SchedulerError(f"cannot reach the Dask scheduler at {address}: {detail}") from None
+
+
+def _terminate_worker_runs() -> None:
+    runner.terminate_all_runs()
+
+
+def _run_dask(pending: Sequence[Job], address: str, timeout: float, record: _Recorder, stop: threading.Event) -> None:
+    from dask.distributed import as_completed
+
+    try:
+        from distributed import KilledWorker
+    except ImportError:  # pragma: no cover - part of distributed
+        KilledWorker = ()  # type: ignore[assignment]
+
+    client = connect_scheduler(address, timeout)
+    futures = []
+    try:
+        futures = [client.submit(run_job, job, pure=False, retries=2) for job in pending]
+        recorded: set = set()
+        try:
+            finished = as_completed(futures, loop=client.loop)
+            while not finished.is_empty():
+                if stop.is_set():
+                    raise KeyboardInterrupt
+                if not finished.has_ready():
+                    time.sleep(_POLL_SECONDS / 4)
+                    continue
+                for future in finished.next_batch(block=False):
+                    try:
+                        row = future.result()
+                    except KilledWorker as error:
+                        raise SchedulerError(f"a Dask worker died running a job 3 times: {error}") from None
+                    except concurrent.futures.CancelledError:
+                        raise SchedulerError(f"lost the Dask scheduler at {address}; rerun to resume") from None
+                    recorded.add(future.key)
+                    record(row)
+                    future.release()
+        except BaseException as error:
+            rows = []
+            if isinstance(error, KeyboardInterrupt):
+                # Rows that were complete before the stop are genuine; fetch them before cancelling.
+                for future in futures:
+                    if future.key not in recorded and future.status == "finished":
+                        with contextlib.suppress(Exception):
+                            rows.append(future.result(timeout=5))
+            with contextlib.suppress(Exception):
+                client.cancel(futures)
+            with contextlib.suppress(Exception):
+                # Our planners run in the workers' processes; stop them too.
+                client.run(_terminate_worker_runs)
+            for row in rows:
+                record(row)
+            raise
+    finally:
+        with contextlib.suppress(Exception):
+            client.close(timeout=10)

@@ -1,0 +1,415 @@
+"""The ``relevance-plan`` command.  Thin: parse arguments, call the library,
+print, and turn errors into the exit codes of ``exitcodes.py``.  This is the
+only module that exits.
+"""
+
+from __future__ import annotations
+
+import functools
+import json
+import sys
+from pathlib import Path
+
+import click
+
+from relevance_plan import __version__
+from relevance_plan.errors import RelevancePlanError, UsageError
+from relevance_plan.exitcodes import EXIT_CODE_DESCRIPTIONS, ExitCode, exit_code_for_error
+from relevance_plan.planning.loop import METHODS, PlanOptions, PlanResult, PlanStatus, plan_task, resolve_model, scorer_for
+from relevance_plan.relevance.prune import DEFAULT_TAU, PruneResult, Thresholds, prune_with_scores, score_task
+from relevance_plan.relevance.scorers import SCORERS, ScoreRequest, Task
+
+PLAN_STATUS_EXIT = {
+    PlanStatus.SOLVED: ExitCode.SUCCESS,
+    PlanStatus.UNSOLVABLE: ExitCode.UNSOLVABLE,
+    PlanStatus.NO_VALID_PLAN: ExitCode.NO_VALID_PLAN,
+    PlanStatus.OUT_OF_TIME: ExitCode.OUT_OF_TIME,
+    PlanStatus.OUT_OF_MEMORY: ExitCode.OUT_OF_MEMORY,
+    PlanStatus.INSUFFICIENT_CUES: ExitCode.INSUFFICIENT_CUES,
+    PlanStatus.INPUT_ERROR: ExitCode.PDDL_SYNTAX,
+    PlanStatus.PLANNER_CONFIG_ERROR: ExitCode.USAGE,
+    PlanStatus.PLANNER_ERROR: ExitCode.PLANNER,
+    PlanStatus.VALIDATOR_UNAVAILABLE: ExitCode.VALIDATOR,
+}
+
+
+def fail(message: str, code: ExitCode) -> None:
+    click.echo(f"relevance-plan: error: {message}", err=True)
+    sys.exit(int(code))
+
+
+def handle_errors(command):
+    """Every library error becomes one line on stderr and its documented exit code."""
+
+    @functools.wraps(command)
+    def wrapper(*args, **kwargs):
+        try:
+            return command(*args, **kwargs)
+        except RelevancePlanError as error:
+            fail(str(error), exit_code_for_error(error))
+        except KeyboardInterrupt:
+            click.echo("relevance-plan: interrupted", err=True)
+            sys.exit(int(ExitCode.INTERRUPTED))
+
+    return wrapper
+
+
+def probability_option(name: str, help_text: str):
+    return click.option(name, type=float, default=DEFAULT_TAU, show_default=True, help=help_text)
+
+
+def scoring_options(command):
+    for decorator in reversed(
+        [
+            click.option("--scorer", type=click.Choice(sorted(SCORERS)), default=None,
+                         help="Scorer; default: 'model' when a knowledge model applies, else 'goal'."),
+            click.option("--model", "model_path", type=click.Path(dir_okay=False), default=None,
+                         help="Knowledge-model YAML (default: found next to the domain or in domains/<name>/)."),
+            click.option("--objective", default=None, help="Objective from the model (default: matched from the goal)."),
+            click.option("--task", "task_name", default=None, help="Fix the task: P(task | objective) = 1."),
+            click.option("--human", default=None, help="Apply this human's recorded preferences."),
+            probability_option("--tau-class", "Class threshold tau_c in [0, 1]."),
+            probability_option("--tau-element", "Element threshold tau_e in [0, 1]."),
+            click.option("--seed", type=int, default=0, show_default=True, help="Seed of the random scorer."),
+        ]
+    ):
+        command = decorator(command)
+    return command
+
+
+def _score_and_prune(domain_path, problem_path, scorer, model_path, objective, task_name, human, tau_class, tau_element, seed):
+    from relevance_plan.io import load_task
+    from relevance_plan.planning.loop import read_sidecar_necessary
+
+    thresholds = Thresholds(tau_class, tau_element)
+    domain, problem = load_task(domain_path, problem_path)
+    task = Task(domain, problem)
+    model = resolve_model(domain.name, domain_path, model_path)
+    chosen = scorer_for("relevance", model, scorer)
+    if chosen == "model" and model is None:
+        raise UsageError(f"no knowledge model found for domain '{domain.name}': give --model or use --scorer goal")
+    request = ScoreRequest(
+        model=model,
+        objective=objective,
+        task=task_name,
+        human=human,
+        seed=seed,
+        necessary=read_sidecar_necessary(problem_path) if chosen == "oracle" else None,
+    )
+    scores = score_task(task, chosen, request)
+    return task, model, scores, prune_with_scores(task, scores, thresholds, model)
+
+
+def _prune_json(result: PruneResult) -> dict:
+    problem = result.task.problem
+    scores = result.scores
+    return {
+        "scorer": scores.scorer,
+        "sufficient": scores.sufficient,
+        "insufficiency": scores.insufficiency or None,
+        "objective": scores.objective,
+        "tasks": scores.task_distribution,
+        "task_entropy": scores.task_entropy,
+        "tau_class": result.thresholds.tau_class,
+        "tau_element": result.thresholds.tau_element,
+        "objects_total": len(problem.objects),
+        "kept": [problem.display(n) for n in problem.objects if n in result.kept],
+        "removed": [problem.display(n) for n in result.removed],
+        "selected": [problem.display(n) for n in problem.objects if n in result.selected],
+        "restored": [
+            {"object": problem.display(r.name), "reason": r.reason, "rule": r.rule, "because_of": r.because_of}
+            for r in result.restored
+        ],
+        "scores": {problem.display(n): round(s, 6) for n, s in scores.element_scores.items()},
+        "classes": {
+            c: {"relevance": round(s, 6), "kept": s > result.thresholds.tau_class} for c, s in scores.class_scores.items()
+        },
+        "element_class": {problem.display(n): c for n, c in scores.element_class.items()},
+        "unknown_class": [problem.display(n) for n in scores.unknown],
+    }
+
+
+@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+@click.version_option(__version__, prog_name="relevance-plan")
+def main():
+    """Relevance-based pruning for PDDL planning: score, prune, plan, validate."""
+
+
+# --------------------------------------------------------------------------- generate
+
+
+@main.command()
+@click.argument("world", type=str)
+@click.option("--difficulty", default="simple", show_default=True, help="simple or hard.")
+@click.option("--count", type=int, default=10, show_default=True, help="Number of problems.")
+@click.option("--seed", type=int, default=0, show_default=True)
+@click.option("--out", "out_dir", type=click.Path(file_okay=False), required=True, help="Suite directory to write.")
+@click.option("--distractors", type=int, default=None, help="Override the paper's distractor count.")
+@handle_errors
+def generate(world, difficulty, count, seed, out_dir, distractors):
+    """Generate a seeded benchmark suite for WORLD (coffee or cereal)."""
+    from relevance_plan.generators.generate import generate_suite
+
+    from relevance_plan.progress import progress
+
+    with progress(count, f"generate {world}-{difficulty}") as bar:
+        paths = generate_suite(world, difficulty, count, seed, Path(out_dir), distractors=distractors,
+                               progress=lambda done, total: bar.advance())
+    click.echo(f"wrote {len(paths)} problems to {out_dir}")
+
+
+# --------------------------------------------------------------------------- score / prune
+
+
+@main.command()
+@click.argument("domain_path", metavar="DOMAIN", type=click.Path(dir_okay=False))
+@click.argument("problem_path", metavar="PROBLEM", type=click.Path(dir_okay=False))
+@scoring_options
+@click.option("--inquiries", is_flag=True, help="List what the robot would ask the human.")
+@click.option("--json", "as_json", is_flag=True, help="Machine-readable output.")
+@handle_errors
+def score(domain_path, problem_path, scorer, model_path, objective, task_name, human, tau_class, tau_element, seed,
+          inquiries, as_json):
+    """Print the class and element relevance table for PROBLEM."""
+    task, model, scores, result = _score_and_prune(
+        domain_path, problem_path, scorer, model_path, objective, task_name, human, tau_class, tau_element, seed
+    )
+    inquiry = _inquiries(task, model, scores, result) if inquiries and scores.sufficient else None
+    if as_json:
+        data = _prune_json(result)
+        if inquiry is not None:
+            data["inquiries"] = inquiry
+        click.echo(json.dumps(data, indent=2))
+    else:
+        _print_score_table(result)
+        if inquiry is not None:
+            click.echo("")
+            click.echo(f"served without asking: {', '.join(inquiry['necessary']) or '-'}")
+            click.echo(f"questions ({inquiry['with_necessity']}): {', '.join(inquiry['questions']) or '-'}")
+            click.echo(
+                f"questions: {inquiry['with_necessity']} with relevance and necessity,"
+                f" {inquiry['relevance_only']} with relevance alone, {inquiry['no_relevance']} without relevance"
+                f" ({inquiry['reduction'] * 100:.1f} % fewer)"
+            )
+    if not scores.sufficient:
+        fail(f"insufficient cues: {scores.insufficiency}", ExitCode.INSUFFICIENT_CUES)
+
+
+def _inquiries(task, model, scores, result) -> dict:
+    from relevance_plan.relevance.metrics import plan_inquiries
+    from relevance_plan.relevance.scene import kind_of
+
+    structural = set()
+    if model is not None:
+        structural = {c.name for c in model.classes.values() if c.fixed_relevance is not None or c.from_contents}
+    kinds = {name: kind_of(name) for name in task.problem.objects}
+    found = plan_inquiries(scores, result.selected, kinds, structural)
+    return {
+        "necessary": list(found.necessary),
+        "questions": list(found.optional),
+        "with_necessity": found.with_necessity,
+        "relevance_only": found.relevance_only,
+        "no_relevance": found.objects,
+        "reduction": round(found.reduction, 4),
+    }
+
+
+def _print_score_table(result: PruneResult) -> None:
+    scores = result.scores
+    problem = result.task.problem
+    if not scores.sufficient:
+        click.echo(f"insufficient cues: {scores.insufficiency}")
+        return
+    header = f"scorer: {scores.scorer}"
+    if scores.objective:
+        tasks = ", ".join(f"{t} {p:.2f}" for t, p in sorted(scores.task_distribution.items(), key=lambda i: -i[1]))
+        header += f"   objective: {scores.objective}   tasks: {tasks}   H = {scores.task_entropy:.2f} nats"
+    click.echo(header)
+    if scores.class_scores:
+        click.echo("")
+        click.echo(f"{'class':<18} {'R(C)':>6}  kept")
+        for class_name, value in sorted(scores.class_scores.items(), key=lambda i: (-i[1], i[0])):
+            click.echo(f"{class_name:<18} {value:6.3f}  {'yes' if value > result.thresholds.tau_class else 'no'}")
+    click.echo("")
+    restored = {r.name: r for r in result.restored}
+    width = max((len(problem.display(n)) for n in problem.objects), default=10)
+    click.echo(f"{'element':<{width}} {'class':<16} {'R(e)':>6}  {'kept':<8} why")
+    order = sorted(problem.objects, key=lambda n: (-scores.element_scores.get(n, 0.0), n))
+    for name in order:
+        if name in result.selected:
+            kept = "yes"
+            why = scores.explanations.get(name, "")
+            if name in result.task.goal_objects:
+                why = "named in the goal"
+        elif name in restored:
+            kept, why = "restored", restored[name].reason
+        else:
+            kept, why = "no", scores.explanations.get(name, "")
+        click.echo(
+            f"{problem.display(name):<{width}} {scores.element_class.get(name, '-'):<16}"
+            f" {scores.element_scores.get(name, 0.0):6.3f}  {kept:<8} {why}"
+        )
+    click.echo("")
+    click.echo(f"kept {len(result.kept)} of {len(problem.objects)} objects ({len(result.restored)} restored by closure)")
+    if scores.unknown:
+        click.echo(f"class unknown to the model (default relevance): {', '.join(problem.display(n) for n in scores.unknown)}")
+
+
+@main.command()
+@click.argument("domain_path", metavar="DOMAIN", type=click.Path(dir_okay=False))
+@click.argument("problem_path", metavar="PROBLEM", type=click.Path(dir_okay=False))
+@click.option("-o", "--output", "output", type=click.Path(dir_okay=False), required=True, help="Pruned problem file.")
+@scoring_options
+@click.option("--json", "as_json", is_flag=True, help="Machine-readable report on stdout.")
+@handle_errors
+def prune(domain_path, problem_path, output, scorer, model_path, objective, task_name, human, tau_class, tau_element,
+          seed, as_json):
+    """Write PROBLEM without the objects that do not matter (a drop-in filter for any planner)."""
+    from relevance_plan.io import write_text_atomic
+
+    _, _, scores, result = _score_and_prune(
+        domain_path, problem_path, scorer, model_path, objective, task_name, human, tau_class, tau_element, seed
+    )
+    if not scores.sufficient:
+        if as_json:
+            click.echo(json.dumps(_prune_json(result), indent=2))
+        fail(f"insufficient cues: {scores.insufficiency}", ExitCode.INSUFFICIENT_CUES)
+    write_text_atomic(output, result.text)
+    if as_json:
+        data = _prune_json(result)
+        data["output"] = str(output)
+        click.echo(json.dumps(data, indent=2))
+    else:
+        total = len(result.task.problem.objects)
+        click.echo(
+            f"kept {len(result.kept)} of {total} objects ({len(result.restored)} restored by closure);"
+            f" wrote {output}"
+        )
+
+
+# --------------------------------------------------------------------------- plan
+
+
+@main.command()
+@click.argument("domain_path", metavar="DOMAIN", type=click.Path(dir_okay=False))
+@click.argument("problem_path", metavar="PROBLEM", type=click.Path(dir_okay=False))
+@click.option("--method", type=click.Choice(METHODS), default="relevance", show_default=True)
+@scoring_options
+@click.option("--timeout", type=float, default=120.0, show_default=True, help="Seconds for the whole run.")
+@click.option("--memory-limit", "memory_limit", type=int, default=None, help="Planner memory limit in MB.")
+@click.option("--planner-config", default="lama-first", show_default=True,
+              help="Fast Downward alias, registered name, or search string.")
+@click.option("--plan-file", default="sas_plan", show_default=True, type=click.Path(dir_okay=False))
+@click.option("--no-relax", is_flag=True, help="One attempt only (the paper's behaviour).")
+@click.option("--validator", "validators", multiple=True, type=click.Choice(["builtin", "up", "val"]),
+              help="Validator(s) to use (default: builtin, plus VAL when on PATH).")
+@click.option("--json", "as_json", is_flag=True, help="Print one JSON object.")
+@click.option("--quiet", "-q", is_flag=True, help="No progress messages.")
+@handle_errors
+def plan(domain_path, problem_path, method, scorer, model_path, objective, task_name, human, tau_class, tau_element,
+         seed, timeout, memory_limit, planner_config, plan_file, no_relax, validators, as_json, quiet):
+    """Prune, plan with Fast Downward, validate on the original problem, widen until solved."""
+    from relevance_plan.io import write_text_atomic
+    from relevance_plan.planning.validate import format_plan
+
+    options = PlanOptions(
+        method=method,
+        planner_config=planner_config,
+        timeout=timeout,
+        memory_limit_mb=memory_limit,
+        thresholds=Thresholds(tau_class, tau_element),
+        relax=not no_relax,
+        scorer=scorer,
+        model_path=model_path,
+        objective=objective,
+        task=task_name,
+        human=human,
+        seed=seed,
+        validators=tuple(validators) or None,
+    )
+    say = None if (quiet or as_json) else (lambda message: click.echo(f"... {message}", err=True))
+    result = plan_task(domain_path, problem_path, options, progress=say)
+    if result.status is PlanStatus.SOLVED:
+        problem = result.prune.task.problem if result.prune is not None else None
+        if problem is None:
+            from relevance_plan.io import load_task
+
+            problem = load_task(domain_path, problem_path)[1]
+        write_text_atomic(plan_file, format_plan(result.plan, problem, result.plan_cost))
+    if as_json:
+        data = result.to_json()
+        data["plan_file"] = str(plan_file) if result.status is PlanStatus.SOLVED else None
+        click.echo(json.dumps(data, indent=2))
+    else:
+        _print_plan_summary(result, plan_file)
+    code = PLAN_STATUS_EXIT[result.status]
+    if code is not ExitCode.SUCCESS:
+        if not as_json:
+            click.echo(f"relevance-plan: {result.status.value}: {result.message}", err=True)
+        sys.exit(int(code))
+
+
+def _print_plan_summary(result: PlanResult, plan_file) -> None:
+    click.echo(f"method:      {result.method}")
+    click.echo(f"status:      {result.status.value}")
+    click.echo(f"objects:     {result.objects_kept} kept of {result.objects_total}")
+    click.echo(f"attempts:    {len(result.attempts)} (first: {result.first_attempt_status})")
+    click.echo(
+        f"time:        {result.wall_time:.2f} s total, {result.relevance_time:.2f} s relevance,"
+        f" {result.planner_time:.2f} s planner, {result.validation_time:.2f} s validation"
+    )
+    if result.status is PlanStatus.SOLVED:
+        click.echo(f"plan:        {len(result.plan)} steps, valid on the original problem ({result.validation.validator})")
+        click.echo(f"plan file:   {plan_file}")
+
+
+# --------------------------------------------------------------------------- sweep
+
+
+@main.command()
+@click.argument("suite_dir", metavar="SUITE_DIR", type=click.Path())
+@click.option("--scorer", type=click.Choice(sorted(SCORERS)), default=None)
+@click.option("--model", "model_path", type=click.Path(dir_okay=False), default=None)
+@click.option("--objective", default=None)
+@click.option("--task", "task_name", default=None)
+@click.option("--human", default=None)
+@click.option("--taus", default="0.1,0.2,0.3,0.4,0.5", show_default=True, help="Threshold values for both axes.")
+@click.option("--heatmap", type=click.Path(dir_okay=False), default=None, help="Write a PNG heatmap (needs matplotlib).")
+@click.option("--json", "as_json", is_flag=True)
+@handle_errors
+def sweep(suite_dir, scorer, model_path, objective, task_name, human, taus, heatmap, as_json):
+    """Precision, recall, F1 and N over a tau_c x tau_e grid for a generated suite."""
+    from relevance_plan.batch.sweep import format_sweep, sweep_suite, write_heatmap
+
+    try:
+        values = tuple(float(v) for v in taus.split(","))
+    except ValueError:
+        raise UsageError(f"--taus must be comma-separated numbers, got '{taus}'") from None
+    for value in values:
+        Thresholds(value, value)
+    result = sweep_suite(Path(suite_dir), values, scorer=scorer, model_path=model_path, objective=objective,
+                         task=task_name, human=human)
+    if heatmap:
+        write_heatmap(result, heatmap)
+    click.echo(json.dumps(result.to_json(), indent=2) if as_json else format_sweep(result))
+
+
+# --------------------------------------------------------------------------- exit codes
+
+
+@main.command("exit-codes")
+def exit_codes():
+    """Print the table of exit codes."""
+    for code in ExitCode:
+        click.echo(f"{int(code):>4}  {code.name:<18} {EXIT_CODE_DESCRIPTIONS[code]}")
+
+
+# The batch commands live in their own module; they import this one lazily.
+from relevance_plan.cli.batch import COMMANDS as BATCH_COMMANDS  # noqa: E402
+
+for _command in BATCH_COMMANDS:
+    main.add_command(_command)
+
+
+if __name__ == "__main__":  # pragma: no cover
+    main()

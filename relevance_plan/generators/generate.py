@@ -1,0 +1,383 @@
+"""Seeded benchmark problems and suites for the coffee and cereal worlds.
+
+``generate_problem`` is pure: (world, difficulty, seed, index, distractors)
+always gives the same ``GeneratedProblem``.  It starts from the base scene,
+adds distractors drawn from the 200-kind catalog, placed on random surfaces
+or inside random containers, and, in the coffee world, random spatial
+constraints (one item stacked on another).  The random stream is seeded from
+a SHA-256 of (seed, world, difficulty, index), never from ``hash()``.
+
+``generate_suite`` writes a directory atomically: ``domain.pddl`` (a byte
+copy of ``domains/<world>/domain.pddl``), ``<world>-<difficulty>-<NNN>.pddl``
+with a ``.json`` sidecar per problem, and a ``suite.json`` manifest.
+``write_base_scenes`` writes the four base scenes into ``problems/``.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import random
+import shutil
+import tempfile
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Callable
+
+from relevance_plan.data import DOMAINS_DIR
+from relevance_plan.errors import InputFileError, UsageError
+from relevance_plan.generators.catalog import CATALOG
+from relevance_plan.generators.problem import choose_roles, format_scene, necessary_objects, relevant_objects
+from relevance_plan.generators.scenes import DIFFICULTIES, SCENES, WORLD_NAMES, Item, Scene, name_key
+
+GENERATOR = "relevance_plan.generators"
+GENERATOR_VERSION = "1"
+
+
+DISTRACTOR_RANGES: dict[tuple[str, str], tuple[int, int]] = {
+    ("coffee", "simple"): (10, 30),
+    ("coffee", "hard"): (20, 50),
+    ("cereal", "simple"): (10, 45),
+    ("cereal", "hard"): (30, 60),
+}
+"""Inclusive range the number of distractors is drawn from (paper, Sec. V.A)."""
+
+CONSTRAINT_COUNTS: dict[tuple[str, str], int] = {
+    ("coffee", "simple"): 3,
+    ("coffee", "hard"): 8,
+    ("cereal", "simple"): 0,
+    ("cereal", "hard"): 0,
+}
+"""Random on-top constraints added per problem (cereal adds none)."""
+
+BASE_SCENE_NAMES = tuple(f"{w}-{d}" for w in WORLD_NAMES for d in DIFFICULTIES)
+
+
+@dataclass(frozen=True)
+class GeneratedProblem:
+    name: str
+    pddl_text: str
+    sidecar: dict[str, Any]
+    scene: Scene = field(repr=False, compare=False)
+
+    @property
+    def sidecar_text(self) -> str:
+        return sidecar_json(self.sidecar)
+
+
+def sidecar_json(data: dict[str, Any]) -> str:
+    return json.dumps(data, sort_keys=True, indent=2) + "\n"
+
+
+# --- arguments ---------------------------------------------------------------
+
+def _check_world(world: object, difficulty: object) -> None:
+    if world not in WORLD_NAMES:
+        raise UsageError(f"unknown world {world!r}: choose one of {', '.join(WORLD_NAMES)}")
+    if difficulty not in DIFFICULTIES:
+        raise UsageError(f"unknown difficulty {difficulty!r}: choose one of {', '.join(DIFFICULTIES)}")
+
+
+def _check_int(label: str, value: object, minimum: int | None = None) -> None:
+    if isinstance(value, bool) or not isinstance(value, int):
+        raise UsageError(f"{label} must be an integer, not {value!r}")
+    if minimum is not None and value < minimum:
+        raise UsageError(f"{label} must be at least {minimum}, not {value}")
+
+
+def _check_arguments(world: object, difficulty: object, seed: object, distractors: object) -> None:
+    _check_world(world, difficulty)
+    _check_int("seed", seed)
+    if distractors is not None:
+        _check_int("distractors", distractors, 0)
+
+
+def problem_rng(seed: int, world: str, difficulty: str, index: int) -> random.Random:
+    """The random stream of one problem (stable across processes and Pythons)."""
+    key = f"{GENERATOR}/{GENERATOR_VERSION}/{seed}/{world}/{difficulty}/{index}".encode()
+    return random.Random(int.from_bytes(hashlib.sha256(key).digest()[:16], "big"))
+
+
+# --- one problem -------------------------------------------------------------
+
+def problem_name(world: str, difficulty: str, index: int) -> str:
+    return f"{world}-{difficulty}-{index:03d}"
+
+
+def generate_problem(
+    world: str,
+    difficulty: str,
+    seed: int,
+    index: int,
+    distractors: int | None = None,
+) -> GeneratedProblem:
+    """Build problem ``index`` of the suite (world, difficulty, seed).
+
+    ``distractors`` overrides the number of distractors drawn from
+    ``DISTRACTOR_RANGES`` (the paper's count is still drawn first, so the
+    stream is consumed the same way up to the distractors themselves).
+    """
+    _check_arguments(world, difficulty, seed, distractors)
+    _check_int("index", index, 0)
+    base = SCENES[f"{world}-{difficulty}"]
+    rng = problem_rng(seed, world, difficulty, index)
+
+    low, high = DISTRACTOR_RANGES[(world, difficulty)]
+    drawn = rng.randint(low, high)
+    count = drawn if distractors is None else distractors
+    added = _draw_distractors(base, count, rng)
+    items, constraints = _add_constraints(base, list(base.items) + added, CONSTRAINT_COUNTS[(world, difficulty)], rng)
+    scene = Scene(
+        world=world,
+        difficulty=difficulty,
+        places=base.places,
+        items=tuple(items),
+        humans=base.humans,
+        robot_start=base.robot_start,
+    )
+    name = problem_name(world, difficulty, index)
+    comment = (
+        f"{name}: base scene {base.name} + {count} distractors, {len(constraints)} added constraints\n"
+        f"generated by {GENERATOR} version {GENERATOR_VERSION}, seed {seed}, index {index}"
+    )
+    sidecar = build_sidecar(
+        scene,
+        base_scene=base.name,
+        seed=seed,
+        index=index,
+        distractors=[item.name for item in added],
+        constraints=constraints,
+    )
+    return GeneratedProblem(name, format_scene(scene, name, comment), sidecar, scene)
+
+
+def _draw_distractors(base: Scene, count: int, rng: random.Random) -> list[Item]:
+    """``count`` distractors: distinct kinds per pass over the catalog, each on
+    the base of a random place; indices continue after the scene's own."""
+    next_index: dict[str, int] = {}
+    for name in base.object_names():
+        kind, number = name_key(name)
+        next_index[kind] = max(next_index.get(kind, 0), number)
+    places = [p.name for p in base.places]
+    added: list[Item] = []
+    while len(added) < count:
+        for kind, type_name in rng.sample(CATALOG, min(len(CATALOG), count - len(added))):
+            next_index[kind] = next_index.get(kind, 0) + 1
+            added.append(Item(f"{kind}_{next_index[kind]}", type_name, rng.choice(places)))
+    return added
+
+
+def _add_constraints(
+    base: Scene, items: list[Item], count: int, rng: random.Random
+) -> tuple[list[Item], list[list[str]]]:
+    """Add ``count`` on-top constraints [top, bottom].
+
+    The bottom is a task item with nothing on it (so every constraint is a task
+    dependency); the top is the base item of any other pile, which moves with
+    everything on it onto the bottom, at the bottom's place.  Piles may chain;
+    task items may stand on task items; the items' order is kept.
+    """
+    if count == 0:
+        return items, []
+    relevant = set(base.world_spec.relevant_types)
+    order = [item.name for item in items]
+    type_of = {item.name: item.type for item in items}
+    place_of = {item.name: item.place for item in items}
+    below = {item.name: item.on for item in items}
+    above = {item.on: item.name for item in items if item.on is not None}
+
+    def pile(name: str) -> list[str]:
+        while below[name] is not None:
+            name = below[name]
+        result = [name]
+        while result[-1] in above:
+            result.append(above[result[-1]])
+        return result
+
+    constraints: list[list[str]] = []
+    for _ in range(count):
+        bottoms = [n for n in order if type_of[n] in relevant and n not in above]
+        bottom = rng.choice(bottoms)
+        bottom_pile = set(pile(bottom))
+        tops = [n for n in order if below[n] is None and n not in bottom_pile]
+        top = rng.choice(tops)
+        for moved in pile(top):
+            place_of[moved] = place_of[bottom]
+        below[top] = bottom
+        above[bottom] = top
+        constraints.append([top, bottom])
+    return [Item(n, type_of[n], place_of[n], below[n]) for n in order], constraints
+
+
+def build_sidecar(
+    scene: Scene,
+    *,
+    base_scene: str,
+    seed: int | None,
+    index: int | None,
+    distractors: list[str],
+    constraints: list[list[str]],
+) -> dict[str, Any]:
+    roles = choose_roles(scene)
+    return {
+        "seed": seed,
+        "index": index,
+        "world": scene.world,
+        "difficulty": scene.difficulty,
+        "base_scene": base_scene,
+        "distractor_count": len(distractors),
+        "distractors": list(distractors),
+        "constraints": [list(pair) for pair in constraints],
+        "dependencies": [d.as_dict() for d in scene.dependencies],
+        "objects_total": scene.objects_total,
+        "relevant": relevant_objects(scene),
+        "necessary": necessary_objects(scene, roles),
+        "roles": roles,
+    }
+
+
+def base_scene_problem(scene_name: str) -> GeneratedProblem:
+    """A base scene as a problem (no distractors, no added constraints)."""
+    if scene_name not in SCENES:
+        raise UsageError(f"unknown base scene {scene_name!r}: choose one of {', '.join(SCENES)}")
+    scene = SCENES[scene_name]
+    comment = (
+        f"{scene.name}: base scene of the {scene.world} world, {scene.objects_total} objects, "
+        f"{len(scene.dependencies)} natural task dependencies\n"
+        f"generated by {GENERATOR} version {GENERATOR_VERSION}"
+    )
+    sidecar = build_sidecar(scene, base_scene=scene.name, seed=None, index=None, distractors=[], constraints=[])
+    return GeneratedProblem(scene.name, format_scene(scene, scene.name, comment), sidecar, scene)
+
+
+# --- files -------------------------------------------------------------------
+
+def _write_text(path: Path, text: str) -> None:
+    with open(path, "w", encoding="utf-8", newline="\n") as handle:
+        handle.write(text)
+
+
+def _is_our_suite(directory: Path) -> bool:
+    try:
+        manifest = json.loads((directory / "suite.json").read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return False
+    return isinstance(manifest, dict) and manifest.get("generator") == GENERATOR
+
+
+def generate_suite(
+    world: str,
+    difficulty: str,
+    count: int,
+    seed: int,
+    out_dir: Path,
+    distractors: int | None = None,
+    progress: Callable[[int, int], None] | None = None,
+) -> list[Path]:
+    """Write ``count`` problems (indices 1..count) into ``out_dir``; return the
+    ``.pddl`` paths.
+
+    The suite is built in a temporary sibling directory and renamed into
+    place, so a failure leaves no partial suite.  An existing non-empty
+    ``out_dir`` is replaced only if it is a suite written by this generator.
+    Raises ``UsageError`` for bad arguments, ``InputFileError`` when the
+    directory cannot be written.
+    """
+    _check_arguments(world, difficulty, seed, distractors)
+    _check_int("count", count, 1)
+    out_dir = Path(os.path.abspath(os.fspath(out_dir)))
+    if out_dir.exists() or out_dir.is_symlink():
+        if not out_dir.is_dir() or out_dir.is_symlink():
+            raise InputFileError("output path exists and is not a plain directory", path=str(out_dir))
+        if any(out_dir.iterdir()) and not _is_our_suite(out_dir):
+            raise UsageError(f"output directory {out_dir} is not empty and holds no suite of ours; choose another")
+    domain_path = DOMAINS_DIR / world / "domain.pddl"
+    try:
+        domain_bytes = domain_path.read_bytes()
+    except OSError as error:
+        raise InputFileError(f"cannot read the domain: {error.strerror or error}", path=str(domain_path)) from None
+
+    parent = out_dir.parent
+    try:
+        parent.mkdir(parents=True, exist_ok=True)
+        staging = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}.", suffix=".tmp", dir=parent))
+    except OSError as error:
+        raise InputFileError(f"cannot write the suite: {error.strerror or error}", path=str(out_dir)) from None
+
+    try:
+        (staging / "domain.pddl").write_bytes(domain_bytes)
+        entries = []
+        for index in range(1, count + 1):
+            problem = generate_problem(world, difficulty, seed, index, distractors)
+            _write_text(staging / f"{problem.name}.pddl", problem.pddl_text)
+            _write_text(staging / f"{problem.name}.json", problem.sidecar_text)
+            entries.append(
+                {
+                    "name": problem.name,
+                    "problem": f"{problem.name}.pddl",
+                    "sidecar": f"{problem.name}.json",
+                    "distractor_count": problem.sidecar["distractor_count"],
+                }
+            )
+            if progress is not None:
+                progress(index, count)
+        manifest = {
+            "generator": GENERATOR,
+            "generator_version": GENERATOR_VERSION,
+            "world": world,
+            "difficulty": difficulty,
+            "count": count,
+            "seed": seed,
+            "distractors": distractors,
+            "domain": "domain.pddl",
+            "problems": entries,
+        }
+        _write_text(staging / "suite.json", sidecar_json(manifest))
+        _move_into_place(staging, out_dir)
+    except OSError as error:
+        shutil.rmtree(staging, ignore_errors=True)
+        raise InputFileError(f"cannot write the suite: {error.strerror or error}", path=str(out_dir)) from None
+    except BaseException:
+        shutil.rmtree(staging, ignore_errors=True)
+        raise
+    return [out_dir / entry["problem"] for entry in entries]
+
+
+def _move_into_place(staging: Path, out_dir: Path) -> None:
+    """Rename ``staging`` to ``out_dir``, replacing an empty directory or a
+    previous suite (moved aside first and deleted only after the rename)."""
+    if not out_dir.exists():
+        os.rename(staging, out_dir)
+        return
+    if not any(out_dir.iterdir()):
+        os.rmdir(out_dir)
+        os.rename(staging, out_dir)
+        return
+    old = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}.", suffix=".old", dir=out_dir.parent))
+    os.rename(out_dir, old)  # replaces the empty placeholder ``old``
+    try:
+        os.rename(staging, out_dir)
+    except BaseException:
+        os.rename(old, out_dir)
+        raise
+    shutil.rmtree(old, ignore_errors=True)
+
+
+def write_base_scenes(problems_dir: Path) -> list[Path]:
+    """Write the four base scenes (``<world>-<difficulty>.pddl`` + ``.json``)."""
+    problems_dir = Path(problems_dir)
+    written: list[Path] = []
+    try:
+        problems_dir.mkdir(parents=True, exist_ok=True)
+        for scene_name in BASE_SCENE_NAMES:
+            problem = base_scene_problem(scene_name)
+            for suffix, text in ((".pddl", problem.pddl_text), (".json", problem.sidecar_text)):
+                target = problems_dir / f"{scene_name}{suffix}"
+                temporary = problems_dir / f".{scene_name}{suffix}.tmp"
+                _write_text(temporary, text)
+                os.replace(temporary, target)
+            written.append(problems_dir / f"{scene_name}.pddl")
+    except OSError as error:
+        raise InputFileError(f"cannot write the base scenes: {error.strerror or error}", path=str(problems_dir)) from None
+    return written

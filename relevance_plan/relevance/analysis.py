@@ -1,0 +1,318 @@
+"""Lifted analysis of a domain against a problem's initial state.
+
+Nothing here grounds an action.  Two results feed the rest of the pipeline:
+
+* ``infer_constraint_rules``: which initial facts tie one object to another
+  so tightly that keeping one requires keeping the other (what it stands on,
+  what holds it, what sits on top of it, the robot's only position);
+* ``goal_roles``: which types of objects can play a part in reaching the goal,
+  found by regressing the goal through the action schemas (the backward
+  fixpoint of pyperplan's relevance analysis, done on typed patterns instead
+  of ground atoms).
+"""
+
+from __future__ import annotations
+
+from collections import defaultdict
+from dataclasses import dataclass
+from typing import Mapping
+
+from relevance_plan.pddl.reader import Domain, Formula, Problem, effect_literals, formula_atoms
+
+# --------------------------------------------------------------------------- init-state facts
+
+
+@dataclass(frozen=True)
+class InitIndex:
+    """The initial state indexed by predicate, for rule inference and closure."""
+
+    by_predicate: Mapping[str, tuple]
+    by_object: Mapping[str, tuple]
+    functional: frozenset  # (predicate, key_position, other_position): key determines other
+
+    @property
+    def singletons(self) -> frozenset:
+        return frozenset(p for p, atoms in self.by_predicate.items() if len(atoms) == 1)
+
+
+def index_init(problem: Problem) -> InitIndex:
+    by_predicate: dict[str, list] = defaultdict(list)
+    by_object: dict[str, list] = defaultdict(list)
+    for atom in problem.init:
+        by_predicate[atom[0]].append(atom)
+        for arg in set(atom[1:]):
+            by_object[arg].append(atom)
+    functional = set()
+    for predicate, atoms in by_predicate.items():
+        arity = len(atoms[0]) - 1
+        for key in range(arity):
+            seen: dict[str, tuple] = {}
+            is_functional = True
+            for atom in atoms:
+                value = atom[1 + key]
+                rest = atom[1:1 + key] + atom[2 + key:]
+                previous = seen.setdefault(value, rest)
+                if previous != rest:
+                    is_functional = False
+                    break
+            if is_functional:
+                functional.update((predicate, key, other) for other in range(arity) if other != key)
+    return InitIndex(
+        by_predicate={p: tuple(a) for p, a in by_predicate.items()},
+        by_object={o: tuple(a) for o, a in by_object.items()},
+        functional=frozenset(functional),
+    )
+
+
+# --------------------------------------------------------------------------- constraint rules
+
+
+@dataclass(frozen=True)
+class ConstraintRule:
+    """Keeping the object at ``when_kept`` of a ``predicate`` fact keeps the one at ``restore``."""
+
+    predicate: str
+    when_kept: int  # 0-based argument position
+    restore: int
+    kind: str  # "blocker", "anchor", "singleton", "model"
+    reason: str = ""
+
+
+def _precondition_predicates(domain: Domain) -> set[str]:
+    used = set()
+    for action in domain.actions:
+        for atom, _ in formula_atoms(action.precondition):
+            used.add(atom[1])
+        for _, _, condition in effect_literals(action.effect):
+            for atom, _ in formula_atoms(condition):
+                used.add(atom[1])
+    return used
+
+
+def blocking_predicates(domain: Domain) -> set[tuple[str, int, int]]:
+    """Binary relations whose removal frees something: (predicate, blocker_pos, blocked_pos).
+
+    Found from schemas of the form 'precondition B(?a, ?b); deletes B(?a, ?b);
+    adds U(?b)' where U is needed by some precondition: removing ?a is what
+    makes ?b usable again (unstack in blocksworld, taking a plate off a cup).
+    """
+    needed = {atom[1] for action in domain.actions for atom, positive in formula_atoms(action.precondition) if positive}
+    found = set()
+    for action in domain.actions:
+        pre = [atom for atom, positive in formula_atoms(action.precondition) if positive]
+        literals = list(effect_literals(action.effect))
+        deleted = {(atom[1], atom[2]) for atom, is_add, _ in literals if not is_add}
+        added = [atom for atom, is_add, _ in literals if is_add]
+        for atom in pre:
+            if len(atom[2]) != 2 or (atom[1], atom[2]) not in deleted:
+                continue
+            a, b = atom[2]
+            for add in added:
+                if add[1] in needed and add[2] == (b,) and a != b:
+                    found.add((atom[1], 0, 1))
+    return found
+
+
+def infer_constraint_rules(domain: Domain, index: InitIndex) -> tuple[ConstraintRule, ...]:
+    """Closure rules read off the action schemas and the initial state."""
+    used = _precondition_predicates(domain)
+    rules: list[ConstraintRule] = []
+    for predicate, blocker, blocked in sorted(blocking_predicates(domain)):
+        rules.append(ConstraintRule(predicate, blocked, blocker, "blocker", "on top of"))
+    for predicate, key, other in sorted(index.functional):
+        if predicate in used:
+            rules.append(ConstraintRule(predicate, key, other, "anchor", "holds"))
+    return tuple(rules)
+
+
+# --------------------------------------------------------------------------- goal regression
+
+
+@dataclass(frozen=True)
+class GoalAnalysis:
+    relevant_predicates: frozenset
+    role_depth: Mapping[str, int]  # type -> fewest role introductions from the goal
+    goal_variable_types: frozenset  # types quantified in the goal
+
+
+def _atoms_with_polarity(formula: Formula):
+    return [(atom[1], atom[2], positive) for atom, positive in formula_atoms(formula)]
+
+
+def analyse_goal(domain: Domain, problem: Problem, index: InitIndex | None = None) -> GoalAnalysis:
+    """Regress the goal through the schemas on typed patterns (no grounding).
+
+    A pattern is (predicate, args) where each arg is a goal object or a type.
+    An achiever's parameter that is not unified with the pattern is a new
+    variable.  It is a *role* (any object of its type may serve: a cup, a
+    gripper) unless the initial state determines it from an argument already
+    known, e.g. the place an item is at or the thing stacked on it.
+    Patterns that some initial fact already satisfies are not regressed
+    further (a clear cup, a free gripper): the objects in the way of a
+    particular one are closure's business, not the goal's.
+    """
+    index = index or index_init(problem)
+    objects = dict(domain.constants)
+    objects.update(problem.objects)
+    goal_types = set()
+    start: list[tuple[tuple, int]] = []
+    stack = [(problem.goal, {})]
+    while stack:
+        formula, variables = stack.pop()
+        kind = formula[0]
+        if kind == "atom":
+            if formula[1] != "=":
+                args = tuple(("type", variables[a]) if a in variables else ("obj", a) for a in formula[2])
+                start.append(((formula[1], args), 0))
+        elif kind in ("and", "or"):
+            stack.extend((part, variables) for part in formula[1:])
+        elif kind == "not":
+            stack.append((formula[1], variables))
+        elif kind == "imply":
+            stack.extend(((formula[1], variables), (formula[2], variables)))
+        elif kind in ("exists", "forall"):
+            inner = dict(variables)
+            inner.update(formula[1])
+            goal_types.update(t for _, t in formula[1])
+            stack.append((formula[2], inner))
+
+    def initially_satisfiable(pattern) -> bool:
+        # Some initial fact matches: some object of the right type already has
+        # the property (a cup that is clear, a free gripper), so the pattern
+        # need not be regressed; closure handles the objects in the way.
+        predicate, args = pattern
+        for atom in index.by_predicate.get(predicate, ()):
+            if all(
+                atom[1 + i] == a[1] if a[0] == "obj" else domain.is_subtype(objects.get(atom[1 + i], "object"), a[1])
+                for i, a in enumerate(args)
+            ):
+                return True
+        return False
+
+    best: dict[tuple, int] = {}
+    role_depth: dict[str, int] = {t: 0 for t in goal_types}
+    frontier = list(start)
+    achievers = defaultdict(list)
+    for action in domain.actions:
+        for atom, is_add, condition in effect_literals(action.effect):
+            if is_add:
+                achievers[atom[1]].append((action, atom, condition))
+    while frontier:
+        pattern, depth = frontier.pop()
+        if best.get(pattern, 1 << 30) <= depth:
+            continue
+        best[pattern] = depth
+        if initially_satisfiable(pattern):
+            continue
+        options = []
+        for action, added, condition in achievers.get(pattern[0], ()):
+            bound = _unify(domain, objects, action, added, pattern[1])
+            if bound is not None:
+                pre_atoms = [a for a in _atoms_with_polarity(("and", action.precondition, condition)) if a[2]]
+                options.append((action, bound, pre_atoms, _roles(action, bound, pre_atoms, index)))
+        if not options:
+            continue
+        # Only the achievers that need the fewest new roles count: picking up a
+        # cup needs nothing new, unstacking it from "some item" would make every
+        # item look useful.
+        fewest = min(len(option[3]) for option in options)
+        for action, bound, pre_atoms, roles_here in options:
+            if len(roles_here) != fewest:
+                continue
+            params = dict(action.parameters)
+            for var in roles_here:
+                type_name = params[var]
+                if role_depth.get(type_name, 1 << 30) > depth + 1:
+                    role_depth[type_name] = depth + 1
+            for predicate_name, args, _ in pre_atoms:
+                if predicate_name == "=":
+                    continue
+                # A condition on a newly introduced role is one step further away.
+                next_depth = depth + (1 if roles_here.intersection(args) else 0)
+                new_args = []
+                for arg in args:
+                    if arg in bound:
+                        new_args.append(bound[arg])
+                    elif arg.startswith("?"):
+                        new_args.append(("type", params.get(arg, "object")))
+                    else:
+                        new_args.append(("obj", arg))
+                frontier.append(((predicate_name, tuple(new_args)), next_depth))
+    return GoalAnalysis(
+        relevant_predicates=frozenset(p for p, _ in best),
+        role_depth=role_depth,
+        goal_variable_types=frozenset(goal_types),
+    )
+
+
+def single_valued_predicates(domain: Domain, index: InitIndex) -> frozenset:
+    """Predicates with one initial fact that stay single-valued: every action adding one deletes one.
+
+    The robot's position is the typical case: pruning the place it stands on
+    would leave it nowhere.
+    """
+    result = set()
+    for predicate in index.singletons:
+        atoms = index.by_predicate[predicate]
+        if len(atoms[0]) < 2:
+            continue
+        adders = [
+            action
+            for action in domain.actions
+            if any(is_add and atom[1] == predicate for atom, is_add, _ in effect_literals(action.effect))
+        ]
+        if adders and all(
+            any(not is_add and atom[1] == predicate for atom, is_add, _ in effect_literals(action.effect))
+            for action in adders
+        ):
+            result.add(predicate)
+    return frozenset(result)
+
+
+def _unify(domain: Domain, objects: Mapping[str, str], action, added, pattern_args) -> dict | None:
+    """Bind the achiever's parameters to the pattern's objects and types, or None if they clash."""
+    params = dict(action.parameters)
+    bound: dict[str, tuple] = {}
+    for arg, want in zip(added[2], pattern_args):
+        if arg.startswith("?"):
+            declared = params.get(arg, "object")
+            if want[0] == "obj":
+                kind = objects.get(want[1])
+                if kind is None or not domain.is_subtype(kind, declared):
+                    return None
+                bound[arg] = want
+            elif domain.is_subtype(declared, want[1]):
+                bound[arg] = ("type", declared)
+            elif domain.is_subtype(want[1], declared):
+                bound[arg] = ("type", want[1])
+            else:
+                return None
+        elif want[0] == "obj" and want[1] != arg:
+            return None
+    return bound
+
+
+def _roles(action, bound: Mapping[str, tuple], pre_atoms, index: InitIndex) -> set:
+    """New parameters the initial state does not determine from known ones."""
+    anchored = set(bound)
+    new_vars = [name for name, _ in action.parameters if name not in bound]
+    changed = True
+    while changed:
+        changed = False
+        for var in new_vars:
+            if var in anchored:
+                continue
+            for predicate_name, args, _ in pre_atoms:
+                if var not in args:
+                    continue
+                position = args.index(var)
+                if predicate_name in index.singletons or any(
+                    (other in anchored or not other.startswith("?"))
+                    and (predicate_name, j, position) in index.functional
+                    for j, other in enumerate(args)
+                    if j != position
+                ):
+                    anchored.add(var)
+                    changed = True
+                    break
+    return {var for var in new_vars if var not in anchored}

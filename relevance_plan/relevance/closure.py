@@ -1,0 +1,72 @@
+"""Constraint closure: put back what the kept objects depend on.
+
+Repeats until nothing changes: whatever stands on a kept object (it must be
+moved first), whatever a kept object stands on or sits in (its place, the
+container that must be opened), the objects of a predicate with a single
+initial fact (the robot's only position), and the dependencies a knowledge
+model declares.  Every object put back carries the fact that brought it.
+"""
+
+from __future__ import annotations
+
+from collections import defaultdict
+from dataclasses import dataclass
+from typing import AbstractSet, Iterable
+
+from relevance_plan.relevance.analysis import ConstraintRule, InitIndex
+
+
+@dataclass(frozen=True)
+class Restored:
+    name: str
+    because_of: str  # the kept object that needed it ("" for singleton facts)
+    rule: str  # "blocker", "anchor", "singleton", "model"
+    fact: tuple  # the initial fact that ties them
+
+    @property
+    def reason(self) -> str:
+        fact = "(" + " ".join(self.fact) + ")"
+        if self.rule == "blocker":
+            return f"on top of {self.because_of} {fact}"
+        if self.rule == "anchor":
+            return f"needed by {self.because_of} {fact}"
+        if self.rule == "singleton":
+            return f"only initial fact of its predicate {fact}"
+        return f"declared dependency of {self.because_of} {fact}"
+
+
+def close_over_constraints(
+    kept: AbstractSet[str],
+    rules: Iterable[ConstraintRule],
+    index: InitIndex,
+    candidates: AbstractSet[str],
+    singleton_predicates: AbstractSet[str] = frozenset(),
+) -> tuple[frozenset, tuple[Restored, ...]]:
+    """Return (closed kept set, what was put back and why); inputs are not changed.
+
+    ``candidates`` are the prunable objects; domain constants never need restoring.
+    """
+    rules_by_predicate: dict[str, list[ConstraintRule]] = defaultdict(list)
+    for rule in rules:
+        rules_by_predicate[rule.predicate].append(rule)
+    result = set(kept)
+    restored: list[Restored] = []
+
+    def keep(name: str, because_of: str, rule: str, fact: tuple, worklist: list) -> None:
+        if name in candidates and name not in result:
+            result.add(name)
+            restored.append(Restored(name, because_of, rule, fact))
+            worklist.append(name)
+
+    worklist: list[str] = sorted(result)
+    for predicate in sorted(singleton_predicates):
+        for fact in index.by_predicate.get(predicate, ()):
+            for arg in fact[1:]:
+                keep(arg, "", "singleton", fact, worklist)
+    while worklist:
+        name = worklist.pop()
+        for fact in index.by_object.get(name, ()):
+            for rule in rules_by_predicate.get(fact[0], ()):
+                if fact[1 + rule.when_kept] == name:
+                    keep(fact[1 + rule.restore], name, rule.kind, fact, worklist)
+    return frozenset(result), tuple(restored)

@@ -1,0 +1,194 @@
+"""Score -> threshold -> closure -> pruned problem text, as one result value."""
+
+from __future__ import annotations
+
+from collections import defaultdict
+from dataclasses import dataclass, field
+from typing import AbstractSet, Sequence
+
+from relevance_plan.relevance.analysis import ConstraintRule, infer_constraint_rules, single_valued_predicates
+from relevance_plan.relevance.closure import Restored, close_over_constraints
+from relevance_plan.relevance.knowledge import KnowledgeModel, check_threshold
+from relevance_plan.relevance.scorers import SCORERS, ScoreRequest, ScoreResult, Task
+from relevance_plan.errors import UsageError
+from relevance_plan.pddl.writer import write_pruned_problem
+
+DEFAULT_TAU = 0.2
+
+
+@dataclass(frozen=True)
+class Thresholds:
+    tau_class: float = DEFAULT_TAU
+    tau_element: float = DEFAULT_TAU
+
+    def __post_init__(self):
+        check_threshold(self.tau_class, "--tau-class")
+        check_threshold(self.tau_element, "--tau-element")
+
+    def scaled(self, factor: float) -> "Thresholds":
+        return Thresholds(self.tau_class * factor, self.tau_element * factor)
+
+
+@dataclass(frozen=True)
+class PruneResult:
+    task: Task
+    scores: ScoreResult
+    thresholds: Thresholds
+    selected: frozenset  # passed the thresholds (plus goal objects)
+    kept: frozenset  # after closure
+    restored: tuple  # of Restored, in the order closure found them
+    text: str = field(repr=False)  # the pruned problem in the user's own layout
+    set_aside: frozenset = frozenset()  # relevant alternatives left for a later attempt (see free_alternatives)
+
+    @property
+    def removed(self) -> tuple:
+        return tuple(name for name in self.task.problem.objects if name not in self.kept)
+
+    @property
+    def sufficient(self) -> bool:
+        return self.scores.sufficient
+
+
+def constraint_rules(task: Task, model: KnowledgeModel | None) -> tuple[ConstraintRule, ...]:
+    rules = list(infer_constraint_rules(task.domain, task.init_index))
+    if model is not None:
+        for dependency in model.dependencies:
+            rules.append(
+                ConstraintRule(dependency.predicate, dependency.when_kept, dependency.restore, "model", dependency.reason)
+            )
+    return tuple(rules)
+
+
+def can_serve_goal(task: Task, name: str) -> bool:
+    """Whether the object can fill a role toward the goal (see ``analysis.analyse_goal``)."""
+    roles = task.goal_analysis.role_depth
+    return name in task.goal_objects or any(t in roles for t in task.domain.ancestors(task.problem.objects[name]))
+
+
+def select_relevant(task: Task, scores: ScoreResult, thresholds: Thresholds, goal_filter: bool = False) -> frozenset:
+    """Elements whose class passes tau_c (when classes are scored) and whose score passes tau_e.
+
+    With ``goal_filter``, relevant objects no action toward the goal can use
+    (a napkin the domain can only carry around) are left out too: relevant to
+    the human, useless to the planner.  Closure still puts back what the kept
+    objects need (their places, what stands on them).
+    """
+    selected = set(task.goal_objects & task.problem.objects.keys())
+    for name, score in scores.element_scores.items():
+        if scores.class_scores:
+            class_name = scores.element_class.get(name)
+            if scores.class_scores.get(class_name, 0.0) <= thresholds.tau_class:
+                continue
+        if score > thresholds.tau_element and (not goal_filter or can_serve_goal(task, name)):
+            selected.add(name)
+    return frozenset(selected)
+
+
+def free_alternatives(task: Task, scores: ScoreResult, selected: frozenset, restored: Sequence[Restored]) -> frozenset:
+    """``selected`` without the objects that something stands on, when another selected
+    object of the same model class stands free.
+
+    Any cup serves coffee: a cup under a plate costs the planner the plate as
+    well, and every extra item multiplies grounding.  Only classes of a
+    knowledge model are treated as interchangeable (a PDDL type is not: all
+    blocks of a tower are needed); goal objects always stay.
+    """
+    from relevance_plan.relevance.scorers.model import UNKNOWN_CLASS
+
+    if scores.scorer != "model":
+        return selected
+    encumbered = {item.because_of for item in restored if item.rule == "blocker"}
+    members_by_class: dict[str, set] = defaultdict(set)
+    for name in selected - task.goal_objects:
+        class_name = scores.element_class.get(name)
+        if class_name is not None and class_name != UNKNOWN_CLASS:
+            members_by_class[class_name].add(name)
+    set_aside = set()
+    for members in members_by_class.values():
+        if members - encumbered:
+            set_aside |= members & encumbered
+    return selected - set_aside
+
+
+def prune_with_scores(
+    task: Task,
+    scores: ScoreResult,
+    thresholds: Thresholds = Thresholds(),
+    model: KnowledgeModel | None = None,
+    extra: AbstractSet[str] = frozenset(),
+    goal_filter: bool = False,
+    prefer_free: bool = False,
+) -> PruneResult:
+    """Threshold the scores, add ``extra`` objects, close over constraints, write the text.
+
+    With ``prefer_free``, blocked alternatives are set aside (``free_alternatives``)
+    and closure runs again on what is left.
+    """
+    selected = select_relevant(task, scores, thresholds, goal_filter) | (frozenset(extra) & task.problem.objects.keys())
+    rules = constraint_rules(task, model)
+    singletons = single_valued_predicates(task.domain, task.init_index)
+
+    def close(names):
+        return close_over_constraints(
+            names, rules, task.init_index, candidates=task.problem.objects.keys(), singleton_predicates=singletons
+        )
+
+    kept, restored = close(selected)
+    set_aside: frozenset = frozenset()
+    if prefer_free:
+        narrowed = free_alternatives(task, scores, selected, restored)
+        if narrowed != selected:
+            set_aside = selected - narrowed
+            selected = narrowed
+            kept, restored = close(selected)
+    return PruneResult(
+        task=task,
+        scores=scores,
+        thresholds=thresholds,
+        selected=selected,
+        kept=kept,
+        restored=restored,
+        text=write_pruned_problem(task.problem, kept),
+        set_aside=set_aside,
+    )
+
+
+def score_task(task: Task, scorer: str, request: ScoreRequest) -> ScoreResult:
+    if scorer not in SCORERS:
+        raise UsageError(f"unknown scorer '{scorer}' (choose from: {', '.join(SCORERS)})")
+    return SCORERS[scorer](task, request)
+
+
+def widen(
+    result: PruneResult,
+    factor: float,
+    extra: AbstractSet[str] = frozenset(),
+    model: KnowledgeModel | None = None,
+    goal_filter: bool = False,
+) -> tuple[PruneResult, frozenset]:
+    """One relaxation step: scale the thresholds by ``factor`` and put back the best-ranked
+    quarter (at least 4) of the removed objects; returns the new result and the extra set."""
+    ranked = ranked_by_score(result)
+    extra = frozenset(extra) | frozenset(ranked[: max(4, len(ranked) // 4)])
+    widened = prune_with_scores(result.task, result.scores, result.thresholds.scaled(factor), model, extra, goal_filter)
+    return widened, extra
+
+
+def ranked_by_score(result: PruneResult) -> Sequence[str]:
+    """Pruned objects, most relevant first: the order in which relaxation adds them back."""
+    scores = result.scores.element_scores
+    return sorted(result.removed, key=lambda name: (-scores.get(name, 0.0), name))
+
+
+__all__ = [
+    "DEFAULT_TAU",
+    "PruneResult",
+    "Restored",
+    "Thresholds",
+    "constraint_rules",
+    "prune_with_scores",
+    "ranked_by_score",
+    "widen",
+    "score_task",
+    "select_relevant",
+]

@@ -1,0 +1,26 @@
+"""Scorers: each turns a planning task into relevance scores for its objects.
+
+A scorer is a function ``score(task, request) -> ScoreResult`` registered in
+``SCORERS``; the CLI's ``--scorer`` choices come from this dict.
+"""
+
+from __future__ import annotations
+
+from typing import Callable
+
+from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult, Task
+from relevance_plan.relevance.scorers.goal import score_by_goal
+from relevance_plan.relevance.scorers.model import score_by_model
+from relevance_plan.relevance.scorers.oracle import score_by_oracle
+from relevance_plan.relevance.scorers.random import score_randomly
+
+Scorer = Callable[[Task, ScoreRequest], ScoreResult]
+
+SCORERS: dict[str, Scorer] = {
+    "model": score_by_model,
+    "goal": score_by_goal,
+    "random": score_randomly,
+    "oracle": score_by_oracle,
+}
+
+__all__ = ["SCORERS", "Scorer", "ScoreRequest", "ScoreResult", "Task"]

@@ -1,0 +1,56 @@
+"""Values shared by every scorer."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from functools import cached_property
+from typing import Mapping
+
+from relevance_plan.relevance.analysis import GoalAnalysis, InitIndex, analyse_goal, index_init
+from relevance_plan.relevance.knowledge import KnowledgeModel
+from relevance_plan.pddl.reader import Domain, Problem, goal_objects
+
+
+@dataclass(frozen=True, eq=False)
+class Task:
+    """A domain and problem with the analyses several stages share, computed once."""
+
+    domain: Domain
+    problem: Problem
+
+    @cached_property
+    def init_index(self) -> InitIndex:
+        return index_init(self.problem)
+
+    @cached_property
+    def goal_analysis(self) -> GoalAnalysis:
+        return analyse_goal(self.domain, self.problem, self.init_index)
+
+    @cached_property
+    def goal_objects(self) -> frozenset:
+        return goal_objects(self.problem, self.domain)
+
+
+@dataclass(frozen=True)
+class ScoreRequest:
+    model: KnowledgeModel | None = None
+    objective: str | None = None
+    task: str | None = None
+    human: str | None = None
+    seed: int = 0
+    necessary: frozenset | None = None  # the oracle's answer, from a generator sidecar
+
+
+@dataclass(frozen=True)
+class ScoreResult:
+    scorer: str
+    element_scores: Mapping[str, float]
+    element_class: Mapping[str, str] = field(default_factory=dict)
+    class_scores: Mapping[str, float] = field(default_factory=dict)  # empty: no class threshold
+    explanations: Mapping[str, str] = field(default_factory=dict)
+    sufficient: bool = True
+    insufficiency: str = ""
+    unknown: tuple = ()  # elements whose class the model does not know
+    objective: str | None = None
+    task_distribution: Mapping[str, float] = field(default_factory=dict)
+    task_entropy: float | None = None

@@ -1,0 +1,50 @@
+"""Domain-independent relevance from the goal and the action schemas.
+
+Used when no knowledge model applies.  Goal objects score 1.  Objects whose
+type can fill a role that reaching the goal needs (a cup to serve, a gripper
+to carry) score 0.6 per role step away from the goal: 0.6 for a role of the
+goal's own achiever, 0.36 for what that role needs, and so on.  Objects that
+share a relevant initial fact with a goal object score 0.3.  Objects that can
+only get in the way score 0 and are left to closure.
+"""
+
+from __future__ import annotations
+
+from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult, Task
+
+ROLE_DECAY = 0.6
+NEIGHBOUR_SCORE = 0.3
+
+
+def score_by_goal(task: Task, request: ScoreRequest) -> ScoreResult:
+    domain, problem = task.domain, task.problem
+    analysis = task.goal_analysis
+    goal_objects = task.goal_objects
+    neighbours: dict[str, str] = {}
+    for name in goal_objects:
+        for atom in task.init_index.by_object.get(name, ()):
+            if atom[0] in analysis.relevant_predicates:
+                for other in atom[1:]:
+                    if other != name:
+                        neighbours.setdefault(other, "(" + " ".join(atom) + ")")
+    scores: dict[str, float] = {}
+    explanations: dict[str, str] = {}
+    for name, type_name in problem.objects.items():
+        if name in goal_objects:
+            scores[name], explanations[name] = 1.0, "named in the goal"
+            continue
+        best, why = 0.0, "no role in reaching the goal"
+        for ancestor in domain.ancestors(type_name):
+            depth = analysis.role_depth.get(ancestor)
+            if depth is not None and ROLE_DECAY ** max(depth, 1) > best:
+                best = ROLE_DECAY ** max(depth, 1)
+                why = f"can serve as {ancestor} (role {depth} step(s) from the goal)"
+        if name in neighbours and NEIGHBOUR_SCORE > best:
+            best, why = NEIGHBOUR_SCORE, f"shares {neighbours[name]} with a goal object"
+        scores[name], explanations[name] = best, why
+    return ScoreResult(
+        "goal",
+        scores,
+        element_class={name: problem.objects[name] for name in scores},
+        explanations=explanations,
+    )
