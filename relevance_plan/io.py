@@ -4,10 +4,13 @@ from __future__ import annotations
 
 import contextlib
 import os
+import stat
+import sys
 import tempfile
 from pathlib import Path
+from typing import Iterable
 
-from relevance_plan.errors import InputFileError
+from relevance_plan.errors import InputFileError, UsageError
 from relevance_plan.pddl.reader import Domain, Problem, read_domain, read_problem
 
 
@@ -94,26 +97,131 @@ def _read_umask() -> int:
 _UMASK = _read_umask()
 
 
-def write_bytes_atomic(path: str | os.PathLike, data: bytes) -> Path:
-    """Write through a temporary file in the same directory and rename it into place."""
+STDOUT = "-"
+
+
+def _same_file(a: Path, b: Path) -> bool:
+    try:
+        return os.path.samefile(a, b)
+    except OSError:
+        return False
+
+
+def _check_name(path: str | os.PathLike) -> None:
+    # The OS refuses such names with ValueError, not OSError.
+    if "\0" in os.fspath(path):
+        raise InputFileError("a file name cannot contain a NUL byte", path=repr(os.fspath(path))[1:-1])
+
+
+def check_input_file(path: str | os.PathLike, what: str = "file") -> None:
+    """Fail with one line (``InputFileError``) unless ``path`` is a readable file.
+
+    Done before any work, so a bad path is reported the same way for every command.
+    """
+    _check_name(path)
     path = Path(path)
-    directory = path.parent if str(path.parent) else Path(".")
+    try:
+        info = path.stat()
+    except FileNotFoundError:
+        raise InputFileError(f"{what} not found", path=str(path)) from None
+    except OSError as error:
+        raise InputFileError(f"cannot read {what}: {error.strerror}", path=str(path)) from None
+    if stat.S_ISDIR(info.st_mode):
+        raise InputFileError(f"expected a {what}, found a directory", path=str(path))
+    if not os.access(path, os.R_OK):
+        raise InputFileError(f"cannot read {what}: permission denied", path=str(path))
+
+
+def check_output_file(path: str | os.PathLike, what: str = "output file",
+                      inputs: Iterable[str | os.PathLike | None] = ()) -> None:
+    """Fail before any work if ``path`` cannot be written or would overwrite an input.
+
+    ``-`` (standard output) is always fine.  A file without any write
+    permission bit is refused even for root: the user protected it.
+    """
+    if str(path) == STDOUT:
+        return
+    _check_name(path)
+    path = Path(path)
+    for source in inputs:
+        if source is not None and str(source) != STDOUT and _same_file(path, Path(source)):
+            raise UsageError(f"{what} {path} is the same file as the input {source}; choose another name")
+    target = Path(os.path.realpath(path))
+    if target.is_dir():
+        raise InputFileError(f"{what} is a directory", path=str(path))
+    if target.exists():
+        info = target.stat()
+        if stat.S_ISREG(info.st_mode):
+            if not info.st_mode & 0o222 or not os.access(target, os.W_OK):
+                raise InputFileError(f"{what} is read-only", path=str(path))
+            # A regular file is replaced by rename: its directory must be writable too.
+            if not os.access(target.parent, os.W_OK):
+                raise InputFileError(f"cannot write {what}: its directory is not writable", path=str(path))
+        elif not os.access(target, os.W_OK):
+            raise InputFileError(f"cannot write {what}: permission denied", path=str(path))
+        return
+    directory = target.parent
+    if not directory.is_dir():
+        raise InputFileError(f"directory of the {what} does not exist", path=str(path))
+    if not os.access(directory, os.W_OK):
+        raise InputFileError(f"cannot write {what}: its directory is not writable", path=str(path))
+
+
+def write_output(path: str | os.PathLike, text: str) -> str:
+    """Write a user-facing output: ``-`` is standard output, anything else
+    goes through ``write_bytes_atomic``.  Returns where it went."""
+    if str(path) == STDOUT:
+        sys.stdout.write(text)
+        sys.stdout.flush()
+        return "standard output"
+    return str(write_bytes_atomic(path, text.encode("utf-8")))
+
+
+def write_bytes_atomic(path: str | os.PathLike, data: bytes) -> Path:
+    """Write through a temporary file in the same directory and rename it into place.
+
+    A symlink is followed (the link stays, its target gets the new text);
+    a device, FIFO or other non-regular file is written to directly, never
+    replaced; an existing file keeps its permissions, and a file without
+    write permission is refused rather than replaced.
+    """
+    path = Path(path)
+    target = Path(os.path.realpath(path)) if path.is_symlink() else path
+    try:
+        info = target.stat()
+    except OSError:
+        info = None
+    if info is not None and stat.S_ISDIR(info.st_mode):
+        raise InputFileError("cannot write file: it is a directory", path=str(path))
+    if info is not None and not stat.S_ISREG(info.st_mode):
+        try:
+            with open(target, "wb") as stream:
+                stream.write(data)
+        except OSError as error:
+            raise InputFileError(f"cannot write file: {error.strerror}", path=str(path)) from None
+        return path
+    if info is not None and not info.st_mode & 0o222:
+        raise InputFileError("cannot write file: it is read-only", path=str(path))
+    directory = target.parent if str(target.parent) else Path(".")
     if not directory.is_dir():
         raise InputFileError("output directory does not exist", path=str(directory))
     try:
-        handle, temporary = tempfile.mkstemp(prefix="." + path.name + ".", suffix=".tmp", dir=directory)
+        handle, temporary = tempfile.mkstemp(prefix="." + target.name + ".", suffix=".tmp", dir=directory)
     except OSError as error:
         raise InputFileError(f"cannot write here: {error.strerror}", path=str(directory)) from None
     try:
         with os.fdopen(handle, "wb") as stream:
             stream.write(data)
-        # mkstemp creates 0600; give the file the mode an ordinary open() would.
-        os.chmod(temporary, 0o666 & ~_UMASK)
-        os.replace(temporary, path)
-    except OSError as error:
+        # mkstemp creates 0600; give the file the mode it had, or the one an ordinary open() would.
+        mode = stat.S_IMODE(info.st_mode) if info is not None else 0o666 & ~_UMASK
+        os.chmod(temporary, mode)
+        os.replace(temporary, target)
+    except BaseException as error:
         try:
             os.unlink(temporary)
         except OSError:
             pass
-        raise InputFileError(f"cannot write file: {error.strerror}", path=str(path)) from None
+        if isinstance(error, OSError):
+            raise InputFileError(f"cannot write file: {error.strerror}", path=str(path)) from None
+        raise
     return path

@@ -264,9 +264,14 @@ def _print_score_table(result: PruneResult) -> None:
 @handle_errors
 def prune(domain_path, problem_path, output, scorer, model_path, objective, task_name, human, tau_class, tau_element,
           seed, as_json):
-    """Write PROBLEM without the objects that do not matter (a drop-in filter for any planner)."""
-    from relevance_plan.io import write_text_atomic
+    """Write PROBLEM without the objects that do not matter (a drop-in filter for any planner).
 
+    ``-o -`` writes the pruned problem to standard output (the summary goes to stderr).
+    """
+    from relevance_plan.io import STDOUT, write_output
+
+    if output == STDOUT and as_json:
+        raise UsageError("--json and '-o -' would both write to standard output; give -o a file name")
     _, _, scores, result = _score_and_prune(
         domain_path, problem_path, scorer, model_path, objective, task_name, human, tau_class, tau_element, seed
     )
@@ -274,7 +279,7 @@ def prune(domain_path, problem_path, output, scorer, model_path, objective, task
         if as_json:
             click.echo(json.dumps(_prune_json(result), indent=2))
         fail(f"insufficient cues: {scores.insufficiency}", ExitCode.INSUFFICIENT_CUES)
-    write_text_atomic(output, result.text)
+    written = write_output(output, result.text)
     if as_json:
         data = _prune_json(result)
         data["output"] = str(output)
@@ -283,7 +288,7 @@ def prune(domain_path, problem_path, output, scorer, model_path, objective, task
         total = len(result.task.problem.objects)
         click.echo(
             f"kept {len(result.kept)} of {total} objects ({len(result.restored)} restored by closure);"
-            f" wrote {output}"
+            f" wrote {written if output == STDOUT else output}", err=output == STDOUT
         )
 
 
@@ -309,8 +314,11 @@ def prune(domain_path, problem_path, output, scorer, model_path, objective, task
 def plan(domain_path, problem_path, method, scorer, model_path, objective, task_name, human, tau_class, tau_element,
          seed, timeout, memory_limit, planner_config, plan_file, no_relax, validators, as_json, quiet):
     """Prune, plan with Fast Downward, validate on the original problem, widen until solved."""
-    from relevance_plan.io import write_text_atomic
+    from relevance_plan.io import STDOUT, write_output
     from relevance_plan.planning.validate import format_plan
+
+    if plan_file == STDOUT and as_json:
+        raise UsageError("--json and '--plan-file -' would both write to standard output; give a file name")
 
     options = PlanOptions(
         method=method,
@@ -335,13 +343,14 @@ def plan(domain_path, problem_path, method, scorer, model_path, objective, task_
             from relevance_plan.io import load_task
 
             problem = load_task(domain_path, problem_path)[1]
-        write_text_atomic(plan_file, format_plan(result.plan, problem, result.plan_cost))
+        write_output(plan_file, format_plan(result.plan, problem, result.plan_cost))
     if as_json:
         data = result.to_json()
         data["plan_file"] = str(plan_file) if result.status is PlanStatus.SOLVED else None
         click.echo(json.dumps(data, indent=2))
     else:
-        _print_plan_summary(result, plan_file)
+        # With the plan on stdout, the summary goes to stderr.
+        _print_plan_summary(result, plan_file, err=plan_file == STDOUT)
     code = PLAN_STATUS_EXIT[result.status]
     if code is not ExitCode.SUCCESS:
         if not as_json:
@@ -349,18 +358,19 @@ def plan(domain_path, problem_path, method, scorer, model_path, objective, task_
         sys.exit(int(code))
 
 
-def _print_plan_summary(result: PlanResult, plan_file) -> None:
-    click.echo(f"method:      {result.method}")
-    click.echo(f"status:      {result.status.value}")
-    click.echo(f"objects:     {result.objects_kept} kept of {result.objects_total}")
-    click.echo(f"attempts:    {len(result.attempts)} (first: {result.first_attempt_status})")
-    click.echo(
+def _print_plan_summary(result: PlanResult, plan_file, err: bool = False) -> None:
+    echo = functools.partial(click.echo, err=err)
+    echo(f"method:      {result.method}")
+    echo(f"status:      {result.status.value}")
+    echo(f"objects:     {result.objects_kept} kept of {result.objects_total}")
+    echo(f"attempts:    {len(result.attempts)} (first: {result.first_attempt_status})")
+    echo(
         f"time:        {result.wall_time:.2f} s total, {result.relevance_time:.2f} s relevance,"
         f" {result.planner_time:.2f} s planner, {result.validation_time:.2f} s validation"
     )
     if result.status is PlanStatus.SOLVED:
-        click.echo(f"plan:        {len(result.plan)} steps, valid on the original problem ({result.validation.validator})")
-        click.echo(f"plan file:   {plan_file}")
+        echo(f"plan:        {len(result.plan)} steps, valid on the original problem ({result.validation.validator})")
+        echo(f"plan file:   {plan_file}")
 
 
 # --------------------------------------------------------------------------- sweep
@@ -409,6 +419,10 @@ from relevance_plan.cli.batch import COMMANDS as BATCH_COMMANDS  # noqa: E402
 
 for _command in BATCH_COMMANDS:
     main.add_command(_command)
+
+from relevance_plan.cli.paths import own_path_checks  # noqa: E402
+
+own_path_checks(main)
 
 
 if __name__ == "__main__":  # pragma: no cover
