@@ -88,10 +88,13 @@ def _one_line(error: BaseException) -> str:
 class ResultStore:
     """A results store at ``path``; created when missing unless ``create=False``.
 
+    ``read_only=True`` (reading commands) never creates or changes anything:
+    a file that is not a store is refused and stays byte-identical.
+
     Use from one thread (the batch's main thread writes; workers only compute).
     """
 
-    def __init__(self, path: str | os.PathLike, *, create: bool = True):
+    def __init__(self, path: str | os.PathLike, *, create: bool = True, read_only: bool = False):
         self.path = Path(path)
         self._connection: sqlite3.Connection | None = None
         exists = self.path.exists()
@@ -104,15 +107,23 @@ class ResultStore:
                 raise InputFileError("directory of the results store does not exist", path=str(self.path))
         else:
             self._check_header()
+            if read_only and self.path.stat().st_size == 0:
+                raise StoreError("empty file, not a results store", path=str(self.path))
         try:
-            connection = sqlite3.connect(self.path, isolation_level=None, timeout=BUSY_TIMEOUT_MS / 1000)
+            if not read_only:
+                connection = sqlite3.connect(self.path, isolation_level=None, timeout=BUSY_TIMEOUT_MS / 1000)
+            else:
+                # Reading commands open read-only: a file that is not a store stays byte-identical.
+                uri = self.path.resolve().as_uri() + "?mode=ro"
+                connection = sqlite3.connect(uri, uri=True, isolation_level=None, timeout=BUSY_TIMEOUT_MS / 1000)
         except sqlite3.Error as error:
             raise StoreError(f"cannot open the results store: {_one_line(error)}", path=str(self.path)) from None
         try:
             connection.row_factory = sqlite3.Row
             connection.execute(f"PRAGMA busy_timeout = {BUSY_TIMEOUT_MS}")
-            self._check_or_create(connection)
-            connection.execute("PRAGMA journal_mode = WAL")
+            self._check_or_create(connection, not read_only)
+            if not read_only:
+                connection.execute("PRAGMA journal_mode = WAL")
             connection.execute("PRAGMA synchronous = NORMAL")
         except sqlite3.DatabaseError as error:
             connection.close()
@@ -134,9 +145,11 @@ class ResultStore:
         if header and header != SQLITE_HEADER:
             raise StoreError("not a SQLite database (not a results store)", path=str(self.path))
 
-    def _check_or_create(self, connection: sqlite3.Connection) -> None:
+    def _check_or_create(self, connection: sqlite3.Connection, create: bool = True) -> None:
         tables = {row[0] for row in connection.execute("SELECT name FROM sqlite_master WHERE type = 'table'")}
         if not tables:
+            if not create:
+                raise StoreError("SQLite database without relevance-plan results (no tables)", path=str(self.path))
             self._create(connection)
             return
         if "meta" not in tables or "results" not in tables:
@@ -233,7 +246,7 @@ class ResultStore:
 
 def read_rows(path: str | os.PathLike, suite: str | None = None) -> list[dict[str, Any]]:
     """Rows of an existing store (``InputFileError`` if it is missing; never creates one)."""
-    with ResultStore(path, create=False) as store:
+    with ResultStore(path, create=False, read_only=True) as store:
         return store.rows(suite)
 
 
