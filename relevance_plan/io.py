@@ -97,6 +97,11 @@ def _read_umask() -> int:
 _UMASK = _read_umask()
 
 
+def new_directory_mode() -> int:
+    """The mode ``mkdir`` gives a new directory under this process's umask."""
+    return 0o777 & ~_UMASK
+
+
 STDOUT = "-"
 
 

@@ -44,9 +44,11 @@ class Progress:
         if self._live is not None:
             self._live.update(self._task, advance=1, failures=self.failures)
 
-    def close(self) -> None:
+    def close(self, summary: bool = True) -> None:
         if self._live is not None:
             self._live.stop()
+        if not summary:
+            return
         elapsed = time.perf_counter() - self.started
         print(
             f"{self.description}: {self.done}/{self.total} done, {self.failures} failed, {elapsed:.1f} s",
@@ -62,5 +64,8 @@ def progress(total: int, description: str, live: bool | None = None) -> Iterator
     reporter = Progress(total, description, live)
     try:
         yield reporter
-    finally:
-        reporter.close()
+    except BaseException:
+        # The error is the one line the user needs; no "0/N done" before it.
+        reporter.close(summary=False)
+        raise
+    reporter.close()

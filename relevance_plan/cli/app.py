@@ -145,8 +145,10 @@ def main():
 @click.option("--seed", type=int, default=0, show_default=True)
 @click.option("--out", "out_dir", type=click.Path(file_okay=False), required=True, help="Suite directory to write.")
 @click.option("--distractors", type=int, default=None, help="Override the paper's distractor count.")
+@click.option("--force", is_flag=True,
+              help="Write into a non-empty directory that holds no suite, overwriting same-named files.")
 @handle_errors
-def generate(world, difficulty, count, seed, out_dir, distractors):
+def generate(world, difficulty, count, seed, out_dir, distractors, force):
     """Generate a seeded benchmark suite for WORLD (coffee or cereal)."""
     from relevance_plan.generators.generate import generate_suite
 
@@ -154,7 +156,7 @@ def generate(world, difficulty, count, seed, out_dir, distractors):
 
     with progress(count, f"generate {world}-{difficulty}") as bar:
         paths = generate_suite(world, difficulty, count, seed, Path(out_dir), distractors=distractors,
-                               progress=lambda done, total: bar.advance())
+                               progress=lambda done, total: bar.advance(), force=force)
     click.echo(f"wrote {len(paths)} problems to {out_dir}")
 
 

@@ -27,6 +27,7 @@ from typing import Any, Callable
 
 from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.errors import InputFileError, UsageError
+from relevance_plan.io import new_directory_mode
 from relevance_plan.generators.catalog import CATALOG
 from relevance_plan.generators.problem import choose_roles, format_scene, necessary_objects, relevant_objects
 from relevance_plan.generators.scenes import DIFFICULTIES, SCENES, WORLD_NAMES, Item, Scene, name_key
@@ -258,12 +259,60 @@ def _write_text(path: Path, text: str) -> None:
         handle.write(text)
 
 
-def _is_our_suite(directory: Path) -> bool:
+def _own_files(directory: Path) -> set[str] | None:
+    """Names of the files a previous run of this generator wrote into
+    ``directory`` (from its ``suite.json``), or None if it holds no suite of ours.
+
+    Only plain file names count: a manifest can never make us touch a file
+    elsewhere.
+    """
     try:
         manifest = json.loads((directory / "suite.json").read_text(encoding="utf-8"))
-    except (OSError, ValueError):
-        return False
-    return isinstance(manifest, dict) and manifest.get("generator") == GENERATOR
+    except (OSError, ValueError, RecursionError):
+        return None
+    if not isinstance(manifest, dict) or manifest.get("generator") != GENERATOR:
+        return None
+    names = {"suite.json"}
+    if isinstance(manifest.get("domain"), str):
+        names.add(manifest["domain"])
+    entries = manifest.get("problems")
+    for entry in entries if isinstance(entries, list) else ():
+        if isinstance(entry, dict):
+            names.update(entry.get(key) for key in ("problem", "sidecar") if isinstance(entry.get(key), str))
+    return {name for name in names if name and name == Path(name).name and name not in (".", "..")}
+
+
+def _planned_files(world: str, difficulty: str, count: int) -> list[str]:
+    names = ["domain.pddl", "suite.json"]
+    for index in range(1, count + 1):
+        name = problem_name(world, difficulty, index)
+        names += [f"{name}.pddl", f"{name}.json"]
+    return names
+
+
+def _check_out_dir(out_dir: Path, planned: list[str], force: bool) -> set[str]:
+    """The generator's files already in ``out_dir`` (to replace); refuses to
+    overwrite anything else unless ``force``."""
+    if not (out_dir.exists() or out_dir.is_symlink()):
+        return set()
+    if not out_dir.is_dir() or out_dir.is_symlink():
+        raise InputFileError("output path exists and is not a plain directory", path=str(out_dir))
+    try:
+        present = {entry.name for entry in out_dir.iterdir()}
+    except OSError as error:
+        raise InputFileError(f"cannot read the output directory: {error.strerror}", path=str(out_dir)) from None
+    if not present:
+        return set()
+    own = _own_files(out_dir)
+    if own is None and not force:
+        raise UsageError(f"output directory {out_dir} is not empty and holds no suite of ours;"
+                         " choose another or give --force (files of yours are never deleted)")
+    own = own or set()
+    clashes = sorted(name for name in planned if name in present and name not in own)
+    if clashes and not force:
+        raise UsageError(f"output directory {out_dir} holds {clashes[0]}, which this generator did not write;"
+                         " move it or give --force to overwrite it")
+    return own & present
 
 
 def generate_suite(
@@ -274,24 +323,27 @@ def generate_suite(
     out_dir: Path,
     distractors: int | None = None,
     progress: Callable[[int, int], None] | None = None,
+    force: bool = False,
 ) -> list[Path]:
     """Write ``count`` problems (indices 1..count) into ``out_dir``; return the
     ``.pddl`` paths.
 
-    The suite is built in a temporary sibling directory and renamed into
-    place, so a failure leaves no partial suite.  An existing non-empty
-    ``out_dir`` is replaced only if it is a suite written by this generator.
+    The suite is built in a temporary sibling directory, so a failure leaves
+    no partial suite.  Into an existing directory only the generator's own
+    files (those its ``suite.json`` lists) are replaced or removed; any other
+    file stays.  A non-empty directory without a suite of ours, or a file of
+    the user's with a name the generator would write, is refused unless
+    ``force`` (which overwrites same-named files, and still deletes nothing).
     Raises ``UsageError`` for bad arguments, ``InputFileError`` when the
     directory cannot be written.
     """
     _check_arguments(world, difficulty, seed, distractors)
     _check_int("count", count, 1)
+    if count > MAX_COUNT:
+        raise UsageError(f"count must be at most {MAX_COUNT}, not {count}")
     out_dir = Path(os.path.abspath(os.fspath(out_dir)))
-    if out_dir.exists() or out_dir.is_symlink():
-        if not out_dir.is_dir() or out_dir.is_symlink():
-            raise InputFileError("output path exists and is not a plain directory", path=str(out_dir))
-        if any(out_dir.iterdir()) and not _is_our_suite(out_dir):
-            raise UsageError(f"output directory {out_dir} is not empty and holds no suite of ours; choose another")
+    planned = _planned_files(world, difficulty, count)
+    previous = _check_out_dir(out_dir, planned, force)
     domain_path = DOMAINS_DIR / world / "domain.pddl"
     try:
         domain_bytes = domain_path.read_bytes()
@@ -302,6 +354,8 @@ def generate_suite(
     try:
         parent.mkdir(parents=True, exist_ok=True)
         staging = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}.", suffix=".tmp", dir=parent))
+        # mkdtemp makes it 0700; the suite gets the mode mkdir would give it.
+        os.chmod(staging, new_directory_mode())
     except OSError as error:
         raise InputFileError(f"cannot write the suite: {error.strerror or error}", path=str(out_dir)) from None
 
@@ -334,7 +388,7 @@ def generate_suite(
             "problems": entries,
         }
         _write_text(staging / "suite.json", sidecar_json(manifest))
-        _move_into_place(staging, out_dir)
+        _move_into_place(staging, out_dir, planned, previous)
     except OSError as error:
         shutil.rmtree(staging, ignore_errors=True)
         raise InputFileError(f"cannot write the suite: {error.strerror or error}", path=str(out_dir)) from None
@@ -344,9 +398,14 @@ def generate_suite(
     return [out_dir / entry["problem"] for entry in entries]
 
 
-def _move_into_place(staging: Path, out_dir: Path) -> None:
-    """Rename ``staging`` to ``out_dir``, replacing an empty directory or a
-    previous suite (moved aside first and deleted only after the rename)."""
+MAX_COUNT = 100_000
+
+
+def _move_into_place(staging: Path, out_dir: Path, planned: list[str], previous: set[str]) -> None:
+    """Rename ``staging`` to ``out_dir`` when there is nothing there yet;
+    otherwise move each new file in (the manifest last) and remove the
+    previous run's files that the new suite does not have.  Files the
+    generator did not write are never touched."""
     if not out_dir.exists():
         os.rename(staging, out_dir)
         return
@@ -354,14 +413,15 @@ def _move_into_place(staging: Path, out_dir: Path) -> None:
         os.rmdir(out_dir)
         os.rename(staging, out_dir)
         return
-    old = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}.", suffix=".old", dir=out_dir.parent))
-    os.rename(out_dir, old)  # replaces the empty placeholder ``old``
-    try:
-        os.rename(staging, out_dir)
-    except BaseException:
-        os.rename(old, out_dir)
-        raise
-    shutil.rmtree(old, ignore_errors=True)
+    # The new manifest first: if we are stopped half-way, every file of ours
+    # in the directory is still listed by it or by nothing (then left alone).
+    for name in ["suite.json"] + [n for n in planned if n != "suite.json"]:
+        os.replace(staging / name, out_dir / name)
+    for name in sorted(set(previous) - set(planned)):
+        old = out_dir / name
+        if old.is_file() and not old.is_symlink():
+            old.unlink()
+    staging.rmdir()
 
 
 def write_base_scenes(problems_dir: Path) -> list[Path]:
