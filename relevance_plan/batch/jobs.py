@@ -412,7 +412,7 @@ def _reporter(total: int, description: str, show: bool):
 
 @contextlib.contextmanager
 def _stop_signals():
-    """An event that SIGINT and SIGTERM set while a batch runs (main thread only).
+    """An event that SIGINT, SIGTERM and SIGHUP set while a batch runs (main thread only).
 
     The handler only sets the event: the loops below check it between
     completions and stop at a safe point.  A KeyboardInterrupt raised at an
@@ -427,7 +427,7 @@ def _stop_signals():
     def request_stop(signum, frame):
         stop.set()
 
-    previous = {signum: signal.signal(signum, request_stop) for signum in (signal.SIGINT, signal.SIGTERM)}
+    previous = {signum: signal.signal(signum, request_stop) for signum in runner.STOP_SIGNALS}
     try:
         yield stop
     finally:

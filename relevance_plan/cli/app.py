@@ -43,12 +43,16 @@ def handle_errors(command):
 
     @functools.wraps(command)
     def wrapper(*args, **kwargs):
+        from relevance_plan.planning.runner import stop_on_signals
+
         try:
-            return command(*args, **kwargs)
+            with stop_on_signals():
+                return command(*args, **kwargs)
         except RelevancePlanError as error:
             fail(str(error), exit_code_for_error(error))
-        except KeyboardInterrupt:
-            click.echo("relevance-plan: interrupted", err=True)
+        except KeyboardInterrupt as error:
+            by = f" by {error}" if str(error) else ""
+            click.echo(f"relevance-plan: interrupted{by}", err=True)
             sys.exit(int(ExitCode.INTERRUPTED))
 
     return wrapper

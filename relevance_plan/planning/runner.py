@@ -10,6 +10,7 @@ may go at once from a thread pool.
 
 from __future__ import annotations
 
+import contextlib
 import enum
 import functools
 import importlib.metadata
@@ -53,6 +54,7 @@ PLAN_FILE = "sas_plan"
 LOG_FILE = "planner.log"
 LOG_TAIL_LINES = 40
 DEFAULT_WATCHDOG_GRACE = 5.0
+_GUARD = Path(__file__).with_name("guard.py")
 
 
 class PlannerStatus(enum.Enum):
@@ -221,6 +223,48 @@ def _build_command(python: str, driver: Path, domain: Path, problem: Path, confi
     before, after = _split_driver_options(planner_arguments(config))
     return [python, str(driver), "--plan-file", PLAN_FILE, *limits, *before,
             str(domain), str(problem), *after]
+
+
+class Interrupted(KeyboardInterrupt):
+    """SIGTERM or SIGHUP, raised like Ctrl-C so every cleanup on the way out runs."""
+
+    def __init__(self, signum: int):
+        super().__init__(signal.Signals(signum).name)
+        self.signum = signum
+
+
+STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)
+
+
+@contextlib.contextmanager
+def stop_on_signals():
+    """While a command runs, SIGTERM and SIGHUP stop it as Ctrl-C does.
+
+    The exception unwinds through ``run_fast_downward`` (which kills and reaps
+    the planner's group) and every temporary directory's cleanup.  Signals
+    after the first are ignored so that a second one cannot cut the cleanup
+    short.  Main thread only; elsewhere this does nothing.
+    """
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    stopping = False
+
+    def stop(signum, frame):
+        nonlocal stopping
+        if stopping:
+            return
+        stopping = True
+        if signum == signal.SIGINT:
+            raise KeyboardInterrupt
+        raise Interrupted(signum)
+
+    previous = {signum: signal.signal(signum, stop) for signum in STOP_SIGNALS}
+    try:
+        yield
+    finally:
+        for signum, handler in previous.items():
+            signal.signal(signum, handler)
 
 
 # Process groups of the planners running now, so a batch's Ctrl-C can stop them all.
@@ -400,24 +444,33 @@ def run_fast_downward(
     with tempfile.TemporaryDirectory(prefix="relevance-plan-fd-") as tmp:
         workdir = Path(tmp)
         started = time.monotonic()
-        # A file, not a pipe: nobody has to drain it while we wait.
-        with open(workdir / LOG_FILE, "wb") as log_file:
-            try:
-                process = subprocess.Popen(
-                    command, cwd=workdir, stdin=subprocess.DEVNULL, stdout=log_file,
-                    stderr=subprocess.STDOUT, start_new_session=True, close_fds=True)
-            except OSError as error:
-                raise errors.PlannerError(f"cannot start Fast Downward: {error}",
-                                          path=str(driver)) from error
-        # start_new_session: the driver leads its own group, pgid == pid.
-        pgid = process.pid
-        with _ACTIVE_LOCK:
-            _ACTIVE_GROUPS.add(pgid)
+        # The guard kills the group when this process dies (its pipe's write
+        # end closes); os.pipe() fds are close-on-exec, so no planner holds it.
+        guard_read, guard_write = os.pipe()
         try:
-            wait_status, cpu_time, peak_mb, fired = _wait_for_group(pgid, deadline)
-        finally:
+            # A file, not a pipe: nobody has to drain it while we wait.
+            with open(workdir / LOG_FILE, "wb") as log_file:
+                try:
+                    process = subprocess.Popen(
+                        [python, str(_GUARD), str(guard_read), *command], cwd=workdir,
+                        stdin=subprocess.DEVNULL, stdout=log_file, stderr=subprocess.STDOUT,
+                        start_new_session=True, close_fds=True, pass_fds=(guard_read,))
+                except OSError as error:
+                    raise errors.PlannerError(f"cannot start Fast Downward: {error}",
+                                              path=str(driver)) from error
+                finally:
+                    os.close(guard_read)
+            # start_new_session: the guard leads its own group, pgid == pid.
+            pgid = process.pid
             with _ACTIVE_LOCK:
-                _ACTIVE_GROUPS.discard(pgid)
+                _ACTIVE_GROUPS.add(pgid)
+            try:
+                wait_status, cpu_time, peak_mb, fired = _wait_for_group(pgid, deadline)
+            finally:
+                with _ACTIVE_LOCK:
+                    _ACTIVE_GROUPS.discard(pgid)
+        finally:
+            os.close(guard_write)
         wall_time = time.monotonic() - started
         exit_code = _exit_code(wait_status)
         # We reaped it ourselves (for the rusage); tell Popen so it never waits.

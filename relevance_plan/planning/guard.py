@@ -1,0 +1,43 @@
+"""Run a planner so that it cannot outlive the tool (run as a script, not imported).
+
+``python guard.py FD COMMAND...``: FD is the read end of a pipe whose only
+write end the tool holds.  The guard leads the planner's process group
+(the runner starts it in a new session) and runs COMMAND in that group.
+When the tool dies, even by ``kill -9``, the kernel closes the write end;
+the guard reads end-of-file and kills the whole group, itself included, at
+once.  Fast Downward's driver forks its translator and search, so a
+parent-death signal on the driver alone would leave them running.
+
+The guard exits as the planner did (a death by signal N as 256 - N, which
+the runner reads back as -N, as it does for the driver's own codes).
+"""
+
+import os
+import signal
+import subprocess
+import sys
+import threading
+
+
+def _watch(fd: int) -> None:
+    while True:
+        try:
+            if not os.read(fd, 1):
+                break
+        except InterruptedError:
+            continue
+        except OSError:
+            break
+    os.killpg(0, signal.SIGKILL)
+
+
+def main() -> None:
+    fd = int(sys.argv[1])
+    threading.Thread(target=_watch, args=(fd,), daemon=True).start()
+    process = subprocess.Popen(sys.argv[2:], close_fds=True)
+    code = process.wait()
+    os._exit(code & 0xFF if code >= 0 else (256 + code) & 0xFF)
+
+
+if __name__ == "__main__":
+    main()
