@@ -28,6 +28,11 @@ from relevance_plan.relevance.scorers import ScoreRequest, Task
 from relevance_plan.planning.validate import ValidationResult, ValidationStatus, validate_plan
 
 METHODS = ("relevance", "pure", "random", "oracle")
+# Limits beyond these are typos: the watchdog's timer cannot even hold much more.
+MAX_TIMEOUT = 1e6
+# Below 16 MB Python cannot start the planner at all; above 1 PB is absurd.
+MIN_MEMORY_MB = 16
+MAX_MEMORY_MB = 1 << 30
 
 
 class PlanStatus(enum.Enum):
@@ -68,8 +73,12 @@ class PlanOptions:
             raise UsageError(f"unknown method '{self.method}' (choose from: {', '.join(METHODS)})")
         if not self.timeout > 0:
             raise UsageError(f"--timeout must be positive, got {self.timeout}")
-        if self.memory_limit_mb is not None and self.memory_limit_mb < 16:
-            raise UsageError(f"--memory-limit must be at least 16 MB, got {self.memory_limit_mb}")
+        if not self.timeout <= MAX_TIMEOUT:
+            raise UsageError(f"--timeout must be at most {MAX_TIMEOUT:g} s (about 11 days), got {self.timeout}")
+        if self.memory_limit_mb is not None and self.memory_limit_mb < MIN_MEMORY_MB:
+            raise UsageError(f"--memory-limit must be at least {MIN_MEMORY_MB} MB, got {self.memory_limit_mb}")
+        if self.memory_limit_mb is not None and self.memory_limit_mb > MAX_MEMORY_MB:
+            raise UsageError(f"--memory-limit must be at most {MAX_MEMORY_MB} MB (1 PB), got {self.memory_limit_mb}")
         if not 0.0 < self.relax_factor < 1.0:
             raise UsageError(f"relax factor must be in (0, 1), got {self.relax_factor}")
 
@@ -220,6 +229,9 @@ def plan_task(
     task = Task(domain, problem)
     total = len(problem.objects)
     deadline = started + options.timeout
+    overran = _overran("reading the domain and problem", started, options, total)
+    if overran is not None:
+        return overran
 
     if options.method == "pure":
         say("planning on the full problem")
@@ -238,6 +250,9 @@ def plan_task(
     )
     say(f"scoring {total} objects with the {scorer} scorer")
     scores = score_task(task, scorer, request)
+    overran = _overran("scoring", started, options, total)
+    if overran is not None:
+        return overran
     if not scores.sufficient:
         elapsed = time.perf_counter() - started
         return PlanResult(
@@ -255,6 +270,9 @@ def plan_task(
     pruned = prune_with_scores(task, scores, options.thresholds, model, goal_filter=goal_filter,
                                prefer_free=prefer_free)
     relevance_time = time.perf_counter() - started
+    overran = _overran("pruning and closure", started, options, total)
+    if overran is not None:
+        return overran
     say(f"kept {len(pruned.kept)} of {total} objects ({len(pruned.restored)} restored by closure"
         + (f", {len(pruned.set_aside)} blocked alternatives set aside)" if pruned.set_aside else ")"))
 
@@ -287,6 +305,21 @@ def plan_task(
             thresholds = current.thresholds
             relevance_time += time.perf_counter() - widen_started
     return _finish(task, options, attempts, started, relevance_time, pruned)
+
+
+def _overran(step: str, started: float, options: PlanOptions, total: int) -> PlanResult | None:
+    """An out-of-time result naming ``step`` when ``--timeout`` ran out during it."""
+    elapsed = time.perf_counter() - started
+    if elapsed < options.timeout:
+        return None
+    return PlanResult(
+        method=options.method,
+        status=PlanStatus.OUT_OF_TIME,
+        wall_time=elapsed,
+        relevance_time=elapsed,
+        objects_total=total,
+        message=f"out of time while {step}: {elapsed:.1f} s of the {options.timeout:g} s --timeout",
+    )
 
 
 # Driver exit codes that reject the planner configuration, not the task:

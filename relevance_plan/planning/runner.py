@@ -374,14 +374,25 @@ def _search_time(log: str) -> float | None:
     return total if total is not None else _last_float(_SEARCH_ONLY_RE, log)
 
 
+# How a component dies when its address-space limit is too small for it to
+# even start: the loader cannot map libc (exit 127), Python raises MemoryError
+# during start-up, or fails to flush at exit (exit 120).
+_OUT_OF_MEMORY_MARKERS = ("MemoryError", "failed to map segment", "Cannot allocate memory", "std::bad_alloc")
+_PYTHON_FINALIZE_FAILED = 120
+
+
 def _refine_status(status: PlannerStatus, exit_code: int, log: str,
-                   cpu_time: float, driver_time_limit: float | None) -> PlannerStatus:
+                   cpu_time: float, driver_time_limit: float | None,
+                   memory_limited: bool = False) -> PlannerStatus:
     """Split exit codes the driver uses for several causes, by the log."""
     if exit_code == _TRANSLATE_CRITICAL_ERROR:
         if "Could not read file" in log:
             return PlannerStatus.INPUT_ERROR
         if "MemoryError" in log:  # limit so low that Python could not start
             return PlannerStatus.OUT_OF_MEMORY
+    if memory_limited and status is PlannerStatus.PLANNER_CRASH and (
+            exit_code == _PYTHON_FINALIZE_FAILED or any(marker in log for marker in _OUT_OF_MEMORY_MARKERS)):
+        return PlannerStatus.OUT_OF_MEMORY
     # A component that ignores SIGXCPU gets SIGKILL at the hard CPU limit.
     if (exit_code == -signal.SIGKILL and driver_time_limit is not None
             and cpu_time >= driver_time_limit - 1.0):
@@ -390,7 +401,8 @@ def _refine_status(status: PlannerStatus, exit_code: int, log: str,
 
 
 def _classify(exit_code: int, has_plan: bool, killed_by_watchdog: bool, log: str,
-              cpu_time: float, driver_time_limit: float | None) -> PlannerStatus:
+              cpu_time: float, driver_time_limit: float | None,
+              memory_limited: bool = False) -> PlannerStatus:
     if has_plan:
         # A plan file with its cost line is complete, even if the run was then
         # stopped (anytime configs end by hitting a limit).
@@ -400,7 +412,7 @@ def _classify(exit_code: int, has_plan: bool, killed_by_watchdog: bool, log: str
     status = EXIT_CODE_STATUS.get(exit_code, PlannerStatus.PLANNER_CRASH)
     if status is PlannerStatus.SOLVED:
         return PlannerStatus.PLANNER_CRASH  # "success" but no plan file
-    return _refine_status(status, exit_code, log, cpu_time, driver_time_limit)
+    return _refine_status(status, exit_code, log, cpu_time, driver_time_limit, memory_limited)
 
 
 def run_fast_downward(
@@ -481,7 +493,8 @@ def run_fast_downward(
 
     killed_by_watchdog = fired and os.WIFSIGNALED(wait_status)
     status = _classify(exit_code, plan is not None, killed_by_watchdog, log, cpu_time,
-                       time_limit if driver_limits else None)
+                       time_limit if driver_limits else None,
+                       memory_limited=driver_limits and memory_limit_mb is not None)
     return RunOutcome(
         status=status,
         exit_code=exit_code,
