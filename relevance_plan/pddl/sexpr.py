@@ -15,6 +15,11 @@ from relevance_plan.errors import PDDLParseError
 
 _TOKEN = re.compile(r";[^\n]*|\(|\)|[^\s();]+")
 
+# Lists nested deeper than this are refused, naming the line: the formula
+# walkers (ours and the planner's) recurse once or twice per level, and real
+# PDDL stays far below it.
+MAX_NESTING = 128
+
 
 @dataclass(slots=True)
 class Symbol:
@@ -56,6 +61,10 @@ def parse_sexpr(text: str, path: str | None = None) -> Node:
             if root is not None and not stack:
                 raise PDDLParseError(
                     "unexpected text after the end of the definition", path=path, line=lines.line_of(start)
+                )
+            if len(stack) >= MAX_NESTING:
+                raise PDDLParseError(
+                    f"lists nested more than {MAX_NESTING} levels deep", path=path, line=lines.line_of(start)
                 )
             stack.append(Node([], start, -1, lines.line_of(start)))
         elif token == ")":

@@ -30,8 +30,33 @@ class _LineDict(dict):
     line: int
 
 
+# A model is a few levels deep; far deeper nesting is an attack on the
+# recursive YAML composer, not knowledge.
+MAX_YAML_NESTING = 32
+
+
 class _Loader(yaml.SafeLoader):
-    pass
+    """SafeLoader without aliases and with a nesting limit.
+
+    An alias (``*name``) lets a 1.5 KB file expand into gigabytes (the
+    "billion laughs"); a model never needs one, so any alias is refused.
+    """
+
+    _depth = 0
+
+    def compose_node(self, parent, index):
+        if self.check_event(yaml.AliasEvent):
+            event = self.peek_event()
+            raise ModelError("YAML aliases ('*name') are not allowed in a knowledge model",
+                             line=event.start_mark.line + 1)
+        self._depth += 1
+        try:
+            if self._depth > MAX_YAML_NESTING:
+                mark = self.peek_event().start_mark
+                raise ModelError(f"YAML nested more than {MAX_YAML_NESTING} levels deep", line=mark.line + 1)
+            return super().compose_node(parent, index)
+        finally:
+            self._depth -= 1
 
 
 def _construct_mapping(loader: _Loader, node: yaml.MappingNode) -> _LineDict:
@@ -148,8 +173,10 @@ class _Checker:
             self.fail(f"{what} = {value} is outside [0, 1]", parent, key)
         return float(value)
 
-    def probabilities(self, parent: _LineDict, what: str) -> Mapping[str, float]:
-        return MappingProxyType({key: self.probability(parent, key, f"{what} '{key}'") for key in parent})
+    def probabilities(self, parent: _LineDict, what) -> Mapping[str, float]:
+        """``what`` names the values: a label (the key is appended) or a function of the key."""
+        label = what if callable(what) else (lambda key: f"{what} '{key}'")
+        return MappingProxyType({key: self.probability(parent, key, label(key)) for key in parent})
 
     def names(self, parent: _LineDict, key: str) -> tuple:
         value = parent.get(key, [])
@@ -242,7 +269,7 @@ def parse_model(text: str, path: str = "<model>") -> KnowledgeModel:
         for class_name in entry:
             if class_name not in classes:
                 check.fail(f"task '{task}' names unknown class '{class_name}'", entry, class_name)
-        task_classes[task] = check.probabilities(entry, f"P({{class}} | {task})")
+        task_classes[task] = check.probabilities(entry, lambda class_name: f"P({class_name} | {task})")
 
     objectives: dict[str, Objective] = {}
     objective_section = check.mapping(data, "objectives")
