@@ -40,7 +40,8 @@ from typing import Any, Iterable, Sequence
 from relevance_plan import __version__
 from relevance_plan.planning import runner
 from relevance_plan.errors import InputFileError, PlannerError, RelevancePlanError, SchedulerError, UsageError
-from relevance_plan.io import find_suite_problems, read_bytes, read_sidecar
+from relevance_plan.io import find_suite_problems, read_bytes
+from relevance_plan.relevance.sidecar import read_sidecar_fields
 from relevance_plan.planning.loop import METHODS, PlanOptions, PlanResult, PlanStatus, plan_task
 from relevance_plan.relevance.prune import DEFAULT_TAU, Thresholds
 from relevance_plan.batch.store import ResultKey, ResultStore
@@ -275,11 +276,10 @@ def _now() -> str:
 def _sidecar_fields(problem_path: str) -> tuple[str | None, str | None]:
     """(world, difficulty) from the generator's sidecar, (None, None) without one."""
     try:
-        data = read_sidecar(Path(problem_path).with_suffix(".json"))
+        fields = read_sidecar_fields(Path(problem_path).with_suffix(".json"))
     except InputFileError:
         return None, None
-    world, difficulty = data.get("world"), data.get("difficulty")
-    return (world if isinstance(world, str) else None, difficulty if isinstance(difficulty, str) else None)
+    return fields.world, fields.difficulty
 
 
 def _base_row(job: Job) -> dict[str, Any]:

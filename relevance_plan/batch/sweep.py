@@ -14,7 +14,8 @@ from pathlib import Path
 from typing import Sequence
 
 from relevance_plan.errors import InputFileError, UsageError
-from relevance_plan.io import find_suite_problems, load_domain, load_problem, read_sidecar
+from relevance_plan.io import find_suite_problems, load_domain, load_problem
+from relevance_plan.relevance.sidecar import read_sidecar_fields
 from relevance_plan.relevance.metrics import SetMetrics, mean_metrics, set_metrics
 from relevance_plan.planning.loop import resolve_model, scorer_for
 from relevance_plan.relevance.prune import Thresholds, prune_with_scores, score_task
@@ -67,14 +68,12 @@ def sweep_suite(
     counted = 0
     for problem_path in problem_paths:
         sidecar_path = problem_path.with_suffix(".json")
-        if not sidecar_path.is_file():
+        if not sidecar_path.exists():
             raise InputFileError("sweep needs the generator's sidecar next to each problem", path=str(sidecar_path))
-        sidecar = read_sidecar(sidecar_path)
-        try:
-            relevant = frozenset(n.lower() for n in sidecar["relevant"])
-            necessary = frozenset(n.lower() for n in sidecar["necessary"])
-        except (KeyError, TypeError, AttributeError):
-            raise InputFileError("sidecar lacks 'relevant' or 'necessary' lists", path=str(sidecar_path)) from None
+        sidecar = read_sidecar_fields(sidecar_path)
+        relevant, necessary = sidecar.relevant, sidecar.necessary
+        if relevant is None or necessary is None:
+            raise InputFileError("sidecar lacks 'relevant' or 'necessary' lists", path=str(sidecar_path))
         problem = load_problem(problem_path, domain)
         planning_task = Task(domain, problem)
         request = ScoreRequest(model=model, objective=objective, task=task, human=human, necessary=necessary)

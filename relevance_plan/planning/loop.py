@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable, Sequence
 
-from relevance_plan.errors import UsageError
+from relevance_plan.errors import InputFileError, UsageError
 from relevance_plan.io import load_domain, load_problem, read_text, scratch_directory, write_text_atomic
 from relevance_plan.relevance.knowledge import KnowledgeModel, check_model_applies, find_model, load_model
 from relevance_plan.relevance.prune import PruneResult, Thresholds, prune_with_scores, score_task, widen
@@ -199,16 +199,16 @@ def resolve_model(domain_name: str, domain_path: str | None, model_path: str | N
 
 
 def read_sidecar_necessary(problem_path: str) -> frozenset | None:
-    import json
+    """The sidecar's ``necessary`` set, None without a sidecar (``InputFileError`` if it is bad)."""
+    from relevance_plan.relevance.sidecar import read_sidecar_fields
 
     sidecar = Path(problem_path).with_suffix(".json")
-    if not sidecar.is_file():
+    if not sidecar.exists():
         return None
-    try:
-        data = json.loads(read_text(sidecar, "sidecar"))
-        return frozenset(name.lower() for name in data["necessary"])
-    except (ValueError, KeyError, TypeError):
-        raise UsageError("sidecar has no valid 'necessary' list", path=str(sidecar)) from None
+    necessary = read_sidecar_fields(sidecar).necessary
+    if necessary is None:
+        raise InputFileError("sidecar has no 'necessary' list", path=str(sidecar))
+    return necessary
 
 
 ProgressCallback = Callable[[str], None]
