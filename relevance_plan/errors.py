@@ -24,8 +24,22 @@ class RelevancePlanError(Exception):
     def __str__(self) -> str:
         where = ""
         if self.path:
-            where = self.path + (f":{self.line}" if self.line else "") + ": "
-        return where + self.message
+            where = printable(self.path) + (f":{self.line}" if self.line else "") + ": "
+        return where + printable(self.message, MAX_MESSAGE)
+
+
+# A message quotes names from the user's files; a 1 MB name must not become a 1 MB line.
+MAX_MESSAGE = 400
+
+
+def printable(text: str, limit: int | None = None) -> str:
+    """``text`` on one visible line: control and invisible characters (NUL,
+    newline, a byte-order mark, ...) as escapes, cut to ``limit`` characters."""
+    if not text.isprintable():
+        text = "".join(c if c.isprintable() else ascii(c)[1:-1] for c in text)
+    if limit is not None and len(text) > limit:
+        text = text[: limit - 1] + "…"
+    return text
 
 
 def _rebuild_error(cls, message, path, line):

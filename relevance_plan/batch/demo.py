@@ -13,7 +13,7 @@ import os
 from dataclasses import dataclass
 from pathlib import Path
 
-from relevance_plan.batch.jobs import CompareSummary, compare
+from relevance_plan.batch.jobs import CompareSummary, check_compare_options, compare
 from relevance_plan.errors import InputFileError, UsageError
 from relevance_plan.planning.loop import METHODS
 from relevance_plan.batch.report import build_report, format_report
@@ -37,12 +37,12 @@ class DemoRun:
 
 
 def run_demo(
-    workdir: str | os.PathLike,
+    workdir: str | os.PathLike | None,
     count: int = 3,
     timeout: float = 60.0,
     jobs: int = 2,
     *,
-    distractors: int = DEMO_DISTRACTORS,
+    distractors: int | None = None,
     tiny: bool = False,
     progress: bool = True,
 ) -> DemoRun:
@@ -50,14 +50,28 @@ def run_demo(
     seed 0, ``distractors`` distractors), compare relevance, pure, random and
     oracle into ``workdir/results.sqlite``, and return what was produced.
 
-    ``tiny=True`` (for tests) means 1 problem per world with 5 distractors.
+    ``tiny=True`` (for tests) means 1 problem per world with 5 distractors
+    (an explicit ``distractors`` wins).  ``workdir=None`` makes a new
+    temporary directory (kept).  Every option is checked before anything is written.
     """
     from relevance_plan.generators.generate import generate_suite
 
+    if distractors is not None and (isinstance(distractors, bool) or not isinstance(distractors, int)
+                                    or distractors < 0):
+        raise UsageError(f"--distractors must be a non-negative integer, got {distractors!r}")
     if tiny:
-        count, distractors = TINY_COUNT, TINY_DISTRACTORS
+        # An explicit --distractors still wins; --tiny only changes the defaults.
+        count, distractors = TINY_COUNT, TINY_DISTRACTORS if distractors is None else distractors
+    elif distractors is None:
+        distractors = DEMO_DISTRACTORS
     if isinstance(count, bool) or not isinstance(count, int) or count < 1:
         raise UsageError(f"--count must be a positive integer, got {count!r}")
+    # Every option is checked before anything is written.
+    check_compare_options(timeout=timeout, jobs=jobs)
+    if workdir is None:
+        import tempfile
+
+        workdir = tempfile.mkdtemp(prefix="relevance-plan-demo-")
     workdir = Path(workdir)
     try:
         workdir.mkdir(parents=True, exist_ok=True)

@@ -42,7 +42,7 @@ from relevance_plan.planning import runner
 from relevance_plan.errors import InputFileError, PlannerError, RelevancePlanError, SchedulerError, UsageError
 from relevance_plan.io import find_suite_problems, read_bytes
 from relevance_plan.relevance.sidecar import read_sidecar_fields
-from relevance_plan.planning.loop import METHODS, PlanOptions, PlanResult, PlanStatus, plan_task
+from relevance_plan.planning.loop import MAX_TIMEOUT, METHODS, PlanOptions, PlanResult, PlanStatus, plan_task
 from relevance_plan.relevance.prune import DEFAULT_TAU, Thresholds
 from relevance_plan.batch.store import ResultKey, ResultStore
 
@@ -453,6 +453,18 @@ class _Recorder:
         self.bar.advance(failed=row["status"] != PlanStatus.SOLVED.value)
 
 
+def check_compare_options(*, timeout: float = 120.0, jobs: int = 1, scheduler: str | None = None,
+                          scheduler_timeout: float = DEFAULT_SCHEDULER_TIMEOUT) -> None:
+    """``UsageError`` for a bad option, before anything is written (``demo`` checks first too)."""
+    if isinstance(jobs, bool) or not isinstance(jobs, int) or jobs < 1:
+        raise UsageError(f"--jobs must be a positive integer, got {jobs!r}")
+    if scheduler is not None and not _ADDRESS_RE.match(scheduler):
+        raise UsageError(f"--scheduler must look like tcp://HOST:PORT, got '{scheduler}'")
+    if not 0 < scheduler_timeout <= MAX_TIMEOUT:
+        raise UsageError(f"--scheduler-timeout must be positive and at most {MAX_TIMEOUT:g} s, got {scheduler_timeout}")
+    PlanOptions(timeout=timeout)  # checks --timeout
+
+
 def compare(
     suites: Sequence[str | os.PathLike],
     methods: str | Iterable[str],
@@ -491,12 +503,7 @@ def compare(
     (no planner at all) and ``KeyboardInterrupt`` after Ctrl-C/SIGTERM.
     """
     started = time.perf_counter()
-    if isinstance(jobs, bool) or not isinstance(jobs, int) or jobs < 1:
-        raise UsageError(f"--jobs must be a positive integer, got {jobs!r}")
-    if scheduler is not None and not _ADDRESS_RE.match(scheduler):
-        raise UsageError(f"--scheduler must look like tcp://HOST:PORT, got '{scheduler}'")
-    if not scheduler_timeout > 0:
-        raise UsageError(f"scheduler timeout must be positive, got {scheduler_timeout}")
+    check_compare_options(jobs=jobs, scheduler=scheduler, scheduler_timeout=scheduler_timeout)
     base = PlanOptions(
         planner_config=planner_config,
         timeout=timeout,
@@ -515,18 +522,26 @@ def compare(
     for job in all_jobs:
         unique.setdefault(job.key, job)
 
-    with ResultStore(store_path) as store:
-        stored = store.keys()
-        pending = [job for key, job in unique.items() if key not in stored]
-        recorder = None
-        if pending:
-            with _stop_signals() as stop, _reporter(len(pending), f"compare ({len(pending)} jobs)", progress) as bar:
-                recorder = _Recorder(store, bar)
-                if scheduler is None:
-                    _run_local(pending, jobs, recorder, stop)
-                else:
-                    _run_dask(pending, scheduler, scheduler_timeout, recorder, stop)
-        statuses = dict(recorder.statuses) if recorder else {}
+    # The scheduler is reached before the store is opened: an unreachable one leaves no empty store.
+    client = connect_scheduler(scheduler, scheduler_timeout) if scheduler is not None else None
+    try:
+        with ResultStore(store_path) as store:
+            stored = store.keys()
+            pending = [job for key, job in unique.items() if key not in stored]
+            recorder = None
+            if pending:
+                with _stop_signals() as stop, _reporter(len(pending), f"compare ({len(pending)} jobs)",
+                                                        progress) as bar:
+                    recorder = _Recorder(store, bar)
+                    if client is None:
+                        _run_local(pending, jobs, recorder, stop)
+                    else:
+                        _run_dask(pending, client, scheduler, recorder, stop)
+            statuses = dict(recorder.statuses) if recorder else {}
+    finally:
+        if client is not None:
+            with contextlib.suppress(Exception):
+                client.close(timeout=10)
     ran = sum(statuses.values())
     return CompareSummary(
         store_path=str(store_path),
@@ -603,7 +618,7 @@ def _terminate_worker_runs() -> None:
     runner.terminate_all_runs()
 
 
-def _run_dask(pending: Sequence[Job], address: str, timeout: float, record: _Recorder, stop: threading.Event) -> None:
+def _run_dask(pending: Sequence[Job], client, address: str, record: _Recorder, stop: threading.Event) -> None:
     from dask.distributed import as_completed
 
     try:
@@ -611,45 +626,39 @@ def _run_dask(pending: Sequence[Job], address: str, timeout: float, record: _Rec
     except ImportError:  # pragma: no cover - part of distributed
         KilledWorker = ()  # type: ignore[assignment]
 
-    client = connect_scheduler(address, timeout)
-    futures = []
+    futures = [client.submit(run_job, job, pure=False, retries=2) for job in pending]
+    recorded: set = set()
     try:
-        futures = [client.submit(run_job, job, pure=False, retries=2) for job in pending]
-        recorded: set = set()
-        try:
-            finished = as_completed(futures, loop=client.loop)
-            while not finished.is_empty():
-                if stop.is_set():
-                    raise KeyboardInterrupt
-                if not finished.has_ready():
-                    time.sleep(_POLL_SECONDS / 4)
-                    continue
-                for future in finished.next_batch(block=False):
-                    try:
-                        row = future.result()
-                    except KilledWorker as error:
-                        raise SchedulerError(f"a Dask worker died running a job 3 times: {error}") from None
-                    except concurrent.futures.CancelledError:
-                        raise SchedulerError(f"lost the Dask scheduler at {address}; rerun to resume") from None
-                    recorded.add(future.key)
-                    record(row)
-                    future.release()
-        except BaseException as error:
-            rows = []
-            if isinstance(error, KeyboardInterrupt):
-                # Rows that were complete before the stop are genuine; fetch them before cancelling.
-                for future in futures:
-                    if future.key not in recorded and future.status == "finished":
-                        with contextlib.suppress(Exception):
-                            rows.append(future.result(timeout=5))
-            with contextlib.suppress(Exception):
-                client.cancel(futures)
-            with contextlib.suppress(Exception):
-                # Our planners run in the workers' processes; stop them too.
-                client.run(_terminate_worker_runs)
-            for row in rows:
+        finished = as_completed(futures, loop=client.loop)
+        while not finished.is_empty():
+            if stop.is_set():
+                raise KeyboardInterrupt
+            if not finished.has_ready():
+                time.sleep(_POLL_SECONDS / 4)
+                continue
+            for future in finished.next_batch(block=False):
+                try:
+                    row = future.result()
+                except KilledWorker as error:
+                    raise SchedulerError(f"a Dask worker died running a job 3 times: {error}") from None
+                except concurrent.futures.CancelledError:
+                    raise SchedulerError(f"lost the Dask scheduler at {address}; rerun to resume") from None
+                recorded.add(future.key)
                 record(row)
-            raise
-    finally:
+                future.release()
+    except BaseException as error:
+        rows = []
+        if isinstance(error, KeyboardInterrupt):
+            # Rows that were complete before the stop are genuine; fetch them before cancelling.
+            for future in futures:
+                if future.key not in recorded and future.status == "finished":
+                    with contextlib.suppress(Exception):
+                        rows.append(future.result(timeout=5))
         with contextlib.suppress(Exception):
-            client.close(timeout=10)
+            client.cancel(futures)
+        with contextlib.suppress(Exception):
+            # Our planners run in the workers' processes; stop them too.
+            client.run(_terminate_worker_runs)
+        for row in rows:
+            record(row)
+        raise

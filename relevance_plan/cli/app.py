@@ -401,8 +401,10 @@ def sweep(suite_dir, scorer, model_path, objective, task_name, human, taus, heat
         values = tuple(float(v) for v in taus.split(","))
     except ValueError:
         raise UsageError(f"--taus must be comma-separated numbers, got '{taus}'") from None
+    from relevance_plan.relevance.knowledge import check_threshold
+
     for value in values:
-        Thresholds(value, value)
+        check_threshold(value, "each --taus value")
     result = sweep_suite(Path(suite_dir), values, scorer=scorer, model_path=model_path, objective=objective,
                          task=task_name, human=human)
     if heatmap:

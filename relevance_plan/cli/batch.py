@@ -120,17 +120,10 @@ def report(store_path, fmt, suite, plots_dir):
 @_handled
 def demo(workdir, count, timeout, jobs, distractors, tiny, quiet):
     """Generate coffee and cereal suites, compare relevance, pure, random and oracle, print the table."""
-    import tempfile
+    from relevance_plan.batch.demo import run_demo
 
-    from relevance_plan.batch.demo import DEMO_DISTRACTORS, run_demo
-
-    if workdir is None:
-        workdir = tempfile.mkdtemp(prefix="relevance-plan-demo-")
-    run = run_demo(
-        Path(workdir), count, timeout, jobs,
-        distractors=DEMO_DISTRACTORS if distractors is None else distractors,
-        tiny=tiny, progress=not quiet,
-    )
+    run = run_demo(workdir, count, timeout, jobs, distractors=distractors, tiny=tiny, progress=not quiet)
+    workdir = run.workdir
     click.echo(run.table, nl=False)
     click.echo("")
     click.echo(f"suites: {', '.join(str(s) for s in run.suites)}")

@@ -258,6 +258,8 @@ class _Reader:
                 self.fail(f"parameter '{symbol.text}' must start with '?'", symbol)
             if types is not None and type_name not in types:
                 self.fail(f"unknown type '{type_name}'", symbol, DomainMismatchError)
+            if any(symbol.text.lower() == name for name, _ in params):
+                self.fail(f"parameter '{symbol.text}' is declared twice", symbol)
             params.append((symbol.text.lower(), type_name))
         return tuple(params)
 

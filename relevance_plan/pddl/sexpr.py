@@ -50,6 +50,8 @@ class LineIndex:
 def parse_sexpr(text: str, path: str | None = None) -> Node:
     """Parse ``text`` holding exactly one top-level list (a PDDL domain or problem)."""
     lines = LineIndex(text)
+    if "\0" in text:
+        raise PDDLParseError("NUL byte in the file (a binary file?)", path=path, line=lines.line_of(text.index("\0")))
     stack: list[Node] = []
     root: Node | None = None
     for match in _TOKEN.finditer(text):
@@ -78,6 +80,10 @@ def parse_sexpr(text: str, path: str | None = None) -> Node:
                 root = node
         else:
             if not stack:
+                if token.startswith("\ufeff") and start == 0:
+                    raise PDDLParseError(
+                        "the file starts with a byte-order mark (BOM), which planners reject; save it as UTF-8"
+                        " without BOM", path=path, line=1)
                 raise PDDLParseError(
                     f"unexpected token '{token}' outside any parenthesis", path=path, line=lines.line_of(start)
                 )

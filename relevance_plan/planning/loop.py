@@ -23,7 +23,7 @@ from relevance_plan.errors import InputFileError, UsageError
 from relevance_plan.io import load_domain, load_problem, read_text, scratch_directory, write_text_atomic
 from relevance_plan.relevance.knowledge import KnowledgeModel, check_model_applies, find_model, load_model
 from relevance_plan.relevance.prune import PruneResult, Thresholds, prune_with_scores, score_task, widen
-from relevance_plan.planning.runner import PlannerStatus, RunOutcome, run_fast_downward
+from relevance_plan.planning.runner import PlannerStatus, RunOutcome, check_planner_names, run_fast_downward
 from relevance_plan.relevance.scorers import ScoreRequest, Task
 from relevance_plan.planning.validate import ValidationResult, ValidationStatus, validate_plan
 
@@ -227,6 +227,7 @@ def plan_task(
     domain = load_domain(domain_path)
     problem = load_problem(problem_path, domain)
     task = Task(domain, problem)
+    check_planner_names(domain, problem)
     total = len(problem.objects)
     deadline = started + options.timeout
     overran = _overran("reading the domain and problem", started, options, total)
@@ -400,7 +401,10 @@ def _finish(task: Task, options: PlanOptions, attempts: Sequence[Attempt], start
     status = _PLANNER_TO_PLAN_STATUS.get(last.outcome.status, PlanStatus.PLANNER_ERROR)
     if status is PlanStatus.INPUT_ERROR and last.outcome.exit_code in _CONFIG_ERROR_CODES:
         status = PlanStatus.PLANNER_CONFIG_ERROR
-    if status is PlanStatus.UNSOLVABLE and not full:
+    if status is PlanStatus.PLANNER_CONFIG_ERROR:
+        message = (f"Fast Downward rejected --planner-config '{options.planner_config}'"
+                   f" (unknown alias or bad search string; exit code {last.outcome.exit_code})")
+    elif status is PlanStatus.UNSOLVABLE and not full:
         # Only the full problem's unsolvability says anything about the user's problem.
         status = PlanStatus.NO_VALID_PLAN
         message = "the pruned problem is unsolvable (pruning removed something needed; relaxation is off)"

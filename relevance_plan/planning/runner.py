@@ -189,6 +189,37 @@ def fast_downward_version() -> str:
         raise errors.PlannerError("up-fast-downward is not installed") from error
 
 
+def check_planner_names(domain, problem) -> None:
+    """Refuse, before any planning, a name Fast Downward cannot read.
+
+    Its translator accepts only ASCII outside comments; our reader, like
+    PDDL tools that read Unicode, accepts more, so ``score`` and ``prune``
+    work while ``plan`` would fail deep inside the planner.
+    """
+    names = [("domain", domain.name), ("problem", problem.name)]
+    names += [("type", name) for name in domain.types]
+    names += [("constant", name) for name in domain.constants]
+    names += [("predicate", name) for name in domain.predicates]
+    names += [("action", action.name) for action in domain.actions]
+    for kind, name in names:
+        if not name.isascii():
+            raise errors.UnsupportedFeatureError(
+                f"{kind} '{name}' has a non-ASCII name, which Fast Downward does not accept", path=domain.path)
+    for name in problem.objects:
+        if not name.isascii():
+            raise errors.UnsupportedFeatureError(
+                f"object '{problem.display(name)}' has a non-ASCII name, which Fast Downward does not accept",
+                path=problem.path, line=_object_line(problem, name))
+
+
+def _object_line(problem, name: str) -> int | None:
+    for symbols, _ in problem.object_groups:
+        for symbol in symbols:
+            if symbol.text.lower() == name:
+                return symbol.line
+    return None
+
+
 def planner_arguments(config: str) -> tuple[str, ...]:
     """Driver arguments for a named config, a raw search string or an alias.
 
