@@ -15,6 +15,7 @@ from relevance_plan.pddl.reader import Domain, Problem, read_domain, read_proble
 
 
 def read_bytes(path: str | os.PathLike, what: str = "file") -> bytes:
+    check_input_file(path, what)
     path = Path(path)
     try:
         return path.read_bytes()
@@ -120,6 +121,9 @@ def check_input_file(path: str | os.PathLike, what: str = "file") -> None:
         raise InputFileError(f"cannot read {what}: {error.strerror}", path=str(path)) from None
     if stat.S_ISDIR(info.st_mode):
         raise InputFileError(f"expected a {what}, found a directory", path=str(path))
+    if stat.S_ISCHR(info.st_mode) or stat.S_ISBLK(info.st_mode):
+        # /dev/zero would be read until memory runs out; a pipe (/dev/stdin) is fine.
+        raise InputFileError(f"expected a {what}, found a device", path=str(path))
     if not os.access(path, os.R_OK):
         raise InputFileError(f"cannot read {what}: permission denied", path=str(path))
 
