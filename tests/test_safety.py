@@ -229,7 +229,8 @@ def _start_plan(long_problem, tmp_path):
     while not (_fd_dirs() - before) and time.monotonic() < deadline:
         time.sleep(0.1)
     time.sleep(1.0)  # the translator is running now
-    assert process.poll() is None and len(_session_processes(process.pid)) >= 3
+    assert process.poll() is None
+    assert len(_planner_processes(str(long_problem[1].parent))) >= 3, "guard, driver and a component"
     return process, before
 
 
@@ -243,7 +244,8 @@ def test_6_a_signal_during_plan_stops_every_process_and_cleans_up(long_problem, 
     assert process.returncode == ExitCode.INTERRUPTED
     assert "interrupted" in one_line_error(stderr.decode())
     time.sleep(0.2)
-    assert _session_processes(process.pid) == [] and not [p for p in planners if Path(f"/proc/{p}").exists()]
+    # Killed processes may stay zombies until init reaps them; none may still run.
+    assert [p for p in _session_processes(process.pid) + planners if _alive(p)] == []
     assert _fd_dirs() - before == set()
     assert not (tmp_path / "plan").exists()
 
