@@ -32,7 +32,8 @@ def read_text(path: str | os.PathLike, what: str = "file") -> str:
     try:
         return data.decode("utf-8")
     except UnicodeDecodeError as error:
-        raise InputFileError(f"not a UTF-8 text file ({error.reason})", path=str(path)) from None
+        line = data.count(b"\n", 0, error.start) + 1
+        raise InputFileError(f"not a UTF-8 text file ({error.reason})", path=str(path), line=line) from None
 
 
 def load_domain(path: str | os.PathLike) -> Domain:

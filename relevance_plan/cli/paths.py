@@ -10,6 +10,8 @@ any string and checks the values itself before the command runs.
 from __future__ import annotations
 
 import functools
+import os
+from pathlib import Path
 
 import click
 
@@ -27,6 +29,12 @@ class _UncheckedPath(click.Path):
         return value
 
 
+def _as_list(value) -> list:
+    if value is None:
+        return []
+    return list(value) if isinstance(value, (list, tuple)) else [value]
+
+
 def _check(command_name: str, values: dict) -> None:
     from relevance_plan.io import check_input_file, check_output_file
 
@@ -39,6 +47,10 @@ def _check(command_name: str, values: dict) -> None:
         if command_name in INPUT_STORES:
             check_input_file(values["store_path"], "results store")
         inputs.append(values["store_path"])
+    # A suite's files are inputs too (``sweep --heatmap SUITE/domain.pddl``).
+    for suite in _as_list(values.get("suite_dir")) + _as_list(values.get("suite_dirs")):
+        if os.path.isdir(suite):
+            inputs += [str(path) for path in Path(suite).iterdir() if path.suffix in (".pddl", ".json")]
     for name, what in OUTPUT_FILES.items():
         if values.get(name) is not None:
             check_output_file(values[name], what, inputs)

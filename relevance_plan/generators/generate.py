@@ -52,6 +52,10 @@ CONSTRAINT_COUNTS: dict[tuple[str, str], int] = {
 }
 """Random on-top constraints added per problem (cereal adds none)."""
 
+# Far above any benchmark; beyond, a typo would run for hours and fill the disk.
+MAX_COUNT = 100_000
+MAX_DISTRACTORS = 100_000
+
 BASE_SCENE_NAMES = tuple(f"{w}-{d}" for w in WORLD_NAMES for d in DIFFICULTIES)
 
 
@@ -92,6 +96,8 @@ def _check_arguments(world: object, difficulty: object, seed: object, distractor
     _check_int("seed", seed)
     if distractors is not None:
         _check_int("distractors", distractors, 0)
+        if distractors > MAX_DISTRACTORS:
+            raise UsageError(f"distractors must be at most {MAX_DISTRACTORS}, not {distractors}")
 
 
 def problem_rng(seed: int, world: str, difficulty: str, index: int) -> random.Random:
@@ -397,8 +403,6 @@ def generate_suite(
         raise
     return [out_dir / entry["problem"] for entry in entries]
 
-
-MAX_COUNT = 100_000
 
 
 def _move_into_place(staging: Path, out_dir: Path, planned: list[str], previous: set[str]) -> None:
