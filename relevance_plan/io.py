@@ -61,6 +61,21 @@ def scratch_directory(prefix: str = "relevance-plan-"):
         yield Path(directory)
 
 
+def read_sidecar(path: str | os.PathLike) -> dict:
+    """A generator sidecar (PROBLEM.json) as a dict; ``relevance.sidecar`` checks its fields."""
+    import json
+
+    try:
+        data = json.loads(read_text(path, "sidecar"))
+    except ValueError as error:
+        raise InputFileError(f"sidecar is not valid JSON: {str(error).splitlines()[0]}", path=str(path)) from None
+    except RecursionError:
+        raise InputFileError("sidecar is not valid JSON: nested too deeply", path=str(path)) from None
+    if not isinstance(data, dict):
+        raise InputFileError("sidecar must hold a JSON object", path=str(path))
+    return data
+
+
 def find_suite_problems(directory: str | os.PathLike) -> tuple[Path, list[Path]]:
     """The suite's domain file and its problem files, sorted by name."""
     directory = Path(directory)

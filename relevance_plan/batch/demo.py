@@ -15,7 +15,7 @@ from pathlib import Path
 
 from relevance_plan.batch.jobs import CompareSummary, check_compare_options, compare
 from relevance_plan.errors import InputFileError, UsageError
-from relevance_plan.planning.loop import METHODS
+from relevance_plan.planning.loop import METHODS, PlanOptions
 from relevance_plan.batch.report import build_report, format_report
 from relevance_plan.batch.store import KEY_COLUMNS, read_rows
 
@@ -59,6 +59,7 @@ def run_demo(
     if distractors is not None and (isinstance(distractors, bool) or not isinstance(distractors, int)
                                     or distractors < 0):
         raise UsageError(f"--distractors must be a non-negative integer, got {distractors!r}")
+    options = PlanOptions(timeout=timeout)  # checked before anything is written
     if tiny:
         # An explicit --distractors still wins; --tiny only changes the defaults.
         count, distractors = TINY_COUNT, TINY_DISTRACTORS if distractors is None else distractors
@@ -83,7 +84,7 @@ def run_demo(
         generate_suite(world, difficulty, count, DEMO_SEED, suite, distractors=distractors)
         suites.append(suite)
     store_path = workdir / STORE_NAME
-    summary = compare(suites, METHODS, timeout=timeout, jobs=jobs, store_path=store_path, progress=progress)
+    summary = compare(suites, METHODS, options, jobs=jobs, store_path=store_path, progress=progress)
     wanted = set(summary.keys)
     rows = [row for row in read_rows(store_path) if tuple(row[name] for name in KEY_COLUMNS) in wanted]
     table = format_report(build_report(rows), "markdown")

@@ -61,7 +61,7 @@ def _checked(command: click.Command):
 
     @functools.wraps(callback)
     def wrapper(*args, **kwargs):
-        from relevance_plan.cli.app import handle_errors
+        from relevance_plan.cli.common import handle_errors
 
         handle_errors(_check)(command.name, kwargs)
         return callback(*args, **kwargs)

@@ -3,7 +3,7 @@
 A small, fast reader for typed PDDL (STRIPS with ADL conditions and
 conditional effects).  It exists because unified-planning's reader costs
 seconds on problems with thousands of objects, renames objects, and must not
-be asked for ``initial_values`` (FACTS.md).  Symbols are lower-cased, as PDDL
+be asked for ``initial_values``.  Symbols are lower-cased, as PDDL
 is case-insensitive; the problem keeps the user's spelling of every object and
 the source spans the writer needs to cut the file without re-formatting it.
 

@@ -1,58 +1,68 @@
-"""The generator's sidecar (``PROBLEM.json``), checked against its schema once.
+"""The generator's sidecar (``PROBLEM.json``): ground truth and provenance, read in one place.
 
-Every reader of sidecars (``plan --method oracle``, ``sweep``, ``compare``)
-goes through ``read_sidecar_fields``, so a bad sidecar gives the same one
-line and exit code (31, a bad input file) everywhere.
+Every front end that needs a sidecar (the oracle scorer, ``sweep``, the
+batch rows) goes through :func:`read_sidecar_for`, so a malformed sidecar
+gets the same error everywhere.
 """
 
 from __future__ import annotations
 
-import json
 import os
 from dataclasses import dataclass
 from pathlib import Path
 
 from relevance_plan.errors import InputFileError
-from relevance_plan.io import read_text
-
-_NAME_LISTS = ("relevant", "necessary")
-_NAMES = ("world", "difficulty")
+from relevance_plan.io import read_sidecar
 
 
 @dataclass(frozen=True)
-class SidecarFields:
-    """The fields this tool uses; None where the sidecar does not have one."""
+class Sidecar:
+    path: str
+    world: str | None = None
+    difficulty: str | None = None
+    relevant: frozenset | None = None  # lower-cased object names; None when the sidecar has none
+    necessary: frozenset | None = None
 
-    relevant: frozenset | None
-    necessary: frozenset | None
-    world: str | None
-    difficulty: str | None
+
+def sidecar_path(problem_path: str | os.PathLike) -> Path:
+    return Path(problem_path).with_suffix(".json")
 
 
-def read_sidecar_fields(path: str | os.PathLike) -> SidecarFields:
-    """Read and check a sidecar; ``InputFileError`` naming the file and the field otherwise.
+def _names(data: dict, key: str, path: str) -> frozenset | None:
+    if key not in data:
+        return None
+    value = data[key]
+    if not isinstance(value, list) or not all(isinstance(name, str) for name in value):
+        raise InputFileError(f"sidecar field '{key}' must be a list of object names", path=path)
+    return frozenset(name.lower() for name in value)
 
-    ``relevant`` and ``necessary`` must be lists of object names (lower-cased
-    here, as PDDL names are), ``world`` and ``difficulty`` strings; other
-    fields are the generator's provenance and are not checked.
-    """
-    path = Path(path)
-    try:
-        data = json.loads(read_text(path, "sidecar"))
-    except (ValueError, RecursionError) as error:
-        detail = str(error).splitlines()[0] if isinstance(error, ValueError) else "nested too deeply"
-        raise InputFileError(f"sidecar is not valid JSON: {detail}", path=str(path)) from None
-    if not isinstance(data, dict):
-        raise InputFileError("sidecar must hold a JSON object", path=str(path))
-    values = {}
-    for key in _NAME_LISTS:
-        value = data.get(key)
-        if value is not None and (not isinstance(value, list) or not all(isinstance(v, str) for v in value)):
-            raise InputFileError(f"sidecar field '{key}' must be a list of object names", path=str(path))
-        values[key] = frozenset(v.lower() for v in value) if value is not None else None
-    for key in _NAMES:
-        value = data.get(key)
-        if value is not None and not isinstance(value, str):
-            raise InputFileError(f"sidecar field '{key}' must be a string", path=str(path))
-        values[key] = value
-    return SidecarFields(**values)
+
+def _text(data: dict, key: str, path: str) -> str | None:
+    value = data.get(key)
+    if value is not None and not isinstance(value, str):
+        raise InputFileError(f"sidecar field '{key}' must be a string", path=path)
+    return value
+
+
+def read_sidecar_for(problem_path: str | os.PathLike, required: bool = False) -> Sidecar | None:
+    """The sidecar next to ``problem_path``; None when there is none and it is not ``required``."""
+    path = sidecar_path(problem_path)
+    if not path.is_file():
+        if required:
+            raise InputFileError("the generator's sidecar is missing", path=str(path))
+        return None
+    data = read_sidecar(path)
+    where = str(path)
+    return Sidecar(
+        path=where,
+        world=_text(data, "world", where),
+        difficulty=_text(data, "difficulty", where),
+        relevant=_names(data, "relevant", where),
+        necessary=_names(data, "necessary", where),
+    )
+
+
+def necessary_objects(problem_path: str | os.PathLike) -> frozenset | None:
+    """The sidecar's ``necessary`` set (the oracle's answer); None without a sidecar or the field."""
+    sidecar = read_sidecar_for(problem_path)
+    return sidecar.necessary if sidecar is not None else None

@@ -10,13 +10,13 @@ only get in the way score 0 and are left to closure.
 
 from __future__ import annotations
 
-from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult, Task
+from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult, PlanningTask
 
 ROLE_DECAY = 0.6
 NEIGHBOUR_SCORE = 0.3
 
 
-def score_by_goal(task: Task, request: ScoreRequest) -> ScoreResult:
+def score_by_goal(task: PlanningTask, request: ScoreRequest) -> ScoreResult:
     domain, problem = task.domain, task.problem
     analysis = task.goal_analysis
     goal_objects = task.goal_objects

@@ -18,7 +18,7 @@ from relevance_plan.errors import ModelError
 from relevance_plan.relevance.knowledge import KnowledgeModel, ModelClass
 from relevance_plan.pddl.reader import formula_atoms
 from relevance_plan.relevance.scene import Element, build_scene
-from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult, Task
+from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult, PlanningTask
 
 UNKNOWN_CLASS = "(unknown)"
 # More than this share of objects of unknown class: the model is not about this scene.
@@ -41,7 +41,7 @@ def classify(element: Element, model: KnowledgeModel) -> ModelClass | None:
     return None
 
 
-def _choose_objective(task: Task, model: KnowledgeModel, request: ScoreRequest) -> tuple[str | None, str]:
+def _choose_objective(task: PlanningTask, model: KnowledgeModel, request: ScoreRequest) -> tuple[str | None, str]:
     if request.objective is not None:
         if request.objective not in model.objectives:
             raise ModelError(
@@ -62,7 +62,7 @@ def _choose_objective(task: Task, model: KnowledgeModel, request: ScoreRequest) 
     return best[0], ""
 
 
-def score_by_model(task: Task, request: ScoreRequest) -> ScoreResult:
+def score_by_model(task: PlanningTask, request: ScoreRequest) -> ScoreResult:
     model = request.model
     if model is None:
         raise ModelError("the model scorer needs a knowledge model (--model FILE)")
@@ -89,12 +89,12 @@ def score_by_model(task: Task, request: ScoreRequest) -> ScoreResult:
     if objective is None:
         return insufficient(problem_with_objective)
 
-    if request.task is not None:
-        if request.task not in model.task_classes:
+    if request.model_task is not None:
+        if request.model_task not in model.task_classes:
             raise ModelError(
-                f"unknown task '{request.task}' (model has: {', '.join(model.task_classes)})", path=model.path
+                f"unknown task '{request.model_task}' (model has: {', '.join(model.task_classes)})", path=model.path
             )
-        distribution = {request.task: 1.0}
+        distribution = {request.model_task: 1.0}
     elif human is not None and objective in human.objective_tasks:
         distribution = dict(human.objective_tasks[objective])
     else:
