@@ -34,7 +34,11 @@ def _watch(fd: int) -> None:
 def main() -> None:
     fd = int(sys.argv[1])
     threading.Thread(target=_watch, args=(fd,), daemon=True).start()
-    process = subprocess.Popen(sys.argv[2:], close_fds=True)
+    try:
+        process = subprocess.Popen(sys.argv[2:], close_fds=True)
+    except OSError as error:
+        print(f"guard: cannot start {sys.argv[2]}: {error.strerror or error}", file=sys.stderr)
+        os._exit(127)
     code = process.wait()
     os._exit(code & 0xFF if code >= 0 else (256 + code) & 0xFF)
 

@@ -476,6 +476,11 @@ def run_process_group(command: list[str], workdir: Path, deadline: float | None,
     the group is killed and reaped in every case (Ctrl-C included).  Every
     planner adapter runs its processes through here.
     """
+    # The guard starts the command, so a missing program must be caught here.
+    executable = command[0] if os.sep in command[0] else shutil.which(command[0])
+    if executable is None or not os.access(executable, os.X_OK) or os.path.isdir(executable):
+        raise errors.PlannerError(f"cannot start {what}: {command[0]} is not an executable program",
+                                  path=str(program))
     started = time.monotonic()
     # The guard kills the group when this process dies (its pipe's write end
     # closes, even on kill -9); os.pipe() fds are close-on-exec, so no other
