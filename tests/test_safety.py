@@ -3,13 +3,11 @@ the tool, and every bad input is one line with its documented exit code."""
 
 from __future__ import annotations
 
-import glob
 import os
 import signal
 import stat
 import subprocess
 import sys
-import tempfile
 import threading
 import time
 from pathlib import Path
@@ -180,10 +178,6 @@ def test_5_an_existing_output_keeps_its_mode(files, tmp_path):
 # --------------------------------------------------------------------------- 6. signals and processes
 
 
-def _fd_dirs() -> set:
-    return set(glob.glob(os.path.join(tempfile.gettempdir(), "relevance-plan-fd-*")))
-
-
 def _session_processes(sid: int) -> list[int]:
     found = []
     for entry in os.listdir("/proc"):
@@ -196,8 +190,8 @@ def _session_processes(sid: int) -> list[int]:
     return found
 
 
-def _planner_processes(marker: str) -> list[int]:
-    """Every process of the planner sessions whose guard's command line mentions ``marker``."""
+def _guards(marker: str) -> list[int]:
+    """The planner guards whose command line mentions ``marker`` (other runs may share /tmp)."""
     guards = []
     for entry in os.listdir("/proc"):
         if entry.isdigit():
@@ -207,7 +201,16 @@ def _planner_processes(marker: str) -> list[int]:
                 continue
             if b"guard.py" in command and marker.encode() in command:
                 guards.append(int(entry))
-    return [pid for guard in guards for pid in _session_processes(guard)]
+    return guards
+
+
+def _planner_processes(marker: str) -> list[int]:
+    """Every process of the planner sessions of ``_guards(marker)``."""
+    return [pid for guard in _guards(marker) for pid in _session_processes(guard)]
+
+
+def _planner_workdirs(marker: str) -> list[Path]:
+    return [Path(os.readlink(f"/proc/{guard}/cwd")) for guard in _guards(marker)]
 
 
 @pytest.fixture(scope="module")
@@ -220,23 +223,26 @@ def long_problem(tmp_path_factory):
 
 
 def _start_plan(long_problem, tmp_path):
+    """The running tool and its planner's scratch directory."""
     domain, problem = long_problem
-    before = _fd_dirs()
+    marker = str(problem.parent)
     process = subprocess.Popen(
         TOOL + ["plan", str(domain), str(problem), "--method", "pure", "-q", "--plan-file", str(tmp_path / "plan")],
         start_new_session=True, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
     deadline = time.monotonic() + 20
-    while not (_fd_dirs() - before) and time.monotonic() < deadline:
+    while not _guards(marker) and time.monotonic() < deadline:
         time.sleep(0.1)
     time.sleep(1.0)  # the translator is running now
     assert process.poll() is None
-    assert len(_planner_processes(str(long_problem[1].parent))) >= 3, "guard, driver and a component"
-    return process, before
+    assert len(_planner_processes(marker)) >= 3, "guard, driver and a component"
+    (workdir,) = _planner_workdirs(marker)
+    assert workdir.name.startswith("relevance-plan-fd-") and workdir.is_dir()
+    return process, workdir
 
 
 @pytest.mark.parametrize("signum", [signal.SIGTERM, signal.SIGHUP, signal.SIGINT])
 def test_6_a_signal_during_plan_stops_every_process_and_cleans_up(long_problem, tmp_path, signum):
-    process, before = _start_plan(long_problem, tmp_path)
+    process, workdir = _start_plan(long_problem, tmp_path)
     planners = _planner_processes(str(long_problem[1].parent))
     assert planners
     os.kill(process.pid, signum)
@@ -246,12 +252,12 @@ def test_6_a_signal_during_plan_stops_every_process_and_cleans_up(long_problem, 
     time.sleep(0.2)
     # Killed processes may stay zombies until init reaps them; none may still run.
     assert [p for p in _session_processes(process.pid) + planners if _alive(p)] == []
-    assert _fd_dirs() - before == set()
+    assert not workdir.exists()
     assert not (tmp_path / "plan").exists()
 
 
 def test_6_planners_die_with_the_tool_on_kill_9(long_problem, tmp_path):
-    process, _ = _start_plan(long_problem, tmp_path)
+    process, workdir = _start_plan(long_problem, tmp_path)
     planners = _planner_processes(str(long_problem[1].parent))
     assert planners
     os.kill(process.pid, signal.SIGKILL)
@@ -260,6 +266,9 @@ def test_6_planners_die_with_the_tool_on_kill_9(long_problem, tmp_path):
     while [p for p in planners if _alive(p)] and time.monotonic() < deadline:
         time.sleep(0.05)
     assert [p for p in planners if _alive(p)] == [], "planners outlived the tool"
+    while workdir.exists() and time.monotonic() < deadline + 2.0:
+        time.sleep(0.05)
+    assert not workdir.exists(), "the planner's scratch directory is removed too"
 
 
 def _alive(pid: int) -> bool:

@@ -5,18 +5,24 @@ write end the tool holds.  The guard leads the planner's process group
 (the runner starts it in a new session) and runs COMMAND in that group.
 When the tool dies, even by ``kill -9``, the kernel closes the write end;
 the guard reads end-of-file and kills the whole group, itself included, at
-once.  Fast Downward's driver forks its translator and search, so a
-parent-death signal on the driver alone would leave them running.
+once, and removes the run's scratch directory (its cwd).  Fast Downward's
+driver forks its translator and search, so a parent-death signal on the
+driver alone would leave them running.
 
 The guard exits as the planner did (a death by signal N as 256 - N, which
 the runner reads back as -N, as it does for the driver's own codes).
 """
 
 import os
+import shutil
 import signal
 import subprocess
 import sys
 import threading
+import time
+
+# Only a directory the runner made for this run is removed (tempfile prefix "relevance-plan-").
+SCRATCH_PREFIX = "relevance-plan-"
 
 
 def _watch(fd: int) -> None:
@@ -28,6 +34,23 @@ def _watch(fd: int) -> None:
             continue
         except OSError:
             break
+    _stop_everything()
+
+
+def _stop_everything() -> None:
+    """Kill the whole group; a detached child then removes the run's scratch
+    directory (our cwd), which the dead tool can no longer remove."""
+    workdir = os.getcwd()
+    if os.path.basename(workdir).startswith(SCRATCH_PREFIX):
+        ready_read, ready_write = os.pipe()
+        if os.fork() == 0:
+            os.setsid()  # leave the group that is about to be killed
+            os.close(ready_write)  # tells the guard we are out
+            time.sleep(0.5)  # SIGKILL has landed: nobody writes there any more
+            shutil.rmtree(workdir, ignore_errors=True)
+            os._exit(0)
+        os.close(ready_write)
+        os.read(ready_read, 1)  # end-of-file once the cleaner has left the group
     os.killpg(0, signal.SIGKILL)
 
 
