@@ -75,6 +75,25 @@ def test_1_an_output_that_is_an_input_is_refused(files, tmp_path, command, optio
     assert snapshot(domain, problem, model) == before
 
 
+def test_1_the_model_found_next_to_the_domain_is_an_input_too(files, tmp_path):
+    domain, problem = files
+    model = tmp_path / "relevance.yaml"
+    model.write_bytes((REPO / "domains" / "coffee" / "relevance.yaml").read_bytes())
+    before = snapshot(model)
+    code, _, stderr = run("prune", domain, problem, "-o", model)
+    assert code == ExitCode.USAGE and "same file" in one_line_error(stderr)
+    assert snapshot(model) == before
+
+
+def test_1_sweep_heatmap_cannot_replace_a_suite_file(tmp_path):
+    suite = tmp_path / "suite"
+    assert run("generate", "coffee", "--count", "1", "--out", suite)[0] == 0
+    before = snapshot(*suite.iterdir())
+    code, _, stderr = run("sweep", suite, "--heatmap", suite / "domain.pddl")
+    assert code == ExitCode.USAGE and "same file" in one_line_error(stderr)
+    assert snapshot(*suite.iterdir()) == before
+
+
 # --------------------------------------------------------------------------- 2. non-regular targets
 
 

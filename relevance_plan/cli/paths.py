@@ -43,6 +43,11 @@ def _check(command_name: str, values: dict) -> None:
         if values.get(name) is not None:
             check_input_file(values[name], what)
             inputs.append(values[name])
+    if values.get("domain_path") is not None and values.get("model_path") is None:
+        # The model found next to the domain is an input too.
+        found = Path(values["domain_path"]).parent / "relevance.yaml"
+        if found.is_file():
+            inputs.append(str(found))
     if values.get("store_path") is not None:
         if command_name in INPUT_STORES:
             check_input_file(values["store_path"], "results store")
