@@ -205,3 +205,27 @@ def test_pyperplan_solves_a_classic_problem_and_refuses_features_it_lacks(grippe
 def test_an_engine_that_is_not_installed_names_the_extra():
     with pytest.raises(UsageError, match=r"relevance-plan\[planners\]"):
         make_planner("up:no-such-engine", check=True)
+
+
+# --------------------------------------------------------------------------- compare --planners
+
+
+def test_compare_with_two_planners_resumes_and_reports_per_planner(tmp_path):
+    pytest.importorskip("up_lpg")
+    from relevance_plan.generators.generate import generate_suite
+
+    suite = tmp_path / "coffee-simple"
+    generate_suite("coffee", "simple", 1, 5, suite, distractors=3)
+    store = tmp_path / "results.sqlite"
+    arguments = ["compare", str(suite), "--methods", "pure,relevance", "--planners", "fast-downward,up:lpg",
+                 "--timeout", "120", "--store", str(store), "--quiet"]
+    runner = CliRunner()
+    first = runner.invoke(main, arguments)
+    assert first.exit_code == 0, first.output
+    assert "4 jobs: 0 already stored, 4 run (4 solved)" in first.output
+    again = runner.invoke(main, arguments)
+    assert again.exit_code == 0 and "4 jobs: 4 already stored, 0 run" in again.output
+    report = runner.invoke(main, ["report", str(store)])
+    assert "coffee-simple [fast-downward]" in report.output and "coffee-simple [up:lpg]" in report.output
+    bad = runner.invoke(main, ["compare", str(suite), "--planners", "fast-downward,nope", "--store", str(store)])
+    assert bad.exit_code == ExitCode.USAGE and "unknown planner 'nope'" in bad.output
