@@ -115,7 +115,8 @@ def take_plan_options(values: dict, method: str = "relevance") -> PlanOptions:
     """PlanOptions from a command's parsed values (scoring and planning keys are removed)."""
     scoring = take_scoring(values)
     taken = {key: values.pop(key) for key in PLANNING_KEYS}
-    return PlanOptions(
+    return PlanOptions.from_scoring(
+        scoring,
         method=method,
         planner=taken["planner"],
         planner_config=taken["planner_config"],
@@ -123,13 +124,6 @@ def take_plan_options(values: dict, method: str = "relevance") -> PlanOptions:
         memory_limit_mb=taken["memory_limit"],
         relax=not taken["no_relax"],
         validators=tuple(taken["validators"]) or None,
-        thresholds=scoring.thresholds,
-        scorer=scoring.scorer,
-        model_path=scoring.model_path,
-        objective=scoring.objective,
-        model_task=scoring.model_task,
-        human=scoring.human,
-        seed=scoring.seed,
     )
 
 

@@ -325,6 +325,9 @@ class _InnerPlanner:
         self.last_result: PlanGenerationResult | None = None
         self.lifted: dict[int, SequentialPlan] = {}  # attempt number -> the plan on the original problem
         self.calls = 0
+        # UP names -> the names our reader gave the exported problem (what the validator checks)
+        self.reader_objects = {up: reader for reader, up in stage.up_names.items()} if stage else {}
+        self.reader_actions = {up: reader for reader, up in stage.action_names.items()} if stage else {}
 
     def __call__(self, selection: PruneResult | None, limit: float | None) -> RunOutcome:
         self.calls += 1
@@ -348,13 +351,10 @@ class _InnerPlanner:
                           optimal=result.status is PlanGenerationResultStatus.SOLVED_OPTIMALLY)
 
     def _reader_step(self, step: ActionInstance) -> str:
-        """A step in the names our reader gave the exported problem (what the validator checks)."""
         if self.stage is None:
-            return ""
-        to_reader = {up: reader for reader, up in self.stage.up_names.items()}
-        action = {up: reader for reader, up in self.stage.action_names.items()}[step.action.name]
-        arguments = [to_reader[p.object().name] for p in step.actual_parameters]
-        return " ".join([action, *arguments])
+            return ""  # nothing to validate with: the caller uses UP's own validator
+        arguments = [self.reader_objects[p.object().name] for p in step.actual_parameters]
+        return " ".join([self.reader_actions[step.action.name], *arguments])
 
 
 _UP_TO_PLANNER = {
@@ -373,7 +373,8 @@ _PLAN_TO_UP = {
     PlanStatus.UNSOLVABLE: PlanGenerationResultStatus.UNSOLVABLE_PROVEN,
     PlanStatus.OUT_OF_TIME: PlanGenerationResultStatus.TIMEOUT,
     PlanStatus.OUT_OF_MEMORY: PlanGenerationResultStatus.MEMOUT,
-    PlanStatus.INPUT_ERROR: PlanGenerationResultStatus.UNSUPPORTED_PROBLEM,
+    PlanStatus.INPUT_ERROR: PlanGenerationResultStatus.INTERNAL_ERROR,
+    PlanStatus.UNSUPPORTED: PlanGenerationResultStatus.UNSUPPORTED_PROBLEM,
     PlanStatus.PLANNER_ERROR: PlanGenerationResultStatus.INTERNAL_ERROR,
     PlanStatus.PLANNER_CONFIG_ERROR: PlanGenerationResultStatus.INTERNAL_ERROR,
     PlanStatus.VALIDATOR_UNAVAILABLE: PlanGenerationResultStatus.INTERNAL_ERROR,

@@ -336,6 +336,8 @@ class _Reader:
                 self.fail("'not' in an effect takes one atom", node)
             return ("not", self.atom(args[0], ctx))
         if head == "forall":
+            if len(args) != 2:
+                self.fail("'forall' in an effect takes a parameter list and an effect", node)
             params = self.parameters(args[0], ctx.types)
             inner = dict(ctx.variables)
             inner.update(params)

@@ -50,6 +50,7 @@ class PlanStatus(enum.Enum):
     OUT_OF_MEMORY = "out-of-memory"
     INSUFFICIENT_CUES = "insufficient-cues"
     INPUT_ERROR = "input-error"
+    UNSUPPORTED = "unsupported"  # the planner cannot take the problem's features
     PLANNER_CONFIG_ERROR = "planner-config-error"
     PLANNER_ERROR = "planner-error"
     VALIDATOR_UNAVAILABLE = "validator-unavailable"
@@ -96,15 +97,12 @@ class PlanOptions:
 
     @property
     def scoring(self) -> ScoringOptions:
-        return ScoringOptions(
-            scorer=self.scorer,
-            model_path=self.model_path,
-            objective=self.objective,
-            model_task=self.model_task,
-            human=self.human,
-            thresholds=self.thresholds,
-            seed=self.seed,
-        )
+        """The scoring part of these options (the fields share their names)."""
+        return ScoringOptions(**{name: getattr(self, name) for name in SCORING_FIELDS})
+
+    @classmethod
+    def from_scoring(cls, scoring: ScoringOptions, **planning) -> "PlanOptions":
+        return cls(**{name: getattr(scoring, name) for name in SCORING_FIELDS}, **planning)
 
     @property
     def narrows_first(self) -> bool:
@@ -113,6 +111,8 @@ class PlanOptions:
 
 
 PLAN_OPTION_FIELDS = tuple(f.name for f in fields(PlanOptions))
+SCORING_FIELDS = tuple(f.name for f in fields(ScoringOptions))
+assert set(SCORING_FIELDS) <= set(PLAN_OPTION_FIELDS), "PlanOptions must carry every scoring option"
 
 
 @dataclass(frozen=True)
@@ -218,13 +218,14 @@ _PLANNER_TO_PLAN_STATUS = {
     PlannerStatus.OUT_OF_TIME: PlanStatus.OUT_OF_TIME,
     PlannerStatus.OUT_OF_MEMORY: PlanStatus.OUT_OF_MEMORY,
     PlannerStatus.INPUT_ERROR: PlanStatus.INPUT_ERROR,
-    PlannerStatus.UNSUPPORTED: PlanStatus.INPUT_ERROR,
+    PlannerStatus.UNSUPPORTED: PlanStatus.UNSUPPORTED,
     PlannerStatus.PLANNER_CRASH: PlanStatus.PLANNER_ERROR,
 }
 
 # Planner results that say nothing about the object set: retrying a wider set
-# is pointless, so the loop goes straight to the full problem.
-_PLANNER_FAULTS = (PlannerStatus.INPUT_ERROR, PlannerStatus.UNSUPPORTED, PlannerStatus.PLANNER_CRASH)
+# is pointless, so the loop goes straight to the full problem.  A planner that
+# cannot take the domain's features would refuse the full problem too: stop.
+_PLANNER_FAULTS = (PlannerStatus.INPUT_ERROR, PlannerStatus.PLANNER_CRASH)
 
 # Driver exit codes that reject the planner configuration, not the task:
 # argparse usage error, search input error, unknown alias (driver input error).
@@ -291,6 +292,8 @@ def run_attempts(
         if validation is not None and validation.status is not ValidationStatus.INVALID:
             break  # valid, or no validator could run: report it, never retry blindly
         if not options.relax or full:
+            break
+        if outcome.status is PlannerStatus.UNSUPPORTED:
             break
         if outcome.status in _PLANNER_FAULTS:
             if outcome.exit_code in _CONFIG_ERROR_CODES and outcome.planner == "fast-downward":
@@ -452,7 +455,8 @@ def summarise(
                    f" (unknown alias or bad search string; exit code {last.outcome.exit_code})")
     else:
         message = f"planner: {last.outcome.status.value} (exit code {last.outcome.exit_code})"
-        if last.outcome.log_tail and status in (PlanStatus.PLANNER_ERROR, PlanStatus.INPUT_ERROR,
-                                                PlanStatus.PLANNER_CONFIG_ERROR):
-            message += f"; last planner output: {last.outcome.log_tail.strip().splitlines()[-1][:200]}"
+        output = last.outcome.log_tail.strip().splitlines()
+        if output and status in (PlanStatus.PLANNER_ERROR, PlanStatus.INPUT_ERROR, PlanStatus.UNSUPPORTED,
+                                 PlanStatus.PLANNER_CONFIG_ERROR):
+            message += f"; last planner output: {output[-1].strip()[:200]}"
     return PlanResult(status=status, message=message, log_tail=last.outcome.log_tail, **common)

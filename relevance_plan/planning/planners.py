@@ -134,11 +134,13 @@ def installed_up_engines() -> tuple[str, ...]:
 
     factory = environment.get_environment().factory
     names = []
-    for name, engine in factory.engines.items():
+    for name in factory.engines:
+        if "[" in name:
+            continue  # a meta-engine (ours among them) is not a planner of its own
         try:
-            if engine.is_oneshot_planner() and "[" not in name:
+            if factory.engine(name).is_oneshot_planner():
                 names.append(name)
-        except Exception:  # an engine whose class cannot answer is not usable
+        except Exception:  # an engine whose class cannot be loaded is not usable
             continue
     return tuple(sorted(names))
 
