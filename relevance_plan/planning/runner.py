@@ -367,9 +367,39 @@ def _wait_for_group(pgid: int, deadline: float | None) -> tuple[int, float, floa
         # Killing only the driver would leave a running translator orphaned.
         _kill_group(pgid)
         if hasattr(os, "waitid"):
+            _await_group_death(pgid)
             _, status, usage = os.wait4(pgid, 0)
     cpu = usage.ru_utime + usage.ru_stime
     return status, cpu, usage.ru_maxrss / 1024.0, fired.is_set()
+
+
+def _await_group_death(pgid: int, timeout: float = 2.0) -> None:
+    """Wait until no member of the killed group still runs (Linux, via /proc).
+
+    SIGKILL lands at once, but a process takes a moment to exit; the unreaped
+    leader keeps the group id reserved meanwhile.  Without this, a caller
+    could see the planner's children still running after the run returned.
+    """
+    if not os.path.isdir("/proc"):
+        return
+    deadline = time.monotonic() + timeout
+    while _group_runs(pgid) and time.monotonic() < deadline:
+        time.sleep(0.01)
+
+
+def _group_runs(pgid: int) -> bool:
+    for entry in os.scandir("/proc"):
+        if not entry.name.isdigit():
+            continue
+        try:
+            with open(f"/proc/{entry.name}/stat", "rb") as stream:
+                fields = stream.read().rsplit(b")", 1)[1].split()
+        except (OSError, IndexError):
+            continue
+        # fields: state, ppid, pgrp, ...; a zombie has exited already.
+        if int(fields[2]) == pgid and fields[0] != b"Z":
+            return True
+    return False
 
 
 def _plan_paths(workdir: Path) -> list[Path]:
