@@ -290,6 +290,12 @@ def test_hostile_numbers(workspace):
     check("plan", domain, problem, "-q", "--planner-config", "no-such-alias", "--plan-file", out / "p",
           allowed={ExitCode.USAGE})
     check("plan", domain, problem, "-q", "--planner-config", "   ", "--plan-file", out / "p", allowed={ExitCode.USAGE})
+    for planner in ("cmd:", "up:no-such-engine", "no-such-planner", "cmd:'unbalanced", "cmd:echo {nosuch}",
+                    "cmd:/no/such/planner {domain} {problem}"):
+        check("plan", domain, problem, "-q", "--planner", planner, "--plan-file", out / "p",
+              allowed={ExitCode.USAGE, ExitCode.PLANNER})
+    check("exit-codes", allowed={0})
+    check("--help", allowed={0})
 
 
 def test_self_overwrites_and_odd_targets(workspace):

@@ -275,6 +275,28 @@ def test_6_a_signal_during_plan_stops_every_process_and_cleans_up(long_problem, 
     assert not (tmp_path / "plan").exists()
 
 
+def test_6_sighup_during_compare_stops_the_batch_and_its_planners(long_problem, tmp_path):
+    suite = long_problem[1].parent
+    store = tmp_path / "results.sqlite"
+    process = subprocess.Popen(TOOL + ["compare", str(suite), "--methods", "pure", "--store", str(store), "-q"],
+                               start_new_session=True, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    marker = str(suite)
+    deadline = time.monotonic() + 20
+    while not _guards(marker) and time.monotonic() < deadline:
+        time.sleep(0.1)
+    time.sleep(0.5)
+    planners = _planner_processes(marker)
+    (workdir,) = _planner_workdirs(marker)
+    assert planners
+    os.kill(process.pid, signal.SIGHUP)
+    _, stderr = process.communicate(timeout=40)
+    assert process.returncode == ExitCode.INTERRUPTED
+    assert "interrupted" in one_line_error(stderr.decode())
+    time.sleep(0.2)
+    assert [p for p in _session_processes(process.pid) + planners if _alive(p)] == []
+    assert not workdir.exists()
+
+
 def test_6_planners_die_with_the_tool_on_kill_9(long_problem, tmp_path):
     process, workdir = _start_plan(long_problem, tmp_path)
     planners = _planner_processes(str(long_problem[1].parent))
