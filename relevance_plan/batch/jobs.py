@@ -42,7 +42,9 @@ from relevance_plan.batch.store import ResultKey, ResultStore
 from relevance_plan.errors import InputFileError, PlannerError, RelevancePlanError, SchedulerError, UsageError
 from relevance_plan.io import find_suite_problems, load_domain, read_bytes
 from relevance_plan.planning import runner
-from relevance_plan.planning.loop import MAX_TIMEOUT, METHODS, PLAN_OPTION_FIELDS, PlanOptions, PlanResult, PlanStatus, plan_task
+from relevance_plan.planning.loop import (
+    MAX_TIMEOUT, METHODS, PLAN_OPTION_FIELDS, PlanOptions, PlanResult, PlanStatus, plan_task,
+)
 from relevance_plan.planning.planners import make_planner
 from relevance_plan.relevance.knowledge import find_model
 from relevance_plan.relevance.sidecar import read_sidecar_for, sidecar_path

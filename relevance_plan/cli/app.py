@@ -26,7 +26,7 @@ from relevance_plan.cli.common import (
 from relevance_plan.errors import UsageError
 from relevance_plan.exitcodes import EXIT_CODE_DESCRIPTIONS, ExitCode
 from relevance_plan.planning.loop import PlanResult, PlanStatus, plan_task
-from relevance_plan.relevance.prune import PruneResult, Thresholds
+from relevance_plan.relevance.prune import PruneResult
 from relevance_plan.relevance.scorers import PlanningTask
 from relevance_plan.relevance.setup import Scoring, ScoringOptions, score_problem
 
@@ -319,14 +319,13 @@ def _print_plan_summary(result: PlanResult, plan_file, err: bool = False) -> Non
 def sweep(suite_dir, taus, heatmap, as_json, **values):
     """Precision, recall, F1 and N over a tau_c x tau_e grid for a generated suite."""
     from relevance_plan.batch.sweep import format_sweep, sweep_suite, write_heatmap
+    from relevance_plan.relevance.knowledge import check_threshold
 
     options = take_scoring(values)
     try:
         grid = tuple(float(v) for v in taus.split(","))
     except ValueError:
         raise UsageError(f"--taus must be comma-separated numbers, got '{taus}'") from None
-    from relevance_plan.relevance.knowledge import check_threshold
-
     for value in grid:
         check_threshold(value, "each --taus value")
     result = sweep_suite(Path(suite_dir), grid, options)
