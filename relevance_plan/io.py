@@ -112,14 +112,14 @@ STDOUT = "-"
 def _same_file(a: Path, b: Path) -> bool:
     try:
         return os.path.samefile(a, b)
-    except OSError:
+    except (OSError, ValueError):
         return False
 
 
 def _check_name(path: str | os.PathLike) -> None:
     # The OS refuses such names with ValueError, not OSError.
     if "\0" in os.fspath(path):
-        raise InputFileError("a file name cannot contain a NUL byte", path=repr(os.fspath(path))[1:-1])
+        raise InputFileError("a file name cannot contain a NUL byte", path=os.fspath(path))
 
 
 def check_input_file(path: str | os.PathLike, what: str = "file") -> None:
