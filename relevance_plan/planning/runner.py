@@ -3,9 +3,11 @@
 Each run gets a fresh temporary working directory (Fast Downward writes
 ``output.sas`` and ``sas_plan`` into its cwd) and its own session, so the
 whole process tree (driver, translator, search) can be killed at once.
-The driver's own limits are CPU time and address space per component; a
-wall-clock watchdog backs them up.  The module is thread-safe: many runs
-may go at once from a thread pool.
+The session is led by a small guard (``guard.py``) that kills it if this
+process dies.  The driver's own limits are CPU time and address space per
+component; a wall-clock watchdog backs them up.  The module is thread-safe:
+many runs may go at once from a thread pool.  ``stop_on_signals`` turns
+SIGTERM and SIGHUP into the same clean stop as Ctrl-C.
 """
 
 from __future__ import annotations
@@ -127,7 +129,7 @@ class RunOutcome:
     ``plan`` holds the steps as Fast Downward writes them, lowercase and
     without parentheses ("pick cup1 counter").  ``exit_code`` is the driver's,
     with -N for death by signal N.  ``cpu_time`` and ``peak_memory_mb`` come
-    from os.wait4 and so cover the driver plus the components it reaped; a
+    from os.wait4 and so cover the guard, the driver and the components they reaped; a
     component killed by the watchdog is not counted.  ``translate_time`` and
     ``search_time`` are the components' own reports, None if they did not
     finish.  ``process_group`` is the run's (now dead) process group id.
