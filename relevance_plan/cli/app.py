@@ -218,7 +218,7 @@ def _print_score_table(result: PruneResult) -> None:
 def prune(domain_path, problem_path, output, as_json, **values):
     """Write PROBLEM without the objects that do not matter (a drop-in filter for any planner).
 
-    ``-o -`` writes the pruned problem to standard output (the summary goes to stderr).
+    "-o -" writes the pruned problem to standard output (the summary goes to stderr).
     """
     from relevance_plan.io import STDOUT, write_output
 
@@ -252,7 +252,8 @@ def prune(domain_path, problem_path, output, as_json, **values):
 @method_option
 @scoring_options
 @planning_options()
-@click.option("--plan-file", default="sas_plan", show_default=True, type=click.Path(dir_okay=False))
+@click.option("--plan-file", default="sas_plan", show_default=True, type=click.Path(dir_okay=False),
+              help="Where the plan goes ('-': standard output).")
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON object.")
 @click.option("--quiet", "-q", is_flag=True, help="No progress messages.")
 @handle_errors
