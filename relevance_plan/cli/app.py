@@ -211,7 +211,8 @@ def _print_score_table(result: PruneResult) -> None:
 @main.command()
 @click.argument("domain_path", metavar="DOMAIN", type=click.Path(dir_okay=False))
 @click.argument("problem_path", metavar="PROBLEM", type=click.Path(dir_okay=False))
-@click.option("-o", "--output", "output", type=click.Path(dir_okay=False), required=True, help="Pruned problem file.")
+@click.option("-o", "--output", "output", type=click.Path(dir_okay=False), required=True,
+              help="Pruned problem file ('-': standard output).")
 @scoring_options
 @click.option("--json", "as_json", is_flag=True, help="Machine-readable report on stdout.")
 @handle_errors
