@@ -24,12 +24,13 @@ class RelevancePlanError(Exception):
     def __str__(self) -> str:
         where = ""
         if self.path:
-            where = printable(self.path) + (f":{self.line}" if self.line else "") + ": "
+            where = printable(self.path, MAX_PATH) + (f":{self.line}" if self.line else "") + ": "
         return where + printable(self.message, MAX_MESSAGE)
 
 
 # A message quotes names from the user's files; a 1 MB name must not become a 1 MB line.
 MAX_MESSAGE = 400
+MAX_PATH = 1000
 
 
 def printable(text: str, limit: int | None = None) -> str:

@@ -154,7 +154,13 @@ def check_output_file(path: str | os.PathLike, what: str = "output file",
     if str(path) == STDOUT:
         return
     _check_name(path)
-    path = Path(path)
+    try:
+        _check_output_file(Path(path), what, inputs)
+    except OSError as error:  # a name too long, a loop of symlinks, ...
+        raise InputFileError(f"cannot write {what}: {error.strerror}", path=str(path)) from None
+
+
+def _check_output_file(path: Path, what: str, inputs) -> None:
     for source in inputs:
         if source is not None and str(source) != STDOUT and _same_file(path, Path(source)):
             raise UsageError(f"{what} {path} is the same file as the input {source}; choose another name")
@@ -198,11 +204,13 @@ def write_bytes_atomic(path: str | os.PathLike, data: bytes) -> Path:
     write permission is refused rather than replaced.
     """
     path = Path(path)
-    target = Path(os.path.realpath(path)) if path.is_symlink() else path
     try:
+        target = Path(os.path.realpath(path)) if path.is_symlink() else path
         info = target.stat()
-    except OSError:
-        info = None
+    except FileNotFoundError:
+        target, info = path, None
+    except OSError as error:
+        raise InputFileError(f"cannot write file: {error.strerror}", path=str(path)) from None
     if info is not None and stat.S_ISDIR(info.st_mode):
         raise InputFileError("cannot write file: it is a directory", path=str(path))
     if info is not None and not stat.S_ISREG(info.st_mode):

@@ -327,5 +327,11 @@ def test_self_overwrites_and_odd_targets(workspace):
         check("report", path, allowed={ExitCode.INPUT_FILE})
     check("generate", "coffee", "--count", "1", "--out", problem, allowed={ExitCode.INPUT_FILE})
     check("generate", "coffee", "--count", "1", "--out", user, allowed={ExitCode.USAGE})
+    too_long = user / ("x" * 5000)
+    for args in (["prune", *common, "-o", too_long], ["plan", *common, "-q", "--plan-file", too_long / "p"],
+                 ["score", domain, too_long], ["generate", "coffee", "--out", too_long], ["report", too_long],
+                 ["sweep", too_long], ["compare", too_long, "-q", "--store", out / "s.sqlite"],
+                 ["compare", suite, "-q", "--store", too_long]):
+        check(*args, allowed={ExitCode.INPUT_FILE})
     check("compare", suite, "--store", fifo_dir, "-q", allowed={ExitCode.INPUT_FILE})
     check("compare", suite, "--store", problem, "-q", allowed={ExitCode.STORE})

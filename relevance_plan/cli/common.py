@@ -14,7 +14,7 @@ import sys
 
 import click
 
-from relevance_plan.errors import RelevancePlanError
+from relevance_plan.errors import InputFileError, RelevancePlanError
 from relevance_plan.exitcodes import ExitCode, exit_code_for_error
 from relevance_plan.planning.loop import METHODS, PlanOptions
 from relevance_plan.relevance.prune import DEFAULT_TAU, Thresholds
@@ -39,6 +39,13 @@ def handle_errors(command):
                 return command(*args, **kwargs)
         except RelevancePlanError as error:
             fail(str(error), exit_code_for_error(error))
+        except BrokenPipeError:
+            raise  # click's own handling: the reader went away
+        except OSError as error:
+            # A file-system error the library did not anticipate (a name too
+            # long, a full disk) is still a file problem: one line, exit 31.
+            where = InputFileError(error.strerror or str(error), path=error.filename)
+            fail(str(where), ExitCode.INPUT_FILE)
         except KeyboardInterrupt as error:
             by = f" by {error}" if str(error) else ""
             click.echo(f"relevance-plan: interrupted{by}", err=True)
