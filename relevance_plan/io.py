@@ -234,6 +234,9 @@ def write_bytes_atomic(path: str | os.PathLike, data: bytes) -> Path:
             stream.write(data)
         # mkstemp creates 0600; give the file the mode it had, or the one an ordinary open() would.
         mode = stat.S_IMODE(info.st_mode) if info is not None else 0o666 & ~_UMASK
+        if info is not None and (info.st_uid, info.st_gid) != (os.getuid(), os.getgid()):
+            with contextlib.suppress(OSError):  # only root may give a file away; keep the owner if we can
+                os.chown(temporary, info.st_uid, info.st_gid)
         os.chmod(temporary, mode)
         os.replace(temporary, target)
     except BaseException as error:

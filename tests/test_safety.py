@@ -190,8 +190,12 @@ def test_5_an_existing_output_keeps_its_mode(files, tmp_path):
     out = tmp_path / "out.pddl"
     out.write_text("old")
     out.chmod(0o640)
+    if os.geteuid() == 0:
+        os.chown(out, 1234, 5678)
     assert run("prune", domain, problem, "-o", out)[0] == 0
     assert stat.S_IMODE(out.stat().st_mode) == 0o640 and "(:objects" in out.read_text()
+    if os.geteuid() == 0:
+        assert (out.stat().st_uid, out.stat().st_gid) == (1234, 5678)
 
 
 # --------------------------------------------------------------------------- 6. signals and processes
