@@ -31,6 +31,7 @@ from relevance_plan.pddl.writer import write_pruned_problem
 from relevance_plan.planning.loop import PlanOptions, PlanResult, PlanStatus, first_selection, run_attempts, summarise
 from relevance_plan.planning.runner import RunOutcome
 from relevance_plan.planning.validate import validate_plan
+from relevance_plan.relevance.analysis import single_valued_predicates
 from relevance_plan.relevance.knowledge import KnowledgeModel
 from relevance_plan.relevance.prune import PruneResult, prune_with_scores
 from relevance_plan.relevance.scorers import PlanningTask, ScoreResult
@@ -138,6 +139,8 @@ class Session:
         self.seq = 0
         self.decision: Determination | None = None  # the last determination with sufficient cues
         self.passing: set = set()
+        self._singletons = self.scene.index.singletons
+        self._single_valued = single_valued_predicates(domain, _IndexView(self.scene))
         self.plan_steps: tuple | None = None
         self.planned_kept: frozenset | None = None
         self.planned_goal = None
@@ -190,7 +193,7 @@ class Session:
             return self._rejected(kind, error)
         kept_before = self.kept
         sufficient_before = self.scores.sufficient
-        rules_before = self.scene.index.rules_key()
+        functional_before, single_valued_before = self.scene.index.functional, self._single_valued
         changed, rescored = self._apply(event)
         if self.scores.sufficient != sufficient_before:
             rescored = ALL
@@ -202,7 +205,7 @@ class Session:
             touched=self._touched(event),
             kept=kept_before,
             crossed=frozenset(crossed),
-            rules_changed=self.scene.index.rules_key() != rules_before,
+            rules_changed=self._closure_rules_changed(functional_before, single_valued_before, kept_before),
             show=self._show,
         )
         reasons = check_triggers(change, self.triggers)
@@ -314,6 +317,23 @@ class Session:
                 crossed.add(name)
                 (self.passing.add if now else self.passing.discard)(name)
         return crossed
+
+    def _closure_rules_changed(self, functional_before: frozenset, single_valued_before: frozenset,
+                               kept: frozenset) -> bool:
+        """Whether closure from ``kept`` could follow other facts now: a single-valued predicate
+        came or went, or a predicate became (or stopped being) functional at a position where
+        some fact has a kept object."""
+        index = self.scene.index
+        if index.singletons != self._singletons:
+            self._singletons = index.singletons
+            self._single_valued = single_valued_predicates(self.domain, _IndexView(self.scene))
+        if self._single_valued != single_valued_before:
+            return True
+        for predicate, key, _ in index.functional ^ functional_before:
+            for name in kept:
+                if any(fact[1 + key] == name for fact in index.facts_of(name, predicate)):
+                    return True
+        return False
 
     def _recount_passing(self) -> None:
         thresholds = self.options.thresholds

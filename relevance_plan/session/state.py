@@ -75,10 +75,6 @@ class LiveIndex:
     def singletons(self) -> frozenset:
         return frozenset(p for p, facts in self.by_predicate.items() if len(facts) == 1)
 
-    def rules_key(self) -> tuple:
-        """What the inferred constraint rules and single-valued predicates depend on."""
-        return self.functional, self.singletons
-
 
 class LiveScene:
     """Objects (in the order they appeared), true facts and the goal of the current scene."""
