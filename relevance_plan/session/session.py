@@ -219,8 +219,9 @@ class Session:
             plan = self.plan()
         elif event.kind == "plan":
             plan = PlanReport(PlanStatus.INPUT_ERROR, message="this session has no planner")
-        elif reasons and self.plan_in_loop and self.decision is not None and self.sufficient and (
-                self.decision.kept != self.planned_kept or self.scene.goal != self.planned_goal):
+        elif reasons and self.plan_in_loop and self.decision is not None and self.sufficient \
+                and not self.scene.idle_goal \
+                and (self.decision.kept != self.planned_kept or self.scene.goal != self.planned_goal):
             plan = self.plan()
         return replace(report, plan=plan) if plan is not None else report
 
@@ -365,7 +366,7 @@ class Session:
             determination=self.decision,
             added=tuple(sorted(now - before)) if reasons else (),
             dropped=tuple(sorted(before - now)) if reasons else (),
-            ask=self.ask(scores) if (reasons or not scores.sufficient) else None,
+            ask=self.ask(scores) if (reasons or not scores.sufficient) and not self.idle else None,
             seconds=seconds,
         )
 
