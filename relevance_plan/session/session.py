@@ -33,7 +33,7 @@ from relevance_plan.planning.runner import RunOutcome
 from relevance_plan.planning.validate import validate_plan
 from relevance_plan.relevance.analysis import single_valued_predicates
 from relevance_plan.relevance.knowledge import KnowledgeModel
-from relevance_plan.relevance.prune import PruneResult, prune_with_scores
+from relevance_plan.relevance.prune import PruneResult, constraint_rules, prune_with_scores
 from relevance_plan.relevance.scorers import PlanningTask, ScoreResult
 from relevance_plan.relevance.setup import Scoring, ScoringOptions, choose_scorer, resolve_model
 from relevance_plan.session.events import Event, EventError, check_event, parse_event_line
@@ -139,6 +139,7 @@ class Session:
         self.seq = 0
         self.decision: Determination | None = None  # the last determination with sufficient cues
         self.passing: set = set()
+        self._rules = None  # (functional positions, closure rules by predicate) for the trigger check
         self._singletons = self.scene.index.singletons
         self._single_valued = single_valued_predicates(domain, _IndexView(self.scene))
         self.plan_steps: tuple | None = None
@@ -204,6 +205,7 @@ class Session:
             changed=changed,
             touched=self._touched(event),
             kept=kept_before,
+            linked=self._linked(event, kept_before),
             crossed=frozenset(crossed),
             rules_changed=self._closure_rules_changed(functional_before, single_valued_before, kept_before),
             show=self._show,
@@ -221,7 +223,8 @@ class Session:
             plan = PlanReport(PlanStatus.INPUT_ERROR, message="this session has no planner")
         elif reasons and self.plan_in_loop and self.decision is not None and self.sufficient \
                 and not self.scene.idle_goal \
-                and (self.decision.kept != self.planned_kept or self.scene.goal != self.planned_goal):
+                and (self.decision.kept != self.planned_kept or self.scene.goal != self.planned_goal
+                     or change.touched & kept_before):
             plan = self.plan()
         return replace(report, plan=plan) if plan is not None else report
 
@@ -318,6 +321,20 @@ class Session:
                 crossed.add(name)
                 (self.passing.add if now else self.passing.discard)(name)
         return crossed
+
+    def _linked(self, event: Event, kept: frozenset) -> frozenset:
+        """Kept objects from which closure follows the event's fact (a plate put on the kept cup)."""
+        if event.kind not in ("set", "unset") or not kept:
+            return frozenset()
+        functional = self.scene.index.functional
+        if self._rules is None or self._rules[0] != functional:
+            rules: dict = {}
+            for rule in constraint_rules(_LiveTask.of(self.scene, with_problem=False), self.model):
+                rules.setdefault(rule.predicate, []).append(rule)
+            self._rules = (functional, rules)
+        fact = event.facts[0]
+        return frozenset(fact[1 + rule.when_kept] for rule in self._rules[1].get(fact[0], ())
+                         if fact[1 + rule.when_kept] in kept)
 
     def _closure_rules_changed(self, functional_before: frozenset, single_valued_before: frozenset,
                                kept: frozenset) -> bool:
@@ -450,7 +467,10 @@ class _LiveTask:
     goal_objects: frozenset = field(default=frozenset())
 
     @classmethod
-    def of(cls, scene: LiveScene) -> "_LiveTask":
+    def of(cls, scene: LiveScene, with_problem: bool = True) -> "_LiveTask":
+        """``with_problem=False``: only the domain and the index (enough for the closure rules)."""
+        if not with_problem:
+            return cls(scene.domain, None, _IndexView(scene))
         problem = scene.snapshot_problem()
         return cls(scene.domain, problem, _IndexView(scene), goal_objects(problem, scene.domain))
 

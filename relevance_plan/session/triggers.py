@@ -7,10 +7,10 @@ fires.  While the session is idle (nobody to serve: no goal and no human),
 element and fact events fire nothing.
 
 A fact change among objects that stay irrelevant fires nothing, and that is
-safe: such a change cannot alter the kept set (closure only follows facts of
-kept objects, the rules it follows did not change, and no score crossed a
-threshold), so the previous determination is still the one a determination
-from scratch would give.
+safe: such a change cannot alter the kept set (closure follows a fact only
+from a kept object in a rule's position, the rules did not change, and no
+score crossed a threshold), so the previous determination is still the one a
+determination from scratch would give.
 """
 
 from __future__ import annotations
@@ -28,6 +28,7 @@ class Change:
     changed: bool  # the event changed the scene, goal, human or cues
     touched: frozenset  # objects the event names (fact arguments, the object added or removed)
     kept: frozenset  # kept (selected + restored) by the determination in force before the event
+    linked: frozenset  # kept objects from which closure follows the changed fact
     crossed: frozenset  # elements whose score crossed the thresholds, either way
     rules_changed: bool  # the inferred closure rules (functional / single-valued predicates) changed
     show: Callable[[str], str] = str  # the user's spelling of a name
@@ -72,10 +73,16 @@ def cue_received(change: Change) -> str | None:
 
 
 def kept_touched(change: Change) -> str | None:
-    if change.event.kind in ("set", "unset") and change.changed and not change.idle:
-        hit = change.touched & change.kept
-        if hit:
-            return f"fact {change.event.kind} on kept {_names(change, hit)}"
+    """A fact about a kept object (its first argument: the cup was filled, the fridge opened),
+    or a closure link from one (a plate put on the kept cup).  A distractor put down on a
+    kept table is neither: closure does not follow a table to what stands on it."""
+    event = change.event
+    if event.kind in ("set", "unset") and change.changed and not change.idle:
+        fact = event.facts[0]
+        if len(fact) > 1 and fact[1] in change.kept:
+            return f"fact {event.kind} on kept {change.show(fact[1])}"
+        if change.linked:
+            return f"closure link {event.kind} from kept {_names(change, change.linked)}"
     return None
 
 
