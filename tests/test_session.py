@@ -475,3 +475,35 @@ def test_watch_reads_standard_input_until_it_ends(tmp_path):
     assert result.exit_code == 0, result.stderr
     lines = [json.loads(line) for line in result.stdout.splitlines()]
     assert len(lines) == 2 and lines[0]["triggered"] is False
+
+
+# --------------------------------------------------------------------------- the shipped example and the README
+
+REPO = COFFEE_DOMAIN.parents[4] if (COFFEE_DOMAIN.parents[4] / "examples").is_dir() else None
+
+
+@pytest.mark.skipif(REPO is None, reason="needs the source tree (examples/, README.md)")
+def test_the_shipped_example_replays_the_paper_demonstration():
+    domain, problem = load_task(COFFEE_DOMAIN, REPO / "examples" / "coffee-break" / "scene.pddl")
+    session = Session(domain, problem, ScoringOptions(objective="drink-at-break"))
+    lines = (REPO / "examples" / "coffee-break" / "events.jsonl").read_text().splitlines()
+    reports = [session.handle_line(line) for line in lines]
+    assert all(r.error is None for r in reports)
+    assert [r.triggered for r in reports] == [False] * 6 + [True] * 6 + [False]
+    alice, alice_goal, bob_arrives, bob, bob_goal, cue = reports[6:12]
+    assert alice.sufficient and "paper_cup_1" not in alice.determination.kept  # she dislikes paper cups
+    assert alice.ask is None and bob_arrives.sufficient
+    assert not bob.sufficient and bob.ask.cue == "task" and bob.stale
+    assert not bob_goal.sufficient and bob_goal.determination.kept == bob_arrives.determination.kept
+    assert cue.sufficient and not cue.stale and cue.ask.cue == "preference" and "bob" in cue.determination.kept
+
+
+@pytest.mark.skipif(REPO is None, reason="needs the source tree (examples/, README.md)")
+def test_the_readme_session_snippet_runs(monkeypatch):
+    readme = (REPO / "README.md").read_text()
+    snippet = next(block for block in readme.split("```python")[1:] if "relevance_plan.session" in block)
+    monkeypatch.chdir(REPO)
+    namespace: dict = {}
+    exec(snippet.split("```")[0], namespace)
+    report = namespace["report"]
+    assert report.triggered and report.reason == "human changed: Alice (recorded preferences 'alice')"
