@@ -191,7 +191,7 @@ def random_event(rng: random.Random, session: Session, counter: list) -> dict:
         return {"event": "add", "object": name, "type": type_name, "facts": facts}
     if roll < 0.3:
         goal_names = {a for f in [session.scene.goal] for a in str(f).replace("'", " ").split()}
-        candidates = [n for n in items + places if n not in goal_names]
+        candidates = [n for n in items + (places if len(places) > 2 else []) if n not in goal_names]
         if candidates:
             return {"event": "remove", "object": rng.choice(candidates)}
     if roll < 0.55 and located:
@@ -215,7 +215,16 @@ def random_event(rng: random.Random, session: Session, counter: list) -> dict:
         return {"event": "goal", "goal": goal}
     if roll < 0.9 and humans:
         return {"event": "human", "name": humans[0], "preferences": rng.choice(["alice", "bob", None])}
-    if roll < 0.95:
+    if roll < 0.92:
+        robot = next((f for f in scene.facts if f[0] == "robot-at"), None)
+        if robot is not None and rng.random() < 0.5:
+            return {"event": "unset", "fact": list(robot)}
+        if robot is None:
+            return {"event": "set", "fact": ["robot-at", rng.choice(places)]}
+        counter[0] += 1
+        name = f"guest_{counter[0]}"
+        return {"event": "add", "object": name, "type": "human", "facts": [["human-at", name, rng.choice(places)]]}
+    if roll < 0.96:
         if rng.random() < 0.5:
             return {"event": "cue", "task": rng.choice(["cold-brew-coffee", "tea", "water", "hot-coffee-with-creamer"])}
         return {"event": "cue", "objective": rng.choice(["drink-at-break", "serve-coffee-with-creamer"])}

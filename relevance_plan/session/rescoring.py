@@ -17,7 +17,6 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from relevance_plan.pddl.reader import Domain
 from relevance_plan.relevance.knowledge import KnowledgeModel
 from relevance_plan.relevance.scene import Element, build_scene
 from relevance_plan.relevance.scorers import PlanningTask, ScoreRequest, ScoreResult

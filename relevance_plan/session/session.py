@@ -431,6 +431,8 @@ class Session:
                                   f"previous plan still valid on the current state ({validation.validator})")
         selection = None
         scorer = None
+        if self.decision is None and self.scores.sufficient:
+            self._determine()  # an idle session holds no determination yet
         if options.method != "pure":
             if self.decision is None:
                 return PlanReport(PlanStatus.INSUFFICIENT_CUES, message=self.scores.result().insufficiency)
