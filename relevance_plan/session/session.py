@@ -187,6 +187,8 @@ class Session:
     def handle(self, data: dict) -> EventReport:
         started = time.perf_counter()
         self.seq += 1
+        if not isinstance(data, dict):
+            return self._rejected("?", EventError("an event must be a JSON object"))
         kind = str(data.get("event", "?"))
         try:
             event = check_event(data, self.scene, self.model)
