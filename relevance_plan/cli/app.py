@@ -332,3 +332,6 @@ def exit_codes():
 
 for _command in BATCH_COMMANDS:
     main.add_command(_command)
+
+from relevance_plan.cli.watch import watch  # noqa: E402  (the live session; see cli/watch.py)
+main.add_command(watch)
