@@ -13,6 +13,7 @@ import click
 
 from relevance_plan import __version__
 from relevance_plan.cli.batch import COMMANDS as BATCH_COMMANDS
+from relevance_plan.cli.watch import watch
 from relevance_plan.cli.common import (
     fail,
     handle_errors,
@@ -332,6 +333,4 @@ def exit_codes():
 
 for _command in BATCH_COMMANDS:
     main.add_command(_command)
-
-from relevance_plan.cli.watch import watch  # noqa: E402  (the live session; see cli/watch.py)
 main.add_command(watch)
