@@ -6,6 +6,7 @@ import os
 import stat
 import sys
 import textwrap
+import time
 from pathlib import Path
 
 import pytest
@@ -159,10 +160,14 @@ def test_a_hanging_command_is_killed_with_its_children(tmp_path, coffee_files):
     time.sleep(300)
     """
     planner = CommandPlanner(script(tmp_path, "hang", body) + " {domain} {problem}")
-    outcome = planner.run(str(domain), str(problem), time_limit=1.0, memory_limit_mb=None)
-    assert outcome.status is PlannerStatus.OUT_OF_TIME and outcome.killed_by_watchdog
+    outcome = planner.run(str(domain), str(problem), time_limit=2.0, memory_limit_mb=None)
+    assert outcome.status is PlannerStatus.OUT_OF_TIME and outcome.killed_by_watchdog, outcome
     assert outcome.wall_time < 30
+    assert marker.is_file(), outcome.log_tail
     child = int(marker.read_text())
+    deadline = time.monotonic() + 5
+    while running(child) and time.monotonic() < deadline:
+        time.sleep(0.05)
     assert not running(child)  # the planner's own child died with its group
 
 

@@ -14,6 +14,7 @@ import click
 
 from relevance_plan import __version__
 from relevance_plan.cli.batch import COMMANDS as BATCH_COMMANDS
+from relevance_plan.cli.watch import watch
 from relevance_plan.cli.common import (
     fail,
     handle_errors,
@@ -348,6 +349,7 @@ def exit_codes():
 
 for _command in BATCH_COMMANDS:
     main.add_command(_command)
+main.add_command(watch)
 
 from relevance_plan.cli.paths import own_path_checks  # noqa: E402
 

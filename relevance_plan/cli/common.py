@@ -99,7 +99,7 @@ PLANNING_KEYS = ("planner", "planner_config", "timeout", "memory_limit", "no_rel
 
 def planning_options(per_job: bool = False):
     """--planner --planner-config --timeout --memory-limit --no-relax --validator."""
-    per = "job (relevance + planning)" if per_job else "the whole run"
+    per = "each job (relevance + planning)" if per_job else "the whole run"
 
     def group(command):
         return _apply(command, [
