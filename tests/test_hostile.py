@@ -207,10 +207,12 @@ def _write(directory: Path, name: str, data: bytes) -> Path:
 def test_hostile_problems_through_score_prune_and_plan(workspace):
     check, user, out, domain, _, _ = workspace
     bad = {name: _write(user, f"{name}.pddl", data) for name, data in hostile_problems().items()}
+    _write(user, "no-events.jsonl", b"\x00\xff not json\n" + b"[" * 10000 + b"\n")
     for name, path in bad.items():
         check("score", domain, path, "--json")
         check("prune", domain, path, "-o", out / f"{name}.pddl")
         check("plan", domain, path, "-q", "--timeout", "30", "--plan-file", out / f"{name}.plan")
+        check("watch", domain, path, "--events", user / "no-events.jsonl")
     # The failures are the parser's, with documented codes, not crashes.
     assert ExitCode.PDDL_SYNTAX in check.codes and ExitCode.INPUT_FILE in check.codes
 
