@@ -145,16 +145,26 @@ def main():
 @click.option("--seed", type=int, default=0, show_default=True)
 @click.option("--out", "out_dir", type=click.Path(file_okay=False), required=True, help="Suite directory to write.")
 @click.option("--distractors", type=int, default=None, help="Override the paper's distractor count.")
+@click.option("--size", type=int, default=None,
+              help="Classic worlds: about how many objects per problem (default: a size where pure planning takes 5-120 s).")
 @handle_errors
-def generate(world, difficulty, count, seed, out_dir, distractors):
-    """Generate a seeded benchmark suite for WORLD (coffee or cereal)."""
+def generate(world, difficulty, count, seed, out_dir, distractors, size):
+    """Generate a seeded benchmark suite for WORLD: coffee or cereal, or a classic world
+    (blocksworld, logistics, gripper, ferry, grid, miconic, each also as NAME-typed)."""
+    from relevance_plan.generators.classic import CLASSIC_WORLDS, check_classic_arguments, generate_classic_suite
     from relevance_plan.generators.generate import generate_suite
 
     from relevance_plan.progress import progress
 
-    with progress(count, f"generate {world}-{difficulty}") as bar:
-        paths = generate_suite(world, difficulty, count, seed, Path(out_dir), distractors=distractors,
-                               progress=lambda done, total: bar.advance())
+    if world in CLASSIC_WORLDS:
+        check_classic_arguments(world, count, seed, size)
+        with progress(count, f"generate {world}") as bar:
+            paths = generate_classic_suite(world, count, seed, Path(out_dir), size=size,
+                                           progress=lambda done, total: bar.advance())
+    else:
+        with progress(count, f"generate {world}-{difficulty}") as bar:
+            paths = generate_suite(world, difficulty, count, seed, Path(out_dir), distractors=distractors,
+                                   progress=lambda done, total: bar.advance())
     click.echo(f"wrote {len(paths)} problems to {out_dir}")
 
 

@@ -64,6 +64,31 @@ def index_init(problem: Problem) -> InitIndex:
     )
 
 
+def object_distances(index: InitIndex, sources, hub_degree: int | None = None) -> dict[str, int]:
+    """Breadth-first hops from ``sources`` through initial facts (two objects in one fact are one hop apart).
+
+    Objects in more than ``hub_degree`` facts get a distance but are not passed through.
+    """
+    distance = {name: 0 for name in sources}
+    frontier = list(distance)
+    seen_facts: set = set()
+    while frontier:
+        following = []
+        for name in frontier:
+            if hub_degree is not None and distance[name] > 0 and len(index.by_object.get(name, ())) > hub_degree:
+                continue
+            for atom in index.by_object.get(name, ()):
+                if len(atom) < 3 or atom in seen_facts:
+                    continue
+                seen_facts.add(atom)
+                for other in atom[1:]:
+                    if other not in distance:
+                        distance[other] = distance[name] + 1
+                        following.append(other)
+        frontier = following
+    return distance
+
+
 # --------------------------------------------------------------------------- constraint rules
 
 
