@@ -131,7 +131,7 @@ def prune_with_scores(
 
     With ``prefer_free``, blocked alternatives are set aside (``free_alternatives``)
     and closure runs again on what is left.  With ``repair`` (default: for the
-    goal scorer), a kept set on which the goal is unreachable even ignoring
+    goal scorer at the default thresholds or lower), a kept set on which the goal is unreachable even ignoring
     deletes gets what a relaxed plan needs (``reachability.repair_selection``).
     A selection that keeps more than ``full_above`` of the objects (default:
     ``FULL_ABOVE`` for the scorers repaired by default, never for the others,
@@ -156,7 +156,8 @@ def prune_with_scores(
             selected = narrowed
             kept, restored = close(selected)
     if repair is None:
-        repair = scores.scorer in REPAIR_SCORERS
+        # A stricter selection than the defaults, asked for explicitly, is tried as given.
+        repair = scores.scorer in REPAIR_SCORERS and max(thresholds.tau_class, thresholds.tau_element) <= DEFAULT_TAU
     if full_above is None:
         full_above = FULL_ABOVE if scores.scorer in REPAIR_SCORERS else 1.0
     total = len(task.problem.objects)

@@ -29,6 +29,7 @@ from relevance_plan.relevance.analysis import object_distances
 from relevance_plan.relevance.closure import Restored
 
 DEFAULT_BUDGET = 400_000  # bindings tried before the check gives up
+REPAIR_MAX_FAN = 4.0  # repair candidates are ranked by hops that do not pass from a class-like value to its members
 
 
 @dataclass(frozen=True)
@@ -95,10 +96,12 @@ def relaxed_reachability(task, kept: AbstractSet[str], budget: int = DEFAULT_BUD
             facts[atom] = None
             queue.append(atom)
     of_type: dict[str, list] = {}
+    fits: dict[str, frozenset] = {}
 
     def objects_of(type_name: str) -> list:
         if type_name not in of_type:
             of_type[type_name] = sorted(o for o in allowed if domain.is_subtype(types_of.get(o, "object"), type_name))
+            fits[type_name] = frozenset(of_type[type_name])
         return of_type[type_name]
 
     schemas = _schemas(domain)
@@ -112,7 +115,11 @@ def relaxed_reachability(task, kept: AbstractSet[str], budget: int = DEFAULT_BUD
 
     def apply(schema: _Schema, binding: dict) -> None:
         for variable, type_name in zip(schema.parameters, schema.types):
-            if variable in binding and not domain.is_subtype(types_of.get(binding[variable], "object"), type_name):
+            if type_name == "object":
+                continue
+            if type_name not in fits:
+                objects_of(type_name)
+            if variable in binding and binding[variable] not in fits[type_name]:
                 return
         free = [(v, t) for v, t in zip(schema.parameters, schema.types) if v not in binding]
         for full in _fill(binding, free, objects_of, work, budget):
@@ -133,15 +140,19 @@ def relaxed_reachability(task, kept: AbstractSet[str], budget: int = DEFAULT_BUD
         # the condition whose bound arguments leave the fewest processed facts goes first
         best, best_key, best_size = 0, None, None
         for j, (predicate, args) in enumerate(pre):
-            keys = [(predicate,)]
-            for position, arg in enumerate(args):
-                value = binding.get(arg) if arg.startswith("?") else arg
-                if value is not None:
-                    keys.append((predicate, position, value))
-            key = min(keys, key=lambda k: len(processed.get(k, ())))
+            key = (predicate,)
             size = len(processed.get(key, ()))
+            for position, arg in enumerate(args):
+                value = binding.get(arg, arg) if arg[0] == "?" else arg
+                if value[0] != "?":
+                    candidate = (predicate, position, value)
+                    candidate_size = len(processed.get(candidate, ()))
+                    if candidate_size < size:
+                        key, size = candidate, candidate_size
             if best_size is None or size < best_size:
                 best, best_key, best_size = j, key, size
+                if size == 0:
+                    break
         predicate, args = pre[best]
         rest = pre[:best] + pre[best + 1:]
         for fact in processed.get(best_key, ()):
@@ -254,7 +265,7 @@ def repair_selection(
     check = relaxed_reachability(task, kept, budget)
     if check.reachable or not check.complete:
         return kept, (), check
-    distance = object_distances(task.init_index, kept, hub_degree(task))
+    distance = object_distances(task.init_index, kept, hub_degree(task), max_fan=REPAIR_MAX_FAN)
     far = len(task.problem.objects) + 1
     pool = sorted(
         (name for name in task.problem.objects if name not in kept),
