@@ -258,8 +258,9 @@ def repair_selection(
 ) -> tuple[frozenset, tuple, Reachability]:
     """Add what the relaxed goal needs to ``kept``; returns (kept, what was put back and why, the last check).
 
-    Candidates are tried best first: by score, then by hops from the kept
-    objects in the initial state; ``close`` is closure over constraints (it
+    Candidates are tried best first: one member of every class the kept set
+    lacks, then by score, then by hops from the kept objects in the initial
+    state; ``close`` is closure over constraints (it
     returns the closed set and its own reasons).
     """
     check = relaxed_reachability(task, kept, budget)
@@ -271,6 +272,13 @@ def repair_selection(
         (name for name in task.problem.objects if name not in kept),
         key=lambda name: (-scores.get(name, 0.0), distance.get(name, far), name),
     )
+    # A class with no member kept cannot fill any role (no airplane at all): its best-ranked member goes first.
+    present = {task.object_type(name) for name in kept if name in task.problem.objects}
+    representatives = {}
+    for name in pool:
+        representatives.setdefault(task.object_type(name), name)
+    first = [name for cls, name in representatives.items() if cls not in present]
+    pool = first + [name for name in pool if name not in set(first)]
     rank = {name: i for i, name in enumerate(pool)}
     current = kept
     batch = max(4, len(kept))
