@@ -24,7 +24,7 @@ from relevance_plan.generators.generate import generate_problem  # noqa: E402
 from relevance_plan.io import load_domain, load_problem, write_text_atomic  # noqa: E402
 from relevance_plan.relevance.knowledge import load_model  # noqa: E402
 from relevance_plan.relevance.prune import prune_with_scores, score_task  # noqa: E402
-from relevance_plan.relevance.scorers import ScoreRequest, Task  # noqa: E402
+from relevance_plan.relevance.scorers import ScoreRequest, PlanningTask  # noqa: E402
 
 TARGETS = {500: 0.3, 2000: 1.5}
 
@@ -37,7 +37,7 @@ def stages(domain_path: Path, problem_path: Path, out: Path, scorer: str) -> dic
     times["parse"] = time.perf_counter() - start
     mark = time.perf_counter()
     model = load_model(REPO / "domains" / "coffee" / "relevance.yaml") if scorer == "model" else None
-    task = Task(domain, problem)
+    task = PlanningTask(domain, problem)
     scores = score_task(task, scorer, ScoreRequest(model=model))
     times["score"] = time.perf_counter() - mark
     mark = time.perf_counter()

@@ -1,3 +1,3 @@
 """relevance-plan: prune what does not matter, then plan."""
 
-__version__ = "0.2.0"
+__version__ = "0.3.0"

@@ -234,7 +234,7 @@ def test_build_jobs_rejects_bad_input(tmp_path, suite):
 
 def test_compare_stores_every_job_once_and_resumes(suite, tmp_path):
     store = tmp_path / "r.sqlite"
-    summary = compare([suite], ALL_METHODS, timeout=60, jobs=2, store_path=store, progress=False)
+    summary = compare([suite], ALL_METHODS, PlanOptions(timeout=60), jobs=2, store_path=store, progress=False)
     assert (summary.total, summary.already_stored, summary.ran) == (8, 0, 8)
     rows = read_store(store)
     assert len(rows) == 8
@@ -245,7 +245,7 @@ def test_compare_stores_every_job_once_and_resumes(suite, tmp_path):
     assert by_method["pure"]["world"] == "coffee" and by_method["pure"]["difficulty"] == "simple"
     result = json.loads(by_method["relevance"]["result_json"])
     assert result["status"] == "solved" and result["plan"]
-    again = compare([suite], ALL_METHODS, timeout=60, jobs=2, store_path=store, progress=False)
+    again = compare([suite], ALL_METHODS, PlanOptions(timeout=60), jobs=2, store_path=store, progress=False)
     assert (again.already_stored, again.ran) == (8, 0)
     assert read_store(store) == rows
 
@@ -253,7 +253,7 @@ def test_compare_stores_every_job_once_and_resumes(suite, tmp_path):
 def test_input_error_becomes_a_row_not_a_crash(suite, tmp_path):
     (suite / "coffee-simple-009.pddl").write_text("(define (problem broken) (:domain coffee) (:objects a - ")
     store = tmp_path / "r.sqlite"
-    summary = compare([suite], "pure,relevance", timeout=60, jobs=2, store_path=store, progress=False)
+    summary = compare([suite], "pure,relevance", PlanOptions(timeout=60), jobs=2, store_path=store, progress=False)
     assert summary.ran == 6
     rows = read_store(store)
     broken = [r for r in rows if r["problem"] == "coffee-simple-009.pddl"]
@@ -271,7 +271,7 @@ def test_input_error_becomes_a_row_not_a_crash(suite, tmp_path):
 def test_planner_crash_is_recorded_with_its_exit_code(suite, tmp_path, monkeypatch, body, code):
     monkeypatch.setenv(runner.FAST_DOWNWARD_ENV, str(fake_planner(tmp_path, body)))
     store = tmp_path / "r.sqlite"
-    summary = compare([suite], "pure,relevance", timeout=30, jobs=2, store_path=store, progress=False)
+    summary = compare([suite], "pure,relevance", PlanOptions(timeout=30), jobs=2, store_path=store, progress=False)
     assert summary.ran == 4 and summary.failed == 4
     rows = read_store(store)
     assert len(rows) == 4
@@ -286,7 +286,7 @@ def test_missing_planner_stops_the_batch_and_stores_nothing(suite, tmp_path, mon
     monkeypatch.setenv(runner.FAST_DOWNWARD_ENV, str(tmp_path / "no-such-driver.py"))
     store = tmp_path / "r.sqlite"
     with pytest.raises(PlannerError):
-        compare([suite], "pure", timeout=30, jobs=1, store_path=store, progress=False)
+        compare([suite], "pure", PlanOptions(timeout=30), jobs=1, store_path=store, progress=False)
     assert read_store(store) == []
 
 
@@ -421,13 +421,13 @@ def test_dask_cluster_runs_the_jobs_into_the_local_store(tmp_path):
         finally:
             client.close()
         store = tmp_path / "results.sqlite"
-        summary = compare([suite], ALL_METHODS, timeout=60, jobs=1, store_path=store, scheduler=address,
+        summary = compare([suite], ALL_METHODS, PlanOptions(timeout=60), jobs=1, store_path=store, scheduler=address,
                           progress=False)
         assert (summary.total, summary.ran, summary.failed) == (4, 4, 0)
         rows = read_store(store)
         assert sorted(r["method"] for r in rows) == sorted(ALL_METHODS.split(","))
         assert {r["status"] for r in rows} == {"solved"}
-        again = compare([suite], ALL_METHODS, timeout=60, jobs=1, store_path=store, scheduler=address, progress=False)
+        again = compare([suite], ALL_METHODS, PlanOptions(timeout=60), jobs=1, store_path=store, scheduler=address, progress=False)
         assert (again.already_stored, again.ran) == (4, 0)
     finally:
         for process in reversed(processes):  # the worker first, then the scheduler

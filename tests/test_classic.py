@@ -14,7 +14,7 @@ from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task
 from relevance_plan.planning.validate import ValidationStatus, validate_plan
 from relevance_plan.relevance.prune import prune_with_scores, widen
 from relevance_plan.relevance.reachability import relaxed_reachability
-from relevance_plan.relevance.scorers import SCORERS, ScoreRequest, Task
+from relevance_plan.relevance.scorers import SCORERS, PlanningTask, ScoreRequest
 
 # Two cities, a truck in each, one airplane; the goal moves a package from city a to city b.
 LOGISTICS_PROBLEM = """(define (problem tiny) (:domain logistics)
@@ -29,9 +29,9 @@ LOGISTICS_PROBLEM = """(define (problem tiny) (:domain logistics)
 """
 
 
-def classic_task(world: str, text: str) -> Task:
+def classic_task(world: str, text: str) -> PlanningTask:
     domain = read_domain((DOMAINS_DIR / world / "domain.pddl").read_text())
-    return Task(domain, read_problem(text, domain))
+    return PlanningTask(domain, read_problem(text, domain))
 
 
 def goal_scores(task):

@@ -125,3 +125,12 @@ def test_errors_keep_path_and_line_across_processes():
     error = pickle.loads(pickle.dumps(PDDLParseError("unbalanced parenthesis", path="p.pddl", line=7)))
     assert isinstance(error, PDDLParseError)
     assert (error.path, error.line, str(error)) == ("p.pddl", 7, "p.pddl:7: unbalanced parenthesis")
+
+
+@pytest.mark.parametrize("effect", ["(forall (?y))", "(forall)", "(forall (?y) (p ?y) (p ?y))"])
+def test_a_forall_effect_with_a_missing_part_is_a_syntax_error(effect):
+    text = ("(define (domain d) (:requirements :adl) (:predicates (p ?x))\n"
+            f" (:action a :parameters (?x) :precondition (p ?x) :effect {effect}))")
+    with pytest.raises(PDDLParseError, match="'forall' in an effect takes") as caught:
+        read_domain(text, "d.pddl")
+    assert caught.value.line == 2

@@ -12,7 +12,7 @@ from relevance_plan.io import load_domain
 from relevance_plan.relevance.knowledge import parse_model
 from relevance_plan.pddl.reader import read_domain, read_problem
 from relevance_plan.relevance.prune import Thresholds, prune_with_scores, select_relevant
-from relevance_plan.relevance.scorers import SCORERS, ScoreRequest, Task
+from relevance_plan.relevance.scorers import SCORERS, ScoreRequest, PlanningTask
 from relevance_plan.relevance.scorers.model import task_entropy
 
 from kitchen import coffee_problem
@@ -61,7 +61,7 @@ humans:
 @pytest.fixture
 def task(coffee_domain_path):
     domain = load_domain(coffee_domain_path)
-    return Task(domain, read_problem(coffee_problem(), domain, "p.pddl"))
+    return PlanningTask(domain, read_problem(coffee_problem(), domain, "p.pddl"))
 
 
 @pytest.fixture
@@ -104,7 +104,7 @@ def test_entropy_test_reports_ambiguity_with_leading_tasks(task, model):
 
 
 def test_task_or_human_resolves_ambiguity(task, model):
-    assert score(task, model, objective="drink", task="hot").sufficient
+    assert score(task, model, objective="drink", model_task="hot").sufficient
     preferred = score(task, model, objective="drink", human="dana")
     assert preferred.sufficient and preferred.task_distribution == {"tea": 1.0}
     assert preferred.class_scores["whitener"] == pytest.approx(0.7)  # the human's preference, not the prior (absent)
@@ -114,14 +114,14 @@ def test_task_or_human_resolves_ambiguity(task, model):
 def test_no_matching_objective_is_insufficient(coffee_domain_path, model):
     domain = load_domain(coffee_domain_path)
     text = coffee_problem().replace("(coffee-served alice)", "(stirred plastic_cup_1)")
-    result = score(Task(domain, read_problem(text, domain)), model)
+    result = score(PlanningTask(domain, read_problem(text, domain)), model)
     assert not result.sufficient and "--objective" in result.insufficiency
 
 
 @pytest.mark.parametrize(
     "kwargs, match",
     [({"human": "zed"}, "unknown human 'zed'"), ({"objective": "lunch"}, "unknown objective 'lunch'"),
-     ({"task": "soup"}, "unknown task 'soup'")],
+     ({"model_task": "soup"}, "unknown task 'soup'")],
 )
 def test_unknown_names_are_errors(task, model, kwargs, match):
     with pytest.raises(ModelError, match=match):
@@ -131,7 +131,7 @@ def test_unknown_names_are_errors(task, model, kwargs, match):
 def test_unknown_classes_get_the_default_and_are_listed(coffee_domain_path, model):
     domain = load_domain(coffee_domain_path)
     text = coffee_problem().replace("dinner_plate_1 dinner_plate_2 - plate", "dinner_plate_1 dinner_plate_2 - board")
-    result = score(Task(domain, read_problem(text, domain)), model)
+    result = score(PlanningTask(domain, read_problem(text, domain)), model)
     assert set(result.unknown) == {"dinner_plate_1", "dinner_plate_2"}
     assert result.element_scores["dinner_plate_2"] == 0.05
 
@@ -225,12 +225,12 @@ def test_goal_scorer_finds_roles_without_a_model(task):
 
 def test_goal_scorer_on_classic_domains():
     domain = read_domain(GRIPPER_DOMAIN)
-    task = Task(domain, read_problem(gripper_problem(30), domain))
+    task = PlanningTask(domain, read_problem(gripper_problem(30), domain))
     result = prune_with_scores(task, SCORERS["goal"](task, ScoreRequest()))
     assert {"ball1", "ball2", "left", "right", "r1", "r2"} <= result.kept
     assert len(result.kept) < 15
     domain = read_domain(BLOCKSWORLD_DOMAIN)
-    task = Task(domain, read_problem(blocksworld_problem(60, in_the_way=2), domain))
+    task = PlanningTask(domain, read_problem(blocksworld_problem(60, in_the_way=2), domain))
     result = prune_with_scores(task, SCORERS["goal"](task, ScoreRequest()))
     assert result.kept == {"a", "b", "c", "x1", "x2"}
 

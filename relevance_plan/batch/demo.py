@@ -15,7 +15,7 @@ from pathlib import Path
 
 from relevance_plan.batch.jobs import CompareSummary, compare
 from relevance_plan.errors import InputFileError, UsageError
-from relevance_plan.planning.loop import METHODS
+from relevance_plan.planning.loop import METHODS, PlanOptions
 from relevance_plan.batch.report import build_report, format_report
 from relevance_plan.batch.store import KEY_COLUMNS, read_rows
 
@@ -54,6 +54,9 @@ def run_demo(
     """
     from relevance_plan.generators.generate import generate_suite
 
+    options = PlanOptions(timeout=timeout)  # checked before anything is written
+    if isinstance(jobs, bool) or not isinstance(jobs, int) or jobs < 1:
+        raise UsageError(f"--jobs must be a positive integer, got {jobs!r}")
     if tiny:
         count, distractors = TINY_COUNT, TINY_DISTRACTORS
     if isinstance(count, bool) or not isinstance(count, int) or count < 1:
@@ -69,7 +72,7 @@ def run_demo(
         generate_suite(world, difficulty, count, DEMO_SEED, suite, distractors=distractors)
         suites.append(suite)
     store_path = workdir / STORE_NAME
-    summary = compare(suites, METHODS, timeout=timeout, jobs=jobs, store_path=store_path, progress=progress)
+    summary = compare(suites, METHODS, options, jobs=jobs, store_path=store_path, progress=progress)
     wanted = set(summary.keys)
     rows = [row for row in read_rows(store_path) if tuple(row[name] for name in KEY_COLUMNS) in wanted]
     table = format_report(build_report(rows), "markdown")

@@ -38,17 +38,18 @@ from pathlib import Path
 from typing import Any, Iterable, Sequence
 
 from relevance_plan import __version__
-from relevance_plan.planning import runner
-from relevance_plan.errors import InputFileError, PlannerError, RelevancePlanError, SchedulerError, UsageError
-from relevance_plan.io import find_suite_problems, read_bytes, read_sidecar
-from relevance_plan.planning.loop import METHODS, PlanOptions, PlanResult, PlanStatus, plan_task
-from relevance_plan.relevance.prune import DEFAULT_TAU, Thresholds
 from relevance_plan.batch.store import ResultKey, ResultStore
+from relevance_plan.errors import InputFileError, PlannerError, RelevancePlanError, SchedulerError, UsageError
+from relevance_plan.io import find_suite_problems, load_domain, read_bytes
+from relevance_plan.planning import runner
+from relevance_plan.planning.loop import METHODS, PLAN_OPTION_FIELDS, PlanOptions, PlanResult, PlanStatus, plan_task
+from relevance_plan.planning.planners import make_planner
+from relevance_plan.relevance.knowledge import find_model
+from relevance_plan.relevance.sidecar import read_sidecar_for, sidecar_path
 
 DASK_INSTALL_HINT = "pip install 'relevance-plan[dask]'"
 DEFAULT_SCHEDULER_TIMEOUT = 10.0
 _STOP_GRACE = 30.0  # seconds to wait for running jobs after their planners were killed
-_DOMAIN_NAME_RE = re.compile(r"\(\s*domain\s+([^\s()]+)", re.IGNORECASE)
 _ADDRESS_RE = re.compile(r"^(?:(?:tcp|tls|ws|wss|ucx)://)?[^\s/:]+:\d+$|^(?:tcp|tls|ws|wss|ucx)://\[[0-9a-fA-F:.]+\]:\d+$")
 
 
@@ -76,74 +77,81 @@ def problem_hash(domain_path: str | os.PathLike, problem_path: str | os.PathLike
     return _sha256(domain + b"\0" + problem)
 
 
-def planner_version() -> str:
-    """The up-fast-downward version; a driver override adds a digest of its file."""
-    version = runner.fast_downward_version()
-    override = os.environ.get(runner.FAST_DOWNWARD_ENV)
-    if override:
-        digest = _file_hash(Path(override).expanduser()) or "missing"
-        version += f"+custom-{digest[:12]}"
-    return version
-
-
-def _domain_name(domain_text: str) -> str | None:
-    match = _DOMAIN_NAME_RE.search(domain_text)
-    return match.group(1).lower() if match else None
+def planner_version(planner: str = "fast-downward", config: str = runner.DEFAULT_CONFIG) -> str:
+    """The version of the planner a job runs (a changed planner must not reuse stored rows)."""
+    return make_planner(planner, config).version()
 
 
 def _model_file(options: PlanOptions, domain_path: str) -> str | None:
-    """The knowledge-model file the run would use (as ``planning.resolve_model`` finds it)."""
+    """The knowledge-model file the run would use (as ``relevance.setup.resolve_model`` finds it)."""
     if options.model_path is not None:
         return options.model_path
-    from relevance_plan.relevance.knowledge import find_model
-
     try:
-        name = _domain_name(read_bytes(domain_path, "domain file").decode("utf-8", errors="replace"))
-    except InputFileError:
-        return None
-    found = find_model(name, domain_path) if name else None
+        name = load_domain(domain_path).name
+    except RelevancePlanError:
+        return None  # the job itself will report the bad domain
+    found = find_model(name, domain_path)
     return str(found) if found is not None else None
 
 
-def config_fingerprint(options: PlanOptions, domain_path: str, problem_path: str) -> dict[str, Any]:
-    """The options that influence a job's result, as a JSON-ready dict.
+# How each PlanOptions field enters a job's configuration key.  Every field
+# must be listed (a test checks it): a new option cannot silently reuse rows
+# stored without it.
+#   "always"  - part of every job's key;
+#   "pruning" - part of the key of the methods that prune (not 'pure');
+#   "derived" - enters through a derived value (below);
+#   "method"  - the key has the method in its own column.
+FINGERPRINT_RULES: dict[str, str] = {
+    "method": "method",
+    "planner": "always",
+    "planner_config": "always",
+    "timeout": "always",
+    "memory_limit_mb": "always",
+    "validators": "derived",  # the validators that will actually run
+    "seed": "always",
+    "thresholds": "derived",  # as tau_class and tau_element
+    "relax": "pruning",
+    "relax_factor": "pruning",
+    "first_share": "pruning",
+    "scorer": "pruning",
+    "goal_filter": "pruning",
+    "prefer_free": "pruning",
+    "model_path": "derived",  # as the sha256 of the model file the run would use
+    "objective": "pruning",
+    "model_task": "pruning",
+    "human": "pruning",
+}
 
-    Every method: tool version, timeout, planner config, memory limit, validators, seed.
-    Pruning methods add thresholds, relaxation (on/off, factor, first share),
-    the goal filter and the set-aside of blocked alternatives,
-    scorer override, the sha256 of the knowledge-model file the run would use
-    (explicit or found next to the domain), objective, task and human; the
-    oracle adds the sha256 of the problem's sidecar (its ground truth).
+
+def _plain(value: Any) -> Any:
+    return float(value) if isinstance(value, float) else value
+
+
+def config_fingerprint(options: PlanOptions, domain_path: str, problem_path: str) -> dict[str, Any]:
+    """The options that influence a job's result, as a JSON-ready dict (see ``FINGERPRINT_RULES``).
+
+    Besides the options: the tool version (a new release may prune or
+    validate differently), for pruning methods the sha256 of the knowledge
+    model the run would use, and for the oracle the sha256 of the sidecar
+    (its ground truth).
     """
     from relevance_plan.planning.validate import default_validators
 
-    config: dict[str, Any] = {
-        # a new release may prune or validate differently: its rows are not reused
-        "tool_version": __version__,
-        "method": options.method,
-        "timeout": float(options.timeout),
-        "planner_config": options.planner_config,
-        "memory_limit_mb": options.memory_limit_mb,
-        "validators": list(options.validators) if options.validators else list(default_validators()),
-        "seed": int(options.seed),
-    }
-    if options.method != "pure":
-        config.update(
-            tau_class=float(options.thresholds.tau_class),
-            tau_element=float(options.thresholds.tau_element),
-            relax=bool(options.relax),
-            relax_factor=float(options.relax_factor),
-            first_share=float(options.first_share),
-            goal_filter=bool(options.goal_filter),
-            prefer_free=bool(options.prefer_free),
-            scorer=options.scorer,
-            model_hash=_file_hash(_model_file(options, domain_path)),
-            objective=options.objective,
-            task=options.task,
-            human=options.human,
-        )
+    unlisted = set(PLAN_OPTION_FIELDS) - set(FINGERPRINT_RULES)
+    if unlisted:
+        raise AssertionError(f"PlanOptions fields without a fingerprint rule: {sorted(unlisted)}")
+    pruning = options.method != "pure"
+    config: dict[str, Any] = {"tool_version": __version__, "method": options.method}
+    for name, rule in FINGERPRINT_RULES.items():
+        if rule == "always" or (rule == "pruning" and pruning):
+            config[name] = _plain(getattr(options, name))
+    config["validators"] = list(options.validators) if options.validators else list(default_validators())
+    if pruning:
+        config["tau_class"] = float(options.thresholds.tau_class)
+        config["tau_element"] = float(options.thresholds.tau_element)
+        config["model_hash"] = _file_hash(_model_file(options, domain_path))
         if options.method == "oracle" or options.scorer == "oracle":
-            config["sidecar_hash"] = _file_hash(Path(problem_path).with_suffix(".json"))
+            config["sidecar_hash"] = _file_hash(sidecar_path(problem_path))
     return config
 
 
@@ -182,7 +190,7 @@ class Job:
             problem_hash=problem_hash(self.domain_path, self.problem_path),
             method=self.method,
             config_hash=config_hash(self.config),
-            planner_version=planner_version(),
+            planner_version=planner_version(self.options.planner, self.options.planner_config),
         )
 
     @property
@@ -190,7 +198,7 @@ class Job:
         return Path(self.problem_path).name
 
     def describe(self) -> str:
-        return f"{self.suite}/{self.problem} {self.method} seed {self.seed}"
+        return f"{self.suite}/{self.problem} {self.method} {self.options.planner} seed {self.seed}"
 
 
 def parse_methods(methods: str | Iterable[str]) -> tuple[str, ...]:
@@ -233,6 +241,7 @@ def build_jobs(
     methods: str | Iterable[str],
     seeds: str | Iterable[int] = (0,),
     base_options: PlanOptions | None = None,
+    planners: Sequence[str] = (),
 ) -> list[Job]:
     """Every (problem, seed, method) of every suite, problems in file-name order.
 
@@ -259,9 +268,10 @@ def build_jobs(
         named[name] = directory
         for problem in problems:
             for seed in seeds:
-                for method in methods:
-                    options = dataclasses.replace(base, method=method, seed=seed)
-                    jobs.append(Job(str(domain), str(problem), name, method, seed, options))
+                for planner in planners or (base.planner,):
+                    for method in methods:
+                        options = dataclasses.replace(base, method=method, seed=seed, planner=planner)
+                        jobs.append(Job(str(domain), str(problem), name, method, seed, options))
     return jobs
 
 
@@ -273,13 +283,12 @@ def _now() -> str:
 
 
 def _sidecar_fields(problem_path: str) -> tuple[str | None, str | None]:
-    """(world, difficulty) from the generator's sidecar, (None, None) without one."""
+    """(world, difficulty) from the generator's sidecar, (None, None) without a usable one."""
     try:
-        data = read_sidecar(Path(problem_path).with_suffix(".json"))
+        sidecar = read_sidecar_for(problem_path)
     except InputFileError:
-        return None, None
-    world, difficulty = data.get("world"), data.get("difficulty")
-    return (world if isinstance(world, str) else None, difficulty if isinstance(difficulty, str) else None)
+        return None, None  # the job reports a bad sidecar when it needs one (the oracle)
+    return (sidecar.world, sidecar.difficulty) if sidecar is not None else (None, None)
 
 
 def _base_row(job: Job) -> dict[str, Any]:
@@ -456,28 +465,20 @@ class _Recorder:
 def compare(
     suites: Sequence[str | os.PathLike],
     methods: str | Iterable[str],
+    options: PlanOptions = PlanOptions(),
     *,
-    timeout: float = 120.0,
+    planners: Sequence[str] = (),
+    seeds: str | Iterable[int] = (0,),
     jobs: int = 1,
     store_path: str | os.PathLike = "results.sqlite",
-    seeds: str | Iterable[int] = (0,),
     scheduler: str | None = None,
     scheduler_timeout: float = DEFAULT_SCHEDULER_TIMEOUT,
-    planner_config: str = "lama-first",
-    memory_limit_mb: int | None = None,
-    relax: bool = True,
-    tau_class: float = DEFAULT_TAU,
-    tau_element: float = DEFAULT_TAU,
-    scorer: str | None = None,
-    model_path: str | None = None,
-    objective: str | None = None,
-    task: str | None = None,
-    human: str | None = None,
-    validators: Sequence[str] | None = None,
     progress: bool = True,
 ) -> CompareSummary:
-    """Run every method on every problem of ``suites``; store one row per job.
+    """Run every method (with every planner) on every problem of ``suites``; store one row per job.
 
+    ``options`` are the ``plan`` options every job shares (its method, seed
+    and planner are set per job; ``planners`` empty means ``options.planner``).
     Jobs already in the store are skipped, so rerunning an interrupted
     command resumes it.  ``jobs`` threads run locally; with ``scheduler``
     the Dask workers' threads run the jobs instead (``jobs`` is unused).
@@ -497,20 +498,10 @@ def compare(
         raise UsageError(f"--scheduler must look like tcp://HOST:PORT, got '{scheduler}'")
     if not scheduler_timeout > 0:
         raise UsageError(f"scheduler timeout must be positive, got {scheduler_timeout}")
-    base = PlanOptions(
-        planner_config=planner_config,
-        timeout=timeout,
-        memory_limit_mb=memory_limit_mb,
-        thresholds=Thresholds(tau_class, tau_element),
-        relax=relax,
-        scorer=scorer,
-        model_path=model_path,
-        objective=objective,
-        task=task,
-        human=human,
-        validators=tuple(validators) if validators else None,
-    )
-    all_jobs = build_jobs(suites, methods, seeds, base)
+    for planner in planners or (options.planner,):
+        make_planner(planner, options.planner_config, check=True)
+    base = options
+    all_jobs = build_jobs(suites, methods, seeds, base, planners)
     unique: dict[ResultKey, Job] = {}
     for job in all_jobs:
         unique.setdefault(job.key, job)

@@ -109,11 +109,29 @@ def _option_set(row: dict[str, Any]) -> tuple:
     return (json.dumps(config, sort_keys=True), row.get("planner_version"))
 
 
+def row_planner(row: dict[str, Any]) -> str:
+    """The planner a row ran (rows stored before planners were chosen ran Fast Downward)."""
+    try:
+        config = json.loads(row.get("config_json") or "{}")
+    except ValueError:
+        config = {}
+    planner = config.get("planner")
+    return planner if isinstance(planner, str) else "fast-downward"
+
+
 def build_report(rows: Iterable[dict[str, Any]]) -> list[ReportRecord]:
-    """One record per (suite, method), suites by name, methods in METHODS order."""
+    """One record per (suite, method), suites by name, methods in METHODS order.
+
+    When the rows come from more than one planner, each planner gets its own
+    block, labelled ``SUITE [PLANNER]``, so that relevance, pure and random
+    are compared per planner and the ratios never mix planners.
+    """
+    rows = list(rows)
+    several = len({row_planner(row) for row in rows}) > 1
     groups: dict[tuple[str, str], list[dict[str, Any]]] = {}
     for row in rows:
-        groups.setdefault((row["suite"], row["method"]), []).append(row)
+        suite = f"{row['suite']} [{row_planner(row)}]" if several else row["suite"]
+        groups.setdefault((suite, row["method"]), []).append(row)
     medians = {key: statistics.median(job_time(r) for r in group) for key, group in groups.items()}
     records = []
     for (suite, method) in sorted(groups, key=lambda key: (key[0], _method_order(key[1]))):

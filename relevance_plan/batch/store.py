@@ -1,7 +1,7 @@
 """The results store of batch runs: one SQLite file, one row per finished job.
 
 The file is in WAL mode with ``synchronous=NORMAL``: every committed row
-survives a ``kill -9`` of the writing process (measured: see FACTS.md), and
+survives a ``kill -9`` of the writing process, and
 readers (``relevance-plan report``) never block the writer.  Each finished
 job is written in its own transaction, so an interrupted batch loses at most
 the jobs that were still running; rerunning the same command skips every job

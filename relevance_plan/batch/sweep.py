@@ -14,11 +14,12 @@ from pathlib import Path
 from typing import Sequence
 
 from relevance_plan.errors import InputFileError, UsageError
-from relevance_plan.io import find_suite_problems, load_domain, load_problem, read_sidecar
-from relevance_plan.relevance.metrics import SetMetrics, mean_metrics, set_metrics
-from relevance_plan.planning.loop import resolve_model, scorer_for
-from relevance_plan.relevance.prune import Thresholds, prune_with_scores, score_task
-from relevance_plan.relevance.scorers import ScoreRequest, Task
+from relevance_plan.io import find_suite_problems, load_domain, load_problem
+from relevance_plan.relevance.metrics import mean_metrics, set_metrics
+from relevance_plan.relevance.prune import Thresholds
+from relevance_plan.relevance.scorers import PlanningTask
+from relevance_plan.relevance.setup import ScoringOptions, resolve_model, score_problem
+from relevance_plan.relevance.sidecar import read_sidecar_for
 
 
 @dataclass(frozen=True)
@@ -48,51 +49,41 @@ class SweepResult:
         }
 
 
-def sweep_suite(
-    suite_dir: Path,
-    taus: Sequence[float],
-    scorer: str | None = None,
-    model_path: str | None = None,
-    objective: str | None = None,
-    task: str | None = None,
-    human: str | None = None,
-) -> SweepResult:
+def sweep_suite(suite_dir: Path, taus: Sequence[float], options: ScoringOptions = ScoringOptions()) -> SweepResult:
+    """Mean precision / recall / F1 / N of every (tau_c, tau_e) cell over the suite's problems.
+
+    Each problem is scored once with ``options`` (its thresholds are not used:
+    the grid replaces them).
+    """
     domain_path, problem_paths = find_suite_problems(suite_dir)
     domain = load_domain(domain_path)
-    model = resolve_model(domain.name, str(domain_path), model_path)
-    chosen = scorer_for("relevance", model, scorer)
+    model = resolve_model(domain.name, str(domain_path), options.model_path)
     relevant_cells: dict = {(c, e): [] for c in taus for e in taus}
     necessary_cells: dict = {(c, e): [] for c in taus for e in taus}
     insufficient = 0
     counted = 0
+    scorer = None
     for problem_path in problem_paths:
-        sidecar_path = problem_path.with_suffix(".json")
-        if not sidecar_path.is_file():
-            raise InputFileError("sweep needs the generator's sidecar next to each problem", path=str(sidecar_path))
-        sidecar = read_sidecar(sidecar_path)
-        try:
-            relevant = frozenset(n.lower() for n in sidecar["relevant"])
-            necessary = frozenset(n.lower() for n in sidecar["necessary"])
-        except (KeyError, TypeError, AttributeError):
-            raise InputFileError("sidecar lacks 'relevant' or 'necessary' lists", path=str(sidecar_path)) from None
-        problem = load_problem(problem_path, domain)
-        planning_task = Task(domain, problem)
-        request = ScoreRequest(model=model, objective=objective, task=task, human=human, necessary=necessary)
-        scores = score_task(planning_task, chosen, request)
-        if not scores.sufficient:
+        sidecar = read_sidecar_for(problem_path, required=True)
+        if sidecar.relevant is None or sidecar.necessary is None:
+            raise InputFileError("sidecar lacks 'relevant' or 'necessary' lists", path=sidecar.path)
+        task = PlanningTask(domain, load_problem(problem_path, domain))
+        scoring = score_problem(task, options, domain_path=domain_path, problem_path=problem_path, model=model)
+        scorer = scoring.scorer
+        if not scoring.scores.sufficient:
             insufficient += 1
             continue
         counted += 1
         for tau_c in taus:
             for tau_e in taus:
-                result = prune_with_scores(planning_task, scores, Thresholds(tau_c, tau_e), model)
-                relevant_cells[(tau_c, tau_e)].append(set_metrics(result.selected, relevant))
-                necessary_cells[(tau_c, tau_e)].append(set_metrics(result.kept, necessary))
+                result = scoring.prune(Thresholds(tau_c, tau_e))
+                relevant_cells[(tau_c, tau_e)].append(set_metrics(result.selected, sidecar.relevant))
+                necessary_cells[(tau_c, tau_e)].append(set_metrics(result.kept, sidecar.necessary))
     if counted == 0:
         raise UsageError(f"no problem in {suite_dir} could be scored (insufficient cues on all {insufficient})")
     return SweepResult(
         suite=str(suite_dir),
-        scorer=chosen,
+        scorer=scorer,
         problems=counted,
         taus=tuple(taus),
         relevant={key: mean_metrics(values) for key, values in relevant_cells.items()},

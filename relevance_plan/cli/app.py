@@ -1,11 +1,10 @@
-"""The ``relevance-plan`` command.  Thin: parse arguments, call the library,
-print, and turn errors into the exit codes of ``exitcodes.py``.  This is the
-only module that exits.
+"""The ``relevance-plan`` command group.  Thin: parse arguments, call the library,
+print, and turn errors into the exit codes of ``exitcodes.py``.  The CLI is
+the only part of the package that exits.
 """
 
 from __future__ import annotations
 
-import functools
 import json
 import sys
 from pathlib import Path
@@ -13,11 +12,23 @@ from pathlib import Path
 import click
 
 from relevance_plan import __version__
-from relevance_plan.errors import RelevancePlanError, UsageError
-from relevance_plan.exitcodes import EXIT_CODE_DESCRIPTIONS, ExitCode, exit_code_for_error
-from relevance_plan.planning.loop import METHODS, PlanOptions, PlanResult, PlanStatus, plan_task, resolve_model, scorer_for
-from relevance_plan.relevance.prune import DEFAULT_TAU, PruneResult, Thresholds, prune_with_scores, score_task
-from relevance_plan.relevance.scorers import SCORERS, ScoreRequest, Task
+from relevance_plan.cli.batch import COMMANDS as BATCH_COMMANDS
+from relevance_plan.cli.watch import watch
+from relevance_plan.cli.common import (
+    fail,
+    handle_errors,
+    method_option,
+    planning_options,
+    scoring_options,
+    take_plan_options,
+    take_scoring,
+)
+from relevance_plan.errors import UsageError
+from relevance_plan.exitcodes import EXIT_CODE_DESCRIPTIONS, ExitCode
+from relevance_plan.planning.loop import PlanResult, PlanStatus, plan_task
+from relevance_plan.relevance.prune import PruneResult, Thresholds
+from relevance_plan.relevance.scorers import PlanningTask
+from relevance_plan.relevance.setup import Scoring, ScoringOptions, score_problem
 
 PLAN_STATUS_EXIT = {
     PlanStatus.SOLVED: ExitCode.SUCCESS,
@@ -27,77 +38,19 @@ PLAN_STATUS_EXIT = {
     PlanStatus.OUT_OF_MEMORY: ExitCode.OUT_OF_MEMORY,
     PlanStatus.INSUFFICIENT_CUES: ExitCode.INSUFFICIENT_CUES,
     PlanStatus.INPUT_ERROR: ExitCode.PDDL_SYNTAX,
+    PlanStatus.UNSUPPORTED: ExitCode.UNSUPPORTED_PDDL,
     PlanStatus.PLANNER_CONFIG_ERROR: ExitCode.USAGE,
     PlanStatus.PLANNER_ERROR: ExitCode.PLANNER,
     PlanStatus.VALIDATOR_UNAVAILABLE: ExitCode.VALIDATOR,
 }
 
 
-def fail(message: str, code: ExitCode) -> None:
-    click.echo(f"relevance-plan: error: {message}", err=True)
-    sys.exit(int(code))
-
-
-def handle_errors(command):
-    """Every library error becomes one line on stderr and its documented exit code."""
-
-    @functools.wraps(command)
-    def wrapper(*args, **kwargs):
-        try:
-            return command(*args, **kwargs)
-        except RelevancePlanError as error:
-            fail(str(error), exit_code_for_error(error))
-        except KeyboardInterrupt:
-            click.echo("relevance-plan: interrupted", err=True)
-            sys.exit(int(ExitCode.INTERRUPTED))
-
-    return wrapper
-
-
-def probability_option(name: str, help_text: str):
-    return click.option(name, type=float, default=DEFAULT_TAU, show_default=True, help=help_text)
-
-
-def scoring_options(command):
-    for decorator in reversed(
-        [
-            click.option("--scorer", type=click.Choice(sorted(SCORERS)), default=None,
-                         help="Scorer; default: 'model' when a knowledge model applies, else 'goal'."),
-            click.option("--model", "model_path", type=click.Path(dir_okay=False), default=None,
-                         help="Knowledge-model YAML (default: found next to the domain or in domains/<name>/)."),
-            click.option("--objective", default=None, help="Objective from the model (default: matched from the goal)."),
-            click.option("--task", "task_name", default=None, help="Fix the task: P(task | objective) = 1."),
-            click.option("--human", default=None, help="Apply this human's recorded preferences."),
-            probability_option("--tau-class", "Class threshold tau_c in [0, 1]."),
-            probability_option("--tau-element", "Element threshold tau_e in [0, 1]."),
-            click.option("--seed", type=int, default=0, show_default=True, help="Seed of the random scorer."),
-        ]
-    ):
-        command = decorator(command)
-    return command
-
-
-def _score_and_prune(domain_path, problem_path, scorer, model_path, objective, task_name, human, tau_class, tau_element, seed):
+def _score_and_prune(domain_path, problem_path, options: ScoringOptions) -> tuple[Scoring, PruneResult]:
     from relevance_plan.io import load_task
-    from relevance_plan.planning.loop import read_sidecar_necessary
 
-    thresholds = Thresholds(tau_class, tau_element)
     domain, problem = load_task(domain_path, problem_path)
-    task = Task(domain, problem)
-    model = resolve_model(domain.name, domain_path, model_path)
-    chosen = scorer_for("relevance", model, scorer)
-    if chosen == "model" and model is None:
-        raise UsageError(f"no knowledge model found for domain '{domain.name}': give --model or use --scorer goal")
-    request = ScoreRequest(
-        model=model,
-        objective=objective,
-        task=task_name,
-        human=human,
-        seed=seed,
-        necessary=read_sidecar_necessary(problem_path) if chosen == "oracle" else None,
-    )
-    scores = score_task(task, chosen, request)
-    return task, model, scores, prune_with_scores(task, scores, thresholds, model)
+    scoring = score_problem(PlanningTask(domain, problem), options, domain_path=domain_path, problem_path=problem_path)
+    return scoring, scoring.prune(options.thresholds)
 
 
 def _prune_json(result: PruneResult) -> dict:
@@ -153,7 +106,6 @@ def generate(world, difficulty, count, seed, out_dir, distractors, size):
     (blocksworld, logistics, gripper, ferry, grid, miconic, each also as NAME-typed)."""
     from relevance_plan.generators.classic import CLASSIC_WORLDS, check_classic_arguments, generate_classic_suite
     from relevance_plan.generators.generate import generate_suite
-
     from relevance_plan.progress import progress
 
     if world in CLASSIC_WORLDS:
@@ -178,13 +130,11 @@ def generate(world, difficulty, count, seed, out_dir, distractors, size):
 @click.option("--inquiries", is_flag=True, help="List what the robot would ask the human.")
 @click.option("--json", "as_json", is_flag=True, help="Machine-readable output.")
 @handle_errors
-def score(domain_path, problem_path, scorer, model_path, objective, task_name, human, tau_class, tau_element, seed,
-          inquiries, as_json):
+def score(domain_path, problem_path, inquiries, as_json, **values):
     """Print the class and element relevance table for PROBLEM."""
-    task, model, scores, result = _score_and_prune(
-        domain_path, problem_path, scorer, model_path, objective, task_name, human, tau_class, tau_element, seed
-    )
-    inquiry = _inquiries(task, model, scores, result) if inquiries and scores.sufficient else None
+    scoring, result = _score_and_prune(domain_path, problem_path, take_scoring(values))
+    scores = scoring.scores
+    inquiry = _inquiries(scoring, result) if inquiries and scores.sufficient else None
     if as_json:
         data = _prune_json(result)
         if inquiry is not None:
@@ -205,10 +155,11 @@ def score(domain_path, problem_path, scorer, model_path, objective, task_name, h
         fail(f"insufficient cues: {scores.insufficiency}", ExitCode.INSUFFICIENT_CUES)
 
 
-def _inquiries(task, model, scores, result) -> dict:
+def _inquiries(scoring: Scoring, result: PruneResult) -> dict:
     from relevance_plan.relevance.metrics import plan_inquiries
     from relevance_plan.relevance.scene import kind_of
 
+    task, model, scores = scoring.task, scoring.model, scoring.scores
     structural = set()
     if model is not None:
         structural = {c.name for c in model.classes.values() if c.fixed_relevance is not None or c.from_contents}
@@ -272,14 +223,12 @@ def _print_score_table(result: PruneResult) -> None:
 @scoring_options
 @click.option("--json", "as_json", is_flag=True, help="Machine-readable report on stdout.")
 @handle_errors
-def prune(domain_path, problem_path, output, scorer, model_path, objective, task_name, human, tau_class, tau_element,
-          seed, as_json):
+def prune(domain_path, problem_path, output, as_json, **values):
     """Write PROBLEM without the objects that do not matter (a drop-in filter for any planner)."""
     from relevance_plan.io import write_text_atomic
 
-    _, _, scores, result = _score_and_prune(
-        domain_path, problem_path, scorer, model_path, objective, task_name, human, tau_class, tau_element, seed
-    )
+    scoring, result = _score_and_prune(domain_path, problem_path, take_scoring(values))
+    scores = scoring.scores
     if not scores.sufficient:
         if as_json:
             click.echo(json.dumps(_prune_json(result), indent=2))
@@ -303,40 +252,21 @@ def prune(domain_path, problem_path, output, scorer, model_path, objective, task
 @main.command()
 @click.argument("domain_path", metavar="DOMAIN", type=click.Path(dir_okay=False))
 @click.argument("problem_path", metavar="PROBLEM", type=click.Path(dir_okay=False))
-@click.option("--method", type=click.Choice(METHODS), default="relevance", show_default=True)
+@method_option
 @scoring_options
-@click.option("--timeout", type=float, default=120.0, show_default=True, help="Seconds for the whole run.")
-@click.option("--memory-limit", "memory_limit", type=int, default=None, help="Planner memory limit in MB.")
-@click.option("--planner-config", default="lama-first", show_default=True,
-              help="Fast Downward alias, registered name, or search string.")
+@planning_options()
 @click.option("--plan-file", default="sas_plan", show_default=True, type=click.Path(dir_okay=False))
-@click.option("--no-relax", is_flag=True, help="One attempt only (the paper's behaviour).")
-@click.option("--validator", "validators", multiple=True, type=click.Choice(["builtin", "up", "val"]),
-              help="Validator(s) to use (default: builtin, plus VAL when on PATH).")
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON object.")
 @click.option("--quiet", "-q", is_flag=True, help="No progress messages.")
 @handle_errors
-def plan(domain_path, problem_path, method, scorer, model_path, objective, task_name, human, tau_class, tau_element,
-         seed, timeout, memory_limit, planner_config, plan_file, no_relax, validators, as_json, quiet):
-    """Prune, plan with Fast Downward, validate on the original problem, widen until solved."""
+def plan(domain_path, problem_path, method, plan_file, as_json, quiet, **values):
+    """Prune, plan, validate on the original problem, widen until solved."""
     from relevance_plan.io import write_text_atomic
+    from relevance_plan.planning.planners import make_planner
     from relevance_plan.planning.validate import format_plan
 
-    options = PlanOptions(
-        method=method,
-        planner_config=planner_config,
-        timeout=timeout,
-        memory_limit_mb=memory_limit,
-        thresholds=Thresholds(tau_class, tau_element),
-        relax=not no_relax,
-        scorer=scorer,
-        model_path=model_path,
-        objective=objective,
-        task=task_name,
-        human=human,
-        seed=seed,
-        validators=tuple(validators) or None,
-    )
+    options = take_plan_options(values, method)
+    make_planner(options.planner, options.planner_config, check=True)
     say = None if (quiet or as_json) else (lambda message: click.echo(f"... {message}", err=True))
     result = plan_task(domain_path, problem_path, options, progress=say)
     if result.status is PlanStatus.SOLVED:
@@ -361,6 +291,7 @@ def plan(domain_path, problem_path, method, scorer, model_path, objective, task_
 
 def _print_plan_summary(result: PlanResult, plan_file) -> None:
     click.echo(f"method:      {result.method}")
+    click.echo(f"planner:     {result.planner}")
     click.echo(f"status:      {result.status.value}")
     click.echo(f"objects:     {result.objects_kept} kept of {result.objects_total}")
     click.echo(f"attempts:    {len(result.attempts)} (first: {result.first_attempt_status})")
@@ -378,27 +309,23 @@ def _print_plan_summary(result: PlanResult, plan_file) -> None:
 
 @main.command()
 @click.argument("suite_dir", metavar="SUITE_DIR", type=click.Path())
-@click.option("--scorer", type=click.Choice(sorted(SCORERS)), default=None)
-@click.option("--model", "model_path", type=click.Path(dir_okay=False), default=None)
-@click.option("--objective", default=None)
-@click.option("--task", "task_name", default=None)
-@click.option("--human", default=None)
+@scoring_options
 @click.option("--taus", default="0.1,0.2,0.3,0.4,0.5", show_default=True, help="Threshold values for both axes.")
 @click.option("--heatmap", type=click.Path(dir_okay=False), default=None, help="Write a PNG heatmap (needs matplotlib).")
 @click.option("--json", "as_json", is_flag=True)
 @handle_errors
-def sweep(suite_dir, scorer, model_path, objective, task_name, human, taus, heatmap, as_json):
+def sweep(suite_dir, taus, heatmap, as_json, **values):
     """Precision, recall, F1 and N over a tau_c x tau_e grid for a generated suite."""
     from relevance_plan.batch.sweep import format_sweep, sweep_suite, write_heatmap
 
+    options = take_scoring(values)
     try:
-        values = tuple(float(v) for v in taus.split(","))
+        grid = tuple(float(v) for v in taus.split(","))
     except ValueError:
         raise UsageError(f"--taus must be comma-separated numbers, got '{taus}'") from None
-    for value in values:
+    for value in grid:
         Thresholds(value, value)
-    result = sweep_suite(Path(suite_dir), values, scorer=scorer, model_path=model_path, objective=objective,
-                         task=task_name, human=human)
+    result = sweep_suite(Path(suite_dir), grid, options)
     if heatmap:
         write_heatmap(result, heatmap)
     click.echo(json.dumps(result.to_json(), indent=2) if as_json else format_sweep(result))
@@ -414,12 +341,6 @@ def exit_codes():
         click.echo(f"{int(code):>4}  {code.name:<18} {EXIT_CODE_DESCRIPTIONS[code]}")
 
 
-# The batch commands live in their own module; they import this one lazily.
-from relevance_plan.cli.batch import COMMANDS as BATCH_COMMANDS  # noqa: E402
-
 for _command in BATCH_COMMANDS:
     main.add_command(_command)
-
-
-if __name__ == "__main__":  # pragma: no cover
-    main()
+main.add_command(watch)

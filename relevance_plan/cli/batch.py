@@ -1,41 +1,25 @@
-"""The batch commands of ``relevance-plan``: ``compare``, ``report`` and ``demo``.
-
-``cli.py`` registers them with ``main.add_command(...)``.  This module never
-imports ``cli`` at import time (``cli`` imports it), so the error handling of
-``cli.handle_errors`` is looked up when a command runs.  ``python -m
-relevance_plan.cli.batch`` runs a small group holding only these commands.
-"""
+"""The batch commands of ``relevance-plan``: ``compare``, ``report`` and ``demo``."""
 
 from __future__ import annotations
 
-import functools
 from pathlib import Path
 
 import click
 
+from relevance_plan.cli.common import handle_errors, planning_options, scoring_options, take_plan_options
 from relevance_plan.planning.loop import METHODS
-from relevance_plan.relevance.prune import DEFAULT_TAU
 
 DEFAULT_METHODS = "relevance,pure,random"
-
-
-def _handled(command):
-    """``cli.handle_errors`` around ``command``, imported when the command runs."""
-
-    @functools.wraps(command)
-    def wrapper(*args, **kwargs):
-        from relevance_plan.cli.app import handle_errors
-
-        return handle_errors(command)(*args, **kwargs)
-
-    return wrapper
 
 
 @click.command()
 @click.argument("suite_dirs", metavar="SUITE_DIR...", nargs=-1, required=True, type=click.Path())
 @click.option("--methods", default=DEFAULT_METHODS, show_default=True,
               help=f"Comma-separated methods from: {', '.join(METHODS)}.")
-@click.option("--timeout", type=float, default=120.0, show_default=True, help="Seconds per job (relevance + planning).")
+@click.option("--planners", default=None,
+              help="Comma-separated planners (fast-downward, up:NAME; a cmd:'TEMPLATE' last); default: --planner.")
+@scoring_options(with_seed=False)
+@planning_options(per_job=True)
 @click.option("--jobs", "-j", type=int, default=1, show_default=True,
               help="Jobs run at once locally (each drives one planner process).")
 @click.option("--store", "store_path", type=click.Path(dir_okay=False), default="results.sqlite", show_default=True,
@@ -44,45 +28,27 @@ def _handled(command):
 @click.option("--scheduler-timeout", type=float, default=10.0, show_default=True,
               help="Seconds to wait for the Dask scheduler.")
 @click.option("--seeds", default="0", show_default=True, help="Comma-separated seeds; one job per seed.")
-@click.option("--no-relax", is_flag=True, help="One attempt per pruned problem (the paper's behaviour).")
-@click.option("--planner-config", default="lama-first", show_default=True,
-              help="Fast Downward alias, registered name, or search string.")
-@click.option("--memory-limit", "memory_limit", type=int, default=None, help="Planner memory limit in MB.")
-@click.option("--tau-class", type=float, default=DEFAULT_TAU, show_default=True, help="Class threshold tau_c.")
-@click.option("--tau-element", type=float, default=DEFAULT_TAU, show_default=True, help="Element threshold tau_e.")
-@click.option("--model", "model_path", type=click.Path(dir_okay=False), default=None,
-              help="Knowledge-model YAML (default: found next to each domain).")
-@click.option("--objective", default=None, help="Objective from the model.")
-@click.option("--task", "task_name", default=None, help="Fix the task: P(task | objective) = 1.")
-@click.option("--human", default=None, help="Apply this human's recorded preferences.")
 @click.option("--quiet", "-q", is_flag=True, help="No progress display.")
-@_handled
-def compare(suite_dirs, methods, timeout, jobs, store_path, scheduler, scheduler_timeout, seeds, no_relax,
-            planner_config, memory_limit, tau_class, tau_element, model_path, objective, task_name, human, quiet):
+@handle_errors
+def compare(suite_dirs, methods, planners, jobs, store_path, scheduler, scheduler_timeout, seeds, quiet, **values):
     """Run each method on every problem of the SUITE_DIRs and store the results.
 
     Rerunning the same command resumes: stored jobs are not run again.
     """
     from relevance_plan.batch.jobs import compare as run_compare
+    from relevance_plan.planning.planners import split_planner_names
 
+    options = take_plan_options(values)
     summary = run_compare(
         list(suite_dirs),
         methods,
-        timeout=timeout,
+        options,
+        planners=split_planner_names(planners) if planners else (),
+        seeds=seeds,
         jobs=jobs,
         store_path=store_path,
-        seeds=seeds,
         scheduler=scheduler,
         scheduler_timeout=scheduler_timeout,
-        planner_config=planner_config,
-        memory_limit_mb=memory_limit,
-        relax=not no_relax,
-        tau_class=tau_class,
-        tau_element=tau_element,
-        model_path=model_path,
-        objective=objective,
-        task=task_name,
-        human=human,
         progress=not quiet,
     )
     click.echo(summary.describe())
@@ -95,7 +61,7 @@ def compare(suite_dirs, methods, timeout, jobs, store_path, scheduler, scheduler
 @click.option("--suite", default=None, help="Only this suite.")
 @click.option("--plots", "plots_dir", type=click.Path(file_okay=False), default=None,
               help="Also write a cactus plot and a relevance-vs-pure scatter (PNG) here; needs matplotlib.")
-@_handled
+@handle_errors
 def report(store_path, fmt, suite, plots_dir):
     """Print the comparison table computed from the rows of STORE."""
     from relevance_plan.batch.report import build_report, format_report, write_plots
@@ -117,7 +83,7 @@ def report(store_path, fmt, suite, plots_dir):
 @click.option("--distractors", type=int, default=None, help="Distractors per problem (default 30).")
 @click.option("--tiny", is_flag=True, help="1 problem per world with 5 distractors (a quick check).")
 @click.option("--quiet", "-q", is_flag=True, help="No progress display.")
-@_handled
+@handle_errors
 def demo(workdir, count, timeout, jobs, distractors, tiny, quiet):
     """Generate coffee and cereal suites, compare relevance, pure, random and oracle, print the table."""
     import tempfile
@@ -139,16 +105,3 @@ def demo(workdir, count, timeout, jobs, distractors, tiny, quiet):
 
 
 COMMANDS = (compare, report, demo)
-
-
-@click.group(context_settings={"help_option_names": ["-h", "--help"]})
-def batch_main():
-    """Batch commands of relevance-plan (also available as `relevance-plan compare|report|demo`)."""
-
-
-for _command in COMMANDS:
-    batch_main.add_command(_command)
-
-
-if __name__ == "__main__":  # pragma: no cover
-    batch_main()

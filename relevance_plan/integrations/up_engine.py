@@ -6,18 +6,18 @@ problem it
 
 1. exports the problem once with UP's ``PDDLWriter`` (on a clone: the writer
    reads ``initial_values``, which fills the problem's own dictionary of
-   explicit initial values — FACTS.md) and reads the text with our reader;
-2. scores the objects (the knowledge model when one applies to the domain,
-   else the domain-independent ``goal`` scorer), thresholds them and closes
-   the kept set over the initial state's constraints (``prune_with_scores``);
-3. gives the inner planner a UP problem restricted to the kept objects,
-   maps its plan back to the original problem's actions and objects and
-   validates it there with UP's ``SequentialPlanValidator``;
-4. when the pruned problem is unsolvable, the planner fails or runs out of
-   its share of the time, or the plan does not validate, lowers the
-   thresholds (factor 0.5), puts back the best-scored removed objects and
-   tries again, as ``planning.plan_task`` does; the last attempt is the whole
-   problem, so only that attempt can prove the problem unsolvable.
+   explicit initial values with every ground atom) and reads the text with
+   our reader;
+2. scores the objects with the scoring set-up every front end uses
+   (``relevance.setup``: the knowledge model when one applies to the domain,
+   else the domain-independent ``goal`` scorer; an engine cannot ask for
+   cues, so insufficient cues fall back to the goal scorer);
+3. runs the attempt loop of ``relevance-plan plan`` (``planning.loop``) with
+   the inner planner as its planner: each attempt gives the inner planner a
+   UP problem restricted to the kept objects, maps its plan back to the
+   original problem's actions and objects and validates it on the original
+   problem; a failed attempt widens the selection, and the last attempt is
+   the whole problem, so only that attempt can prove the problem unsolvable.
 
 Register it with :func:`register_relevance_engine` (or an ``up.ini``
 section, see ``docs/up.ini.example``) and ask for it by name::
@@ -35,6 +35,7 @@ the inner planner unchanged.
 
 from __future__ import annotations
 
+import dataclasses
 import time
 from dataclasses import dataclass
 from typing import IO, AbstractSet, Callable, Optional, Type
@@ -42,7 +43,6 @@ from typing import IO, AbstractSet, Callable, Optional, Type
 import unified_planning as up
 from unified_planning.engines import Engine, MetaEngine, OptimalityGuarantee
 from unified_planning.engines.mixins import OneshotPlannerMixin
-from unified_planning.engines.plan_validator import SequentialPlanValidator
 from unified_planning.engines.results import (
     POSITIVE_OUTCOMES,
     LogLevel,
@@ -51,6 +51,7 @@ from unified_planning.engines.results import (
     PlanGenerationResultStatus,
     ValidationResultStatus,
 )
+from unified_planning.engines.plan_validator import SequentialPlanValidator
 from unified_planning.exceptions import UPValueError
 from unified_planning.io import PDDLWriter
 from unified_planning.model import Problem, ProblemKind
@@ -58,11 +59,13 @@ from unified_planning.model.problem_kind_versioning import LATEST_PROBLEM_KIND_V
 from unified_planning.plans import ActionInstance, SequentialPlan
 
 from relevance_plan.errors import RelevancePlanError, UsageError
-from relevance_plan.relevance.knowledge import KnowledgeModel, load_model
 from relevance_plan.pddl.reader import read_domain, read_problem
-from relevance_plan.planning.loop import resolve_model
-from relevance_plan.relevance.prune import DEFAULT_TAU, PruneResult, Thresholds, prune_with_scores, score_task, widen
-from relevance_plan.relevance.scorers import SCORERS, ScoreRequest, ScoreResult, Task
+from relevance_plan.planning.loop import Attempt, PlanOptions, PlanStatus, first_selection, run_attempts, summarise
+from relevance_plan.planning.runner import PlannerStatus, RunOutcome
+from relevance_plan.relevance.knowledge import KnowledgeModel, load_model
+from relevance_plan.relevance.prune import DEFAULT_TAU, PruneResult, Thresholds
+from relevance_plan.relevance.scorers import SCORERS, PlanningTask
+from relevance_plan.relevance.setup import Scoring, resolve_model, score_problem
 
 ENGINE_NAME = "relevance"
 
@@ -104,36 +107,6 @@ def relevance_supported_kind() -> ProblemKind:
     return kind
 
 
-@dataclass(frozen=True)
-class Attempt:
-    """One inner-planner run, for the log and the metrics."""
-
-    number: int
-    objects_kept: int
-    thresholds: Thresholds | None  # None for the whole problem
-    status: PlanGenerationResultStatus
-    plan_valid: bool | None  # None: no plan to validate
-    time_limit: float | None
-    wall_time: float
-
-    @property
-    def full(self) -> bool:
-        return self.thresholds is None
-
-    def describe(self, total: int) -> str:
-        what = (
-            f"the whole problem ({total} objects)"
-            if self.full
-            else f"{self.objects_kept} of {total} objects (tau_class={self.thresholds.tau_class:g},"
-            f" tau_element={self.thresholds.tau_element:g})"
-        )
-        outcome = self.status.name
-        if self.plan_valid is not None:
-            outcome += ", plan valid on the original problem" if self.plan_valid else ", plan INVALID on the original problem"
-        limit = "no limit" if self.time_limit is None else f"limit {self.time_limit:.1f} s"
-        return f"attempt {self.number}: {what}, {limit} -> {outcome} in {self.wall_time:.2f} s"
-
-
 class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin):
     """Relevance-based object pruning in front of any oneshot planner.
 
@@ -156,19 +129,25 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin):
         **kwargs,
     ):
         # Our options are taken out here; the rest belongs to the inner planner.
-        self._thresholds = Thresholds(float(tau_class), float(tau_element))
+        Thresholds(float(tau_class), float(tau_element))
         if scorer is not None and scorer not in ENGINE_SCORERS:
             raise UsageError(f"unknown scorer '{scorer}' (choose from: {', '.join(ENGINE_SCORERS)})")
         if not 0.0 < float(relax_factor) < 1.0:
             raise UsageError(f"relax_factor must be in (0, 1), got {relax_factor}")
         if not 0.0 < float(first_share) <= 1.0:
             raise UsageError(f"first_share must be in (0, 1], got {first_share}")
-        self._scorer = scorer
         self._model: KnowledgeModel | None = load_model(model) if model is not None else None
         self._domain = domain
-        self._relax_factor = float(relax_factor)
-        self._first_share = float(first_share)
-        self._seed = int(seed)
+        # The same options object `plan` builds: the same loop makes the same choices.
+        self._options = PlanOptions(
+            method="relevance",
+            thresholds=Thresholds(float(tau_class), float(tau_element)),
+            scorer=scorer,
+            relax_factor=float(relax_factor),
+            first_share=float(first_share),
+            seed=int(seed),
+            timeout=None,
+        )
         MetaEngine.__init__(self, *args, **kwargs)
         OneshotPlannerMixin.__init__(self)
 
@@ -218,71 +197,42 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin):
         assert isinstance(problem, Problem)
         assert isinstance(self.engine, OneshotPlannerMixin)
         started = time.perf_counter()
-        deadline = None if timeout is None else started + timeout
+        options = dataclasses.replace(self._options, timeout=timeout)
         messages: list[str] = []
         warning_lines: list[str] = []
         total = len(problem.all_objects)
 
         stage = None
         try:
-            stage = _RelevanceStage.build(problem, self._choose_model, self._scorer, self._seed, messages, warning_lines)
+            stage = _RelevanceStage.build(problem, self._choose_model, options, warning_lines)
+            messages.append(f"scored {len(stage.scoring.task.problem.objects)} objects with the {stage.scoring.scorer} scorer")
         except RelevancePlanError as error:
             # Our reader or scorer cannot handle this problem: the whole problem is the only attempt.
             warning_lines.append(f"relevance stage skipped, planning on the whole problem: {error}")
-        relevance_time = time.perf_counter() - started
+        inner = _InnerPlanner(self.engine, problem, stage, heuristic, output_stream)
 
-        validator = SequentialPlanValidator(environment=problem.environment)
-        attempts: list[Attempt] = []
-        first_kept: int | None = None
-        thresholds = self._thresholds
-        current = stage.prune(thresholds) if stage is not None else None
-        extra: frozenset = frozenset()
-        last_result: PlanGenerationResult | None = None
-        found: SequentialPlan | None = None
-        while True:
-            removed = stage.removed_objects(current) if current is not None else frozenset()
-            full = not removed
-            kept = total - len(removed)
-            if first_kept is None:
-                first_kept = kept
-            remaining = None if deadline is None else deadline - time.perf_counter()
-            if remaining is not None and remaining <= 0:
-                break
-            if remaining is None:
-                limit = None
-            elif full:
-                limit = remaining
-            else:
-                limit = min(remaining, max(1.0, remaining * self._first_share))
-            target = restrict_problem(problem, removed)
-            attempt_started = time.perf_counter()
-            result = self.engine.solve(target, heuristic, limit, output_stream)
-            wall = time.perf_counter() - attempt_started
-            last_result = result
-            plan_valid = None
-            if result.status in POSITIVE_OUTCOMES and result.plan is not None:
-                candidate = lift_plan(result.plan, problem)
-                plan_valid = candidate is not None and _is_valid(validator, problem, candidate)
-                if plan_valid:
-                    found = candidate
-            attempts.append(
-                Attempt(len(attempts) + 1, kept, None if full else thresholds, result.status, plan_valid, limit, wall)
-            )
-            messages.append(attempts[-1].describe(total))
-            if found is not None or full:
-                break
-            if result.status in _FAULTS:
-                warning_lines.append(f"the inner planner reported {result.status.name}: retrying on the whole problem")
-                current = None
-                continue
-            # Widen: lower the thresholds and put back the best-ranked removed objects.
-            widen_started = time.perf_counter()
-            current, extra = widen(current, self._relax_factor, extra, stage.model)
-            thresholds = current.thresholds
-            relevance_time += time.perf_counter() - widen_started
+        if stage is None:
+            # Without our reader's view of the problem there is nothing to prune or widen.
+            attempts = _solve_whole(inner, options, started)
+            relevance_time = 0.0
+        else:
+            selection = first_selection(stage.scoring, options)
+            relevance_time = time.perf_counter() - started
+            attempts, widening_time = run_attempts(stage.scoring.task, selection, inner, options, started=started,
+                                                   model=stage.scoring.model)
+            relevance_time += widening_time
+        for attempt in attempts:
+            messages.append(describe_attempt(attempt, total))
 
-        status, summary = _final_status(found, attempts, last_result)
+        found = inner.lifted.get(attempts[-1].number) if attempts else None
+        if stage is not None:
+            result = summarise(stage.scoring.task, options, attempts, started, relevance_time, None,
+                               planner=self.engine.name, scorer=stage.scoring.scorer)
+            status, summary = _final_status(result, found, attempts)
+        else:
+            status, summary = _final_status_whole(problem, found, attempts)
         final_kept = attempts[-1].objects_kept if attempts else total
+        first_kept = attempts[0].objects_kept if attempts else total
         messages.append(
             f"{summary}; kept {final_kept} of {total} objects"
             f" (first attempt {first_kept}), {len(attempts)} attempt(s)"
@@ -293,19 +243,20 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin):
             "objects_kept_first_attempt": str(first_kept),
             "objects_removed_first_attempt": str(total - first_kept),
             "attempts": str(len(attempts)),
-            "scorer": stage.scores.scorer if stage is not None else "none",
+            "scorer": stage.scoring.scorer if stage is not None else "none",
             "relevance_time": f"{relevance_time:.4f}",
-            "planner_time": f"{sum(a.wall_time for a in attempts):.4f}",
+            "planner_time": f"{sum(a.outcome.wall_time for a in attempts):.4f}",
             "engine_internal_time": f"{time.perf_counter() - started:.4f}",
         }
         logs = [LogMessage(LogLevel.WARNING, f"{ENGINE_NAME}: {text}") for text in warning_lines]
         logs += [LogMessage(LogLevel.INFO, f"{ENGINE_NAME}: {text}") for text in messages]
-        if last_result is not None and last_result.log_messages:
-            logs += last_result.log_messages
-        return PlanGenerationResult(status, found, self.name, metrics=metrics, log_messages=logs)
+        if inner.last_result is not None and inner.last_result.log_messages:
+            logs += inner.last_result.log_messages
+        return PlanGenerationResult(status, found if status in POSITIVE_OUTCOMES else None, self.name,
+                                    metrics=metrics, log_messages=logs)
 
     def _choose_model(self, domain_name: str) -> KnowledgeModel | None:
-        """The ``model`` param, else a repository model for the ``domain`` param or the exported name."""
+        """The ``model`` param, else a shipped model for the ``domain`` param or the exported name."""
         if self._model is not None:
             return self._model
         if self._domain is not None:
@@ -327,39 +278,169 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin):
 class _RelevanceStage:
     """The problem as our reader sees it, its scores, and the map back to UP names."""
 
-    task: Task
-    scores: ScoreResult
-    model: KnowledgeModel | None
+    scoring: Scoring
     up_names: dict  # reader name (lower-cased writer name) -> the UP object's own name
+    action_names: dict  # reader action name -> the UP action's own name
 
     @classmethod
-    def build(cls, problem: Problem, choose_model, scorer: str | None, seed: int, messages: list, warnings: list):
+    def build(cls, problem: Problem, choose_model, options: PlanOptions, warnings: list):
         # One export.  The writer reads problem.initial_values, which fills the
         # problem's explicit initial values with every ground atom: write a clone.
         writer = PDDLWriter(problem.clone())
         domain_text = writer.get_domain()
         problem_text = writer.get_problem()
         domain = read_domain(domain_text, "<unified-planning domain>")
-        task = Task(domain, read_problem(problem_text, domain, "<unified-planning problem>"))
+        task = PlanningTask(domain, read_problem(problem_text, domain, "<unified-planning problem>"))
         up_names = {name: writer.get_item_named(name).name for name in task.problem.objects}
+        action_names = {action.name: writer.get_item_named(action.name).name for action in domain.actions}
         model = choose_model(domain.name)
-        chosen = scorer or ("model" if model is not None else "goal")
-        if chosen == "model" and model is None:
+        scoring_options = options.scoring
+        if scoring_options.scorer == "model" and model is None:
             warnings.append("no knowledge model applies to this problem: using the goal scorer")
-            chosen = "goal"
-        scores = score_task(task, chosen, ScoreRequest(model=model, seed=seed))
-        if not scores.sufficient:
-            warnings.append(f"the {chosen} scorer has too little to go on ({scores.insufficiency}): using the goal scorer")
-            model = None
-            scores = score_task(task, "goal", ScoreRequest(seed=seed))
-        messages.append(f"scored {len(task.problem.objects)} objects with the {scores.scorer} scorer")
-        return cls(task, scores, model, up_names)
+            scoring_options = dataclasses.replace(scoring_options, scorer="goal")
+        scoring = score_problem(task, scoring_options, model=model)
+        if not scoring.scores.sufficient:
+            # An engine cannot ask the human: fall back to what the goal alone says.
+            warnings.append(f"the {scoring.scorer} scorer has too little to go on ({scoring.scores.insufficiency}):"
+                            " using the goal scorer")
+            scoring = score_problem(task, dataclasses.replace(scoring_options, scorer="goal"), model=None)
+            scoring = dataclasses.replace(scoring, model=None)
+        return cls(scoring, up_names, action_names)
 
-    def prune(self, thresholds: Thresholds, extra: AbstractSet[str] = frozenset()) -> PruneResult:
-        return prune_with_scores(self.task, self.scores, thresholds, self.model, extra)
+    def removed_objects(self, selection: PruneResult | None) -> frozenset:
+        if selection is None:
+            return frozenset()
+        return frozenset(self.up_names[name] for name in selection.removed)
 
-    def removed_objects(self, result: PruneResult) -> frozenset:
-        return frozenset(self.up_names[name] for name in result.removed)
+
+class _InnerPlanner:
+    """The inner engine as the attempt loop's planner: restrict, solve, turn the result into a RunOutcome."""
+
+    def __init__(self, engine, problem: Problem, stage: _RelevanceStage | None, heuristic, output_stream):
+        self.engine = engine
+        self.problem = problem
+        self.stage = stage
+        self.heuristic = heuristic
+        self.output_stream = output_stream
+        self.last_result: PlanGenerationResult | None = None
+        self.lifted: dict[int, SequentialPlan] = {}  # attempt number -> the plan on the original problem
+        self.calls = 0
+        # UP names -> the names our reader gave the exported problem (what the validator checks)
+        self.reader_objects = {up: reader for reader, up in stage.up_names.items()} if stage else {}
+        self.reader_actions = {up: reader for reader, up in stage.action_names.items()} if stage else {}
+
+    def __call__(self, selection: PruneResult | None, limit: float | None) -> RunOutcome:
+        self.calls += 1
+        removed = self.stage.removed_objects(selection) if self.stage is not None else frozenset()
+        target = restrict_problem(self.problem, removed)
+        started = time.perf_counter()
+        result = self.engine.solve(target, self.heuristic, limit, self.output_stream)
+        wall = time.perf_counter() - started
+        self.last_result = result
+        status = _UP_TO_PLANNER.get(result.status, PlannerStatus.PLANNER_CRASH)
+        steps: tuple = ()
+        if result.status in POSITIVE_OUTCOMES:
+            lifted = lift_plan(result.plan, self.problem) if result.plan is not None else None
+            if lifted is None:
+                status = PlannerStatus.PLANNER_CRASH  # a solution without a plan we can read
+            else:
+                self.lifted[self.calls] = lifted
+                steps = tuple(self._reader_step(step) for step in lifted.actions)
+        return RunOutcome(status=status, exit_code=None, plan=steps, plan_cost=None, wall_time=wall,
+                          config=self.engine.name, planner=self.engine.name, raw_status=result.status.name,
+                          optimal=result.status is PlanGenerationResultStatus.SOLVED_OPTIMALLY)
+
+    def _reader_step(self, step: ActionInstance) -> str:
+        if self.stage is None:
+            return ""  # nothing to validate with: the caller uses UP's own validator
+        arguments = [self.reader_objects[p.object().name] for p in step.actual_parameters]
+        return " ".join([self.reader_actions[step.action.name], *arguments])
+
+
+_UP_TO_PLANNER = {
+    PlanGenerationResultStatus.SOLVED_SATISFICING: PlannerStatus.SOLVED,
+    PlanGenerationResultStatus.SOLVED_OPTIMALLY: PlannerStatus.SOLVED,
+    PlanGenerationResultStatus.UNSOLVABLE_PROVEN: PlannerStatus.UNSOLVABLE,
+    PlanGenerationResultStatus.UNSOLVABLE_INCOMPLETELY: PlannerStatus.SEARCH_INCOMPLETE,
+    PlanGenerationResultStatus.TIMEOUT: PlannerStatus.OUT_OF_TIME,
+    PlanGenerationResultStatus.MEMOUT: PlannerStatus.OUT_OF_MEMORY,
+    PlanGenerationResultStatus.INTERNAL_ERROR: PlannerStatus.PLANNER_CRASH,
+    PlanGenerationResultStatus.UNSUPPORTED_PROBLEM: PlannerStatus.UNSUPPORTED,
+}
+
+# The loop's verdict, as unified-planning says it.
+_PLAN_TO_UP = {
+    PlanStatus.UNSOLVABLE: PlanGenerationResultStatus.UNSOLVABLE_PROVEN,
+    PlanStatus.OUT_OF_TIME: PlanGenerationResultStatus.TIMEOUT,
+    PlanStatus.OUT_OF_MEMORY: PlanGenerationResultStatus.MEMOUT,
+    PlanStatus.INPUT_ERROR: PlanGenerationResultStatus.INTERNAL_ERROR,
+    PlanStatus.UNSUPPORTED: PlanGenerationResultStatus.UNSUPPORTED_PROBLEM,
+    PlanStatus.PLANNER_ERROR: PlanGenerationResultStatus.INTERNAL_ERROR,
+    PlanStatus.PLANNER_CONFIG_ERROR: PlanGenerationResultStatus.INTERNAL_ERROR,
+    PlanStatus.VALIDATOR_UNAVAILABLE: PlanGenerationResultStatus.INTERNAL_ERROR,
+}
+
+
+def describe_attempt(attempt: Attempt, total: int) -> str:
+    what = (
+        f"the whole problem ({total} objects)"
+        if attempt.full
+        else f"{attempt.objects_kept} of {total} objects (tau_class={attempt.thresholds.tau_class:g},"
+        f" tau_element={attempt.thresholds.tau_element:g})"
+    )
+    outcome = attempt.outcome.raw_status or attempt.outcome.status.name
+    if attempt.validation is not None:
+        outcome += (", plan valid on the original problem" if attempt.validation.valid
+                    else ", plan INVALID on the original problem")
+    limit = "no limit" if attempt.time_limit is None else f"limit {attempt.time_limit:.1f} s"
+    return f"attempt {attempt.number}: {what}, {limit} -> {outcome} in {attempt.outcome.wall_time:.2f} s"
+
+
+def _solve_whole(inner: _InnerPlanner, options: PlanOptions, started: float) -> list[Attempt]:
+    """The one attempt when our reader cannot read the problem: the inner engine alone, its own verdict."""
+    limit = None if options.timeout is None else options.timeout - (time.perf_counter() - started)
+    if limit is not None and limit <= 0:
+        return []
+    outcome = inner(None, limit)
+    return [Attempt(1, len(inner.problem.all_objects), None, 0, outcome, None, limit)]
+
+
+def _final_status(result, found, attempts) -> tuple[PlanGenerationResultStatus, str]:
+    if result.status is PlanStatus.SOLVED:
+        summary = f"plan of {len(found.actions)} steps validated on the original problem"
+        if attempts[-1].full and attempts[-1].outcome.optimal:
+            return PlanGenerationResultStatus.SOLVED_OPTIMALLY, summary
+        return PlanGenerationResultStatus.SOLVED_SATISFICING, summary
+    if not attempts or not attempts[-1].full:
+        # The time ran out before the whole problem was tried: a pruned problem's
+        # failure says nothing about the user's problem.
+        return PlanGenerationResultStatus.TIMEOUT, "out of time before a valid plan was found"
+    last = attempts[-1]
+    if result.status is PlanStatus.NO_VALID_PLAN:
+        if last.validation is not None:
+            return PlanGenerationResultStatus.INTERNAL_ERROR, "the inner planner's plan for the whole problem does not validate"
+        if last.outcome.status is PlannerStatus.SEARCH_INCOMPLETE:
+            return PlanGenerationResultStatus.UNSOLVABLE_INCOMPLETELY, "the inner planner found no plan for the whole problem"
+    if result.status is PlanStatus.UNSOLVABLE:
+        return PlanGenerationResultStatus.UNSOLVABLE_PROVEN, "the problem is unsolvable (proven on the whole problem)"
+    status = _PLAN_TO_UP.get(result.status, PlanGenerationResultStatus.INTERNAL_ERROR)
+    return status, f"the inner planner reported {last.outcome.raw_status or last.outcome.status.name} on the whole problem"
+
+
+def _final_status_whole(problem: Problem, found, attempts) -> tuple[PlanGenerationResultStatus, str]:
+    """Without our reader's view of the problem, unified-planning's own validator decides."""
+    if not attempts:
+        return PlanGenerationResultStatus.TIMEOUT, "out of time before a valid plan was found"
+    last = attempts[-1]
+    if found is not None and last.outcome.status is PlannerStatus.SOLVED:
+        validator = SequentialPlanValidator(environment=problem.environment)
+        if validator.validate(problem, found).status is ValidationResultStatus.VALID:
+            return PlanGenerationResultStatus.SOLVED_SATISFICING, \
+                f"plan of {len(found.actions)} steps validated on the original problem"
+        return PlanGenerationResultStatus.INTERNAL_ERROR, "the inner planner's plan does not validate"
+    return {v: k for k, v in _UP_TO_PLANNER.items() if k is not PlanGenerationResultStatus.SOLVED_OPTIMALLY}.get(
+        last.outcome.status, PlanGenerationResultStatus.INTERNAL_ERROR), \
+        f"the inner planner reported {last.outcome.raw_status} on the whole problem"
 
 
 # --------------------------------------------------------------------------- building and mapping back
@@ -375,7 +456,7 @@ def restrict_problem(problem: Problem, removed: AbstractSet[str]) -> Problem:
     identity (``lift_plan`` maps it by name), and no PDDL is parsed a second
     time (the reader costs seconds at scale, and its problem would carry the
     writer's renamed names).  Only ``explicit_initial_values`` is read:
-    ``initial_values`` would grow the user's problem (FACTS.md).  The user's
+    ``initial_values`` would grow the user's problem.  The user's
     problem is never changed, even when nothing is removed: inner PDDL
     planners call ``initial_values`` on what they are given.
     """
@@ -418,30 +499,6 @@ def lift_plan(plan: "up.plans.Plan", problem: Problem) -> SequentialPlan | None:
     except UPValueError:
         return None
     return SequentialPlan(steps, problem.environment)
-
-
-def _is_valid(validator: SequentialPlanValidator, problem: Problem, plan: SequentialPlan) -> bool:
-    return validator.validate(problem, plan).status is ValidationResultStatus.VALID
-
-
-def _final_status(found, attempts, last_result) -> tuple[PlanGenerationResultStatus, str]:
-    if found is not None:
-        summary = f"plan of {len(found.actions)} steps validated on the original problem"
-        if attempts[-1].full and last_result.status is PlanGenerationResultStatus.SOLVED_OPTIMALLY:
-            return PlanGenerationResultStatus.SOLVED_OPTIMALLY, summary
-        return PlanGenerationResultStatus.SOLVED_SATISFICING, summary
-    if not attempts or not attempts[-1].full:
-        # The time ran out before the whole problem was tried: a pruned problem's
-        # failure says nothing about the user's problem.
-        return PlanGenerationResultStatus.TIMEOUT, "out of time before a valid plan was found"
-    last = attempts[-1]
-    if last.plan_valid is False:
-        return PlanGenerationResultStatus.INTERNAL_ERROR, "the inner planner's plan for the whole problem does not validate"
-    if last.status in POSITIVE_OUTCOMES:
-        return PlanGenerationResultStatus.INTERNAL_ERROR, "the inner planner reported a solution without a plan"
-    if last.status is PlanGenerationResultStatus.UNSOLVABLE_PROVEN:
-        return last.status, "the problem is unsolvable (proven on the whole problem)"
-    return last.status, f"the inner planner reported {last.status.name} on the whole problem"
 
 
 # --------------------------------------------------------------------------- registration

@@ -3,7 +3,7 @@
 A small, fast reader for typed PDDL (STRIPS with ADL conditions and
 conditional effects).  It exists because unified-planning's reader costs
 seconds on problems with thousands of objects, renames objects, and must not
-be asked for ``initial_values`` (FACTS.md).  Symbols are lower-cased, as PDDL
+be asked for ``initial_values``.  Symbols are lower-cased, as PDDL
 is case-insensitive; the problem keeps the user's spelling of every object and
 the source spans the writer needs to cut the file without re-formatting it.
 
@@ -334,6 +334,8 @@ class _Reader:
                 self.fail("'not' in an effect takes one atom", node)
             return ("not", self.atom(args[0], ctx))
         if head == "forall":
+            if len(args) != 2:
+                self.fail("'forall' in an effect takes a parameter list and an effect", node)
             params = self.parameters(args[0], ctx.types)
             inner = dict(ctx.variables)
             inner.update(params)

@@ -1,31 +1,38 @@
-"""Prune, plan, validate on the original problem, and widen until solved.
+"""Prune, plan, validate on the original problem, and widen until solved: the one attempt loop.
 
 Methods: ``pure`` (the planner on the original problem), ``relevance``
 (knowledge-model scorer when a model applies, else the goal scorer),
 ``random`` (the paper's baseline) and ``oracle`` (the generator's necessary
 set).  Every plan is checked against the ORIGINAL problem before it is
 reported.  When a pruned problem turns out unsolvable, gives an invalid plan
-or uses up its share of the time, the thresholds are lowered geometrically
-and the best-scored removed objects are added back, closure is applied again,
-and the planner retries; the last attempt is the full problem, so every
-solvable problem is solved given time (PLOI's incremental loop).
+or uses up its share of the time, the selection is widened
+(``relevance.prune.widen``) and the planner retries; the last attempt is the
+full problem, so every solvable problem is solved given time.
+
+:func:`run_attempts` is the loop itself.  It does not know how a planner is
+called: the front end passes a function that runs the planner on one object
+set (``plan_task`` writes the pruned file and calls a registered planner; the
+unified-planning engine restricts a UP problem and calls its inner engine).
+Both then turn the attempts into a :class:`PlanResult` with :func:`summarise`.
 """
 
 from __future__ import annotations
 
 import enum
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 from pathlib import Path
 from typing import Callable, Sequence
 
 from relevance_plan.errors import UsageError
-from relevance_plan.io import load_domain, load_problem, read_text, scratch_directory, write_text_atomic
-from relevance_plan.relevance.knowledge import KnowledgeModel, check_model_applies, find_model, load_model
-from relevance_plan.relevance.prune import PruneResult, Thresholds, prune_with_scores, score_task, widen
-from relevance_plan.planning.runner import PlannerStatus, RunOutcome, run_fast_downward
-from relevance_plan.relevance.scorers import ScoreRequest, Task
+from relevance_plan.io import load_domain, load_problem, scratch_directory, write_text_atomic
+from relevance_plan.planning.planners import make_planner
+from relevance_plan.planning.runner import PlannerStatus, RunOutcome
 from relevance_plan.planning.validate import ValidationResult, ValidationStatus, validate_plan
+from relevance_plan.relevance.knowledge import KnowledgeModel
+from relevance_plan.relevance.prune import PruneResult, Thresholds, widen
+from relevance_plan.relevance.scorers import PlanningTask
+from relevance_plan.relevance.setup import Scoring, ScoringOptions, score_problem
 
 METHODS = ("relevance", "pure", "random", "oracle")
 
@@ -38,6 +45,7 @@ class PlanStatus(enum.Enum):
     OUT_OF_MEMORY = "out-of-memory"
     INSUFFICIENT_CUES = "insufficient-cues"
     INPUT_ERROR = "input-error"
+    UNSUPPORTED = "unsupported"  # the planner cannot take the problem's features
     PLANNER_CONFIG_ERROR = "planner-config-error"
     PLANNER_ERROR = "planner-error"
     VALIDATOR_UNAVAILABLE = "validator-unavailable"
@@ -45,9 +53,12 @@ class PlanStatus(enum.Enum):
 
 @dataclass(frozen=True)
 class PlanOptions:
+    """Everything that decides how one problem is planned; every front end builds one."""
+
     method: str = "relevance"
+    planner: str = "fast-downward"  # a name from planning.planners (fast-downward, up:NAME, cmd:TEMPLATE)
     planner_config: str = "lama-first"
-    timeout: float = 120.0
+    timeout: float | None = 120.0  # None: no limit (the UP engine without a timeout)
     memory_limit_mb: int | None = None
     thresholds: Thresholds = field(default_factory=Thresholds)
     relax: bool = True
@@ -58,7 +69,7 @@ class PlanOptions:
     prefer_free: bool = True  # for 'relevance' with a model: first try without blocked alternatives
     model_path: str | None = None
     objective: str | None = None
-    task: str | None = None
+    model_task: str | None = None
     human: str | None = None
     seed: int = 0
     validators: tuple | None = None
@@ -66,24 +77,51 @@ class PlanOptions:
     def __post_init__(self):
         if self.method not in METHODS:
             raise UsageError(f"unknown method '{self.method}' (choose from: {', '.join(METHODS)})")
-        if not self.timeout > 0:
-            raise UsageError(f"--timeout must be positive, got {self.timeout}")
+        if self.timeout is not None and not 0 < self.timeout < float("inf"):
+            raise UsageError(f"--timeout must be a positive number of seconds, got {self.timeout}")
         if self.memory_limit_mb is not None and self.memory_limit_mb < 16:
             raise UsageError(f"--memory-limit must be at least 16 MB, got {self.memory_limit_mb}")
         if not 0.0 < self.relax_factor < 1.0:
             raise UsageError(f"relax factor must be in (0, 1), got {self.relax_factor}")
+        if not 0.0 < self.first_share <= 1.0:
+            raise UsageError(f"first share must be in (0, 1], got {self.first_share}")
+
+    @property
+    def scoring(self) -> ScoringOptions:
+        """The scoring part of these options (the fields share their names)."""
+        return ScoringOptions(**{name: getattr(self, name) for name in SCORING_FIELDS})
+
+    @classmethod
+    def from_scoring(cls, scoring: ScoringOptions, **planning) -> "PlanOptions":
+        return cls(**{name: getattr(scoring, name) for name in SCORING_FIELDS}, **planning)
+
+    @property
+    def narrows_first(self) -> bool:
+        """Whether the first selection is narrowed (goal filter, blocked alternatives set aside)."""
+        return self.method == "relevance"
+
+
+PLAN_OPTION_FIELDS = tuple(f.name for f in fields(PlanOptions))
+SCORING_FIELDS = tuple(f.name for f in fields(ScoringOptions))
+assert set(SCORING_FIELDS) <= set(PLAN_OPTION_FIELDS), "PlanOptions must carry every scoring option"
 
 
 @dataclass(frozen=True)
 class Attempt:
+    """One planner run on one object set; a found plan was validated on the original problem."""
+
     number: int
     objects_kept: int
     thresholds: Thresholds | None  # None for the full problem
     added_back: int  # removed objects put back by rank at this widening
     outcome: RunOutcome
     validation: ValidationResult | None
-    time_limit: float
+    time_limit: float | None
     validation_time: float = 0.0
+
+    @property
+    def full(self) -> bool:
+        return self.thresholds is None
 
     @property
     def status(self) -> str:
@@ -109,6 +147,9 @@ class PlanResult:
     prune: PruneResult | None = None
     message: str = ""
     peak_memory_mb: float = 0.0
+    planner: str = "fast-downward"
+    scorer: str | None = None
+    log_tail: str = ""  # the last planner's log tail when it failed
 
     @property
     def valid(self) -> bool:
@@ -120,9 +161,14 @@ class PlanResult:
             return self.attempts[0].status
         return self.status.value
 
+    @property
+    def objects_kept_first(self) -> int:
+        return self.attempts[0].objects_kept if self.attempts else self.objects_total
+
     def to_json(self) -> dict:
         return {
             "method": self.method,
+            "planner": self.planner,
             "status": self.status.value,
             "valid": self.valid,
             "validator": self.validation.validator if self.validation else None,
@@ -143,7 +189,7 @@ class PlanResult:
                     "tau_class": a.thresholds.tau_class if a.thresholds else None,
                     "tau_element": a.thresholds.tau_element if a.thresholds else None,
                     "added_back": a.added_back,
-                    "time_limit": round(a.time_limit, 3),
+                    "time_limit": None if a.time_limit is None else round(a.time_limit, 3),
                     "planner_status": a.outcome.status.value,
                     "planner_exit_code": a.outcome.exit_code,
                     "status": a.status,
@@ -163,46 +209,105 @@ _PLANNER_TO_PLAN_STATUS = {
     PlannerStatus.OUT_OF_TIME: PlanStatus.OUT_OF_TIME,
     PlannerStatus.OUT_OF_MEMORY: PlanStatus.OUT_OF_MEMORY,
     PlannerStatus.INPUT_ERROR: PlanStatus.INPUT_ERROR,
-    PlannerStatus.UNSUPPORTED: PlanStatus.INPUT_ERROR,
+    PlannerStatus.UNSUPPORTED: PlanStatus.UNSUPPORTED,
     PlannerStatus.PLANNER_CRASH: PlanStatus.PLANNER_ERROR,
 }
 
+# Planner results that say nothing about the object set: retrying a wider set
+# is pointless, so the loop goes straight to the full problem.  A planner that
+# cannot take the domain's features would refuse the full problem too: stop.
+_PLANNER_FAULTS = (PlannerStatus.INPUT_ERROR, PlannerStatus.PLANNER_CRASH)
 
-def scorer_for(method: str, model: KnowledgeModel | None, override: str | None) -> str:
-    if override:
-        return override
-    if method == "relevance":
-        return "model" if model is not None else "goal"
-    return method
-
-
-def resolve_model(domain_name: str, domain_path: str | None, model_path: str | None) -> KnowledgeModel | None:
-    """The explicit ``--model``, else one found next to the domain or under domains/<name>/."""
-    if model_path is not None:
-        model = load_model(model_path)
-        check_model_applies(model, domain_name)
-        return model
-    found = find_model(domain_name, domain_path)
-    if found is None:
-        return None
-    model = load_model(found)
-    return model if model.domain == domain_name else None
-
-
-def read_sidecar_necessary(problem_path: str) -> frozenset | None:
-    import json
-
-    sidecar = Path(problem_path).with_suffix(".json")
-    if not sidecar.is_file():
-        return None
-    try:
-        data = json.loads(read_text(sidecar, "sidecar"))
-        return frozenset(name.lower() for name in data["necessary"])
-    except (ValueError, KeyError, TypeError):
-        raise UsageError("sidecar has no valid 'necessary' list", path=str(sidecar)) from None
-
+# Driver exit codes that reject the planner configuration, not the task:
+# argparse usage error, search input error, unknown alias (driver input error).
+# The full problem would fail the same way, so the loop stops.
+_CONFIG_ERROR_CODES = (2, 33, 36)
 
 ProgressCallback = Callable[[str], None]
+
+# Runs the planner on one object set (None: the user's full problem) within a
+# time limit (None: no limit) and returns its outcome.
+PlannerCall = Callable[["PruneResult | None", "float | None"], RunOutcome]
+
+
+def first_selection(scoring: Scoring, options: PlanOptions) -> PruneResult:
+    """The object set of the first attempt: thresholds, closure, and for 'relevance' the goal
+    filter and the set-aside of blocked alternatives (a bet on the first attempt only:
+    widening never sets aside, so it brings them back if the bet was wrong)."""
+    narrow = options.narrows_first
+    return scoring.prune(
+        options.thresholds,
+        goal_filter=options.goal_filter and narrow,
+        prefer_free=options.prefer_free and narrow,
+    )
+
+
+def run_attempts(
+    task: PlanningTask,
+    selection: PruneResult | None,
+    call_planner: PlannerCall,
+    options: PlanOptions,
+    *,
+    started: float,
+    model: KnowledgeModel | None = None,
+    say: ProgressCallback | None = None,
+) -> tuple[list[Attempt], float]:
+    """Plan on ``selection`` (None: the full problem), widening after each failure.
+
+    Returns the attempts and the seconds spent widening.  The deadline is
+    ``started + options.timeout``.
+    """
+    say = say or (lambda message: None)
+    total = len(task.problem.objects)
+    deadline = None if options.timeout is None else started + options.timeout
+    goal_filter = options.goal_filter and options.narrows_first
+    attempts: list[Attempt] = []
+    widening_time = 0.0
+    extra: frozenset = frozenset()
+    current = selection
+    while deadline is None or time.perf_counter() < deadline:
+        number = len(attempts) + 1
+        full = current is None or len(current.kept) >= total
+        kept = total if full else len(current.kept)
+        say(f"attempt {number}: the full problem" if full else f"attempt {number}: {kept} of {total} objects")
+        final = full or not options.relax
+        if deadline is None:
+            limit = None
+        else:
+            remaining = max(deadline - time.perf_counter(), 0.5)
+            limit = remaining if final else max(1.0, remaining * options.first_share)
+        outcome = call_planner(None if full else current, limit)
+        validation, validation_time = _validate(task, outcome, options)
+        attempts.append(Attempt(number, kept, None if full else current.thresholds, len(extra), outcome,
+                                validation, limit, validation_time))
+        if validation is not None and validation.status is not ValidationStatus.INVALID:
+            break  # valid, or no validator could run: report it, never retry blindly
+        if not options.relax or full:
+            break
+        if outcome.status is PlannerStatus.UNSUPPORTED:
+            break
+        if outcome.status in _PLANNER_FAULTS:
+            if outcome.exit_code in _CONFIG_ERROR_CODES and outcome.planner == "fast-downward":
+                break
+            say(f"the planner reported {outcome.status.value} on a pruned problem: trying the full problem")
+            current = None
+            continue
+        widen_started = time.perf_counter()
+        current, extra = widen(current, options.relax_factor, extra, model, goal_filter)
+        widening_time += time.perf_counter() - widen_started
+    return attempts, widening_time
+
+
+def _validate(task: PlanningTask, outcome: RunOutcome, options: PlanOptions) -> tuple[ValidationResult | None, float]:
+    if outcome.status is not PlannerStatus.SOLVED:
+        return None, 0.0
+    started = time.perf_counter()
+    validation = validate_plan(task.domain, task.problem, plan_steps(outcome), options.validators)
+    return validation, time.perf_counter() - started
+
+
+def plan_steps(outcome: RunOutcome) -> tuple:
+    return tuple(tuple(step.lower().split()) for step in outcome.plan)
 
 
 def plan_task(
@@ -215,164 +320,105 @@ def plan_task(
     say = progress or (lambda message: None)
     started = time.perf_counter()
     domain_path, problem_path = str(domain_path), str(problem_path)
+    planner = make_planner(options.planner, options.planner_config)
     domain = load_domain(domain_path)
-    problem = load_problem(problem_path, domain)
-    task = Task(domain, problem)
-    total = len(problem.objects)
-    deadline = started + options.timeout
+    task = PlanningTask(domain, load_problem(problem_path, domain))
+    total = len(task.problem.objects)
 
-    if options.method == "pure":
-        say("planning on the full problem")
-        attempt = _attempt(1, task, domain_path, problem_path, options, deadline, None, 0, total, final=True)
-        return _finish(task, options, [attempt], started, 0.0, None)
-
-    model = resolve_model(domain.name, domain_path, options.model_path)
-    scorer = scorer_for(options.method, model, options.scorer)
-    request = ScoreRequest(
-        model=model,
-        objective=options.objective,
-        task=options.task,
-        human=options.human,
-        seed=options.seed,
-        necessary=read_sidecar_necessary(problem_path) if scorer == "oracle" else None,
-    )
-    say(f"scoring {total} objects with the {scorer} scorer")
-    scores = score_task(task, scorer, request)
-    if not scores.sufficient:
-        elapsed = time.perf_counter() - started
-        return PlanResult(
-            method=options.method,
-            status=PlanStatus.INSUFFICIENT_CUES,
-            wall_time=elapsed,
-            relevance_time=elapsed,
-            objects_total=total,
-            message=scores.insufficiency,
-        )
-    goal_filter = options.goal_filter and options.method == "relevance"
-    # Setting blocked alternatives aside is a bet on the first attempt only: widening
-    # (which never sets aside) brings them back if the bet was wrong.
-    prefer_free = options.prefer_free and options.method == "relevance"
-    pruned = prune_with_scores(task, scores, options.thresholds, model, goal_filter=goal_filter,
-                               prefer_free=prefer_free)
+    scoring = None
+    selection = None
+    if options.method != "pure":
+        scoring = score_problem(task, options.scoring, method=options.method, domain_path=domain_path,
+                                problem_path=problem_path)
+        say(f"scoring {total} objects with the {scoring.scorer} scorer")
+        if not scoring.scores.sufficient:
+            elapsed = time.perf_counter() - started
+            return PlanResult(method=options.method, status=PlanStatus.INSUFFICIENT_CUES, wall_time=elapsed,
+                              relevance_time=elapsed, objects_total=total, message=scoring.scores.insufficiency,
+                              planner=planner.name, scorer=scoring.scorer)
+        selection = first_selection(scoring, options)
+        say(f"kept {len(selection.kept)} of {total} objects ({len(selection.restored)} restored by closure"
+            + (f", {len(selection.set_aside)} blocked alternatives set aside)" if selection.set_aside else ")"))
     relevance_time = time.perf_counter() - started
-    say(f"kept {len(pruned.kept)} of {total} objects ({len(pruned.restored)} restored by closure"
-        + (f", {len(pruned.set_aside)} blocked alternatives set aside)" if pruned.set_aside else ")"))
 
-    attempts: list[Attempt] = []
-    thresholds = options.thresholds
-    extra: frozenset = frozenset()
-    current = pruned
     with scratch_directory() as scratch:
-        while time.perf_counter() < deadline:
-            number = len(attempts) + 1
-            full = len(current.kept) >= total
-            if full:
-                say(f"attempt {number}: the full problem")
-                target = problem_path
-            else:
-                say(f"attempt {number}: {len(current.kept)} of {total} objects")
-                target = str(write_text_atomic(Path(scratch) / f"pruned-{number}.pddl", current.text))
-            attempt = _attempt(
-                number, task, domain_path, target, options, deadline,
-                None if full else thresholds, len(extra), len(current.kept), final=full or not options.relax,
-            )
-            attempts.append(attempt)
-            if attempt.validation is not None and attempt.validation.status is not ValidationStatus.INVALID:
-                break  # valid, or no validator could run: report it, never retry blindly
-            if not options.relax or full or attempt.outcome.status in _PLANNER_FAULTS:
-                break
-            # Widen: lower the thresholds and put back the best-ranked removed objects.
-            widen_started = time.perf_counter()
-            current, extra = widen(current, options.relax_factor, extra, model, goal_filter)
-            thresholds = current.thresholds
-            relevance_time += time.perf_counter() - widen_started
-    return _finish(task, options, attempts, started, relevance_time, pruned)
+        def call_planner(chosen: PruneResult | None, limit: float | None) -> RunOutcome:
+            target = problem_path
+            if chosen is not None:
+                target = str(write_text_atomic(Path(scratch) / f"pruned-{len(chosen.kept)}.pddl", chosen.text))
+            return planner.run(domain_path, target, time_limit=limit, memory_limit_mb=options.memory_limit_mb)
+
+        attempts, widening_time = run_attempts(task, selection, call_planner, options, started=started,
+                                               model=scoring.model if scoring else None, say=say)
+    return summarise(task, options, attempts, started, relevance_time + widening_time, selection,
+                     planner=planner.name, scorer=scoring.scorer if scoring else None)
 
 
-# Driver exit codes that reject the planner configuration, not the task:
-# argparse usage error, search input error, unknown alias (driver input error).
-_CONFIG_ERROR_CODES = (2, 33, 36)
-
-_PLANNER_FAULTS = (PlannerStatus.INPUT_ERROR, PlannerStatus.UNSUPPORTED, PlannerStatus.PLANNER_CRASH)
-
-
-def _attempt(number, task, domain_path, problem_path, options, deadline, thresholds, added_back, kept, final) -> Attempt:
-    """One planner run on ``problem_path``; a found plan is validated on the original problem."""
-    remaining = max(deadline - time.perf_counter(), 0.5)
-    limit = remaining if final else max(1.0, remaining * options.first_share)
-    outcome = run_fast_downward(
-        domain_path,
-        problem_path,
-        config=options.planner_config,
-        time_limit=limit,
-        memory_limit_mb=options.memory_limit_mb,
-    )
-    validation = None
-    validation_time = 0.0
-    if outcome.status is PlannerStatus.SOLVED:
-        validation_started = time.perf_counter()
-        steps = tuple(tuple(step.lower().split()) for step in outcome.plan)
-        validation = validate_plan(task.domain, task.problem, steps, options.validators)
-        validation_time = time.perf_counter() - validation_started
-    return Attempt(number, kept, thresholds, added_back, outcome, validation, limit, validation_time)
-
-
-def _finish(task: Task, options: PlanOptions, attempts: Sequence[Attempt], started: float, relevance_time: float, pruned) -> PlanResult:
-    planner_time = sum(a.outcome.wall_time for a in attempts)
+def summarise(
+    task: PlanningTask,
+    options: PlanOptions,
+    attempts: Sequence[Attempt],
+    started: float,
+    relevance_time: float,
+    selection: PruneResult | None,
+    planner: str = "fast-downward",
+    scorer: str | None = None,
+) -> PlanResult:
+    """The result of a run of attempts: the plan of the last attempt if it validated, else why not."""
     total = len(task.problem.objects)
     common = dict(
         method=options.method,
         attempts=tuple(attempts),
         wall_time=time.perf_counter() - started,
         relevance_time=relevance_time,
-        planner_time=planner_time,
+        planner_time=sum(a.outcome.wall_time for a in attempts),
         validation_time=sum(a.validation_time for a in attempts),
         objects_total=total,
-        prune=pruned,
+        prune=selection,
         peak_memory_mb=max((a.outcome.peak_memory_mb for a in attempts), default=0.0),
+        planner=planner,
+        scorer=scorer,
     )
-    if attempts and attempts[-1].outcome.status is PlannerStatus.SOLVED:
-        last = attempts[-1]
+    if not attempts:
+        return PlanResult(status=PlanStatus.OUT_OF_TIME, message="no time left for planning", **common)
+    last = attempts[-1]
+    common["objects_kept"] = last.objects_kept
+    if last.outcome.status is PlannerStatus.SOLVED:
         validation = last.validation
         if validation is not None and validation.valid:
-            plan = tuple(tuple(step.lower().split()) for step in last.outcome.plan)
+            plan = plan_steps(last.outcome)
             return PlanResult(
                 status=PlanStatus.SOLVED,
                 plan=plan,
                 plan_cost=last.outcome.plan_cost,
                 validation=validation,
-                objects_kept=last.objects_kept,
                 message=f"plan of {len(plan)} steps validated on the original problem ({validation.validator})",
                 **common,
             )
         if validation is not None and validation.status is ValidationStatus.UNAVAILABLE:
-            return PlanResult(
-                status=PlanStatus.VALIDATOR_UNAVAILABLE,
-                validation=validation,
-                objects_kept=last.objects_kept,
-                message=f"a plan was found but NO VALIDATOR COULD RUN: {validation.message}",
-                **common,
-            )
+            return PlanResult(status=PlanStatus.VALIDATOR_UNAVAILABLE, validation=validation,
+                              message=f"a plan was found but NO VALIDATOR COULD RUN: {validation.message}", **common)
         return PlanResult(
             status=PlanStatus.NO_VALID_PLAN,
             validation=validation,
-            objects_kept=last.objects_kept,
             message=f"the plan failed validation on the original problem: {validation.message if validation else ''}",
             **common,
         )
-    if not attempts:
-        return PlanResult(status=PlanStatus.OUT_OF_TIME, message="no time left for planning", **common)
-    last = attempts[-1]
-    full = last.objects_kept >= total
     status = _PLANNER_TO_PLAN_STATUS.get(last.outcome.status, PlanStatus.PLANNER_ERROR)
-    if status is PlanStatus.INPUT_ERROR and last.outcome.exit_code in _CONFIG_ERROR_CODES:
+    if status is PlanStatus.INPUT_ERROR and last.outcome.exit_code in _CONFIG_ERROR_CODES \
+            and last.outcome.planner == "fast-downward":
         status = PlanStatus.PLANNER_CONFIG_ERROR
-    if status is PlanStatus.UNSOLVABLE and not full:
+    if status is PlanStatus.UNSOLVABLE and not last.full:
         # Only the full problem's unsolvability says anything about the user's problem.
         status = PlanStatus.NO_VALID_PLAN
-        message = "the pruned problem is unsolvable (pruning removed something needed; relaxation is off)"
+        why = "relaxation is off" if not options.relax else "no time was left to widen it"
+        message = f"the pruned problem is unsolvable (pruning removed something needed; {why})"
     elif status is PlanStatus.UNSOLVABLE:
         message = "the problem is unsolvable"
     else:
         message = f"planner: {last.outcome.status.value} (exit code {last.outcome.exit_code})"
-    return PlanResult(status=status, objects_kept=last.objects_kept, message=message, **common)
+        output = last.outcome.log_tail.strip().splitlines()
+        if output and status in (PlanStatus.PLANNER_ERROR, PlanStatus.INPUT_ERROR, PlanStatus.UNSUPPORTED,
+                                 PlanStatus.PLANNER_CONFIG_ERROR):
+            message += f"; last planner output: {output[-1].strip()[:200]}"
+    return PlanResult(status=status, message=message, log_tail=last.outcome.log_tail, **common)

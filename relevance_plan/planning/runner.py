@@ -136,14 +136,17 @@ class RunOutcome:
     plan: tuple[str, ...]
     plan_cost: int | None
     wall_time: float
-    cpu_time: float
-    peak_memory_mb: float
-    translate_time: float | None
-    search_time: float | None
-    config: str
-    log_tail: str
-    killed_by_watchdog: bool
-    process_group: int
+    cpu_time: float = 0.0
+    peak_memory_mb: float = 0.0
+    translate_time: float | None = None
+    search_time: float | None = None
+    config: str = ""
+    log_tail: str = ""
+    killed_by_watchdog: bool = False
+    process_group: int | None = None
+    planner: str = "fast-downward"
+    raw_status: str = ""  # the planner's own word for the outcome (an engine's status name), for logs
+    optimal: bool = False  # the planner proved the plan optimal
 
     @property
     def solved(self) -> bool:
@@ -359,6 +362,59 @@ def _classify(exit_code: int, has_plan: bool, killed_by_watchdog: bool, log: str
     return _refine_status(status, exit_code, log, cpu_time, driver_time_limit)
 
 
+@dataclass(frozen=True)
+class ProcessRun:
+    wait_status: int
+    exit_code: int
+    cpu_time: float
+    peak_memory_mb: float
+    watchdog_fired: bool
+    wall_time: float
+    process_group: int
+
+
+def _limit_memory(megabytes: int) -> None:
+    import resource
+
+    limit = megabytes * 1024 * 1024
+    resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+
+
+def run_process_group(command: list[str], workdir: Path, deadline: float | None, *, what: str,
+                      program: Path | str, env: dict | None = None,
+                      memory_limit_mb: int | None = None) -> ProcessRun:
+    """Run ``command`` in ``workdir`` as the leader of its own session, output to ``workdir/planner.log``.
+
+    A watchdog kills the whole group ``deadline`` seconds after the start;
+    the group is killed and reaped in every case (Ctrl-C included).  Every
+    planner adapter runs its processes through here.
+    """
+    started = time.monotonic()
+    # A file, not a pipe: nobody has to drain it while we wait.
+    with open(workdir / LOG_FILE, "wb") as log_file:
+        try:
+            process = subprocess.Popen(
+                command, cwd=workdir, stdin=subprocess.DEVNULL, stdout=log_file,
+                stderr=subprocess.STDOUT, start_new_session=True, close_fds=True, env=env,
+                preexec_fn=None if memory_limit_mb is None else functools.partial(_limit_memory, memory_limit_mb))
+        except OSError as error:
+            raise errors.PlannerError(f"cannot start {what}: {error.strerror or error}",
+                                      path=str(program)) from None
+    # start_new_session: the process leads its own group, pgid == pid.
+    pgid = process.pid
+    with _ACTIVE_LOCK:
+        _ACTIVE_GROUPS.add(pgid)
+    try:
+        wait_status, cpu_time, peak_mb, fired = _wait_for_group(pgid, deadline)
+    finally:
+        with _ACTIVE_LOCK:
+            _ACTIVE_GROUPS.discard(pgid)
+    exit_code = _exit_code(wait_status)
+    # We reaped it ourselves (for the rusage); tell Popen so it never waits.
+    process.returncode = exit_code
+    return ProcessRun(wait_status, exit_code, cpu_time, peak_mb, fired, time.monotonic() - started, pgid)
+
+
 def run_fast_downward(
     domain_path: str | os.PathLike[str],
     problem_path: str | os.PathLike[str],
@@ -399,50 +455,27 @@ def run_fast_downward(
 
     with tempfile.TemporaryDirectory(prefix="relevance-plan-fd-") as tmp:
         workdir = Path(tmp)
-        started = time.monotonic()
-        # A file, not a pipe: nobody has to drain it while we wait.
-        with open(workdir / LOG_FILE, "wb") as log_file:
-            try:
-                process = subprocess.Popen(
-                    command, cwd=workdir, stdin=subprocess.DEVNULL, stdout=log_file,
-                    stderr=subprocess.STDOUT, start_new_session=True, close_fds=True)
-            except OSError as error:
-                raise errors.PlannerError(f"cannot start Fast Downward: {error}",
-                                          path=str(driver)) from error
-        # start_new_session: the driver leads its own group, pgid == pid.
-        pgid = process.pid
-        with _ACTIVE_LOCK:
-            _ACTIVE_GROUPS.add(pgid)
-        try:
-            wait_status, cpu_time, peak_mb, fired = _wait_for_group(pgid, deadline)
-        finally:
-            with _ACTIVE_LOCK:
-                _ACTIVE_GROUPS.discard(pgid)
-        wall_time = time.monotonic() - started
-        exit_code = _exit_code(wait_status)
-        # We reaped it ourselves (for the rusage); tell Popen so it never waits.
-        process.returncode = exit_code
-
+        run = run_process_group(command, workdir, deadline, what="Fast Downward", program=driver)
         log = (workdir / LOG_FILE).read_text(errors="replace")
         plan = _read_plan(workdir)
-
-    killed_by_watchdog = fired and os.WIFSIGNALED(wait_status)
-    status = _classify(exit_code, plan is not None, killed_by_watchdog, log, cpu_time,
+    killed_by_watchdog = run.watchdog_fired and os.WIFSIGNALED(run.wait_status)
+    status = _classify(run.exit_code, plan is not None, killed_by_watchdog, log, run.cpu_time,
                        time_limit if driver_limits else None)
     return RunOutcome(
         status=status,
-        exit_code=exit_code,
+        exit_code=run.exit_code,
         plan=plan[0] if plan is not None else (),
         plan_cost=plan[1] if plan is not None else None,
-        wall_time=wall_time,
-        cpu_time=cpu_time,
-        peak_memory_mb=peak_mb,
+        wall_time=run.wall_time,
+        cpu_time=run.cpu_time,
+        peak_memory_mb=run.peak_memory_mb,
         translate_time=_last_float(_TRANSLATE_DONE_RE, log),
         search_time=_search_time(log),
         config=config,
         log_tail="\n".join(log.splitlines()[-LOG_TAIL_LINES:]),
         killed_by_watchdog=killed_by_watchdog,
-        process_group=pgid,
+        process_group=run.process_group,
+        raw_status=status.name,
     )
 
 

@@ -10,7 +10,7 @@ from relevance_plan.relevance.analysis import ConstraintRule, infer_constraint_r
 from relevance_plan.relevance.closure import Restored, close_over_constraints
 from relevance_plan.relevance.reachability import repair_selection
 from relevance_plan.relevance.knowledge import KnowledgeModel, check_threshold
-from relevance_plan.relevance.scorers import SCORERS, ScoreRequest, ScoreResult, Task
+from relevance_plan.relevance.scorers import SCORERS, ScoreRequest, ScoreResult, PlanningTask
 from relevance_plan.errors import UsageError
 from relevance_plan.pddl.writer import write_pruned_problem
 
@@ -35,7 +35,7 @@ class Thresholds:
 
 @dataclass(frozen=True)
 class PruneResult:
-    task: Task
+    task: PlanningTask
     scores: ScoreResult
     thresholds: Thresholds
     selected: frozenset  # passed the thresholds (plus goal objects)
@@ -53,7 +53,7 @@ class PruneResult:
         return self.scores.sufficient
 
 
-def constraint_rules(task: Task, model: KnowledgeModel | None) -> tuple[ConstraintRule, ...]:
+def constraint_rules(task: PlanningTask, model: KnowledgeModel | None) -> tuple[ConstraintRule, ...]:
     rules = list(infer_constraint_rules(task.domain, task.init_index))
     if model is not None:
         for dependency in model.dependencies:
@@ -63,14 +63,14 @@ def constraint_rules(task: Task, model: KnowledgeModel | None) -> tuple[Constrai
     return tuple(rules)
 
 
-def can_serve_goal(task: Task, name: str) -> bool:
+def can_serve_goal(task: PlanningTask, name: str) -> bool:
     """Whether the object can fill a role toward the goal (see ``analysis.analyse_goal``)."""
     roles = task.goal_analysis.role_depth
     domain = task.typing.domain
     return name in task.goal_objects or any(t in roles for t in domain.ancestors(task.object_type(name)))
 
 
-def select_relevant(task: Task, scores: ScoreResult, thresholds: Thresholds, goal_filter: bool = False) -> frozenset:
+def select_relevant(task: PlanningTask, scores: ScoreResult, thresholds: Thresholds, goal_filter: bool = False) -> frozenset:
     """Elements whose class passes tau_c (when classes are scored) and whose score passes tau_e.
 
     With ``goal_filter``, relevant objects no action toward the goal can use
@@ -89,7 +89,7 @@ def select_relevant(task: Task, scores: ScoreResult, thresholds: Thresholds, goa
     return frozenset(selected)
 
 
-def free_alternatives(task: Task, scores: ScoreResult, selected: frozenset, restored: Sequence[Restored]) -> frozenset:
+def free_alternatives(task: PlanningTask, scores: ScoreResult, selected: frozenset, restored: Sequence[Restored]) -> frozenset:
     """``selected`` without the objects that something stands on, when another selected
     object of the same model class stands free.
 
@@ -116,7 +116,7 @@ def free_alternatives(task: Task, scores: ScoreResult, selected: frozenset, rest
 
 
 def prune_with_scores(
-    task: Task,
+    task: PlanningTask,
     scores: ScoreResult,
     thresholds: Thresholds = Thresholds(),
     model: KnowledgeModel | None = None,
@@ -178,7 +178,7 @@ def prune_with_scores(
     )
 
 
-def full_problem(task: Task, scores: ScoreResult, thresholds: Thresholds, selected=frozenset(), restored=()) -> PruneResult:
+def full_problem(task: PlanningTask, scores: ScoreResult, thresholds: Thresholds, selected=frozenset(), restored=()) -> PruneResult:
     """The result that keeps every object: the attempt loop plans on the user's own file."""
     return PruneResult(
         task=task,
@@ -191,7 +191,7 @@ def full_problem(task: Task, scores: ScoreResult, thresholds: Thresholds, select
     )
 
 
-def score_task(task: Task, scorer: str, request: ScoreRequest) -> ScoreResult:
+def score_task(task: PlanningTask, scorer: str, request: ScoreRequest) -> ScoreResult:
     if scorer not in SCORERS:
         raise UsageError(f"unknown scorer '{scorer}' (choose from: {', '.join(SCORERS)})")
     return SCORERS[scorer](task, request)
@@ -234,7 +234,7 @@ def widen(
     return widened, extra
 
 
-def ranked_names(task: Task, scores: ScoreResult, kept: AbstractSet[str] = frozenset()) -> list[str]:
+def ranked_names(task: PlanningTask, scores: ScoreResult, kept: AbstractSet[str] = frozenset()) -> list[str]:
     """Objects outside ``kept``, most relevant first: by score, then by hops from the goal's objects."""
     values = scores.element_scores
     distance = task.goal_distance

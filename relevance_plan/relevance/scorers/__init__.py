@@ -8,13 +8,13 @@ from __future__ import annotations
 
 from typing import Callable
 
-from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult, Task
+from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult, PlanningTask
 from relevance_plan.relevance.scorers.goal import score_by_goal
 from relevance_plan.relevance.scorers.model import score_by_model
 from relevance_plan.relevance.scorers.oracle import score_by_oracle
 from relevance_plan.relevance.scorers.random import score_randomly
 
-Scorer = Callable[[Task, ScoreRequest], ScoreResult]
+Scorer = Callable[[PlanningTask, ScoreRequest], ScoreResult]
 
 SCORERS: dict[str, Scorer] = {
     "model": score_by_model,
@@ -23,4 +23,4 @@ SCORERS: dict[str, Scorer] = {
     "oracle": score_by_oracle,
 }
 
-__all__ = ["SCORERS", "Scorer", "ScoreRequest", "ScoreResult", "Task"]
+__all__ = ["SCORERS", "Scorer", "ScoreRequest", "ScoreResult", "PlanningTask"]

@@ -13,7 +13,7 @@ from relevance_plan.pddl.reader import Domain, Problem, goal_objects
 
 
 @dataclass(frozen=True, eq=False)
-class Task:
+class PlanningTask:
     """A domain and problem with the analyses several stages share, computed once."""
 
     domain: Domain
@@ -51,7 +51,7 @@ class Task:
 class ScoreRequest:
     model: KnowledgeModel | None = None
     objective: str | None = None
-    task: str | None = None
+    model_task: str | None = None  # the knowledge model's task (a kind of activity), not the planning task
     human: str | None = None
     seed: int = 0
     necessary: frozenset | None = None  # the oracle's answer, from a generator sidecar

@@ -21,7 +21,7 @@ widening bring the others back in this order when needed.
 
 from __future__ import annotations
 
-from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult, Task
+from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult, PlanningTask
 
 ROLE_DECAY = 0.6
 NEIGHBOUR_SCORE = 0.3
@@ -30,7 +30,7 @@ DISTANCE_DECAY = 0.5
 FAR = 8
 
 
-def score_by_goal(task: Task, request: ScoreRequest) -> ScoreResult:
+def score_by_goal(task: PlanningTask, request: ScoreRequest) -> ScoreResult:
     domain, problem = task.typing.domain, task.typing.problem
     analysis = task.goal_analysis
     goal_objects = task.goal_objects

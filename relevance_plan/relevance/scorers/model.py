@@ -13,12 +13,13 @@ matches, or the model knows too few of the scene's objects, the result is
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass, field
 
 from relevance_plan.errors import ModelError
-from relevance_plan.relevance.knowledge import KnowledgeModel, ModelClass
+from relevance_plan.relevance.knowledge import Human, KnowledgeModel, ModelClass
 from relevance_plan.pddl.reader import formula_atoms
 from relevance_plan.relevance.scene import Element, build_scene
-from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult, Task
+from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult, PlanningTask
 
 UNKNOWN_CLASS = "(unknown)"
 # More than this share of objects of unknown class: the model is not about this scene.
@@ -41,14 +42,14 @@ def classify(element: Element, model: KnowledgeModel) -> ModelClass | None:
     return None
 
 
-def _choose_objective(task: Task, model: KnowledgeModel, request: ScoreRequest) -> tuple[str | None, str]:
+def _choose_objective(goal, model: KnowledgeModel, request: ScoreRequest) -> tuple[str | None, str]:
     if request.objective is not None:
         if request.objective not in model.objectives:
             raise ModelError(
                 f"unknown objective '{request.objective}' (model has: {', '.join(model.objectives)})", path=model.path
             )
         return request.objective, ""
-    goal_predicates = {atom[1] for atom, _ in formula_atoms(task.problem.goal)}
+    goal_predicates = {atom[1] for atom, _ in formula_atoms(goal)}
     matches = model.objective_for_goal(goal_predicates)
     if not matches:
         return None, (
@@ -62,7 +63,59 @@ def _choose_objective(task: Task, model: KnowledgeModel, request: ScoreRequest) 
     return best[0], ""
 
 
-def score_by_model(task: Task, request: ScoreRequest) -> ScoreResult:
+@dataclass
+class ModelContext:
+    """What the scene-independent part of the model says for one goal and one request:
+    the objective, P(task | objective), and how relevant each class and kind is.
+
+    ``insufficiency`` is non-empty when the cues do not decide relevance (no
+    objective, or P(task | O) too uncertain).  Element scores follow from the
+    context and each element's own description (:func:`score_element`), which
+    is what lets the live session re-score one element at a time.
+    """
+
+    model: KnowledgeModel
+    human: Human | None
+    objective: str | None
+    distribution: dict
+    entropy: float | None
+    insufficiency: str = ""
+    _class_values: dict = field(default_factory=dict, repr=False)
+
+    def class_given_task(self, task_name: str, class_name: str) -> float:
+        if self.human is not None:
+            preferred = self.human.task_classes.get(task_name, {})
+            if class_name in preferred:
+                return preferred[class_name]
+        # A class a task does not mention is irrelevant to it.
+        return self.model.task_classes[task_name].get(class_name, 0.0)
+
+    def kind_relevance(self, model_class: ModelClass, kind: str) -> float:
+        human = self.human
+        if human is not None and kind in human.kind_relevance.get(model_class.name, {}):
+            return human.kind_relevance[model_class.name][kind]
+        if model_class.fixed_relevance is not None and kind not in model_class.kind_relevance:
+            return 1.0  # a fixed-relevance class (the human) has no kinds to weigh
+        return model_class.kind_relevance.get(kind, model_class.default_kind_relevance)
+
+    def class_relevance(self, class_name: str) -> float:
+        """R(C) of a class not scored by its contents (places are; see :func:`contents_scores`)."""
+        value = self._class_values.get(class_name)
+        if value is None:
+            if class_name == UNKNOWN_CLASS:
+                value = self.model.unknown_class_relevance
+            else:
+                model_class = self.model.classes[class_name]
+                if model_class.fixed_relevance is not None:
+                    value = model_class.fixed_relevance
+                else:
+                    value = sum(self.class_given_task(t, class_name) * p for t, p in self.distribution.items())
+            self._class_values[class_name] = value
+        return value
+
+
+def model_context(goal, request: ScoreRequest) -> ModelContext:
+    """The objective and P(task | objective) for ``goal`` (a formula) under ``request``."""
     model = request.model
     if model is None:
         raise ModelError("the model scorer needs a knowledge model (--model FILE)")
@@ -72,110 +125,111 @@ def score_by_model(task: Task, request: ScoreRequest) -> ScoreResult:
         if human is None:
             known = ", ".join(model.humans) or "none"
             raise ModelError(f"unknown human '{request.human}' (model has: {known})", path=model.path)
-    scene = build_scene(task.domain, task.problem, model.scene)
-    objective, problem_with_objective = _choose_objective(task, model, request)
-
-    def insufficient(message: str, distribution=None, entropy=None) -> ScoreResult:
-        return ScoreResult(
-            "model",
-            {name: 0.0 for name in task.problem.objects},
-            sufficient=False,
-            insufficiency=message,
-            objective=objective,
-            task_distribution=dict(distribution or {}),
-            task_entropy=entropy,
-        )
-
+    objective, problem_with_objective = _choose_objective(goal, model, request)
     if objective is None:
-        return insufficient(problem_with_objective)
-
-    if request.task is not None:
-        if request.task not in model.task_classes:
+        return ModelContext(model, human, None, {}, None, problem_with_objective)
+    if request.model_task is not None:
+        if request.model_task not in model.task_classes:
             raise ModelError(
-                f"unknown task '{request.task}' (model has: {', '.join(model.task_classes)})", path=model.path
+                f"unknown task '{request.model_task}' (model has: {', '.join(model.task_classes)})", path=model.path
             )
-        distribution = {request.task: 1.0}
+        distribution = {request.model_task: 1.0}
     elif human is not None and objective in human.objective_tasks:
         distribution = dict(human.objective_tasks[objective])
     else:
         distribution = dict(model.objectives[objective].tasks)
     entropy = task_entropy(distribution)
+    insufficiency = ""
     if entropy > model.entropy_bound:
         leading = sorted(distribution.items(), key=lambda item: -item[1])[:3]
         shown = ", ".join(f"{name} {p:.2f}" for name, p in leading)
-        return insufficient(
+        insufficiency = (
             f"objective ambiguous: {shown} (entropy {entropy:.2f} > {model.entropy_bound:.2f} nats)"
-            " — give --task or --human",
-            distribution,
-            entropy,
+            " — give --task or --human"
         )
+    return ModelContext(model, human, objective, distribution, entropy, insufficiency)
 
-    def class_given_task(task_name: str, class_name: str) -> float:
-        if human is not None:
-            preferred = human.task_classes.get(task_name, {})
-            if class_name in preferred:
-                return preferred[class_name]
-        # A class a task does not mention is irrelevant to it.
-        return model.task_classes[task_name].get(class_name, 0.0)
 
-    def kind_relevance(model_class: ModelClass, kind: str) -> float:
-        if human is not None and kind in human.kind_relevance.get(model_class.name, {}):
-            return human.kind_relevance[model_class.name][kind]
-        if model_class.fixed_relevance is not None and kind not in model_class.kind_relevance:
-            return 1.0  # a fixed-relevance class (the human) has no kinds to weigh
-        return model_class.kind_relevance.get(kind, model_class.default_kind_relevance)
+def class_of(element: Element, model: KnowledgeModel) -> str:
+    found = classify(element, model)
+    return found.name if found is not None else UNKNOWN_CLASS
 
-    element_class: dict[str, str] = {}
-    for name, element in scene.elements.items():
-        found = classify(element, model)
-        element_class[name] = found.name if found is not None else UNKNOWN_CLASS
+
+def scored_by_contents(class_name: str, model: KnowledgeModel) -> bool:
+    return class_name != UNKNOWN_CLASS and model.classes[class_name].from_contents
+
+
+def score_element(context: ModelContext, element: Element, class_name: str) -> tuple[float, str]:
+    """R(e) and its explanation for an element whose class is not scored by its contents."""
+    model = context.model
+    if class_name == UNKNOWN_CLASS:
+        return model.unknown_class_relevance, f"class unknown to the model: default {model.unknown_class_relevance:g}"
+    model_class = model.classes[class_name]
+    class_relevance = context.class_relevance(class_name)
+    kind_p = context.kind_relevance(model_class, element.kind)
+    placement = 1.0
+    factors = []
+    for condition in sorted(element.conditions):
+        factor = model.placement.get(condition)
+        if factor is not None:
+            placement *= factor
+            factors.append(f"{condition} {factor:g}")
+    return class_relevance * placement * kind_p, (
+        f"R({class_name})={class_relevance:.2f} x P(kind {element.kind})={kind_p:.2f}"
+        f" x placement={placement:.2f}" + (f" ({', '.join(factors)})" if factors else "")
+    )
+
+
+def contents_explanation(score: float) -> str:
+    return f"holds items of relevance up to {score:.2f}"
+
+
+def unknown_share_problem(known: int, total: int) -> str:
+    """Why the model cannot judge a scene with ``known`` of ``total`` elements classified ("" if it can)."""
+    if total and total - known > MAX_UNKNOWN_SHARE * total:
+        return (
+            f"the model knows the class of only {known} of {total}"
+            " objects — give a model for this domain (--model) or use --scorer goal"
+        )
+    return ""
+
+
+def insufficient_result(objects, context: ModelContext, message: str) -> ScoreResult:
+    return ScoreResult(
+        "model",
+        {name: 0.0 for name in objects},
+        sufficient=False,
+        insufficiency=message,
+        objective=context.objective,
+        task_distribution=dict(context.distribution),
+        task_entropy=context.entropy,
+    )
+
+
+def score_by_model(task: PlanningTask, request: ScoreRequest) -> ScoreResult:
+    context = model_context(task.problem.goal, request)
+    model = context.model
+    if context.insufficiency:
+        return insufficient_result(task.problem.objects, context, context.insufficiency)
+    scene = build_scene(task.domain, task.problem, model.scene)
+
+    element_class: dict[str, str] = {name: class_of(element, model) for name, element in scene.elements.items()}
     unknown = tuple(sorted(name for name, c in element_class.items() if c == UNKNOWN_CLASS))
-    if scene.elements and len(unknown) > MAX_UNKNOWN_SHARE * len(scene.elements):
-        return insufficient(
-            f"the model knows the class of only {len(scene.elements) - len(unknown)} of {len(scene.elements)}"
-            " objects — give a model for this domain (--model) or use --scorer goal",
-            distribution,
-            entropy,
-        )
+    problem = unknown_share_problem(len(scene.elements) - len(unknown), len(scene.elements))
+    if problem:
+        return insufficient_result(task.problem.objects, context, problem)
 
     class_scores: dict[str, float] = {}
     for class_name in sorted(set(element_class.values())):
-        if class_name == UNKNOWN_CLASS:
-            class_scores[class_name] = model.unknown_class_relevance
-            continue
-        model_class = model.classes[class_name]
-        if model_class.fixed_relevance is not None:
-            class_scores[class_name] = model_class.fixed_relevance
-        elif not model_class.from_contents:
-            class_scores[class_name] = sum(
-                class_given_task(task_name, class_name) * p for task_name, p in distribution.items()
-            )
+        if not scored_by_contents(class_name, model):
+            class_scores[class_name] = context.class_relevance(class_name)
 
     scores: dict[str, float] = {}
     explanations: dict[str, str] = {}
     for name, element in scene.elements.items():
         class_name = element_class[name]
-        if class_name == UNKNOWN_CLASS:
-            scores[name] = model.unknown_class_relevance
-            explanations[name] = f"class unknown to the model: default {model.unknown_class_relevance:g}"
-            continue
-        model_class = model.classes[class_name]
-        if model_class.from_contents:
-            continue
-        class_relevance = class_scores[class_name]
-        kind_p = kind_relevance(model_class, element.kind)
-        placement = 1.0
-        factors = []
-        for condition in sorted(element.conditions):
-            factor = model.placement.get(condition)
-            if factor is not None:
-                placement *= factor
-                factors.append(f"{condition} {factor:g}")
-        scores[name] = class_relevance * placement * kind_p
-        explanations[name] = (
-            f"R({class_name})={class_relevance:.2f} x P(kind {element.kind})={kind_p:.2f}"
-            f" x placement={placement:.2f}" + (f" ({', '.join(factors)})" if factors else "")
-        )
+        if not scored_by_contents(class_name, model):
+            scores[name], explanations[name] = score_element(context, element, class_name)
     # Places (and other classes scored by contents) are as relevant as the best
     # item they hold whose class is relevant; the class threshold is applied later.
     contents: dict[str, float] = {}
@@ -186,9 +240,9 @@ def score_by_model(task: Task, request: ScoreRequest) -> ScoreResult:
         if name in scores:
             continue
         scores[name] = contents.get(name, 0.0)
-        explanations[name] = f"holds items of relevance up to {scores[name]:.2f}"
+        explanations[name] = contents_explanation(scores[name])
     for class_name in class_scores.keys() | set(element_class.values()):
-        if class_name != UNKNOWN_CLASS and model.classes[class_name].from_contents:
+        if scored_by_contents(class_name, model):
             members = [scores[name] for name, c in element_class.items() if c == class_name]
             class_scores[class_name] = max(members, default=0.0)
     return ScoreResult(
@@ -198,7 +252,7 @@ def score_by_model(task: Task, request: ScoreRequest) -> ScoreResult:
         class_scores=class_scores,
         explanations=explanations,
         unknown=unknown,
-        objective=objective,
-        task_distribution=distribution,
-        task_entropy=entropy,
+        objective=context.objective,
+        task_distribution=context.distribution,
+        task_entropy=context.entropy,
     )

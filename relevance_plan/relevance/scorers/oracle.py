@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 from relevance_plan.errors import UsageError
-from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult, Task
+from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult, PlanningTask
 
 
-def score_by_oracle(task: Task, request: ScoreRequest) -> ScoreResult:
+def score_by_oracle(task: PlanningTask, request: ScoreRequest) -> ScoreResult:
     if request.necessary is None:
         raise UsageError(
             "the oracle scorer needs the generator's sidecar (PROBLEM.json with a 'necessary' list)",

@@ -10,7 +10,7 @@ from __future__ import annotations
 import hashlib
 import random as _random
 
-from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult, Task
+from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult, PlanningTask
 
 
 def _rng(seed: int, problem_name: str) -> _random.Random:
@@ -18,7 +18,7 @@ def _rng(seed: int, problem_name: str) -> _random.Random:
     return _random.Random(int.from_bytes(digest[:8], "big"))
 
 
-def score_randomly(task: Task, request: ScoreRequest) -> ScoreResult:
+def score_randomly(task: PlanningTask, request: ScoreRequest) -> ScoreResult:
     rng = _rng(request.seed, task.problem.name)
     class_scores = {type_name: rng.random() for type_name in sorted(set(task.problem.objects.values()))}
     scores = {}

@@ -1,0 +1,206 @@
+"""The live session at 1,000 objects: trigger check and incremental determination vs from scratch.
+
+A coffee scene (problems/coffee-simple.pddl) is grown to 1,000 objects by
+``add`` events, then 1,000 mixed events follow: moves among distractors,
+moves onto kept objects (a plate put on a kept cup, and taken off again),
+removals and additions of elements, and two goal changes.  After every mixed
+event the same state is determined from scratch (the current scene written
+as PDDL, read, scored with ``score_problem``, pruned) and compared with the
+session's determination: kept, selected and restored sets and every score.
+
+Targets (issue 12): an untriggered event costs under 1 ms; an incremental
+determination after one element event costs at most a tenth of determining
+from scratch at 1,000 objects; identical results.  Everything is measured in
+one run.
+
+    python benchmarks/bench_session.py [--seed 0]
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import random
+import statistics
+import sys
+import time
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(REPO))
+
+from relevance_plan.data import DOMAINS_DIR, PROBLEMS_DIR  # noqa: E402
+from relevance_plan.io import load_task  # noqa: E402
+from relevance_plan.pddl.reader import read_problem  # noqa: E402
+from relevance_plan.relevance.scorers import PlanningTask  # noqa: E402
+from relevance_plan.relevance.setup import ScoringOptions, score_problem  # noqa: E402
+from relevance_plan.session import Session  # noqa: E402
+
+TARGET_OBJECTS = 1000
+MIXED_EVENTS = 1000
+# Mostly distractors, a few things a coffee drinker could use.
+DISTRACTORS = [("plate", "dinner_plate"), ("bowl", "cereal_bowl"), ("cookware", "frying_pan"), ("utensil", "ladle"),
+               ("cutlery", "fork"), ("glassware", "wine_glass"), ("board", "cutting_board"), ("tray", "baking_tray"),
+               ("jar", "pickle_jar"), ("linen", "tablecloth"), ("food", "bagel"), ("cleaning", "sponge")]
+USEFUL = [("cup", "paper_cup"), ("whitener", "oat_milk"), ("stirrer", "teaspoon"), ("napkin", "napkin"),
+          ("sweetener", "sugar_packet")]
+
+
+def percentile(values, share):
+    values = sorted(values)
+    return values[min(len(values) - 1, int(round(share * (len(values) - 1))))] if values else float("nan")
+
+
+def ms(seconds: float) -> str:
+    return f"{seconds * 1000:7.3f} ms"
+
+
+class Stream:
+    def __init__(self, session: Session, rng: random.Random):
+        self.session = session
+        self.rng = rng
+        self.count = 0
+        self.places = ["kitchen_counter_1", "serving_table_1", "cabinet_1"]
+        self.stacked: list[tuple[str, str]] = []  # (plate, kept item it was put on)
+        self.goals = 0
+
+    def add(self, useful_share: float = 0.05) -> dict:
+        self.count += 1
+        type_name, kind = self.rng.choice(USEFUL if self.rng.random() < useful_share else DISTRACTORS)
+        name = f"{kind}_{1000 + self.count}"
+        place = self.rng.choice(self.places)
+        facts = [["at", name, place], ["on-base", name], ["clear", name]]
+        if type_name == "cup":
+            facts.append(["empty", name])
+        return {"event": "add", "object": name, "type": type_name, "facts": facts}
+
+    def distractors(self) -> list[str]:
+        scene, kept = self.session.scene, self.session.kept
+        return [n for n, t in scene.objects.items() if n not in kept and t not in ("surface", "container", "human")
+                and any(f[0] == "at" for f in scene.index.facts_of(n, "at"))]
+
+    def mixed(self, done: int) -> list[dict]:
+        """The next mixed event(s) after ``done`` events (a move is two: off the old place, onto the new)."""
+        rng, scene = self.rng, self.session.scene
+        for number, at in enumerate((MIXED_EVENTS // 3, 2 * MIXED_EVENTS // 3)):
+            if done >= at and self.goals == number:
+                self.goals += 1
+                cups = sorted(n for n in self.session.kept if scene.objects[n] == "cup")
+                goal = f"(and (coffee-served person_1) (stirred {cups[0]}))" if number == 0 else "(coffee-served person_1)"
+                return [{"event": "goal", "goal": goal}]
+        roll = rng.random()
+        if roll < 0.6:
+            item = rng.choice(self.distractors())
+            here = next(f[2] for f in scene.index.facts_of(item, "at") if f[1] == item)
+            there = rng.choice([p for p in self.places if p != here])
+            return [{"event": "unset", "fact": ["at", item, here]}, {"event": "set", "fact": ["at", item, there]}]
+        if roll < 0.75:
+            if self.stacked and rng.random() < 0.5:
+                plate, below = self.stacked.pop()
+                if plate in scene.objects and below in scene.objects:
+                    return [{"event": "unset", "fact": ["on", plate, below]}]
+            kept_items = sorted(n for n in self.session.kept if scene.objects[n] in ("cup", "whitener", "stirrer"))
+            plate = rng.choice(self.distractors())
+            below = rng.choice(kept_items)
+            self.stacked.append((plate, below))
+            return [{"event": "set", "fact": ["on", plate, below]}]
+        if roll < 0.88:
+            return [{"event": "remove", "object": rng.choice(self.distractors())}]
+        return [self.add()]
+
+
+def from_scratch(session: Session):
+    text = session.scene.problem_text()
+    started = time.perf_counter()
+    problem = read_problem(text, session.domain)
+    scoring = score_problem(PlanningTask(session.domain, problem), session.options, model=session.model)
+    result = scoring.prune(session.options.thresholds)
+    return time.perf_counter() - started, scoring.scores, result
+
+
+def same(session: Session, scores, result) -> bool:
+    current = session.current_scores()
+    if current.sufficient != scores.sufficient:
+        return False
+    if not scores.sufficient:
+        return current.insufficiency == scores.insufficiency
+    decision = session.decision
+    return (current.element_scores == scores.element_scores and current.class_scores == scores.class_scores
+            and decision.kept == result.kept and decision.selected == result.selected
+            and {r.name for r in decision.restored} == {r.name for r in result.restored})
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--seed", type=int, default=0)
+    args = parser.parse_args()
+    rng = random.Random(args.seed)
+    domain_path = DOMAINS_DIR / "coffee" / "domain.pddl"
+    domain, problem = load_task(domain_path, PROBLEMS_DIR / "coffee-simple.pddl")
+    session = Session(domain, problem, ScoringOptions(), domain_path=str(domain_path))
+    stream = Stream(session, rng)
+
+    grow_started = time.perf_counter()
+    grown = 0
+    while len(session.scene.objects) < TARGET_OBJECTS:
+        session.handle(stream.add())
+        grown += 1
+    grow_time = time.perf_counter() - grow_started
+
+    rows = []  # (kind, triggered, incremental seconds, scratch seconds, same, incremental CPU seconds)
+    handled = 0.0
+    while len(rows) < MIXED_EVENTS:
+        for event in stream.mixed(len(rows)):
+            cpu = time.process_time()
+            report = session.handle(event)
+            cpu = time.process_time() - cpu
+            assert report.error is None, (event, report.error)
+            handled += report.seconds
+            scratch_time, scores, result = from_scratch(session)
+            rows.append((event["event"], report.triggered, report.seconds, scratch_time, same(session, scores, result),
+                         cpu))
+    rows = rows[:MIXED_EVENTS]
+
+    objects = len(session.scene.objects)
+    triggered = [r for r in rows if r[1]]
+    untriggered = [r for r in rows if not r[1]]
+    element = [r for r in triggered if r[0] in ("add", "remove")]
+    identical = sum(r[4] for r in rows)
+    print(f"grew the scene from {len(problem.objects)} to {TARGET_OBJECTS} objects with {grown} add events"
+          f" in {grow_time:.2f} s ({grown / grow_time:,.0f} events/s)")
+    print(f"mixed events: {len(rows)} at {objects} objects at the end; kept {len(session.kept)};"
+          f" {handled:.3f} s in the session = {len(rows) / handled:,.0f} events/s")
+    kinds = sorted({r[0] for r in rows})
+    print("events by kind: " + ", ".join(f"{k} {sum(r[0] == k for r in rows)}"
+                                         f" ({sum(r[0] == k and r[1] for r in rows)} triggered)" for k in kinds))
+    print(f"triggered: {len(triggered)} of {len(rows)} ({len(triggered) / len(rows):.1%})")
+    print("")
+    print(f"{'':34}{'median':>10} {'p95':>10} {'max':>10}")
+
+    def line(label, values):
+        print(f"{label:<34}{ms(statistics.median(values))} {ms(percentile(values, 0.95))} {ms(max(values))}")
+
+    line(f"untriggered events ({len(untriggered)})", [r[2] for r in untriggered])
+    line(f"triggered, incremental ({len(triggered)})", [r[2] for r in triggered])
+    line("triggered, from scratch", [r[3] for r in triggered])
+    line(f"element events, incremental ({len(element)})", [r[2] for r in element])
+    line("element events, from scratch", [r[3] for r in element])
+    line("all events, from scratch", [r[3] for r in rows])
+    ratio_median = statistics.median(r[2] for r in element) / statistics.median(r[3] for r in element)
+    ratio_p95 = percentile([r[2] for r in element], 0.95) / percentile([r[3] for r in element], 0.95)
+    print("")
+    worst_untriggered = max(r[2] for r in untriggered)
+    print(f"untriggered under 1 ms: {sum(r[2] < 0.001 for r in untriggered)} of {len(untriggered)}"
+          f" (p95 {ms(percentile([r[2] for r in untriggered], 0.95)).strip()}, max {ms(worst_untriggered).strip()})"
+          f"  target: every one under 1 ms")
+    print(f"element event, incremental / from scratch: {ratio_median:.3f} (median), {ratio_p95:.3f} (p95)"
+          f"  target: <= 0.1")
+    cpu_untriggered = [r[5] for r in untriggered]
+    print(f"untriggered, CPU time of the process (no preemption): median {ms(statistics.median(cpu_untriggered)).strip()},"
+          f" p95 {ms(percentile(cpu_untriggered, 0.95)).strip()}, max {ms(max(cpu_untriggered)).strip()};"
+          f" load average {os.getloadavg()[0]:.2f} on {os.cpu_count()} CPUs")
+    print(f"identical to from scratch: {identical} of {len(rows)} states")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,126 @@
+"""What every command shares: error handling and the option groups that build the options objects.
+
+An option group is a decorator that adds its options to a command; its
+builder turns the parsed values into the library's options object
+(:class:`ScoringOptions`, :class:`PlanOptions`).  Each option is declared
+here once, so ``score``, ``prune``, ``plan``, ``sweep``, ``compare`` and
+``watch`` cannot drift apart.
+"""
+
+from __future__ import annotations
+
+import functools
+import sys
+
+import click
+
+from relevance_plan.errors import RelevancePlanError
+from relevance_plan.exitcodes import ExitCode, exit_code_for_error
+from relevance_plan.planning.loop import METHODS, PlanOptions
+from relevance_plan.relevance.prune import DEFAULT_TAU, Thresholds
+from relevance_plan.relevance.scorers import SCORERS
+from relevance_plan.relevance.setup import ScoringOptions
+
+
+def fail(message: str, code: ExitCode) -> None:
+    click.echo(f"relevance-plan: error: {message}", err=True)
+    sys.exit(int(code))
+
+
+def handle_errors(command):
+    """Every library error becomes one line on stderr and its documented exit code."""
+
+    @functools.wraps(command)
+    def wrapper(*args, **kwargs):
+        try:
+            return command(*args, **kwargs)
+        except RelevancePlanError as error:
+            fail(str(error), exit_code_for_error(error))
+        except KeyboardInterrupt:
+            click.echo("relevance-plan: interrupted", err=True)
+            sys.exit(int(ExitCode.INTERRUPTED))
+
+    return wrapper
+
+
+def _apply(command, decorators):
+    for decorator in reversed(decorators):
+        command = decorator(command)
+    return command
+
+
+# --------------------------------------------------------------------------- scoring
+
+SCORING_KEYS = ("scorer", "model_path", "objective", "model_task", "human", "tau_class", "tau_element", "seed")
+
+
+def scoring_options(command=None, *, with_seed: bool = True):
+    """--scorer --model --objective --task --human --tau-class --tau-element [--seed]."""
+    if command is None:
+        return functools.partial(scoring_options, with_seed=with_seed)
+    seed = [click.option("--seed", type=int, default=0, show_default=True, help="Seed of the random scorer.")]
+    return _apply(command, [
+        click.option("--scorer", type=click.Choice(sorted(SCORERS)), default=None,
+                     help="Scorer; default: 'model' when a knowledge model applies, else 'goal'."),
+        click.option("--model", "model_path", type=click.Path(dir_okay=False), default=None,
+                     help="Knowledge-model YAML (default: found next to the domain or among the shipped worlds)."),
+        click.option("--objective", default=None, help="Objective from the model (default: matched from the goal)."),
+        click.option("--task", "model_task", default=None, help="Fix the model's task: P(task | objective) = 1."),
+        click.option("--human", default=None, help="Apply this human's recorded preferences."),
+        click.option("--tau-class", type=float, default=DEFAULT_TAU, show_default=True,
+                     help="Class threshold tau_c in [0, 1]."),
+        click.option("--tau-element", type=float, default=DEFAULT_TAU, show_default=True,
+                     help="Element threshold tau_e in [0, 1]."),
+    ] + (seed if with_seed else []))
+
+
+def take_scoring(values: dict) -> ScoringOptions:
+    """ScoringOptions from a command's parsed values (the scoring keys are removed from ``values``)."""
+    taken = {key: values.pop(key, 0 if key == "seed" else None) for key in SCORING_KEYS}
+    thresholds = Thresholds(taken.pop("tau_class"), taken.pop("tau_element"))
+    return ScoringOptions(thresholds=thresholds, **taken)
+
+
+# --------------------------------------------------------------------------- planning
+
+PLANNING_KEYS = ("planner", "planner_config", "timeout", "memory_limit", "no_relax", "validators")
+
+
+def planning_options(per_job: bool = False):
+    """--planner --planner-config --timeout --memory-limit --no-relax --validator."""
+    per = "each job (relevance + planning)" if per_job else "the whole run"
+
+    def group(command):
+        return _apply(command, [
+            click.option("--planner", default="fast-downward", show_default=True,
+                         help="fast-downward, up:NAME (a unified-planning engine) or cmd:'TEMPLATE' "
+                              "(an external planner; {domain} {problem} [{plan}])."),
+            click.option("--planner-config", default="lama-first", show_default=True,
+                         help="Fast Downward alias, registered name, or search string."),
+            click.option("--timeout", type=float, default=120.0, show_default=True, help=f"Seconds for {per}."),
+            click.option("--memory-limit", "memory_limit", type=int, default=None, help="Planner memory limit in MB."),
+            click.option("--no-relax", is_flag=True, help="One attempt only (the paper's behaviour)."),
+            click.option("--validator", "validators", multiple=True, type=click.Choice(["builtin", "up", "val"]),
+                         help="Validator(s) to use (default: builtin, plus VAL when on PATH)."),
+        ])
+
+    return group
+
+
+def take_plan_options(values: dict, method: str = "relevance") -> PlanOptions:
+    """PlanOptions from a command's parsed values (scoring and planning keys are removed)."""
+    scoring = take_scoring(values)
+    taken = {key: values.pop(key) for key in PLANNING_KEYS}
+    return PlanOptions.from_scoring(
+        scoring,
+        method=method,
+        planner=taken["planner"],
+        planner_config=taken["planner_config"],
+        timeout=taken["timeout"],
+        memory_limit_mb=taken["memory_limit"],
+        relax=not taken["no_relax"],
+        validators=tuple(taken["validators"]) or None,
+    )
+
+
+method_option = click.option("--method", type=click.Choice(METHODS), default="relevance", show_default=True)

@@ -1,0 +1,108 @@
+"""One scoring set-up for every front end: find the model, pick the scorer, score.
+
+``score``, ``prune``, ``plan``, ``sweep``, ``compare``, the live session and
+the unified-planning engine all call :func:`score_problem` with a
+:class:`ScoringOptions`, so they choose models and scorers the same way.
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass, field
+
+from relevance_plan.errors import UsageError
+from relevance_plan.relevance.knowledge import KnowledgeModel, check_model_applies, find_model, load_model
+from relevance_plan.relevance.prune import PruneResult, Thresholds, prune_with_scores
+from relevance_plan.relevance.scorers import SCORERS, PlanningTask, ScoreRequest, ScoreResult
+from relevance_plan.relevance.sidecar import necessary_objects
+
+
+@dataclass(frozen=True)
+class ScoringOptions:
+    """How objects are scored and thresholded (the options ``score``, ``prune`` and ``plan`` share)."""
+
+    scorer: str | None = None  # None: 'model' when a knowledge model applies, else 'goal'
+    model_path: str | None = None  # None: found next to the domain or among the shipped worlds
+    objective: str | None = None
+    model_task: str | None = None  # the knowledge model's task (P(task | objective) = 1)
+    human: str | None = None
+    thresholds: Thresholds = field(default_factory=Thresholds)
+    seed: int = 0
+
+    def __post_init__(self):
+        if self.scorer is not None and self.scorer not in SCORERS:
+            raise UsageError(f"unknown scorer '{self.scorer}' (choose from: {', '.join(SCORERS)})")
+
+
+@dataclass(frozen=True)
+class Scoring:
+    """What scoring one problem produced: the task, the model used (if any), the scores."""
+
+    task: PlanningTask
+    model: KnowledgeModel | None
+    scores: ScoreResult
+
+    @property
+    def scorer(self) -> str:
+        return self.scores.scorer
+
+    def prune(self, thresholds: Thresholds, **how) -> PruneResult:
+        return prune_with_scores(self.task, self.scores, thresholds, self.model, **how)
+
+
+def resolve_model(domain_name: str, domain_path: str | None, model_path: str | None) -> KnowledgeModel | None:
+    """The explicit ``--model``, else one found next to the domain or among the shipped worlds."""
+    if model_path is not None:
+        model = load_model(model_path)
+        check_model_applies(model, domain_name)
+        return model
+    found = find_model(domain_name, domain_path)
+    if found is None:
+        return None
+    model = load_model(found)
+    return model if model.domain == domain_name else None
+
+
+def choose_scorer(method: str, model: KnowledgeModel | None, override: str | None) -> str:
+    """The scorer a method uses: the override, else the model when one applies, else the goal scorer."""
+    if override:
+        return override
+    if method == "relevance":
+        return "model" if model is not None else "goal"
+    return method
+
+
+def score_problem(
+    task: PlanningTask,
+    options: ScoringOptions,
+    *,
+    method: str = "relevance",
+    domain_path: str | os.PathLike | None = None,
+    problem_path: str | os.PathLike | None = None,
+    model: KnowledgeModel | None = None,
+) -> Scoring:
+    """Score every object of ``task``.
+
+    ``model`` skips the model look-up (a front end that found it already);
+    ``problem_path`` locates the sidecar the oracle needs.
+    """
+    if model is None:
+        model = resolve_model(task.domain.name, None if domain_path is None else str(domain_path), options.model_path)
+    scorer = choose_scorer(method, model, options.scorer)
+    if scorer == "model" and model is None:
+        raise UsageError(f"no knowledge model found for domain '{task.domain.name}': give --model or use --scorer goal")
+    necessary = None
+    if scorer == "oracle" and problem_path is not None:
+        necessary = necessary_objects(problem_path)
+    request = ScoreRequest(
+        model=model,
+        objective=options.objective,
+        model_task=options.model_task,
+        human=options.human,
+        seed=options.seed,
+        necessary=necessary,
+    )
+    return Scoring(task, model, SCORERS[scorer](task, request))
+
+
+__all__ = ["Scoring", "ScoringOptions", "choose_scorer", "resolve_model", "score_problem"]

@@ -1,0 +1,68 @@
+"""The generator's sidecar (``PROBLEM.json``): ground truth and provenance, read in one place.
+
+Every front end that needs a sidecar (the oracle scorer, ``sweep``, the
+batch rows) goes through :func:`read_sidecar_for`, so a malformed sidecar
+gets the same error everywhere.
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass
+from pathlib import Path
+
+from relevance_plan.errors import InputFileError
+from relevance_plan.io import read_sidecar
+
+
+@dataclass(frozen=True)
+class Sidecar:
+    path: str
+    world: str | None = None
+    difficulty: str | None = None
+    relevant: frozenset | None = None  # lower-cased object names; None when the sidecar has none
+    necessary: frozenset | None = None
+
+
+def sidecar_path(problem_path: str | os.PathLike) -> Path:
+    return Path(problem_path).with_suffix(".json")
+
+
+def _names(data: dict, key: str, path: str) -> frozenset | None:
+    if key not in data:
+        return None
+    value = data[key]
+    if not isinstance(value, list) or not all(isinstance(name, str) for name in value):
+        raise InputFileError(f"sidecar field '{key}' must be a list of object names", path=path)
+    return frozenset(name.lower() for name in value)
+
+
+def _text(data: dict, key: str, path: str) -> str | None:
+    value = data.get(key)
+    if value is not None and not isinstance(value, str):
+        raise InputFileError(f"sidecar field '{key}' must be a string", path=path)
+    return value
+
+
+def read_sidecar_for(problem_path: str | os.PathLike, required: bool = False) -> Sidecar | None:
+    """The sidecar next to ``problem_path``; None when there is none and it is not ``required``."""
+    path = sidecar_path(problem_path)
+    if not path.is_file():
+        if required:
+            raise InputFileError("the generator's sidecar is missing", path=str(path))
+        return None
+    data = read_sidecar(path)
+    where = str(path)
+    return Sidecar(
+        path=where,
+        world=_text(data, "world", where),
+        difficulty=_text(data, "difficulty", where),
+        relevant=_names(data, "relevant", where),
+        necessary=_names(data, "necessary", where),
+    )
+
+
+def necessary_objects(problem_path: str | os.PathLike) -> frozenset | None:
+    """The sidecar's ``necessary`` set (the oracle's answer); None without a sidecar or the field."""
+    sidecar = read_sidecar_for(problem_path)
+    return sidecar.necessary if sidecar is not None else None

@@ -1,0 +1,165 @@
+"""Events: one JSON object each, checked against the current scene before anything changes.
+
+    {"event": "add", "object": NAME, "type": TYPE, "facts": [[PRED, ARG, ...], ...]}
+    {"event": "remove", "object": NAME}
+    {"event": "set", "fact": [PRED, ARG, ...]}      {"event": "unset", "fact": [...]}
+    {"event": "goal", "goal": "(and ...)"}
+    {"event": "human", "name": NAME, "preferences": PROFILE}   (PROFILE may be null: none recorded)
+    {"event": "cue", "task": TASK}   or   {"event": "cue", "objective": NAME}
+    {"event": "plan"}
+
+Extra fields are allowed and ignored.  A malformed or impossible event
+raises :class:`EventError` with a one-line reason; the session stays as it was.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from dataclasses import dataclass
+
+from relevance_plan.errors import RelevancePlanError
+from relevance_plan.pddl.reader import Formula, formula_constants, read_problem
+from relevance_plan.pddl.sexpr import parse_sexpr
+from relevance_plan.relevance.knowledge import KnowledgeModel
+from relevance_plan.session.state import LiveScene
+
+EVENT_KINDS = ("add", "remove", "set", "unset", "goal", "human", "cue", "plan")
+
+
+class EventError(RelevancePlanError):
+    """An event the session rejects (bad JSON, unknown object, wrong arity, ...)."""
+
+
+@dataclass(frozen=True)
+class Event:
+    """A checked event: names lower-cased, facts as tuples, the goal parsed."""
+
+    kind: str
+    name: str | None = None  # object of add/remove, human of 'human'
+    display: str | None = None  # the user's spelling of ``name``
+    type: str | None = None
+    facts: tuple = ()  # add: its facts; set/unset: one fact
+    goal: Formula | None = None
+    profile: str | None = None  # human: the model's profile
+    task: str | None = None  # cue
+    objective: str | None = None  # cue
+
+
+def parse_event_line(line: str) -> dict:
+    """One JSON line -> a dict (raises EventError)."""
+    try:
+        data = json.loads(line)
+    except ValueError as error:
+        raise EventError(f"not a JSON object: {error}") from None
+    if not isinstance(data, dict):
+        raise EventError("an event must be a JSON object")
+    return data
+
+
+def check_event(data: dict, scene: LiveScene, model: KnowledgeModel | None) -> Event:
+    """Validate ``data`` against the current scene and model; nothing is changed."""
+    kind = data.get("event")
+    if kind not in EVENT_KINDS:
+        raise EventError(f"unknown event {kind!r} (expected one of: {', '.join(EVENT_KINDS)})")
+    if kind == "add":
+        display = _text(data, "object")
+        name = display.lower()
+        if name in scene.objects or name in scene.domain.constants:
+            raise EventError(f"object '{display}' is already in the scene")
+        type_name = _text(data, "type").lower()
+        if type_name not in scene.domain.types:
+            raise EventError(f"unknown type '{data['type']}'")
+        facts = data.get("facts", [])
+        if not isinstance(facts, list):
+            raise EventError("'facts' must be a list of facts")
+        known = {name}
+        checked = tuple(_fact(item, scene, known) for item in facts)
+        return Event("add", name=name, display=display, type=type_name, facts=checked)
+    if kind == "remove":
+        display = _text(data, "object")
+        name = _object(display, scene)
+        if name in _goal_names(scene.goal):
+            raise EventError(f"object '{display}' is named in the goal: change the goal first")
+        return Event("remove", name=name, display=display)
+    if kind in ("set", "unset"):
+        if "fact" not in data:
+            raise EventError(f"'{kind}' needs a 'fact'")
+        return Event(kind, facts=(_fact(data["fact"], scene),))
+    if kind == "goal":
+        return Event("goal", goal=parse_goal(_text(data, "goal"), scene))
+    if kind == "human":
+        display = _text(data, "name")
+        name = _object(display, scene)
+        profile = data.get("preferences")
+        if profile is not None:
+            if not isinstance(profile, str):
+                raise EventError("'preferences' must be a profile name or null")
+            if model is None or profile not in model.humans:
+                known = ", ".join(model.humans) if model is not None and model.humans else "none"
+                raise EventError(f"unknown preference profile '{profile}' (the model has: {known})")
+        return Event("human", name=name, display=display, profile=profile)
+    if kind == "cue":
+        task, objective = data.get("task"), data.get("objective")
+        if (task is None) == (objective is None):
+            raise EventError("a cue gives either 'task' or 'objective'")
+        if model is None:
+            raise EventError("cues need a knowledge model (this session has none)")
+        if task is not None and (not isinstance(task, str) or task not in model.task_classes):
+            raise EventError(f"unknown task {task!r} (the model has: {', '.join(model.task_classes)})")
+        if objective is not None and (not isinstance(objective, str) or objective not in model.objectives):
+            raise EventError(f"unknown objective {objective!r} (the model has: {', '.join(model.objectives)})")
+        return Event("cue", task=task, objective=objective)
+    return Event("plan")
+
+
+def _text(data: dict, key: str) -> str:
+    value = data.get(key)
+    if not isinstance(value, str) or not value.strip():
+        raise EventError(f"'{data.get('event')}' needs '{key}' (a non-empty string)")
+    return value.strip()
+
+
+def _object(display: str, scene: LiveScene) -> str:
+    name = display.lower()
+    if name not in scene.objects:
+        raise EventError(f"unknown object '{display}'")
+    return name
+
+
+def _fact(item, scene: LiveScene, extra: set = frozenset()) -> tuple:
+    if not isinstance(item, list) or not item or not all(isinstance(part, str) for part in item):
+        raise EventError(f"a fact is a list of names [PRED, ARG, ...], got {json.dumps(item)}")
+    predicate = item[0].lower()
+    parameters = scene.domain.predicates.get(predicate)
+    if parameters is None:
+        raise EventError(f"unknown predicate '{item[0]}'")
+    if len(parameters) != len(item) - 1:
+        raise EventError(f"predicate '{item[0]}' takes {len(parameters)} arguments, got {len(item) - 1}")
+    args = tuple(arg.lower() for arg in item[1:])
+    for arg, shown in zip(args, item[1:]):
+        if arg not in scene.objects and arg not in scene.domain.constants and arg not in extra:
+            raise EventError(f"unknown object '{shown}' in ({' '.join(item)})")
+    return (predicate,) + args
+
+
+_SYMBOL = re.compile(r"[^\s()]+")
+
+
+def parse_goal(text: str, scene: LiveScene) -> Formula:
+    """Parse a goal condition over the scene's objects with the problem reader itself."""
+    try:
+        parse_sexpr(text)  # exactly one balanced list, nothing after it
+    except RelevancePlanError as error:
+        raise EventError(f"goal does not parse: {error.message}") from None
+    mentioned = {symbol.lower() for symbol in _SYMBOL.findall(text)} & scene.objects.keys()
+    objects = " ".join(f"{name} - {scene.objects[name]}" for name in sorted(mentioned))
+    wrapper = f"(define (problem goal) (:domain {scene.domain.name}) (:objects {objects}) (:init) (:goal {text}))"
+    try:
+        return read_problem(wrapper, scene.domain).goal
+    except RelevancePlanError as error:
+        raise EventError(f"goal does not parse: {error.message}") from None
+
+
+def _goal_names(goal: Formula) -> set:
+    return set(formula_constants(goal))

@@ -1,0 +1,490 @@
+"""A live scene session: events in, a determination kept current, plans kept valid.
+
+    session = Session(domain, problem, ScoringOptions(objective="drink-at-break"))
+    report = session.handle({"event": "add", "object": "mug_2", "type": "cup", "facts": [...]})
+    report.triggered, report.reason, report.determination.kept, report.ask
+
+For each event the session checks it against the scene, applies it, updates
+the scores of the elements it can affect (``rescoring.py``), runs the
+trigger check (``triggers.py``) and, only when a trigger fires, determines
+relevance again: the same threshold + closure step as ``relevance-plan
+prune`` (``relevance.prune.prune_with_scores``) on the current state.  When
+the cues are insufficient the previous decision stays in force, marked
+stale, with the question to ask; a ``cue``, ``human`` or ``goal`` event that
+settles it resumes.  With a planner, a determination that changes the kept
+set (or a new goal, or a ``plan`` event) plans again with the one attempt
+loop of ``planning.loop``; a previous plan that is still valid on the current
+full state is kept without calling the planner.
+
+The session does no I/O: the caller passes the planner as a function from
+problem text and time limit to a ``RunOutcome``.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field, replace
+from typing import Callable
+
+from relevance_plan.pddl.reader import Domain, Problem, goal_objects
+from relevance_plan.pddl.writer import write_pruned_problem
+from relevance_plan.planning.loop import PlanOptions, PlanResult, PlanStatus, first_selection, run_attempts, summarise
+from relevance_plan.planning.runner import RunOutcome
+from relevance_plan.planning.validate import validate_plan
+from relevance_plan.relevance.analysis import single_valued_predicates
+from relevance_plan.relevance.knowledge import KnowledgeModel
+from relevance_plan.relevance.prune import PruneResult, constraint_rules, prune_with_scores
+from relevance_plan.relevance.scorers import PlanningTask, ScoreResult
+from relevance_plan.relevance.setup import Scoring, ScoringOptions, choose_scorer, resolve_model
+from relevance_plan.session.events import Event, EventError, check_event, parse_event_line
+from relevance_plan.session.rescoring import ALL, FullScores, LiveModelScores, restrict
+from relevance_plan.session.state import LiveScene
+from relevance_plan.session.triggers import TRIGGERS, Change, Trigger, check_triggers
+
+# Runs the planner on a problem (PDDL text of the current domain) within a time limit (None: none).
+RunPlanner = Callable[[str, "float | None"], RunOutcome]
+
+
+@dataclass(frozen=True)
+class Ask:
+    """What to ask the human: the missing cue, the question, the choices."""
+
+    cue: str  # "objective", "task", "model" (insufficient cues) or "preference" (which kind)
+    question: str
+    options: tuple = ()
+
+
+@dataclass(frozen=True)
+class Determination:
+    """The decision in force: kept / removed / restored (with reasons) and the scores behind it."""
+
+    prune: PruneResult
+
+    @property
+    def kept(self) -> frozenset:
+        return self.prune.kept
+
+    @property
+    def selected(self) -> frozenset:
+        return self.prune.selected
+
+    @property
+    def restored(self) -> tuple:
+        return self.prune.restored
+
+    @property
+    def removed(self) -> tuple:
+        return self.prune.removed
+
+
+@dataclass(frozen=True)
+class PlanReport:
+    status: PlanStatus
+    steps: tuple = ()  # ((action, arg, ...), ...) lower-case
+    source: str = "planner"  # "planner" or "previous" (still valid: the planner was not called)
+    message: str = ""
+    result: PlanResult | None = None
+
+
+@dataclass(frozen=True)
+class EventReport:
+    seq: int
+    event: str
+    triggered: bool = False
+    reasons: tuple = ()
+    error: str | None = None
+    sufficient: bool = True
+    insufficiency: str = ""
+    stale: bool = False  # the decision in force predates insufficient cues
+    determination: Determination | None = None  # the decision in force (after the event)
+    added: tuple = ()  # kept now, not before (names)
+    dropped: tuple = ()
+    ask: Ask | None = None
+    seconds: float = 0.0  # trigger check + determination
+    plan: PlanReport | None = None
+
+    @property
+    def reason(self) -> str:
+        return "; ".join(self.reasons)
+
+
+class Session:
+    def __init__(
+        self,
+        domain: Domain,
+        problem: Problem,
+        options: ScoringOptions = ScoringOptions(),
+        *,
+        model: KnowledgeModel | None = None,
+        domain_path: str | None = None,
+        plan_options: PlanOptions | None = None,
+        run_planner: RunPlanner | None = None,
+        plan_in_loop: bool = False,
+        triggers: dict[str, Trigger] | None = None,
+    ):
+        self.domain = domain
+        self.options = options
+        self.model = model if model is not None else resolve_model(domain.name, domain_path, options.model_path)
+        self.scene = LiveScene(domain, problem)
+        scorer = choose_scorer("relevance", self.model, options.scorer)
+        if scorer == "model" and self.model is not None:
+            self.scores = LiveModelScores(self.scene, self.model, options)
+        else:
+            self.scores = FullScores(self.scene, self.model, options, domain_path)
+        self.plan_options = plan_options or PlanOptions(thresholds=options.thresholds)
+        self.run_planner = run_planner
+        self.plan_in_loop = plan_in_loop and run_planner is not None
+        self.triggers = TRIGGERS if triggers is None else triggers
+        self.served: str | None = None  # the human of the last 'human' event
+        self.seq = 0
+        self.decision: Determination | None = None  # the last determination with sufficient cues
+        self.passing: set = set()
+        self._rules = None  # (functional positions, closure rules by predicate) for the trigger check
+        self._singletons = self.scene.index.singletons
+        self._single_valued = single_valued_predicates(domain, _IndexView(self.scene))
+        self.plan_steps: tuple | None = None
+        self.planned_kept: frozenset | None = None
+        self.planned_goal = None
+        self._recount_passing()
+        if not self.idle:
+            self._determine()
+
+    # ------------------------------------------------------------------ state
+
+    @property
+    def idle(self) -> bool:
+        """Nobody to serve (no goal, no human): element and fact events trigger nothing."""
+        return self.scene.idle_goal and self.served is None
+
+    @property
+    def kept(self) -> frozenset:
+        return self.decision.kept if self.decision is not None else frozenset()
+
+    @property
+    def sufficient(self) -> bool:
+        return self.scores.sufficient
+
+    def current_scores(self) -> ScoreResult:
+        """The scores of the current state (equal to scoring it from scratch)."""
+        return self.scores.result()
+
+    def snapshot(self) -> tuple[str, str]:
+        """(the current full problem, its pruned version) as PDDL text in the user's spelling."""
+        problem = self.scene.read_problem()
+        kept = self.kept & problem.objects.keys() if self.decision is not None else problem.objects.keys()
+        return problem.text, write_pruned_problem(problem, kept)
+
+    # ------------------------------------------------------------------ events
+
+    def handle_line(self, line: str) -> EventReport:
+        try:
+            data = parse_event_line(line)
+        except EventError as error:
+            self.seq += 1
+            return self._rejected("?", error)
+        return self.handle(data)
+
+    def handle(self, data: dict) -> EventReport:
+        started = time.perf_counter()
+        self.seq += 1
+        if not isinstance(data, dict):
+            return self._rejected("?", EventError("an event must be a JSON object"))
+        kind = str(data.get("event", "?"))
+        try:
+            event = check_event(data, self.scene, self.model)
+        except EventError as error:
+            return self._rejected(kind, error)
+        kept_before = self.kept
+        sufficient_before = self.scores.sufficient
+        functional_before, single_valued_before = self.scene.index.functional, self._single_valued
+        changed, rescored = self._apply(event)
+        if self.scores.sufficient != sufficient_before:
+            rescored = ALL
+        crossed = self._update_passing(rescored)
+        change = Change(
+            event=event,
+            idle=self.idle,
+            changed=changed,
+            touched=self._touched(event),
+            kept=kept_before,
+            linked=self._linked(event, kept_before),
+            crossed=frozenset(crossed),
+            rules_changed=self._closure_rules_changed(functional_before, single_valued_before, kept_before),
+            show=self._show,
+        )
+        reasons = check_triggers(change, self.triggers)
+        previous = self.decision
+        if reasons:
+            self._determine()
+        seconds = time.perf_counter() - started
+        report = self._report(event.kind, reasons, previous, seconds)
+        plan = None
+        if event.kind == "plan" and self.run_planner is not None:
+            plan = self.plan()
+        elif event.kind == "plan":
+            plan = PlanReport(PlanStatus.INPUT_ERROR, message="this session has no planner")
+        elif reasons and self.plan_in_loop and self.decision is not None and self.sufficient \
+                and not self.scene.idle_goal \
+                and (self.decision.kept != self.planned_kept or self.scene.goal != self.planned_goal
+                     or change.touched & kept_before):
+            plan = self.plan()
+        return replace(report, plan=plan) if plan is not None else report
+
+    def _rejected(self, kind: str, error: EventError) -> EventReport:
+        return EventReport(self.seq, kind, error=error.message, sufficient=self.scores.sufficient,
+                           stale=not self.scores.sufficient and self.decision is not None,
+                           determination=self.decision)
+
+    def _show(self, name: str) -> str:
+        return self.scene.display.get(name, name)
+
+    def _touched(self, event: Event) -> frozenset:
+        names = {event.name} if event.kind in ("add", "remove") else set()
+        for fact in event.facts:
+            names.update(fact[1:])
+        return frozenset(names)
+
+    def _apply(self, event: Event) -> tuple[bool, object]:
+        """Change the scene; returns (whether anything changed, the elements whose scores may differ)."""
+        scene, scores = self.scene, self.scores
+        if event.kind == "add":
+            scene.add_object(event.name, event.type, event.display)
+            for fact in event.facts:
+                scene.set(fact)
+            names = self._affected(event.facts) | {event.name}
+            scores.describe(names)
+            return True, scores.refresh(names)
+        if event.kind == "remove":
+            gone = scene.remove_object(event.name)
+            scores.forget(event.name)
+            names = self._affected(gone) - {event.name}
+            scores.describe(names)
+            if self.served == event.name:  # the human served left: their preferences and cues go too
+                self.served = None
+                self._set_options(replace(self.options, human=None, model_task=None))
+                return True, ALL
+            return True, scores.refresh(names)
+        if event.kind in ("set", "unset"):
+            fact = event.facts[0]
+            if not (scene.set(fact) if event.kind == "set" else scene.unset(fact)):
+                return False, set()
+            names = self._affected([fact])
+            scores.describe(names)
+            return True, scores.refresh(names)
+        if event.kind == "goal":
+            if event.goal == scene.goal:
+                return False, set()
+            scene.goal = event.goal
+            self._set_options(self.options)
+            return True, ALL
+        if event.kind == "human":
+            options = replace(self.options, human=event.profile, model_task=None)
+            if event.name == self.served and options == self.options:
+                return False, set()
+            self.served = event.name
+            self._set_options(options)
+            return True, ALL
+        if event.kind == "cue":
+            if event.task is not None:
+                options = replace(self.options, model_task=event.task)
+            else:
+                options = replace(self.options, objective=event.objective)
+            if options == self.options:
+                return False, set()
+            self._set_options(options)
+            return True, ALL
+        return False, set()  # plan
+
+    def _set_options(self, options: ScoringOptions) -> None:
+        self.options = options
+        self.scores.set_options(options)
+
+    def _affected(self, facts) -> set:
+        """Objects whose description a change of these facts can alter."""
+        names: set = set()
+        predicates = self.model.scene if self.model is not None else None
+        for fact in facts:
+            names.update(fact[1:])
+            if predicates is not None and fact[0] in (predicates.access, predicates.human_location) and len(fact) > 1:
+                names |= self.scores.items_at(fact[-1])
+        return {n for n in names if n in self.scene.objects}
+
+    def _update_passing(self, rescored) -> set:
+        """Update which elements pass the thresholds; returns those that crossed."""
+        if rescored is ALL:
+            before = set(self.passing)
+            self._recount_passing()
+            return before ^ self.passing
+        crossed = set()
+        thresholds = self.options.thresholds
+        for name in set(rescored) | (self.passing - self.scene.objects.keys()):
+            now = name in self.scene.objects and self.scores.passes(name, thresholds.tau_class, thresholds.tau_element)
+            if now != (name in self.passing):
+                crossed.add(name)
+                (self.passing.add if now else self.passing.discard)(name)
+        return crossed
+
+    def _linked(self, event: Event, kept: frozenset) -> frozenset:
+        """Kept objects from which closure follows the event's fact (a plate put on the kept cup)."""
+        if event.kind not in ("set", "unset") or not kept:
+            return frozenset()
+        functional = self.scene.index.functional
+        if self._rules is None or self._rules[0] != functional:
+            rules: dict = {}
+            for rule in constraint_rules(_LiveTask.of(self.scene, with_problem=False), self.model):
+                rules.setdefault(rule.predicate, []).append(rule)
+            self._rules = (functional, rules)
+        fact = event.facts[0]
+        return frozenset(fact[1 + rule.when_kept] for rule in self._rules[1].get(fact[0], ())
+                         if fact[1 + rule.when_kept] in kept)
+
+    def _closure_rules_changed(self, functional_before: frozenset, single_valued_before: frozenset,
+                               kept: frozenset) -> bool:
+        """Whether closure from ``kept`` could follow other facts now: a single-valued predicate
+        came or went, or a predicate became (or stopped being) functional at a position where
+        some fact has a kept object."""
+        index = self.scene.index
+        if index.singletons != self._singletons:
+            self._singletons = index.singletons
+            self._single_valued = single_valued_predicates(self.domain, _IndexView(self.scene))
+        if self._single_valued != single_valued_before:
+            return True
+        for predicate, key, _ in index.functional ^ functional_before:
+            for name in kept:
+                if any(fact[1 + key] == name for fact in index.facts_of(name, predicate)):
+                    return True
+        return False
+
+    def _recount_passing(self) -> None:
+        thresholds = self.options.thresholds
+        self.passing = {n for n in self.scene.objects
+                        if self.scores.passes(n, thresholds.tau_class, thresholds.tau_element)}
+
+    # ------------------------------------------------------------------ determination
+
+    def _determine(self) -> None:
+        """Threshold + closure on the current state (the prune step), if the cues suffice."""
+        scores = self.scores.result()
+        if not scores.sufficient:
+            return  # the previous decision stays in force, stale
+        task = _LiveTask.of(self.scene)
+        self.decision = Determination(prune_with_scores(task, scores, self.options.thresholds, self.model))
+
+    def _report(self, kind: str, reasons: tuple, previous: Determination | None, seconds: float) -> EventReport:
+        scores = self.scores.result()
+        before = previous.kept if previous is not None else frozenset()
+        now = self.kept
+        return EventReport(
+            seq=self.seq,
+            event=kind,
+            triggered=bool(reasons),
+            reasons=reasons,
+            sufficient=scores.sufficient,
+            insufficiency=scores.insufficiency,
+            stale=not scores.sufficient and self.decision is not None,
+            determination=self.decision,
+            added=tuple(sorted(now - before)) if reasons else (),
+            dropped=tuple(sorted(before - now)) if reasons else (),
+            ask=self.ask(scores) if (reasons or not scores.sufficient) and not self.idle else None,
+            seconds=seconds,
+        )
+
+    def ask(self, scores: ScoreResult | None = None) -> Ask | None:
+        """The question for the human: the missing cue, or (without recorded preferences) which kinds."""
+        scores = scores or self.scores.result()
+        model = self.model
+        if not scores.sufficient:
+            if model is None:
+                return None
+            if scores.objective is None:
+                return Ask("objective", "What would you like to do?", tuple(model.objectives))
+            if scores.task_entropy is not None and scores.task_entropy > model.entropy_bound:
+                ranked = sorted(scores.task_distribution.items(), key=lambda item: (-item[1], item[0]))
+                tasks = tuple(name for name, _ in ranked)
+                return Ask("task", "Which would you like: " + ", ".join(tasks) + "?", tasks)
+            return Ask("model", scores.insufficiency)
+        if model is None or self.options.human is not None or self.decision is None or scores.scorer != "model":
+            return None
+        from relevance_plan.relevance.metrics import plan_inquiries
+        from relevance_plan.relevance.scene import kind_of
+
+        structural = {c.name for c in model.classes.values() if c.fixed_relevance is not None or c.from_contents}
+        selected = self.decision.selected
+        found = plan_inquiries(scores, selected, {n: kind_of(n) for n in selected}, structural)
+        if not found.optional:
+            return None
+        return Ask("preference", "Which do you prefer: " + ", ".join(found.optional) + "?", found.optional)
+
+    # ------------------------------------------------------------------ planning
+
+    def plan(self) -> PlanReport:
+        """A plan for the current state: the previous one if still valid, else the attempt loop."""
+        if self.run_planner is None:
+            return PlanReport(PlanStatus.INPUT_ERROR, message="this session has no planner")
+        started = time.perf_counter()
+        options = self.plan_options
+        problem = self.scene.read_problem()
+        task = PlanningTask(self.domain, problem)
+        if self.plan_steps is not None:
+            validation = validate_plan(self.domain, problem, self.plan_steps, options.validators)
+            if validation.valid:
+                self._planned(self.plan_steps)
+                return PlanReport(PlanStatus.SOLVED, self.plan_steps, "previous",
+                                  f"previous plan still valid on the current state ({validation.validator})")
+        selection = None
+        scorer = None
+        if self.decision is None and self.scores.sufficient:
+            self._determine()  # an idle session holds no determination yet
+        if options.method != "pure":
+            if self.decision is None:
+                return PlanReport(PlanStatus.INSUFFICIENT_CUES, message=self.scores.result().insufficiency)
+            scores = self.scores.result()
+            if not scores.sufficient:  # plan with the decision in force (stale)
+                scores = restrict(self.decision.prune.scores, problem.objects)
+            scorer = scores.scorer
+            selection = first_selection(Scoring(task, self.model, scores), options)
+        relevance_time = time.perf_counter() - started
+
+        def call_planner(chosen: PruneResult | None, limit: float | None) -> RunOutcome:
+            return self.run_planner(problem.text if chosen is None else chosen.text, limit)
+
+        attempts, widening = run_attempts(task, selection, call_planner, options, started=started, model=self.model)
+        result = summarise(task, options, attempts, started, relevance_time + widening, selection, scorer=scorer,
+                           planner=attempts[0].outcome.planner if attempts else options.planner)
+        if result.status is PlanStatus.SOLVED:
+            self._planned(result.plan)
+        return PlanReport(result.status, result.plan, "planner", result.message, result)
+
+    def _planned(self, steps: tuple) -> None:
+        self.plan_steps = steps
+        self.planned_kept = self.kept
+        self.planned_goal = self.scene.goal
+
+
+@dataclass(frozen=True)
+class _LiveTask:
+    """The current state as the planning task ``prune_with_scores`` needs (duck-types PlanningTask)."""
+
+    domain: Domain
+    problem: Problem
+    init_index: object
+    goal_objects: frozenset = field(default=frozenset())
+
+    @classmethod
+    def of(cls, scene: LiveScene, with_problem: bool = True) -> "_LiveTask":
+        """``with_problem=False``: only the domain and the index (enough for the closure rules)."""
+        if not with_problem:
+            return cls(scene.domain, None, _IndexView(scene))
+        problem = scene.snapshot_problem()
+        return cls(scene.domain, problem, _IndexView(scene), goal_objects(problem, scene.domain))
+
+
+class _IndexView:
+    """The live index as ``analysis.InitIndex`` (singleton predicates' facts as tuples)."""
+
+    def __init__(self, scene: LiveScene):
+        index = scene.index
+        self.by_object = index.by_object
+        self.functional = index.functional
+        self.singletons = index.singletons
+        self.by_predicate = {p: tuple(index.by_predicate[p]) for p in self.singletons}

@@ -1,0 +1,189 @@
+"""The live scene: objects, true facts and the goal, changed one event at a time.
+
+Kept in memory only.  :class:`LiveIndex` mirrors ``analysis.InitIndex``
+(facts by predicate and by object, which argument positions are functional)
+but is updated fact by fact, so closure and the constraint rules can run on
+the current state without re-indexing it.  :meth:`LiveScene.problem_text`
+renders the current state as a PDDL problem in the user's spelling, for
+determining from scratch, planning and snapshots.
+"""
+
+from __future__ import annotations
+
+from collections import defaultdict
+from types import MappingProxyType
+from typing import Iterable
+
+from relevance_plan.pddl.formatter import format_atom
+from relevance_plan.pddl.reader import Domain, Formula, Problem, formula_atoms, read_problem
+
+
+class LiveIndex:
+    """The current facts, indexed for closure; duck-types ``analysis.InitIndex``."""
+
+    def __init__(self, facts: Iterable[tuple] = ()):
+        self.by_predicate: dict[str, set] = defaultdict(set)
+        self.by_object: dict[str, set] = defaultdict(set)
+        self._by_object_predicate: dict[tuple[str, str], set] = defaultdict(set)
+        # (predicate, position) -> value -> number of facts; a position is functional
+        # when no value occurs in two facts (see analysis.index_init).
+        self._counts: dict[tuple[str, int], dict[str, int]] = defaultdict(dict)
+        self._clashes: dict[tuple[str, int], int] = defaultdict(int)
+        for fact in facts:
+            self.add(fact)
+
+    def add(self, fact: tuple) -> None:
+        self.by_predicate[fact[0]].add(fact)
+        for arg in set(fact[1:]):
+            self.by_object[arg].add(fact)
+            self._by_object_predicate[arg, fact[0]].add(fact)
+        for position, value in enumerate(fact[1:]):
+            counts = self._counts[fact[0], position]
+            counts[value] = counts.get(value, 0) + 1
+            if counts[value] == 2:
+                self._clashes[fact[0], position] += 1
+
+    def discard(self, fact: tuple) -> None:
+        self.by_predicate[fact[0]].discard(fact)
+        for arg in set(fact[1:]):
+            self.by_object[arg].discard(fact)
+            self._by_object_predicate[arg, fact[0]].discard(fact)
+        for position, value in enumerate(fact[1:]):
+            counts = self._counts[fact[0], position]
+            counts[value] -= 1
+            if counts[value] == 1:
+                self._clashes[fact[0], position] -= 1
+            elif counts[value] == 0:
+                del counts[value]
+
+    def facts_of(self, name: str, predicate: str) -> set:
+        return self._by_object_predicate.get((name, predicate), set())
+
+    @property
+    def functional(self) -> frozenset:
+        found = set()
+        for predicate, facts in self.by_predicate.items():
+            if not facts:
+                continue
+            arity = len(next(iter(facts))) - 1
+            for key in range(arity):
+                if not self._clashes.get((predicate, key)):
+                    found.update((predicate, key, other) for other in range(arity) if other != key)
+        return frozenset(found)
+
+    @property
+    def singletons(self) -> frozenset:
+        return frozenset(p for p, facts in self.by_predicate.items() if len(facts) == 1)
+
+
+class LiveScene:
+    """Objects (in the order they appeared), true facts and the goal of the current scene."""
+
+    def __init__(self, domain: Domain, problem: Problem):
+        self.domain = domain
+        self.name = problem.name
+        self.objects: dict[str, str] = dict(problem.objects)
+        self.display: dict[str, str] = {name: problem.display(name) for name in problem.objects}
+        self.facts: set = set(problem.init)
+        self.index = LiveIndex(self.facts)
+        self.goal: Formula = problem.goal
+
+    # ------------------------------------------------------------------ changes
+
+    def add_object(self, name: str, type_name: str, display: str) -> None:
+        self.objects[name] = type_name
+        self.display[name] = display
+
+    def remove_object(self, name: str) -> list[tuple]:
+        """Remove the object and every fact that mentions it; returns those facts."""
+        gone = list(self.index.by_object.get(name, ()))
+        for fact in gone:
+            self.unset(fact)
+        del self.objects[name]
+        del self.display[name]
+        self.index.by_object.pop(name, None)
+        return gone
+
+    def set(self, fact: tuple) -> bool:
+        if fact in self.facts:
+            return False
+        self.facts.add(fact)
+        self.index.add(fact)
+        return True
+
+    def unset(self, fact: tuple) -> bool:
+        if fact not in self.facts:
+            return False
+        self.facts.discard(fact)
+        self.index.discard(fact)
+        return True
+
+    # ------------------------------------------------------------------ views
+
+    @property
+    def idle_goal(self) -> bool:
+        """Whether the goal asks for nothing (``(and)``)."""
+        return not any(True for _ in formula_atoms(self.goal))
+
+    def ordered_objects(self) -> dict:
+        """The objects grouped by type, types in order of first appearance (the order of :meth:`problem_text`)."""
+        by_type: dict[str, list[str]] = {}
+        for name, type_name in self.objects.items():
+            by_type.setdefault(type_name, []).append(name)
+        return {name: type_name for type_name, names in by_type.items() for name in names}
+
+    def snapshot_problem(self) -> Problem:
+        """The current state as a Problem value without source text (for pruning in memory)."""
+        return Problem(
+            name=self.name,
+            domain_name=self.domain.name,
+            objects=MappingProxyType(self.ordered_objects()),
+            init=frozenset(self.facts),
+            goal=self.goal,
+            text="",
+            display_names=MappingProxyType(dict(self.display)),
+        )
+
+    def problem_text(self) -> str:
+        """The current state as PDDL in the user's spelling (objects grouped by type, facts sorted)."""
+        show = self.display.get
+        by_type: dict[str, list[str]] = {}
+        for name, type_name in self.objects.items():
+            by_type.setdefault(type_name, []).append(show(name, name))
+        lines = [f"(define (problem {self.name})", f"  (:domain {self.domain.name})", "  (:objects"]
+        lines.extend(f"    {' '.join(names)} - {type_name}" for type_name, names in by_type.items())
+        lines.append("  )")
+        lines.append("  (:init")
+        for fact in sorted(self.facts):
+            lines.append("    " + format_atom([fact[0]] + [show(arg, arg) for arg in fact[1:]]))
+        lines.append("  )")
+        lines.append(f"  (:goal {format_formula(self.goal, show)})")
+        lines.append(")")
+        return "\n".join(lines) + "\n"
+
+    def read_problem(self) -> Problem:
+        """The current state as a Problem read back from :meth:`problem_text` (with source spans)."""
+        return read_problem(self.problem_text(), self.domain)
+
+
+def format_formula(formula: Formula, show=lambda name, default=None: name) -> str:
+    """PDDL text of a formula of the reader (``reader.py`` describes the tuples)."""
+    kind = formula[0]
+
+    def name(arg: str) -> str:
+        return arg if arg.startswith("?") else show(arg, arg)
+
+    if kind == "atom":
+        return "(" + " ".join([formula[1]] + [name(a) for a in formula[2]]) + ")"
+    if kind in ("and", "or"):
+        return "(" + " ".join([kind] + [format_formula(part, show) for part in formula[1:]]) + ")"
+    if kind == "not":
+        return f"(not {format_formula(formula[1], show)})"
+    if kind == "imply":
+        return f"(imply {format_formula(formula[1], show)} {format_formula(formula[2], show)})"
+    if kind in ("exists", "forall"):
+        params = " ".join(f"{var} - {type_name}" for var, type_name in formula[1])
+        return f"({kind} ({params}) {format_formula(formula[2], show)})"
+    if kind == "true":
+        return "(and)"
+    raise ValueError(f"not a formula: {formula!r}")

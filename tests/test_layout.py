@@ -1,0 +1,147 @@
+"""The package's shape: one attempt loop for every front end, options keyed by their fields, a working wheel."""
+
+from __future__ import annotations
+
+import dataclasses
+import os
+import subprocess
+import sys
+import zipfile
+from pathlib import Path
+
+import pytest
+
+from relevance_plan.batch.jobs import FINGERPRINT_RULES, build_jobs, config_fingerprint, config_hash, run_job
+from relevance_plan.planning.loop import PLAN_OPTION_FIELDS, PlanOptions, plan_task
+from relevance_plan.relevance.prune import Thresholds
+
+from worlds import GRIPPER_DOMAIN, gripper_problem
+
+REPO = Path(__file__).resolve().parent.parent
+
+# A value other than the default for every option (None where the default is set).
+OTHER_VALUES = {
+    "planner": "up:pyperplan",
+    "planner_config": "astar-blind",
+    "timeout": 7.0,
+    "memory_limit_mb": 512,
+    "thresholds": Thresholds(0.1, 0.3),
+    "relax": False,
+    "relax_factor": 0.25,
+    "first_share": 0.75,
+    "scorer": "goal",
+    "goal_filter": False,
+    "prefer_free": False,
+    "objective": "drink",
+    "model_task": "hot",
+    "human": "alice",
+    "seed": 3,
+    "validators": ("up",),
+}
+
+
+def test_every_option_has_a_fingerprint_decision():
+    assert set(FINGERPRINT_RULES) == set(PLAN_OPTION_FIELDS)
+
+
+@pytest.mark.parametrize("name", [n for n, rule in FINGERPRINT_RULES.items() if rule != "method" and n != "model_path"])
+def test_changing_an_option_changes_the_job_key(name, coffee_domain_path):
+    problem = REPO / "problems" / "coffee-simple.pddl"
+    base = PlanOptions(method="relevance")
+    changed = dataclasses.replace(base, **{name: OTHER_VALUES[name]})
+    before = config_hash(config_fingerprint(base, str(coffee_domain_path), str(problem)))
+    after = config_hash(config_fingerprint(changed, str(coffee_domain_path), str(problem)))
+    assert before != after
+
+
+@pytest.fixture
+def hard_gripper(tmp_path):
+    """A problem whose first pruning fails at these thresholds (the rooms and grippers are cut)."""
+    domain = tmp_path / "domain.pddl"
+    domain.write_text(GRIPPER_DOMAIN)
+    problem = tmp_path / "p.pddl"
+    problem.write_text(gripper_problem(extra=10))
+    return domain, problem
+
+
+def test_plan_compare_and_the_up_engine_make_the_same_attempts(hard_gripper, tmp_path):
+    from unified_planning.engines import PlanGenerationResultStatus as Status
+    from unified_planning.io import PDDLReader
+    from unified_planning.shortcuts import OneshotPlanner, get_environment
+
+    from relevance_plan.integrations.up_engine import register_relevance_engine
+
+    domain, problem = hard_gripper
+    options = PlanOptions(thresholds=Thresholds(0.95, 0.95), timeout=120)
+    planned = plan_task(domain, problem, options)
+    assert len(planned.attempts) >= 2, "the first pruning should fail on this problem"
+    assert planned.attempts[0].status != "solved" and planned.status.value == "solved"
+    plan_attempts = [(a.objects_kept, a.outcome.status.value, a.status) for a in planned.attempts]
+
+    (job,) = build_jobs([tmp_path], "relevance", (0,), options)
+    row = run_job(job)
+    import json
+
+    stored = json.loads(row["result_json"])
+    assert [(a["objects_kept"], a["planner_status"], a["status"]) for a in stored["attempt_log"]] == plan_attempts
+    assert stored["status"] == planned.status.value
+
+    get_environment().credits_stream = None
+    register_relevance_engine()
+    up_problem = PDDLReader().parse_problem(str(domain), str(problem))
+    with OneshotPlanner(name="relevance[fast-downward]", params={"tau_class": 0.95, "tau_element": 0.95}) as planner:
+        result = planner.solve(up_problem, timeout=120)
+    assert result.status is Status.SOLVED_SATISFICING
+    assert int(result.metrics["attempts"]) == len(planned.attempts)
+    assert result.metrics["objects_kept_first_attempt"] == str(planned.attempts[0].objects_kept)
+    assert result.metrics["objects_kept"] == str(planned.objects_kept)
+
+
+# --------------------------------------------------------------------------- a regular install
+
+
+@pytest.fixture(scope="module")
+def wheel(tmp_path_factory):
+    out = tmp_path_factory.mktemp("wheel")
+    subprocess.run([sys.executable, "-m", "pip", "wheel", "--no-deps", "-q", "-w", str(out),
+                    str(REPO)], check=True, capture_output=True)
+    (found,) = out.glob("relevance_plan-*.whl")
+    return found
+
+
+def test_the_wheel_ships_the_worlds_and_no_stray_top_level_packages(wheel):
+    names = zipfile.ZipFile(wheel).namelist()
+    top = {name.split("/")[0] for name in names}
+    assert {t for t in top if not t.endswith(".dist-info")} == {"relevance_plan"}
+    for needed in ("relevance_plan/data/domains/coffee/domain.pddl", "relevance_plan/data/domains/coffee/relevance.yaml",
+                   "relevance_plan/data/domains/cereal/domain.pddl", "relevance_plan/data/problems/coffee-hard.pddl",
+                   "relevance_plan/generators/generate.py"):
+        assert needed in names
+
+
+def test_the_installed_tool_runs_without_the_source_tree(wheel, tmp_path):
+    target = tmp_path / "site"
+    subprocess.run([sys.executable, "-m", "pip", "install", "--no-deps", "-q", "--target", str(target), str(wheel)],
+                   check=True, capture_output=True)
+    work = tmp_path / "elsewhere"
+    work.mkdir()
+    env = {**os.environ, "PYTHONPATH": str(target)}
+
+    def tool(*arguments):
+        return subprocess.run([sys.executable, "-m", "relevance_plan", *map(str, arguments)], cwd=work, env=env,
+                              capture_output=True, text=True, timeout=300)
+
+    where = subprocess.run([sys.executable, "-c", "import relevance_plan; print(relevance_plan.__file__)"],
+                           cwd=work, env=env, capture_output=True, text=True)
+    assert where.stdout.startswith(str(target))
+    generated = tool("generate", "coffee", "--count", "1", "--seed", "1", "--out", work / "suite")
+    assert generated.returncode == 0, generated.stderr
+    (problem,) = (work / "suite").glob("coffee-*.pddl")
+    planned = tool("plan", work / "suite" / "domain.pddl", problem, "--json", "--plan-file", work / "plan.txt")
+    assert planned.returncode == 0, planned.stderr
+    assert '"valid": true' in planned.stdout and (work / "plan.txt").is_file()
+    scored = tool("score", work / "suite" / "domain.pddl", problem)
+    assert "scorer: model" in scored.stdout  # the shipped knowledge model was found
+    demo = tool("demo", "--tiny", "--quiet", "--workdir", work / "demo")
+    assert demo.returncode == 0, demo.stderr
+    assert "coffee-simple" in demo.stdout

@@ -1,0 +1,518 @@
+"""The live session: events, triggers, incremental == from scratch, cues, planning, the watch command."""
+
+from __future__ import annotations
+
+import json
+import random
+
+import pytest
+from click.testing import CliRunner
+
+from relevance_plan.cli import main
+from relevance_plan.data import DOMAINS_DIR, PROBLEMS_DIR
+from relevance_plan.io import load_domain, load_task
+from relevance_plan.pddl.reader import read_domain, read_problem
+from relevance_plan.planning.loop import PlanOptions, PlanStatus
+from relevance_plan.planning.planners import make_planner
+from relevance_plan.planning.validate import validate_plan
+from relevance_plan.relevance.scorers import PlanningTask
+from relevance_plan.relevance.setup import ScoringOptions, score_problem
+from relevance_plan.session import TRIGGERS, Session
+from tests.kitchen import coffee_problem
+from tests.worlds import BLOCKSWORLD_DOMAIN, blocksworld_problem
+
+COFFEE_DOMAIN = DOMAINS_DIR / "coffee" / "domain.pddl"
+COFFEE_SIMPLE = PROBLEMS_DIR / "coffee-simple.pddl"
+
+
+def coffee_session(text: str | None = None, options: ScoringOptions = ScoringOptions(), **kw) -> Session:
+    domain = load_domain(COFFEE_DOMAIN)
+    problem = read_problem(text if text is not None else coffee_problem(), domain)
+    return Session(domain, problem, options, domain_path=str(COFFEE_DOMAIN), **kw)
+
+
+def from_scratch(session: Session):
+    """Determination from scratch on the current state: write it out, read it back, score, prune."""
+    problem = read_problem(session.scene.problem_text(), session.domain)
+    scoring = score_problem(PlanningTask(session.domain, problem), session.options, model=session.model)
+    return scoring.scores, scoring.prune(session.options.thresholds)
+
+
+def assert_same_as_scratch(session: Session, where: str = "", explanations: bool = True) -> None:
+    scores, result = from_scratch(session)
+    current = session.current_scores()
+    assert current.sufficient == scores.sufficient, where
+    assert current.insufficiency == scores.insufficiency, where
+    if not scores.sufficient:
+        return
+    assert current.element_scores == scores.element_scores, where
+    assert current.class_scores == scores.class_scores, where
+    assert current.element_class == scores.element_class, where
+    if explanations:
+        assert current.explanations == scores.explanations, where
+    assert current.unknown == scores.unknown, where
+    decision = session.decision
+    assert decision is not None, where
+    assert decision.selected == result.selected, where
+    assert decision.kept == result.kept, where
+    assert {r.name for r in decision.restored} == {r.name for r in result.restored}, where
+
+
+def stand(item: str, place: str) -> list:
+    return [["at", item, place], ["on-base", item], ["clear", item]]
+
+
+# --------------------------------------------------------------------------- event kinds and triggers
+
+
+def test_add_of_a_relevant_element_triggers_and_keeps_it():
+    session = coffee_session()
+    report = session.handle({"event": "add", "object": "Mug_3", "type": "cup",
+                             "facts": stand("mug_3", "table_1") + [["empty", "mug_3"]]})
+    assert report.triggered and "element added: Mug_3" in report.reason
+    assert "mug_3" in report.determination.kept and report.added == ("mug_3",)
+    assert_same_as_scratch(session)
+
+
+def test_remove_triggers_and_drops_the_element():
+    session = coffee_session()
+    assert "paper_cup_1" in session.kept
+    report = session.handle({"event": "remove", "object": "paper_cup_1"})
+    assert report.triggered and report.reason == "element removed: paper_cup_1"
+    assert "paper_cup_1" in report.dropped and "paper_cup_1" not in session.scene.objects
+    assert not any("paper_cup_1" in fact for fact in session.scene.facts)
+    assert_same_as_scratch(session)
+
+
+def test_a_fact_among_irrelevant_objects_triggers_nothing():
+    session = coffee_session(coffee_problem(extra_plates=4, plate_on_cup=False))
+    kept = session.kept
+    assert "side_plate_1" not in kept and "side_plate_3" not in kept
+    for event in ({"event": "set", "fact": ["on", "side_plate_1", "side_plate_3"]},
+                  {"event": "unset", "fact": ["clear", "side_plate_3"]},
+                  {"event": "unset", "fact": ["on", "side_plate_1", "side_plate_3"]}):
+        report = session.handle(event)
+        assert not report.triggered, report.reason
+        assert report.error is None
+        assert session.kept == kept
+        assert_same_as_scratch(session)
+
+
+def test_a_plate_put_on_the_kept_cup_triggers_and_is_restored_by_closure():
+    session = coffee_session(coffee_problem(plate_on_cup=False))
+    assert "plastic_cup_1" in session.kept and "dinner_plate_2" not in session.kept
+    report = session.handle({"event": "set", "fact": ["on", "dinner_plate_2", "plastic_cup_1"]})
+    assert report.triggered and "kept plastic_cup_1" in report.reason
+    restored = {r.name: r.reason for r in report.determination.restored}
+    assert restored["dinner_plate_2"] == "on top of plastic_cup_1 (on dinner_plate_2 plastic_cup_1)"
+    assert "dinner_plate_2" in report.added
+    assert_same_as_scratch(session)
+
+
+def test_a_fact_that_changes_the_closure_rules_triggers_even_among_irrelevant_objects():
+    # Every item has one place, so (at ?i ?p) is functional and keeping an item keeps its
+    # place.  A plate (irrelevant) seen in two places ends that rule: the kept places no
+    # longer follow from the kept items.
+    session = coffee_session(COFFEE_SIMPLE.read_text())
+    session.handle({"event": "add", "object": "pantry_1", "type": "surface", "facts": [["accessible", "pantry_1"]]})
+    assert not {"dinner_plate_1", "cabinet_1", "pantry_1"} & session.kept
+    report = session.handle({"event": "set", "fact": ["at", "dinner_plate_1", "pantry_1"]})
+    assert report.triggered and report.reason.startswith("closure rules changed")
+    # (Which of its two places the scene reads for the plate is arbitrary, from scratch too.)
+    assert_same_as_scratch(session, explanations=False)
+    report = session.handle({"event": "unset", "fact": ["at", "dinner_plate_1", "pantry_1"]})
+    assert report.triggered and report.reason.startswith("closure rules changed")
+    assert_same_as_scratch(session)
+
+
+def test_goal_human_and_cue_events_trigger_once_and_repeats_do_not():
+    session = coffee_session(options=ScoringOptions(objective="drink-at-break"))
+    for event, reason in (
+        ({"event": "human", "name": "alice", "preferences": "alice"}, "human changed: alice (recorded preferences 'alice')"),
+        ({"event": "goal", "goal": "(and (coffee-served alice) (stirred paper_cup_1))"}, "goal changed"),
+        ({"event": "cue", "task": "tea"}, "cue: task tea"),
+        ({"event": "cue", "objective": "serve-coffee-with-creamer"}, "cue: objective serve-coffee-with-creamer"),
+    ):
+        report = session.handle(event)
+        assert report.triggered and report.reason == reason
+        assert_same_as_scratch(session, reason)
+        again = session.handle(event)
+        assert not again.triggered and again.error is None
+    assert session.options.human == "alice" and session.options.model_task == "tea"
+    assert "paper_cup_1" in session.decision.selected  # named in the goal
+
+
+def test_trigger_registry_names():
+    assert set(TRIGGERS) == {"element-added", "element-removed", "goal-changed", "human-changed", "cue-received",
+                             "kept-touched", "relevance-crossed", "closure-rules-changed"}
+
+
+def test_opening_a_closed_container_can_make_its_contents_relevant():
+    # creamer_1 sits in the closed fridge: placement factor 0.85.  With tau_e between the
+    # two scores, opening the fridge lifts it over the threshold: a fact among objects
+    # that were not kept, which must still trigger.
+    session = coffee_session(options=ScoringOptions(human="bob"))
+    inside = session.current_scores().element_scores["creamer_1"]
+    tau = inside + 0.01
+    from relevance_plan.relevance.prune import Thresholds
+
+    session = coffee_session(options=ScoringOptions(human="bob", thresholds=Thresholds(0.2, tau)))
+    assert "creamer_1" not in session.kept and "fridge_1" not in session.kept
+    report = session.handle({"event": "set", "fact": ["accessible", "fridge_1"]})
+    assert report.triggered and "relevance crossed the thresholds: creamer_1" in report.reason
+    assert "creamer_1" in session.kept
+    assert_same_as_scratch(session)
+
+
+# --------------------------------------------------------------------------- incremental == from scratch
+
+TYPES = ["cup", "plate", "whitener", "napkin", "tea", "stirrer", "bowl", "drink", "sweetener", "food"]
+KINDS = {"cup": "paper_cup", "plate": "side_plate", "whitener": "whole_milk", "napkin": "napkin", "tea": "tea_bag",
+         "stirrer": "stir_stick", "bowl": "bowl", "drink": "water_bottle", "sweetener": "sugar_packet", "food": "bagel"}
+
+
+def random_event(rng: random.Random, session: Session, counter: list) -> dict:
+    scene = session.scene
+    places = [n for n, t in scene.objects.items() if t in ("surface", "container")]
+    items = [n for n, t in scene.objects.items() if t not in ("surface", "container", "human")]
+    humans = [n for n, t in scene.objects.items() if t == "human"]
+    located = {f[1]: f[2] for f in scene.facts if f[0] == "at"}
+    roll = rng.random()
+    if roll < 0.2 or len(items) < 3:
+        counter[0] += 1
+        type_name = rng.choice(TYPES)
+        name = f"{KINDS[type_name]}_{100 + counter[0]}"
+        facts = stand(name, rng.choice(places))
+        if type_name == "cup":
+            facts.append(["empty", name])
+        if rng.random() < 0.3 and items:
+            below = rng.choice(items)
+            facts = [["at", name, located.get(below, places[0])], ["on", name, below], ["clear", name]]
+        return {"event": "add", "object": name, "type": type_name, "facts": facts}
+    if roll < 0.3:
+        goal_names = {a for f in [session.scene.goal] for a in str(f).replace("'", " ").split()}
+        candidates = [n for n in items + (places if len(places) > 2 else []) if n not in goal_names]
+        if candidates:
+            return {"event": "remove", "object": rng.choice(candidates)}
+    if roll < 0.55 and located:
+        item = rng.choice(sorted(located))
+        if rng.random() < 0.5:
+            return {"event": "unset", "fact": ["at", item, located[item]]}
+        return {"event": "unset" if rng.random() < 0.3 else "set", "fact": ["clear", item]}
+    if roll < 0.7:
+        unplaced = [i for i in items if i not in located]
+        if unplaced:
+            return {"event": "set", "fact": ["at", rng.choice(unplaced), rng.choice(places)]}
+        a, b = rng.sample(items, 2)
+        return {"event": rng.choice(["set", "unset"]), "fact": ["on", a, b]}
+    if roll < 0.8:
+        return {"event": rng.choice(["set", "unset"]), "fact": ["accessible", rng.choice(places)]}
+    if roll < 0.85 and humans:
+        cups = [n for n, t in scene.objects.items() if t == "cup"]
+        goal = f"(coffee-served {humans[0]})"
+        if cups and rng.random() < 0.5:
+            goal = f"(and {goal} (stirred {rng.choice(cups)}))"
+        return {"event": "goal", "goal": goal}
+    if roll < 0.9 and humans:
+        return {"event": "human", "name": humans[0], "preferences": rng.choice(["alice", "bob", None])}
+    if roll < 0.92:
+        robot = next((f for f in scene.facts if f[0] == "robot-at"), None)
+        if robot is not None and rng.random() < 0.5:
+            return {"event": "unset", "fact": list(robot)}
+        if robot is None:
+            return {"event": "set", "fact": ["robot-at", rng.choice(places)]}
+        counter[0] += 1
+        name = f"guest_{counter[0]}"
+        return {"event": "add", "object": name, "type": "human", "facts": [["human-at", name, rng.choice(places)]]}
+    if roll < 0.96:
+        if rng.random() < 0.5:
+            return {"event": "cue", "task": rng.choice(["cold-brew-coffee", "tea", "water", "hot-coffee-with-creamer"])}
+        return {"event": "cue", "objective": rng.choice(["drink-at-break", "serve-coffee-with-creamer"])}
+    return rng.choice([
+        {"event": "set", "fact": ["on", "nothing_here", places[0]]},
+        {"event": "set", "fact": ["teleport", places[0]]},
+        {"event": "goal", "goal": "(coffee-served"},
+        {"event": "remove", "object": "ghost"},
+    ])
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_incremental_determination_equals_from_scratch_on_random_streams(seed):
+    rng = random.Random(seed)
+    session = coffee_session(COFFEE_SIMPLE.read_text(), options=ScoringOptions())
+    counter = [0]
+    triggered = 0
+    for step in range(120):
+        event = random_event(rng, session, counter)
+        report = session.handle(event)
+        triggered += report.triggered
+        assert_same_as_scratch(session, f"seed {seed} step {step}: {event}")
+    assert 0 < triggered < 120
+
+
+@pytest.mark.parametrize("seed", range(2))
+def test_incremental_equals_from_scratch_with_the_goal_scorer(seed):
+    domain = read_domain(BLOCKSWORLD_DOMAIN)
+    problem = read_problem(blocksworld_problem(12, seed=seed), domain)
+    session = Session(domain, problem, ScoringOptions(scorer="goal"))
+    rng = random.Random(seed)
+    blocks = list(problem.objects)
+    for step in range(40):
+        a, b = rng.sample(blocks, 2)
+        event = rng.choice([
+            {"event": rng.choice(["set", "unset"]), "fact": ["on", a, b]},
+            {"event": rng.choice(["set", "unset"]), "fact": ["clear", a]},
+            {"event": "add", "object": f"n{step}", "type": "block", "facts": [["ontable", f"n{step}"], ["clear", f"n{step}"]]},
+        ])
+        session.handle(event)
+        assert_same_as_scratch(session, f"step {step}: {event}")
+
+
+# --------------------------------------------------------------------------- idle, insufficient cues, invalid events
+
+IDLE_SCENE = """(define (problem break-table)
+  (:domain coffee)
+  (:objects counter_1 table_1 - surface  plastic_cup_1 - cup  cold_brew_1 - coffee-source
+            whole_milk_1 - whitener  stir_stick_1 - stirrer  napkin_1 - napkin)
+  (:init (robot-at counter_1) (hand-empty) (accessible counter_1) (accessible table_1)
+         (at plastic_cup_1 counter_1) (on-base plastic_cup_1) (clear plastic_cup_1) (empty plastic_cup_1)
+         (at cold_brew_1 counter_1) (on-base cold_brew_1) (clear cold_brew_1)
+         (at whole_milk_1 table_1) (on-base whole_milk_1) (clear whole_milk_1)
+         (at stir_stick_1 table_1) (on-base stir_stick_1) (clear stir_stick_1)
+         (at napkin_1 table_1) (on-base napkin_1) (clear napkin_1))
+  (:goal (and)))
+"""
+
+
+def test_idle_scene_triggers_nothing_until_someone_is_served():
+    session = coffee_session(IDLE_SCENE, options=ScoringOptions(objective="drink-at-break"))
+    assert session.idle and session.decision is None
+    for event in ({"event": "add", "object": "donut_1", "type": "food", "facts": stand("donut_1", "table_1")},
+                  {"event": "set", "fact": ["on", "napkin_1", "whole_milk_1"]},
+                  {"event": "remove", "object": "donut_1"},
+                  {"event": "add", "object": "alice", "type": "human", "facts": [["human-at", "alice", "table_1"]]}):
+        report = session.handle(event)
+        assert not report.triggered and report.error is None
+    report = session.handle({"event": "human", "name": "alice", "preferences": "alice"})
+    assert report.triggered and report.sufficient and "cold_brew_1" in report.determination.kept
+    assert not session.idle
+    assert_same_as_scratch(session)
+
+
+def test_insufficient_cues_keep_the_previous_decision_stale_until_a_cue():
+    session = coffee_session(options=ScoringOptions(objective="drink-at-break", human="alice"))
+    assert session.sufficient
+    before = session.kept
+    report = session.handle({"event": "human", "name": "alice", "preferences": None})
+    assert report.triggered and not report.sufficient and report.stale
+    assert "objective ambiguous" in report.insufficiency
+    assert report.ask.cue == "task" and report.ask.options[0] == "cold-brew-coffee"
+    assert report.determination.kept == before  # the previous decision stays in force
+    # While stale, element events still trigger but the decision waits for cues.
+    report = session.handle({"event": "add", "object": "mug_9", "type": "cup", "facts": stand("mug_9", "table_1")})
+    assert report.triggered and report.stale and session.kept == before and report.ask.cue == "task"
+    assert_same_as_scratch(session)
+    report = session.handle({"event": "cue", "task": "cold-brew-coffee"})
+    assert report.triggered and report.sufficient and not report.stale
+    assert "mug_9" in report.added
+    assert_same_as_scratch(session)
+
+
+def test_no_objective_asks_for_one():
+    session = coffee_session(IDLE_SCENE)
+    session.handle({"event": "add", "object": "bob", "type": "human", "facts": [["human-at", "bob", "table_1"]]})
+    report = session.handle({"event": "human", "name": "bob", "preferences": None})
+    assert not report.sufficient and report.ask.cue == "objective"
+    report = session.handle({"event": "cue", "objective": "drink-at-break"})
+    assert not report.sufficient and report.ask.cue == "task"
+    report = session.handle({"event": "cue", "task": "cold-brew-coffee"})
+    assert report.sufficient and report.determination is not None and report.ask.cue == "preference"
+
+
+@pytest.mark.parametrize("line, message", [
+    ("{not json", "not a JSON object"),
+    ("[1, 2]", "an event must be a JSON object"),
+    ('{"event": "explode"}', "unknown event"),
+    ('{"event": "remove", "object": "ghost"}', "unknown object 'ghost'"),
+    ('{"event": "remove", "object": "alice"}', "named in the goal"),
+    ('{"event": "set", "fact": ["on", "plastic_cup_1"]}', "takes 2 arguments, got 1"),
+    ('{"event": "set", "fact": ["levitating", "plastic_cup_1"]}', "unknown predicate 'levitating'"),
+    ('{"event": "unset", "fact": ["clear", "ghost"]}', "unknown object 'ghost'"),
+    ('{"event": "add", "object": "mug_1", "type": "teapot"}', "unknown type 'teapot'"),
+    ('{"event": "add", "object": "paper_cup_1", "type": "cup"}', "already in the scene"),
+    ('{"event": "add", "object": "mug_1", "type": "cup", "facts": [["at", "mug_1", "moon"]]}', "unknown object 'moon'"),
+    ('{"event": "goal", "goal": "(and (coffee-served alice)"}', "goal does not parse"),
+    ('{"event": "goal", "goal": "(coffee-served nobody)"}', "goal does not parse"),
+    ('{"event": "goal", "goal": "(served alice)"}', "unknown predicate"),
+    ('{"event": "human", "name": "alice", "preferences": "carol"}', "unknown preference profile 'carol'"),
+    ('{"event": "cue", "task": "juggling"}', "unknown task"),
+    ('{"event": "cue"}', "either 'task' or 'objective'"),
+])
+def test_invalid_events_are_rejected_and_the_session_carries_on(line, message):
+    session = coffee_session()
+    kept, facts, objects = session.kept, set(session.scene.facts), dict(session.scene.objects)
+    report = session.handle_line(line)
+    assert report.error is not None and message in report.error
+    assert not report.triggered
+    assert session.kept == kept and session.scene.facts == facts and session.scene.objects == objects
+    report = session.handle({"event": "add", "object": "mug_5", "type": "cup", "facts": stand("mug_5", "table_1")})
+    assert report.triggered and report.error is None and report.seq == 2
+
+
+# --------------------------------------------------------------------------- planning in the loop
+
+
+class CountingPlanner:
+    def __init__(self, tmp_path):
+        self.planner = make_planner("fast-downward", "lama-first", check=True)
+        self.tmp_path = tmp_path
+        self.calls = 0
+
+    def __call__(self, text, limit):
+        self.calls += 1
+        path = self.tmp_path / f"p{self.calls}.pddl"
+        path.write_text(text)
+        return self.planner.run(str(COFFEE_DOMAIN), str(path), time_limit=limit, memory_limit_mb=None)
+
+
+def test_every_reported_plan_is_valid_on_the_current_state_and_still_valid_plans_are_kept(tmp_path):
+    planner = CountingPlanner(tmp_path)
+    session = coffee_session(COFFEE_SIMPLE.read_text(), run_planner=planner, plan_in_loop=True,
+                             plan_options=PlanOptions(timeout=60))
+    events = [
+        {"event": "plan"},
+        {"event": "add", "object": "donut_1", "type": "food", "facts": stand("donut_1", "serving_table_1")},
+        {"event": "add", "object": "Mug_2", "type": "cup", "facts": stand("mug_2", "serving_table_1") + [["empty", "mug_2"]]},
+        {"event": "set", "fact": ["on", "dinner_plate_1", "plastic_cup_1"]},
+        {"event": "remove", "object": "cold_brew_coffee_1"},
+        {"event": "add", "object": "espresso_1", "type": "coffee-source", "facts": stand("espresso_1", "kitchen_counter_1")},
+        {"event": "plan"},
+    ]
+    plans = []
+    for event in events:
+        calls = planner.calls
+        report = session.handle(event)
+        if report.plan is not None:
+            assert (planner.calls > calls) == (report.plan.source == "planner")
+        if report.plan is not None and event.get("object") == "cold_brew_coffee_1":
+            assert report.plan.status is PlanStatus.UNSOLVABLE  # the only coffee left the scene
+        elif report.plan is not None:
+            assert report.plan.status is PlanStatus.SOLVED, report.plan.message
+            current = session.scene.read_problem()
+            assert validate_plan(session.domain, current, report.plan.steps).valid
+            plans.append((event["event"], report.plan.source))
+    assert plans[0] == ("plan", "planner")
+    assert ("add", "previous") in plans  # Mug_2 joined the kept set; the plan did not need it
+    assert ("add", "planner") in plans  # espresso arrived after the coffee left: plan again
+    assert plans[-1] == ("plan", "previous")
+
+
+# --------------------------------------------------------------------------- the watch command
+
+
+def run_watch(tmp_path, events, *args):
+    events_file = tmp_path / "events.jsonl"
+    events_file.write_text("\n".join(e if isinstance(e, str) else json.dumps(e) for e in events) + "\n")
+    result = CliRunner().invoke(
+        main, ["watch", str(COFFEE_DOMAIN), str(COFFEE_SIMPLE), "--events", str(events_file), *args])
+    return result, [json.loads(line) for line in result.stdout.splitlines()]
+
+
+def test_watch_writes_one_line_per_event_and_a_snapshot_prune_agrees_with(tmp_path):
+    events = [
+        {"event": "add", "object": "Mug_2", "type": "cup", "facts": stand("Mug_2", "serving_table_1")},
+        "this is not json",
+        {"event": "set", "fact": ["on", "dinner_plate_1", "tea_bag_1"]},
+        {"event": "set", "fact": ["on", "dinner_plate_1", "Mug_2"]},
+        {"event": "set", "fact": ["on", "ghost", "Mug_2"]},
+    ]
+    result, lines = run_watch(tmp_path, events, "--snapshot", str(tmp_path / "snap"))
+    assert result.exit_code == 0, result.stderr
+    assert [line["seq"] for line in lines] == [1, 2, 3, 4, 5]
+    for line in lines:
+        assert {"seq", "event", "triggered", "reason", "sufficient", "added", "dropped", "ask",
+                "determination_ms"} <= line.keys()
+    assert lines[0]["triggered"] and "Mug_2" in lines[0]["kept"] and lines[0]["kept"] == sorted(lines[0]["kept"])
+    assert lines[1]["error"].startswith("not a JSON object") and not lines[1]["triggered"]
+    assert "error" in lines[4] and "unknown object 'ghost'" in lines[4]["error"]
+    assert lines[3]["triggered"] and "dinner_plate_1" in lines[3]["added"]
+    kept = next(line["kept"] for line in reversed(lines) if line["triggered"])
+
+    current = tmp_path / "snap" / "current.pddl"
+    domain, problem = load_task(COFFEE_DOMAIN, current)
+    assert "Mug_2" in problem.display_names.values()  # the user's spelling
+    pruned = read_problem((tmp_path / "snap" / "pruned.pddl").read_text(), domain)
+    assert sorted(pruned.display(n) for n in pruned.objects) == kept
+    result = CliRunner().invoke(
+        main, ["prune", str(COFFEE_DOMAIN), str(current), "-o", str(tmp_path / "p.pddl"), "--json"])
+    assert result.exit_code == 0, result.stderr
+    assert sorted(json.loads(result.stdout)["kept"]) == kept
+
+
+def test_watch_with_plan_reports_validated_plans(tmp_path):
+    events = [
+        {"event": "add", "object": "mug_2", "type": "cup", "facts": stand("mug_2", "serving_table_1") + [["empty", "mug_2"]]},
+        {"event": "remove", "object": "plastic_cup_1"},
+        {"event": "remove", "object": "paper_cup_1"},
+        {"event": "plan"},
+    ]
+    result, lines = run_watch(tmp_path, events, "--plan", "--snapshot", str(tmp_path / "snap"), "--timeout", "60")
+    assert result.exit_code == 0, result.stderr
+    planned = [line for line in lines if "plan_status" in line]
+    assert planned and all(line["plan_status"] == "solved" for line in planned)
+    assert lines[-1]["plan_source"] == "previous"
+    domain, problem = load_task(COFFEE_DOMAIN, tmp_path / "snap" / "current.pddl")
+    steps = [tuple(step.strip("()").lower().split()) for step in lines[-1]["plan"]]
+    assert validate_plan(domain, problem, steps).valid
+    assert any("mug_2" in step for step in lines[-1]["plan"])
+
+
+def test_watch_missing_file_is_one_line_and_exit_code_31(tmp_path):
+    result = CliRunner().invoke(
+        main, ["watch", str(COFFEE_DOMAIN), str(tmp_path / "missing.pddl"), "--events", "-"], input="")
+    assert result.exit_code == 31
+    assert result.stderr.count("\n") == 1 and "Traceback" not in result.stderr
+    result = CliRunner().invoke(
+        main, ["watch", str(COFFEE_DOMAIN), str(COFFEE_SIMPLE), "--events", str(tmp_path / "none.jsonl")])
+    assert result.exit_code == 31 and "events file not found" in result.stderr
+
+
+def test_watch_reads_standard_input_until_it_ends(tmp_path):
+    result = CliRunner().invoke(
+        main, ["watch", str(COFFEE_DOMAIN), str(COFFEE_SIMPLE)],
+        input='{"event": "set", "fact": ["clear", "dinner_plate_1"]}\n\n{"event": "plan"}\n')
+    assert result.exit_code == 0, result.stderr
+    lines = [json.loads(line) for line in result.stdout.splitlines()]
+    assert len(lines) == 2 and lines[0]["triggered"] is False
+
+
+# --------------------------------------------------------------------------- the shipped example and the README
+
+REPO = COFFEE_DOMAIN.parents[4] if (COFFEE_DOMAIN.parents[4] / "examples").is_dir() else None
+
+
+@pytest.mark.skipif(REPO is None, reason="needs the source tree (examples/, README.md)")
+def test_the_shipped_example_replays_the_paper_demonstration():
+    domain, problem = load_task(COFFEE_DOMAIN, REPO / "examples" / "coffee-break" / "scene.pddl")
+    session = Session(domain, problem, ScoringOptions(objective="drink-at-break"))
+    lines = (REPO / "examples" / "coffee-break" / "events.jsonl").read_text().splitlines()
+    reports = [session.handle_line(line) for line in lines]
+    assert all(r.error is None for r in reports)
+    assert [r.triggered for r in reports] == [False] * 6 + [True] * 6 + [False]
+    alice, alice_goal, bob_arrives, bob, bob_goal, cue = reports[6:12]
+    assert alice.sufficient and "paper_cup_1" not in alice.determination.kept  # she dislikes paper cups
+    assert alice.ask is None and bob_arrives.sufficient
+    assert not bob.sufficient and bob.ask.cue == "task" and bob.stale
+    assert not bob_goal.sufficient and bob_goal.determination.kept == bob_arrives.determination.kept
+    assert cue.sufficient and not cue.stale and cue.ask.cue == "preference" and "bob" in cue.determination.kept
+
+
+@pytest.mark.skipif(REPO is None, reason="needs the source tree (examples/, README.md)")
+def test_the_readme_session_snippet_runs(monkeypatch):
+    readme = (REPO / "README.md").read_text()
+    snippet = next(block for block in readme.split("```python")[1:] if "relevance_plan.session" in block)
+    monkeypatch.chdir(REPO)
+    namespace: dict = {}
+    exec(snippet.split("```")[0], namespace)
+    report = namespace["report"]
+    assert report.triggered and report.reason == "human changed: Alice (recorded preferences 'alice')"
