@@ -27,6 +27,7 @@ from typing import AbstractSet, Callable, Mapping, Sequence
 from relevance_plan.pddl.reader import Formula, effect_literals
 from relevance_plan.relevance.analysis import object_distances
 from relevance_plan.relevance.closure import Restored
+from relevance_plan.relevance.types import InferredTypes, infer_types
 
 DEFAULT_BUDGET = 400_000  # bindings tried before the check gives up
 REPAIR_MAX_FAN = 4.0  # repair candidates are ranked by hops that do not pass from a class-like value to its members
@@ -84,17 +85,18 @@ def relaxed_reachability(task, kept: AbstractSet[str], budget: int = DEFAULT_BUD
     joining the others against the facts processed so far (semi-naive, as in
     Fast Downward's translator).
     """
-    domain, problem = task.typing.domain, task.typing.problem
+    typing = typing_of(task)
+    domain, problem = typing.domain, typing.problem
     allowed = set(kept) | set(domain.constants)
     types_of = dict(domain.constants)
     types_of.update(problem.objects)
     goal = [(p,) + args for p, args in _conjuncts(problem.goal) if not any(a.startswith("?") for a in args)]
     facts: dict[tuple, tuple | None] = {}  # fact -> (step, schema, binding) that first reached it; None: initial
     queue: deque = deque()
-    for atom in problem.init:
-        if all(arg in allowed for arg in atom[1:]):
-            facts[atom] = None
-            queue.append(atom)
+    # sorted: the same objects give the same relaxed plan whatever order the set was built in
+    for atom in sorted(atom for atom in problem.init if all(arg in allowed for arg in atom[1:])):
+        facts[atom] = None
+        queue.append(atom)
     of_type: dict[str, list] = {}
     fits: dict[str, frozenset] = {}
 
@@ -273,10 +275,11 @@ def repair_selection(
         key=lambda name: (-scores.get(name, 0.0), distance.get(name, far), name),
     )
     # A class with no member kept cannot fill any role (no airplane at all): its best-ranked member goes first.
-    present = {task.object_type(name) for name in kept if name in task.problem.objects}
+    classes = typing_of(task).problem.objects
+    present = {classes[name] for name in kept if name in classes}
     representatives = {}
     for name in pool:
-        representatives.setdefault(task.object_type(name), name)
+        representatives.setdefault(classes[name], name)
     first = [name for cls, name in representatives.items() if cls not in present]
     pool = first + [name for name in pool if name not in set(first)]
     rank = {name: i for i, name in enumerate(pool)}
@@ -303,6 +306,12 @@ def repair_selection(
     closed, closure_reasons = close(kept | frozenset(used))
     reasons.extend(r for r in closure_reasons if r.name not in used and r.name not in kept)
     return closed, tuple(reasons), check
+
+
+def typing_of(task) -> InferredTypes:
+    """The task's types, inferred where the domain declares none (a duck-typed task gets them computed)."""
+    typing = getattr(task, "typing", None)
+    return typing if typing is not None else infer_types(task.domain, task.problem)
 
 
 def hub_degree(task) -> int:
