@@ -13,8 +13,9 @@ doubling batches until the goal is relaxed-reachable, then keeps only the
 added objects some relaxed plan uses (a truck, an airplane, the cells of a
 path), each with the plan step that needs it as its reason.
 
-The check over-approximates: negative and disjunctive conditions and effect
-conditions are ignored, so "unreachable" is sound.  It gives up (and says so)
+The check over-approximates: negative, disjunctive and quantified conditions
+and effect conditions are ignored, and a universally quantified effect adds
+its atom for every kept object of the type, so "unreachable" is sound.  It gives up (and says so)
 past a work budget rather than cost more than the planner would.
 """
 
@@ -24,7 +25,7 @@ from collections import defaultdict, deque
 from dataclasses import dataclass
 from typing import AbstractSet, Callable, Mapping, Sequence
 
-from relevance_plan.pddl.reader import Formula, effect_literals
+from relevance_plan.pddl.reader import Formula
 from relevance_plan.relevance.analysis import object_distances
 from relevance_plan.relevance.closure import Restored
 from relevance_plan.relevance.types import InferredTypes, infer_types
@@ -59,18 +60,32 @@ class _Schema:
     parameters: tuple  # variables
     types: tuple
     pre: tuple  # ((predicate, args), ...)
-    add: tuple  # ((predicate, args), ...)
+    add: tuple  # ((predicate, args, ((quantified variable, type), ...)), ...)
 
 
 def _schemas(domain) -> list[_Schema]:
     result = []
     for action in domain.actions:
         pre = tuple(_conjuncts(action.precondition))
-        add = tuple((atom[1], atom[2]) for atom, is_add, _ in effect_literals(action.effect) if is_add)
+        add = tuple(_adds(action.effect, ()))
         result.append(
             _Schema(action.name, tuple(v for v, _ in action.parameters), tuple(t for _, t in action.parameters), pre, add)
         )
     return result
+
+
+def _adds(effect: Formula, quantified: tuple):
+    """(predicate, args, quantified variables with types) of every atom an effect can add; conditions ignored."""
+    kind = effect[0]
+    if kind == "atom":
+        yield effect[1], effect[2], tuple((v, t) for v, t in quantified if v in effect[2])
+    elif kind == "and":
+        for part in effect[1:]:
+            yield from _adds(part, quantified)
+    elif kind == "forall":
+        yield from _adds(effect[2], quantified + tuple(effect[1]))
+    elif kind == "when":
+        yield from _adds(effect[2], quantified)
 
 
 class _OutOfBudget(Exception):
@@ -126,14 +141,14 @@ def relaxed_reachability(task, kept: AbstractSet[str], budget: int = DEFAULT_BUD
         free = [(v, t) for v, t in zip(schema.parameters, schema.types) if v not in binding]
         for full in _fill(binding, free, objects_of, work, budget):
             step = (schema.name,) + tuple(full[v] for v in schema.parameters)
-            for predicate, args in schema.add:
-                if any(a.startswith("?") and a not in full for a in args):
-                    continue  # a quantified effect variable: left out (an under-approximation kept sets rarely meet)
-                fact = (predicate,) + tuple(full.get(a, a) for a in args)
-                if fact not in facts:
-                    facts[fact] = (step, schema, full)
-                    queue.append(fact)
-                    missing.discard(fact)
+            for predicate, args, quantified in schema.add:
+                # a universally quantified effect adds its atom for every kept object of the variable's type
+                for each in _fill(full, list(quantified), objects_of, work, budget):
+                    fact = (predicate,) + tuple(each.get(a, a) for a in args)
+                    if fact not in facts:
+                        facts[fact] = (step, schema, full)
+                        queue.append(fact)
+                        missing.discard(fact)
 
     def join(pre: list, binding: dict):
         if not pre:
