@@ -175,3 +175,5 @@ def test_cli_generates_a_classic_suite(tmp_path):
     bad = CliRunner().invoke(main, ["generate", "grid", "--size", "3", "--out", str(tmp_path / "x")])
     assert bad.exit_code != 0 and "size must be at least 10" in bad.output
     assert len(bad.output.strip().splitlines()) == 1
+    mixed = CliRunner().invoke(main, ["generate", "coffee", "--size", "50", "--out", str(tmp_path / "y")])
+    assert mixed.exit_code != 0 and "--size applies to the classic worlds" in mixed.output

@@ -109,11 +109,15 @@ def generate(world, difficulty, count, seed, out_dir, distractors, size):
     from relevance_plan.progress import progress
 
     if world in CLASSIC_WORLDS:
+        if distractors is not None:
+            raise UsageError("--distractors applies to the kitchen worlds; classic worlds take --size")
         check_classic_arguments(world, count, seed, size)
         with progress(count, f"generate {world}") as bar:
             paths = generate_classic_suite(world, count, seed, Path(out_dir), size=size,
                                            progress=lambda done, total: bar.advance())
     else:
+        if size is not None:
+            raise UsageError("--size applies to the classic worlds; kitchen worlds take --distractors")
         with progress(count, f"generate {world}-{difficulty}") as bar:
             paths = generate_suite(world, difficulty, count, seed, Path(out_dir), distractors=distractors,
                                    progress=lambda done, total: bar.advance())
