@@ -31,6 +31,7 @@ from relevance_plan.relevance.closure import Restored
 from relevance_plan.relevance.types import InferredTypes, infer_types
 
 DEFAULT_BUDGET = 400_000  # bindings tried before the check gives up
+BUDGET_PER_OBJECT = 2_000  # the budget grows with the problem, as the planner's own grounding does
 REPAIR_MAX_FAN = 4.0  # repair candidates are ranked by hops that do not pass from a class-like value to its members
 
 
@@ -271,7 +272,8 @@ def repair_selection(
     kept: frozenset,
     scores: Mapping[str, float],
     close: CloseFn,
-    budget: int = DEFAULT_BUDGET,
+    budget: int | None = None,
+    give_up_above: int | None = None,
 ) -> tuple[frozenset, tuple, Reachability]:
     """Add what the relaxed goal needs to ``kept``; returns (kept, what was put back and why, the last check).
 
@@ -280,11 +282,16 @@ def repair_selection(
     state; ``close`` is closure over constraints (it
     returns the closed set and its own reasons).
     """
+    total = len(task.problem.objects)
+    if budget is None:
+        budget = max(DEFAULT_BUDGET, BUDGET_PER_OBJECT * total)
+    if give_up_above is None:
+        give_up_above = total
     check = relaxed_reachability(task, kept, budget)
     if check.reachable or not check.complete:
         return kept, (), check
     distance = object_distances(task.init_index, kept, hub_degree(task), max_fan=REPAIR_MAX_FAN)
-    far = len(task.problem.objects) + 1
+    far = total + 1
     pool = sorted(
         (name for name in task.problem.objects if name not in kept),
         key=lambda name: (-scores.get(name, 0.0), distance.get(name, far), name),
@@ -303,6 +310,8 @@ def repair_selection(
     while pool and not check.reachable:
         take, pool = pool[:batch], pool[batch:]
         current, _ = close(current | frozenset(take))
+        if len(current) > give_up_above:
+            break  # it would keep most of the problem anyway: checking costs more than it saves
         check = relaxed_reachability(task, current, budget)
         if not check.complete:
             break
