@@ -279,8 +279,10 @@ def repair_selection(
 
     Candidates are tried best first: one member of every class the kept set
     lacks, then by score, then by hops from the kept objects in the initial
-    state; ``close`` is closure over constraints (it
-    returns the closed set and its own reasons).
+    state; ``close`` is closure over constraints (it returns the closed set
+    and its own reasons).  ``budget`` bounds each check (default: grows with
+    the problem); past ``give_up_above`` kept objects the search stops and
+    returns what it has.
     """
     total = len(task.problem.objects)
     if budget is None:
