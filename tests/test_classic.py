@@ -177,3 +177,6 @@ def test_cli_generates_a_classic_suite(tmp_path):
     assert len(bad.output.strip().splitlines()) == 1
     mixed = CliRunner().invoke(main, ["generate", "coffee", "--size", "50", "--out", str(tmp_path / "y")])
     assert mixed.exit_code != 0 and "--size applies to the classic worlds" in mixed.output
+    unknown = CliRunner().invoke(main, ["generate", "nosuch", "--out", str(tmp_path / "z")])
+    assert unknown.exit_code != 0 and "logistics-typed" in unknown.output
+    assert len(unknown.output.strip().splitlines()) == 1

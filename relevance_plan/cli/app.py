@@ -116,6 +116,10 @@ def generate(world, difficulty, count, seed, out_dir, distractors, size):
             paths = generate_classic_suite(world, count, seed, Path(out_dir), size=size,
                                            progress=lambda done, total: bar.advance())
     else:
+        from relevance_plan.generators.scenes import WORLD_NAMES
+
+        if world not in WORLD_NAMES:
+            raise UsageError(f"unknown world {world!r}: choose one of {', '.join(WORLD_NAMES + CLASSIC_WORLDS)}")
         if size is not None:
             raise UsageError("--size applies to the classic worlds; kitchen worlds take --distractors")
         with progress(count, f"generate {world}-{difficulty}") as bar:
