@@ -99,17 +99,34 @@ def main():
 @click.option("--seed", type=int, default=0, show_default=True)
 @click.option("--out", "out_dir", type=click.Path(file_okay=False), required=True, help="Suite directory to write.")
 @click.option("--distractors", type=int, default=None, help="Override the paper's distractor count.")
+@click.option("--size", type=int, default=None,
+              help="Classic worlds: about how many objects per problem (default: a size where pure planning takes 5-120 s).")
 @click.option("--force", is_flag=True,
               help="Write into a non-empty directory that holds no suite, overwriting same-named files.")
 @handle_errors
-def generate(world, difficulty, count, seed, out_dir, distractors, force):
-    """Generate a seeded benchmark suite for WORLD (coffee or cereal)."""
+def generate(world, difficulty, count, seed, out_dir, distractors, size, force):
+    """Generate a seeded benchmark suite for WORLD: coffee or cereal, or a classic world
+    (blocksworld, logistics, gripper, ferry, grid, miconic, each also as NAME-typed)."""
+    from relevance_plan.generators.classic import CLASSIC_WORLDS, check_classic_arguments, generate_classic_suite
     from relevance_plan.generators.generate import generate_suite
+    from relevance_plan.generators.scenes import WORLD_NAMES
     from relevance_plan.progress import progress
 
-    with progress(count, f"generate {world}-{difficulty}") as bar:
-        paths = generate_suite(world, difficulty, count, seed, Path(out_dir), distractors=distractors,
-                               progress=lambda done, total: bar.advance(), force=force)
+    if world in CLASSIC_WORLDS:
+        if distractors is not None:
+            raise UsageError("--distractors applies to the kitchen worlds; classic worlds take --size")
+        check_classic_arguments(world, count, seed, size)
+        with progress(count, f"generate {world}") as bar:
+            paths = generate_classic_suite(world, count, seed, Path(out_dir), size=size,
+                                           progress=lambda done, total: bar.advance(), force=force)
+    else:
+        if world not in WORLD_NAMES:
+            raise UsageError(f"unknown world {world!r}: choose one of {', '.join(WORLD_NAMES + CLASSIC_WORLDS)}")
+        if size is not None:
+            raise UsageError("--size applies to the classic worlds; kitchen worlds take --distractors")
+        with progress(count, f"generate {world}-{difficulty}") as bar:
+            paths = generate_suite(world, difficulty, count, seed, Path(out_dir), distractors=distractors,
+                                   progress=lambda done, total: bar.advance(), force=force)
     click.echo(f"wrote {len(paths)} problems to {out_dir}")
 
 

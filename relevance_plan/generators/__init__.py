@@ -10,6 +10,7 @@ The generator never depends on the pruning code; it writes problems with
 ``relevance_plan.pddl.formatter.format_problem``.
 """
 
+from relevance_plan.generators.classic import CLASSIC_WORLDS, generate_classic_problem, generate_classic_suite
 from relevance_plan.generators.catalog import CATALOG, CATALOG_TYPES, KITCHENWARE_TYPES
 from relevance_plan.generators.generate import (
     CONSTRAINT_COUNTS,
@@ -24,6 +25,9 @@ from relevance_plan.generators.generate import (
 from relevance_plan.generators.scenes import DIFFICULTIES, SCENES, WORLD_NAMES, WORLDS, Scene, kind_of
 
 __all__ = [
+    "CLASSIC_WORLDS",
+    "generate_classic_problem",
+    "generate_classic_suite",
     "CATALOG",
     "CATALOG_TYPES",
     "CONSTRAINT_COUNTS",

@@ -288,14 +288,6 @@ def _own_files(directory: Path) -> set[str] | None:
     return {name for name in names if name and name == Path(name).name and name not in (".", "..")}
 
 
-def _planned_files(world: str, difficulty: str, count: int) -> list[str]:
-    names = ["domain.pddl", "suite.json"]
-    for index in range(1, count + 1):
-        name = problem_name(world, difficulty, index)
-        names += [f"{name}.pddl", f"{name}.json"]
-    return names
-
-
 def _check_out_dir(out_dir: Path, planned: list[str], force: bool) -> set[str]:
     """The generator's files already in ``out_dir`` (to replace); refuses to
     overwrite anything else unless ``force``."""
@@ -347,10 +339,58 @@ def generate_suite(
     _check_int("count", count, 1)
     if count > MAX_COUNT:
         raise UsageError(f"count must be at most {MAX_COUNT}, not {count}")
+    manifest = {
+        "generator": GENERATOR,
+        "generator_version": GENERATOR_VERSION,
+        "world": world,
+        "difficulty": difficulty,
+        "count": count,
+        "seed": seed,
+        "distractors": distractors,
+    }
+
+    def make(index: int) -> SuiteProblem:
+        problem = generate_problem(world, difficulty, seed, index, distractors)
+        return SuiteProblem(problem.name, problem.pddl_text, problem.sidecar_text,
+                            {"distractor_count": problem.sidecar["distractor_count"]})
+
+    names = [problem_name(world, difficulty, index) for index in range(1, count + 1)]
+    return write_suite(out_dir, DOMAINS_DIR / world / "domain.pddl", names, make, manifest, progress, force)
+
+
+@dataclass(frozen=True)
+class SuiteProblem:
+    """One problem as a suite stores it: its files' texts and its manifest entry's extra fields."""
+
+    name: str
+    pddl_text: str
+    sidecar_text: str
+    entry: dict
+
+
+def write_suite(
+    out_dir: Path,
+    domain_path: Path,
+    names: list[str],
+    make: Callable[[int], SuiteProblem],
+    manifest: dict,
+    progress: Callable[[int, int], None] | None = None,
+    force: bool = False,
+) -> list[Path]:
+    """Write a suite (every generator's layout): ``domain.pddl``, ``NAME.pddl`` and
+    ``NAME.json`` for each of ``names`` (problem ``i`` made by ``make(i)``, 1-based),
+    and ``suite.json`` (``manifest`` plus the file list); return the ``.pddl`` paths.
+
+    The suite is built in a temporary sibling directory, so a failure leaves
+    no partial suite.  Into an existing directory only the generator's own
+    files (those its ``suite.json`` lists) are replaced or removed; any other
+    file stays.  A non-empty directory without a suite of ours, or a file of
+    the user's with a name the generator would write, is refused unless
+    ``force`` (which overwrites same-named files, and still deletes nothing).
+    """
     out_dir = Path(os.path.abspath(os.fspath(out_dir)))
-    planned = _planned_files(world, difficulty, count)
+    planned = ["domain.pddl", "suite.json"] + [f"{name}{suffix}" for name in names for suffix in (".pddl", ".json")]
     previous = _check_out_dir(out_dir, planned, force)
-    domain_path = DOMAINS_DIR / world / "domain.pddl"
     try:
         domain_bytes = domain_path.read_bytes()
     except OSError as error:
@@ -368,32 +408,16 @@ def generate_suite(
     try:
         (staging / "domain.pddl").write_bytes(domain_bytes)
         entries = []
-        for index in range(1, count + 1):
-            problem = generate_problem(world, difficulty, seed, index, distractors)
-            _write_text(staging / f"{problem.name}.pddl", problem.pddl_text)
-            _write_text(staging / f"{problem.name}.json", problem.sidecar_text)
-            entries.append(
-                {
-                    "name": problem.name,
-                    "problem": f"{problem.name}.pddl",
-                    "sidecar": f"{problem.name}.json",
-                    "distractor_count": problem.sidecar["distractor_count"],
-                }
-            )
+        for index, name in enumerate(names, start=1):
+            problem = make(index)
+            assert problem.name == name, (problem.name, name)
+            _write_text(staging / f"{name}.pddl", problem.pddl_text)
+            _write_text(staging / f"{name}.json", problem.sidecar_text)
+            entries.append({"name": name, "problem": f"{name}.pddl", "sidecar": f"{name}.json", **problem.entry})
             if progress is not None:
-                progress(index, count)
-        manifest = {
-            "generator": GENERATOR,
-            "generator_version": GENERATOR_VERSION,
-            "world": world,
-            "difficulty": difficulty,
-            "count": count,
-            "seed": seed,
-            "distractors": distractors,
-            "domain": "domain.pddl",
-            "problems": entries,
-        }
-        _write_text(staging / "suite.json", sidecar_json(manifest))
+                progress(index, len(names))
+        full_manifest = {**manifest, "domain": "domain.pddl", "problems": entries}
+        _write_text(staging / "suite.json", sidecar_json(full_manifest))
         _move_into_place(staging, out_dir, planned, previous)
     except OSError as error:
         shutil.rmtree(staging, ignore_errors=True)
@@ -402,7 +426,6 @@ def generate_suite(
         shutil.rmtree(staging, ignore_errors=True)
         raise
     return [out_dir / entry["problem"] for entry in entries]
-
 
 
 def _move_into_place(staging: Path, out_dir: Path, planned: list[str], previous: set[str]) -> None:

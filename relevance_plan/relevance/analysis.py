@@ -64,6 +64,50 @@ def index_init(problem: Problem) -> InitIndex:
     )
 
 
+def fan_in(index: InitIndex) -> dict[tuple, float]:
+    """(predicate, position) -> facts per distinct object at that position: high for class-like
+    values (the shape of forty keys), about one for a place or an owner."""
+    result = {}
+    for predicate, atoms in index.by_predicate.items():
+        for position in range(len(atoms[0]) - 1):
+            values = {atom[1 + position] for atom in atoms}
+            result[(predicate, position)] = len(atoms) / max(1, len(values))
+    return result
+
+
+def object_distances(
+    index: InitIndex, sources, hub_degree: int | None = None, max_fan: float | None = None
+) -> dict[str, int]:
+    """Breadth-first hops from ``sources`` through initial facts (two objects in one fact are one hop apart).
+
+    Objects in more than ``hub_degree`` facts get a distance but are not passed
+    through; with ``max_fan``, a fact is not followed from an object at a
+    position shared by more than ``max_fan`` facts on average (from a shape to
+    every key of that shape), only toward it.
+    """
+    fans = fan_in(index) if max_fan is not None else {}
+    distance = {name: 0 for name in sources}
+    frontier = list(distance)
+    seen_facts: set = set()
+    while frontier:
+        following = []
+        for name in frontier:
+            if hub_degree is not None and distance[name] > 0 and len(index.by_object.get(name, ())) > hub_degree:
+                continue
+            for atom in index.by_object.get(name, ()):
+                if len(atom) < 3 or atom in seen_facts:
+                    continue
+                if max_fan is not None and fans.get((atom[0], atom.index(name) - 1), 0.0) > max_fan:
+                    continue
+                seen_facts.add(atom)
+                for other in atom[1:]:
+                    if other not in distance:
+                        distance[other] = distance[name] + 1
+                        following.append(other)
+        frontier = following
+    return distance
+
+
 # --------------------------------------------------------------------------- constraint rules
 
 

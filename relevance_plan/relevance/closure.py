@@ -20,7 +20,7 @@ from relevance_plan.relevance.analysis import ConstraintRule, InitIndex
 class Restored:
     name: str
     because_of: str  # the kept object that needed it ("" for singleton facts)
-    rule: str  # "blocker", "anchor", "singleton", "model"
+    rule: str  # "blocker", "anchor", "singleton", "model", "reachability"
     fact: tuple  # the initial fact that ties them
 
     @property
@@ -30,6 +30,10 @@ class Restored:
             return f"on top of {self.because_of} {fact}"
         if self.rule == "anchor":
             return f"needed by {self.because_of} {fact}"
+        if self.rule == "reachability":
+            if self.fact == ("goal",):
+                return "the goal is unreachable without it, even ignoring deletes"
+            return f"used by a relaxed plan to the goal ({' '.join(self.fact)})"
         if self.rule == "singleton":
             return f"only initial fact of its predicate {fact}"
         return f"declared dependency of {self.because_of} {fact}"

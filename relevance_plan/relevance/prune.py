@@ -8,12 +8,16 @@ from typing import AbstractSet, Sequence
 
 from relevance_plan.relevance.analysis import ConstraintRule, infer_constraint_rules, single_valued_predicates
 from relevance_plan.relevance.closure import Restored, close_over_constraints
+from relevance_plan.relevance.reachability import repair_selection
 from relevance_plan.relevance.knowledge import KnowledgeModel, check_threshold
 from relevance_plan.relevance.scorers import SCORERS, ScoreRequest, ScoreResult, PlanningTask
 from relevance_plan.errors import UsageError
 from relevance_plan.pddl.writer import write_pruned_problem
 
 DEFAULT_TAU = 0.2
+FULL_ABOVE = 0.8  # a selection keeping more than this share of the objects plans on the full problem
+GROWTH = 2.0  # each widening at least doubles the kept set
+REPAIR_SCORERS = frozenset({"goal"})  # scorers whose selection the reachability check repairs by default
 
 
 @dataclass(frozen=True)
@@ -62,7 +66,8 @@ def constraint_rules(task: PlanningTask, model: KnowledgeModel | None) -> tuple[
 def can_serve_goal(task: PlanningTask, name: str) -> bool:
     """Whether the object can fill a role toward the goal (see ``analysis.analyse_goal``)."""
     roles = task.goal_analysis.role_depth
-    return name in task.goal_objects or any(t in roles for t in task.domain.ancestors(task.problem.objects[name]))
+    domain = task.typing.domain
+    return name in task.goal_objects or any(t in roles for t in domain.ancestors(task.object_type(name)))
 
 
 def select_relevant(task: PlanningTask, scores: ScoreResult, thresholds: Thresholds, goal_filter: bool = False) -> frozenset:
@@ -118,11 +123,20 @@ def prune_with_scores(
     extra: AbstractSet[str] = frozenset(),
     goal_filter: bool = False,
     prefer_free: bool = False,
+    *,
+    repair: bool | None = None,
+    full_above: float | None = None,
 ) -> PruneResult:
-    """Threshold the scores, add ``extra`` objects, close over constraints, write the text.
+    """Threshold the scores, add ``extra`` objects, close over constraints, check, write the text.
 
     With ``prefer_free``, blocked alternatives are set aside (``free_alternatives``)
-    and closure runs again on what is left.
+    and closure runs again on what is left.  With ``repair`` (default: for the
+    goal scorer at the default thresholds or lower), a kept set on which the goal is unreachable even ignoring
+    deletes gets what a relaxed plan needs (``reachability.repair_selection``).
+    A selection that keeps more than ``full_above`` of the objects (default:
+    ``FULL_ABOVE`` for the scorers repaired by default, never for the others,
+    whose first selection is kept as chosen) becomes the full problem: pruning
+    it would save little and risk a second attempt.
     """
     selected = select_relevant(task, scores, thresholds, goal_filter) | (frozenset(extra) & task.problem.objects.keys())
     rules = constraint_rules(task, model)
@@ -141,6 +155,17 @@ def prune_with_scores(
             set_aside = selected - narrowed
             selected = narrowed
             kept, restored = close(selected)
+    if repair is None:
+        # A stricter selection than the defaults, asked for explicitly, is tried as given.
+        repair = scores.scorer in REPAIR_SCORERS and max(thresholds.tau_class, thresholds.tau_element) <= DEFAULT_TAU
+    if full_above is None:
+        full_above = FULL_ABOVE if scores.scorer in REPAIR_SCORERS else 1.0
+    total = len(task.problem.objects)
+    if repair and len(kept) <= full_above * total:
+        kept, repaired, _ = repair_selection(task, kept, scores.element_scores, close)
+        restored = tuple(restored) + repaired
+    if len(kept) > full_above * total:
+        return full_problem(task, scores, thresholds, selected, restored)
     return PruneResult(
         task=task,
         scores=scores,
@@ -150,6 +175,19 @@ def prune_with_scores(
         restored=restored,
         text=write_pruned_problem(task.problem, kept),
         set_aside=set_aside,
+    )
+
+
+def full_problem(task: PlanningTask, scores: ScoreResult, thresholds: Thresholds, selected=frozenset(), restored=()) -> PruneResult:
+    """The result that keeps every object: the attempt loop plans on the user's own file."""
+    return PruneResult(
+        task=task,
+        scores=scores,
+        thresholds=thresholds,
+        selected=frozenset(selected),
+        kept=frozenset(task.problem.objects),
+        restored=tuple(restored),
+        text=task.problem.text,
     )
 
 
@@ -165,19 +203,51 @@ def widen(
     extra: AbstractSet[str] = frozenset(),
     model: KnowledgeModel | None = None,
     goal_filter: bool = False,
+    *,
+    growth: float = GROWTH,
+    full_above: float = FULL_ABOVE,
 ) -> tuple[PruneResult, frozenset]:
-    """One relaxation step: scale the thresholds by ``factor`` and put back the best-ranked
-    quarter (at least 4) of the removed objects; returns the new result and the extra set."""
+    """One relaxation step after a failed attempt; returns the new result and the extra set.
+
+    The thresholds shrink by ``factor`` and the best-ranked removed objects
+    (score, then distance from the goal's objects) are put back until the kept
+    set has at least ``growth`` times as many objects, so all failed attempts
+    together cost about as much as the last one.  When that would keep more
+    than ``full_above`` of the objects, the result is the full problem.
+    """
+    task = result.task
+    total = len(task.problem.objects)
+    target = max(len(result.kept) + 4, int(growth * len(result.kept) + 0.999))
+    if target > full_above * total:
+        everything = frozenset(task.problem.objects)
+        return full_problem(task, result.scores, result.thresholds.scaled(factor), result.selected), everything
     ranked = ranked_by_score(result)
-    extra = frozenset(extra) | frozenset(ranked[: max(4, len(ranked) // 4)])
-    widened = prune_with_scores(result.task, result.scores, result.thresholds.scaled(factor), model, extra, goal_filter)
+    extra = frozenset(extra) | frozenset(ranked[: target - len(result.kept)])
+    widened = prune_with_scores(task, result.scores, result.thresholds.scaled(factor), model, extra, goal_filter,
+                                full_above=full_above)
+    while len(widened.kept) < target and len(widened.kept) < total:
+        # closure or the thresholds cannot account for every addition: add more by rank
+        missing = ranked_by_score(widened)
+        extra = extra | frozenset(missing[: target - len(widened.kept)])
+        widened = prune_with_scores(task, result.scores, result.thresholds.scaled(factor), model, extra, goal_filter,
+                                    full_above=full_above)
     return widened, extra
+
+
+def ranked_names(task: PlanningTask, scores: ScoreResult, kept: AbstractSet[str] = frozenset()) -> list[str]:
+    """Objects outside ``kept``, most relevant first: by score, then by hops from the goal's objects."""
+    values = scores.element_scores
+    distance = task.goal_distance
+    far = len(task.problem.objects) + 1
+    return sorted(
+        (name for name in task.problem.objects if name not in kept),
+        key=lambda name: (-values.get(name, 0.0), distance.get(name, far), name),
+    )
 
 
 def ranked_by_score(result: PruneResult) -> Sequence[str]:
     """Pruned objects, most relevant first: the order in which relaxation adds them back."""
-    scores = result.scores.element_scores
-    return sorted(result.removed, key=lambda name: (-scores.get(name, 0.0), name))
+    return ranked_names(result.task, result.scores, result.kept)
 
 
 __all__ = [
@@ -186,6 +256,8 @@ __all__ = [
     "Restored",
     "Thresholds",
     "constraint_rules",
+    "full_problem",
+    "ranked_names",
     "prune_with_scores",
     "ranked_by_score",
     "widen",

@@ -6,8 +6,9 @@ from dataclasses import dataclass, field
 from functools import cached_property
 from typing import Mapping
 
-from relevance_plan.relevance.analysis import GoalAnalysis, InitIndex, analyse_goal, index_init
+from relevance_plan.relevance.analysis import GoalAnalysis, InitIndex, analyse_goal, index_init, object_distances
 from relevance_plan.relevance.knowledge import KnowledgeModel
+from relevance_plan.relevance.types import InferredTypes, infer_types
 from relevance_plan.pddl.reader import Domain, Problem, goal_objects
 
 
@@ -23,8 +24,23 @@ class PlanningTask:
         return index_init(self.problem)
 
     @cached_property
+    def typing(self) -> InferredTypes:
+        """The domain and problem with types inferred where the domain declares none."""
+        return infer_types(self.domain, self.problem)
+
+    @cached_property
     def goal_analysis(self) -> GoalAnalysis:
-        return analyse_goal(self.domain, self.problem, self.init_index)
+        return analyse_goal(self.typing.domain, self.typing.problem, self.init_index)
+
+    @cached_property
+    def goal_distance(self):
+        """Hops from the goal's objects through initial facts (unreached objects are absent)."""
+        hub = max(16, int(2 * len(self.problem.objects) ** 0.5))
+        return object_distances(self.init_index, self.goal_objects, hub)
+
+    def object_type(self, name: str) -> str:
+        """The declared type of an object, or its inferred class in an untyped domain."""
+        return self.typing.problem.objects[name]
 
     @cached_property
     def goal_objects(self) -> frozenset:

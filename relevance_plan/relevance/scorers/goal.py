@@ -6,6 +6,17 @@ to carry) score 0.6 per role step away from the goal: 0.6 for a role of the
 goal's own achiever, 0.36 for what that role needs, and so on.  Objects that
 share a relevant initial fact with a goal object score 0.3.  Objects that can
 only get in the way score 0 and are left to closure.
+
+Types are the declared ones, or in an untyped domain the classes inferred from
+static unary predicates (``relevance.types``).
+
+When a role has many candidates (more than ``POPULOUS``: fifty trucks, a
+hundred rooms), one or a few of them will do, and the likely ones are those
+near the goal's objects in the initial state: a candidate's role score halves
+with every hop beyond the first (``DISTANCE_DECAY``), and candidates the
+initial state does not connect to the goal at all count as ``FAR`` hops.  The
+first attempt then keeps the nearby candidates; the reachability check and
+widening bring the others back in this order when needed.
 """
 
 from __future__ import annotations
@@ -14,10 +25,13 @@ from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult, Pla
 
 ROLE_DECAY = 0.6
 NEIGHBOUR_SCORE = 0.3
+POPULOUS = 8
+DISTANCE_DECAY = 0.5
+FAR = 8
 
 
 def score_by_goal(task: PlanningTask, request: ScoreRequest) -> ScoreResult:
-    domain, problem = task.domain, task.problem
+    domain, problem = task.typing.domain, task.typing.problem
     analysis = task.goal_analysis
     goal_objects = task.goal_objects
     neighbours: dict[str, str] = {}
@@ -27,6 +41,12 @@ def score_by_goal(task: PlanningTask, request: ScoreRequest) -> ScoreResult:
                 for other in atom[1:]:
                     if other != name:
                         neighbours.setdefault(other, "(" + " ".join(atom) + ")")
+    candidates: dict[str, int] = {}
+    for type_name in problem.objects.values():
+        for ancestor in domain.ancestors(type_name):
+            if ancestor in analysis.role_depth:
+                candidates[ancestor] = candidates.get(ancestor, 0) + 1
+    distance = task.goal_distance
     scores: dict[str, float] = {}
     explanations: dict[str, str] = {}
     for name, type_name in problem.objects.items():
@@ -36,9 +56,18 @@ def score_by_goal(task: PlanningTask, request: ScoreRequest) -> ScoreResult:
         best, why = 0.0, "no role in reaching the goal"
         for ancestor in domain.ancestors(type_name):
             depth = analysis.role_depth.get(ancestor)
-            if depth is not None and ROLE_DECAY ** max(depth, 1) > best:
-                best = ROLE_DECAY ** max(depth, 1)
-                why = f"can serve as {ancestor} (role {depth} step(s) from the goal)"
+            if depth is None:
+                continue
+            value = ROLE_DECAY ** max(depth, 1)
+            role = f"can serve as {ancestor} (role {depth} step(s) from the goal)"
+            if candidates.get(ancestor, 0) > POPULOUS:
+                hops = distance.get(name, FAR)
+                value *= DISTANCE_DECAY ** max(hops - 1, 0)
+                role += f", one of {candidates[ancestor]}, " + (
+                    f"{hops} hop(s) from the goal's objects" if name in distance else "not linked to the goal's objects"
+                )
+            if value > best:
+                best, why = value, role
         if name in neighbours and NEIGHBOUR_SCORE > best:
             best, why = NEIGHBOUR_SCORE, f"shares {neighbours[name]} with a goal object"
         scores[name], explanations[name] = best, why

@@ -1,0 +1,429 @@
+"""Seeded many-object problems for classic planning domains, in their classic forms.
+
+Six worlds, each in the untyped STRIPS form of the IPC (a type is a static
+unary predicate such as ``(truck t1)``) and in a typed variant
+(``<world>-typed``): blocksworld, logistics, gripper, ferry, grid (keys and
+locks) and miconic.  Every problem has a goal on a few objects among hundreds
+or thousands, the way the learned-object-importance literature pads them.
+The domain files were written for this project (``data/domains/<world>``).
+
+``generate_classic_problem(world, seed, index, size)`` is pure.  One builder
+per domain returns an ``Instance``: objects with their class, the dynamic and
+static facts, the goal atoms and, where a cheap sufficient set exists, the
+objects a plan needs.  The untyped text adds one unary fact per class
+(``TYPE_FACTS``); the typed text declares the class as the object's type.
+
+``generate_classic_suite`` writes the same layout as the kitchen suites:
+``domain.pddl``, ``<world>-NNN.pddl`` with a ``.json`` sidecar each, and
+``suite.json``.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import math
+import random
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Callable
+
+from relevance_plan.data import DOMAINS_DIR
+from relevance_plan.errors import UsageError
+
+GENERATOR = "relevance_plan.generators"
+CLASSIC_VERSION = "1"
+
+NO_GROUND_TRUTH = "no cheap ground truth for this domain: 'necessary' is omitted (the oracle does not apply)"
+SUFFICIENT_NOTE = "'necessary' is a sufficient set built by the generator (a plan exists on it), not proven minimal"
+
+
+@dataclass
+class Instance:
+    objects: dict[str, str] = field(default_factory=dict)  # name -> class, in declaration order
+    facts: list[tuple] = field(default_factory=list)  # initial atoms (type facts are added for the untyped form)
+    goal: list[tuple] = field(default_factory=list)
+    necessary: list[str] | None = None
+    untyped_only: list[tuple] = field(default_factory=list)  # facts only the untyped domain has (ferry's not-eq)
+
+    def add(self, cls: str, name: str) -> str:
+        self.objects[name] = cls
+        return name
+
+
+# Untyped form: the unary facts that stand for each class.
+TYPE_FACTS: dict[str, dict[str, tuple[str, ...]]] = {
+    "blocksworld": {"block": ()},
+    "logistics": {
+        "package": ("package",), "truck": ("truck",), "airplane": ("airplane",),
+        "location": ("location",), "airport": ("location", "airport"), "city": ("city",),
+    },
+    "gripper": {"room": ("room",), "ball": ("ball",), "gripper": ("gripper",)},
+    "ferry": {"car": ("car",), "location": ("location",)},
+    "grid": {"place": ("place",), "key": ("key",), "shape": ("shape",)},
+    "miconic": {"passenger": ("passenger",), "floor": ("floor",)},
+}
+
+# Object count of the default size: pure Fast Downward lama-first needs 5-120 s on 2 cores.
+DEFAULT_SIZES: dict[str, int] = {
+    "blocksworld": 300,
+    "logistics": 400,
+    "gripper": 400,
+    "ferry": 400,
+    "grid": 400,
+    "miconic": 3000,
+}
+
+
+def _blocksworld(rng: random.Random, size: int, dense: bool = False) -> Instance:
+    """A goal tower over 3-4 blocks among ``size``; each goal block sits inside a pile."""
+    inst = Instance()
+    blocks = [inst.add("block", f"b{i}") for i in range(1, size + 1)]
+    goal_count = rng.randint(3, 4)
+    goal_blocks = rng.sample(blocks, goal_count)
+    others = [b for b in blocks if b not in goal_blocks]
+    rng.shuffle(others)
+    towers: list[list[str]] = []
+    while others:
+        height = rng.randint(1, 6)
+        towers.append(others[:height])
+        others = others[height:]
+    for block in goal_blocks:
+        tower = rng.choice(towers)
+        tower.insert(rng.randint(0, len(tower)), block)
+    inst.facts.append(("handempty",))
+    below: dict[str, str | None] = {}
+    above: dict[str, list[str]] = {}
+    for tower in towers:
+        inst.facts.append(("ontable", tower[0]))
+        below[tower[0]] = None
+        for lower, upper in zip(tower, tower[1:]):
+            inst.facts.append(("on", upper, lower))
+            below[upper] = lower
+        inst.facts.append(("clear", tower[-1]))
+        for position, block in enumerate(tower):
+            above[block] = tower[position + 1:]
+    if dense:
+        order = rng.sample(blocks, len(blocks))
+        inst.goal = [("on", order[i], order[i + 1]) for i in range(len(order) - 1) if (i + 1) % 5]
+    else:
+        inst.goal = [("on", upper, lower) for upper, lower in zip(goal_blocks, goal_blocks[1:])]
+    needed = set(goal_blocks)
+    for block in goal_blocks:
+        needed.update(above[block])
+        if below[block] is not None:
+            needed.add(below[block])
+    inst.necessary = sorted(needed)
+    return inst
+
+
+def _logistics(rng: random.Random, size: int, dense: bool = False) -> Instance:
+    """Tens of cities with trucks and an airport each, airplanes, a goal on 2-3 packages."""
+    inst = Instance()
+    cities_count = max(3, size // 20)
+    per_city = 3
+    airplanes_count = max(2, cities_count // 4)
+    city_locations: dict[str, list[str]] = {}
+    airport_of: dict[str, str] = {}
+    trucks_in: dict[str, list[str]] = {}
+    truck_at: dict[str, str] = {}
+    for c in range(1, cities_count + 1):
+        city = inst.add("city", f"city{c}")
+        airport = inst.add("airport", f"apt{c}")
+        airport_of[city] = airport
+        locations = [airport] + [inst.add("location", f"loc{c}-{j}") for j in range(1, per_city)]
+        city_locations[city] = locations
+        for location in locations:
+            inst.facts.append(("in-city", location, city))
+        trucks_in[city] = []
+        for t in range(1, rng.randint(1, 3) + 1):
+            truck = inst.add("truck", f"truck{c}-{t}")
+            trucks_in[city].append(truck)
+            truck_at[truck] = rng.choice(locations)
+            inst.facts.append(("at", truck, truck_at[truck]))
+    airplanes = []
+    for a in range(1, airplanes_count + 1):
+        plane = inst.add("airplane", f"plane{a}")
+        airplanes.append(plane)
+        inst.facts.append(("at", plane, rng.choice(list(airport_of.values()))))
+    cities = list(city_locations)
+    packages = max(3, size - len(inst.objects))
+    where: dict[str, str] = {}
+    for p in range(1, packages + 1):
+        package = inst.add("package", f"pkg{p}")
+        location = rng.choice(city_locations[rng.choice(cities)])
+        where[package] = location
+        inst.facts.append(("at", package, location))
+    goal_packages = list(where) if dense else rng.sample(list(where), rng.randint(2, 3))
+    city_of = {loc: city for city, locs in city_locations.items() for loc in locs}
+    needed = set(goal_packages) | {airplanes[0]}
+    for package in goal_packages:
+        start_city = city_of[where[package]]
+        target_city = rng.choice([c for c in cities if c != start_city])
+        target = rng.choice(city_locations[target_city])
+        inst.goal.append(("at", package, target))
+        for city, location in ((start_city, where[package]), (target_city, target)):
+            truck = trucks_in[city][0]
+            needed.update({city, location, airport_of[city], truck, truck_at[truck]})
+    plane_start = next(f[2] for f in inst.facts if f[0] == "at" and f[1] == airplanes[0])
+    needed.add(plane_start)
+    needed.add(city_of[plane_start])
+    inst.necessary = sorted(needed)
+    return inst
+
+
+def _gripper(rng: random.Random, size: int, dense: bool = False) -> Instance:
+    """Many rooms and balls; two grippers; 2-4 balls must go to given rooms."""
+    inst = Instance()
+    rooms = [inst.add("room", f"room{i}") for i in range(1, max(3, size // 4) + 1)]
+    grippers = [inst.add("gripper", name) for name in ("left", "right")]
+    balls = [inst.add("ball", f"ball{i}") for i in range(1, max(4, size - len(inst.objects)) + 1)]
+    robby = rng.choice(rooms)
+    inst.facts += [("at-robby", robby)] + [("free", g) for g in grippers]
+    where = {}
+    for ball in balls:
+        where[ball] = rng.choice(rooms)
+        inst.facts.append(("at", ball, where[ball]))
+    needed = {robby, *grippers}
+    for ball in (balls if dense else rng.sample(balls, rng.randint(2, 4))):
+        target = rng.choice([r for r in rooms if r != where[ball]])
+        inst.goal.append(("at", ball, target))
+        needed.update({ball, where[ball], target})
+    inst.necessary = sorted(needed)
+    return inst
+
+
+def _ferry(rng: random.Random, size: int, dense: bool = False) -> Instance:
+    """Many locations and cars; 2-3 cars must cross."""
+    inst = Instance()
+    locations = [inst.add("location", f"port{i}") for i in range(1, max(3, size // 4) + 1)]
+    cars = [inst.add("car", f"car{i}") for i in range(1, max(4, size - len(inst.objects)) + 1)]
+    ferry_at = rng.choice(locations)
+    inst.facts += [("at-ferry", ferry_at), ("empty-ferry",)]
+    inst.untyped_only += [("not-eq", a, b) for a in locations for b in locations if a != b]
+    where = {}
+    for car in cars:
+        where[car] = rng.choice(locations)
+        inst.facts.append(("at", car, where[car]))
+    needed = {ferry_at}
+    for car in (cars if dense else rng.sample(cars, rng.randint(2, 3))):
+        target = rng.choice([loc for loc in locations if loc != where[car]])
+        inst.goal.append(("at", car, target))
+        needed.update({car, where[car], target})
+    inst.necessary = sorted(needed)
+    return inst
+
+
+def _grid(rng: random.Random, size: int, dense: bool = False) -> Instance:
+    """A square grid with locked cells of three shapes and keys; 1-2 keys must be brought to cells."""
+    inst = Instance()
+    keys_count = max(3, min(24, size // 20))
+    side = max(3, int(math.sqrt(max(9, size - keys_count - 3))))
+    shapes = [inst.add("shape", name) for name in ("circle", "square", "triangle")]
+    cells = {(x, y): inst.add("place", f"p{x}-{y}") for y in range(side) for x in range(side)}
+    locked = set()
+    for cell in cells:
+        if rng.random() < 0.08:
+            locked.add(cell)
+    start = rng.choice([c for c in cells if c not in locked])
+    # Open cells reachable from the start without unlocking anything: goals stay solvable.
+    component, frontier = {start}, [start]
+    while frontier:
+        x, y = frontier.pop()
+        for nxt in ((x + 1, y), (x - 1, y), (x, y + 1), (x, y - 1)):
+            if nxt in cells and nxt not in locked and nxt not in component:
+                component.add(nxt)
+                frontier.append(nxt)
+    reachable = sorted(component)
+    for (x, y), name in cells.items():
+        for nxt in ((x + 1, y), (x - 1, y), (x, y + 1), (x, y - 1)):
+            if nxt in cells:
+                inst.facts.append(("conn", name, cells[nxt]))
+        if (x, y) in locked:
+            inst.facts += [("locked", name), ("lock-shape", name, rng.choice(shapes))]
+        else:
+            inst.facts.append(("open", name))
+    inst.facts += [("at-robot", cells[start]), ("arm-empty",)]
+    keys = []
+    for k in range(1, keys_count + 1):
+        key = inst.add("key", f"key{k}")
+        keys.append(key)
+        inst.facts.append(("key-shape", key, rng.choice(shapes)))
+        inst.facts.append(("at", key, cells[rng.choice(reachable)]))
+    # Goal keys start inside the start's open component (every key was placed there).
+    for key in (keys if dense else rng.sample(keys, rng.randint(1, 2))):
+        inst.goal.append(("at", key, cells[rng.choice(reachable)]))
+    inst.necessary = None
+    return inst
+
+
+def _miconic(rng: random.Random, size: int, dense: bool = False) -> Instance:
+    """Many floors and passengers; 2-4 passengers must be served."""
+    inst = Instance()
+    floors = [inst.add("floor", f"f{i}") for i in range(1, max(4, size // 8) + 1)]
+    passengers = [inst.add("passenger", f"pass{i}") for i in range(1, max(4, size - len(inst.objects)) + 1)]
+    for i, lower in enumerate(floors):
+        for upper in floors[i + 1:]:
+            inst.facts.append(("above", lower, upper))
+    lift = rng.choice(floors)
+    inst.facts.append(("lift-at", lift))
+    trips = {}
+    for person in passengers:
+        origin, destin = rng.sample(floors, 2)
+        trips[person] = (origin, destin)
+        inst.facts += [("origin", person, origin), ("destin", person, destin), ("not-boarded", person)]
+    needed = {lift}
+    for person in (passengers if dense else rng.sample(passengers, rng.randint(2, 4))):
+        inst.goal.append(("served", person))
+        needed.update({person, *trips[person]})
+    inst.necessary = sorted(needed)
+    return inst
+
+
+BUILDERS: dict[str, Callable[..., Instance]] = {
+    "blocksworld": _blocksworld,
+    "logistics": _logistics,
+    "gripper": _gripper,
+    "ferry": _ferry,
+    "grid": _grid,
+    "miconic": _miconic,
+}
+
+CLASSIC_WORLDS: tuple[str, ...] = tuple(BUILDERS) + tuple(f"{name}-typed" for name in BUILDERS)
+
+
+def _split(world: str) -> tuple[str, bool]:
+    if world not in CLASSIC_WORLDS:
+        raise UsageError(f"unknown classic world {world!r}: choose one of {', '.join(CLASSIC_WORLDS)}")
+    typed = world.endswith("-typed")
+    return (world[: -len("-typed")] if typed else world), typed
+
+
+def _check_int(label: str, value: object, minimum: int) -> None:
+    if isinstance(value, bool) or not isinstance(value, int):
+        raise UsageError(f"{label} must be an integer, not {value!r}")
+    if value < minimum:
+        raise UsageError(f"{label} must be at least {minimum}, not {value}")
+
+
+def classic_rng(seed: int, world: str, index: int, size: int) -> random.Random:
+    base, _ = _split(world)  # the typed variant of a problem has the same objects and facts
+    key = f"{GENERATOR}/classic/{CLASSIC_VERSION}/{seed}/{base}/{index}/{size}".encode()
+    return random.Random(int.from_bytes(hashlib.sha256(key).digest()[:16], "big"))
+
+
+@dataclass(frozen=True)
+class ClassicProblem:
+    name: str
+    pddl_text: str
+    sidecar: dict[str, Any]
+
+
+def _atom(fact: tuple) -> str:
+    return "(" + " ".join(fact) + ")"
+
+
+def format_instance(inst: Instance, world: str, name: str, comment: str) -> str:
+    base, typed = _split(world)
+    lines = [f"; {line}" for line in comment.splitlines()]
+    lines.append(f"(define (problem {name}) (:domain {world})")
+    lines.append("  (:objects")
+    by_class: dict[str, list[str]] = {}
+    for obj, cls in inst.objects.items():
+        by_class.setdefault(cls, []).append(obj)
+    for cls, names in by_class.items():
+        for start in range(0, len(names), 12):
+            chunk = " ".join(names[start:start + 12])
+            lines.append(f"    {chunk} - {cls}" if typed else f"    {chunk}")
+    lines.append("  )")
+    lines.append("  (:init")
+    if not typed:
+        for obj, cls in inst.objects.items():
+            for predicate in TYPE_FACTS[base][cls]:
+                lines.append(f"    ({predicate} {obj})")
+    for fact in inst.facts + ([] if typed else inst.untyped_only):
+        lines.append(f"    {_atom(fact)}")
+    lines.append("  )")
+    goal = " ".join(_atom(g) for g in inst.goal)
+    lines.append(f"  (:goal (and {goal}))")
+    lines.append(")")
+    return "\n".join(lines) + "\n"
+
+
+def classic_problem_name(world: str, index: int, dense: bool = False) -> str:
+    return f"{world}{'-dense' if dense else ''}-{index:03d}"
+
+
+def generate_classic_problem(world: str, seed: int, index: int, size: int | None = None, dense: bool = False) -> ClassicProblem:
+    """Problem ``index`` of (world, seed, size); ``dense`` puts every movable object in the goal (the
+    unpadded form, where nearly every object matters)."""
+    base, typed = _split(world)
+    _check_int("seed", seed, -(1 << 62))
+    _check_int("index", index, 0)
+    size = DEFAULT_SIZES[base] if size is None else size
+    _check_int("size", size, 10)
+    inst = BUILDERS[base](classic_rng(seed, world, index, size), size, dense)
+    name = classic_problem_name(world, index, dense)
+    comment = (
+        f"{name}: {len(inst.objects)} objects, goal on {len(inst.goal)} atoms\n"
+        f"generated by {GENERATOR} (classic version {CLASSIC_VERSION}), seed {seed}, index {index}, size {size}"
+    )
+    goal_objects = sorted({arg for atom in inst.goal for arg in atom[1:]})
+    sidecar: dict[str, Any] = {
+        "seed": seed,
+        "index": index,
+        "world": world,
+        "domain": base,
+        "form": "typed" if typed else "untyped",
+        "difficulty": None,
+        "size": size,
+        "dense": dense,
+        "objects_total": len(inst.objects),
+        "goal_objects": goal_objects,
+    }
+    if inst.necessary is None:
+        sidecar["necessary_note"] = NO_GROUND_TRUTH
+    else:
+        sidecar["necessary"] = inst.necessary
+        sidecar["necessary_note"] = SUFFICIENT_NOTE
+    return ClassicProblem(name, format_instance(inst, world, name, comment), sidecar)
+
+
+def check_classic_arguments(world: str, count: int, seed: int, size: int | None) -> None:
+    """Raise ``UsageError`` for a bad world, count, seed or size (before anything is written)."""
+    _split(world)
+    _check_int("count", count, 1)
+    _check_int("seed", seed, -(1 << 62))
+    if size is not None:
+        _check_int("size", size, 10)
+
+
+def generate_classic_suite(
+    world: str,
+    count: int,
+    seed: int,
+    out_dir: Path,
+    size: int | None = None,
+    progress: Callable[[int, int], None] | None = None,
+    force: bool = False,
+) -> list[Path]:
+    """Write ``count`` problems of a classic world into ``out_dir`` (the kitchen suites' layout and rules)."""
+    from relevance_plan.generators.generate import SuiteProblem, sidecar_json, write_suite
+
+    check_classic_arguments(world, count, seed, size)
+    manifest = {
+        "generator": GENERATOR,
+        "generator_version": CLASSIC_VERSION,
+        "world": world,
+        "difficulty": None,
+        "count": count,
+        "seed": seed,
+        "size": size,
+    }
+
+    def make(index: int) -> SuiteProblem:
+        problem = generate_classic_problem(world, seed, index, size)
+        return SuiteProblem(problem.name, problem.pddl_text, sidecar_json(problem.sidecar),
+                            {"objects_total": problem.sidecar["objects_total"]})
+
+    names = [classic_problem_name(world, index) for index in range(1, count + 1)]
+    return write_suite(out_dir, DOMAINS_DIR / world / "domain.pddl", names, make, manifest, progress, force)

@@ -1,0 +1,346 @@
+"""A cheap sufficiency check before any planner call: relaxed reachability on the kept objects.
+
+``relaxed_reachability`` grounds the actions on the kept objects only (joins
+over the positive preconditions, as Fast Downward's translator explores the
+delete relaxation) and runs them to a fixpoint, ignoring deletes.  If the
+goal's atoms are not reached, no plan exists on that object set.  When they
+are, it returns the objects of a relaxed plan: what at least one way of
+reaching the goal uses.
+
+``repair_selection`` is the step ``prune_with_scores`` runs after closure:
+when the kept set fails the check, it adds the best-ranked missing objects in
+doubling batches until the goal is relaxed-reachable, then keeps only the
+added objects some relaxed plan uses (a truck, an airplane, the cells of a
+path), each with the plan step that needs it as its reason.
+
+The check over-approximates: negative, disjunctive and quantified conditions
+and effect conditions are ignored, and a universally quantified effect adds
+its atom for every kept object of the type, so "unreachable" is sound.  It gives up (and says so)
+past a work budget rather than cost more than the planner would.
+"""
+
+from __future__ import annotations
+
+from collections import defaultdict, deque
+from dataclasses import dataclass
+from typing import AbstractSet, Callable, Mapping, Sequence
+
+from relevance_plan.pddl.reader import Formula
+from relevance_plan.relevance.analysis import object_distances
+from relevance_plan.relevance.closure import Restored
+from relevance_plan.relevance.types import InferredTypes, infer_types
+
+DEFAULT_BUDGET = 400_000  # bindings tried before the check gives up
+BUDGET_PER_OBJECT = 2_000  # the budget grows with the problem, as the planner's own grounding does
+REPAIR_MAX_FAN = 4.0  # repair candidates are ranked by hops that do not pass from a class-like value to its members
+
+
+@dataclass(frozen=True)
+class Reachability:
+    reachable: bool
+    complete: bool  # False: the budget ran out, nothing is known
+    unreached: tuple = ()  # goal atoms the relaxation does not reach
+    plan: tuple = ()  # ground relaxed-plan steps (action, *args)
+    plan_objects: frozenset = frozenset()
+
+
+def _conjuncts(formula: Formula):
+    """Positive atoms that must hold (top-level conjunction only; the rest is ignored: a relaxation)."""
+    kind = formula[0]
+    if kind == "atom":
+        if formula[1] != "=":
+            yield formula[1], formula[2]
+    elif kind == "and":
+        for part in formula[1:]:
+            yield from _conjuncts(part)
+
+
+@dataclass(frozen=True)
+class _Schema:
+    name: str
+    parameters: tuple  # variables
+    types: tuple
+    pre: tuple  # ((predicate, args), ...)
+    add: tuple  # ((predicate, args, ((quantified variable, type), ...)), ...)
+
+
+def _schemas(domain) -> list[_Schema]:
+    result = []
+    for action in domain.actions:
+        pre = tuple(_conjuncts(action.precondition))
+        add = tuple(_adds(action.effect, ()))
+        result.append(
+            _Schema(action.name, tuple(v for v, _ in action.parameters), tuple(t for _, t in action.parameters), pre, add)
+        )
+    return result
+
+
+def _adds(effect: Formula, quantified: tuple):
+    """(predicate, args, quantified variables with types) of every atom an effect can add; conditions ignored."""
+    kind = effect[0]
+    if kind == "atom":
+        yield effect[1], effect[2], tuple((v, t) for v, t in quantified if v in effect[2])
+    elif kind == "and":
+        for part in effect[1:]:
+            yield from _adds(part, quantified)
+    elif kind == "forall":
+        yield from _adds(effect[2], quantified + tuple(effect[1]))
+    elif kind == "when":
+        yield from _adds(effect[2], quantified)
+
+
+class _OutOfBudget(Exception):
+    pass
+
+
+def relaxed_reachability(task, kept: AbstractSet[str], budget: int = DEFAULT_BUDGET) -> Reachability:
+    """Whether the goal's positive atoms are reachable under the delete relaxation using ``kept`` objects only.
+
+    Each fact is processed once, in the order it was reached; an action
+    instance is found when the last of its preconditions is processed, by
+    joining the others against the facts processed so far (semi-naive, as in
+    Fast Downward's translator).
+    """
+    typing = typing_of(task)
+    domain, problem = typing.domain, typing.problem
+    allowed = set(kept) | set(domain.constants)
+    types_of = dict(domain.constants)
+    types_of.update(problem.objects)
+    goal = [(p,) + args for p, args in _conjuncts(problem.goal) if not any(a.startswith("?") for a in args)]
+    facts: dict[tuple, tuple | None] = {}  # fact -> (step, schema, binding) that first reached it; None: initial
+    queue: deque = deque()
+    # sorted: the same objects give the same relaxed plan whatever order the set was built in
+    for atom in sorted(atom for atom in problem.init if all(arg in allowed for arg in atom[1:])):
+        facts[atom] = None
+        queue.append(atom)
+    of_type: dict[str, list] = {}
+    fits: dict[str, frozenset] = {}
+
+    def objects_of(type_name: str) -> list:
+        if type_name not in of_type:
+            of_type[type_name] = sorted(o for o in allowed if domain.is_subtype(types_of.get(o, "object"), type_name))
+            fits[type_name] = frozenset(of_type[type_name])
+        return of_type[type_name]
+
+    schemas = _schemas(domain)
+    triggers: dict[str, list] = defaultdict(list)
+    for schema in schemas:
+        for i, (predicate, _) in enumerate(schema.pre):
+            triggers[predicate].append((schema, i))
+    processed: dict[tuple, list] = defaultdict(list)  # (predicate, position, value) -> facts; (predicate,) -> facts
+    work = [0]
+    missing = set(goal) - set(facts)
+
+    def apply(schema: _Schema, binding: dict) -> None:
+        for variable, type_name in zip(schema.parameters, schema.types):
+            if type_name == "object":
+                continue
+            if type_name not in fits:
+                objects_of(type_name)
+            if variable in binding and binding[variable] not in fits[type_name]:
+                return
+        free = [(v, t) for v, t in zip(schema.parameters, schema.types) if v not in binding]
+        for full in _fill(binding, free, objects_of, work, budget):
+            step = (schema.name,) + tuple(full[v] for v in schema.parameters)
+            for predicate, args, quantified in schema.add:
+                # a universally quantified effect adds its atom for every kept object of the variable's type
+                for each in _fill(full, list(quantified), objects_of, work, budget):
+                    fact = (predicate,) + tuple(each.get(a, a) for a in args)
+                    if fact not in facts:
+                        facts[fact] = (step, schema, full)
+                        queue.append(fact)
+                        missing.discard(fact)
+
+    def join(pre: list, binding: dict):
+        if not pre:
+            yield binding
+            return
+        # the condition whose bound arguments leave the fewest processed facts goes first
+        best, best_key, best_size = 0, None, None
+        for j, (predicate, args) in enumerate(pre):
+            key = (predicate,)
+            size = len(processed.get(key, ()))
+            for position, arg in enumerate(args):
+                value = binding.get(arg, arg) if arg[0] == "?" else arg
+                if value[0] != "?":
+                    candidate = (predicate, position, value)
+                    candidate_size = len(processed.get(candidate, ()))
+                    if candidate_size < size:
+                        key, size = candidate, candidate_size
+            if best_size is None or size < best_size:
+                best, best_key, best_size = j, key, size
+                if size == 0:
+                    break
+        predicate, args = pre[best]
+        rest = pre[:best] + pre[best + 1:]
+        for fact in processed.get(best_key, ()):
+            work[0] += 1
+            if work[0] > budget:
+                raise _OutOfBudget
+            new = _match(args, fact, binding)
+            if new is not None:
+                yield from join(rest, new)
+
+    try:
+        for schema in schemas:
+            if not schema.pre:
+                apply(schema, {})
+        while queue and missing:
+            fact = queue.popleft()
+            processed[(fact[0],)].append(fact)
+            for position, value in enumerate(fact[1:]):
+                processed[(fact[0], position, value)].append(fact)
+            for schema, i in triggers.get(fact[0], ()):
+                binding = _match(schema.pre[i][1], fact, {})
+                if binding is None:
+                    continue
+                for found in list(join(list(schema.pre[:i] + schema.pre[i + 1:]), binding)):
+                    apply(schema, found)
+    except _OutOfBudget:
+        return Reachability(False, False)
+    unreached = tuple(atom for atom in goal if atom not in facts)
+    if unreached:
+        return Reachability(False, True, unreached)
+    plan, objects = _relaxed_plan(facts, goal)
+    return Reachability(True, True, (), tuple(plan), frozenset(objects) - set(domain.constants))
+
+
+def _match(args: tuple, fact: tuple, binding: dict) -> dict | None:
+    if len(args) != len(fact) - 1:
+        return None
+    new = binding
+    for arg, value in zip(args, fact[1:]):
+        if arg.startswith("?"):
+            bound = new.get(arg)
+            if bound is None:
+                if new is binding:
+                    new = dict(binding)
+                new[arg] = value
+            elif bound != value:
+                return None
+        elif arg != value:
+            return None
+    return new
+
+
+def _fill(binding: dict, free: list, objects_of, work, budget):
+    if not free:
+        yield binding
+        return
+    variable, type_name = free[0]
+    for value in objects_of(type_name):
+        work[0] += 1
+        if work[0] > budget:
+            raise _OutOfBudget
+        new = dict(binding)
+        new[variable] = value
+        yield from _fill(new, free[1:], objects_of, work, budget)
+
+
+def _relaxed_plan(facts: dict, goal: Sequence[tuple]) -> tuple[list, set]:
+    plan: list = []
+    objects: set = set()
+    done: set = set()
+    stack = list(goal)
+    seen_steps: set = set()
+    while stack:
+        fact = stack.pop()
+        if fact in done:
+            continue
+        done.add(fact)
+        objects.update(fact[1:])
+        achiever = facts.get(fact)
+        if achiever is None:
+            continue
+        step, schema, binding = achiever
+        if step in seen_steps:
+            continue
+        seen_steps.add(step)
+        plan.append(step)
+        objects.update(a for a in step[1:] if a != "?")
+        for predicate, args in schema.pre:
+            stack.append((predicate,) + tuple(binding.get(a, a) for a in args))
+    plan.reverse()
+    return plan, objects
+
+
+CloseFn = Callable[[AbstractSet[str]], tuple]
+
+
+def repair_selection(
+    task,
+    kept: frozenset,
+    scores: Mapping[str, float],
+    close: CloseFn,
+    budget: int | None = None,
+    give_up_above: int | None = None,
+) -> tuple[frozenset, tuple, Reachability]:
+    """Add what the relaxed goal needs to ``kept``; returns (kept, what was put back and why, the last check).
+
+    Candidates are tried best first: one member of every class the kept set
+    lacks, then by score, then by hops from the kept objects in the initial
+    state; ``close`` is closure over constraints (it returns the closed set
+    and its own reasons).  ``budget`` bounds each check (default: grows with
+    the problem); past ``give_up_above`` kept objects the search stops and
+    returns what it has.
+    """
+    total = len(task.problem.objects)
+    if budget is None:
+        budget = max(DEFAULT_BUDGET, BUDGET_PER_OBJECT * total)
+    if give_up_above is None:
+        give_up_above = total
+    check = relaxed_reachability(task, kept, budget)
+    if check.reachable or not check.complete:
+        return kept, (), check
+    distance = object_distances(task.init_index, kept, hub_degree(task), max_fan=REPAIR_MAX_FAN)
+    far = total + 1
+    pool = sorted(
+        (name for name in task.problem.objects if name not in kept),
+        key=lambda name: (-scores.get(name, 0.0), distance.get(name, far), name),
+    )
+    # A class with no member kept cannot fill any role (no airplane at all): its best-ranked member goes first.
+    classes = typing_of(task).problem.objects
+    present = {classes[name] for name in kept if name in classes}
+    representatives = {}
+    for name in pool:
+        representatives.setdefault(classes[name], name)
+    first = [name for cls, name in representatives.items() if cls not in present]
+    pool = first + [name for name in pool if name not in set(first)]
+    rank = {name: i for i, name in enumerate(pool)}
+    current = kept
+    batch = max(4, len(kept))
+    while pool and not check.reachable:
+        take, pool = pool[:batch], pool[batch:]
+        current, _ = close(current | frozenset(take))
+        if len(current) > give_up_above:
+            break  # it would keep most of the problem anyway: checking costs more than it saves
+        check = relaxed_reachability(task, current, budget)
+        if not check.complete:
+            break
+        batch *= 2
+    if not check.reachable:
+        # Nothing short of the whole problem reaches the goal (or the check gave up): let the planner decide.
+        added = frozenset(current) - kept
+        return frozenset(current), tuple(Restored(n, "", "reachability", ("goal",)) for n in sorted(added)), check
+    used = {name for name in check.plan_objects if name in task.problem.objects and name not in kept}
+    step_of: dict[str, tuple] = {}
+    for step in check.plan:
+        for arg in step[1:]:
+            step_of.setdefault(arg, step)
+    reasons = [Restored(name, "", "reachability", step_of.get(name, ("goal",)))
+               for name in sorted(used, key=lambda n: (rank.get(n, len(rank)), n))]
+    closed, closure_reasons = close(kept | frozenset(used))
+    reasons.extend(r for r in closure_reasons if r.name not in used and r.name not in kept)
+    return closed, tuple(reasons), check
+
+
+def typing_of(task) -> InferredTypes:
+    """The task's types, inferred where the domain declares none (a duck-typed task gets them computed)."""
+    typing = getattr(task, "typing", None)
+    return typing if typing is not None else infer_types(task.domain, task.problem)
+
+
+def hub_degree(task) -> int:
+    """Objects in more initial facts than this (a shape every key has, a floor above all others) link
+    everything to everything: distances do not pass through them."""
+    return max(16, int(2 * len(task.problem.objects) ** 0.5))

@@ -1,0 +1,129 @@
+"""Object classes for domains that declare no types.
+
+Classic STRIPS domains say what an object is with static unary predicates:
+``(truck t1)``, ``(ball b3)``, ``(location l2)``.  ``infer_types`` turns them
+into declared types so that the goal analysis, closure and scoring treat an
+untyped domain exactly as its typed version:
+
+* an object's class is the set of static unary predicates true of it
+  (``{airport, location}`` for an airport); objects with none are classed by
+  the static predicates' argument positions they fill (``conn@0``), else they
+  stay ``object``;
+* a class's parent is the largest other class it contains, so an airport is
+  a location;
+* an action parameter gets the most specific class that every object
+  satisfying its static unary preconditions belongs to.
+
+A domain that declares types is returned unchanged.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections import defaultdict
+from dataclasses import dataclass
+from types import MappingProxyType
+
+from relevance_plan.pddl.reader import Action, Domain, Problem, effect_literals, formula_atoms
+
+
+@dataclass(frozen=True)
+class InferredTypes:
+    domain: Domain  # the domain with inferred types (the given one when it declares types)
+    problem: Problem  # the problem with each object's inferred type
+    inferred: bool  # False when the domain declared its own types
+    classes: tuple = ()  # (type name, (predicates...)) of every inferred class
+
+
+def static_predicates(domain: Domain) -> frozenset:
+    """Predicates no action adds or deletes."""
+    changed = {atom[1] for action in domain.actions for atom, _, _ in effect_literals(action.effect)}
+    return frozenset(p for p in domain.predicates if p not in changed)
+
+
+def declares_types(domain: Domain, problem: Problem) -> bool:
+    if any(t != "object" for t in domain.types):
+        return True
+    return any(t != "object" for t in list(problem.objects.values()) + list(domain.constants.values()))
+
+
+def _class_name(signature: frozenset) -> str:
+    return "+".join(sorted(signature)) if signature else "object"
+
+
+def infer_types(domain: Domain, problem: Problem) -> InferredTypes:
+    if declares_types(domain, problem):
+        return InferredTypes(domain, problem, False)
+    static = static_predicates(domain)
+    unary = {p for p in static if len(domain.predicates.get(p, ())) == 1}
+    names = list(domain.constants) + list(problem.objects)
+    unary_of: dict[str, set] = defaultdict(set)
+    positions_of: dict[str, set] = defaultdict(set)
+    for atom in problem.init:
+        if atom[0] in unary:
+            unary_of[atom[1]].add(atom[0])
+        elif atom[0] in static:
+            for position, arg in enumerate(atom[1:]):
+                positions_of[arg].add(f"{atom[0]}@{position}")
+    signature = {name: frozenset(unary_of[name] or positions_of[name]) for name in names}
+    classes = sorted({s for s in signature.values() if s}, key=lambda s: (len(s), sorted(s)))
+    if not classes:
+        return InferredTypes(domain, problem, False)
+    types: dict[str, str] = {"object": ""}
+    for cls in classes:
+        parents = [other for other in classes if other < cls]
+        parent = max(parents, key=lambda s: (len(s), sorted(s))) if parents else None
+        types[_class_name(cls)] = _class_name(parent) if parent else "object"
+
+    def parameter_type(needed: frozenset) -> str:
+        if not needed:
+            return "object"
+        candidates = [cls for cls in classes if needed <= cls]
+        if not candidates:
+            return "object"
+        for meet in sorted(candidates, key=len):
+            name = _class_name(meet)
+            if all(_is_subtype(types, _class_name(c), name) for c in candidates):
+                return name
+        return "object"
+
+    actions = []
+    for action in domain.actions:
+        needed: dict[str, set] = defaultdict(set)
+        for atom, positive in formula_atoms(action.precondition):
+            if not positive or atom[1] not in static:
+                continue
+            args = atom[2]
+            if atom[1] in unary:
+                needed[args[0]].add(atom[1])
+            else:
+                for position, arg in enumerate(args):
+                    needed[arg].add(f"{atom[1]}@{position}")
+        params = []
+        for variable, declared in action.parameters:
+            wanted = frozenset(needed[variable] & unary) or frozenset(needed[variable] - unary)
+            params.append((variable, parameter_type(wanted) if declared == "object" else declared))
+        actions.append(Action(action.name, tuple(params), action.precondition, action.effect))
+    frozen_types = MappingProxyType(types)
+    typed_domain = dataclasses.replace(
+        domain,
+        types=frozen_types,
+        constants=MappingProxyType({c: _class_name(signature[c]) for c in domain.constants}),
+        actions=tuple(actions),
+    )
+    typed_problem = dataclasses.replace(
+        problem, objects=MappingProxyType({o: _class_name(signature[o]) for o in problem.objects})
+    )
+    return InferredTypes(
+        typed_domain, typed_problem, True, tuple((_class_name(c), tuple(sorted(c))) for c in classes)
+    )
+
+
+def _is_subtype(types, type_name: str, of: str) -> bool:
+    seen = set()
+    while type_name and type_name not in seen:
+        if type_name == of:
+            return True
+        seen.add(type_name)
+        type_name = types.get(type_name, "")
+    return of == "object"
