@@ -323,18 +323,9 @@ def generate_suite(
     progress: Callable[[int, int], None] | None = None,
     force: bool = False,
 ) -> list[Path]:
-    """Write ``count`` problems (indices 1..count) into ``out_dir``; return the
-    ``.pddl`` paths.
-
-    The suite is built in a temporary sibling directory, so a failure leaves
-    no partial suite.  Into an existing directory only the generator's own
-    files (those its ``suite.json`` lists) are replaced or removed; any other
-    file stays.  A non-empty directory without a suite of ours, or a file of
-    the user's with a name the generator would write, is refused unless
-    ``force`` (which overwrites same-named files, and still deletes nothing).
-    Raises ``UsageError`` for bad arguments, ``InputFileError`` when the
-    directory cannot be written.
-    """
+    """Write ``count`` problems (indices 1..count) into ``out_dir`` as ``write_suite``
+    does; return the ``.pddl`` paths.  Raises ``UsageError`` for bad arguments,
+    ``InputFileError`` when the directory cannot be written."""
     _check_arguments(world, difficulty, seed, distractors)
     _check_int("count", count, 1)
     if count > MAX_COUNT:
