@@ -22,7 +22,7 @@ from relevance_plan.generators.generate import (
     generate_suite,
     write_base_scenes,
 )
-from relevance_plan.generators.scenes import DIFFICULTIES, SCENES, WORLD_NAMES, WORLDS, Scene, kind_of
+from relevance_plan.generators.scenes import DIFFICULTIES, SCENES, WORLD_NAMES, WORLDS, SceneLayout, kind_of
 
 __all__ = [
     "CLASSIC_WORLDS",
@@ -37,7 +37,7 @@ __all__ = [
     "GeneratedProblem",
     "KITCHENWARE_TYPES",
     "SCENES",
-    "Scene",
+    "SceneLayout",
     "WORLDS",
     "WORLD_NAMES",
     "base_scene_problem",

@@ -30,7 +30,7 @@ from relevance_plan.errors import InputFileError, UsageError
 from relevance_plan.io import new_directory_mode
 from relevance_plan.generators.catalog import CATALOG
 from relevance_plan.generators.problem import choose_roles, format_scene, necessary_objects, relevant_objects
-from relevance_plan.generators.scenes import DIFFICULTIES, SCENES, WORLD_NAMES, Item, Scene, name_key
+from relevance_plan.generators.scenes import DIFFICULTIES, SCENES, WORLD_NAMES, Item, SceneLayout, name_key
 
 GENERATOR = "relevance_plan.generators"
 GENERATOR_VERSION = "1"
@@ -64,7 +64,7 @@ class GeneratedProblem:
     name: str
     pddl_text: str
     sidecar: dict[str, Any]
-    scene: Scene = field(repr=False, compare=False)
+    scene: SceneLayout = field(repr=False, compare=False)
 
     @property
     def sidecar_text(self) -> str:
@@ -135,7 +135,7 @@ def generate_problem(
     count = drawn if distractors is None else distractors
     added = _draw_distractors(base, count, rng)
     items, constraints = _add_constraints(base, list(base.items) + added, CONSTRAINT_COUNTS[(world, difficulty)], rng)
-    scene = Scene(
+    scene = SceneLayout(
         world=world,
         difficulty=difficulty,
         places=base.places,
@@ -159,7 +159,7 @@ def generate_problem(
     return GeneratedProblem(name, format_scene(scene, name, comment), sidecar, scene)
 
 
-def _draw_distractors(base: Scene, count: int, rng: random.Random) -> list[Item]:
+def _draw_distractors(base: SceneLayout, count: int, rng: random.Random) -> list[Item]:
     """``count`` distractors: distinct kinds per pass over the catalog, each on
     the base of a random place; indices continue after the scene's own."""
     next_index: dict[str, int] = {}
@@ -176,7 +176,7 @@ def _draw_distractors(base: Scene, count: int, rng: random.Random) -> list[Item]
 
 
 def _add_constraints(
-    base: Scene, items: list[Item], count: int, rng: random.Random
+    base: SceneLayout, items: list[Item], count: int, rng: random.Random
 ) -> tuple[list[Item], list[list[str]]]:
     """Add ``count`` on-top constraints [top, bottom].
 
@@ -218,7 +218,7 @@ def _add_constraints(
 
 
 def build_sidecar(
-    scene: Scene,
+    scene: SceneLayout,
     *,
     base_scene: str,
     seed: int | None,

@@ -33,12 +33,12 @@ from __future__ import annotations
 
 from relevance_plan.pddl.formatter import format_problem
 
-from relevance_plan.generators.scenes import CONTAINER, SURFACE, Scene, name_key
+from relevance_plan.generators.scenes import CONTAINER, SURFACE, SceneLayout, name_key
 
 Atom = tuple[str, ...]
 
 
-def problem_objects(scene: Scene) -> dict[str, list[str]]:
+def problem_objects(scene: SceneLayout) -> dict[str, list[str]]:
     """Objects grouped by PDDL type, in a fixed order."""
     objects: dict[str, list[str]] = {
         SURFACE: [p.name for p in scene.places if p.kind == SURFACE],
@@ -50,7 +50,7 @@ def problem_objects(scene: Scene) -> dict[str, list[str]]:
     return objects
 
 
-def problem_init(scene: Scene) -> list[Atom]:
+def problem_init(scene: SceneLayout) -> list[Atom]:
     init: list[Atom] = [("robot-at", scene.robot_start), ("hand-empty",)]
     init.extend(("accessible", p.name) for p in scene.places if p.accessible)
     init.extend(("human-at", h.name, h.place) for h in scene.humans)
@@ -64,19 +64,19 @@ def problem_init(scene: Scene) -> list[Atom]:
     return init
 
 
-def returned_items(scene: Scene) -> list[str]:
+def returned_items(scene: SceneLayout) -> list[str]:
     """Items the goal wants back at their original place."""
     return [i.name for i in scene.items if i.type in scene.world_spec.returned_types]
 
 
-def problem_goal(scene: Scene) -> list[Atom]:
+def problem_goal(scene: SceneLayout) -> list[Atom]:
     world = scene.world_spec
     goal: list[Atom] = [(world.goal_predicate, h.name) for h in scene.humans]
     goal.extend(("at", name, scene.item(name).place) for name in returned_items(scene))
     return goal
 
 
-def goal_objects(scene: Scene) -> list[str]:
+def goal_objects(scene: SceneLayout) -> list[str]:
     """Objects named in the goal."""
     names: dict[str, None] = {}
     for atom in problem_goal(scene):
@@ -85,7 +85,7 @@ def goal_objects(scene: Scene) -> list[str]:
     return list(names)
 
 
-def format_scene(scene: Scene, name: str, comment: str | None = None) -> str:
+def format_scene(scene: SceneLayout, name: str, comment: str | None = None) -> str:
     """The scene as PDDL problem text (``relevance_plan.pddl.formatter`` layout)."""
     return format_problem(
         name=name,
@@ -97,7 +97,7 @@ def format_scene(scene: Scene, name: str, comment: str | None = None) -> str:
     )
 
 
-def relevant_objects(scene: Scene) -> list[str]:
+def relevant_objects(scene: SceneLayout) -> list[str]:
     """Every object a helpful person would consider for the objective."""
     chosen: set[str] = {scene.robot_start}
     for human in scene.humans:
@@ -108,7 +108,7 @@ def relevant_objects(scene: Scene) -> list[str]:
     return sorted(chosen, key=name_key)
 
 
-def choose_roles(scene: Scene) -> dict[str, str]:
+def choose_roles(scene: SceneLayout) -> dict[str, str]:
     """One object per role: fewest items stacked on it, then not shut in a
     closed container, then the first by name (``cup_2`` before ``cup_10``)."""
     roles: dict[str, str] = {}
@@ -123,7 +123,7 @@ def choose_roles(scene: Scene) -> dict[str, str]:
     return roles
 
 
-def necessary_objects(scene: Scene, roles: dict[str, str] | None = None) -> list[str]:
+def necessary_objects(scene: SceneLayout, roles: dict[str, str] | None = None) -> list[str]:
     """A set of objects sufficient for a plan (see the module docstring)."""
     roles = choose_roles(scene) if roles is None else roles
     items: set[str] = set()
@@ -136,7 +136,7 @@ def necessary_objects(scene: Scene, roles: dict[str, str] | None = None) -> list
     return sorted(chosen, key=name_key)
 
 
-def blockers(scene: Scene, roles: dict[str, str] | None = None) -> list[str]:
+def blockers(scene: SceneLayout, roles: dict[str, str] | None = None) -> list[str]:
     """Items sharing a pile with a role object or a returned item, other than those."""
     roles = choose_roles(scene) if roles is None else roles
     anchors = set(roles.values()) | set(returned_items(scene))

@@ -36,6 +36,7 @@ from dataclasses import dataclass, field
 from functools import cached_property
 
 from relevance_plan.generators.catalog import KITCHENWARE_TYPES
+from relevance_plan.relevance.scene import kind_of  # noqa: F401  (one rule for a name's kind)
 
 SURFACE = "surface"
 CONTAINER = "container"
@@ -47,12 +48,6 @@ DIFFICULTIES = ("simple", "hard")
 DEPENDENCY_KINDS = ("in-closed-container", "covered", "sealed", "return")
 
 _NAME = re.compile(r"^([a-z]+(?:_[a-z]+)*)_([1-9][0-9]*)$")
-
-
-def kind_of(name: str) -> str:
-    """The kind of an object: its name without the trailing ``_<digits>``."""
-    match = _NAME.match(name)
-    return match.group(1) if match else name
 
 
 def name_key(name: str) -> tuple[str, int]:
@@ -131,7 +126,7 @@ class Item:
 
 
 @dataclass(frozen=True)
-class Human:
+class HumanPlacement:
     name: str
     place: str
 
@@ -147,7 +142,7 @@ class Dependency:
 
 
 @dataclass(frozen=True)
-class Scene:
+class SceneLayout:
     """An immutable world state; validated on construction.
 
     ``dependencies`` is computed from the other fields (see the module
@@ -158,7 +153,7 @@ class Scene:
     difficulty: str
     places: tuple[Place, ...]
     items: tuple[Item, ...]
-    humans: tuple[Human, ...]
+    humans: tuple[HumanPlacement, ...]
     robot_start: str
     dependencies: tuple[Dependency, ...] = field(init=False, compare=False)
 
@@ -235,7 +230,7 @@ class Scene:
         return [p.name for p in self.places] + [i.name for i in self.items] + [h.name for h in self.humans]
 
 
-def _check_scene(scene: Scene) -> None:
+def _check_scene(scene: SceneLayout) -> None:
     if scene.world not in WORLDS:
         raise ValueError(f"unknown world {scene.world!r}")
     world = WORLDS[scene.world]
@@ -281,7 +276,7 @@ def _check_scene(scene: Scene) -> None:
             current = items[current].on
 
 
-def compute_dependencies(scene: Scene) -> tuple[Dependency, ...]:
+def compute_dependencies(scene: SceneLayout) -> tuple[Dependency, ...]:
     """Natural task dependencies of a scene (see the module docstring), sorted."""
     world = WORLDS[scene.world]
     found: list[Dependency] = []
@@ -317,7 +312,7 @@ def _items(place: str, *specs: tuple) -> tuple[Item, ...]:
     return tuple(Item(spec[0], spec[1], place, spec[2] if len(spec) > 2 else None) for spec in specs)
 
 
-COFFEE_SIMPLE = Scene(
+COFFEE_SIMPLE = SceneLayout(
     world="coffee",
     difficulty="simple",
     places=(
@@ -348,11 +343,11 @@ COFFEE_SIMPLE = Scene(
         ),
         *_items("cabinet_1", ("dinner_plate_1", "plate")),
     ),
-    humans=(Human("person_1", "serving_table_1"),),
+    humans=(HumanPlacement("person_1", "serving_table_1"),),
     robot_start="kitchen_counter_1",
 )
 
-COFFEE_HARD = Scene(
+COFFEE_HARD = SceneLayout(
     world="coffee",
     difficulty="hard",
     places=(
@@ -406,11 +401,11 @@ COFFEE_HARD = Scene(
             ("tea_towel_1", "linen"),
         ),
     ),
-    humans=(Human("person_1", "serving_table_1"),),
+    humans=(HumanPlacement("person_1", "serving_table_1"),),
     robot_start="kitchen_counter_1",
 )
 
-CEREAL_SIMPLE = Scene(
+CEREAL_SIMPLE = SceneLayout(
     world="cereal",
     difficulty="simple",
     places=(
@@ -443,11 +438,11 @@ CEREAL_SIMPLE = Scene(
             ("napkin_1", "napkin"),
         ),
     ),
-    humans=(Human("person_1", "dining_table_1"),),
+    humans=(HumanPlacement("person_1", "dining_table_1"),),
     robot_start="kitchen_counter_1",
 )
 
-CEREAL_HARD = Scene(
+CEREAL_HARD = SceneLayout(
     world="cereal",
     difficulty="hard",
     places=(
@@ -486,11 +481,11 @@ CEREAL_HARD = Scene(
         ),
         *_items("drawer_1", ("spoon_1", "spoon"), ("spoon_2", "spoon")),
     ),
-    humans=(Human("person_1", "dining_table_1"),),
+    humans=(HumanPlacement("person_1", "dining_table_1"),),
     robot_start="kitchen_counter_1",
 )
 
-SCENES: dict[str, Scene] = {
+SCENES: dict[str, SceneLayout] = {
     scene.name: scene for scene in (COFFEE_SIMPLE, COFFEE_HARD, CEREAL_SIMPLE, CEREAL_HARD)
 }
 """Base scenes by ``<world>-<difficulty>``."""
