@@ -22,7 +22,6 @@ watchdog of ``runner.run_process_group``.
 from __future__ import annotations
 
 import hashlib
-import importlib.metadata
 import os
 import re
 import shlex
@@ -160,6 +159,8 @@ class UnifiedPlanningPlanner:
                 f"{', '.join(installed_up_engines()) or 'none'}); {PLANNERS_EXTRA_HINT} adds pyperplan, symk and lpg")
 
     def version(self) -> str:
+        import importlib.metadata  # slow to import; only batch keys need it
+
         parts = [f"unified-planning {importlib.metadata.version('unified-planning')}"]
         try:
             parts.append(f"up-{self.engine} {importlib.metadata.version('up-' + self.engine)}")

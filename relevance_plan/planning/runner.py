@@ -15,7 +15,6 @@ from __future__ import annotations
 import contextlib
 import enum
 import functools
-import importlib.metadata
 import importlib.util
 import math
 import os
@@ -188,6 +187,8 @@ def find_fast_downward() -> Path:
 @functools.lru_cache(maxsize=1)
 def fast_downward_version() -> str:
     """Version of the installed up-fast-downward package (for result keys)."""
+    import importlib.metadata  # slow to import; only batch keys need it
+
     try:
         return importlib.metadata.version("up-fast-downward")
     except importlib.metadata.PackageNotFoundError as error:
@@ -523,7 +524,8 @@ def run_process_group(command: list[str], workdir: Path, deadline: float | None,
         with open(workdir / LOG_FILE, "wb") as log_file:
             try:
                 process = subprocess.Popen(
-                    [sys.executable, str(_GUARD), str(guard_read), *command], cwd=workdir,
+                    # -I -S: the guard needs the standard library only; skipping site saves start-up
+                    [sys.executable, "-I", "-S", str(_GUARD), str(guard_read), *command], cwd=workdir,
                     stdin=subprocess.DEVNULL, stdout=log_file, stderr=subprocess.STDOUT,
                     start_new_session=True, close_fds=True, pass_fds=(guard_read,), env=env,
                     preexec_fn=None if memory_limit_mb is None else functools.partial(_limit_memory, memory_limit_mb))
