@@ -23,8 +23,8 @@ sys.path.insert(0, str(REPO))
 from relevance_plan.generators.generate import generate_problem  # noqa: E402
 from relevance_plan.io import load_domain, load_problem, write_text_atomic  # noqa: E402
 from relevance_plan.relevance.knowledge import load_model  # noqa: E402
-from relevance_plan.relevance.prune import prune_with_scores, score_task  # noqa: E402
-from relevance_plan.relevance.scorers import ScoreRequest, PlanningTask  # noqa: E402
+from relevance_plan.relevance.scorers import PlanningTask  # noqa: E402
+from relevance_plan.relevance.setup import ScoringOptions, score_problem  # noqa: E402
 
 TARGETS = {500: 0.3, 2000: 1.5}
 
@@ -38,10 +38,10 @@ def stages(domain_path: Path, problem_path: Path, out: Path, scorer: str) -> dic
     mark = time.perf_counter()
     model = load_model(REPO / "domains" / "coffee" / "relevance.yaml") if scorer == "model" else None
     task = PlanningTask(domain, problem)
-    scores = score_task(task, scorer, ScoreRequest(model=model))
+    scoring = score_problem(task, ScoringOptions(scorer=scorer), model=model)
     times["score"] = time.perf_counter() - mark
     mark = time.perf_counter()
-    result = prune_with_scores(task, scores, model=model)
+    result = scoring.prune(ScoringOptions().thresholds)
     times["closure"] = time.perf_counter() - mark
     mark = time.perf_counter()
     write_text_atomic(out, result.text)

@@ -14,7 +14,6 @@ import textwrap
 import time
 from pathlib import Path
 
-import click
 import pytest
 from click.testing import CliRunner
 

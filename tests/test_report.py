@@ -7,7 +7,6 @@ import io
 import json
 import sys
 
-import click
 import pytest
 from click.testing import CliRunner
 

@@ -10,8 +10,7 @@ from relevance_plan.relevance.analysis import ConstraintRule, infer_constraint_r
 from relevance_plan.relevance.closure import Restored, close_over_constraints
 from relevance_plan.relevance.reachability import repair_selection
 from relevance_plan.relevance.knowledge import KnowledgeModel, check_threshold
-from relevance_plan.relevance.scorers import SCORERS, ScoreRequest, ScoreResult, PlanningTask
-from relevance_plan.errors import UsageError
+from relevance_plan.relevance.scorers import PlanningTask, ScoreResult
 from relevance_plan.pddl.writer import write_pruned_problem
 
 DEFAULT_TAU = 0.2
@@ -191,12 +190,6 @@ def full_problem(task: PlanningTask, scores: ScoreResult, thresholds: Thresholds
     )
 
 
-def score_task(task: PlanningTask, scorer: str, request: ScoreRequest) -> ScoreResult:
-    if scorer not in SCORERS:
-        raise UsageError(f"unknown scorer '{scorer}' (choose from: {', '.join(SCORERS)})")
-    return SCORERS[scorer](task, request)
-
-
 def widen(
     result: PruneResult,
     factor: float,
@@ -261,6 +254,5 @@ __all__ = [
     "prune_with_scores",
     "ranked_by_score",
     "widen",
-    "score_task",
     "select_relevant",
 ]
