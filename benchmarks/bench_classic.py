@@ -65,8 +65,10 @@ def main() -> int:
     args = parser.parse_args()
 
     rows = []
-    print(f"lama-first, timeout {args.timeout:g} s, seed {args.seed}, {args.count} problem(s) per world"
-          f"{', typed' if args.typed else ', untyped'}{', unpadded' if args.unpadded else ''}; relevance = goal scorer")
+    print(
+        f"lama-first, timeout {args.timeout:g} s, seed {args.seed}, {args.count} problem(s) per world"
+        f"{', typed' if args.typed else ', untyped'}{', unpadded' if args.unpadded else ''}; relevance = goal scorer"
+    )
     print("| problem | objects | pure (s) | relevance (s) | kept | attempts | oracle (s) | valid |")
     print("|---|---|---|---|---|---|---|---|")
     with tempfile.TemporaryDirectory(prefix="bench-classic-") as scratch:
@@ -82,17 +84,23 @@ def main() -> int:
                 row = {"world": world, "problem": problem.name, "objects": problem.sidecar["objects_total"]}
                 row["pure"] = run(domain_path, problem_path, "pure", args.timeout)
                 row["relevance"] = run(domain_path, problem_path, "relevance", args.timeout)
-                row["oracle"] = (run(domain_path, problem_path, "oracle", args.timeout)
-                                 if "necessary" in problem.sidecar else None)
+                row["oracle"] = (
+                    run(domain_path, problem_path, "oracle", args.timeout) if "necessary" in problem.sidecar else None
+                )
                 rows.append(row)
                 pure, rel, oracle = row["pure"], row["relevance"], row["oracle"]
                 valid = all(r["valid"] for r in (pure, rel, oracle) if r is not None and r["solved"])
-                print(f"| {problem.name} | {row['objects']} | {_time(pure)} | {_time(rel)} |"
-                      f" {rel['kept']} | {rel['attempts']} | {_time(oracle) if oracle else '–'} | {valid} |", flush=True)
+                print(
+                    f"| {problem.name} | {row['objects']} | {_time(pure)} | {_time(rel)} |"
+                    f" {rel['kept']} | {rel['attempts']} | {_time(oracle) if oracle else '–'} | {valid} |",
+                    flush=True,
+                )
 
     print()
-    print("| domain | problems | objects | pure median (s) | relevance median (s) | pure/relevance |"
-          " kept median | attempts median | oracle median (s) | failures |")
+    print(
+        "| domain | problems | objects | pure median (s) | relevance median (s) | pure/relevance |"
+        " kept median | attempts median | oracle median (s) | failures |"
+    )
     print("|---|---|---|---|---|---|---|---|---|---|")
     ratios = []
     worst = []
@@ -108,17 +116,23 @@ def main() -> int:
             ratios.append(ratio)
         for r in mine:
             worst.append((r["relevance"]["time"] - (1.25 * r["pure"]["time"] + 1.0), r["problem"]))
-        print(f"| {world} | {len(mine)} | {median([r['objects'] for r in mine]):.0f} |"
-              f" {pure_t:.2f}{' (timeouts)' if unsolved_pure else ''} | {rel_t:.2f} |"
-              f" {'>' if unsolved_pure else ''}{ratio:.1f}x | {median([r['relevance']['kept'] for r in mine]):.0f} |"
-              f" {median([r['relevance']['attempts'] for r in mine]):.0f} |"
-              f" {f'{oracle_t:.2f}' if oracle_t is not None else '–'} | {failures} |")
+        print(
+            f"| {world} | {len(mine)} | {median([r['objects'] for r in mine]):.0f} |"
+            f" {pure_t:.2f}{' (timeouts)' if unsolved_pure else ''} | {rel_t:.2f} |"
+            f" {'>' if unsolved_pure else ''}{ratio:.1f}x | {median([r['relevance']['kept'] for r in mine]):.0f} |"
+            f" {median([r['relevance']['attempts'] for r in mine]):.0f} |"
+            f" {f'{oracle_t:.2f}' if oracle_t is not None else '–'} | {failures} |"
+        )
     geomean = math.exp(sum(math.log(r) for r in ratios) / len(ratios)) if ratios else float("nan")
     all_attempts = [r["relevance"]["attempts"] for r in rows]
     slower = [name for excess, name in worst if excess > 0]
     within = [r["problem"] for r in rows if r["relevance"]["time"] > 1.1 * r["pure"]["time"] + 0.5]
-    invalid = [r["problem"] for r in rows for m in ("pure", "relevance", "oracle")
-               if r[m] is not None and r[m]["solved"] and not r[m]["valid"]]
+    invalid = [
+        r["problem"]
+        for r in rows
+        for m in ("pure", "relevance", "oracle")
+        if r[m] is not None and r[m]["solved"] and not r[m]["valid"]
+    ]
     failed = [r["problem"] for r in rows if not r["relevance"]["solved"]]
     print()
     print(f"geometric mean pure/relevance over {len(ratios)} domains: {geomean:.2f}x (target >= 5x)")

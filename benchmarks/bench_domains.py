@@ -17,8 +17,9 @@ REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))
 sys.path.insert(0, str(REPO / "tests"))
 
-from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task  # noqa: E402
 from worlds import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem  # noqa: E402
+
+from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task  # noqa: E402
 
 CASES = [
     ("blocksworld", BLOCKSWORLD_DOMAIN, lambda n: blocksworld_problem(n, seed=1, in_the_way=3), (100, 200, 300)),

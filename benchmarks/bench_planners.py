@@ -23,10 +23,11 @@ REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))
 sys.path.insert(0, str(REPO / "tests"))
 
+from worlds import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem  # noqa: E402
+
 from relevance_plan.generators.generate import generate_suite  # noqa: E402
 from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task  # noqa: E402
 from relevance_plan.planning.planners import make_planner, split_planner_names  # noqa: E402
-from worlds import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem  # noqa: E402
 
 
 def problems(scratch: Path) -> list[tuple[str, Path, Path]]:
@@ -68,16 +69,24 @@ def main() -> int:
         cases = problems(Path(scratch))
         for planner in planners:
             for label, domain, problem in cases:
-                results = {method: plan_task(domain, problem, PlanOptions(method=method, planner=planner,
-                                                                          timeout=args.timeout))
-                           for method in ("pure", "relevance")}
+                results = {
+                    method: plan_task(
+                        domain, problem, PlanOptions(method=method, planner=planner, timeout=args.timeout)
+                    )
+                    for method in ("pure", "relevance")
+                }
                 pure, relevance = results["pure"], results["relevance"]
                 both = all(r.status is PlanStatus.SOLVED and r.valid for r in results.values())
-                ratio = f"{pure.wall_time / relevance.wall_time:.1f}x" if both else (
-                    f">{pure.wall_time / relevance.wall_time:.1f}x" if relevance.valid else "–")
-                print(f"| {planner} | {label} | {relevance.objects_total} | {seconds(pure)} | {seconds(relevance)}"
-                      f" | {ratio} | {relevance.objects_kept}/{relevance.objects_total} | {len(relevance.attempts)} |",
-                      flush=True)
+                ratio = (
+                    f"{pure.wall_time / relevance.wall_time:.1f}x"
+                    if both
+                    else (f">{pure.wall_time / relevance.wall_time:.1f}x" if relevance.valid else "–")
+                )
+                print(
+                    f"| {planner} | {label} | {relevance.objects_total} | {seconds(pure)} | {seconds(relevance)}"
+                    f" | {ratio} | {relevance.objects_kept}/{relevance.objects_total} | {len(relevance.attempts)} |",
+                    flush=True,
+                )
     return 0
 
 

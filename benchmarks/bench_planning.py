@@ -66,9 +66,11 @@ def run(args: argparse.Namespace) -> int:
                         )
                 rows.append((world, size, total_objects, times, kept, failures))
     print()
-    print(f"median wall time per problem (s), {args.problems} problem(s) per cell (relevance and oracle: median of"
-          f" {args.repeats} runs each), timeout {args.timeout:g} s, lama-first; failures in brackets")
-    header = f"| world | distractors | objects | " + " | ".join(methods)
+    print(
+        f"median wall time per problem (s), {args.problems} problem(s) per cell (relevance and oracle: median of"
+        f" {args.repeats} runs each), timeout {args.timeout:g} s, lama-first; failures in brackets"
+    )
+    header = "| world | distractors | objects | " + " | ".join(methods)
     header += " | pure/relevance | relevance/oracle | kept (relevance) | kept (oracle) |"
     print(header)
     print("|" + "---|" * (header.count("|") - 1))
@@ -88,7 +90,11 @@ def run(args: argparse.Namespace) -> int:
         ratio_oracle = f"{relevance / oracle:.2f}" if relevance and oracle else "–"
         kept_rel = f"{statistics.mean(kept['relevance']):.0f}/{total}" if kept.get("relevance") else "–"
         kept_or = f"{statistics.mean(kept['oracle']):.0f}/{total}" if kept.get("oracle") else "–"
-        print(f"| {world} | {size} | {total} | " + " | ".join(cells) + f" | {ratio_pure} | {ratio_oracle} | {kept_rel} | {kept_or} |")
+        print(
+            f"| {world} | {size} | {total} | "
+            + " | ".join(cells)
+            + f" | {ratio_pure} | {ratio_oracle} | {kept_rel} | {kept_or} |"
+        )
     return 0
 
 

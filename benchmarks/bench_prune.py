@@ -64,14 +64,27 @@ def main() -> int:
             out = Path(scratch) / "pruned.pddl"
             for scorer in ("model", "goal"):
                 runs = [stages(domain_path, problem_path, out, scorer) for _ in range(5)]
-                median = {k: statistics.median(r[k] for r in runs) for k in ("parse", "score", "closure", "write", "total")}
+                median = {
+                    k: statistics.median(r[k] for r in runs) for k in ("parse", "score", "closure", "write", "total")
+                }
                 commands = []
                 for _ in range(3):
                     started = time.perf_counter()
                     subprocess.run(
-                        [sys.executable, "-m", "relevance_plan", "prune", str(domain_path), str(problem_path),
-                         "-o", str(out), "--scorer", scorer],
-                        check=True, capture_output=True,
+                        [
+                            sys.executable,
+                            "-m",
+                            "relevance_plan",
+                            "prune",
+                            str(domain_path),
+                            str(problem_path),
+                            "-o",
+                            str(out),
+                            "--scorer",
+                            scorer,
+                        ],
+                        check=True,
+                        capture_output=True,
                     )
                     commands.append(time.perf_counter() - started)
                 print(

@@ -39,11 +39,27 @@ from relevance_plan.session import Session  # noqa: E402
 TARGET_OBJECTS = 1000
 MIXED_EVENTS = 1000
 # Mostly distractors, a few things a coffee drinker could use.
-DISTRACTORS = [("plate", "dinner_plate"), ("bowl", "cereal_bowl"), ("cookware", "frying_pan"), ("utensil", "ladle"),
-               ("cutlery", "fork"), ("glassware", "wine_glass"), ("board", "cutting_board"), ("tray", "baking_tray"),
-               ("jar", "pickle_jar"), ("linen", "tablecloth"), ("food", "bagel"), ("cleaning", "sponge")]
-USEFUL = [("cup", "paper_cup"), ("whitener", "oat_milk"), ("stirrer", "teaspoon"), ("napkin", "napkin"),
-          ("sweetener", "sugar_packet")]
+DISTRACTORS = [
+    ("plate", "dinner_plate"),
+    ("bowl", "cereal_bowl"),
+    ("cookware", "frying_pan"),
+    ("utensil", "ladle"),
+    ("cutlery", "fork"),
+    ("glassware", "wine_glass"),
+    ("board", "cutting_board"),
+    ("tray", "baking_tray"),
+    ("jar", "pickle_jar"),
+    ("linen", "tablecloth"),
+    ("food", "bagel"),
+    ("cleaning", "sponge"),
+]
+USEFUL = [
+    ("cup", "paper_cup"),
+    ("whitener", "oat_milk"),
+    ("stirrer", "teaspoon"),
+    ("napkin", "napkin"),
+    ("sweetener", "sugar_packet"),
+]
 
 
 def percentile(values, share):
@@ -76,8 +92,13 @@ class Stream:
 
     def distractors(self) -> list[str]:
         scene, kept = self.session.scene, self.session.kept
-        return [n for n, t in scene.objects.items() if n not in kept and t not in ("surface", "container", "human")
-                and any(f[0] == "at" for f in scene.index.facts_of(n, "at"))]
+        return [
+            n
+            for n, t in scene.objects.items()
+            if n not in kept
+            and t not in ("surface", "container", "human")
+            and any(f[0] == "at" for f in scene.index.facts_of(n, "at"))
+        ]
 
     def mixed(self, done: int) -> list[dict]:
         """The next mixed event(s) after ``done`` events (a move is two: off the old place, onto the new)."""
@@ -86,7 +107,9 @@ class Stream:
             if done >= at and self.goals == number:
                 self.goals += 1
                 cups = sorted(n for n in self.session.kept if scene.objects[n] == "cup")
-                goal = f"(and (coffee-served person_1) (stirred {cups[0]}))" if number == 0 else "(coffee-served person_1)"
+                goal = (
+                    f"(and (coffee-served person_1) (stirred {cups[0]}))" if number == 0 else "(coffee-served person_1)"
+                )
                 return [{"event": "goal", "goal": goal}]
         roll = rng.random()
         if roll < 0.6:
@@ -125,9 +148,13 @@ def same(session: Session, scores, result) -> bool:
     if not scores.sufficient:
         return current.insufficiency == scores.insufficiency
     decision = session.decision
-    return (current.element_scores == scores.element_scores and current.class_scores == scores.class_scores
-            and decision.kept == result.kept and decision.selected == result.selected
-            and {r.name for r in decision.restored} == {r.name for r in result.restored})
+    return (
+        current.element_scores == scores.element_scores
+        and current.class_scores == scores.class_scores
+        and decision.kept == result.kept
+        and decision.selected == result.selected
+        and {r.name for r in decision.restored} == {r.name for r in result.restored}
+    )
 
 
 def main() -> None:
@@ -157,8 +184,9 @@ def main() -> None:
             assert report.error is None, (event, report.error)
             handled += report.seconds
             scratch_time, scores, result = from_scratch(session)
-            rows.append((event["event"], report.triggered, report.seconds, scratch_time, same(session, scores, result),
-                         cpu))
+            rows.append(
+                (event["event"], report.triggered, report.seconds, scratch_time, same(session, scores, result), cpu)
+            )
     rows = rows[:MIXED_EVENTS]
 
     objects = len(session.scene.objects)
@@ -166,13 +194,21 @@ def main() -> None:
     untriggered = [r for r in rows if not r[1]]
     element = [r for r in triggered if r[0] in ("add", "remove")]
     identical = sum(r[4] for r in rows)
-    print(f"grew the scene from {len(problem.objects)} to {TARGET_OBJECTS} objects with {grown} add events"
-          f" in {grow_time:.2f} s ({grown / grow_time:,.0f} events/s)")
-    print(f"mixed events: {len(rows)} at {objects} objects at the end; kept {len(session.kept)};"
-          f" {handled:.3f} s in the session = {len(rows) / handled:,.0f} events/s")
+    print(
+        f"grew the scene from {len(problem.objects)} to {TARGET_OBJECTS} objects with {grown} add events"
+        f" in {grow_time:.2f} s ({grown / grow_time:,.0f} events/s)"
+    )
+    print(
+        f"mixed events: {len(rows)} at {objects} objects at the end; kept {len(session.kept)};"
+        f" {handled:.3f} s in the session = {len(rows) / handled:,.0f} events/s"
+    )
     kinds = sorted({r[0] for r in rows})
-    print("events by kind: " + ", ".join(f"{k} {sum(r[0] == k for r in rows)}"
-                                         f" ({sum(r[0] == k and r[1] for r in rows)} triggered)" for k in kinds))
+    print(
+        "events by kind: "
+        + ", ".join(
+            f"{k} {sum(r[0] == k for r in rows)} ({sum(r[0] == k and r[1] for r in rows)} triggered)" for k in kinds
+        )
+    )
     print(f"triggered: {len(triggered)} of {len(rows)} ({len(triggered) / len(rows):.1%})")
     print("")
     print(f"{'':34}{'median':>10} {'p95':>10} {'max':>10}")
@@ -190,15 +226,21 @@ def main() -> None:
     ratio_p95 = percentile([r[2] for r in element], 0.95) / percentile([r[3] for r in element], 0.95)
     print("")
     worst_untriggered = max(r[2] for r in untriggered)
-    print(f"untriggered under 1 ms: {sum(r[2] < 0.001 for r in untriggered)} of {len(untriggered)}"
-          f" (p95 {ms(percentile([r[2] for r in untriggered], 0.95)).strip()}, max {ms(worst_untriggered).strip()})"
-          f"  target: every one under 1 ms")
-    print(f"element event, incremental / from scratch: {ratio_median:.3f} (median), {ratio_p95:.3f} (p95)"
-          f"  target: <= 0.1")
+    print(
+        f"untriggered under 1 ms: {sum(r[2] < 0.001 for r in untriggered)} of {len(untriggered)}"
+        f" (p95 {ms(percentile([r[2] for r in untriggered], 0.95)).strip()}, max {ms(worst_untriggered).strip()})"
+        f"  target: every one under 1 ms"
+    )
+    print(
+        f"element event, incremental / from scratch: {ratio_median:.3f} (median), {ratio_p95:.3f} (p95)  target: <= 0.1"
+    )
     cpu_untriggered = [r[5] for r in untriggered]
-    print(f"untriggered, CPU time of the process (no preemption): median {ms(statistics.median(cpu_untriggered)).strip()},"
-          f" p95 {ms(percentile(cpu_untriggered, 0.95)).strip()}, max {ms(max(cpu_untriggered)).strip()};"
-          f" load average {os.getloadavg()[0]:.2f} on {os.cpu_count()} CPUs")
+    print(
+        "untriggered, CPU time of the process (no preemption):"
+        f" median {ms(statistics.median(cpu_untriggered)).strip()},"
+        f" p95 {ms(percentile(cpu_untriggered, 0.95)).strip()}, max {ms(max(cpu_untriggered)).strip()};"
+        f" load average {os.getloadavg()[0]:.2f} on {os.cpu_count()} CPUs"
+    )
     print(f"identical to from scratch: {identical} of {len(rows)} states")
 
 

@@ -29,6 +29,7 @@ def main() -> None:
     domain, problem = load_task(DOMAIN, HERE / "scene.pddl")
     planner = make_planner("fast-downward", "lama-first", check=True)
     with tempfile.TemporaryDirectory() as scratch:
+
         def run_planner(text: str, limit):
             path = Path(scratch) / "problem.pddl"
             path.write_text(text)
@@ -36,8 +37,15 @@ def main() -> None:
 
         # The context of the scene: a conference break.  Who is served, and what they want, comes as events.
         options = ScoringOptions(objective="drink-at-break")
-        session = Session(domain, problem, options, domain_path=str(DOMAIN), plan_options=PlanOptions(timeout=60),
-                          run_planner=run_planner, plan_in_loop=True)
+        session = Session(
+            domain,
+            problem,
+            options,
+            domain_path=str(DOMAIN),
+            plan_options=PlanOptions(timeout=60),
+            run_planner=run_planner,
+            plan_in_loop=True,
+        )
         show = session.scene.display.get
         for line in (HERE / "events.jsonl").read_text().splitlines():
             event = json.loads(line)
@@ -45,7 +53,9 @@ def main() -> None:
             if "fact" in event:
                 what = "(" + " ".join(event["fact"]) + ")"
             else:
-                what = " ".join(str(v) for k, v in event.items() if k not in ("event", "facts", "note") and v is not None)
+                what = " ".join(
+                    str(v) for k, v in event.items() if k not in ("event", "facts", "note") and v is not None
+                )
             print(f"{report.seq:>2} {report.event:<6} {what:<24} ", end="")
             if not report.triggered and report.plan is None:
                 print("-  nothing triggered" + (f" (error: {report.error})" if report.error else ""))
@@ -60,8 +70,10 @@ def main() -> None:
                 kept = sorted(show(n, n) for n in report.determination.kept)
                 print(f"{'':34}kept {len(kept)} of {len(session.scene.objects)}: {', '.join(kept)}")
                 if report.added or report.dropped:
-                    print(f"{'':34}added: {', '.join(show(n, n) for n in report.added) or '-'}"
-                          f"   dropped: {', '.join(show(n, n) for n in report.dropped) or '-'}")
+                    print(
+                        f"{'':34}added: {', '.join(show(n, n) for n in report.added) or '-'}"
+                        f"   dropped: {', '.join(show(n, n) for n in report.dropped) or '-'}"
+                    )
             if report.ask is not None:
                 print(f"{'':34}ask: {report.ask.question}")
             if report.plan is not None:

@@ -38,7 +38,9 @@ EXIT_CODE_DESCRIPTIONS: dict[ExitCode, str] = {
     ExitCode.SUCCESS: "success: a plan was found and validated on the original problem (or the command finished)",
     ExitCode.COMMAND_LINE: "malformed command line (unknown option, missing argument)",
     ExitCode.UNSOLVABLE: "the original problem is unsolvable",
-    ExitCode.NO_VALID_PLAN: "no valid plan: search ended without one (incomplete search, invalid plans, or --no-relax failure)",
+    ExitCode.NO_VALID_PLAN: (
+        "no valid plan: search ended without one (incomplete search, invalid plans, or --no-relax failure)"
+    ),
     ExitCode.INSUFFICIENT_CUES: "insufficient cues: relevance cannot be decided; give --task, --objective or --human",
     ExitCode.OUT_OF_TIME: "out of time",
     ExitCode.OUT_OF_MEMORY: "out of memory",

@@ -7,8 +7,8 @@ import os
 import stat
 import sys
 import tempfile
+from collections.abc import Iterable
 from pathlib import Path
-from typing import Iterable
 
 from relevance_plan.errors import InputFileError, UsageError
 from relevance_plan.pddl.reader import Domain, Problem, read_domain, read_problem
@@ -144,8 +144,9 @@ def check_input_file(path: str | os.PathLike, what: str = "file") -> None:
         raise InputFileError(f"cannot read {what}: permission denied", path=str(path))
 
 
-def check_output_file(path: str | os.PathLike, what: str = "output file",
-                      inputs: Iterable[str | os.PathLike | None] = ()) -> None:
+def check_output_file(
+    path: str | os.PathLike, what: str = "output file", inputs: Iterable[str | os.PathLike | None] = ()
+) -> None:
     """Fail before any work if ``path`` cannot be written or would overwrite an input.
 
     ``-`` (standard output) is always fine.  A file without any write

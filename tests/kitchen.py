@@ -19,16 +19,28 @@ COFFEE_OBJECTS = {
 def coffee_problem(extra_plates: int = 0, plate_on_cup: bool = True, name: str = "coffee-tiny") -> str:
     objects = {k: list(v) for k, v in COFFEE_OBJECTS.items()}
     objects["plate"] += [f"side_plate_{i}" for i in range(1, extra_plates + 1)]
-    init = [("robot-at", "counter_1"), ("hand-empty",), ("accessible", "counter_1"), ("accessible", "table_1"),
-            ("human-at", "alice", "table_1"), ("empty", "plastic_cup_1"), ("empty", "paper_cup_1")]
+    init = [
+        ("robot-at", "counter_1"),
+        ("hand-empty",),
+        ("accessible", "counter_1"),
+        ("accessible", "table_1"),
+        ("human-at", "alice", "table_1"),
+        ("empty", "plastic_cup_1"),
+        ("empty", "paper_cup_1"),
+    ]
 
     def stand(item, place):
         init.extend([("at", item, place), ("on-base", item), ("clear", item)])
 
     init.extend([("at", "plastic_cup_1", "counter_1"), ("on-base", "plastic_cup_1")])
     if plate_on_cup:
-        init.extend([("at", "dinner_plate_1", "counter_1"), ("on", "dinner_plate_1", "plastic_cup_1"),
-                     ("clear", "dinner_plate_1")])
+        init.extend(
+            [
+                ("at", "dinner_plate_1", "counter_1"),
+                ("on", "dinner_plate_1", "plastic_cup_1"),
+                ("clear", "dinner_plate_1"),
+            ]
+        )
     else:
         init.append(("clear", "plastic_cup_1"))
         stand("dinner_plate_1", "counter_1")

@@ -16,16 +16,16 @@ from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
+from test_report import make_row
 
-from relevance_plan.generators.generate import generate_suite
-from relevance_plan.planning import runner
 from relevance_plan.batch.jobs import build_jobs, compare, connect_scheduler, run_job
+from relevance_plan.batch.store import SCHEMA_VERSION, ResultStore
 from relevance_plan.errors import InputFileError, SchedulerError, StoreError, UsageError
 from relevance_plan.exitcodes import ExitCode
+from relevance_plan.generators.generate import generate_suite
+from relevance_plan.planning import runner
 from relevance_plan.planning.loop import PlanOptions
 from relevance_plan.relevance.prune import Thresholds
-from relevance_plan.batch.store import SCHEMA_VERSION, ResultStore
-from test_report import make_row
 
 REPO = Path(__file__).resolve().parent.parent
 ALL_METHODS = "relevance,pure,random,oracle"
@@ -79,8 +79,9 @@ def foreign_store(path: Path, schema_version: int) -> Path:
     """A SQLite file laid out like a store of another schema version."""
     connection = sqlite3.connect(path)
     connection.execute("CREATE TABLE meta (key TEXT PRIMARY KEY, value TEXT NOT NULL)")
-    connection.execute("INSERT INTO meta VALUES ('schema_version', ?), ('tool_version', '9.9.9')",
-                        (str(schema_version),))
+    connection.execute(
+        "INSERT INTO meta VALUES ('schema_version', ?), ('tool_version', '9.9.9')", (str(schema_version),)
+    )
     connection.execute("CREATE TABLE results (problem_hash TEXT)")
     connection.commit()
     connection.close()
@@ -275,8 +276,9 @@ def test_planner_crash_is_recorded_with_its_exit_code(suite, tmp_path, monkeypat
     rows = read_store(store)
     assert len(rows) == 4
     assert {(r["status"], r["exit_code"]) for r in rows} == {("planner-error", code)}
-    assert all(r["planner_version"].endswith(tuple("0123456789abcdef")) and "+custom-" in r["planner_version"]
-               for r in rows)
+    assert all(
+        r["planner_version"].endswith(tuple("0123456789abcdef")) and "+custom-" in r["planner_version"] for r in rows
+    )
 
 
 def test_missing_planner_stops_the_batch_and_stores_nothing(suite, tmp_path, monkeypatch):
@@ -304,8 +306,9 @@ def test_run_job_returns_a_complete_row(suite):
 
 def start_compare(suite, store, *extra, env=None):
     command = [sys.executable, "-m", cli_module(), "compare", str(suite), "--store", str(store), *map(str, extra)]
-    return subprocess.Popen(command, cwd=REPO, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                            env={**os.environ, **(env or {})})
+    return subprocess.Popen(
+        command, cwd=REPO, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env={**os.environ, **(env or {})}
+    )
 
 
 def test_resume_after_kill_9_loses_nothing_and_repeats_nothing(tmp_path):
@@ -329,8 +332,13 @@ def test_resume_after_kill_9_loses_nothing_and_repeats_nothing(tmp_path):
     survivors = read_store(store)
     assert 2 <= len(survivors) < 12, "the first run should have been killed half-way"
 
-    finished = subprocess.run([sys.executable, "-m", cli_module(), "compare", str(suite), "--store", str(store),
-                               *map(str, arguments)], cwd=REPO, capture_output=True, text=True, timeout=300)
+    finished = subprocess.run(
+        [sys.executable, "-m", cli_module(), "compare", str(suite), "--store", str(store), *map(str, arguments)],
+        cwd=REPO,
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
     assert finished.returncode == 0, finished.stderr
     done = len(survivors)
     assert f"12 jobs: {done} already stored, {12 - done} run" in finished.stdout
@@ -344,8 +352,13 @@ def test_resume_after_kill_9_loses_nothing_and_repeats_nothing(tmp_path):
     # The rows committed before the kill are untouched: same rowid, same finish time, same result.
     assert rows[:done] == survivors
 
-    third = subprocess.run([sys.executable, "-m", cli_module(), "compare", str(suite), "--store", str(store),
-                            *map(str, arguments)], cwd=REPO, capture_output=True, text=True, timeout=120)
+    third = subprocess.run(
+        [sys.executable, "-m", cli_module(), "compare", str(suite), "--store", str(store), *map(str, arguments)],
+        cwd=REPO,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert "12 jobs: 12 already stored, 0 run" in third.stdout
     assert read_store(store) == rows
 
@@ -356,13 +369,16 @@ def test_ctrl_c_kills_running_planners_and_keeps_finished_rows(tmp_path, signum)
     markers = tmp_path / "markers"
     markers.mkdir()
     # Problem 001 crashes at once (a stored row); 002 hangs until killed; 003 must never start.
-    planner = fake_planner(tmp_path, """
+    planner = fake_planner(
+        tmp_path,
+        """
         name = os.path.basename(sys.argv[-1])
         open(os.path.join(os.environ["FAKE_PLANNER_MARKERS"], f"{name}.{os.getpid()}"), "w").close()
         if "002" in name:
             time.sleep(600)
         sys.exit(35)
-    """)
+    """,
+    )
     store = tmp_path / "results.sqlite"
     env = {runner.FAST_DOWNWARD_ENV: str(planner), "FAKE_PLANNER_MARKERS": str(markers)}
     process = start_compare(suite, store, "--methods", "pure", "--timeout", 300, "--jobs", 1, env=env)
@@ -388,7 +404,9 @@ def test_ctrl_c_kills_running_planners_and_keeps_finished_rows(tmp_path, signum)
     assert process_gone(planner_pid), "the planner survived Ctrl-C"
     assert not any(markers.glob("coffee-simple-003.pddl.*"))
     rows = read_store(store)
-    assert [(r["problem"], r["status"], r["exit_code"]) for r in rows] == [("coffee-simple-001.pddl", "planner-error", 35)]
+    assert [(r["problem"], r["status"], r["exit_code"]) for r in rows] == [
+        ("coffee-simple-001.pddl", "planner-error", 35)
+    ]
 
 
 # --------------------------------------------------------------------------- Dask
@@ -407,26 +425,61 @@ def test_dask_cluster_runs_the_jobs_into_the_local_store(tmp_path):
     address = f"tcp://127.0.0.1:{port}"
     processes = []
     try:
-        processes.append(subprocess.Popen(
-            [sys.executable, "-m", "dask", "scheduler", "--host", "127.0.0.1", "--port", str(port), "--no-dashboard"],
-            cwd=tmp_path, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL))
-        processes.append(subprocess.Popen(
-            [sys.executable, "-m", "dask", "worker", address, "--nworkers", "1", "--nthreads", "2", "--no-dashboard",
-             "--local-directory", str(tmp_path / "dask-worker")],
-            cwd=tmp_path, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL))
+        processes.append(
+            subprocess.Popen(
+                [
+                    sys.executable,
+                    "-m",
+                    "dask",
+                    "scheduler",
+                    "--host",
+                    "127.0.0.1",
+                    "--port",
+                    str(port),
+                    "--no-dashboard",
+                ],
+                cwd=tmp_path,
+                stdout=subprocess.DEVNULL,
+                stderr=subprocess.DEVNULL,
+            )
+        )
+        processes.append(
+            subprocess.Popen(
+                [
+                    sys.executable,
+                    "-m",
+                    "dask",
+                    "worker",
+                    address,
+                    "--nworkers",
+                    "1",
+                    "--nthreads",
+                    "2",
+                    "--no-dashboard",
+                    "--local-directory",
+                    str(tmp_path / "dask-worker"),
+                ],
+                cwd=tmp_path,
+                stdout=subprocess.DEVNULL,
+                stderr=subprocess.DEVNULL,
+            )
+        )
         client = connect_scheduler(address, timeout=30)
         try:
             client.wait_for_workers(1, timeout=60)
         finally:
             client.close()
         store = tmp_path / "results.sqlite"
-        summary = compare([suite], ALL_METHODS, PlanOptions(timeout=60), jobs=1, store_path=store, scheduler=address,
-                          progress=False)
+        summary = compare(
+            [suite], ALL_METHODS, PlanOptions(timeout=60), jobs=1, store_path=store, scheduler=address, progress=False
+        )
         assert (summary.total, summary.ran, summary.failed) == (4, 4, 0)
         rows = read_store(store)
         assert sorted(r["method"] for r in rows) == sorted(ALL_METHODS.split(","))
         assert {r["status"] for r in rows} == {"solved"}
-        again = compare([suite], ALL_METHODS, PlanOptions(timeout=60), jobs=1, store_path=store, scheduler=address, progress=False)
+        again = compare(
+            [suite], ALL_METHODS, PlanOptions(timeout=60), jobs=1, store_path=store, scheduler=address, progress=False
+        )
         assert (again.already_stored, again.ran) == (4, 0)
     finally:
         for process in reversed(processes):  # the worker first, then the scheduler
@@ -441,8 +494,19 @@ def test_dask_cluster_runs_the_jobs_into_the_local_store(tmp_path):
 def test_unreachable_scheduler_is_one_line_and_leaves_the_store_alone(suite, populated_store):
     before = snapshot(populated_store)
     closed = free_port()
-    result = invoke("compare", suite, "--methods", "pure", "--store", populated_store,
-                    "--scheduler", f"tcp://127.0.0.1:{closed}", "--scheduler-timeout", 1, "-q")
+    result = invoke(
+        "compare",
+        suite,
+        "--methods",
+        "pure",
+        "--store",
+        populated_store,
+        "--scheduler",
+        f"tcp://127.0.0.1:{closed}",
+        "--scheduler-timeout",
+        1,
+        "-q",
+    )
     assert_one_line_error(result, ExitCode.SCHEDULER, f"cannot reach the Dask scheduler at tcp://127.0.0.1:{closed}")
     assert snapshot(populated_store) == before
 
@@ -482,8 +546,9 @@ def test_cli_incompatible_or_foreign_store(tmp_path, suite):
 
 def test_cli_compare_then_report(suite, tmp_path):
     store = tmp_path / "r.sqlite"
-    result = invoke("compare", suite, "--methods", "pure,oracle", "--store", store, "--timeout", 60, "--jobs", 2,
-                    "--seeds", "0,1")
+    result = invoke(
+        "compare", suite, "--methods", "pure,oracle", "--store", store, "--timeout", 60, "--jobs", 2, "--seeds", "0,1"
+    )
     assert result.exit_code == 0, result.output
     assert "8 jobs: 0 already stored, 8 run (8 solved)" in result.stdout
     assert "compare (8 jobs): 8/8 done, 0 failed" in result.stderr  # the final progress line

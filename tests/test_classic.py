@@ -50,20 +50,29 @@ def test_types_are_inferred_from_static_unary_predicates():
     assert params["fly-airplane"]["?from"] == "airport+location"
     # role analysis now works as on the typed domain: a truck can serve the goal
     assert "truck" in task.goal_analysis.role_depth
-    typed = classic_task("logistics-typed", LOGISTICS_PROBLEM.replace(
-        "(:objects pkg1 pkg2 pkg3 truck-a truck-b plane apt-a apt-b post-a post-b city-a city-b)",
-        "(:objects pkg1 pkg2 pkg3 - package truck-a truck-b - truck plane - airplane apt-a apt-b - airport"
-        " post-a post-b - location city-a city-b - city)").replace("(:domain logistics)", "(:domain logistics-typed)")
+    typed = classic_task(
+        "logistics-typed",
+        LOGISTICS_PROBLEM.replace(
+            "(:objects pkg1 pkg2 pkg3 truck-a truck-b plane apt-a apt-b post-a post-b city-a city-b)",
+            "(:objects pkg1 pkg2 pkg3 - package truck-a truck-b - truck plane - airplane apt-a apt-b - airport"
+            " post-a post-b - location city-a city-b - city)",
+        )
+        .replace("(:domain logistics)", "(:domain logistics-typed)")
         .replace("(package pkg1) (package pkg2) (package pkg3) (truck truck-a) (truck truck-b) (airplane plane)", "")
-        .replace("(location apt-a) (location apt-b) (location post-a) (location post-b) (airport apt-a) (airport apt-b)", "")
-        .replace("(city city-a) (city city-b)", ""))
+        .replace(
+            "(location apt-a) (location apt-b) (location post-a) (location post-b) (airport apt-a) (airport apt-b)", ""
+        )
+        .replace("(city city-a) (city city-b)", ""),
+    )
     assert not typed.typing.inferred
     assert set(typed.goal_analysis.role_depth) == set(task.goal_analysis.role_depth)
 
 
 def test_a_domain_without_static_classes_is_left_untyped():
-    text = "(define (problem p) (:domain blocksworld) (:objects a b c) (:init (handempty) (ontable a) (ontable b)" \
-           " (on c a) (clear c) (clear b)) (:goal (on a b)))"
+    text = (
+        "(define (problem p) (:domain blocksworld) (:objects a b c) (:init (handempty) (ontable a) (ontable b)"
+        " (on c a) (clear c) (clear b)) (:goal (on a b)))"
+    )
     task = classic_task("blocksworld", text)
     assert not task.typing.inferred
     result = prune_with_scores(task, goal_scores(task))
@@ -164,8 +173,11 @@ def test_generator_is_seeded_and_typed_variants_share_the_objects():
 
 def test_cli_generates_a_classic_suite(tmp_path):
     out = tmp_path / "grid"
-    result = CliRunner().invoke(main, ["generate", "grid", "--count", "2", "--seed", "3", "--size", "60",
-                                       "--out", str(out)], catch_exceptions=False)
+    result = CliRunner().invoke(
+        main,
+        ["generate", "grid", "--count", "2", "--seed", "3", "--size", "60", "--out", str(out)],
+        catch_exceptions=False,
+    )
     assert result.exit_code == 0, result.output
     manifest = json.loads((out / "suite.json").read_text())
     assert manifest["world"] == "grid" and len(manifest["problems"]) == 2

@@ -7,11 +7,10 @@ from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
+from kitchen import coffee_problem
 
 from relevance_plan.cli import main
 from relevance_plan.exitcodes import ExitCode
-
-from kitchen import coffee_problem
 
 REPO = Path(__file__).resolve().parent.parent
 COFFEE_DOMAIN = REPO / "domains" / "coffee" / "domain.pddl"
@@ -84,8 +83,18 @@ def test_plan_json_fields_and_plan_file(runner, problem, tmp_path):
     result = invoke(runner, "plan", COFFEE_DOMAIN, problem, "--plan-file", plan_file, "--json")
     assert result.exit_code == 0, result.output
     data = json.loads(result.output)
-    for key in ("status", "valid", "plan_length", "wall_time", "relevance_time", "planner_time", "objects_total",
-                "objects_kept", "attempts", "first_attempt_status"):
+    for key in (
+        "status",
+        "valid",
+        "plan_length",
+        "wall_time",
+        "relevance_time",
+        "planner_time",
+        "objects_total",
+        "objects_kept",
+        "attempts",
+        "first_attempt_status",
+    ):
         assert key in data
     assert data["status"] == "solved" and data["valid"] is True
     lines = [l for l in plan_file.read_text().splitlines() if not l.startswith(";")]
@@ -117,19 +126,44 @@ def _bad_probability(tmp_path):
     [
         (lambda t, p: ["score", COFFEE_DOMAIN, t / "missing.pddl"], ExitCode.INPUT_FILE, "missing.pddl"),
         (lambda t, p: ["score", t / "nodomain.pddl", p], ExitCode.INPUT_FILE, "nodomain.pddl"),
-        (lambda t, p: ["score", COFFEE_DOMAIN, _write(t, "broken.pddl", p.read_text().replace("(hand-empty)", "(hand-empty"))],
-         ExitCode.PDDL_SYNTAX, "broken.pddl"),
-        (lambda t, p: ["score", COFFEE_DOMAIN, _write(t, "other.pddl", p.read_text().replace("(:domain coffee)", "(:domain cereal)"))],
-         ExitCode.DOMAIN_MISMATCH, "other.pddl:2"),
+        (
+            lambda t, p: [
+                "score",
+                COFFEE_DOMAIN,
+                _write(t, "broken.pddl", p.read_text().replace("(hand-empty)", "(hand-empty")),
+            ],
+            ExitCode.PDDL_SYNTAX,
+            "broken.pddl",
+        ),
+        (
+            lambda t, p: [
+                "score",
+                COFFEE_DOMAIN,
+                _write(t, "other.pddl", p.read_text().replace("(:domain coffee)", "(:domain cereal)")),
+            ],
+            ExitCode.DOMAIN_MISMATCH,
+            "other.pddl:2",
+        ),
         (lambda t, p: ["score", COFFEE_DOMAIN, p, "--model", _bad_yaml(t)], ExitCode.MODEL, "bad.yaml:"),
         (lambda t, p: ["score", COFFEE_DOMAIN, p, "--model", _bad_probability(t)], ExitCode.MODEL, "outside [0, 1]"),
         (lambda t, p: ["score", COFFEE_DOMAIN, p, "--tau-class", "1.5"], ExitCode.USAGE, "--tau-class"),
         (lambda t, p: ["score", COFFEE_DOMAIN, p, "--human", "nobody"], ExitCode.MODEL, "unknown human 'nobody'"),
         (lambda t, p: ["score", COFFEE_DOMAIN, p, "--objective", "lunch"], ExitCode.MODEL, "unknown objective 'lunch'"),
-        (lambda t, p: ["plan", COFFEE_DOMAIN, p, "--timeout", "-3", "--plan-file", t / "x.plan"], ExitCode.USAGE, "--timeout"),
-        (lambda t, p: ["plan", COFFEE_DOMAIN, p, "--memory-limit", "2", "--plan-file", t / "x.plan"], ExitCode.USAGE, "--memory-limit"),
-        (lambda t, p: ["prune", COFFEE_DOMAIN, p, "-o", t / "x.pddl", "--objective", "drink-at-break"],
-         ExitCode.INSUFFICIENT_CUES, "objective ambiguous"),
+        (
+            lambda t, p: ["plan", COFFEE_DOMAIN, p, "--timeout", "-3", "--plan-file", t / "x.plan"],
+            ExitCode.USAGE,
+            "--timeout",
+        ),
+        (
+            lambda t, p: ["plan", COFFEE_DOMAIN, p, "--memory-limit", "2", "--plan-file", t / "x.plan"],
+            ExitCode.USAGE,
+            "--memory-limit",
+        ),
+        (
+            lambda t, p: ["prune", COFFEE_DOMAIN, p, "-o", t / "x.pddl", "--objective", "drink-at-break"],
+            ExitCode.INSUFFICIENT_CUES,
+            "objective ambiguous",
+        ),
         (lambda t, p: ["prune", COFFEE_DOMAIN, p, "-o", t / "nodir" / "x.pddl"], ExitCode.INPUT_FILE, "nodir"),
     ],
 )
@@ -151,8 +185,10 @@ def _write(directory, name, text):
 
 
 def test_insufficient_cues_exit_code_from_plan(runner, problem, tmp_path):
-    result = runner.invoke(main, ["plan", str(COFFEE_DOMAIN), str(problem), "--objective", "drink-at-break",
-                                  "--plan-file", str(tmp_path / "p")])
+    result = runner.invoke(
+        main,
+        ["plan", str(COFFEE_DOMAIN), str(problem), "--objective", "drink-at-break", "--plan-file", str(tmp_path / "p")],
+    )
     assert result.exit_code == ExitCode.INSUFFICIENT_CUES
     assert not (tmp_path / "p").exists()
 
@@ -160,7 +196,8 @@ def test_insufficient_cues_exit_code_from_plan(runner, problem, tmp_path):
 def test_no_traceback_from_the_real_command(tmp_path, problem):
     completed = subprocess.run(
         [sys.executable, "-m", "relevance_plan", "score", str(COFFEE_DOMAIN), str(tmp_path / "nope.pddl")],
-        capture_output=True, text=True,
+        capture_output=True,
+        text=True,
     )
     assert completed.returncode == ExitCode.INPUT_FILE
     assert completed.stderr.strip().count("\n") == 0 and "Traceback" not in completed.stderr
@@ -173,8 +210,20 @@ def test_exit_code_table_is_printed(runner):
 
 
 def test_plan_bad_planner_config_and_malformed_problem(runner, problem, tmp_path):
-    result = runner.invoke(main, ["plan", str(COFFEE_DOMAIN), str(problem), "--planner-config", "no-such-alias",
-                                  "--method", "pure", "--plan-file", str(tmp_path / "p")])
+    result = runner.invoke(
+        main,
+        [
+            "plan",
+            str(COFFEE_DOMAIN),
+            str(problem),
+            "--planner-config",
+            "no-such-alias",
+            "--method",
+            "pure",
+            "--plan-file",
+            str(tmp_path / "p"),
+        ],
+    )
     assert result.exit_code == ExitCode.USAGE
     broken = _write(tmp_path, "broken.pddl", problem.read_text().replace("(:init", "(:init (at)"))
     result = runner.invoke(main, ["plan", str(COFFEE_DOMAIN), str(broken), "--plan-file", str(tmp_path / "p")])

@@ -24,6 +24,7 @@ ROOT = Path(__file__).resolve().parent.parent
 if str(ROOT) not in sys.path:  # the repository is not necessarily installed
     sys.path.insert(0, str(ROOT))
 
+from relevance_plan.errors import InputFileError, UsageError  # noqa: E402
 from relevance_plan.generators import (  # noqa: E402
     CATALOG,
     CONSTRAINT_COUNTS,
@@ -36,7 +37,6 @@ from relevance_plan.generators import (  # noqa: E402
     write_base_scenes,
 )
 from relevance_plan.generators.problem import blockers, goal_objects, relevant_objects  # noqa: E402
-from relevance_plan.errors import InputFileError, UsageError  # noqa: E402
 
 DOMAINS = ROOT / "domains"
 PROBLEMS = ROOT / "problems"
@@ -46,13 +46,23 @@ NAME = re.compile(r"^[a-z]+(_[a-z]+)*_[1-9][0-9]*$")
 
 # --- helpers -----------------------------------------------------------------
 
+
 def fast_downward(domain: Path, problem: Path, workdir: Path, timeout: float = 300) -> Path | None:
     """Run ``lama-first`` in ``workdir``; return the plan file, or None if no plan."""
     import up_fast_downward
 
     driver = Path(up_fast_downward.__file__).parent / "downward" / "fast-downward.py"
     workdir.mkdir(parents=True, exist_ok=True)
-    command = [sys.executable, str(driver), "--plan-file", "sas_plan", "--alias", "lama-first", str(domain), str(problem)]
+    command = [
+        sys.executable,
+        str(driver),
+        "--plan-file",
+        "sas_plan",
+        "--alias",
+        "lama-first",
+        str(domain),
+        str(problem),
+    ]
     process = subprocess.Popen(
         command, cwd=workdir, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, start_new_session=True
     )
@@ -182,9 +192,36 @@ def check_sidecar(problem_text: str, sidecar: dict, scene) -> None:
 # --- catalog -----------------------------------------------------------------
 
 FORBIDDEN_TOKENS = {
-    "cup", "cups", "mug", "bowl", "spoon", "teaspoon", "tablespoon", "milk", "creamer", "cream",
-    "coffee", "espresso", "cereal", "granola", "sugar", "honey", "sweetener", "napkin", "napkins",
-    "stir", "stirrer", "stick", "tea", "teapot", "ice", "juice", "water", "soda", "fruit", "straw",
+    "cup",
+    "cups",
+    "mug",
+    "bowl",
+    "spoon",
+    "teaspoon",
+    "tablespoon",
+    "milk",
+    "creamer",
+    "cream",
+    "coffee",
+    "espresso",
+    "cereal",
+    "granola",
+    "sugar",
+    "honey",
+    "sweetener",
+    "napkin",
+    "napkins",
+    "stir",
+    "stirrer",
+    "stick",
+    "tea",
+    "teapot",
+    "ice",
+    "juice",
+    "water",
+    "soda",
+    "fruit",
+    "straw",
 }
 
 
@@ -197,13 +234,12 @@ def test_catalog_has_200_distinct_plausible_kinds():
         assert type_name in KITCHENWARE_TYPES and type_name in both, (kind, type_name)
         if kind != "tea_towel":  # a dish cloth, named like tea on purpose
             assert not FORBIDDEN_TOKENS & set(kind.split("_")), kind
-    task_kinds = {
-        kind_of(i.name) for scene in SCENES.values() for i in scene.items if scene.is_task_item(i.name)
-    }
+    task_kinds = {kind_of(i.name) for scene in SCENES.values() for i in scene.items if scene.is_task_item(i.name)}
     assert not task_kinds & set(kinds)
 
 
 # --- base scenes ---------------------------------------------------------------
+
 
 def test_base_scene_sizes_and_dependencies():
     sizes = {"coffee-simple": 19, "coffee-hard": 36, "cereal-simple": 18, "cereal-hard": 26}
@@ -224,9 +260,15 @@ def test_base_scene_sizes_and_dependencies():
 def test_coffee_scenes_contain_the_papers_kinds():
     kinds = {kind_of(i.name): i.type for i in SCENES["coffee-simple"].items}
     for kind, type_name in [
-        ("cold_brew_coffee", "coffee-source"), ("creamer", "whitener"), ("whole_milk", "whitener"),
-        ("reduced_milk", "whitener"), ("plastic_cup", "cup"), ("paper_cup", "cup"),
-        ("stir_stick", "stirrer"), ("napkin", "napkin"), ("ice_bucket", "ice-holder"),
+        ("cold_brew_coffee", "coffee-source"),
+        ("creamer", "whitener"),
+        ("whole_milk", "whitener"),
+        ("reduced_milk", "whitener"),
+        ("plastic_cup", "cup"),
+        ("paper_cup", "cup"),
+        ("stir_stick", "stirrer"),
+        ("napkin", "napkin"),
+        ("ice_bucket", "ice-holder"),
     ]:
         assert kinds[kind] == type_name
     hard = {kind_of(i.name): i.type for i in SCENES["coffee-hard"].items}
@@ -251,6 +293,7 @@ def test_committed_base_scenes_are_current(tmp_path):
 
 
 # --- generated problems ----------------------------------------------------------
+
 
 @pytest.mark.parametrize("world,difficulty", SUITES)
 def test_generated_sizes_and_invariants(world, difficulty):
@@ -287,8 +330,11 @@ def test_same_arguments_same_problem_across_processes():
     outputs = []
     for hash_seed in ("1", "2"):
         env = dict(os.environ, PYTHONHASHSEED=hash_seed)
-        outputs.append(subprocess.run([sys.executable, "-c", script, str(ROOT)], env=env, capture_output=True,
-                                      text=True, check=True).stdout)
+        outputs.append(
+            subprocess.run(
+                [sys.executable, "-c", script, str(ROOT)], env=env, capture_output=True, text=True, check=True
+            ).stdout
+        )
     problem = generate_problem("coffee", "hard", 5, 2)
     assert outputs[0] == outputs[1] == problem.pddl_text + problem.sidecar_text
 
@@ -309,6 +355,7 @@ def test_distractor_override_scales_to_2000(tmp_path):
 
 
 # --- suites ------------------------------------------------------------------------
+
 
 def read_tree(directory: Path) -> dict[str, bytes]:
     return {p.name: p.read_bytes() for p in sorted(directory.iterdir())}
@@ -382,8 +429,9 @@ def test_bad_arguments_raise_usage_error_and_write_nothing(tmp_path, kwargs):
     assert list(tmp_path.iterdir()) == []
     if "count" not in kwargs:  # the same checks guard the pure function
         with pytest.raises(UsageError):
-            generate_problem(arguments["world"], arguments["difficulty"], arguments["seed"], 1,
-                             arguments.get("distractors"))
+            generate_problem(
+                arguments["world"], arguments["difficulty"], arguments["seed"], 1, arguments.get("distractors")
+            )
 
 
 def test_unwritable_directory_raises_input_file_error(tmp_path):
@@ -399,6 +447,7 @@ def test_unwritable_directory_raises_input_file_error(tmp_path):
 
 
 # --- planning ----------------------------------------------------------------------
+
 
 def _planning_cases():
     cases = [pytest.param(name, None, None, id=name) for name in SCENES]

@@ -14,11 +14,10 @@ from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
+from kitchen import coffee_problem
 
 from relevance_plan.cli import main
 from relevance_plan.exitcodes import ExitCode
-
-from kitchen import coffee_problem
 
 REPO = Path(__file__).resolve().parent.parent
 COFFEE = REPO / "domains" / "coffee"
@@ -67,8 +66,9 @@ def hostile_problems() -> dict[str, bytes]:
         "domain-as-problem": (COFFEE / "domain.pddl").read_bytes(),
         "unknown-object-in-goal": _replace_goal(base, "(coffee-served nobody)").encode(),
         "numeric-goal": _replace_goal(base, "(> (total-cost) 3)").encode(),
-        "many-objects": base.replace("(:objects", "(:objects " + " ".join(f"x{i} - plate" for i in range(3000)))
-        .encode(),
+        "many-objects": base.replace(
+            "(:objects", "(:objects " + " ".join(f"x{i} - plate" for i in range(3000))
+        ).encode(),
         "crlf": base.replace("\n", "\r\n").encode(),
         "tabs-and-formfeeds": base.replace(" ", "\t\f ").encode(),
     }
@@ -243,7 +243,7 @@ def test_hostile_suites_through_sweep_compare_and_report(workspace):
     problems = hostile_problems()
     for name in ("deep-and", "binary", "bom", "non-ascii-name", "empty", "huge-object-name"):
         _write(suite, f"{name}.pddl", problems[name])
-    for index, (name, data) in enumerate(hostile_sidecars().items()):
+    for index, data in enumerate(hostile_sidecars().values()):
         _write(suite, f"good-{index}.pddl", problem.read_bytes())
         _write(suite, f"good-{index}.json", data)
     store = out / "results.sqlite"
@@ -265,37 +265,82 @@ def test_hostile_numbers(workspace):
     (suite / "p.pddl").write_bytes(problem.read_bytes())
     plan = ["plan", domain, problem, "-q", "--plan-file", out / "plan"]
     compare = ["compare", suite, "--store", out / "s.sqlite", "-q"]
-    for option, value in [("--timeout", "inf"), ("--timeout", "-inf"), ("--timeout", "nan"), ("--timeout", "0"),
-                          ("--timeout", "1e308"), ("--timeout", "1e12"), ("--memory-limit", "0"),
-                          ("--memory-limit", "-1"), ("--memory-limit", str(10 ** 15)),
-                          ("--tau-class", "nan"), ("--tau-class", "inf"), ("--tau-element", "-0.5"),
-                          ("--tau-element", "1e308")]:
+    for option, value in [
+        ("--timeout", "inf"),
+        ("--timeout", "-inf"),
+        ("--timeout", "nan"),
+        ("--timeout", "0"),
+        ("--timeout", "1e308"),
+        ("--timeout", "1e12"),
+        ("--memory-limit", "0"),
+        ("--memory-limit", "-1"),
+        ("--memory-limit", str(10**15)),
+        ("--tau-class", "nan"),
+        ("--tau-class", "inf"),
+        ("--tau-element", "-0.5"),
+        ("--tau-element", "1e308"),
+    ]:
         check(*plan, option, value, allowed={ExitCode.USAGE})
         check(*compare, option, value, allowed={ExitCode.USAGE})
-    for value in ("0", "-1", str(10 ** 6)):
+    for value in ("0", "-1", str(10**6)):
         check(*compare, "--jobs", value, allowed={ExitCode.USAGE} if int(value) < 1 else {0})
     check(*compare, "--scheduler-timeout", "inf", "--scheduler", "tcp://127.0.0.1:1", allowed={ExitCode.USAGE})
     check(*compare, "--seeds", "a,b", allowed={ExitCode.USAGE})
-    check("score", domain, problem, "--seed", str(10 ** 40), "--scorer", "random", allowed={0})
+    check("score", domain, problem, "--seed", str(10**40), "--scorer", "random", allowed={0})
     for value in ("nan", "inf", "", "0.1,,x", "-1", "1e400"):
         check("sweep", suite, "--taus", value, allowed={ExitCode.USAGE, ExitCode.INPUT_FILE})
-    for args in (["--count", "0"], ["--count", str(10 ** 12)], ["--distractors", "-3"],
-                 ["--distractors", str(10 ** 12)], ["--seed", str(10 ** 40), "--count", "1"]):
+    for args in (
+        ["--count", "0"],
+        ["--count", str(10**12)],
+        ["--distractors", "-3"],
+        ["--distractors", str(10**12)],
+        ["--seed", str(10**40), "--count", "1"],
+    ):
         target = out / "gen"
-        check("generate", "coffee", "--out", target, *args,
-              allowed={ExitCode.USAGE} if "--seed" not in args else {0})
-    for args in (["--jobs", "0"], ["--timeout", "-1"], ["--timeout", "inf"], ["--count", "0"],
-                 ["--distractors", "-3"], ["--tiny", "--distractors", "-3"], ["--jobs", "-5", "--tiny"]):
+        check("generate", "coffee", "--out", target, *args, allowed={ExitCode.USAGE} if "--seed" not in args else {0})
+    for args in (
+        ["--jobs", "0"],
+        ["--timeout", "-1"],
+        ["--timeout", "inf"],
+        ["--count", "0"],
+        ["--distractors", "-3"],
+        ["--tiny", "--distractors", "-3"],
+        ["--jobs", "-5", "--tiny"],
+    ):
         check("demo", "--workdir", out / "demo", *args, allowed={ExitCode.USAGE})
         assert not (out / "demo").exists()
     check("generate", "tea\x00pot", "--out", out / "tea", allowed={ExitCode.USAGE})
-    check("plan", domain, problem, "-q", "--planner-config", "no-such-alias", "--plan-file", out / "p",
-          allowed={ExitCode.USAGE})
+    check(
+        "plan",
+        domain,
+        problem,
+        "-q",
+        "--planner-config",
+        "no-such-alias",
+        "--plan-file",
+        out / "p",
+        allowed={ExitCode.USAGE},
+    )
     check("plan", domain, problem, "-q", "--planner-config", "   ", "--plan-file", out / "p", allowed={ExitCode.USAGE})
-    for planner in ("cmd:", "up:no-such-engine", "no-such-planner", "cmd:'unbalanced", "cmd:echo {nosuch}",
-                    "cmd:/no/such/planner {domain} {problem}"):
-        check("plan", domain, problem, "-q", "--planner", planner, "--plan-file", out / "p",
-              allowed={ExitCode.USAGE, ExitCode.PLANNER})
+    for planner in (
+        "cmd:",
+        "up:no-such-engine",
+        "no-such-planner",
+        "cmd:'unbalanced",
+        "cmd:echo {nosuch}",
+        "cmd:/no/such/planner {domain} {problem}",
+    ):
+        check(
+            "plan",
+            domain,
+            problem,
+            "-q",
+            "--planner",
+            planner,
+            "--plan-file",
+            out / "p",
+            allowed={ExitCode.USAGE, ExitCode.PLANNER},
+        )
     check("exit-codes", allowed={0})
     check("--help", allowed={0})
 
@@ -330,10 +375,16 @@ def test_self_overwrites_and_odd_targets(workspace):
     check("generate", "coffee", "--count", "1", "--out", problem, allowed={ExitCode.INPUT_FILE})
     check("generate", "coffee", "--count", "1", "--out", user, allowed={ExitCode.USAGE})
     too_long = user / ("x" * 5000)
-    for args in (["prune", *common, "-o", too_long], ["plan", *common, "-q", "--plan-file", too_long / "p"],
-                 ["score", domain, too_long], ["generate", "coffee", "--out", too_long], ["report", too_long],
-                 ["sweep", too_long], ["compare", too_long, "-q", "--store", out / "s.sqlite"],
-                 ["compare", suite, "-q", "--store", too_long]):
+    for args in (
+        ["prune", *common, "-o", too_long],
+        ["plan", *common, "-q", "--plan-file", too_long / "p"],
+        ["score", domain, too_long],
+        ["generate", "coffee", "--out", too_long],
+        ["report", too_long],
+        ["sweep", too_long],
+        ["compare", too_long, "-q", "--store", out / "s.sqlite"],
+        ["compare", suite, "-q", "--store", too_long],
+    ):
         check(*args, allowed={ExitCode.INPUT_FILE})
     check("compare", suite, "--store", fifo_dir, "-q", allowed={ExitCode.INPUT_FILE})
     check("compare", suite, "--store", problem, "-q", allowed={ExitCode.STORE})

@@ -10,12 +10,11 @@ import zipfile
 from pathlib import Path
 
 import pytest
+from worlds import GRIPPER_DOMAIN, gripper_problem
 
 from relevance_plan.batch.jobs import FINGERPRINT_RULES, build_jobs, config_fingerprint, config_hash, run_job
 from relevance_plan.planning.loop import PLAN_OPTION_FIELDS, PlanOptions, plan_task
 from relevance_plan.relevance.prune import Thresholds
-
-from worlds import GRIPPER_DOMAIN, gripper_problem
 
 REPO = Path(__file__).resolve().parent.parent
 
@@ -103,8 +102,11 @@ def test_plan_compare_and_the_up_engine_make_the_same_attempts(hard_gripper, tmp
 @pytest.fixture(scope="module")
 def wheel(tmp_path_factory):
     out = tmp_path_factory.mktemp("wheel")
-    subprocess.run([sys.executable, "-m", "pip", "wheel", "--no-deps", "-q", "-w", str(out),
-                    str(REPO)], check=True, capture_output=True)
+    subprocess.run(
+        [sys.executable, "-m", "pip", "wheel", "--no-deps", "-q", "-w", str(out), str(REPO)],
+        check=True,
+        capture_output=True,
+    )
     (found,) = out.glob("relevance_plan-*.whl")
     return found
 
@@ -113,26 +115,44 @@ def test_the_wheel_ships_the_worlds_and_no_stray_top_level_packages(wheel):
     names = zipfile.ZipFile(wheel).namelist()
     top = {name.split("/")[0] for name in names}
     assert {t for t in top if not t.endswith(".dist-info")} == {"relevance_plan"}
-    for needed in ("relevance_plan/data/domains/coffee/domain.pddl", "relevance_plan/data/domains/coffee/relevance.yaml",
-                   "relevance_plan/data/domains/cereal/domain.pddl", "relevance_plan/data/problems/coffee-hard.pddl",
-                   "relevance_plan/generators/generate.py"):
+    for needed in (
+        "relevance_plan/data/domains/coffee/domain.pddl",
+        "relevance_plan/data/domains/coffee/relevance.yaml",
+        "relevance_plan/data/domains/cereal/domain.pddl",
+        "relevance_plan/data/problems/coffee-hard.pddl",
+        "relevance_plan/generators/generate.py",
+    ):
         assert needed in names
 
 
 def test_the_installed_tool_runs_without_the_source_tree(wheel, tmp_path):
     target = tmp_path / "site"
-    subprocess.run([sys.executable, "-m", "pip", "install", "--no-deps", "-q", "--target", str(target), str(wheel)],
-                   check=True, capture_output=True)
+    subprocess.run(
+        [sys.executable, "-m", "pip", "install", "--no-deps", "-q", "--target", str(target), str(wheel)],
+        check=True,
+        capture_output=True,
+    )
     work = tmp_path / "elsewhere"
     work.mkdir()
     env = {**os.environ, "PYTHONPATH": str(target)}
 
     def tool(*arguments):
-        return subprocess.run([sys.executable, "-m", "relevance_plan", *map(str, arguments)], cwd=work, env=env,
-                              capture_output=True, text=True, timeout=300)
+        return subprocess.run(
+            [sys.executable, "-m", "relevance_plan", *map(str, arguments)],
+            cwd=work,
+            env=env,
+            capture_output=True,
+            text=True,
+            timeout=300,
+        )
 
-    where = subprocess.run([sys.executable, "-c", "import relevance_plan; print(relevance_plan.__file__)"],
-                           cwd=work, env=env, capture_output=True, text=True)
+    where = subprocess.run(
+        [sys.executable, "-c", "import relevance_plan; print(relevance_plan.__file__)"],
+        cwd=work,
+        env=env,
+        capture_output=True,
+        text=True,
+    )
     assert where.stdout.startswith(str(target))
     generated = tool("generate", "coffee", "--count", "1", "--seed", "1", "--out", work / "suite")
     assert generated.returncode == 0, generated.stderr

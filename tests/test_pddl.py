@@ -1,13 +1,12 @@
 """Reading PDDL, error lines, and writing pruned problems that keep the user's text."""
 
 import pytest
+from kitchen import coffee_problem
 
 from relevance_plan.errors import DomainMismatchError, PDDLParseError, UnsupportedFeatureError
 from relevance_plan.io import load_domain
 from relevance_plan.pddl.reader import goal_objects, read_domain, read_problem
 from relevance_plan.pddl.writer import write_pruned_problem
-
-from kitchen import coffee_problem
 
 
 @pytest.fixture
@@ -59,7 +58,9 @@ def test_bad_problems_raise_errors_with_file_and_line(coffee, mutate, error, lin
 
 
 def test_unsupported_features_are_named(coffee_domain_path):
-    text = coffee_domain_path.read_text().replace(":negative-preconditions", ":negative-preconditions :durative-actions")
+    text = coffee_domain_path.read_text().replace(
+        ":negative-preconditions", ":negative-preconditions :durative-actions"
+    )
     with pytest.raises(UnsupportedFeatureError, match="durative-actions"):
         read_domain(text, "d.pddl")
     with pytest.raises(UnsupportedFeatureError, match="derived"):
@@ -86,7 +87,8 @@ def test_pruned_problem_keeps_names_layout_and_drops_facts(coffee):
     original_lines = set(text.splitlines())
     for line in pruned.splitlines():
         assert line in original_lines or any(
-            line == original.replace(f"{name} ", "") for original in original_lines
+            line == original.replace(f"{name} ", "")
+            for original in original_lines
             for name in ("paper_cup_1", "dinner_plate_2")
         ), line
 
@@ -129,8 +131,10 @@ def test_errors_keep_path_and_line_across_processes():
 
 @pytest.mark.parametrize("effect", ["(forall (?y))", "(forall)", "(forall (?y) (p ?y) (p ?y))"])
 def test_a_forall_effect_with_a_missing_part_is_a_syntax_error(effect):
-    text = ("(define (domain d) (:requirements :adl) (:predicates (p ?x))\n"
-            f" (:action a :parameters (?x) :precondition (p ?x) :effect {effect}))")
+    text = (
+        "(define (domain d) (:requirements :adl) (:predicates (p ?x))\n"
+        f" (:action a :parameters (?x) :precondition (p ?x) :effect {effect}))"
+    )
     with pytest.raises(PDDLParseError, match="'forall' in an effect takes") as caught:
         read_domain(text, "d.pddl")
     assert caught.value.line == 2

@@ -10,6 +10,8 @@ from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
+from kitchen import coffee_problem
+from worlds import GRIPPER_DOMAIN, gripper_problem
 
 from relevance_plan.cli import main
 from relevance_plan.errors import PlannerError, UsageError
@@ -22,9 +24,6 @@ from relevance_plan.planning.planners import (
     split_planner_names,
 )
 from relevance_plan.planning.runner import PlannerStatus
-
-from kitchen import coffee_problem
-from worlds import GRIPPER_DOMAIN, gripper_problem
 
 
 @pytest.fixture
@@ -93,7 +92,10 @@ def test_planner_names_are_parsed_and_checked():
         with pytest.raises(UsageError, match="unknown planner"):
             make_planner(bad)
     assert split_planner_names("fast-downward, up:pyperplan,cmd:p {domain},{problem}") == (
-        "fast-downward", "up:pyperplan", "cmd:p {domain},{problem}")
+        "fast-downward",
+        "up:pyperplan",
+        "cmd:p {domain},{problem}",
+    )
 
 
 def test_command_templates_are_checked_before_running(tmp_path):
@@ -130,13 +132,17 @@ def test_external_command_on_a_classic_problem_with_a_plan_file(tmp_path, grippe
     assert result.valid and result.objects_kept < result.objects_total
 
 
-@pytest.mark.parametrize("body, planner_status, plan_status", [
-    ("print('I found it, trust me')\n", PlannerStatus.PLANNER_CRASH, PlanStatus.PLANNER_ERROR),
-    ("import sys\nprint('segfault-ish')\nsys.exit(3)\n", PlannerStatus.PLANNER_CRASH, PlanStatus.PLANNER_ERROR),
-    ("print('(serve alice nothing)')\n", PlannerStatus.SOLVED, PlanStatus.NO_VALID_PLAN),
-])
-def test_misbehaving_commands_get_the_right_outcome_and_the_loop_carries_on(tmp_path, coffee_files, body,
-                                                                            planner_status, plan_status):
+@pytest.mark.parametrize(
+    "body, planner_status, plan_status",
+    [
+        ("print('I found it, trust me')\n", PlannerStatus.PLANNER_CRASH, PlanStatus.PLANNER_ERROR),
+        ("import sys\nprint('segfault-ish')\nsys.exit(3)\n", PlannerStatus.PLANNER_CRASH, PlanStatus.PLANNER_ERROR),
+        ("print('(serve alice nothing)')\n", PlannerStatus.SOLVED, PlanStatus.NO_VALID_PLAN),
+    ],
+)
+def test_misbehaving_commands_get_the_right_outcome_and_the_loop_carries_on(
+    tmp_path, coffee_files, body, planner_status, plan_status
+):
     domain, problem = coffee_files
     planner = "cmd:" + script(tmp_path, "bad", body) + " {domain} {problem}"
     result = plan_task(domain, problem, PlanOptions(planner=planner, timeout=30))
@@ -221,8 +227,19 @@ def test_compare_with_two_planners_resumes_and_reports_per_planner(tmp_path):
     suite = tmp_path / "coffee-simple"
     generate_suite("coffee", "simple", 1, 5, suite, distractors=3)
     store = tmp_path / "results.sqlite"
-    arguments = ["compare", str(suite), "--methods", "pure,relevance", "--planners", "fast-downward,up:lpg",
-                 "--timeout", "120", "--store", str(store), "--quiet"]
+    arguments = [
+        "compare",
+        str(suite),
+        "--methods",
+        "pure,relevance",
+        "--planners",
+        "fast-downward,up:lpg",
+        "--timeout",
+        "120",
+        "--store",
+        str(store),
+        "--quiet",
+    ]
     runner = CliRunner()
     first = runner.invoke(main, arguments)
     assert first.exit_code == 0, first.output

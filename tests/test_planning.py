@@ -1,20 +1,17 @@
 """Prune-then-plan: every method's plan validates on the original; relaxation recovers."""
 
 import json
-import os
-import signal
 import time
 from pathlib import Path
 
 import pytest
+from kitchen import coffee_problem
+from worlds import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
 
 from relevance_plan.io import load_task
 from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task
-from relevance_plan.relevance.prune import Thresholds
 from relevance_plan.planning.validate import ValidationStatus, validate_with_up
-
-from kitchen import coffee_problem
-from worlds import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
+from relevance_plan.relevance.prune import Thresholds
 
 REPO = Path(__file__).resolve().parent.parent
 
@@ -71,8 +68,11 @@ def test_relaxation_recovers_when_the_first_pruning_removed_a_needed_object(coff
 def test_a_goal_object_is_never_set_aside(tmp_path, coffee_domain_path):
     # the plate-covered plastic cup is named by the goal, so it stays with its plate
     problem = tmp_path / "coffee.pddl"
-    problem.write_text(coffee_problem(extra_plates=2).replace(
-        "(coffee-served alice)", "(and (coffee-served alice) (holding plastic_cup_1))"))
+    problem.write_text(
+        coffee_problem(extra_plates=2).replace(
+            "(coffee-served alice)", "(and (coffee-served alice) (holding plastic_cup_1))"
+        )
+    )
     result = plan_task(coffee_domain_path, problem, PlanOptions(timeout=60))
     assert_valid_on_original(coffee_domain_path, problem, result)
     assert result.prune.set_aside == frozenset()
@@ -92,7 +92,9 @@ def test_widening_brings_back_a_set_aside_alternative_when_the_free_one_cannot_s
 
 def test_no_relax_reports_the_failed_pruning(coffee_files):
     domain_path, problem_path = coffee_files
-    result = plan_task(domain_path, problem_path, PlanOptions(thresholds=Thresholds(0.2, 0.85), relax=False, timeout=60))
+    result = plan_task(
+        domain_path, problem_path, PlanOptions(thresholds=Thresholds(0.2, 0.85), relax=False, timeout=60)
+    )
     assert result.status is PlanStatus.NO_VALID_PLAN
     assert len(result.attempts) == 1 and result.plan == ()
 
@@ -123,7 +125,9 @@ def test_insufficient_cues_is_its_own_outcome(coffee_files):
         (GRIPPER_DOMAIN, gripper_problem(40), 16),
     ],
 )
-def test_goal_scorer_plans_on_classic_domains_without_a_model(tmp_path, domain_text, problem_text, expected_kept_at_most):
+def test_goal_scorer_plans_on_classic_domains_without_a_model(
+    tmp_path, domain_text, problem_text, expected_kept_at_most
+):
     domain_path, problem_path = tmp_path / "domain.pddl", tmp_path / "problem.pddl"
     domain_path.write_text(domain_text)
     problem_path.write_text(problem_text)
@@ -153,7 +157,9 @@ def test_out_of_memory_is_reported(tmp_path):
 
 def test_bad_planner_configuration_is_not_a_pddl_error(coffee_files):
     domain_path, problem_path = coffee_files
-    result = plan_task(domain_path, problem_path, PlanOptions(method="pure", planner_config="no-such-alias", timeout=30))
+    result = plan_task(
+        domain_path, problem_path, PlanOptions(method="pure", planner_config="no-such-alias", timeout=30)
+    )
     assert result.status is PlanStatus.PLANNER_CONFIG_ERROR
 
 

@@ -1,22 +1,20 @@
 """The relevance model's formulas, cue sufficiency, closure rules and scorers on tiny problems."""
 
 import math
-from types import MappingProxyType
 
 import pytest
-
-from relevance_plan.relevance.analysis import index_init, infer_constraint_rules, single_valued_predicates
-from relevance_plan.relevance.closure import close_over_constraints
-from relevance_plan.errors import ModelError, UsageError
-from relevance_plan.io import load_domain
-from relevance_plan.relevance.knowledge import parse_model
-from relevance_plan.pddl.reader import read_domain, read_problem
-from relevance_plan.relevance.prune import Thresholds, prune_with_scores, select_relevant
-from relevance_plan.relevance.scorers import SCORERS, ScoreRequest, PlanningTask
-from relevance_plan.relevance.scorers.model import task_entropy
-
 from kitchen import coffee_problem
 from worlds import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
+
+from relevance_plan.errors import ModelError, UsageError
+from relevance_plan.io import load_domain
+from relevance_plan.pddl.reader import read_domain, read_problem
+from relevance_plan.relevance.analysis import index_init, infer_constraint_rules, single_valued_predicates
+from relevance_plan.relevance.closure import close_over_constraints
+from relevance_plan.relevance.knowledge import parse_model
+from relevance_plan.relevance.prune import Thresholds, prune_with_scores, select_relevant
+from relevance_plan.relevance.scorers import SCORERS, PlanningTask, ScoreRequest
+from relevance_plan.relevance.scorers.model import task_entropy
 
 MODEL = """
 version: 1
@@ -120,8 +118,11 @@ def test_no_matching_objective_is_insufficient(coffee_domain_path, model):
 
 @pytest.mark.parametrize(
     "kwargs, match",
-    [({"human": "zed"}, "unknown human 'zed'"), ({"objective": "lunch"}, "unknown objective 'lunch'"),
-     ({"model_task": "soup"}, "unknown task 'soup'")],
+    [
+        ({"human": "zed"}, "unknown human 'zed'"),
+        ({"objective": "lunch"}, "unknown objective 'lunch'"),
+        ({"model_task": "soup"}, "unknown task 'soup'"),
+    ],
 )
 def test_unknown_names_are_errors(task, model, kwargs, match):
     with pytest.raises(ModelError, match=match):
@@ -202,7 +203,9 @@ def test_closure_is_transitive_and_pure():
     problem = read_problem(blocksworld_problem(10, in_the_way=3), domain)
     index = index_init(problem)
     kept = frozenset({"a", "b", "c"})
-    closed, restored = close_over_constraints(kept, infer_constraint_rules(domain, index), index, problem.objects.keys())
+    closed, restored = close_over_constraints(
+        kept, infer_constraint_rules(domain, index), index, problem.objects.keys()
+    )
     assert {"x1", "x2", "x3"} <= closed
     assert kept == {"a", "b", "c"}  # input unchanged
     assert [r.name for r in restored][:3] == ["x1", "x2", "x3"]

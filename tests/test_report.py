@@ -10,16 +10,28 @@ import sys
 import pytest
 from click.testing import CliRunner
 
-from relevance_plan.errors import UsageError
-from relevance_plan.exitcodes import ExitCode
 from relevance_plan.batch.report import build_report, format_report, job_time, write_plots
 from relevance_plan.batch.store import COLUMNS, ResultStore
+from relevance_plan.errors import UsageError
+from relevance_plan.exitcodes import ExitCode
 
 TIMEOUT = 100.0
 
 
-def make_row(suite, problem, method, status="solved", wall=1.0, relevance=0.0, first=None, kept=10, total=20,
-             seed=0, config="c", exit_code=0):
+def make_row(
+    suite,
+    problem,
+    method,
+    status="solved",
+    wall=1.0,
+    relevance=0.0,
+    first=None,
+    kept=10,
+    total=20,
+    seed=0,
+    config="c",
+    exit_code=0,
+):
     config_json = json.dumps({"method": method, "timeout": TIMEOUT, "config": config}, sort_keys=True)
     return {
         "problem_hash": f"hash-{suite}-{problem}",
@@ -63,10 +75,25 @@ def known_rows():
     # random: one planner crash (final failure), one time-out, two solved.
     rows.append(make_row("alpha", "a", "random", wall=6.0, relevance=0.25, kept=10, total=20))
     rows.append(make_row("alpha", "b", "random", wall=8.0, relevance=0.25, kept=10, total=20))
-    rows.append(make_row("alpha", "c", "random", status="planner-error", wall=2.0, relevance=0.25, kept=10,
-                         total=20, exit_code=35))
-    rows.append(make_row("alpha", "d", "random", status="out-of-time", wall=100.5, relevance=0.25,
-                         first="out_of_time", kept=10, total=20, exit_code=-9))
+    rows.append(
+        make_row(
+            "alpha", "c", "random", status="planner-error", wall=2.0, relevance=0.25, kept=10, total=20, exit_code=35
+        )
+    )
+    rows.append(
+        make_row(
+            "alpha",
+            "d",
+            "random",
+            status="out-of-time",
+            wall=100.5,
+            relevance=0.25,
+            first="out_of_time",
+            kept=10,
+            total=20,
+            exit_code=-9,
+        )
+    )
     # oracle: 0.5 s everywhere, 4 of 20 kept.
     for problem in "abcd":
         rows.append(make_row("alpha", problem, "oracle", wall=0.5, relevance=0.1, kept=4, total=20))
@@ -97,7 +124,11 @@ def test_report_numbers_from_a_known_store(known_store):
     records = build_report(stored_rows(known_store))
     by_key = {(r.suite, r.method): r for r in records}
     assert [(r.suite, r.method) for r in records] == [
-        ("alpha", "relevance"), ("alpha", "pure"), ("alpha", "random"), ("alpha", "oracle"), ("beta", "relevance"),
+        ("alpha", "relevance"),
+        ("alpha", "pure"),
+        ("alpha", "random"),
+        ("alpha", "oracle"),
+        ("beta", "relevance"),
     ]
 
     pure = by_key[("alpha", "pure")]
@@ -158,7 +189,7 @@ def test_markdown_has_the_papers_shape(known_store):
     assert "|  | n | 4 | 4 | 4 | 4 |" in lines
     # beta has no pure or oracle: no ratio rows, missing methods shown as '–'.
     assert "| beta | time (s) | 7.00 | – | – | – |" in lines
-    beta = lines[lines.index("| beta | time (s) | 7.00 | – | – | – |"):]
+    beta = lines[lines.index("| beta | time (s) | 7.00 | – | – | – |") :]
     assert not any("×" in line for line in beta)
     assert any("counted at the timeout (100 s)" in line for line in lines)
 

@@ -93,7 +93,7 @@ def live_session_members(session: int) -> list[int]:
         except OSError:
             continue
         # Fields after "(comm)": state ppid pgrp session ...
-        fields = stat[stat.rindex(")") + 2:].split()
+        fields = stat[stat.rindex(")") + 2 :].split()
         if int(fields[3]) == session and fields[0] != "Z":
             members.append(int(entry.name))
     return members
@@ -124,13 +124,20 @@ def test_planner_arguments() -> None:
 def test_command_puts_driver_options_before_files_and_search_after(tmp_path: Path) -> None:
     domain, problem = tmp_path / "d.pddl", tmp_path / "p.pddl"
     command = runner._build_command("py", Path("fd.py"), domain, problem, "ff-gbfs", 9.2, 100)
-    assert command[:8] == ["py", "fd.py", "--plan-file", "sas_plan",
-                           "--overall-time-limit", "10s", "--overall-memory-limit", "100M"]
+    assert command[:8] == [
+        "py",
+        "fd.py",
+        "--plan-file",
+        "sas_plan",
+        "--overall-time-limit",
+        "10s",
+        "--overall-memory-limit",
+        "100M",
+    ]
     assert command[8:10] == [str(domain), str(problem)]
     assert command[10:] == list(runner.PLANNER_CONFIGS["ff-gbfs"])
     command = runner._build_command("py", Path("fd.py"), domain, problem, "lama", None, None)
-    assert command[2:] == ["--plan-file", "sas_plan", "--alias", "seq-sat-lama-2011",
-                           str(domain), str(problem)]
+    assert command[2:] == ["--plan-file", "sas_plan", "--alias", "seq-sat-lama-2011", str(domain), str(problem)]
 
 
 def test_exit_code_table_matches_driver_returncodes() -> None:
@@ -286,8 +293,7 @@ def test_out_of_memory(tmp_path: Path) -> None:
 
 
 def test_watchdog_kills_whole_process_group(big40: tuple[Path, Path]) -> None:
-    outcome = runner.run_fast_downward(*big40, time_limit=1, driver_limits=False,
-                                       watchdog_grace=0.5)
+    outcome = runner.run_fast_downward(*big40, time_limit=1, driver_limits=False, watchdog_grace=0.5)
     assert outcome.killed_by_watchdog
     assert outcome.status is PlannerStatus.OUT_OF_TIME
     assert outcome.exit_code == -signal.SIGKILL
@@ -295,8 +301,7 @@ def test_watchdog_kills_whole_process_group(big40: tuple[Path, Path]) -> None:
     assert_session_gone(outcome.process_group)
 
 
-def test_keyboard_interrupt_kills_process_group(big40: tuple[Path, Path],
-                                                monkeypatch: pytest.MonkeyPatch) -> None:
+def test_keyboard_interrupt_kills_process_group(big40: tuple[Path, Path], monkeypatch: pytest.MonkeyPatch) -> None:
     started: list[subprocess.Popen[bytes]] = []
 
     class RecordingPopen(subprocess.Popen):  # type: ignore[type-arg]
@@ -328,8 +333,10 @@ def test_parallel_runs_from_threads(tmp_path: Path) -> None:
         "stuck2": write(tmp_path, "s2.pddl", gripper_problem("roomc", free_gripper=False)),
     }
     with ThreadPoolExecutor(max_workers=4) as pool:
-        futures = {name: pool.submit(runner.run_fast_downward, domain, problem, time_limit=30)
-                   for name, problem in problems.items()}
+        futures = {
+            name: pool.submit(runner.run_fast_downward, domain, problem, time_limit=30)
+            for name, problem in problems.items()
+        }
         outcomes = {name: future.result() for name, future in futures.items()}
     assert outcomes["to_b"].plan[-1] == "drop ball1 roomb left"
     assert outcomes["to_c"].plan[-1] == "drop ball1 roomc left"
@@ -346,8 +353,10 @@ def test_terminate_all_runs_stops_every_running_planner(big40: tuple[Path, Path]
 
     domain, problem = big40
     outcomes = []
-    threads = [threading.Thread(target=lambda: outcomes.append(
-        runner.run_fast_downward(domain, problem, time_limit=60))) for _ in range(2)]
+    threads = [
+        threading.Thread(target=lambda: outcomes.append(runner.run_fast_downward(domain, problem, time_limit=60)))
+        for _ in range(2)
+    ]
     for thread in threads:
         thread.start()
     deadline = time.monotonic() + 20

@@ -14,11 +14,10 @@ from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
+from kitchen import coffee_problem
 
 from relevance_plan.cli import main
 from relevance_plan.exitcodes import ExitCode
-
-from kitchen import coffee_problem
 
 REPO = Path(__file__).resolve().parent.parent
 COFFEE_DOMAIN = REPO / "domains" / "coffee" / "domain.pddl"
@@ -56,10 +55,16 @@ def snapshot(*paths):
 # --------------------------------------------------------------------------- 1. output is an input
 
 
-@pytest.mark.parametrize("command, option, target", [
-    ("prune", "-o", "problem"), ("prune", "-o", "domain"), ("prune", "-o", "model"),
-    ("plan", "--plan-file", "domain"), ("plan", "--plan-file", "problem"),
-])
+@pytest.mark.parametrize(
+    "command, option, target",
+    [
+        ("prune", "-o", "problem"),
+        ("prune", "-o", "domain"),
+        ("prune", "-o", "model"),
+        ("plan", "--plan-file", "domain"),
+        ("plan", "--plan-file", "problem"),
+    ],
+)
 def test_1_an_output_that_is_an_input_is_refused(files, tmp_path, command, option, target):
     domain, problem = files
     model = tmp_path / "model.yaml"
@@ -240,8 +245,10 @@ def _planner_workdirs(marker: str) -> list[Path]:
 def long_problem(tmp_path_factory):
     """A problem pure planning needs several seconds for."""
     suite = tmp_path_factory.mktemp("long") / "suite"
-    assert run("generate", "coffee", "--difficulty", "hard", "--count", "1", "--distractors", "100",
-               "--out", suite)[0] == 0
+    assert (
+        run("generate", "coffee", "--difficulty", "hard", "--count", "1", "--distractors", "100", "--out", suite)[0]
+        == 0
+    )
     return suite / "domain.pddl", suite / "coffee-hard-001.pddl"
 
 
@@ -251,7 +258,10 @@ def _start_plan(long_problem, tmp_path):
     marker = str(problem.parent)
     process = subprocess.Popen(
         TOOL + ["plan", str(domain), str(problem), "--method", "pure", "-q", "--plan-file", str(tmp_path / "plan")],
-        start_new_session=True, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+        start_new_session=True,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+    )
     deadline = time.monotonic() + 20
     while not _guards(marker) and time.monotonic() < deadline:
         time.sleep(0.1)
@@ -282,8 +292,12 @@ def test_6_a_signal_during_plan_stops_every_process_and_cleans_up(long_problem, 
 def test_6_sighup_during_compare_stops_the_batch_and_its_planners(long_problem, tmp_path):
     suite = long_problem[1].parent
     store = tmp_path / "results.sqlite"
-    process = subprocess.Popen(TOOL + ["compare", str(suite), "--methods", "pure", "--store", str(store), "-q"],
-                               start_new_session=True, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    process = subprocess.Popen(
+        TOOL + ["compare", str(suite), "--methods", "pure", "--store", str(store), "-q"],
+        start_new_session=True,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+    )
     marker = str(suite)
     deadline = time.monotonic() + 20
     while not _guards(marker) and time.monotonic() < deadline:
@@ -327,7 +341,10 @@ def _alive(pid: int) -> bool:
 def test_6_sigterm_during_generate_leaves_no_staging(tmp_path):
     process = subprocess.Popen(
         TOOL + ["generate", "coffee", "--count", "3000", "--distractors", "500", "--out", str(tmp_path / "suite")],
-        start_new_session=True, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+        start_new_session=True,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+    )
     deadline = time.monotonic() + 20
     while not list(tmp_path.iterdir()) and time.monotonic() < deadline:
         time.sleep(0.05)
@@ -346,8 +363,16 @@ def test_7_timeout_covers_reading_and_scoring(tmp_path):
     suite = tmp_path / "suite"
     assert run("generate", "coffee", "--count", "1", "--distractors", "20000", "--out", suite)[0] == 0
     started = time.monotonic()
-    code, _, stderr = run("plan", suite / "domain.pddl", suite / "coffee-simple-001.pddl", "-q",
-                          "--timeout", "0.05", "--plan-file", tmp_path / "plan")
+    code, _, stderr = run(
+        "plan",
+        suite / "domain.pddl",
+        suite / "coffee-simple-001.pddl",
+        "-q",
+        "--timeout",
+        "0.05",
+        "--plan-file",
+        tmp_path / "plan",
+    )
     assert code == ExitCode.OUT_OF_TIME
     line = one_line_error(stderr)
     assert "out of time while" in line and "--timeout" in line
@@ -407,10 +432,17 @@ def test_9_yaml_alias_bomb_is_exit_35_at_once(files, tmp_path):
 # --------------------------------------------------------------------------- 10. absurd limits
 
 
-@pytest.mark.parametrize("option, value", [
-    ("--timeout", "inf"), ("--timeout", "nan"), ("--timeout", "1e12"), ("--timeout", "-1"),
-    ("--memory-limit", "10000000000000"), ("--memory-limit", "-5"),
-])
+@pytest.mark.parametrize(
+    "option, value",
+    [
+        ("--timeout", "inf"),
+        ("--timeout", "nan"),
+        ("--timeout", "1e12"),
+        ("--timeout", "-1"),
+        ("--memory-limit", "10000000000000"),
+        ("--memory-limit", "-5"),
+    ],
+)
 def test_10_absurd_limits_are_exit_30(files, tmp_path, option, value):
     domain, problem = files
     code, _, stderr = run("plan", domain, problem, "-q", option, value, "--plan-file", tmp_path / "plan")
@@ -430,16 +462,19 @@ def test_10_absurd_limits_are_exit_30(files, tmp_path, option, value):
 # --------------------------------------------------------------------------- 11. sidecar schema
 
 
-@pytest.mark.parametrize("sidecar", ['{"necessary": [1, 2], "relevant": []}', '{"necessary": "cup"}',
-                                     "[1, 2]", "not json", "[" * 5000 + "]" * 5000])
+@pytest.mark.parametrize(
+    "sidecar",
+    ['{"necessary": [1, 2], "relevant": []}', '{"necessary": "cup"}', "[1, 2]", "not json", "[" * 5000 + "]" * 5000],
+)
 def test_11_bad_sidecars_are_exit_31_in_plan_and_sweep(tmp_path, sidecar):
     suite = tmp_path / "suite"
     suite.mkdir()
     (suite / "domain.pddl").write_bytes(COFFEE_DOMAIN.read_bytes())
     (suite / "p.pddl").write_text(coffee_problem())
     (suite / "p.json").write_text(sidecar)
-    code, _, stderr = run("plan", suite / "domain.pddl", suite / "p.pddl", "--method", "oracle", "-q",
-                          "--plan-file", tmp_path / "plan")
+    code, _, stderr = run(
+        "plan", suite / "domain.pddl", suite / "p.pddl", "--method", "oracle", "-q", "--plan-file", tmp_path / "plan"
+    )
     assert code == ExitCode.INPUT_FILE and "p.json" in one_line_error(stderr)
     code, _, stderr = run("sweep", suite)
     assert code == ExitCode.INPUT_FILE and "p.json" in one_line_error(stderr)
@@ -450,10 +485,16 @@ def test_11_bad_sidecars_are_exit_31_in_plan_and_sweep(tmp_path, sidecar):
 
 def test_12_a_directory_or_missing_file_is_exit_31_in_one_line(files, tmp_path):
     domain, problem = files
-    for args in (["score", tmp_path, problem], ["plan", domain, tmp_path], ["prune", domain, problem, "-o", tmp_path],
-                 ["score", domain, problem, "--model", tmp_path], ["report", tmp_path],
-                 ["score", domain, tmp_path / "missing.pddl"], ["score", "/dev/zero", problem],
-                 ["prune", domain, problem, "-o", tmp_path / "no" / "such" / "dir.pddl"]):
+    for args in (
+        ["score", tmp_path, problem],
+        ["plan", domain, tmp_path],
+        ["prune", domain, problem, "-o", tmp_path],
+        ["score", domain, problem, "--model", tmp_path],
+        ["report", tmp_path],
+        ["score", domain, tmp_path / "missing.pddl"],
+        ["score", "/dev/zero", problem],
+        ["prune", domain, problem, "-o", tmp_path / "no" / "such" / "dir.pddl"],
+    ):
         code, _, stderr = run(*args)
         assert code == ExitCode.INPUT_FILE, args
         one_line_error(stderr)
@@ -504,8 +545,16 @@ def test_14_non_ascii_object_names_are_named_before_planning(files, tmp_path):
 # --------------------------------------------------------------------------- 15. validate before writing
 
 
-@pytest.mark.parametrize("args", [["--jobs", "0"], ["--timeout", "-1"], ["--count", "0"], ["--distractors", "-3"],
-                                  ["--tiny", "--distractors", "-3"]])
+@pytest.mark.parametrize(
+    "args",
+    [
+        ["--jobs", "0"],
+        ["--timeout", "-1"],
+        ["--count", "0"],
+        ["--distractors", "-3"],
+        ["--tiny", "--distractors", "-3"],
+    ],
+)
 def test_15_demo_checks_options_before_writing(tmp_path, args):
     workdir = tmp_path / "demo"
     code, _, stderr = run("demo", "--workdir", workdir, *args)
@@ -522,8 +571,9 @@ def test_15_an_unreachable_scheduler_leaves_no_store(files, tmp_path):
     (suite / "domain.pddl").write_bytes(domain.read_bytes())
     (suite / "p.pddl").write_bytes(problem.read_bytes())
     store = tmp_path / "results.sqlite"
-    code, _, stderr = run("compare", suite, "--store", store, "--scheduler", "tcp://127.0.0.1:1",
-                          "--scheduler-timeout", "1", "-q")
+    code, _, stderr = run(
+        "compare", suite, "--store", store, "--scheduler", "tcp://127.0.0.1:1", "--scheduler-timeout", "1", "-q"
+    )
     assert code == ExitCode.SCHEDULER
     one_line_error(stderr)
     assert not store.exists()
@@ -537,8 +587,9 @@ def test_16_model_messages_name_the_class(files, tmp_path):
     model = tmp_path / "model.yaml"
     text = (REPO / "domains" / "coffee" / "relevance.yaml").read_text()
     model.write_text(text)
-    from relevance_plan.relevance.knowledge import parse_model
     import yaml
+
+    from relevance_plan.relevance.knowledge import parse_model
 
     data = yaml.safe_load(text)
     task = next(iter(data["tasks"]))
@@ -589,8 +640,9 @@ def test_16_taus_errors_name_taus(tmp_path):
 
 def test_16_unknown_planner_alias_is_named(files, tmp_path):
     domain, problem = files
-    code, _, stderr = run("plan", domain, problem, "-q", "--planner-config", "no-such-alias",
-                          "--plan-file", tmp_path / "plan")
+    code, _, stderr = run(
+        "plan", domain, problem, "-q", "--planner-config", "no-such-alias", "--plan-file", tmp_path / "plan"
+    )
     assert code == ExitCode.USAGE and "'no-such-alias'" in one_line_error(stderr)
 
 
@@ -598,8 +650,9 @@ def test_16_suite_folders_follow_the_umask(tmp_path):
     old = os.umask(0o022)
     try:
         suite = tmp_path / "suite"
-        code = subprocess.run(TOOL + ["generate", "coffee", "--count", "1", "--out", str(suite)],
-                              capture_output=True).returncode
+        code = subprocess.run(
+            TOOL + ["generate", "coffee", "--count", "1", "--out", str(suite)], capture_output=True
+        ).returncode
     finally:
         os.umask(old)
     assert code == 0 and stat.S_IMODE(suite.stat().st_mode) == 0o755

@@ -67,8 +67,9 @@ def stand(item: str, place: str) -> list:
 
 def test_add_of_a_relevant_element_triggers_and_keeps_it():
     session = coffee_session()
-    report = session.handle({"event": "add", "object": "Mug_3", "type": "cup",
-                             "facts": stand("mug_3", "table_1") + [["empty", "mug_3"]]})
+    report = session.handle(
+        {"event": "add", "object": "Mug_3", "type": "cup", "facts": stand("mug_3", "table_1") + [["empty", "mug_3"]]}
+    )
     assert report.triggered and "element added: Mug_3" in report.reason
     assert "mug_3" in report.determination.kept and report.added == ("mug_3",)
     assert_same_as_scratch(session)
@@ -88,9 +89,11 @@ def test_a_fact_among_irrelevant_objects_triggers_nothing():
     session = coffee_session(coffee_problem(extra_plates=4, plate_on_cup=False))
     kept = session.kept
     assert "side_plate_1" not in kept and "side_plate_3" not in kept
-    for event in ({"event": "set", "fact": ["on", "side_plate_1", "side_plate_3"]},
-                  {"event": "unset", "fact": ["clear", "side_plate_3"]},
-                  {"event": "unset", "fact": ["on", "side_plate_1", "side_plate_3"]}):
+    for event in (
+        {"event": "set", "fact": ["on", "side_plate_1", "side_plate_3"]},
+        {"event": "unset", "fact": ["clear", "side_plate_3"]},
+        {"event": "unset", "fact": ["on", "side_plate_1", "side_plate_3"]},
+    ):
         report = session.handle(event)
         assert not report.triggered, report.reason
         assert report.error is None
@@ -128,7 +131,10 @@ def test_a_fact_that_changes_the_closure_rules_triggers_even_among_irrelevant_ob
 def test_goal_human_and_cue_events_trigger_once_and_repeats_do_not():
     session = coffee_session(options=ScoringOptions(objective="drink-at-break"))
     for event, reason in (
-        ({"event": "human", "name": "alice", "preferences": "alice"}, "human changed: alice (recorded preferences 'alice')"),
+        (
+            {"event": "human", "name": "alice", "preferences": "alice"},
+            "human changed: alice (recorded preferences 'alice')",
+        ),
         ({"event": "goal", "goal": "(and (coffee-served alice) (stirred paper_cup_1))"}, "goal changed"),
         ({"event": "cue", "task": "tea"}, "cue: task tea"),
         ({"event": "cue", "objective": "serve-coffee-with-creamer"}, "cue: objective serve-coffee-with-creamer"),
@@ -143,8 +149,16 @@ def test_goal_human_and_cue_events_trigger_once_and_repeats_do_not():
 
 
 def test_trigger_registry_names():
-    assert set(TRIGGERS) == {"element-added", "element-removed", "goal-changed", "human-changed", "cue-received",
-                             "kept-touched", "relevance-crossed", "closure-rules-changed"}
+    assert set(TRIGGERS) == {
+        "element-added",
+        "element-removed",
+        "goal-changed",
+        "human-changed",
+        "cue-received",
+        "kept-touched",
+        "relevance-crossed",
+        "closure-rules-changed",
+    }
 
 
 def test_opening_a_closed_container_can_make_its_contents_relevant():
@@ -167,8 +181,18 @@ def test_opening_a_closed_container_can_make_its_contents_relevant():
 # --------------------------------------------------------------------------- incremental == from scratch
 
 TYPES = ["cup", "plate", "whitener", "napkin", "tea", "stirrer", "bowl", "drink", "sweetener", "food"]
-KINDS = {"cup": "paper_cup", "plate": "side_plate", "whitener": "whole_milk", "napkin": "napkin", "tea": "tea_bag",
-         "stirrer": "stir_stick", "bowl": "bowl", "drink": "water_bottle", "sweetener": "sugar_packet", "food": "bagel"}
+KINDS = {
+    "cup": "paper_cup",
+    "plate": "side_plate",
+    "whitener": "whole_milk",
+    "napkin": "napkin",
+    "tea": "tea_bag",
+    "stirrer": "stir_stick",
+    "bowl": "bowl",
+    "drink": "water_bottle",
+    "sweetener": "sugar_packet",
+    "food": "bagel",
+}
 
 
 def random_event(rng: random.Random, session: Session, counter: list) -> dict:
@@ -228,12 +252,14 @@ def random_event(rng: random.Random, session: Session, counter: list) -> dict:
         if rng.random() < 0.5:
             return {"event": "cue", "task": rng.choice(["cold-brew-coffee", "tea", "water", "hot-coffee-with-creamer"])}
         return {"event": "cue", "objective": rng.choice(["drink-at-break", "serve-coffee-with-creamer"])}
-    return rng.choice([
-        {"event": "set", "fact": ["on", "nothing_here", places[0]]},
-        {"event": "set", "fact": ["teleport", places[0]]},
-        {"event": "goal", "goal": "(coffee-served"},
-        {"event": "remove", "object": "ghost"},
-    ])
+    return rng.choice(
+        [
+            {"event": "set", "fact": ["on", "nothing_here", places[0]]},
+            {"event": "set", "fact": ["teleport", places[0]]},
+            {"event": "goal", "goal": "(coffee-served"},
+            {"event": "remove", "object": "ghost"},
+        ]
+    )
 
 
 @pytest.mark.parametrize("seed", range(6))
@@ -259,11 +285,18 @@ def test_incremental_equals_from_scratch_with_the_goal_scorer(seed):
     blocks = list(problem.objects)
     for step in range(40):
         a, b = rng.sample(blocks, 2)
-        event = rng.choice([
-            {"event": rng.choice(["set", "unset"]), "fact": ["on", a, b]},
-            {"event": rng.choice(["set", "unset"]), "fact": ["clear", a]},
-            {"event": "add", "object": f"n{step}", "type": "block", "facts": [["ontable", f"n{step}"], ["clear", f"n{step}"]]},
-        ])
+        event = rng.choice(
+            [
+                {"event": rng.choice(["set", "unset"]), "fact": ["on", a, b]},
+                {"event": rng.choice(["set", "unset"]), "fact": ["clear", a]},
+                {
+                    "event": "add",
+                    "object": f"n{step}",
+                    "type": "block",
+                    "facts": [["ontable", f"n{step}"], ["clear", f"n{step}"]],
+                },
+            ]
+        )
         session.handle(event)
         assert_same_as_scratch(session, f"step {step}: {event}")
 
@@ -287,10 +320,12 @@ IDLE_SCENE = """(define (problem break-table)
 def test_idle_scene_triggers_nothing_until_someone_is_served():
     session = coffee_session(IDLE_SCENE, options=ScoringOptions(objective="drink-at-break"))
     assert session.idle and session.decision is None
-    for event in ({"event": "add", "object": "donut_1", "type": "food", "facts": stand("donut_1", "table_1")},
-                  {"event": "set", "fact": ["on", "napkin_1", "whole_milk_1"]},
-                  {"event": "remove", "object": "donut_1"},
-                  {"event": "add", "object": "alice", "type": "human", "facts": [["human-at", "alice", "table_1"]]}):
+    for event in (
+        {"event": "add", "object": "donut_1", "type": "food", "facts": stand("donut_1", "table_1")},
+        {"event": "set", "fact": ["on", "napkin_1", "whole_milk_1"]},
+        {"event": "remove", "object": "donut_1"},
+        {"event": "add", "object": "alice", "type": "human", "facts": [["human-at", "alice", "table_1"]]},
+    ):
         report = session.handle(event)
         assert not report.triggered and report.error is None
     report = session.handle({"event": "human", "name": "alice", "preferences": "alice"})
@@ -329,25 +364,31 @@ def test_no_objective_asks_for_one():
     assert report.sufficient and report.determination is not None and report.ask.cue == "preference"
 
 
-@pytest.mark.parametrize("line, message", [
-    ("{not json", "not a JSON object"),
-    ("[1, 2]", "an event must be a JSON object"),
-    ('{"event": "explode"}', "unknown event"),
-    ('{"event": "remove", "object": "ghost"}', "unknown object 'ghost'"),
-    ('{"event": "remove", "object": "alice"}', "named in the goal"),
-    ('{"event": "set", "fact": ["on", "plastic_cup_1"]}', "takes 2 arguments, got 1"),
-    ('{"event": "set", "fact": ["levitating", "plastic_cup_1"]}', "unknown predicate 'levitating'"),
-    ('{"event": "unset", "fact": ["clear", "ghost"]}', "unknown object 'ghost'"),
-    ('{"event": "add", "object": "mug_1", "type": "teapot"}', "unknown type 'teapot'"),
-    ('{"event": "add", "object": "paper_cup_1", "type": "cup"}', "already in the scene"),
-    ('{"event": "add", "object": "mug_1", "type": "cup", "facts": [["at", "mug_1", "moon"]]}', "unknown object 'moon'"),
-    ('{"event": "goal", "goal": "(and (coffee-served alice)"}', "goal does not parse"),
-    ('{"event": "goal", "goal": "(coffee-served nobody)"}', "goal does not parse"),
-    ('{"event": "goal", "goal": "(served alice)"}', "unknown predicate"),
-    ('{"event": "human", "name": "alice", "preferences": "carol"}', "unknown preference profile 'carol'"),
-    ('{"event": "cue", "task": "juggling"}', "unknown task"),
-    ('{"event": "cue"}', "either 'task' or 'objective'"),
-])
+@pytest.mark.parametrize(
+    "line, message",
+    [
+        ("{not json", "not a JSON object"),
+        ("[1, 2]", "an event must be a JSON object"),
+        ('{"event": "explode"}', "unknown event"),
+        ('{"event": "remove", "object": "ghost"}', "unknown object 'ghost'"),
+        ('{"event": "remove", "object": "alice"}', "named in the goal"),
+        ('{"event": "set", "fact": ["on", "plastic_cup_1"]}', "takes 2 arguments, got 1"),
+        ('{"event": "set", "fact": ["levitating", "plastic_cup_1"]}', "unknown predicate 'levitating'"),
+        ('{"event": "unset", "fact": ["clear", "ghost"]}', "unknown object 'ghost'"),
+        ('{"event": "add", "object": "mug_1", "type": "teapot"}', "unknown type 'teapot'"),
+        ('{"event": "add", "object": "paper_cup_1", "type": "cup"}', "already in the scene"),
+        (
+            '{"event": "add", "object": "mug_1", "type": "cup", "facts": [["at", "mug_1", "moon"]]}',
+            "unknown object 'moon'",
+        ),
+        ('{"event": "goal", "goal": "(and (coffee-served alice)"}', "goal does not parse"),
+        ('{"event": "goal", "goal": "(coffee-served nobody)"}', "goal does not parse"),
+        ('{"event": "goal", "goal": "(served alice)"}', "unknown predicate"),
+        ('{"event": "human", "name": "alice", "preferences": "carol"}', "unknown preference profile 'carol'"),
+        ('{"event": "cue", "task": "juggling"}', "unknown task"),
+        ('{"event": "cue"}', "either 'task' or 'objective'"),
+    ],
+)
 def test_invalid_events_are_rejected_and_the_session_carries_on(line, message):
     session = coffee_session()
     kept, facts, objects = session.kept, set(session.scene.facts), dict(session.scene.objects)
@@ -377,15 +418,26 @@ class CountingPlanner:
 
 def test_every_reported_plan_is_valid_on_the_current_state_and_still_valid_plans_are_kept(tmp_path):
     planner = CountingPlanner(tmp_path)
-    session = coffee_session(COFFEE_SIMPLE.read_text(), run_planner=planner, plan_in_loop=True,
-                             plan_options=PlanOptions(timeout=60))
+    session = coffee_session(
+        COFFEE_SIMPLE.read_text(), run_planner=planner, plan_in_loop=True, plan_options=PlanOptions(timeout=60)
+    )
     events = [
         {"event": "plan"},
         {"event": "add", "object": "donut_1", "type": "food", "facts": stand("donut_1", "serving_table_1")},
-        {"event": "add", "object": "Mug_2", "type": "cup", "facts": stand("mug_2", "serving_table_1") + [["empty", "mug_2"]]},
+        {
+            "event": "add",
+            "object": "Mug_2",
+            "type": "cup",
+            "facts": stand("mug_2", "serving_table_1") + [["empty", "mug_2"]],
+        },
         {"event": "set", "fact": ["on", "dinner_plate_1", "plastic_cup_1"]},
         {"event": "remove", "object": "cold_brew_coffee_1"},
-        {"event": "add", "object": "espresso_1", "type": "coffee-source", "facts": stand("espresso_1", "kitchen_counter_1")},
+        {
+            "event": "add",
+            "object": "espresso_1",
+            "type": "coffee-source",
+            "facts": stand("espresso_1", "kitchen_counter_1"),
+        },
         {"event": "plan"},
     ]
     plans = []
@@ -414,7 +466,8 @@ def run_watch(tmp_path, events, *args):
     events_file = tmp_path / "events.jsonl"
     events_file.write_text("\n".join(e if isinstance(e, str) else json.dumps(e) for e in events) + "\n")
     result = CliRunner().invoke(
-        main, ["watch", str(COFFEE_DOMAIN), str(COFFEE_SIMPLE), "--events", str(events_file), *args])
+        main, ["watch", str(COFFEE_DOMAIN), str(COFFEE_SIMPLE), "--events", str(events_file), *args]
+    )
     return result, [json.loads(line) for line in result.stdout.splitlines()]
 
 
@@ -430,8 +483,17 @@ def test_watch_writes_one_line_per_event_and_a_snapshot_prune_agrees_with(tmp_pa
     assert result.exit_code == 0, result.stderr
     assert [line["seq"] for line in lines] == [1, 2, 3, 4, 5]
     for line in lines:
-        assert {"seq", "event", "triggered", "reason", "sufficient", "added", "dropped", "ask",
-                "determination_ms"} <= line.keys()
+        assert {
+            "seq",
+            "event",
+            "triggered",
+            "reason",
+            "sufficient",
+            "added",
+            "dropped",
+            "ask",
+            "determination_ms",
+        } <= line.keys()
     assert lines[0]["triggered"] and "Mug_2" in lines[0]["kept"] and lines[0]["kept"] == sorted(lines[0]["kept"])
     assert lines[1]["error"].startswith("not a JSON object") and not lines[1]["triggered"]
     assert "error" in lines[4] and "unknown object 'ghost'" in lines[4]["error"]
@@ -444,14 +506,20 @@ def test_watch_writes_one_line_per_event_and_a_snapshot_prune_agrees_with(tmp_pa
     pruned = read_problem((tmp_path / "snap" / "pruned.pddl").read_text(), domain)
     assert sorted(pruned.display(n) for n in pruned.objects) == kept
     result = CliRunner().invoke(
-        main, ["prune", str(COFFEE_DOMAIN), str(current), "-o", str(tmp_path / "p.pddl"), "--json"])
+        main, ["prune", str(COFFEE_DOMAIN), str(current), "-o", str(tmp_path / "p.pddl"), "--json"]
+    )
     assert result.exit_code == 0, result.stderr
     assert sorted(json.loads(result.stdout)["kept"]) == kept
 
 
 def test_watch_with_plan_reports_validated_plans(tmp_path):
     events = [
-        {"event": "add", "object": "mug_2", "type": "cup", "facts": stand("mug_2", "serving_table_1") + [["empty", "mug_2"]]},
+        {
+            "event": "add",
+            "object": "mug_2",
+            "type": "cup",
+            "facts": stand("mug_2", "serving_table_1") + [["empty", "mug_2"]],
+        },
         {"event": "remove", "object": "plastic_cup_1"},
         {"event": "remove", "object": "paper_cup_1"},
         {"event": "plan"},
@@ -469,18 +537,22 @@ def test_watch_with_plan_reports_validated_plans(tmp_path):
 
 def test_watch_missing_file_is_one_line_and_exit_code_31(tmp_path):
     result = CliRunner().invoke(
-        main, ["watch", str(COFFEE_DOMAIN), str(tmp_path / "missing.pddl"), "--events", "-"], input="")
+        main, ["watch", str(COFFEE_DOMAIN), str(tmp_path / "missing.pddl"), "--events", "-"], input=""
+    )
     assert result.exit_code == 31
     assert result.stderr.count("\n") == 1 and "Traceback" not in result.stderr
     result = CliRunner().invoke(
-        main, ["watch", str(COFFEE_DOMAIN), str(COFFEE_SIMPLE), "--events", str(tmp_path / "none.jsonl")])
+        main, ["watch", str(COFFEE_DOMAIN), str(COFFEE_SIMPLE), "--events", str(tmp_path / "none.jsonl")]
+    )
     assert result.exit_code == 31 and "events file not found" in result.stderr
 
 
 def test_watch_reads_standard_input_until_it_ends(tmp_path):
     result = CliRunner().invoke(
-        main, ["watch", str(COFFEE_DOMAIN), str(COFFEE_SIMPLE)],
-        input='{"event": "set", "fact": ["clear", "dinner_plate_1"]}\n\n{"event": "plan"}\n')
+        main,
+        ["watch", str(COFFEE_DOMAIN), str(COFFEE_SIMPLE)],
+        input='{"event": "set", "fact": ["clear", "dinner_plate_1"]}\n\n{"event": "plan"}\n',
+    )
     assert result.exit_code == 0, result.stderr
     lines = [json.loads(line) for line in result.stdout.splitlines()]
     assert len(lines) == 2 and lines[0]["triggered"] is False

@@ -15,7 +15,6 @@ import warnings
 from pathlib import Path
 
 import pytest
-
 from unified_planning.engines import PlanGenerationResultStatus as Status
 from unified_planning.engines.results import ValidationResultStatus
 from unified_planning.io import PDDLReader
@@ -157,7 +156,7 @@ def blocksworld(in_the_way: int = 2, towers: int = 3) -> Problem:
     for block in (b, c):
         problem.set_initial_value(ontable(block), True)
         problem.set_initial_value(clear(block), True)
-    for tower in [[a] + blockers] + [extras[i:i + 4] for i in range(0, len(extras), 4)]:
+    for tower in [[a] + blockers] + [extras[i : i + 4] for i in range(0, len(extras), 4)]:
         problem.set_initial_value(ontable(tower[0]), True)
         for lower, upper in zip(tower, tower[1:]):
             problem.set_initial_value(on(upper, lower), True)
@@ -232,9 +231,7 @@ def test_restricted_problem_maps_back_to_the_original():
     removed = {"Ball3", "Ball4", "Ball5", "Room 4"}
     restricted = restrict_problem(problem, removed)
     assert {o.name for o in restricted.all_objects} == {o.name for o in problem.all_objects} - removed
-    assert all(
-        arg.object().name not in removed for fluent in restricted.explicit_initial_values for arg in fluent.args
-    )
+    assert all(arg.object().name not in removed for fluent in restricted.explicit_initial_values for arg in fluent.args)
     assert len(problem.explicit_initial_values) == explicit_before  # the original is untouched
     pick, move, drop = restricted.action("pick"), restricted.action("move"), restricted.action("drop")
     obj = restricted.object

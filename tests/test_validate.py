@@ -1,6 +1,7 @@
 """The builtin validator agrees with unified-planning's on valid and broken plans."""
 
 import pytest
+from kitchen import coffee_problem
 
 from relevance_plan.io import load_domain
 from relevance_plan.pddl.reader import read_domain, read_problem
@@ -12,8 +13,6 @@ from relevance_plan.planning.validate import (
     validate_plan,
     validate_with_up,
 )
-
-from kitchen import coffee_problem
 
 COFFEE_PLAN = """
 (unstack dinner_plate_1 plastic_cup_1 counter_1)
@@ -85,18 +84,22 @@ def test_adl_features_quantifiers_conditional_effects_equality():
           (:action mark
             :parameters (?r - room ?s - room)
             :precondition (and (not (= ?r ?s)) (forall (?l - lamp) (imply (in ?l ?r) (on ?l))))
-            :effect (lit ?r)))""")
+            :effect (lit ?r)))"""
+    )
     problem = read_problem(
         """(define (problem p) (:domain lights)
           (:objects a b - lamp kitchen hall - room)
           (:init (in a kitchen) (in b hall))
-          (:goal (and (lit kitchen) (not (on b)))))""", domain)
+          (:goal (and (lit kitchen) (not (on b)))))""",
+        domain,
+    )
     good = (("switch-all", "kitchen"), ("mark", "kitchen", "hall"))
     assert validate_builtin(domain, problem, good).valid
     assert not validate_builtin(domain, problem, (("mark", "kitchen", "hall"),)).valid
     assert not validate_builtin(domain, problem, (("switch-all", "kitchen"), ("mark", "kitchen", "kitchen"))).valid
-    assert not validate_builtin(domain, problem, (("switch-all", "hall"), ("switch-all", "kitchen"),
-                                                  ("mark", "kitchen", "hall"))).valid
+    assert not validate_builtin(
+        domain, problem, (("switch-all", "hall"), ("switch-all", "kitchen"), ("mark", "kitchen", "hall"))
+    ).valid
 
 
 def test_no_runnable_validator_is_reported_not_guessed(task):

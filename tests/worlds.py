@@ -48,7 +48,7 @@ def blocksworld_problem(extra: int, seed: int = 0, in_the_way: int = 2) -> str:
     init.append(f"(clear {pile[-1]})")
     rest = extras[in_the_way:]
     rng.shuffle(rest)
-    towers = [rest[i:i + 4] for i in range(0, len(rest), 4)]
+    towers = [rest[i : i + 4] for i in range(0, len(rest), 4)]
     for tower in towers:
         init.append(f"(ontable {tower[0]})")
         for lower, upper in zip(tower, tower[1:]):

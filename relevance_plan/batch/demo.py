@@ -14,10 +14,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from relevance_plan.batch.jobs import CompareSummary, check_compare_options, compare
-from relevance_plan.errors import InputFileError, UsageError
-from relevance_plan.planning.loop import METHODS, PlanOptions
 from relevance_plan.batch.report import build_report, format_report
 from relevance_plan.batch.store import KEY_COLUMNS, read_rows
+from relevance_plan.errors import InputFileError, UsageError
+from relevance_plan.planning.loop import METHODS, PlanOptions
 
 DEMO_SUITES = (("coffee", "simple"), ("cereal", "simple"))
 DEMO_SEED = 0
@@ -56,8 +56,9 @@ def run_demo(
     """
     from relevance_plan.generators.generate import generate_suite
 
-    if distractors is not None and (isinstance(distractors, bool) or not isinstance(distractors, int)
-                                    or distractors < 0):
+    if distractors is not None and (
+        isinstance(distractors, bool) or not isinstance(distractors, int) or distractors < 0
+    ):
         raise UsageError(f"--distractors must be a non-negative integer, got {distractors!r}")
     options = PlanOptions(timeout=timeout)  # checked before anything is written
     if tiny:
@@ -89,4 +90,3 @@ def run_demo(
     rows = [row for row in read_rows(store_path) if tuple(row[name] for name in KEY_COLUMNS) in wanted]
     table = format_report(build_report(rows), "markdown")
     return DemoRun(workdir, store_path, tuple(suites), summary, table)
-

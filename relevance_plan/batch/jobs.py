@@ -31,11 +31,12 @@ import signal
 import threading
 import time
 from collections import Counter
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from datetime import datetime, timezone
 from functools import cached_property
 from pathlib import Path
-from typing import Any, Iterable, Sequence
+from typing import Any
 
 from relevance_plan import __version__
 from relevance_plan.batch.store import ResultKey, ResultStore
@@ -43,7 +44,13 @@ from relevance_plan.errors import InputFileError, PlannerError, RelevancePlanErr
 from relevance_plan.io import find_suite_problems, load_domain, read_bytes
 from relevance_plan.planning import runner
 from relevance_plan.planning.loop import (
-    MAX_TIMEOUT, METHODS, PLAN_OPTION_FIELDS, PlanOptions, PlanResult, PlanStatus, plan_task,
+    MAX_TIMEOUT,
+    METHODS,
+    PLAN_OPTION_FIELDS,
+    PlanOptions,
+    PlanResult,
+    PlanStatus,
+    plan_task,
 )
 from relevance_plan.planning.planners import make_planner
 from relevance_plan.relevance.knowledge import find_model
@@ -52,7 +59,9 @@ from relevance_plan.relevance.sidecar import read_sidecar_for, sidecar_path
 DASK_INSTALL_HINT = "pip install 'relevance-plan[dask]'"
 DEFAULT_SCHEDULER_TIMEOUT = 10.0
 _STOP_GRACE = 30.0  # seconds to wait for running jobs after their planners were killed
-_ADDRESS_RE = re.compile(r"^(?:(?:tcp|tls|ws|wss|ucx)://)?[^\s/:]+:\d+$|^(?:tcp|tls|ws|wss|ucx)://\[[0-9a-fA-F:.]+\]:\d+$")
+_ADDRESS_RE = re.compile(
+    r"^(?:(?:tcp|tls|ws|wss|ucx)://)?[^\s/:]+:\d+$|^(?:tcp|tls|ws|wss|ucx)://\[[0-9a-fA-F:.]+\]:\d+$"
+)
 
 
 # --------------------------------------------------------------------------- keys
@@ -464,8 +473,13 @@ class _Recorder:
         self.bar.advance(failed=row["status"] != PlanStatus.SOLVED.value)
 
 
-def check_compare_options(*, timeout: float = 120.0, jobs: int = 1, scheduler: str | None = None,
-                          scheduler_timeout: float = DEFAULT_SCHEDULER_TIMEOUT) -> None:
+def check_compare_options(
+    *,
+    timeout: float = 120.0,
+    jobs: int = 1,
+    scheduler: str | None = None,
+    scheduler_timeout: float = DEFAULT_SCHEDULER_TIMEOUT,
+) -> None:
     """``UsageError`` for a bad option, before anything is written (``demo`` checks first too)."""
     if isinstance(jobs, bool) or not isinstance(jobs, int) or jobs < 1:
         raise UsageError(f"--jobs must be a positive integer, got {jobs!r}")
@@ -523,8 +537,10 @@ def compare(
             pending = [job for key, job in unique.items() if key not in stored]
             recorder = None
             if pending:
-                with _stop_signals() as stop, _reporter(len(pending), f"compare ({len(pending)} jobs)",
-                                                        progress) as bar:
+                with (
+                    _stop_signals() as stop,
+                    _reporter(len(pending), f"compare ({len(pending)} jobs)", progress) as bar,
+                ):
                     recorder = _Recorder(store, bar)
                     if client is None:
                         _run_local(pending, jobs, recorder, stop)
@@ -557,7 +573,8 @@ def _run_local(pending: Sequence[Job], workers: int, record: _Recorder, stop: th
         waiting = set(futures)
         while waiting:
             done, waiting = concurrent.futures.wait(
-                waiting, timeout=_POLL_SECONDS, return_when=concurrent.futures.FIRST_COMPLETED)
+                waiting, timeout=_POLL_SECONDS, return_when=concurrent.futures.FIRST_COMPLETED
+            )
             for future in done:
                 row = future.result()  # an unexpected error stops the batch
                 recorded.add(future)
@@ -566,7 +583,9 @@ def _run_local(pending: Sequence[Job], workers: int, record: _Recorder, stop: th
                 raise KeyboardInterrupt
     except BaseException as error:
         # Rows that were complete before the stop are genuine; keep them.
-        finished = [f for f in futures if f not in recorded and f.done() and not f.cancelled() and f.exception() is None]
+        finished = [
+            f for f in futures if f not in recorded and f.done() and not f.cancelled() and f.exception() is None
+        ]
         _stop_local(pool, futures)
         if isinstance(error, KeyboardInterrupt):
             for future in finished:

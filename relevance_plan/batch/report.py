@@ -33,9 +33,10 @@ import io
 import json
 import os
 import statistics
+from collections.abc import Iterable, Sequence
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
-from typing import Any, Iterable, Sequence
+from typing import Any
 
 from relevance_plan.errors import InputFileError, UsageError
 from relevance_plan.planning.loop import METHODS
@@ -134,7 +135,7 @@ def build_report(rows: Iterable[dict[str, Any]]) -> list[ReportRecord]:
         groups.setdefault((suite, row["method"]), []).append(row)
     medians = {key: statistics.median(job_time(r) for r in group) for key, group in groups.items()}
     records = []
-    for (suite, method) in sorted(groups, key=lambda key: (key[0], _method_order(key[1]))):
+    for suite, method in sorted(groups, key=lambda key: (key[0], _method_order(key[1]))):
         group = groups[(suite, method)]
         n = len(group)
         times = [job_time(r) for r in group]
@@ -218,7 +219,9 @@ def _notes(records: Sequence[ReportRecord]) -> list[str]:
     timeouts = sorted({t for r in records for t in r.timeouts})
     if timeouts:
         shown = ", ".join(f"{t:g}" for t in timeouts)
-        notes.append(f"time = relevance + planning (+ validation) per job, out-of-time jobs counted at the timeout ({shown} s)")
+        notes.append(
+            f"time = relevance + planning (+ validation) per job, out-of-time jobs counted at the timeout ({shown} s)"
+        )
     for r in records:
         if r.configs > 1:
             notes.append(f"{r.suite} / {r.method} pools {r.configs} different option sets or planner versions")
@@ -236,9 +239,18 @@ def _markdown(records: Sequence[ReportRecord]) -> str:
 
 
 _LATEX_SPECIALS = {
-    "\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#", "_": r"\_",
-    "{": r"\{", "}": r"\}", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}",
-    NOT_APPLICABLE: "--", "×": r"$\times$",
+    "\\": r"\textbackslash{}",
+    "&": r"\&",
+    "%": r"\%",
+    "$": r"\$",
+    "#": r"\#",
+    "_": r"\_",
+    "{": r"\{",
+    "}": r"\}",
+    "~": r"\textasciitilde{}",
+    "^": r"\textasciicircum{}",
+    NOT_APPLICABLE: "--",
+    "×": r"$\times$",
 }
 
 
@@ -265,9 +277,22 @@ def _latex(records: Sequence[ReportRecord]) -> str:
 
 
 CSV_FIELDS = (
-    "suite", "method", "n", "solved", "mean_time", "median_time", "timeout_rate", "first_failure_rate",
-    "failure_rate", "ratio_to_pure", "ratio_to_oracle", "mean_objects_kept", "mean_objects_total",
-    "mean_kept_fraction", "mean_relevance_time", "configs",
+    "suite",
+    "method",
+    "n",
+    "solved",
+    "mean_time",
+    "median_time",
+    "timeout_rate",
+    "first_failure_rate",
+    "failure_rate",
+    "ratio_to_pure",
+    "ratio_to_oracle",
+    "mean_objects_kept",
+    "mean_objects_total",
+    "mean_kept_fraction",
+    "mean_relevance_time",
+    "configs",
 )
 
 
@@ -359,13 +384,15 @@ def _pairs(rows: Sequence[dict[str, Any]]) -> list[tuple[str, float, float, bool
     for (suite, _, _), methods in sorted(grouped.items(), key=lambda item: tuple(map(str, item[0]))):
         if "pure" in methods and "relevance" in methods:
             pure, relevance = methods["pure"], methods["relevance"]
-            pairs.append((
-                suite,
-                statistics.median(job_time(r) for r in pure),
-                statistics.median(job_time(r) for r in relevance),
-                all(r["status"] == OUT_OF_TIME for r in pure),
-                all(r["status"] == OUT_OF_TIME for r in relevance),
-            ))
+            pairs.append(
+                (
+                    suite,
+                    statistics.median(job_time(r) for r in pure),
+                    statistics.median(job_time(r) for r in relevance),
+                    all(r["status"] == OUT_OF_TIME for r in pure),
+                    all(r["status"] == OUT_OF_TIME for r in relevance),
+                )
+            )
     return pairs
 
 
@@ -389,8 +416,14 @@ def _scatter(rows: Sequence[dict[str, Any]], Figure):
         axes.set_yscale("log")
         axes.legend(fontsize="small")
     else:
-        axes.text(0.5, 0.5, "no problem has both relevance and pure results", ha="center", va="center",
-                  transform=axes.transAxes)
+        axes.text(
+            0.5,
+            0.5,
+            "no problem has both relevance and pure results",
+            ha="center",
+            va="center",
+            transform=axes.transAxes,
+        )
     axes.set_xlabel("pure planning time (s)")
     axes.set_ylabel("relevance time (s): relevance + planning")
     axes.set_title("Per problem: relevance vs pure")

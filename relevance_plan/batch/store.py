@@ -26,8 +26,9 @@ from __future__ import annotations
 
 import os
 import sqlite3
+from collections.abc import Iterable
 from pathlib import Path
-from typing import Any, Iterable, NamedTuple
+from typing import Any, NamedTuple
 
 from relevance_plan import __version__
 from relevance_plan.errors import InputFileError, StoreError
@@ -153,8 +154,9 @@ class ResultStore:
             self._create(connection)
             return
         if "meta" not in tables or "results" not in tables:
-            raise StoreError("SQLite database without relevance-plan results (no meta/results table)",
-                             path=str(self.path))
+            raise StoreError(
+                "SQLite database without relevance-plan results (no meta/results table)", path=str(self.path)
+            )
         meta = dict(connection.execute("SELECT key, value FROM meta").fetchall())
         found = meta.get("schema_version")
         if found != str(SCHEMA_VERSION):
@@ -237,7 +239,7 @@ class ResultStore:
             self._connection.close()
             self._connection = None
 
-    def __enter__(self) -> "ResultStore":
+    def __enter__(self) -> ResultStore:
         return self
 
     def __exit__(self, *exc) -> None:

@@ -9,9 +9,9 @@ planner gets, after closure.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Sequence
 
 from relevance_plan.errors import InputFileError, UsageError
 from relevance_plan.io import find_suite_problems, load_domain, load_problem

@@ -14,7 +14,6 @@ import click
 
 from relevance_plan import __version__
 from relevance_plan.cli.batch import COMMANDS as BATCH_COMMANDS
-from relevance_plan.cli.watch import watch
 from relevance_plan.cli.common import (
     fail,
     handle_errors,
@@ -24,6 +23,7 @@ from relevance_plan.cli.common import (
     take_plan_options,
     take_scoring,
 )
+from relevance_plan.cli.watch import watch
 from relevance_plan.errors import UsageError
 from relevance_plan.exitcodes import EXIT_CODE_DESCRIPTIONS, ExitCode
 from relevance_plan.planning.loop import PlanResult, PlanStatus, plan_task
@@ -76,7 +76,8 @@ def _prune_json(result: PruneResult) -> dict:
         ],
         "scores": {problem.display(n): round(s, 6) for n, s in scores.element_scores.items()},
         "classes": {
-            c: {"relevance": round(s, 6), "kept": s > result.thresholds.tau_class} for c, s in scores.class_scores.items()
+            c: {"relevance": round(s, 6), "kept": s > result.thresholds.tau_class}
+            for c, s in scores.class_scores.items()
         },
         "element_class": {problem.display(n): c for n, c in scores.element_class.items()},
         "unknown_class": [problem.display(n) for n in scores.unknown],
@@ -99,10 +100,15 @@ def main():
 @click.option("--seed", type=int, default=0, show_default=True)
 @click.option("--out", "out_dir", type=click.Path(file_okay=False), required=True, help="Suite directory to write.")
 @click.option("--distractors", type=int, default=None, help="Override the paper's distractor count.")
-@click.option("--size", type=int, default=None,
-              help="Classic worlds: about how many objects per problem (default: a size where pure planning takes 5-120 s).")
-@click.option("--force", is_flag=True,
-              help="Write into a non-empty directory that holds no suite, overwriting same-named files.")
+@click.option(
+    "--size",
+    type=int,
+    default=None,
+    help="Classic worlds: about how many objects per problem (default: a size where pure planning takes 5-120 s).",
+)
+@click.option(
+    "--force", is_flag=True, help="Write into a non-empty directory that holds no suite, overwriting same-named files."
+)
 @handle_errors
 def generate(world, difficulty, count, seed, out_dir, distractors, size, force):
     """Generate a seeded benchmark suite for WORLD: coffee or cereal, or a classic world
@@ -117,16 +123,25 @@ def generate(world, difficulty, count, seed, out_dir, distractors, size, force):
             raise UsageError("--distractors applies to the kitchen worlds; classic worlds take --size")
         check_classic_arguments(world, count, seed, size)
         with progress(count, f"generate {world}") as bar:
-            paths = generate_classic_suite(world, count, seed, Path(out_dir), size=size,
-                                           progress=lambda done, total: bar.advance(), force=force)
+            paths = generate_classic_suite(
+                world, count, seed, Path(out_dir), size=size, progress=lambda done, total: bar.advance(), force=force
+            )
     else:
         if world not in WORLD_NAMES:
             raise UsageError(f"unknown world {world!r}: choose one of {', '.join(WORLD_NAMES + CLASSIC_WORLDS)}")
         if size is not None:
             raise UsageError("--size applies to the classic worlds; kitchen worlds take --distractors")
         with progress(count, f"generate {world}-{difficulty}") as bar:
-            paths = generate_suite(world, difficulty, count, seed, Path(out_dir), distractors=distractors,
-                                   progress=lambda done, total: bar.advance(), force=force)
+            paths = generate_suite(
+                world,
+                difficulty,
+                count,
+                seed,
+                Path(out_dir),
+                distractors=distractors,
+                progress=lambda done, total: bar.advance(),
+                force=force,
+            )
     click.echo(f"wrote {len(paths)} problems to {out_dir}")
 
 
@@ -221,16 +236,26 @@ def _print_score_table(result: PruneResult) -> None:
             f" {scores.element_scores.get(name, 0.0):6.3f}  {kept:<8} {why}"
         )
     click.echo("")
-    click.echo(f"kept {len(result.kept)} of {len(problem.objects)} objects ({len(result.restored)} restored by closure)")
+    click.echo(
+        f"kept {len(result.kept)} of {len(problem.objects)} objects ({len(result.restored)} restored by closure)"
+    )
     if scores.unknown:
-        click.echo(f"class unknown to the model (default relevance): {', '.join(problem.display(n) for n in scores.unknown)}")
+        click.echo(
+            f"class unknown to the model (default relevance): {', '.join(problem.display(n) for n in scores.unknown)}"
+        )
 
 
 @main.command()
 @click.argument("domain_path", metavar="DOMAIN", type=click.Path(dir_okay=False))
 @click.argument("problem_path", metavar="PROBLEM", type=click.Path(dir_okay=False))
-@click.option("-o", "--output", "output", type=click.Path(dir_okay=False), required=True,
-              help="Pruned problem file ('-': standard output).")
+@click.option(
+    "-o",
+    "--output",
+    "output",
+    type=click.Path(dir_okay=False),
+    required=True,
+    help="Pruned problem file ('-': standard output).",
+)
 @scoring_options
 @click.option("--json", "as_json", is_flag=True, help="Machine-readable report on stdout.")
 @handle_errors
@@ -258,7 +283,8 @@ def prune(domain_path, problem_path, output, as_json, **values):
         total = len(result.task.problem.objects)
         click.echo(
             f"kept {len(result.kept)} of {total} objects ({len(result.restored)} restored by closure);"
-            f" wrote {written if output == STDOUT else output}", err=output == STDOUT
+            f" wrote {written if output == STDOUT else output}",
+            err=output == STDOUT,
         )
 
 
@@ -271,8 +297,13 @@ def prune(domain_path, problem_path, output, as_json, **values):
 @method_option
 @scoring_options
 @planning_options()
-@click.option("--plan-file", default="sas_plan", show_default=True, type=click.Path(dir_okay=False),
-              help="Where the plan goes ('-': standard output).")
+@click.option(
+    "--plan-file",
+    default="sas_plan",
+    show_default=True,
+    type=click.Path(dir_okay=False),
+    help="Where the plan goes ('-': standard output).",
+)
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON object.")
 @click.option("--quiet", "-q", is_flag=True, help="No progress messages.")
 @handle_errors
@@ -333,7 +364,9 @@ def _print_plan_summary(result: PlanResult, plan_file, err: bool = False) -> Non
 @click.argument("suite_dir", metavar="SUITE_DIR", type=click.Path())
 @scoring_options
 @click.option("--taus", default="0.1,0.2,0.3,0.4,0.5", show_default=True, help="Threshold values for both axes.")
-@click.option("--heatmap", type=click.Path(dir_okay=False), default=None, help="Write a PNG heatmap (needs matplotlib).")
+@click.option(
+    "--heatmap", type=click.Path(dir_okay=False), default=None, help="Write a PNG heatmap (needs matplotlib)."
+)
 @click.option("--json", "as_json", is_flag=True)
 @handle_errors
 def sweep(suite_dir, taus, heatmap, as_json, **values):

@@ -14,19 +14,36 @@ DEFAULT_METHODS = "relevance,pure,random"
 
 @click.command()
 @click.argument("suite_dirs", metavar="SUITE_DIR...", nargs=-1, required=True, type=click.Path())
-@click.option("--methods", default=DEFAULT_METHODS, show_default=True,
-              help=f"Comma-separated methods from: {', '.join(METHODS)}.")
-@click.option("--planners", default=None,
-              help="Comma-separated planners (fast-downward, up:NAME; a cmd:'TEMPLATE' last); default: --planner.")
+@click.option(
+    "--methods", default=DEFAULT_METHODS, show_default=True, help=f"Comma-separated methods from: {', '.join(METHODS)}."
+)
+@click.option(
+    "--planners",
+    default=None,
+    help="Comma-separated planners (fast-downward, up:NAME; a cmd:'TEMPLATE' last); default: --planner.",
+)
 @scoring_options(with_seed=False)
 @planning_options(per_job=True)
-@click.option("--jobs", "-j", type=int, default=1, show_default=True,
-              help="Jobs run at once locally (each drives one planner process).")
-@click.option("--store", "store_path", type=click.Path(dir_okay=False), default="results.sqlite", show_default=True,
-              help="SQLite results store; jobs already in it are skipped (resume).")
+@click.option(
+    "--jobs",
+    "-j",
+    type=int,
+    default=1,
+    show_default=True,
+    help="Jobs run at once locally (each drives one planner process).",
+)
+@click.option(
+    "--store",
+    "store_path",
+    type=click.Path(dir_okay=False),
+    default="results.sqlite",
+    show_default=True,
+    help="SQLite results store; jobs already in it are skipped (resume).",
+)
 @click.option("--scheduler", default=None, metavar="tcp://HOST:PORT", help="Run the jobs on this Dask scheduler.")
-@click.option("--scheduler-timeout", type=float, default=10.0, show_default=True,
-              help="Seconds to wait for the Dask scheduler.")
+@click.option(
+    "--scheduler-timeout", type=float, default=10.0, show_default=True, help="Seconds to wait for the Dask scheduler."
+)
 @click.option("--seeds", default="0", show_default=True, help="Comma-separated seeds; one job per seed.")
 @click.option("--quiet", "-q", is_flag=True, help="No progress display.")
 @handle_errors
@@ -59,8 +76,13 @@ def compare(suite_dirs, methods, planners, jobs, store_path, scheduler, schedule
 @click.argument("store_path", metavar="STORE", type=click.Path(dir_okay=False))
 @click.option("--format", "fmt", type=click.Choice(["markdown", "csv", "latex"]), default="markdown", show_default=True)
 @click.option("--suite", default=None, help="Only this suite.")
-@click.option("--plots", "plots_dir", type=click.Path(file_okay=False), default=None,
-              help="Also write a cactus plot and a relevance-vs-pure scatter (PNG) here; needs matplotlib.")
+@click.option(
+    "--plots",
+    "plots_dir",
+    type=click.Path(file_okay=False),
+    default=None,
+    help="Also write a cactus plot and a relevance-vs-pure scatter (PNG) here; needs matplotlib.",
+)
 @handle_errors
 def report(store_path, fmt, suite, plots_dir):
     """Print the comparison table computed from the rows of STORE."""
@@ -75,8 +97,12 @@ def report(store_path, fmt, suite, plots_dir):
 
 
 @click.command()
-@click.option("--workdir", type=click.Path(file_okay=False), default=None,
-              help="Where suites and results go (default: a new temporary directory, kept).")
+@click.option(
+    "--workdir",
+    type=click.Path(file_okay=False),
+    default=None,
+    help="Where suites and results go (default: a new temporary directory, kept).",
+)
 @click.option("--count", type=int, default=3, show_default=True, help="Problems per world.")
 @click.option("--timeout", type=float, default=60.0, show_default=True, help="Seconds per job.")
 @click.option("--jobs", "-j", type=int, default=2, show_default=True, help="Jobs run at once.")

@@ -70,19 +70,44 @@ def scoring_options(command=None, *, with_seed: bool = True):
     if command is None:
         return functools.partial(scoring_options, with_seed=with_seed)
     seed = [click.option("--seed", type=int, default=0, show_default=True, help="Seed of the random scorer.")]
-    return _apply(command, [
-        click.option("--scorer", type=click.Choice(sorted(SCORERS)), default=None,
-                     help="Scorer; default: 'model' when a knowledge model applies, else 'goal'."),
-        click.option("--model", "model_path", type=click.Path(dir_okay=False), default=None,
-                     help="Knowledge-model YAML (default: found next to the domain or among the shipped worlds)."),
-        click.option("--objective", default=None, help="Objective from the model (default: matched from the goal)."),
-        click.option("--task", "model_task", default=None, help="Fix the model's task: P(task | objective) = 1."),
-        click.option("--human", default=None, help="Apply this human's recorded preferences."),
-        click.option("--tau-class", type=float, default=DEFAULT_TAU, show_default=True,
-                     help="Class threshold tau_c in [0, 1]."),
-        click.option("--tau-element", type=float, default=DEFAULT_TAU, show_default=True,
-                     help="Element threshold tau_e in [0, 1]."),
-    ] + (seed if with_seed else []))
+    return _apply(
+        command,
+        [
+            click.option(
+                "--scorer",
+                type=click.Choice(sorted(SCORERS)),
+                default=None,
+                help="Scorer; default: 'model' when a knowledge model applies, else 'goal'.",
+            ),
+            click.option(
+                "--model",
+                "model_path",
+                type=click.Path(dir_okay=False),
+                default=None,
+                help="Knowledge-model YAML (default: found next to the domain or among the shipped worlds).",
+            ),
+            click.option(
+                "--objective", default=None, help="Objective from the model (default: matched from the goal)."
+            ),
+            click.option("--task", "model_task", default=None, help="Fix the model's task: P(task | objective) = 1."),
+            click.option("--human", default=None, help="Apply this human's recorded preferences."),
+            click.option(
+                "--tau-class",
+                type=float,
+                default=DEFAULT_TAU,
+                show_default=True,
+                help="Class threshold tau_c in [0, 1].",
+            ),
+            click.option(
+                "--tau-element",
+                type=float,
+                default=DEFAULT_TAU,
+                show_default=True,
+                help="Element threshold tau_e in [0, 1].",
+            ),
+        ]
+        + (seed if with_seed else []),
+    )
 
 
 def take_scoring(values: dict) -> ScoringOptions:
@@ -102,18 +127,36 @@ def planning_options(per_job: bool = False):
     per = "each job (relevance + planning)" if per_job else "the whole run"
 
     def group(command):
-        return _apply(command, [
-            click.option("--planner", default="fast-downward", show_default=True,
-                         help="fast-downward, up:NAME (a unified-planning engine) or cmd:'TEMPLATE' "
-                              "(an external planner; {domain} {problem} [{plan}])."),
-            click.option("--planner-config", default="lama-first", show_default=True,
-                         help="Fast Downward alias, registered name, or search string."),
-            click.option("--timeout", type=float, default=120.0, show_default=True, help=f"Seconds for {per}."),
-            click.option("--memory-limit", "memory_limit", type=int, default=None, help="Planner memory limit in MB."),
-            click.option("--no-relax", is_flag=True, help="One attempt only (the paper's behaviour)."),
-            click.option("--validator", "validators", multiple=True, type=click.Choice(["builtin", "up", "val"]),
-                         help="Validator(s) to use (default: builtin, plus VAL when on PATH)."),
-        ])
+        return _apply(
+            command,
+            [
+                click.option(
+                    "--planner",
+                    default="fast-downward",
+                    show_default=True,
+                    help="fast-downward, up:NAME (a unified-planning engine) or cmd:'TEMPLATE' "
+                    "(an external planner; {domain} {problem} [{plan}]).",
+                ),
+                click.option(
+                    "--planner-config",
+                    default="lama-first",
+                    show_default=True,
+                    help="Fast Downward alias, registered name, or search string.",
+                ),
+                click.option("--timeout", type=float, default=120.0, show_default=True, help=f"Seconds for {per}."),
+                click.option(
+                    "--memory-limit", "memory_limit", type=int, default=None, help="Planner memory limit in MB."
+                ),
+                click.option("--no-relax", is_flag=True, help="One attempt only (the paper's behaviour)."),
+                click.option(
+                    "--validator",
+                    "validators",
+                    multiple=True,
+                    type=click.Choice(["builtin", "up", "val"]),
+                    help="Validator(s) to use (default: builtin, plus VAL when on PATH).",
+                ),
+            ],
+        )
 
     return group
 

@@ -81,8 +81,9 @@ def own_path_checks(group: click.Group) -> None:
         for param in command.params:
             if isinstance(param.type, click.Path) and not isinstance(param.type, _UncheckedPath):
                 original = param.type
-                param.type = _UncheckedPath(file_okay=original.file_okay, dir_okay=original.dir_okay,
-                                            allow_dash=original.allow_dash)
+                param.type = _UncheckedPath(
+                    file_okay=original.file_okay, dir_okay=original.dir_okay, allow_dash=original.allow_dash
+                )
                 changed = True
         if changed and command.callback is not None:
             command.callback = _checked(command)

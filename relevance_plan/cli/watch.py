@@ -32,13 +32,18 @@ def report_json(report: EventReport, session: Session) -> dict:
         decision = report.determination
         kept = decision.kept if decision is not None else frozenset()
         data["kept"] = sorted(show(n, n) for n in kept)
-        data["restored"] = [{"object": show(r.name, r.name), "reason": r.reason}
-                            for r in (decision.restored if decision is not None else ())]
+        data["restored"] = [
+            {"object": show(r.name, r.name), "reason": r.reason}
+            for r in (decision.restored if decision is not None else ())
+        ]
         data["removed"] = len(decision.removed) if decision is not None else None
     data["added"] = [show(n, n) for n in report.added]
     data["dropped"] = [show(n, n) for n in report.dropped]  # a dropped object may have left: its name as given
-    data["ask"] = None if report.ask is None else {
-        "cue": report.ask.cue, "question": report.ask.question, "options": list(report.ask.options)}
+    data["ask"] = (
+        None
+        if report.ask is None
+        else {"cue": report.ask.cue, "question": report.ask.question, "options": list(report.ask.options)}
+    )
     data["determination_ms"] = round(report.seconds * 1000, 3)
     if report.plan is not None:
         data["plan_status"] = report.plan.status.value
@@ -60,12 +65,27 @@ def _lines(events_path: str):
 @click.command()
 @click.argument("domain_path", metavar="DOMAIN", type=click.Path(dir_okay=False))
 @click.argument("problem_path", metavar="PROBLEM", type=click.Path(dir_okay=False))
-@click.option("--events", "events_path", default="-", show_default=True, type=click.Path(dir_okay=False, allow_dash=True),
-              help="JSON-lines events file ('-': standard input).")
-@click.option("--plan", "plan_in_loop", is_flag=True,
-              help="Plan again whenever a determination changes the kept set (a 'plan' event always plans).")
-@click.option("--snapshot", "snapshot_dir", type=click.Path(file_okay=False), default=None,
-              help="After the last event, write DIR/current.pddl and DIR/pruned.pddl.")
+@click.option(
+    "--events",
+    "events_path",
+    default="-",
+    show_default=True,
+    type=click.Path(dir_okay=False, allow_dash=True),
+    help="JSON-lines events file ('-': standard input).",
+)
+@click.option(
+    "--plan",
+    "plan_in_loop",
+    is_flag=True,
+    help="Plan again whenever a determination changes the kept set (a 'plan' event always plans).",
+)
+@click.option(
+    "--snapshot",
+    "snapshot_dir",
+    type=click.Path(file_okay=False),
+    default=None,
+    help="After the last event, write DIR/current.pddl and DIR/pruned.pddl.",
+)
 @scoring_options
 @planning_options()
 @handle_errors
@@ -89,8 +109,15 @@ def watch(domain_path, problem_path, events_path, plan_in_loop, snapshot_dir, **
             path = write_text_atomic(Path(scratch) / f"problem-{next(runs)}.pddl", text)
             return planner.run(domain_path, str(path), time_limit=limit, memory_limit_mb=options.memory_limit_mb)
 
-        session = Session(domain, problem, options.scoring, domain_path=domain_path, plan_options=options,
-                          run_planner=run_planner, plan_in_loop=plan_in_loop)
+        session = Session(
+            domain,
+            problem,
+            options.scoring,
+            domain_path=domain_path,
+            plan_options=options,
+            run_planner=run_planner,
+            plan_in_loop=plan_in_loop,
+        )
         try:
             for line in _lines(events_path):
                 if not line.strip():

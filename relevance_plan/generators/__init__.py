@@ -10,8 +10,8 @@ The generator never depends on the pruning code; it writes problems with
 ``relevance_plan.pddl.formatter.format_problem``.
 """
 
-from relevance_plan.generators.classic import CLASSIC_WORLDS, generate_classic_problem, generate_classic_suite
 from relevance_plan.generators.catalog import CATALOG, CATALOG_TYPES, KITCHENWARE_TYPES
+from relevance_plan.generators.classic import CLASSIC_WORLDS, generate_classic_problem, generate_classic_suite
 from relevance_plan.generators.generate import (
     CONSTRAINT_COUNTS,
     DISTRACTOR_RANGES,

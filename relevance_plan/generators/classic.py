@@ -23,9 +23,10 @@ from __future__ import annotations
 import hashlib
 import math
 import random
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any
 
 from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.errors import UsageError
@@ -54,8 +55,12 @@ class Instance:
 TYPE_FACTS: dict[str, dict[str, tuple[str, ...]]] = {
     "blocksworld": {"block": ()},
     "logistics": {
-        "package": ("package",), "truck": ("truck",), "airplane": ("airplane",),
-        "location": ("location",), "airport": ("location", "airport"), "city": ("city",),
+        "package": ("package",),
+        "truck": ("truck",),
+        "airplane": ("airplane",),
+        "location": ("location",),
+        "airport": ("location", "airport"),
+        "city": ("city",),
     },
     "gripper": {"room": ("room",), "ball": ("ball",), "gripper": ("gripper",)},
     "ferry": {"car": ("car",), "location": ("location",)},
@@ -101,7 +106,7 @@ def _blocksworld(rng: random.Random, size: int, dense: bool = False) -> Instance
             below[upper] = lower
         inst.facts.append(("clear", tower[-1]))
         for position, block in enumerate(tower):
-            above[block] = tower[position + 1:]
+            above[block] = tower[position + 1 :]
     if dense:
         order = rng.sample(blocks, len(blocks))
         inst.goal = [("on", order[i], order[i + 1]) for i in range(len(order) - 1) if (i + 1) % 5]
@@ -184,7 +189,7 @@ def _gripper(rng: random.Random, size: int, dense: bool = False) -> Instance:
         where[ball] = rng.choice(rooms)
         inst.facts.append(("at", ball, where[ball]))
     needed = {robby, *grippers}
-    for ball in (balls if dense else rng.sample(balls, rng.randint(2, 4))):
+    for ball in balls if dense else rng.sample(balls, rng.randint(2, 4)):
         target = rng.choice([r for r in rooms if r != where[ball]])
         inst.goal.append(("at", ball, target))
         needed.update({ball, where[ball], target})
@@ -205,7 +210,7 @@ def _ferry(rng: random.Random, size: int, dense: bool = False) -> Instance:
         where[car] = rng.choice(locations)
         inst.facts.append(("at", car, where[car]))
     needed = {ferry_at}
-    for car in (cars if dense else rng.sample(cars, rng.randint(2, 3))):
+    for car in cars if dense else rng.sample(cars, rng.randint(2, 3)):
         target = rng.choice([loc for loc in locations if loc != where[car]])
         inst.goal.append(("at", car, target))
         needed.update({car, where[car], target})
@@ -250,7 +255,7 @@ def _grid(rng: random.Random, size: int, dense: bool = False) -> Instance:
         inst.facts.append(("key-shape", key, rng.choice(shapes)))
         inst.facts.append(("at", key, cells[rng.choice(reachable)]))
     # Goal keys start inside the start's open component (every key was placed there).
-    for key in (keys if dense else rng.sample(keys, rng.randint(1, 2))):
+    for key in keys if dense else rng.sample(keys, rng.randint(1, 2)):
         inst.goal.append(("at", key, cells[rng.choice(reachable)]))
     inst.necessary = None
     return inst
@@ -262,7 +267,7 @@ def _miconic(rng: random.Random, size: int, dense: bool = False) -> Instance:
     floors = [inst.add("floor", f"f{i}") for i in range(1, max(4, size // 8) + 1)]
     passengers = [inst.add("passenger", f"pass{i}") for i in range(1, max(4, size - len(inst.objects)) + 1)]
     for i, lower in enumerate(floors):
-        for upper in floors[i + 1:]:
+        for upper in floors[i + 1 :]:
             inst.facts.append(("above", lower, upper))
     lift = rng.choice(floors)
     inst.facts.append(("lift-at", lift))
@@ -272,7 +277,7 @@ def _miconic(rng: random.Random, size: int, dense: bool = False) -> Instance:
         trips[person] = (origin, destin)
         inst.facts += [("origin", person, origin), ("destin", person, destin), ("not-boarded", person)]
     needed = {lift}
-    for person in (passengers if dense else rng.sample(passengers, rng.randint(2, 4))):
+    for person in passengers if dense else rng.sample(passengers, rng.randint(2, 4)):
         inst.goal.append(("served", person))
         needed.update({person, *trips[person]})
     inst.necessary = sorted(needed)
@@ -332,7 +337,7 @@ def format_instance(inst: Instance, world: str, name: str, comment: str) -> str:
         by_class.setdefault(cls, []).append(obj)
     for cls, names in by_class.items():
         for start in range(0, len(names), 12):
-            chunk = " ".join(names[start:start + 12])
+            chunk = " ".join(names[start : start + 12])
             lines.append(f"    {chunk} - {cls}" if typed else f"    {chunk}")
     lines.append("  )")
     lines.append("  (:init")
@@ -353,7 +358,9 @@ def classic_problem_name(world: str, index: int, dense: bool = False) -> str:
     return f"{world}{'-dense' if dense else ''}-{index:03d}"
 
 
-def generate_classic_problem(world: str, seed: int, index: int, size: int | None = None, dense: bool = False) -> ClassicProblem:
+def generate_classic_problem(
+    world: str, seed: int, index: int, size: int | None = None, dense: bool = False
+) -> ClassicProblem:
     """Problem ``index`` of (world, seed, size); ``dense`` puts every movable object in the goal (the
     unpadded form, where nearly every object matters)."""
     base, typed = _split(world)
@@ -422,8 +429,12 @@ def generate_classic_suite(
 
     def make(index: int) -> SuiteProblem:
         problem = generate_classic_problem(world, seed, index, size)
-        return SuiteProblem(problem.name, problem.pddl_text, sidecar_json(problem.sidecar),
-                            {"objects_total": problem.sidecar["objects_total"]})
+        return SuiteProblem(
+            problem.name,
+            problem.pddl_text,
+            sidecar_json(problem.sidecar),
+            {"objects_total": problem.sidecar["objects_total"]},
+        )
 
     names = [classic_problem_name(world, index) for index in range(1, count + 1)]
     return write_suite(out_dir, DOMAINS_DIR / world / "domain.pddl", names, make, manifest, progress, force)

@@ -21,16 +21,17 @@ import os
 import random
 import shutil
 import tempfile
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any
 
 from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.errors import InputFileError, UsageError
-from relevance_plan.io import new_directory_mode
 from relevance_plan.generators.catalog import CATALOG
 from relevance_plan.generators.problem import choose_roles, format_scene, necessary_objects, relevant_objects
 from relevance_plan.generators.scenes import DIFFICULTIES, SCENES, WORLD_NAMES, Item, SceneLayout, name_key
+from relevance_plan.io import new_directory_mode
 
 GENERATOR = "relevance_plan.generators"
 GENERATOR_VERSION = "1"
@@ -77,6 +78,7 @@ def sidecar_json(data: dict[str, Any]) -> str:
 
 # --- arguments ---------------------------------------------------------------
 
+
 def _check_world(world: object, difficulty: object) -> None:
     if world not in WORLD_NAMES:
         raise UsageError(f"unknown world {world!r}: choose one of {', '.join(WORLD_NAMES)}")
@@ -107,6 +109,7 @@ def problem_rng(seed: int, world: str, difficulty: str, index: int) -> random.Ra
 
 
 # --- one problem -------------------------------------------------------------
+
 
 def problem_name(world: str, difficulty: str, index: int) -> str:
     return f"{world}-{difficulty}-{index:03d}"
@@ -260,6 +263,7 @@ def base_scene_problem(scene_name: str) -> GeneratedProblem:
 
 # --- files -------------------------------------------------------------------
 
+
 def _write_text(path: Path, text: str) -> None:
     with open(path, "w", encoding="utf-8", newline="\n") as handle:
         handle.write(text)
@@ -303,13 +307,17 @@ def _check_out_dir(out_dir: Path, planned: list[str], force: bool) -> set[str]:
         return set()
     own = _own_files(out_dir)
     if own is None and not force:
-        raise UsageError(f"output directory {out_dir} is not empty and holds no suite of ours;"
-                         " choose another or give --force (files of yours are never deleted)")
+        raise UsageError(
+            f"output directory {out_dir} is not empty and holds no suite of ours;"
+            " choose another or give --force (files of yours are never deleted)"
+        )
     own = own or set()
     clashes = sorted(name for name in planned if name in present and name not in own)
     if clashes and not force:
-        raise UsageError(f"output directory {out_dir} holds {clashes[0]}, which this generator did not write;"
-                         " move it or give --force to overwrite it")
+        raise UsageError(
+            f"output directory {out_dir} holds {clashes[0]}, which this generator did not write;"
+            " move it or give --force to overwrite it"
+        )
     return own & present
 
 
@@ -342,8 +350,12 @@ def generate_suite(
 
     def make(index: int) -> SuiteProblem:
         problem = generate_problem(world, difficulty, seed, index, distractors)
-        return SuiteProblem(problem.name, problem.pddl_text, problem.sidecar_text,
-                            {"distractor_count": problem.sidecar["distractor_count"]})
+        return SuiteProblem(
+            problem.name,
+            problem.pddl_text,
+            problem.sidecar_text,
+            {"distractor_count": problem.sidecar["distractor_count"]},
+        )
 
     names = [problem_name(world, difficulty, index) for index in range(1, count + 1)]
     return write_suite(out_dir, DOMAINS_DIR / world / "domain.pddl", names, make, manifest, progress, force)
@@ -457,5 +469,7 @@ def write_base_scenes(problems_dir: Path) -> list[Path]:
                 os.replace(temporary, target)
             written.append(problems_dir / f"{scene_name}.pddl")
     except OSError as error:
-        raise InputFileError(f"cannot write the base scenes: {error.strerror or error}", path=str(problems_dir)) from None
+        raise InputFileError(
+            f"cannot write the base scenes: {error.strerror or error}", path=str(problems_dir)
+        ) from None
     return written

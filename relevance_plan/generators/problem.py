@@ -31,9 +31,8 @@ the chosen role objects and goal items (``blockers``); every object in
 
 from __future__ import annotations
 
-from relevance_plan.pddl.formatter import format_problem
-
 from relevance_plan.generators.scenes import CONTAINER, SURFACE, SceneLayout, name_key
+from relevance_plan.pddl.formatter import format_problem
 
 Atom = tuple[str, ...]
 

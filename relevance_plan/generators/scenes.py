@@ -79,9 +79,18 @@ WORLDS: dict[str, World] = {
     "coffee": World(
         name="coffee",
         item_types=(
-            "cup", "coffee-source", "whitener", "stirrer",
-            "sweetener", "napkin", "ice-holder", "tea", "drink",
-            "plate", "bowl", *KITCHENWARE_TYPES[1:],
+            "cup",
+            "coffee-source",
+            "whitener",
+            "stirrer",
+            "sweetener",
+            "napkin",
+            "ice-holder",
+            "tea",
+            "drink",
+            "plate",
+            "bowl",
+            *KITCHENWARE_TYPES[1:],
         ),
         relevant_types=("cup", "coffee-source", "whitener", "stirrer", "napkin", "sweetener", "ice-holder"),
         roles=(("cup", "cup"), ("coffee-source", "coffee-source"), ("whitener", "whitener"), ("stirrer", "stirrer")),
@@ -92,8 +101,14 @@ WORLDS: dict[str, World] = {
     "cereal": World(
         name="cereal",
         item_types=(
-            "bowl", "cereal", "milk", "spoon",
-            "napkin", "sweetener", "fruit", "cup",
+            "bowl",
+            "cereal",
+            "milk",
+            "spoon",
+            "napkin",
+            "sweetener",
+            "fruit",
+            "cup",
             *KITCHENWARE_TYPES,
         ),
         relevant_types=("bowl", "cereal", "milk", "spoon", "napkin", "sweetener", "fruit"),
@@ -298,6 +313,7 @@ def compute_dependencies(scene: SceneLayout) -> tuple[Dependency, ...]:
 
 
 # --- the four base scenes ----------------------------------------------------
+
 
 def _surface(name: str) -> Place:
     return Place(name, SURFACE)

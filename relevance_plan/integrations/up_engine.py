@@ -37,12 +37,14 @@ from __future__ import annotations
 
 import dataclasses
 import time
+from collections.abc import Callable, Set
 from dataclasses import dataclass
-from typing import IO, AbstractSet, Callable, Optional, Type
+from typing import IO
 
 import unified_planning as up
 from unified_planning.engines import Engine, MetaEngine, OptimalityGuarantee
 from unified_planning.engines.mixins import OneshotPlannerMixin
+from unified_planning.engines.plan_validator import SequentialPlanValidator
 from unified_planning.engines.results import (
     POSITIVE_OUTCOMES,
     LogLevel,
@@ -51,7 +53,6 @@ from unified_planning.engines.results import (
     PlanGenerationResultStatus,
     ValidationResultStatus,
 )
-from unified_planning.engines.plan_validator import SequentialPlanValidator
 from unified_planning.exceptions import UPValueError
 from unified_planning.io import PDDLWriter
 from unified_planning.model import Problem, ProblemKind
@@ -163,7 +164,7 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin):
         return optimality_guarantee == OptimalityGuarantee.SATISFICING
 
     @staticmethod
-    def is_compatible_engine(engine: Type[Engine]) -> bool:
+    def is_compatible_engine(engine: type[Engine]) -> bool:
         if issubclass(engine, MetaEngine):
             # relevance[oversubscription[...]] would only be a weaker copy of relevance[...].
             return False
@@ -171,11 +172,11 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin):
         return engine.is_oneshot_planner() and engine.supports(classical)  # type: ignore[attr-defined]
 
     @staticmethod
-    def _supported_kind(engine: Type[Engine]) -> ProblemKind:
+    def _supported_kind(engine: type[Engine]) -> ProblemKind:
         return relevance_supported_kind().intersection(engine.supported_kind())
 
     @staticmethod
-    def _supports(problem_kind: ProblemKind, engine: Type[Engine]) -> bool:
+    def _supports(problem_kind: ProblemKind, engine: type[Engine]) -> bool:
         return problem_kind <= RelevanceMetaEngine._supported_kind(engine)
 
     @classmethod
@@ -189,10 +190,10 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin):
 
     def _solve(
         self,
-        problem: "up.model.AbstractProblem",
-        heuristic: Optional[Callable[["up.model.state.State"], Optional[float]]] = None,
-        timeout: Optional[float] = None,
-        output_stream: Optional[IO[str]] = None,
+        problem: up.model.AbstractProblem,
+        heuristic: Callable[[up.model.state.State], float | None] | None = None,
+        timeout: float | None = None,
+        output_stream: IO[str] | None = None,
     ) -> PlanGenerationResult:
         assert isinstance(problem, Problem)
         assert isinstance(self.engine, OneshotPlannerMixin)
@@ -205,7 +206,9 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin):
         stage = None
         try:
             stage = _RelevanceStage.build(problem, self._choose_model, options, warning_lines)
-            messages.append(f"scored {len(stage.scoring.task.problem.objects)} objects with the {stage.scoring.scorer} scorer")
+            messages.append(
+                f"scored {len(stage.scoring.task.problem.objects)} objects with the {stage.scoring.scorer} scorer"
+            )
         except RelevancePlanError as error:
             # Our reader or scorer cannot handle this problem: the whole problem is the only attempt.
             warning_lines.append(f"relevance stage skipped, planning on the whole problem: {error}")
@@ -218,24 +221,32 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin):
         else:
             selection = first_selection(stage.scoring, options)
             relevance_time = time.perf_counter() - started
-            attempts, widening_time = run_attempts(stage.scoring.task, selection, inner, options, started=started,
-                                                   model=stage.scoring.model)
+            attempts, widening_time = run_attempts(
+                stage.scoring.task, selection, inner, options, started=started, model=stage.scoring.model
+            )
             relevance_time += widening_time
         for attempt in attempts:
             messages.append(describe_attempt(attempt, total))
 
         found = inner.lifted.get(attempts[-1].number) if attempts else None
         if stage is not None:
-            result = summarise(stage.scoring.task, options, attempts, started, relevance_time, None,
-                               planner=self.engine.name, scorer=stage.scoring.scorer)
+            result = summarise(
+                stage.scoring.task,
+                options,
+                attempts,
+                started,
+                relevance_time,
+                None,
+                planner=self.engine.name,
+                scorer=stage.scoring.scorer,
+            )
             status, summary = _final_status(result, found, attempts)
         else:
             status, summary = _final_status_whole(problem, found, attempts)
         final_kept = attempts[-1].objects_kept if attempts else total
         first_kept = attempts[0].objects_kept if attempts else total
         messages.append(
-            f"{summary}; kept {final_kept} of {total} objects"
-            f" (first attempt {first_kept}), {len(attempts)} attempt(s)"
+            f"{summary}; kept {final_kept} of {total} objects (first attempt {first_kept}), {len(attempts)} attempt(s)"
         )
         metrics = {
             "objects_total": str(total),
@@ -252,8 +263,9 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin):
         logs += [LogMessage(LogLevel.INFO, f"{ENGINE_NAME}: {text}") for text in messages]
         if inner.last_result is not None and inner.last_result.log_messages:
             logs += inner.last_result.log_messages
-        return PlanGenerationResult(status, found if status in POSITIVE_OUTCOMES else None, self.name,
-                                    metrics=metrics, log_messages=logs)
+        return PlanGenerationResult(
+            status, found if status in POSITIVE_OUTCOMES else None, self.name, metrics=metrics, log_messages=logs
+        )
 
     def _choose_model(self, domain_name: str) -> KnowledgeModel | None:
         """The ``model`` param, else a shipped model for the ``domain`` param or the exported name."""
@@ -301,8 +313,10 @@ class _RelevanceStage:
         scoring = score_problem(task, scoring_options, model=model)
         if not scoring.scores.sufficient:
             # An engine cannot ask the human: fall back to what the goal alone says.
-            warnings.append(f"the {scoring.scorer} scorer has too little to go on ({scoring.scores.insufficiency}):"
-                            " using the goal scorer")
+            warnings.append(
+                f"the {scoring.scorer} scorer has too little to go on ({scoring.scores.insufficiency}):"
+                " using the goal scorer"
+            )
             scoring = score_problem(task, dataclasses.replace(scoring_options, scorer="goal"), model=None)
             scoring = dataclasses.replace(scoring, model=None)
         return cls(scoring, up_names, action_names)
@@ -346,9 +360,17 @@ class _InnerPlanner:
             else:
                 self.lifted[self.calls] = lifted
                 steps = tuple(self._reader_step(step) for step in lifted.actions)
-        return RunOutcome(status=status, exit_code=None, plan=steps, plan_cost=None, wall_time=wall,
-                          config=self.engine.name, planner=self.engine.name, raw_status=result.status.name,
-                          optimal=result.status is PlanGenerationResultStatus.SOLVED_OPTIMALLY)
+        return RunOutcome(
+            status=status,
+            exit_code=None,
+            plan=steps,
+            plan_cost=None,
+            wall_time=wall,
+            config=self.engine.name,
+            planner=self.engine.name,
+            raw_status=result.status.name,
+            optimal=result.status is PlanGenerationResultStatus.SOLVED_OPTIMALLY,
+        )
 
     def _reader_step(self, step: ActionInstance) -> str:
         if self.stage is None:
@@ -390,8 +412,11 @@ def describe_attempt(attempt: Attempt, total: int) -> str:
     )
     outcome = attempt.outcome.raw_status or attempt.outcome.status.name
     if attempt.validation is not None:
-        outcome += (", plan valid on the original problem" if attempt.validation.valid
-                    else ", plan INVALID on the original problem")
+        outcome += (
+            ", plan valid on the original problem"
+            if attempt.validation.valid
+            else ", plan INVALID on the original problem"
+        )
     limit = "no limit" if attempt.time_limit is None else f"limit {attempt.time_limit:.1f} s"
     return f"attempt {attempt.number}: {what}, {limit} -> {outcome} in {attempt.outcome.wall_time:.2f} s"
 
@@ -418,13 +443,22 @@ def _final_status(result, found, attempts) -> tuple[PlanGenerationResultStatus, 
     last = attempts[-1]
     if result.status is PlanStatus.NO_VALID_PLAN:
         if last.validation is not None:
-            return PlanGenerationResultStatus.INTERNAL_ERROR, "the inner planner's plan for the whole problem does not validate"
+            return (
+                PlanGenerationResultStatus.INTERNAL_ERROR,
+                "the inner planner's plan for the whole problem does not validate",
+            )
         if last.outcome.status is PlannerStatus.SEARCH_INCOMPLETE:
-            return PlanGenerationResultStatus.UNSOLVABLE_INCOMPLETELY, "the inner planner found no plan for the whole problem"
+            return (
+                PlanGenerationResultStatus.UNSOLVABLE_INCOMPLETELY,
+                "the inner planner found no plan for the whole problem",
+            )
     if result.status is PlanStatus.UNSOLVABLE:
         return PlanGenerationResultStatus.UNSOLVABLE_PROVEN, "the problem is unsolvable (proven on the whole problem)"
     status = _PLAN_TO_UP.get(result.status, PlanGenerationResultStatus.INTERNAL_ERROR)
-    return status, f"the inner planner reported {last.outcome.raw_status or last.outcome.status.name} on the whole problem"
+    return (
+        status,
+        f"the inner planner reported {last.outcome.raw_status or last.outcome.status.name} on the whole problem",
+    )
 
 
 def _final_status_whole(problem: Problem, found, attempts) -> tuple[PlanGenerationResultStatus, str]:
@@ -435,18 +469,20 @@ def _final_status_whole(problem: Problem, found, attempts) -> tuple[PlanGenerati
     if found is not None and last.outcome.status is PlannerStatus.SOLVED:
         validator = SequentialPlanValidator(environment=problem.environment)
         if validator.validate(problem, found).status is ValidationResultStatus.VALID:
-            return PlanGenerationResultStatus.SOLVED_SATISFICING, \
-                f"plan of {len(found.actions)} steps validated on the original problem"
+            return (
+                PlanGenerationResultStatus.SOLVED_SATISFICING,
+                f"plan of {len(found.actions)} steps validated on the original problem",
+            )
         return PlanGenerationResultStatus.INTERNAL_ERROR, "the inner planner's plan does not validate"
     return {v: k for k, v in _UP_TO_PLANNER.items() if k is not PlanGenerationResultStatus.SOLVED_OPTIMALLY}.get(
-        last.outcome.status, PlanGenerationResultStatus.INTERNAL_ERROR), \
-        f"the inner planner reported {last.outcome.raw_status} on the whole problem"
+        last.outcome.status, PlanGenerationResultStatus.INTERNAL_ERROR
+    ), f"the inner planner reported {last.outcome.raw_status} on the whole problem"
 
 
 # --------------------------------------------------------------------------- building and mapping back
 
 
-def restrict_problem(problem: Problem, removed: AbstractSet[str]) -> Problem:
+def restrict_problem(problem: Problem, removed: Set[str]) -> Problem:
     """A new UP problem without the objects named in ``removed`` and the initial facts that mention them.
 
     Design choice: the pruned problem is built in UP directly rather than by
@@ -476,7 +512,7 @@ def restrict_problem(problem: Problem, removed: AbstractSet[str]) -> Problem:
     return restricted
 
 
-def lift_plan(plan: "up.plans.Plan", problem: Problem) -> SequentialPlan | None:
+def lift_plan(plan: up.plans.Plan, problem: Problem) -> SequentialPlan | None:
     """The plan with every action and object replaced by the original problem's, by name.
 
     Returns None when the plan is not sequential or names something the
@@ -504,7 +540,7 @@ def lift_plan(plan: "up.plans.Plan", problem: Problem) -> SequentialPlan | None:
 # --------------------------------------------------------------------------- registration
 
 
-def register_relevance_engine(environment: "up.environment.Environment | None" = None) -> None:
+def register_relevance_engine(environment: up.environment.Environment | None = None) -> None:
     """Add the ``relevance`` meta-engine to ``environment``'s factory (the global one by default).
 
     Afterwards every compatible oneshot planner ``P`` is also available as

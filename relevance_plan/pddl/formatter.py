@@ -7,7 +7,7 @@ one layout.
 
 from __future__ import annotations
 
-from typing import Iterable, Mapping, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 
 Atom = Sequence[str]
 

@@ -19,9 +19,9 @@ Effects:
 
 from __future__ import annotations
 
+from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
-from typing import Iterable, Iterator, Mapping
 
 from relevance_plan.errors import DomainMismatchError, PDDLParseError, UnsupportedFeatureError
 from relevance_plan.pddl.sexpr import Node, Symbol, parse_sexpr
@@ -300,7 +300,9 @@ class _Reader:
         args = []
         for item in node.items[1:]:
             if isinstance(item, Node):
-                self.fail(f"nested list in atom '{head}' (numeric fluents are not supported)", item, UnsupportedFeatureError)
+                self.fail(
+                    f"nested list in atom '{head}' (numeric fluents are not supported)", item, UnsupportedFeatureError
+                )
             text = item.text.lower()
             if text.startswith("?"):
                 if ctx.variables is not None and text not in ctx.variables:
@@ -363,7 +365,7 @@ class _Context:
     objects: Mapping[str, str] | None
     variables: Mapping[str, str] | None
 
-    def with_variables(self, variables: Mapping[str, str]) -> "_Context":
+    def with_variables(self, variables: Mapping[str, str]) -> _Context:
         return _Context(self.types, self.predicates, self.objects, variables)
 
 
@@ -409,12 +411,14 @@ def read_domain(text: str, path: str | None = None) -> Domain:
             # Only (total-cost) is accepted: action costs are ignored by validation.
             for item in body:
                 if isinstance(item, Node) and reader.keyword_of(item) != "total-cost":
-                    reader.fail("numeric functions other than (total-cost) are not supported", item, UnsupportedFeatureError)
+                    reader.fail(
+                        "numeric functions other than (total-cost) are not supported", item, UnsupportedFeatureError
+                    )
         elif key in (":derived", ":durative-action", ":process", ":event", ":constraints"):
             reader.fail(f"'{key}' is not supported", section, UnsupportedFeatureError)
         else:
             reader.fail(f"unknown domain section '{key}'", section)
-    for type_name, parent in types.items():
+    for parent in list(types.values()):
         if parent and parent not in types:
             types[parent] = "object"
     for predicate, params in predicates.items():

@@ -83,7 +83,10 @@ def parse_sexpr(text: str, path: str | None = None) -> Node:
                 if token.startswith("\ufeff") and start == 0:
                     raise PDDLParseError(
                         "the file starts with a byte-order mark (BOM), which planners reject; save it as UTF-8"
-                        " without BOM", path=path, line=1)
+                        " without BOM",
+                        path=path,
+                        line=1,
+                    )
                 raise PDDLParseError(
                     f"unexpected token '{token}' outside any parenthesis", path=path, line=lines.line_of(start)
                 )

@@ -9,12 +9,12 @@ Cost is linear in the file size: no re-formatting, no grounding.
 
 from __future__ import annotations
 
-from typing import AbstractSet
+from collections.abc import Set
 
 from relevance_plan.pddl.reader import Problem
 
 
-def write_pruned_problem(problem: Problem, kept: AbstractSet[str]) -> str:
+def write_pruned_problem(problem: Problem, kept: Set[str]) -> str:
     """Return PDDL text of ``problem`` restricted to the objects in ``kept``."""
     cuts: list[tuple[int, int]] = []
     for names, type_symbol in problem.object_groups:
@@ -70,7 +70,7 @@ def _apply_cuts(text: str, cuts: list[tuple[int, int]]) -> str:
     for start, end in merged:
         if end <= position:
             continue
-        pieces.append(text[position:max(start, position)])
+        pieces.append(text[position : max(start, position)])
         position = end
     pieces.append(text[position:])
     return "".join(pieces)

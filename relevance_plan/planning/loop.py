@@ -20,9 +20,9 @@ from __future__ import annotations
 
 import enum
 import time
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, fields
 from pathlib import Path
-from typing import Callable, Sequence
 
 from relevance_plan.errors import UsageError
 from relevance_plan.io import load_domain, load_problem, scratch_directory, write_text_atomic
@@ -101,7 +101,7 @@ class PlanOptions:
         return ScoringOptions(**{name: getattr(self, name) for name in SCORING_FIELDS})
 
     @classmethod
-    def from_scoring(cls, scoring: ScoringOptions, **planning) -> "PlanOptions":
+    def from_scoring(cls, scoring: ScoringOptions, **planning) -> PlanOptions:
         return cls(**{name: getattr(scoring, name) for name in SCORING_FIELDS}, **planning)
 
     @property
@@ -287,8 +287,18 @@ def run_attempts(
             limit = remaining if final else max(1.0, remaining * options.first_share)
         outcome = call_planner(None if full else current, limit)
         validation, validation_time = _validate(task, outcome, options)
-        attempts.append(Attempt(number, kept, None if full else current.thresholds, len(extra), outcome,
-                                validation, limit, validation_time))
+        attempts.append(
+            Attempt(
+                number,
+                kept,
+                None if full else current.thresholds,
+                len(extra),
+                outcome,
+                validation,
+                limit,
+                validation_time,
+            )
+        )
         if validation is not None and validation.status is not ValidationStatus.INVALID:
             break  # valid, or no validator could run: report it, never retry blindly
         if not options.relax or full:
@@ -342,36 +352,56 @@ def plan_task(
     scoring = None
     selection = None
     if options.method != "pure":
-        scoring = score_problem(task, options.scoring, method=options.method, domain_path=domain_path,
-                                problem_path=problem_path)
+        scoring = score_problem(
+            task, options.scoring, method=options.method, domain_path=domain_path, problem_path=problem_path
+        )
         say(f"scoring {total} objects with the {scoring.scorer} scorer")
         overran = _overran("scoring", started, options, total)
         if overran is not None:
             return overran
         if not scoring.scores.sufficient:
             elapsed = time.perf_counter() - started
-            return PlanResult(method=options.method, status=PlanStatus.INSUFFICIENT_CUES, wall_time=elapsed,
-                              relevance_time=elapsed, objects_total=total, message=scoring.scores.insufficiency,
-                              planner=planner.name, scorer=scoring.scorer)
+            return PlanResult(
+                method=options.method,
+                status=PlanStatus.INSUFFICIENT_CUES,
+                wall_time=elapsed,
+                relevance_time=elapsed,
+                objects_total=total,
+                message=scoring.scores.insufficiency,
+                planner=planner.name,
+                scorer=scoring.scorer,
+            )
         selection = first_selection(scoring, options)
         overran = _overran("pruning and closure", started, options, total)
         if overran is not None:
             return overran
-        say(f"kept {len(selection.kept)} of {total} objects ({len(selection.restored)} restored by closure"
-            + (f", {len(selection.set_aside)} blocked alternatives set aside)" if selection.set_aside else ")"))
+        say(
+            f"kept {len(selection.kept)} of {total} objects ({len(selection.restored)} restored by closure"
+            + (f", {len(selection.set_aside)} blocked alternatives set aside)" if selection.set_aside else ")")
+        )
     relevance_time = time.perf_counter() - started
 
     with scratch_directory() as scratch:
+
         def call_planner(chosen: PruneResult | None, limit: float | None) -> RunOutcome:
             target = problem_path
             if chosen is not None:
                 target = str(write_text_atomic(Path(scratch) / f"pruned-{len(chosen.kept)}.pddl", chosen.text))
             return planner.run(domain_path, target, time_limit=limit, memory_limit_mb=options.memory_limit_mb)
 
-        attempts, widening_time = run_attempts(task, selection, call_planner, options, started=started,
-                                               model=scoring.model if scoring else None, say=say)
-    return summarise(task, options, attempts, started, relevance_time + widening_time, selection,
-                     planner=planner.name, scorer=scoring.scorer if scoring else None)
+        attempts, widening_time = run_attempts(
+            task, selection, call_planner, options, started=started, model=scoring.model if scoring else None, say=say
+        )
+    return summarise(
+        task,
+        options,
+        attempts,
+        started,
+        relevance_time + widening_time,
+        selection,
+        planner=planner.name,
+        scorer=scoring.scorer if scoring else None,
+    )
 
 
 def _overran(step: str, started: float, options: PlanOptions, total: int) -> PlanResult | None:
@@ -431,8 +461,12 @@ def summarise(
                 **common,
             )
         if validation is not None and validation.status is ValidationStatus.UNAVAILABLE:
-            return PlanResult(status=PlanStatus.VALIDATOR_UNAVAILABLE, validation=validation,
-                              message=f"a plan was found but NO VALIDATOR COULD RUN: {validation.message}", **common)
+            return PlanResult(
+                status=PlanStatus.VALIDATOR_UNAVAILABLE,
+                validation=validation,
+                message=f"a plan was found but NO VALIDATOR COULD RUN: {validation.message}",
+                **common,
+            )
         return PlanResult(
             status=PlanStatus.NO_VALID_PLAN,
             validation=validation,
@@ -440,8 +474,11 @@ def summarise(
             **common,
         )
     status = _PLANNER_TO_PLAN_STATUS.get(last.outcome.status, PlanStatus.PLANNER_ERROR)
-    if status is PlanStatus.INPUT_ERROR and last.outcome.exit_code in _CONFIG_ERROR_CODES \
-            and last.outcome.planner == "fast-downward":
+    if (
+        status is PlanStatus.INPUT_ERROR
+        and last.outcome.exit_code in _CONFIG_ERROR_CODES
+        and last.outcome.planner == "fast-downward"
+    ):
         status = PlanStatus.PLANNER_CONFIG_ERROR
     if status is PlanStatus.UNSOLVABLE and not last.full:
         # Only the full problem's unsolvability says anything about the user's problem.
@@ -451,12 +488,18 @@ def summarise(
     elif status is PlanStatus.UNSOLVABLE:
         message = "the problem is unsolvable"
     elif status is PlanStatus.PLANNER_CONFIG_ERROR:
-        message = (f"Fast Downward rejected --planner-config '{options.planner_config}'"
-                   f" (unknown alias or bad search string; exit code {last.outcome.exit_code})")
+        message = (
+            f"Fast Downward rejected --planner-config '{options.planner_config}'"
+            f" (unknown alias or bad search string; exit code {last.outcome.exit_code})"
+        )
     else:
         message = f"planner: {last.outcome.status.value} (exit code {last.outcome.exit_code})"
         output = last.outcome.log_tail.strip().splitlines()
-        if output and status in (PlanStatus.PLANNER_ERROR, PlanStatus.INPUT_ERROR, PlanStatus.UNSUPPORTED,
-                                 PlanStatus.PLANNER_CONFIG_ERROR):
+        if output and status in (
+            PlanStatus.PLANNER_ERROR,
+            PlanStatus.INPUT_ERROR,
+            PlanStatus.UNSUPPORTED,
+            PlanStatus.PLANNER_CONFIG_ERROR,
+        ):
             message += f"; last planner output: {output[-1].strip()[:200]}"
     return PlanResult(status=status, message=message, log_tail=last.outcome.log_tail, **common)

@@ -28,9 +28,10 @@ import shlex
 import shutil
 import sys
 import tempfile
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Callable, Protocol
+from typing import Protocol
 
 from relevance_plan import errors
 from relevance_plan.planning import runner
@@ -44,8 +45,9 @@ class Planner(Protocol):
 
     def version(self) -> str: ...
 
-    def run(self, domain_path: str, problem_path: str, *, time_limit: float | None,
-            memory_limit_mb: int | None) -> RunOutcome: ...
+    def run(
+        self, domain_path: str, problem_path: str, *, time_limit: float | None, memory_limit_mb: int | None
+    ) -> RunOutcome: ...
 
 
 def _watchdog_deadline(time_limit: float | None) -> float | None:
@@ -109,8 +111,9 @@ class FastDownwardPlanner:
         return version
 
     def run(self, domain_path, problem_path, *, time_limit, memory_limit_mb) -> RunOutcome:
-        return runner.run_fast_downward(domain_path, problem_path, config=self.config, time_limit=time_limit,
-                                        memory_limit_mb=memory_limit_mb)
+        return runner.run_fast_downward(
+            domain_path, problem_path, config=self.config, time_limit=time_limit, memory_limit_mb=memory_limit_mb
+        )
 
 
 # --------------------------------------------------------------------------- up:NAME
@@ -156,7 +159,8 @@ class UnifiedPlanningPlanner:
         if self.engine not in installed_up_engines():
             raise errors.UsageError(
                 f"unified-planning engine '{self.engine}' is not installed (installed: "
-                f"{', '.join(installed_up_engines()) or 'none'}); {PLANNERS_EXTRA_HINT} adds pyperplan, symk and lpg")
+                f"{', '.join(installed_up_engines()) or 'none'}); {PLANNERS_EXTRA_HINT} adds pyperplan, symk and lpg"
+            )
 
     def version(self) -> str:
         import importlib.metadata  # slow to import; only batch keys need it
@@ -172,11 +176,24 @@ class UnifiedPlanningPlanner:
         with tempfile.TemporaryDirectory(prefix="relevance-plan-up-") as tmp:
             workdir = Path(tmp)
             plan_path = workdir / "plan.txt"
-            command = [sys.executable, "-m", "relevance_plan.planning.up_child", self.engine,
-                       str(Path(domain_path).absolute()), str(Path(problem_path).absolute()), str(plan_path),
-                       "none" if time_limit is None else f"{time_limit:.3f}"]
-            run = runner.run_process_group(command, workdir, _watchdog_deadline(time_limit), what=self.name,
-                                           program=sys.executable, memory_limit_mb=memory_limit_mb)
+            command = [
+                sys.executable,
+                "-m",
+                "relevance_plan.planning.up_child",
+                self.engine,
+                str(Path(domain_path).absolute()),
+                str(Path(problem_path).absolute()),
+                str(plan_path),
+                "none" if time_limit is None else f"{time_limit:.3f}",
+            ]
+            run = runner.run_process_group(
+                command,
+                workdir,
+                _watchdog_deadline(time_limit),
+                what=self.name,
+                program=sys.executable,
+                memory_limit_mb=memory_limit_mb,
+            )
             parsed = parse_ipc_plan(plan_path.read_text(errors="replace")) if plan_path.is_file() else None
             log = _log_tail(workdir)
         status = UP_CHILD_STATUS.get(run.exit_code, PlannerStatus.PLANNER_CRASH)
@@ -187,10 +204,18 @@ class UnifiedPlanningPlanner:
         elif status is PlannerStatus.PLANNER_CRASH and "MemoryError" in log:
             status = PlannerStatus.OUT_OF_MEMORY
         return RunOutcome(
-            status=status, exit_code=run.exit_code, plan=parsed[0] if parsed and status is PlannerStatus.SOLVED else (),
-            plan_cost=parsed[1] if parsed else None, wall_time=run.wall_time, cpu_time=run.cpu_time,
-            peak_memory_mb=run.peak_memory_mb, config=self.engine, log_tail=log,
-            killed_by_watchdog=run.watchdog_fired, process_group=run.process_group, planner=self.name,
+            status=status,
+            exit_code=run.exit_code,
+            plan=parsed[0] if parsed and status is PlannerStatus.SOLVED else (),
+            plan_cost=parsed[1] if parsed else None,
+            wall_time=run.wall_time,
+            cpu_time=run.cpu_time,
+            peak_memory_mb=run.peak_memory_mb,
+            config=self.engine,
+            log_tail=log,
+            killed_by_watchdog=run.watchdog_fired,
+            process_group=run.process_group,
+            planner=self.name,
             raw_status=status.name,
         )
 
@@ -223,12 +248,16 @@ class CommandPlanner:
         found = set(_PLACEHOLDER_RE.findall(self.template))
         unknown = found - _PLACEHOLDERS
         if unknown:
-            raise errors.UsageError(f"planner command template has unknown placeholder(s) "
-                                    f"{', '.join('{' + u + '}' for u in sorted(unknown))} "
-                                    "(use {domain}, {problem} and optionally {plan})")
+            raise errors.UsageError(
+                f"planner command template has unknown placeholder(s) "
+                f"{', '.join('{' + u + '}' for u in sorted(unknown))} "
+                "(use {domain}, {problem} and optionally {plan})"
+            )
         missing = {"domain", "problem"} - found
         if missing:
-            raise errors.UsageError(f"planner command template needs {' and '.join('{' + m + '}' for m in sorted(missing))}")
+            raise errors.UsageError(
+                f"planner command template needs {' and '.join('{' + m + '}' for m in sorted(missing))}"
+            )
         self.executable()
 
     def executable(self) -> str:
@@ -249,12 +278,21 @@ class CommandPlanner:
         with tempfile.TemporaryDirectory(prefix="relevance-plan-cmd-") as tmp:
             workdir = Path(tmp)
             plan_path = workdir / "plan.txt"
-            values = {"domain": str(Path(domain_path).absolute()), "problem": str(Path(problem_path).absolute()),
-                      "plan": str(plan_path)}
+            values = {
+                "domain": str(Path(domain_path).absolute()),
+                "problem": str(Path(problem_path).absolute()),
+                "plan": str(plan_path),
+            }
             command = [_PLACEHOLDER_RE.sub(lambda m: values[m.group(1)], part) for part in self.arguments]
             command[0] = self.executable()
-            run = runner.run_process_group(command, workdir, _watchdog_deadline(time_limit), what=self.name,
-                                           program=command[0], memory_limit_mb=memory_limit_mb)
+            run = runner.run_process_group(
+                command,
+                workdir,
+                _watchdog_deadline(time_limit),
+                what=self.name,
+                program=command[0],
+                memory_limit_mb=memory_limit_mb,
+            )
             uses_plan_file = "{plan}" in self.template
             if uses_plan_file:
                 text = plan_path.read_text(errors="replace") if plan_path.is_file() else None
@@ -273,10 +311,18 @@ class CommandPlanner:
         else:
             status = PlannerStatus.SOLVED
         return RunOutcome(
-            status=status, exit_code=run.exit_code, plan=parsed[0] if status is PlannerStatus.SOLVED else (),
-            plan_cost=parsed[1] if parsed else None, wall_time=run.wall_time, cpu_time=run.cpu_time,
-            peak_memory_mb=run.peak_memory_mb, config=self.template, log_tail=log,
-            killed_by_watchdog=run.watchdog_fired, process_group=run.process_group, planner=self.name,
+            status=status,
+            exit_code=run.exit_code,
+            plan=parsed[0] if status is PlannerStatus.SOLVED else (),
+            plan_cost=parsed[1] if parsed else None,
+            wall_time=run.wall_time,
+            cpu_time=run.cpu_time,
+            peak_memory_mb=run.peak_memory_mb,
+            config=self.template,
+            log_tail=log,
+            killed_by_watchdog=run.watchdog_fired,
+            process_group=run.process_group,
+            planner=self.name,
             raw_status=status.name,
         )
 

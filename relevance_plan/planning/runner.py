@@ -156,26 +156,25 @@ class RunOutcome:
         return self.status is PlannerStatus.SOLVED
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _locate_driver(override: str | None) -> Path:
     if override:
         path = Path(override).expanduser()
         if not path.is_file():
-            raise errors.PlannerError(
-                f"Fast Downward driver not found at {path} (from ${FAST_DOWNWARD_ENV})")
+            raise errors.PlannerError(f"Fast Downward driver not found at {path} (from ${FAST_DOWNWARD_ENV})")
         return path.resolve()
     # find_spec locates the package without importing it (its __init__
     # pulls in unified_planning, which is slow).
     spec = importlib.util.find_spec("up_fast_downward")
     if spec is None or not spec.submodule_search_locations:
-        raise errors.PlannerError(
-            f"up-fast-downward is not installed; install it or set ${FAST_DOWNWARD_ENV}")
+        raise errors.PlannerError(f"up-fast-downward is not installed; install it or set ${FAST_DOWNWARD_ENV}")
     for location in spec.submodule_search_locations:
         path = Path(location) / "downward" / "fast-downward.py"
         if path.is_file():
             return path.resolve()
     raise errors.PlannerError(
-        f"up-fast-downward has no downward/fast-downward.py; reinstall it or set ${FAST_DOWNWARD_ENV}")
+        f"up-fast-downward has no downward/fast-downward.py; reinstall it or set ${FAST_DOWNWARD_ENV}"
+    )
 
 
 def find_fast_downward() -> Path:
@@ -210,12 +209,15 @@ def check_planner_names(domain, problem) -> None:
     for kind, name in names:
         if not name.isascii():
             raise errors.UnsupportedFeatureError(
-                f"{kind} '{name}' has a non-ASCII name, which Fast Downward does not accept", path=domain.path)
+                f"{kind} '{name}' has a non-ASCII name, which Fast Downward does not accept", path=domain.path
+            )
     for name in problem.objects:
         if not name.isascii():
             raise errors.UnsupportedFeatureError(
                 f"object '{problem.display(name)}' has a non-ASCII name, which Fast Downward does not accept",
-                path=problem.path, line=_object_line(problem, name))
+                path=problem.path,
+                line=_object_line(problem, name),
+            )
 
 
 def _object_line(problem, name: str) -> int | None:
@@ -245,21 +247,27 @@ def _split_driver_options(arguments: tuple[str, ...]) -> tuple[list[str], list[s
     before: list[str] = []
     index = 0
     while index + 1 < len(arguments) and arguments[index] in _DRIVER_OPTIONS:
-        before.extend(arguments[index:index + 2])
+        before.extend(arguments[index : index + 2])
         index += 2
     return before, list(arguments[index:])
 
 
-def _build_command(python: str, driver: Path, domain: Path, problem: Path, config: str,
-                   time_limit: float | None, memory_limit_mb: int | None) -> list[str]:
+def _build_command(
+    python: str,
+    driver: Path,
+    domain: Path,
+    problem: Path,
+    config: str,
+    time_limit: float | None,
+    memory_limit_mb: int | None,
+) -> list[str]:
     limits: list[str] = []
     if time_limit is not None:
         limits += ["--overall-time-limit", f"{math.ceil(time_limit)}s"]
     if memory_limit_mb is not None:
         limits += ["--overall-memory-limit", f"{memory_limit_mb}M"]
     before, after = _split_driver_options(planner_arguments(config))
-    return [python, str(driver), "--plan-file", PLAN_FILE, *limits, *before,
-            str(domain), str(problem), *after]
+    return [python, str(driver), "--plan-file", PLAN_FILE, *limits, *before, str(domain), str(problem), *after]
 
 
 class Interrupted(KeyboardInterrupt):
@@ -425,8 +433,7 @@ def _read_plan(workdir: Path) -> tuple[tuple[str, ...], int | None] | None:
         cost = _PLAN_COST_RE.search(text)
         if cost is None:
             continue  # cut off mid-write by a kill; an earlier plan may be whole
-        steps = tuple(line.strip()[1:-1].strip().lower() for line in text.splitlines()
-                      if line.strip().startswith("("))
+        steps = tuple(line.strip()[1:-1].strip().lower() for line in text.splitlines() if line.strip().startswith("("))
         return steps, int(cost.group(1))
     return None
 
@@ -448,28 +455,41 @@ _OUT_OF_MEMORY_MARKERS = ("MemoryError", "failed to map segment", "Cannot alloca
 _PYTHON_FINALIZE_FAILED = 120
 
 
-def _refine_status(status: PlannerStatus, exit_code: int, log: str,
-                   cpu_time: float, driver_time_limit: float | None,
-                   memory_limited: bool = False) -> PlannerStatus:
+def _refine_status(
+    status: PlannerStatus,
+    exit_code: int,
+    log: str,
+    cpu_time: float,
+    driver_time_limit: float | None,
+    memory_limited: bool = False,
+) -> PlannerStatus:
     """Split exit codes the driver uses for several causes, by the log."""
     if exit_code == _TRANSLATE_CRITICAL_ERROR:
         if "Could not read file" in log:
             return PlannerStatus.INPUT_ERROR
         if "MemoryError" in log:  # limit so low that Python could not start
             return PlannerStatus.OUT_OF_MEMORY
-    if memory_limited and status is PlannerStatus.PLANNER_CRASH and (
-            exit_code == _PYTHON_FINALIZE_FAILED or any(marker in log for marker in _OUT_OF_MEMORY_MARKERS)):
+    if (
+        memory_limited
+        and status is PlannerStatus.PLANNER_CRASH
+        and (exit_code == _PYTHON_FINALIZE_FAILED or any(marker in log for marker in _OUT_OF_MEMORY_MARKERS))
+    ):
         return PlannerStatus.OUT_OF_MEMORY
     # A component that ignores SIGXCPU gets SIGKILL at the hard CPU limit.
-    if (exit_code == -signal.SIGKILL and driver_time_limit is not None
-            and cpu_time >= driver_time_limit - 1.0):
+    if exit_code == -signal.SIGKILL and driver_time_limit is not None and cpu_time >= driver_time_limit - 1.0:
         return PlannerStatus.OUT_OF_TIME
     return status
 
 
-def _classify(exit_code: int, has_plan: bool, killed_by_watchdog: bool, log: str,
-              cpu_time: float, driver_time_limit: float | None,
-              memory_limited: bool = False) -> PlannerStatus:
+def _classify(
+    exit_code: int,
+    has_plan: bool,
+    killed_by_watchdog: bool,
+    log: str,
+    cpu_time: float,
+    driver_time_limit: float | None,
+    memory_limited: bool = False,
+) -> PlannerStatus:
     if has_plan:
         # A plan file with its cost line is complete, even if the run was then
         # stopped (anytime configs end by hitting a limit).
@@ -500,9 +520,16 @@ def _limit_memory(megabytes: int) -> None:
     resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
 
 
-def run_process_group(command: list[str], workdir: Path, deadline: float | None, *, what: str,
-                      program: Path | str, env: dict | None = None,
-                      memory_limit_mb: int | None = None) -> ProcessRun:
+def run_process_group(
+    command: list[str],
+    workdir: Path,
+    deadline: float | None,
+    *,
+    what: str,
+    program: Path | str,
+    env: dict | None = None,
+    memory_limit_mb: int | None = None,
+) -> ProcessRun:
     """Run ``command`` in ``workdir`` as the leader of its own session, output to ``workdir/planner.log``.
 
     A watchdog kills the whole group ``deadline`` seconds after the start;
@@ -512,8 +539,7 @@ def run_process_group(command: list[str], workdir: Path, deadline: float | None,
     # The guard starts the command, so a missing program must be caught here.
     executable = command[0] if os.sep in command[0] else shutil.which(command[0])
     if executable is None or not os.access(executable, os.X_OK) or os.path.isdir(executable):
-        raise errors.PlannerError(f"cannot start {what}: {command[0]} is not an executable program",
-                                  path=str(program))
+        raise errors.PlannerError(f"cannot start {what}: {command[0]} is not an executable program", path=str(program))
     started = time.monotonic()
     # The guard kills the group when this process dies (its pipe's write end
     # closes, even on kill -9); os.pipe() fds are close-on-exec, so no other
@@ -525,13 +551,21 @@ def run_process_group(command: list[str], workdir: Path, deadline: float | None,
             try:
                 process = subprocess.Popen(
                     # -I -S: the guard needs the standard library only; skipping site saves start-up
-                    [sys.executable, "-I", "-S", str(_GUARD), str(guard_read), *command], cwd=workdir,
-                    stdin=subprocess.DEVNULL, stdout=log_file, stderr=subprocess.STDOUT,
-                    start_new_session=True, close_fds=True, pass_fds=(guard_read,), env=env,
-                    preexec_fn=None if memory_limit_mb is None else functools.partial(_limit_memory, memory_limit_mb))
+                    [sys.executable, "-I", "-S", str(_GUARD), str(guard_read), *command],
+                    cwd=workdir,
+                    stdin=subprocess.DEVNULL,
+                    stdout=log_file,
+                    stderr=subprocess.STDOUT,
+                    start_new_session=True,
+                    close_fds=True,
+                    pass_fds=(guard_read,),
+                    env=env,
+                    preexec_fn=None if memory_limit_mb is None else functools.partial(_limit_memory, memory_limit_mb),
+                )
             except OSError as error:
-                raise errors.PlannerError(f"cannot start {what}: {error.strerror or error}",
-                                          path=str(program)) from None
+                raise errors.PlannerError(
+                    f"cannot start {what}: {error.strerror or error}", path=str(program)
+                ) from None
             finally:
                 os.close(guard_read)
         # start_new_session: the guard leads its own group, pgid == pid.
@@ -580,13 +614,17 @@ def run_fast_downward(
         raise errors.UsageError(f"memory limit must be positive, got {memory_limit_mb}")
     driver = find_fast_downward()
     command = _build_command(
-        python, driver, domain, problem, config,
+        python,
+        driver,
+        domain,
+        problem,
+        config,
         time_limit if driver_limits else None,
-        memory_limit_mb if driver_limits else None)
+        memory_limit_mb if driver_limits else None,
+    )
     deadline = None
     if time_limit is not None:
-        grace = watchdog_grace if watchdog_grace is not None else max(DEFAULT_WATCHDOG_GRACE,
-                                                                      0.1 * time_limit)
+        grace = watchdog_grace if watchdog_grace is not None else max(DEFAULT_WATCHDOG_GRACE, 0.1 * time_limit)
         deadline = time_limit + grace
 
     with tempfile.TemporaryDirectory(prefix="relevance-plan-fd-") as tmp:
@@ -595,9 +633,15 @@ def run_fast_downward(
         log = (workdir / LOG_FILE).read_text(errors="replace")
         plan = _read_plan(workdir)
     killed_by_watchdog = run.watchdog_fired and os.WIFSIGNALED(run.wait_status)
-    status = _classify(run.exit_code, plan is not None, killed_by_watchdog, log, run.cpu_time,
-                       time_limit if driver_limits else None,
-                       memory_limited=driver_limits and memory_limit_mb is not None)
+    status = _classify(
+        run.exit_code,
+        plan is not None,
+        killed_by_watchdog,
+        log,
+        run.cpu_time,
+        time_limit if driver_limits else None,
+        memory_limited=driver_limits and memory_limit_mb is not None,
+    )
     return RunOutcome(
         status=status,
         exit_code=run.exit_code,
@@ -627,7 +671,11 @@ def run_val(domain_path: str, problem_path: str, plan_text: str, timeout: float 
         try:
             completed = subprocess.run(
                 [validate, str(domain_path), str(problem_path), str(plan_path)],
-                cwd=tmp, capture_output=True, text=True, timeout=timeout, stdin=subprocess.DEVNULL,
+                cwd=tmp,
+                capture_output=True,
+                text=True,
+                timeout=timeout,
+                stdin=subprocess.DEVNULL,
             )
         except (OSError, subprocess.TimeoutExpired) as error:
             return None, f"Validate could not run: {error}"

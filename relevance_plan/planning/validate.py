@@ -16,8 +16,8 @@ from __future__ import annotations
 import enum
 import itertools
 import shutil
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import Callable, Mapping, Sequence
 
 from relevance_plan.pddl.reader import Domain, Formula, Problem, all_objects
 
@@ -141,7 +141,9 @@ def validate_builtin(domain: Domain, problem: Problem, plan: Sequence[PlanStep])
         action = domain.action(step[0])
         shown = "(" + " ".join(step) + ")"
         if action is None:
-            return ValidationResult(ValidationStatus.INVALID, "builtin", f"step {number} {shown}: unknown action", number)
+            return ValidationResult(
+                ValidationStatus.INVALID, "builtin", f"step {number} {shown}: unknown action", number
+            )
         args = step[1:]
         if len(args) != len(action.parameters):
             return ValidationResult(
@@ -184,8 +186,8 @@ def validate_with_up(domain: Domain, problem: Problem, plan: Sequence[PlanStep])
     if domain.path is None or problem.path is None:
         return ValidationResult(ValidationStatus.UNAVAILABLE, "up", "needs the domain and problem files on disk")
     try:
-        from unified_planning.engines.results import ValidationResultStatus
         from unified_planning.engines.plan_validator import SequentialPlanValidator
+        from unified_planning.engines.results import ValidationResultStatus
         from unified_planning.io import PDDLReader
         from unified_planning.shortcuts import get_environment
     except ImportError as error:  # pragma: no cover - depends on the installation

@@ -14,8 +14,8 @@ Nothing here grounds an action.  Two results feed the rest of the pipeline:
 from __future__ import annotations
 
 from collections import defaultdict
+from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import Mapping
 
 from relevance_plan.pddl.reader import Domain, Formula, Problem, effect_literals, formula_atoms
 
@@ -50,7 +50,7 @@ def index_init(problem: Problem) -> InitIndex:
             is_functional = True
             for atom in atoms:
                 value = atom[1 + key]
-                rest = atom[1:1 + key] + atom[2 + key:]
+                rest = atom[1 : 1 + key] + atom[2 + key :]
                 previous = seen.setdefault(value, rest)
                 if previous != rest:
                     is_functional = False

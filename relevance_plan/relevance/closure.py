@@ -10,8 +10,8 @@ model declares.  Every object put back carries the fact that brought it.
 from __future__ import annotations
 
 from collections import defaultdict
+from collections.abc import Iterable, Set
 from dataclasses import dataclass
-from typing import AbstractSet, Iterable
 
 from relevance_plan.relevance.analysis import ConstraintRule, InitIndex
 
@@ -40,11 +40,11 @@ class Restored:
 
 
 def close_over_constraints(
-    kept: AbstractSet[str],
+    kept: Set[str],
     rules: Iterable[ConstraintRule],
     index: InitIndex,
-    candidates: AbstractSet[str],
-    singleton_predicates: AbstractSet[str] = frozenset(),
+    candidates: Set[str],
+    singleton_predicates: Set[str] = frozenset(),
 ) -> tuple[frozenset, tuple[Restored, ...]]:
     """Return (closed kept set, what was put back and why); inputs are not changed.
 

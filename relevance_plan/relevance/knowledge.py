@@ -9,18 +9,19 @@ from __future__ import annotations
 
 import math
 import os
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from types import MappingProxyType
-from typing import Any, Mapping
+from typing import Any
 
 import yaml
 
+from relevance_plan.data import DOMAINS_DIR as REPOSITORY_DOMAINS
 from relevance_plan.errors import ModelError, UsageError
 from relevance_plan.relevance.scene import PLACEMENT_CONDITIONS, ScenePredicates
 
 SCHEMA_VERSION = 1
-from relevance_plan.data import DOMAINS_DIR as REPOSITORY_DOMAINS
 
 
 class _LineDict(dict):
@@ -47,8 +48,9 @@ class _Loader(yaml.SafeLoader):
     def compose_node(self, parent, index):
         if self.check_event(yaml.AliasEvent):
             event = self.peek_event()
-            raise ModelError("YAML aliases ('*name') are not allowed in a knowledge model",
-                             line=event.start_mark.line + 1)
+            raise ModelError(
+                "YAML aliases ('*name') are not allowed in a knowledge model", line=event.start_mark.line + 1
+            )
         self._depth += 1
         try:
             if self._depth > MAX_YAML_NESTING:
@@ -189,7 +191,9 @@ class _Checker:
     def known_keys(self, parent: _LineDict, allowed: set[str], where: str) -> None:
         for key in parent:
             if key not in allowed:
-                self.fail(f"unknown key '{key}' in {where} (expected one of: {', '.join(sorted(allowed))})", parent, key)
+                self.fail(
+                    f"unknown key '{key}' in {where} (expected one of: {', '.join(sorted(allowed))})", parent, key
+                )
 
 
 def parse_model(text: str, path: str = "<model>") -> KnowledgeModel:
@@ -207,8 +211,20 @@ def parse_model(text: str, path: str = "<model>") -> KnowledgeModel:
         check.fail("the model must be a YAML mapping")
     check.known_keys(
         data,
-        {"version", "domain", "description", "entropy_bound", "defaults", "scene", "objectives", "tasks",
-         "classes", "placement", "humans", "dependencies"},
+        {
+            "version",
+            "domain",
+            "description",
+            "entropy_bound",
+            "defaults",
+            "scene",
+            "objectives",
+            "tasks",
+            "classes",
+            "placement",
+            "humans",
+            "dependencies",
+        },
         "the model",
     )
     if data.get("version") != SCHEMA_VERSION:
@@ -222,10 +238,16 @@ def parse_model(text: str, path: str = "<model>") -> KnowledgeModel:
 
     defaults = check.mapping(data, "defaults", required=False)
     check.known_keys(defaults, {"unknown_class_relevance", "kind_relevance"}, "'defaults'")
-    unknown_relevance = check.probability(defaults, "unknown_class_relevance", "defaults.unknown_class_relevance") \
-        if "unknown_class_relevance" in defaults else 0.05
-    default_kind = check.probability(defaults, "kind_relevance", "defaults.kind_relevance") \
-        if "kind_relevance" in defaults else 0.5
+    unknown_relevance = (
+        check.probability(defaults, "unknown_class_relevance", "defaults.unknown_class_relevance")
+        if "unknown_class_relevance" in defaults
+        else 0.05
+    )
+    default_kind = (
+        check.probability(defaults, "kind_relevance", "defaults.kind_relevance")
+        if "kind_relevance" in defaults
+        else 0.5
+    )
 
     scene_section = check.mapping(data, "scene", required=False)
     check.known_keys(scene_section, {"location", "support", "access", "human_location"}, "'scene'")
@@ -249,7 +271,9 @@ def parse_model(text: str, path: str = "<model>") -> KnowledgeModel:
         kinds = check.names(entry, "kinds") + tuple(k for k in kind_probs if k not in check.names(entry, "kinds"))
         types = check.names(entry, "types")
         if not kinds and not types:
-            check.fail(f"class '{name}' needs 'types' or 'kinds' to say which objects belong to it", class_section, name)
+            check.fail(
+                f"class '{name}' needs 'types' or 'kinds' to say which objects belong to it", class_section, name
+            )
         classes[name] = ModelClass(
             name=name,
             types=types,
@@ -269,7 +293,7 @@ def parse_model(text: str, path: str = "<model>") -> KnowledgeModel:
         for class_name in entry:
             if class_name not in classes:
                 check.fail(f"task '{task}' names unknown class '{class_name}'", entry, class_name)
-        task_classes[task] = check.probabilities(entry, lambda class_name: f"P({class_name} | {task})")
+        task_classes[task] = check.probabilities(entry, lambda class_name, task=task: f"P({class_name} | {task})")
 
     objectives: dict[str, Objective] = {}
     objective_section = check.mapping(data, "objectives")
@@ -311,7 +335,9 @@ def parse_model(text: str, path: str = "<model>") -> KnowledgeModel:
             if objective not in objectives:
                 check.fail(f"human '{name}' names unknown objective '{objective}'", entry, "objectives")
             if not isinstance(tasks, _LineDict):
-                check.fail(f"human '{name}': objective '{objective}' must map tasks to probabilities", entry, "objectives")
+                check.fail(
+                    f"human '{name}': objective '{objective}' must map tasks to probabilities", entry, "objectives"
+                )
             probabilities = check.probabilities(tasks, f"{name}: P(task | {objective})")
             _check_distribution(check, tasks, probabilities, f"{name}: P(task | {objective})")
             for task in probabilities:
@@ -331,7 +357,9 @@ def parse_model(text: str, path: str = "<model>") -> KnowledgeModel:
             if class_name not in classes:
                 check.fail(f"human '{name}' names unknown class '{class_name}'", entry, "kind_relevance")
             if not isinstance(entry_kinds, _LineDict):
-                check.fail(f"human '{name}': kind relevance of '{class_name}' must be a mapping", entry, "kind_relevance")
+                check.fail(
+                    f"human '{name}': kind relevance of '{class_name}' must be a mapping", entry, "kind_relevance"
+                )
             kinds[class_name] = check.probabilities(entry_kinds, f"{name}: P(kind | {class_name})")
         humans[name] = Human(
             name=name,
@@ -356,7 +384,12 @@ def parse_model(text: str, path: str = "<model>") -> KnowledgeModel:
             if isinstance(entry[key], bool) or not isinstance(entry[key], int) or entry[key] < 1:
                 check.fail(f"'{key}' is a 1-based argument position", entry, key)
         dependencies.append(
-            Dependency(str(entry["predicate"]).lower(), entry["when_kept"] - 1, entry["restore"] - 1, str(entry.get("reason", "")))
+            Dependency(
+                str(entry["predicate"]).lower(),
+                entry["when_kept"] - 1,
+                entry["restore"] - 1,
+                str(entry.get("reason", "")),
+            )
         )
 
     return KnowledgeModel(

@@ -6,8 +6,8 @@ N = |predicted| / |truth|, the object ratio that predicts downstream speed.
 
 from __future__ import annotations
 
+from collections.abc import Iterable, Mapping, Set
 from dataclasses import dataclass
-from typing import AbstractSet, Iterable, Mapping
 
 from relevance_plan.relevance.scorers import ScoreResult
 
@@ -23,7 +23,7 @@ class SetMetrics:
         return {"precision": self.precision, "recall": self.recall, "f1": self.f1, "N": self.ratio}
 
 
-def set_metrics(predicted: AbstractSet[str], truth: AbstractSet[str]) -> SetMetrics:
+def set_metrics(predicted: Set[str], truth: Set[str]) -> SetMetrics:
     hits = len(predicted & truth)
     precision = hits / len(predicted) if predicted else (1.0 if not truth else 0.0)
     recall = hits / len(truth) if truth else 1.0
@@ -72,9 +72,9 @@ class Inquiries:
 
 def plan_inquiries(
     scores: ScoreResult,
-    selected: AbstractSet[str],
+    selected: Set[str],
     kinds: Mapping[str, str],
-    structural_classes: AbstractSet[str],
+    structural_classes: Set[str],
     necessity_threshold: float = NECESSITY_THRESHOLD,
 ) -> Inquiries:
     """Which kinds the robot serves without asking, and which it asks about.

@@ -3,15 +3,15 @@
 from __future__ import annotations
 
 from collections import defaultdict
+from collections.abc import Sequence, Set
 from dataclasses import dataclass, field
-from typing import AbstractSet, Sequence
 
+from relevance_plan.pddl.writer import write_pruned_problem
 from relevance_plan.relevance.analysis import ConstraintRule, infer_constraint_rules, single_valued_predicates
 from relevance_plan.relevance.closure import Restored, close_over_constraints
-from relevance_plan.relevance.reachability import repair_selection
 from relevance_plan.relevance.knowledge import KnowledgeModel, check_threshold
+from relevance_plan.relevance.reachability import repair_selection
 from relevance_plan.relevance.scorers import PlanningTask, ScoreResult
-from relevance_plan.pddl.writer import write_pruned_problem
 
 DEFAULT_TAU = 0.2
 FULL_ABOVE = 0.8  # a selection keeping more than this share of the objects plans on the full problem
@@ -28,7 +28,7 @@ class Thresholds:
         check_threshold(self.tau_class, "--tau-class")
         check_threshold(self.tau_element, "--tau-element")
 
-    def scaled(self, factor: float) -> "Thresholds":
+    def scaled(self, factor: float) -> Thresholds:
         return Thresholds(self.tau_class * factor, self.tau_element * factor)
 
 
@@ -57,7 +57,9 @@ def constraint_rules(task: PlanningTask, model: KnowledgeModel | None) -> tuple[
     if model is not None:
         for dependency in model.dependencies:
             rules.append(
-                ConstraintRule(dependency.predicate, dependency.when_kept, dependency.restore, "model", dependency.reason)
+                ConstraintRule(
+                    dependency.predicate, dependency.when_kept, dependency.restore, "model", dependency.reason
+                )
             )
     return tuple(rules)
 
@@ -69,7 +71,9 @@ def can_serve_goal(task: PlanningTask, name: str) -> bool:
     return name in task.goal_objects or any(t in roles for t in domain.ancestors(task.object_type(name)))
 
 
-def select_relevant(task: PlanningTask, scores: ScoreResult, thresholds: Thresholds, goal_filter: bool = False) -> frozenset:
+def select_relevant(
+    task: PlanningTask, scores: ScoreResult, thresholds: Thresholds, goal_filter: bool = False
+) -> frozenset:
     """Elements whose class passes tau_c (when classes are scored) and whose score passes tau_e.
 
     With ``goal_filter``, relevant objects no action toward the goal can use
@@ -88,7 +92,9 @@ def select_relevant(task: PlanningTask, scores: ScoreResult, thresholds: Thresho
     return frozenset(selected)
 
 
-def free_alternatives(task: PlanningTask, scores: ScoreResult, selected: frozenset, restored: Sequence[Restored]) -> frozenset:
+def free_alternatives(
+    task: PlanningTask, scores: ScoreResult, selected: frozenset, restored: Sequence[Restored]
+) -> frozenset:
     """``selected`` without the objects that something stands on, when another selected
     object of the same model class stands free.
 
@@ -119,7 +125,7 @@ def prune_with_scores(
     scores: ScoreResult,
     thresholds: Thresholds = Thresholds(),
     model: KnowledgeModel | None = None,
-    extra: AbstractSet[str] = frozenset(),
+    extra: Set[str] = frozenset(),
     goal_filter: bool = False,
     prefer_free: bool = False,
     *,
@@ -177,7 +183,9 @@ def prune_with_scores(
     )
 
 
-def full_problem(task: PlanningTask, scores: ScoreResult, thresholds: Thresholds, selected=frozenset(), restored=()) -> PruneResult:
+def full_problem(
+    task: PlanningTask, scores: ScoreResult, thresholds: Thresholds, selected=frozenset(), restored=()
+) -> PruneResult:
     """The result that keeps every object: the attempt loop plans on the user's own file."""
     return PruneResult(
         task=task,
@@ -193,7 +201,7 @@ def full_problem(task: PlanningTask, scores: ScoreResult, thresholds: Thresholds
 def widen(
     result: PruneResult,
     factor: float,
-    extra: AbstractSet[str] = frozenset(),
+    extra: Set[str] = frozenset(),
     model: KnowledgeModel | None = None,
     goal_filter: bool = False,
     *,
@@ -216,18 +224,20 @@ def widen(
         return full_problem(task, result.scores, result.thresholds.scaled(factor), result.selected), everything
     ranked = ranked_by_score(result)
     extra = frozenset(extra) | frozenset(ranked[: target - len(result.kept)])
-    widened = prune_with_scores(task, result.scores, result.thresholds.scaled(factor), model, extra, goal_filter,
-                                full_above=full_above)
+    widened = prune_with_scores(
+        task, result.scores, result.thresholds.scaled(factor), model, extra, goal_filter, full_above=full_above
+    )
     while len(widened.kept) < target and len(widened.kept) < total:
         # closure or the thresholds cannot account for every addition: add more by rank
         missing = ranked_by_score(widened)
         extra = extra | frozenset(missing[: target - len(widened.kept)])
-        widened = prune_with_scores(task, result.scores, result.thresholds.scaled(factor), model, extra, goal_filter,
-                                    full_above=full_above)
+        widened = prune_with_scores(
+            task, result.scores, result.thresholds.scaled(factor), model, extra, goal_filter, full_above=full_above
+        )
     return widened, extra
 
 
-def ranked_names(task: PlanningTask, scores: ScoreResult, kept: AbstractSet[str] = frozenset()) -> list[str]:
+def ranked_names(task: PlanningTask, scores: ScoreResult, kept: Set[str] = frozenset()) -> list[str]:
     """Objects outside ``kept``, most relevant first: by score, then by hops from the goal's objects."""
     values = scores.element_scores
     distance = task.goal_distance

@@ -22,8 +22,8 @@ past a work budget rather than cost more than the planner would.
 from __future__ import annotations
 
 from collections import defaultdict, deque
+from collections.abc import Callable, Mapping, Sequence, Set
 from dataclasses import dataclass
-from typing import AbstractSet, Callable, Mapping, Sequence
 
 from relevance_plan.pddl.reader import Formula
 from relevance_plan.relevance.analysis import object_distances
@@ -70,7 +70,9 @@ def _schemas(domain) -> list[_Schema]:
         pre = tuple(_conjuncts(action.precondition))
         add = tuple(_adds(action.effect, ()))
         result.append(
-            _Schema(action.name, tuple(v for v, _ in action.parameters), tuple(t for _, t in action.parameters), pre, add)
+            _Schema(
+                action.name, tuple(v for v, _ in action.parameters), tuple(t for _, t in action.parameters), pre, add
+            )
         )
     return result
 
@@ -93,7 +95,7 @@ class _OutOfBudget(Exception):
     pass
 
 
-def relaxed_reachability(task, kept: AbstractSet[str], budget: int = DEFAULT_BUDGET) -> Reachability:
+def relaxed_reachability(task, kept: Set[str], budget: int = DEFAULT_BUDGET) -> Reachability:
     """Whether the goal's positive atoms are reachable under the delete relaxation using ``kept`` objects only.
 
     Each fact is processed once, in the order it was reached; an action
@@ -172,7 +174,7 @@ def relaxed_reachability(task, kept: AbstractSet[str], budget: int = DEFAULT_BUD
                 if size == 0:
                     break
         predicate, args = pre[best]
-        rest = pre[:best] + pre[best + 1:]
+        rest = pre[:best] + pre[best + 1 :]
         for fact in processed.get(best_key, ()):
             work[0] += 1
             if work[0] > budget:
@@ -194,7 +196,7 @@ def relaxed_reachability(task, kept: AbstractSet[str], budget: int = DEFAULT_BUD
                 binding = _match(schema.pre[i][1], fact, {})
                 if binding is None:
                     continue
-                for found in list(join(list(schema.pre[:i] + schema.pre[i + 1:]), binding)):
+                for found in list(join(list(schema.pre[:i] + schema.pre[i + 1 :]), binding)):
                     apply(schema, found)
     except _OutOfBudget:
         return Reachability(False, False)
@@ -264,7 +266,7 @@ def _relaxed_plan(facts: dict, goal: Sequence[tuple]) -> tuple[list, set]:
     return plan, objects
 
 
-CloseFn = Callable[[AbstractSet[str]], tuple]
+CloseFn = Callable[[Set[str]], tuple]
 
 
 def repair_selection(
@@ -327,8 +329,10 @@ def repair_selection(
     for step in check.plan:
         for arg in step[1:]:
             step_of.setdefault(arg, step)
-    reasons = [Restored(name, "", "reachability", step_of.get(name, ("goal",)))
-               for name in sorted(used, key=lambda n: (rank.get(n, len(rank)), n))]
+    reasons = [
+        Restored(name, "", "reachability", step_of.get(name, ("goal",)))
+        for name in sorted(used, key=lambda n: (rank.get(n, len(rank)), n))
+    ]
     closed, closure_reasons = close(kept | frozenset(used))
     reasons.extend(r for r in closure_reasons if r.name not in used and r.name not in kept)
     return closed, tuple(reasons), check

@@ -9,8 +9,8 @@ whether that place is a closed container, what it stands on, what stands on it.
 from __future__ import annotations
 
 import re
+from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import Mapping
 
 from relevance_plan.pddl.reader import Domain, Problem
 

@@ -114,9 +114,7 @@ def infer_types(domain: Domain, problem: Problem) -> InferredTypes:
     typed_problem = dataclasses.replace(
         problem, objects=MappingProxyType({o: _class_name(signature[o]) for o in problem.objects})
     )
-    return InferredTypes(
-        typed_domain, typed_problem, True, tuple((_class_name(c), tuple(sorted(c))) for c in classes)
-    )
+    return InferredTypes(typed_domain, typed_problem, True, tuple((_class_name(c), tuple(sorted(c))) for c in classes))
 
 
 def _is_subtype(types, type_name: str, of: str) -> bool:

@@ -4,5 +4,15 @@ from relevance_plan.session.events import EVENT_KINDS, Event, EventError
 from relevance_plan.session.session import Ask, Determination, EventReport, PlanReport, Session
 from relevance_plan.session.triggers import TRIGGERS, Change
 
-__all__ = ["EVENT_KINDS", "TRIGGERS", "Ask", "Change", "Determination", "Event", "EventError", "EventReport",
-           "PlanReport", "Session"]
+__all__ = [
+    "EVENT_KINDS",
+    "TRIGGERS",
+    "Ask",
+    "Change",
+    "Determination",
+    "Event",
+    "EventError",
+    "EventReport",
+    "PlanReport",
+    "Session",
+]

@@ -39,8 +39,9 @@ ALL = None  # "every element may have changed"
 
 def request_for(options: ScoringOptions, model: KnowledgeModel | None) -> ScoreRequest:
     """The request ``score_problem`` builds from the options (no oracle in a live session)."""
-    return ScoreRequest(model=model, objective=options.objective, model_task=options.model_task,
-                        human=options.human, seed=options.seed)
+    return ScoreRequest(
+        model=model, objective=options.objective, model_task=options.model_task, human=options.human, seed=options.seed
+    )
 
 
 class _SceneView:
@@ -89,8 +90,12 @@ class LiveModelScores:
 
     def describe(self, names) -> None:
         """Describe again the named elements (their place, what stands on them, ...)."""
-        names = [n for n in names if n in self.scene.objects
-                 and not (n in self.element_class and scored_by_contents(self.element_class[n], self.model))]
+        names = [
+            n
+            for n in names
+            if n in self.scene.objects
+            and not (n in self.element_class and scored_by_contents(self.element_class[n], self.model))
+        ]
         if not names:
             return
         index, p = self.scene.index, self.predicates

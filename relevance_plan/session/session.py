@@ -23,8 +23,8 @@ problem text and time limit to a ``RunOutcome``.
 from __future__ import annotations
 
 import time
+from collections.abc import Callable
 from dataclasses import dataclass, field, replace
-from typing import Callable
 
 from relevance_plan.pddl.reader import Domain, Problem, goal_objects
 from relevance_plan.pddl.writer import write_pruned_problem
@@ -223,17 +223,30 @@ class Session:
             plan = self.plan()
         elif event.kind == "plan":
             plan = PlanReport(PlanStatus.INPUT_ERROR, message="this session has no planner")
-        elif reasons and self.plan_in_loop and self.decision is not None and self.sufficient \
-                and not self.scene.idle_goal \
-                and (self.decision.kept != self.planned_kept or self.scene.goal != self.planned_goal
-                     or change.touched & kept_before):
+        elif (
+            reasons
+            and self.plan_in_loop
+            and self.decision is not None
+            and self.sufficient
+            and not self.scene.idle_goal
+            and (
+                self.decision.kept != self.planned_kept
+                or self.scene.goal != self.planned_goal
+                or change.touched & kept_before
+            )
+        ):
             plan = self.plan()
         return replace(report, plan=plan) if plan is not None else report
 
     def _rejected(self, kind: str, error: EventError) -> EventReport:
-        return EventReport(self.seq, kind, error=error.message, sufficient=self.scores.sufficient,
-                           stale=not self.scores.sufficient and self.decision is not None,
-                           determination=self.decision)
+        return EventReport(
+            self.seq,
+            kind,
+            error=error.message,
+            sufficient=self.scores.sufficient,
+            stale=not self.scores.sufficient and self.decision is not None,
+            determination=self.decision,
+        )
 
     def _show(self, name: str) -> str:
         return self.scene.display.get(name, name)
@@ -335,11 +348,13 @@ class Session:
                 rules.setdefault(rule.predicate, []).append(rule)
             self._rules = (functional, rules)
         fact = event.facts[0]
-        return frozenset(fact[1 + rule.when_kept] for rule in self._rules[1].get(fact[0], ())
-                         if fact[1 + rule.when_kept] in kept)
+        return frozenset(
+            fact[1 + rule.when_kept] for rule in self._rules[1].get(fact[0], ()) if fact[1 + rule.when_kept] in kept
+        )
 
-    def _closure_rules_changed(self, functional_before: frozenset, single_valued_before: frozenset,
-                               kept: frozenset) -> bool:
+    def _closure_rules_changed(
+        self, functional_before: frozenset, single_valued_before: frozenset, kept: frozenset
+    ) -> bool:
         """Whether closure from ``kept`` could follow other facts now: a single-valued predicate
         came or went, or a predicate became (or stopped being) functional at a position where
         some fact has a kept object."""
@@ -357,8 +372,9 @@ class Session:
 
     def _recount_passing(self) -> None:
         thresholds = self.options.thresholds
-        self.passing = {n for n in self.scene.objects
-                        if self.scores.passes(n, thresholds.tau_class, thresholds.tau_element)}
+        self.passing = {
+            n for n in self.scene.objects if self.scores.passes(n, thresholds.tau_class, thresholds.tau_element)
+        }
 
     # ------------------------------------------------------------------ determination
 
@@ -429,8 +445,12 @@ class Session:
             validation = validate_plan(self.domain, problem, self.plan_steps, options.validators)
             if validation.valid:
                 self._planned(self.plan_steps)
-                return PlanReport(PlanStatus.SOLVED, self.plan_steps, "previous",
-                                  f"previous plan still valid on the current state ({validation.validator})")
+                return PlanReport(
+                    PlanStatus.SOLVED,
+                    self.plan_steps,
+                    "previous",
+                    f"previous plan still valid on the current state ({validation.validator})",
+                )
         selection = None
         scorer = None
         if self.decision is None and self.scores.sufficient:
@@ -449,8 +469,16 @@ class Session:
             return self.run_planner(problem.text if chosen is None else chosen.text, limit)
 
         attempts, widening = run_attempts(task, selection, call_planner, options, started=started, model=self.model)
-        result = summarise(task, options, attempts, started, relevance_time + widening, selection, scorer=scorer,
-                           planner=attempts[0].outcome.planner if attempts else options.planner)
+        result = summarise(
+            task,
+            options,
+            attempts,
+            started,
+            relevance_time + widening,
+            selection,
+            scorer=scorer,
+            planner=attempts[0].outcome.planner if attempts else options.planner,
+        )
         if result.status is PlanStatus.SOLVED:
             self._planned(result.plan)
         return PlanReport(result.status, result.plan, "planner", result.message, result)
@@ -471,7 +499,7 @@ class _LiveTask:
     goal_objects: frozenset = field(default=frozenset())
 
     @classmethod
-    def of(cls, scene: LiveScene, with_problem: bool = True) -> "_LiveTask":
+    def of(cls, scene: LiveScene, with_problem: bool = True) -> _LiveTask:
         """``with_problem=False``: only the domain and the index (enough for the closure rules)."""
         if not with_problem:
             return cls(scene.domain, None, _IndexView(scene))

@@ -11,8 +11,8 @@ determining from scratch, planning and snapshots.
 from __future__ import annotations
 
 from collections import defaultdict
+from collections.abc import Iterable
 from types import MappingProxyType
-from typing import Iterable
 
 from relevance_plan.pddl.formatter import format_atom
 from relevance_plan.pddl.reader import Domain, Formula, Problem, formula_atoms, read_problem

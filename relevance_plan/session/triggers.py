@@ -15,8 +15,8 @@ determination from scratch would give.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable
 
 from relevance_plan.session.events import Event
 

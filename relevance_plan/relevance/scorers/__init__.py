@@ -6,9 +6,9 @@ A scorer is a function ``score(task, request) -> ScoreResult`` registered in
 
 from __future__ import annotations
 
-from typing import Callable
+from collections.abc import Callable
 
-from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult, PlanningTask
+from relevance_plan.relevance.scorers.base import PlanningTask, ScoreRequest, ScoreResult
 from relevance_plan.relevance.scorers.goal import score_by_goal
 from relevance_plan.relevance.scorers.model import score_by_model
 from relevance_plan.relevance.scorers.oracle import score_by_oracle

@@ -2,14 +2,14 @@
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from functools import cached_property
-from typing import Mapping
 
+from relevance_plan.pddl.reader import Domain, Problem, goal_objects
 from relevance_plan.relevance.analysis import GoalAnalysis, InitIndex, analyse_goal, index_init, object_distances
 from relevance_plan.relevance.knowledge import KnowledgeModel
 from relevance_plan.relevance.types import InferredTypes, infer_types
-from relevance_plan.pddl.reader import Domain, Problem, goal_objects
 
 
 @dataclass(frozen=True, eq=False)

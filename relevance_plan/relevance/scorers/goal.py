@@ -21,7 +21,7 @@ widening bring the others back in this order when needed.
 
 from __future__ import annotations
 
-from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult, PlanningTask
+from relevance_plan.relevance.scorers.base import PlanningTask, ScoreRequest, ScoreResult
 
 ROLE_DECAY = 0.6
 NEIGHBOUR_SCORE = 0.3

@@ -16,10 +16,10 @@ import math
 from dataclasses import dataclass, field
 
 from relevance_plan.errors import ModelError
-from relevance_plan.relevance.knowledge import Human, KnowledgeModel, ModelClass
 from relevance_plan.pddl.reader import formula_atoms
+from relevance_plan.relevance.knowledge import Human, KnowledgeModel, ModelClass
 from relevance_plan.relevance.scene import Element, build_scene
-from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult, PlanningTask
+from relevance_plan.relevance.scorers.base import PlanningTask, ScoreRequest, ScoreResult
 
 UNKNOWN_CLASS = "(unknown)"
 # More than this share of objects of unknown class: the model is not about this scene.
@@ -236,7 +236,7 @@ def score_by_model(task: PlanningTask, request: ScoreRequest) -> ScoreResult:
     for name, element in scene.elements.items():
         if element.place is not None and name in scores:
             contents[element.place] = max(contents.get(element.place, 0.0), scores[name])
-    for name, element in scene.elements.items():
+    for name in scene.elements:
         if name in scores:
             continue
         scores[name] = contents.get(name, 0.0)

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from relevance_plan.errors import UsageError
-from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult, PlanningTask
+from relevance_plan.relevance.scorers.base import PlanningTask, ScoreRequest, ScoreResult
 
 
 def score_by_oracle(task: PlanningTask, request: ScoreRequest) -> ScoreResult:

@@ -10,7 +10,7 @@ from __future__ import annotations
 import hashlib
 import random as _random
 
-from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult, PlanningTask
+from relevance_plan.relevance.scorers.base import PlanningTask, ScoreRequest, ScoreResult
 
 
 def _rng(seed: int, problem_name: str) -> _random.Random:
