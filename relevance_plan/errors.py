@@ -1,6 +1,6 @@
 """One exception hierarchy for the whole package.
 
-Library code raises these; only ``cli.py`` turns them into exit codes.
+Library code raises these; only the CLI (``relevance_plan.cli``) turns them into exit codes.
 Each error carries the offending file and, where known, the line, so the
 CLI can print one precise line.
 """
@@ -69,6 +69,14 @@ class DomainMismatchError(RelevancePlanError):
 
 class ModelError(RelevancePlanError):
     """An invalid knowledge-model file (bad YAML, probability outside [0, 1], ...)."""
+
+
+class PlanFormatError(RelevancePlanError):
+    """A plan file that is not in the IPC format (a planner wrote something else)."""
+
+
+class SimulationTimeout(RelevancePlanError):
+    """The builtin simulator ran past its deadline."""
 
 
 class PlannerError(RelevancePlanError):

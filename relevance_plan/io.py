@@ -11,7 +11,8 @@ from collections.abc import Iterable
 from pathlib import Path
 
 from relevance_plan.errors import InputFileError, UsageError
-from relevance_plan.pddl.reader import Domain, Problem, read_domain, read_problem
+from relevance_plan.pddl.model import Domain, Problem
+from relevance_plan.pddl.parser import read_domain, read_problem
 
 
 def read_bytes(path: str | os.PathLike, what: str = "file") -> bytes:

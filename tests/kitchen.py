@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from relevance_plan.pddl.formatter import format_problem
+from relevance_plan.pddl.formatter import format_problem_parts
 
 COFFEE_OBJECTS = {
     "surface": ["counter_1", "table_1"],
@@ -51,4 +51,4 @@ def coffee_problem(extra_plates: int = 0, plate_on_cup: bool = True, name: str =
     stand("dinner_plate_2", "table_1")
     for i in range(1, extra_plates + 1):
         stand(f"side_plate_{i}", "counter_1" if i % 2 else "table_1")
-    return format_problem(name, "coffee", objects, init, [("coffee-served", "alice")])
+    return format_problem_parts(name, "coffee", objects, init, [("coffee-served", "alice")])

@@ -74,8 +74,7 @@ def test_prune_writes_a_problem_that_planners_read(runner, problem, tmp_path):
     outcome = run_fast_downward(COFFEE_DOMAIN, out, time_limit=60)
     assert outcome.solved
     domain, original = load_task(COFFEE_DOMAIN, problem)
-    steps = [tuple(step.split()) for step in outcome.plan]
-    assert validate_plan(domain, original, steps).valid
+    assert validate_plan(domain, original, outcome.plan).valid
 
 
 def test_plan_json_fields_and_plan_file(runner, problem, tmp_path):

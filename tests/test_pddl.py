@@ -5,7 +5,8 @@ from kitchen import coffee_problem
 
 from relevance_plan.errors import DomainMismatchError, PDDLParseError, UnsupportedFeatureError
 from relevance_plan.io import load_domain
-from relevance_plan.pddl.reader import goal_objects, read_domain, read_problem
+from relevance_plan.pddl.model import goal_objects
+from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.pddl.writer import write_pruned_problem
 
 
@@ -57,14 +58,19 @@ def test_bad_problems_raise_errors_with_file_and_line(coffee, mutate, error, lin
     assert "\n" not in str(caught.value)
 
 
-def test_unsupported_features_are_named(coffee_domain_path):
-    text = coffee_domain_path.read_text().replace(
-        ":negative-preconditions", ":negative-preconditions :durative-actions"
+def test_pddl_plus_is_refused_naming_the_construct():
+    with pytest.raises(UnsupportedFeatureError, match="processes"):
+        read_domain("(define (domain d) (:requirements :processes) (:predicates (p)))", "d.pddl")
+    with pytest.raises(UnsupportedFeatureError, match=":process"):
+        read_domain("(define (domain d) (:predicates (p)) (:process q :parameters () :precondition (p)))", "d.pddl")
+    text = (
+        "(define (domain d) (:requirements :durative-actions :fluents) (:predicates (p)) (:functions (f))\n"
+        " (:durative-action a :parameters () :duration (= ?duration 1) :condition (at start (p))\n"
+        "  :effect (increase (f) (* #t 2))))"
     )
-    with pytest.raises(UnsupportedFeatureError, match="durative-actions"):
+    with pytest.raises(UnsupportedFeatureError, match="#t") as caught:
         read_domain(text, "d.pddl")
-    with pytest.raises(UnsupportedFeatureError, match="derived"):
-        read_domain("(define (domain d) (:predicates (p)) (:derived (p) (and)))", "d.pddl")
+    assert caught.value.line == 3
 
 
 def test_problem_file_given_as_domain_is_explained(coffee):

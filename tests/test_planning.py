@@ -87,7 +87,7 @@ def test_widening_brings_back_a_set_aside_alternative_when_the_free_one_cannot_s
     assert_valid_on_original(coffee_domain_path, problem, result)
     assert result.prune.set_aside == {"plastic_cup_1"}
     assert result.first_attempt_status == "unsolvable" and len(result.attempts) >= 2
-    assert any("plastic_cup_1" in step for step in result.plan)  # steps are (action, *arguments)
+    assert any("plastic_cup_1" in step.args for step in result.plan)
 
 
 def test_no_relax_reports_the_failed_pruning(coffee_files):
@@ -96,7 +96,7 @@ def test_no_relax_reports_the_failed_pruning(coffee_files):
         domain_path, problem_path, PlanOptions(thresholds=Thresholds(0.2, 0.85), relax=False, timeout=60)
     )
     assert result.status is PlanStatus.NO_VALID_PLAN
-    assert len(result.attempts) == 1 and result.plan == ()
+    assert len(result.attempts) == 1 and not result.plan.steps
 
 
 def test_unsolvable_original_is_reported_as_unsolvable(tmp_path, coffee_domain_path):

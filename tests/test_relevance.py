@@ -8,7 +8,7 @@ from worlds import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, grip
 
 from relevance_plan.errors import ModelError, UsageError
 from relevance_plan.io import load_domain
-from relevance_plan.pddl.reader import read_domain, read_problem
+from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.relevance.analysis import index_init, infer_constraint_rules, single_valued_predicates
 from relevance_plan.relevance.closure import close_over_constraints
 from relevance_plan.relevance.knowledge import parse_model

@@ -182,9 +182,11 @@ def test_read_plan_takes_last_complete_anytime_plan(tmp_path: Path) -> None:
     write(tmp_path, "sas_plan.2", "(A X)\n(B Y)\n; cost = 2 (unit cost)\n")
     write(tmp_path, "sas_plan.10", "(c z)\n; cost = 1 (unit cost)\n")
     write(tmp_path, "sas_plan.11", "(d z)\n")  # cut off by a kill mid-write
-    assert runner._read_plan(tmp_path) == (("c z",), 1)
+    found = runner._read_plan(tmp_path)
+    assert [str(step) for step in found] == ["(c z)"] and found.cost == 1
     (tmp_path / "sas_plan.10").unlink()
-    assert runner._read_plan(tmp_path) == (("a x", "b y"), 2)
+    found = runner._read_plan(tmp_path)
+    assert [str(step) for step in found] == ["(a x)", "(b y)"] and found.cost == 2
     empty = tmp_path / "empty"
     empty.mkdir()
     assert runner._read_plan(empty) is None
@@ -231,7 +233,11 @@ def test_solved(gripper: tuple[Path, Path]) -> None:
     assert os.getcwd() == cwd
     assert outcome.status is PlannerStatus.SOLVED and outcome.solved
     assert outcome.exit_code == 0
-    assert outcome.plan == ("pick ball1 rooma left", "move rooma roomb", "drop ball1 roomb left")
+    assert [str(step) for step in outcome.plan] == [
+        "(pick ball1 rooma left)",
+        "(move rooma roomb)",
+        "(drop ball1 roomb left)",
+    ]
     assert outcome.plan_cost == 3
     assert outcome.wall_time > 0 and outcome.cpu_time > 0 and outcome.peak_memory_mb > 0
     assert outcome.translate_time is not None and outcome.translate_time > 0
@@ -253,7 +259,7 @@ def test_unsolvable(tmp_path: Path) -> None:
     problem = write(tmp_path, "p.pddl", gripper_problem(free_gripper=False))
     outcome = runner.run_fast_downward(domain, problem, time_limit=30)
     assert outcome.status is PlannerStatus.UNSOLVABLE
-    assert outcome.exit_code == 11 and outcome.plan == () and outcome.plan_cost is None
+    assert outcome.exit_code == 11 and not outcome.plan.steps and outcome.plan_cost is None
 
 
 def test_syntax_error_is_input_error(tmp_path: Path) -> None:
@@ -338,8 +344,8 @@ def test_parallel_runs_from_threads(tmp_path: Path) -> None:
             for name, problem in problems.items()
         }
         outcomes = {name: future.result() for name, future in futures.items()}
-    assert outcomes["to_b"].plan[-1] == "drop ball1 roomb left"
-    assert outcomes["to_c"].plan[-1] == "drop ball1 roomc left"
+    assert str(outcomes["to_b"].plan.steps[-1]) == "(drop ball1 roomb left)"
+    assert str(outcomes["to_c"].plan.steps[-1]) == "(drop ball1 roomc left)"
     assert outcomes["stuck1"].status is PlannerStatus.UNSOLVABLE
     assert outcomes["stuck2"].status is PlannerStatus.UNSOLVABLE
     assert len({outcome.process_group for outcome in outcomes.values()}) == 4

@@ -11,7 +11,8 @@ from click.testing import CliRunner
 from relevance_plan.cli import main
 from relevance_plan.data import DOMAINS_DIR, PROBLEMS_DIR
 from relevance_plan.io import load_domain, load_task
-from relevance_plan.pddl.reader import read_domain, read_problem
+from relevance_plan.pddl.parser import read_domain, read_problem
+from relevance_plan.pddl.plans import read_plan
 from relevance_plan.planning.loop import PlanOptions, PlanStatus
 from relevance_plan.planning.planners import make_planner
 from relevance_plan.planning.validate import validate_plan
@@ -530,7 +531,7 @@ def test_watch_with_plan_reports_validated_plans(tmp_path):
     assert planned and all(line["plan_status"] == "solved" for line in planned)
     assert lines[-1]["plan_source"] == "previous"
     domain, problem = load_task(COFFEE_DOMAIN, tmp_path / "snap" / "current.pddl")
-    steps = [tuple(step.strip("()").lower().split()) for step in lines[-1]["plan"]]
+    steps = read_plan("\n".join(lines[-1]["plan"]))
     assert validate_plan(domain, problem, steps).valid
     assert any("mug_2" in step for step in lines[-1]["plan"])
 

@@ -4,15 +4,20 @@ import pytest
 from kitchen import coffee_problem
 
 from relevance_plan.io import load_domain
-from relevance_plan.pddl.reader import read_domain, read_problem
+from relevance_plan.pddl.parser import read_domain, read_problem
+from relevance_plan.pddl.plans import Plan, PlanStep, format_plan, read_plan
+from relevance_plan.planning import validate
 from relevance_plan.planning.validate import (
     ValidationStatus,
-    format_plan,
-    parse_plan_text,
     validate_builtin,
     validate_plan,
     validate_with_up,
 )
+
+
+def plan_of(*steps: tuple) -> Plan:
+    return Plan(tuple(PlanStep(step[0], tuple(step[1:])) for step in steps))
+
 
 COFFEE_PLAN = """
 (unstack dinner_plate_1 plastic_cup_1 counter_1)
@@ -46,7 +51,7 @@ def task(coffee_domain_path, tmp_path):
 
 def test_valid_plan_is_valid_for_both_validators(task):
     domain, problem = task
-    plan = parse_plan_text(COFFEE_PLAN)
+    plan = read_plan(COFFEE_PLAN)
     assert len(plan) == 17
     assert validate_builtin(domain, problem, plan).status is ValidationStatus.VALID
     assert validate_with_up(domain, problem, plan).status is ValidationStatus.VALID
@@ -58,13 +63,13 @@ def test_valid_plan_is_valid_for_both_validators(task):
         (lambda p: p[1:], 1),  # the plate is still on the cup: pick... fails at step 1 (put-down without holding)
         (lambda p: p[:-1], None),  # goal not reached
         (lambda p: p[:5] + p[6:], 6),  # skip the move to the fridge: open fails
-        (lambda p: (("pick", "ghost_cup", "counter_1"),) + p, 1),  # unknown object
-        (lambda p: (("fly", "counter_1"),) + p, 1),  # unknown action
+        (lambda p: (PlanStep("pick", ("ghost_cup", "counter_1")),) + p, 1),  # unknown object
+        (lambda p: (PlanStep("fly", ("counter_1",)),) + p, 1),  # unknown action
     ],
 )
 def test_broken_plans_are_invalid_for_both_validators(task, broken, step):
     domain, problem = task
-    plan = broken(parse_plan_text(COFFEE_PLAN))
+    plan = Plan(broken(read_plan(COFFEE_PLAN).steps))
     builtin = validate_builtin(domain, problem, plan)
     assert builtin.status is ValidationStatus.INVALID
     assert builtin.failed_step == step
@@ -93,27 +98,28 @@ def test_adl_features_quantifiers_conditional_effects_equality():
           (:goal (and (lit kitchen) (not (on b)))))""",
         domain,
     )
-    good = (("switch-all", "kitchen"), ("mark", "kitchen", "hall"))
+    good = plan_of(("switch-all", "kitchen"), ("mark", "kitchen", "hall"))
     assert validate_builtin(domain, problem, good).valid
-    assert not validate_builtin(domain, problem, (("mark", "kitchen", "hall"),)).valid
-    assert not validate_builtin(domain, problem, (("switch-all", "kitchen"), ("mark", "kitchen", "kitchen"))).valid
+    assert not validate_builtin(domain, problem, plan_of(("mark", "kitchen", "hall"))).valid
     assert not validate_builtin(
-        domain, problem, (("switch-all", "hall"), ("switch-all", "kitchen"), ("mark", "kitchen", "hall"))
+        domain, problem, plan_of(("switch-all", "kitchen"), ("mark", "kitchen", "kitchen"))
+    ).valid
+    assert not validate_builtin(
+        domain, problem, plan_of(("switch-all", "hall"), ("switch-all", "kitchen"), ("mark", "kitchen", "hall"))
     ).valid
 
 
-def test_no_runnable_validator_is_reported_not_guessed(task):
+def test_no_runnable_validator_is_reported_not_guessed(task, monkeypatch):
     domain, problem = task
-    plan = parse_plan_text(COFFEE_PLAN)
-    result = validate_plan(domain, problem, plan, validators=("val",))
-    if result.status is not ValidationStatus.UNAVAILABLE:
-        pytest.skip("VAL is installed here")
+    monkeypatch.setattr(validate, "val_available", lambda: False)
+    result = validate_plan(domain, problem, read_plan(COFFEE_PLAN), validators=("val",))
+    assert result.status is ValidationStatus.UNAVAILABLE
     assert not result.valid and "Validate" in result.message
 
 
 def test_plan_format_round_trips_with_user_spelling(task):
     domain, problem = task
-    plan = parse_plan_text(COFFEE_PLAN)
-    text = format_plan(plan, problem)
-    assert parse_plan_text(text) == plan
-    assert text.rstrip().endswith("; cost = 17 (unit cost)")
+    plan = read_plan(COFFEE_PLAN)
+    text = format_plan(plan, problem.display)
+    assert read_plan(text) == plan
+    assert text.rstrip().endswith("; cost = 17")

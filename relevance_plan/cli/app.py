@@ -310,8 +310,8 @@ def prune(domain_path, problem_path, output, as_json, **values):
 def plan(domain_path, problem_path, method, plan_file, as_json, quiet, **values):
     """Prune, plan, validate on the original problem, widen until solved."""
     from relevance_plan.io import STDOUT, write_output
+    from relevance_plan.pddl.plans import format_plan
     from relevance_plan.planning.planners import make_planner
-    from relevance_plan.planning.validate import format_plan
 
     if plan_file == STDOUT and as_json:
         raise UsageError("--json and '--plan-file -' would both write to standard output; give a file name")
@@ -326,7 +326,7 @@ def plan(domain_path, problem_path, method, plan_file, as_json, quiet, **values)
             from relevance_plan.io import load_task
 
             problem = load_task(domain_path, problem_path)[1]
-        write_output(plan_file, format_plan(result.plan, problem, result.plan_cost))
+        write_output(plan_file, format_plan(result.plan, problem.display))
     if as_json:
         data = result.to_json()
         data["plan_file"] = str(plan_file) if result.status is PlanStatus.SOLVED else None

@@ -47,7 +47,7 @@ def report_json(report: EventReport, session: Session) -> dict:
     data["determination_ms"] = round(report.seconds * 1000, 3)
     if report.plan is not None:
         data["plan_status"] = report.plan.status.value
-        data["plan"] = ["(" + " ".join([s[0]] + [show(a, a) for a in s[1:]]) + ")" for s in report.plan.steps]
+        data["plan"] = ["(" + " ".join([s.action, *(show(a, a) for a in s.args)]) + ")" for s in report.plan.steps]
         data["plan_source"] = report.plan.source
         data["plan_message"] = report.plan.message
     return data

@@ -7,7 +7,7 @@ Public API::
     write_base_scenes(problems_dir) -> list[Path]
 
 The generator never depends on the pruning code; it writes problems with
-``relevance_plan.pddl.formatter.format_problem``.
+``relevance_plan.pddl.formatter.format_problem_parts``.
 """
 
 from relevance_plan.generators.catalog import CATALOG, CATALOG_TYPES, KITCHENWARE_TYPES

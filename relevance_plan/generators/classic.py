@@ -30,6 +30,7 @@ from typing import Any
 
 from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.errors import UsageError
+from relevance_plan.pddl.formatter import format_problem_parts
 
 GENERATOR = "relevance_plan.generators"
 CLASSIC_VERSION = "1"
@@ -323,35 +324,16 @@ class ClassicProblem:
     sidecar: dict[str, Any]
 
 
-def _atom(fact: tuple) -> str:
-    return "(" + " ".join(fact) + ")"
-
-
 def format_instance(inst: Instance, world: str, name: str, comment: str) -> str:
     base, typed = _split(world)
-    lines = [f"; {line}" for line in comment.splitlines()]
-    lines.append(f"(define (problem {name}) (:domain {world})")
-    lines.append("  (:objects")
-    by_class: dict[str, list[str]] = {}
-    for obj, cls in inst.objects.items():
-        by_class.setdefault(cls, []).append(obj)
-    for cls, names in by_class.items():
-        for start in range(0, len(names), 12):
-            chunk = " ".join(names[start : start + 12])
-            lines.append(f"    {chunk} - {cls}" if typed else f"    {chunk}")
-    lines.append("  )")
-    lines.append("  (:init")
+    facts = list(inst.facts)
     if not typed:
-        for obj, cls in inst.objects.items():
-            for predicate in TYPE_FACTS[base][cls]:
-                lines.append(f"    ({predicate} {obj})")
-    for fact in inst.facts + ([] if typed else inst.untyped_only):
-        lines.append(f"    {_atom(fact)}")
-    lines.append("  )")
-    goal = " ".join(_atom(g) for g in inst.goal)
-    lines.append(f"  (:goal (and {goal}))")
-    lines.append(")")
-    return "\n".join(lines) + "\n"
+        facts = [(predicate, obj) for obj, cls in inst.objects.items() for predicate in TYPE_FACTS[base][cls]]
+        facts += list(inst.facts) + list(inst.untyped_only)
+    objects: dict[str, list[str]] = {}
+    for obj, cls in inst.objects.items():
+        objects.setdefault(cls if typed else "object", []).append(obj)
+    return format_problem_parts(name, world, objects, facts, inst.goal, comment)
 
 
 def classic_problem_name(world: str, index: int, dense: bool = False) -> str:

@@ -32,7 +32,7 @@ the chosen role objects and goal items (``blockers``); every object in
 from __future__ import annotations
 
 from relevance_plan.generators.scenes import CONTAINER, SURFACE, SceneLayout, name_key
-from relevance_plan.pddl.formatter import format_problem
+from relevance_plan.pddl.formatter import format_problem_parts
 
 Atom = tuple[str, ...]
 
@@ -86,7 +86,7 @@ def goal_objects(scene: SceneLayout) -> list[str]:
 
 def format_scene(scene: SceneLayout, name: str, comment: str | None = None) -> str:
     """The scene as PDDL problem text (``relevance_plan.pddl.formatter`` layout)."""
-    return format_problem(
+    return format_problem_parts(
         name=name,
         domain=scene.world,
         objects=problem_objects(scene),

@@ -60,7 +60,8 @@ from unified_planning.model.problem_kind_versioning import LATEST_PROBLEM_KIND_V
 from unified_planning.plans import ActionInstance, SequentialPlan
 
 from relevance_plan.errors import RelevancePlanError, UsageError
-from relevance_plan.pddl.reader import read_domain, read_problem
+from relevance_plan.pddl.parser import read_domain, read_problem
+from relevance_plan.pddl.plans import Plan, PlanStep
 from relevance_plan.planning.loop import Attempt, PlanOptions, PlanStatus, first_selection, run_attempts, summarise
 from relevance_plan.planning.runner import PlannerStatus, RunOutcome
 from relevance_plan.relevance.knowledge import KnowledgeModel, load_model
@@ -352,14 +353,14 @@ class _InnerPlanner:
         wall = time.perf_counter() - started
         self.last_result = result
         status = _UP_TO_PLANNER.get(result.status, PlannerStatus.PLANNER_CRASH)
-        steps: tuple = ()
+        steps = Plan()
         if result.status in POSITIVE_OUTCOMES:
             lifted = lift_plan(result.plan, self.problem) if result.plan is not None else None
             if lifted is None:
                 status = PlannerStatus.PLANNER_CRASH  # a solution without a plan we can read
             else:
                 self.lifted[self.calls] = lifted
-                steps = tuple(self._reader_step(step) for step in lifted.actions)
+                steps = Plan(tuple(self._reader_step(step) for step in lifted.actions))
         return RunOutcome(
             status=status,
             exit_code=None,
@@ -372,11 +373,11 @@ class _InnerPlanner:
             optimal=result.status is PlanGenerationResultStatus.SOLVED_OPTIMALLY,
         )
 
-    def _reader_step(self, step: ActionInstance) -> str:
+    def _reader_step(self, step: ActionInstance) -> PlanStep:
         if self.stage is None:
-            return ""  # nothing to validate with: the caller uses UP's own validator
-        arguments = [self.reader_objects[p.object().name] for p in step.actual_parameters]
-        return " ".join([self.reader_actions[step.action.name], *arguments])
+            return PlanStep("")  # nothing to validate with: the caller uses UP's own validator
+        arguments = tuple(self.reader_objects[p.object().name] for p in step.actual_parameters)
+        return PlanStep(self.reader_actions[step.action.name], arguments)
 
 
 _UP_TO_PLANNER = {

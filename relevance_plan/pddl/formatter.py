@@ -1,46 +1,214 @@
-"""Turn problem data into PDDL text (the generator's writer).
+"""Turn model values back into PDDL text: any formula node, whole domains and problems.
 
-The pruning path never re-formats a user's file (see ``writer.py``); this
-formatter is for problems we create ourselves, so every suite we write has
-one layout.
+The pruning path never re-formats a user's file (``writer.py`` cuts it);
+this formatter writes what we create ourselves (generated suites, the live
+session's snapshots, compiled domains) and backs the parse -> format -> parse
+round-trip tests.  Object names are written in the user's spelling when a
+``display`` function is given.
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 
-Atom = Sequence[str]
+from relevance_plan.pddl import formulas as f
+from relevance_plan.pddl.model import Action, DerivedPredicate, Domain, Metric, Problem, TimedLiteral, make_problem
+
+Display = Callable[[str], str]
+NAMES_PER_LINE = 12
 
 
-def format_atom(atom: Atom) -> str:
-    return "(" + " ".join(atom) + ")"
+def _same(name: str) -> str:
+    return name
 
 
-def format_problem(
-    name: str,
-    domain: str,
-    objects: Mapping[str, Sequence[str]],
-    init: Iterable[Atom],
-    goal: Iterable[Atom],
-    comment: str | None = None,
-) -> str:
-    """Return a typed PDDL problem; ``objects`` maps a type to its object names."""
+def format_number(value: float) -> str:
+    return str(int(value)) if float(value).is_integer() and abs(value) < 1e15 else repr(float(value))
+
+
+def format_atom(atom: Sequence[str], display: Display = _same) -> str:
+    """``(predicate arg ...)`` of a ground atom tuple."""
+    return "(" + " ".join([atom[0], *(display(arg) for arg in atom[1:])]) + ")"
+
+
+def format_parameters(parameters: f.Parameters) -> str:
+    """``?x ?y - t ?z - u``: consecutive variables of one type share it."""
+    pieces: list[str] = []
+    index = 0
+    while index < len(parameters):
+        type_name = parameters[index][1]
+        names = []
+        while index < len(parameters) and parameters[index][1] == type_name:
+            names.append(parameters[index][0])
+            index += 1
+        pieces.append(" ".join(names) + f" - {type_name}")
+    return " ".join(pieces)
+
+
+def format_formula(node: f.Node, display: Display = _same) -> str:
+    """PDDL text of any formula node on one line."""
+
+    def term(name: str) -> str:
+        return name if f.is_variable(name) else display(name)
+
+    def text(n: f.Node) -> str:
+        if isinstance(n, f.Atom):
+            return "(" + " ".join([n.predicate, *map(term, n.args)]) + ")"
+        if isinstance(n, f.Fluent):
+            return "(" + " ".join([n.function, *map(term, n.args)]) + ")"
+        if isinstance(n, f.Number):
+            return format_number(n.value)
+        if isinstance(n, f.NumericVariable):
+            return n.name
+        if isinstance(n, f.Equality):
+            return f"(= {term(n.left)} {term(n.right)})"
+        if isinstance(n, (f.Exists, f.Forall)):
+            keyword = "exists" if isinstance(n, f.Exists) else "forall"
+            return f"({keyword} ({format_parameters(n.parameters)}) {text(n.body)})"
+        if isinstance(n, f.Timed):
+            return f"({f.TIMES[n.when]} {text(n.body)})"
+        if isinstance(n, f.Preference):
+            name = f"{n.name} " if n.name is not None else ""
+            return f"(preference {name}{text(n.body)})"
+        if isinstance(n, f.Modal):
+            if n.operator == "at-end":
+                return f"(at end {text(n.parts[0])})"
+            return "(" + " ".join([n.operator, *map(format_number, n.numbers), *map(text, n.parts)]) + ")"
+        keyword = _KEYWORDS.get(type(n))
+        if keyword is None:
+            keyword = n.op  # Comparison, Arithmetic, NumericEffect
+        return "(" + " ".join([keyword, *map(text, f.children(n))]) + ")"
+
+    return text(node)
+
+
+_KEYWORDS: Mapping[type, str] = {f.And: "and", f.Or: "or", f.Not: "not", f.Imply: "imply", f.When: "when"}
+
+# --------------------------------------------------------------------------- domains
+
+
+def format_domain(domain: Domain) -> str:
+    lines = [f"(define (domain {domain.name})"]
+    if domain.requirements:
+        lines.append(f"  (:requirements {' '.join(sorted(domain.requirements))})")
+    declared = {name: parent for name, parent in domain.types.items() if name != "object"}
+    if declared:
+        lines.append(f"  (:types {_typed_names(declared)})")
+    if domain.constants:
+        lines.append(f"  (:constants {_typed_names(domain.constants)})")
+    lines.append("  (:predicates")
+    lines.extend(f"    ({_signature(name, params)})" for name, params in domain.predicates.items())
+    lines.append("  )")
+    if domain.functions:
+        lines.append("  (:functions")
+        lines.extend(f"    ({_signature(name, params)}) - number" for name, params in domain.functions.items())
+        lines.append("  )")
+    if domain.constraints is not None:
+        lines.append(f"  (:constraints {format_formula(domain.constraints)})")
+    lines.extend(_format_derived(rule) for rule in domain.derived)
+    lines.extend(_format_action(action) for action in domain.actions)
+    lines.append(")")
+    return "\n".join(lines) + "\n"
+
+
+def _typed_names(typed: Mapping[str, str]) -> str:
+    return format_parameters(tuple(typed.items()))
+
+
+def _signature(name: str, params: f.Parameters) -> str:
+    return f"{name} {format_parameters(params)}" if params else name
+
+
+def _format_derived(rule: DerivedPredicate) -> str:
+    return f"  (:derived ({_signature(rule.head.predicate, rule.parameters)})\n    {format_formula(rule.body)})"
+
+
+def _format_action(action: Action) -> str:
+    keyword = ":durative-action" if action.durative else ":action"
+    lines = [f"  ({keyword} {action.name}", f"    :parameters ({format_parameters(action.parameters)})"]
+    if action.duration is not None:
+        lines.append(f"    :duration {format_formula(action.duration)}")
+    lines.append(f"    {':condition' if action.durative else ':precondition'} {format_formula(action.precondition)}")
+    lines.append(f"    :effect {format_formula(action.effect)})")
+    return "\n".join(lines)
+
+
+# --------------------------------------------------------------------------- problems
+
+
+def format_problem(problem: Problem, comment: str | None = None) -> str:
+    """A problem value as PDDL, objects grouped by type in first-appearance order, in the user's spelling."""
+    display = problem.display
     lines: list[str] = []
     if comment:
         lines.extend("; " + line if line else ";" for line in comment.splitlines())
-    lines.append(f"(define (problem {name})")
-    lines.append(f"  (:domain {domain})")
+    lines.append(f"(define (problem {problem.name})")
+    lines.append(f"  (:domain {problem.domain_name})")
+    if problem.requirements:
+        lines.append(f"  (:requirements {' '.join(sorted(problem.requirements))})")
+    by_type: dict[str, list[str]] = {}
+    for name, type_name in problem.objects.items():
+        by_type.setdefault(type_name, []).append(display(name))
     lines.append("  (:objects")
-    for type_name, names in objects.items():
-        if names:
-            lines.append("    " + " ".join(names) + f" - {type_name}")
+    for type_name, names in by_type.items():
+        suffix = "" if type_name == "object" else f" - {type_name}"
+        for start in range(0, len(names), NAMES_PER_LINE):
+            lines.append(f"    {' '.join(names[start : start + NAMES_PER_LINE])}{suffix}")
     lines.append("  )")
     lines.append("  (:init")
-    lines.extend("    " + format_atom(atom) for atom in init)
+    lines.extend("    " + format_atom(atom, display) for atom in _init_order(problem))
+    lines.extend(
+        f"    (= {format_atom(term, display)} {format_number(value)})" for term, value in problem.numeric_init.items()
+    )
+    lines.extend("    " + _format_timed_literal(literal, display) for literal in problem.timed_literals)
     lines.append("  )")
-    goal_atoms = [format_atom(atom) for atom in goal]
-    lines.append("  (:goal (and")
-    lines.extend("    " + text for text in goal_atoms)
-    lines.append("  ))")
+    lines.append(_format_goal(problem.goal, display))
+    if problem.constraints is not None:
+        lines.append(f"  (:constraints {format_formula(problem.constraints, display)})")
+    if problem.metric is not None:
+        lines.append(f"  (:metric {_format_metric(problem.metric, display)})")
     lines.append(")")
     return "\n".join(lines) + "\n"
+
+
+def format_problem_parts(
+    name: str,
+    domain: str,
+    objects: Mapping[str, Sequence[str]],
+    init: Iterable[Sequence[str]],
+    goal: Iterable[Sequence[str]],
+    comment: str | None = None,
+) -> str:
+    """A problem from plain parts: ``objects`` maps a type to its names, ``goal`` is a conjunction of atoms."""
+    typed = {object_name: type_name for type_name, names in objects.items() for object_name in names}
+    goal_formula = f.And(tuple(f.Atom(atom[0], tuple(atom[1:])) for atom in goal))
+    problem = make_problem(name, domain, typed, (tuple(atom) for atom in init), goal_formula)
+    return format_problem(problem, comment)
+
+
+def _init_order(problem: Problem) -> Iterable[tuple]:
+    # Facts in the order the problem's own text had them when it has one, else sorted.
+    if problem.init_line:
+        return sorted(problem.init, key=lambda atom: (problem.init_line.get(atom, 0), atom))
+    return sorted(problem.init)
+
+
+def _format_goal(goal: f.Formula, display: Display) -> str:
+    if isinstance(goal, f.And) and goal.parts and all(isinstance(p, f.Atom) for p in goal.parts):
+        return "\n".join(["  (:goal (and", *("    " + format_formula(p, display) for p in goal.parts), "  ))"])
+    return f"  (:goal {format_formula(goal, display)})"
+
+
+def _format_timed_literal(literal: TimedLiteral, display: Display) -> str:
+    if literal.fluent is not None:
+        inner = f"(= {format_atom(literal.fluent, display)} {format_number(literal.value or 0.0)})"
+    else:
+        assert literal.atom is not None
+        inner = format_atom(literal.atom, display)
+        if literal.negated:
+            inner = f"(not {inner})"
+    return f"(at {format_number(literal.time)} {inner})"
+
+
+def _format_metric(metric: Metric, display: Display) -> str:
+    return f"{metric.direction} {format_formula(metric.expression, display)}"

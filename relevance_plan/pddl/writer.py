@@ -1,17 +1,20 @@
 """Write a pruned problem by cutting the user's own file.
 
 The output is the original text minus the pruned objects' declarations and
-every initial fact that mentions them.  Names, comments, requirements, the
-goal and the metric stay exactly as the user wrote them, so any planner can
-read the result and its plan applies unchanged to the original problem.
-Cost is linear in the file size: no re-formatting, no grounding.
+every :init entry that mentions them: facts, negative literals, numeric
+values and timed literals alike.  Names, comments, requirements, the goal,
+the constraints and the metric stay exactly as the user wrote them, so any
+planner can read the result and its plan applies unchanged to the original
+problem.  Cost is linear in the file size, however the file is laid out
+(one line or many): no re-formatting, no grounding.
 """
 
 from __future__ import annotations
 
+import bisect
 from collections.abc import Set
 
-from relevance_plan.pddl.reader import Problem
+from relevance_plan.pddl.model import Problem
 
 
 def write_pruned_problem(problem: Problem, kept: Set[str]) -> str:
@@ -29,48 +32,60 @@ def write_pruned_problem(problem: Problem, kept: Set[str]) -> str:
     for (start, end), mentioned in problem.init_spans:
         if mentioned and not mentioned <= kept:
             cuts.append((start, end))
-    return _apply_cuts(problem.text, cuts)
+    return apply_cuts(problem.text, cuts)
 
 
-def _apply_cuts(text: str, cuts: list[tuple[int, int]]) -> str:
-    """Remove the spans, the blanks after each, and any line they leave empty."""
+def apply_cuts(text: str, cuts: list[tuple[int, int]]) -> str:
+    """Remove the spans, the blanks after each (before it when it ends its line), and any line they leave empty."""
     if not cuts:
         return text
-    length = len(text)
+    line_starts = [0]
+    position = text.find("\n")
+    while position >= 0:
+        line_starts.append(position + 1)
+        position = text.find("\n", position + 1)
     by_line: dict[int, list[tuple[int, int]]] = {}
     for start, end in cuts:
-        by_line.setdefault(text.rfind("\n", 0, start) + 1, []).append((start, end))
-    merged: list[tuple[int, int]] = []
-    for line_start, spans in by_line.items():
+        by_line.setdefault(bisect.bisect_right(line_starts, start) - 1, []).append((start, end))
+    removed: list[tuple[int, int]] = []
+    for line, spans in by_line.items():
+        line_start = line_starts[line]
         spans.sort()
         line_end = text.find("\n", spans[-1][1])
         if line_end < 0:
-            line_end = length
-        position = line_start
-        rest = []
-        for start, end in spans:
-            rest.append(text[position:start])
-            position = max(position, end)
-        rest.append(text[position:line_end])
-        if not "".join(rest).strip():
-            merged.append((line_start, min(line_end + 1, length)))
-            continue
-        for start, end in spans:
-            if not text[end:line_end].strip():
-                # Last thing on its line: take the blanks before it instead.
-                while start > line_start and text[start - 1] in " \t":
-                    start -= 1
-            else:
-                while end < line_end and text[end] in " \t":
-                    end += 1
-            merged.append((start, end))
-    merged.sort()
+            line_end = len(text)
+        removed.extend(_cuts_on_line(text, line_start, line_end, spans))
+    removed.sort()
     pieces: list[str] = []
     position = 0
-    for start, end in merged:
+    for start, end in removed:
         if end <= position:
             continue
         pieces.append(text[position : max(start, position)])
         position = end
     pieces.append(text[position:])
     return "".join(pieces)
+
+
+def _cuts_on_line(text: str, line_start: int, line_end: int, spans: list[tuple[int, int]]) -> list[tuple[int, int]]:
+    # The last character of the line outside every span that is not blank: one pass over the line.
+    last_kept = -1
+    position = line_start
+    for start, end in [*spans, (line_end, line_end)]:
+        segment = text[position:start].rstrip()
+        if segment.strip():
+            last_kept = position + len(segment) - 1
+        position = max(position, end)
+    if last_kept < 0:
+        return [(line_start, min(line_end + 1, len(text)))]  # nothing left: the whole line goes
+    result = []
+    for start, end in spans:
+        if start > last_kept:
+            # Last thing on its line: take the blanks before it instead.
+            while start > line_start and text[start - 1] in " \t":
+                start -= 1
+        else:
+            while end < line_end and text[end] in " \t":
+                end += 1
+        result.append((start, end))
+    return result

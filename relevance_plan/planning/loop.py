@@ -26,6 +26,7 @@ from pathlib import Path
 
 from relevance_plan.errors import UsageError
 from relevance_plan.io import load_domain, load_problem, scratch_directory, write_text_atomic
+from relevance_plan.pddl.plans import Plan
 from relevance_plan.planning.planners import make_planner
 from relevance_plan.planning.runner import PlannerStatus, RunOutcome, check_planner_names
 from relevance_plan.planning.validate import ValidationResult, ValidationStatus, validate_plan
@@ -143,8 +144,8 @@ class Attempt:
 class PlanResult:
     method: str
     status: PlanStatus
-    plan: tuple = ()
-    plan_cost: int | None = None
+    plan: Plan = Plan()
+    plan_cost: float | None = None
     validation: ValidationResult | None = None
     attempts: tuple = ()
     wall_time: float = 0.0
@@ -208,7 +209,7 @@ class PlanResult:
             ],
             "peak_memory_mb": round(self.peak_memory_mb, 1),
             "message": self.message,
-            "plan": [" ".join(step) for step in self.plan] if self.status is PlanStatus.SOLVED else [],
+            "plan": [str(step) for step in self.plan.steps] if self.status is PlanStatus.SOLVED else [],
         }
 
 
@@ -286,7 +287,7 @@ def run_attempts(
             remaining = max(deadline - time.perf_counter(), 0.5)
             limit = remaining if final else max(1.0, remaining * options.first_share)
         outcome = call_planner(None if full else current, limit)
-        validation, validation_time = _validate(task, outcome, options)
+        validation, validation_time = _validate(task, outcome, options, deadline)
         attempts.append(
             Attempt(
                 number,
@@ -300,7 +301,7 @@ def run_attempts(
             )
         )
         if validation is not None and validation.status is not ValidationStatus.INVALID:
-            break  # valid, or no validator could run: report it, never retry blindly
+            break  # valid, out of time, or no validator could run: report it, never retry blindly
         if not options.relax or full:
             break
         if outcome.status is PlannerStatus.UNSUPPORTED:
@@ -317,16 +318,16 @@ def run_attempts(
     return attempts, widening_time
 
 
-def _validate(task: PlanningTask, outcome: RunOutcome, options: PlanOptions) -> tuple[ValidationResult | None, float]:
+def _validate(
+    task: PlanningTask, outcome: RunOutcome, options: PlanOptions, deadline: float | None
+) -> tuple[ValidationResult | None, float]:
     if outcome.status is not PlannerStatus.SOLVED:
         return None, 0.0
     started = time.perf_counter()
-    validation = validate_plan(task.domain, task.problem, plan_steps(outcome), options.validators)
+    # the validator's clock is time.monotonic(); the loop's deadline is on perf_counter()
+    until = None if deadline is None else time.monotonic() + max(deadline - started, 0.5)
+    validation = validate_plan(task.domain, task.problem, outcome.plan, options.validators, until)
     return validation, time.perf_counter() - started
-
-
-def plan_steps(outcome: RunOutcome) -> tuple:
-    return tuple(tuple(step.lower().split()) for step in outcome.plan)
 
 
 def plan_task(
@@ -451,13 +452,20 @@ def summarise(
     if last.outcome.status is PlannerStatus.SOLVED:
         validation = last.validation
         if validation is not None and validation.valid:
-            plan = plan_steps(last.outcome)
+            plan = last.outcome.plan
             return PlanResult(
                 status=PlanStatus.SOLVED,
                 plan=plan,
                 plan_cost=last.outcome.plan_cost,
                 validation=validation,
                 message=f"plan of {len(plan)} steps validated on the original problem ({validation.validator})",
+                **common,
+            )
+        if validation is not None and validation.status is ValidationStatus.OUT_OF_TIME:
+            return PlanResult(
+                status=PlanStatus.OUT_OF_TIME,
+                validation=validation,
+                message=f"a plan was found but validating it ran out of time: {validation.message}",
                 **common,
             )
         if validation is not None and validation.status is ValidationStatus.UNAVAILABLE:

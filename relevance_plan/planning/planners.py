@@ -34,6 +34,8 @@ from pathlib import Path
 from typing import Protocol
 
 from relevance_plan import errors
+from relevance_plan.errors import PlanFormatError
+from relevance_plan.pddl.plans import Plan, read_plan
 from relevance_plan.planning import runner
 from relevance_plan.planning.runner import LOG_FILE, LOG_TAIL_LINES, PlannerStatus, RunOutcome
 
@@ -66,28 +68,13 @@ def _log_tail(workdir: Path) -> str:
 
 # --------------------------------------------------------------------------- IPC plan files
 
-_STEP_RE = re.compile(r"^(?:\d+(?:\.\d+)?\s*:\s*)?\(\s*([^()]+?)\s*\)(?:\s*\[[\d.]+\])?$")
-_COST_RE = re.compile(r"^;\s*cost\s*=\s*(\d+)")
 
-
-def parse_ipc_plan(text: str) -> tuple[tuple[str, ...], int | None] | None:
-    """(steps, cost) of a plan in the IPC format; None when a line is neither a step nor a comment."""
-    steps: list[str] = []
-    cost = None
-    for raw in text.splitlines():
-        line = raw.strip()
-        if not line:
-            continue
-        if line.startswith(";"):
-            match = _COST_RE.match(line)
-            if match:
-                cost = int(match.group(1))
-            continue
-        match = _STEP_RE.match(line)
-        if match is None:
-            return None
-        steps.append(" ".join(match.group(1).split()).lower())
-    return tuple(steps), cost
+def parse_ipc_plan(text: str) -> Plan | None:
+    """The plan in the IPC format, or None when a line is neither a step nor a comment."""
+    try:
+        return read_plan(text)
+    except PlanFormatError:
+        return None
 
 
 # --------------------------------------------------------------------------- fast-downward
@@ -206,8 +193,8 @@ class UnifiedPlanningPlanner:
         return RunOutcome(
             status=status,
             exit_code=run.exit_code,
-            plan=parsed[0] if parsed and status is PlannerStatus.SOLVED else (),
-            plan_cost=parsed[1] if parsed else None,
+            plan=parsed if parsed is not None and status is PlannerStatus.SOLVED else Plan(),
+            plan_cost=parsed.cost if parsed is not None else None,
             wall_time=run.wall_time,
             cpu_time=run.cpu_time,
             peak_memory_mb=run.peak_memory_mb,
@@ -306,15 +293,15 @@ class CommandPlanner:
             status = PlannerStatus.OUT_OF_MEMORY if "MemoryError" in log else PlannerStatus.PLANNER_CRASH
         elif parsed is None:
             status = PlannerStatus.PLANNER_CRASH  # exit 0 but its output is not a plan
-        elif not parsed[0] and not uses_plan_file:
+        elif not parsed.steps and not uses_plan_file:
             status = PlannerStatus.SEARCH_INCOMPLETE  # said nothing: no plan found
         else:
             status = PlannerStatus.SOLVED
         return RunOutcome(
             status=status,
             exit_code=run.exit_code,
-            plan=parsed[0] if status is PlannerStatus.SOLVED else (),
-            plan_cost=parsed[1] if parsed else None,
+            plan=parsed if parsed is not None and status is PlannerStatus.SOLVED else Plan(),
+            plan_cost=parsed.cost if parsed is not None else None,
             wall_time=run.wall_time,
             cpu_time=run.cpu_time,
             peak_memory_mb=run.peak_memory_mb,

@@ -30,6 +30,8 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from relevance_plan import errors
+from relevance_plan.errors import PlanFormatError
+from relevance_plan.pddl.plans import Plan, read_plan
 
 FAST_DOWNWARD_ENV = "RELEVANCE_PLAN_FAST_DOWNWARD"
 DEFAULT_CONFIG = "lama-first"
@@ -136,8 +138,8 @@ class RunOutcome:
 
     status: PlannerStatus
     exit_code: int | None
-    plan: tuple[str, ...]
-    plan_cost: int | None
+    plan: Plan
+    plan_cost: float | None
     wall_time: float
     cpu_time: float = 0.0
     peak_memory_mb: float = 0.0
@@ -426,15 +428,16 @@ def _plan_paths(workdir: Path) -> list[Path]:
     return [single] if single.is_file() else []
 
 
-def _read_plan(workdir: Path) -> tuple[tuple[str, ...], int | None] | None:
-    """(steps, cost) of the last complete plan file, or None if there is none."""
+def _read_plan(workdir: Path) -> Plan | None:
+    """The last complete plan file (a cost line ends it), or None if there is none."""
     for path in reversed(_plan_paths(workdir)):
         text = path.read_text(errors="replace")
-        cost = _PLAN_COST_RE.search(text)
-        if cost is None:
+        if _PLAN_COST_RE.search(text) is None:
             continue  # cut off mid-write by a kill; an earlier plan may be whole
-        steps = tuple(line.strip()[1:-1].strip().lower() for line in text.splitlines() if line.strip().startswith("("))
-        return steps, int(cost.group(1))
+        try:
+            return read_plan(text)
+        except PlanFormatError:
+            continue
     return None
 
 
@@ -645,8 +648,8 @@ def run_fast_downward(
     return RunOutcome(
         status=status,
         exit_code=run.exit_code,
-        plan=plan[0] if plan is not None else (),
-        plan_cost=plan[1] if plan is not None else None,
+        plan=plan if plan is not None else Plan(),
+        plan_cost=plan.cost if plan is not None else None,
         wall_time=run.wall_time,
         cpu_time=run.cpu_time,
         peak_memory_mb=run.peak_memory_mb,

@@ -17,7 +17,8 @@ from collections import defaultdict
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-from relevance_plan.pddl.reader import Domain, Formula, Problem, effect_literals, formula_atoms
+from relevance_plan.pddl.formulas import effect_literals, literals, scoped_literals
+from relevance_plan.pddl.model import Domain, Problem, numeric_facts
 
 # --------------------------------------------------------------------------- init-state facts
 
@@ -36,9 +37,11 @@ class InitIndex:
 
 
 def index_init(problem: Problem) -> InitIndex:
+    """Facts by predicate and by object; a numeric value's term ``(distance a b)`` counts as a fact,
+    so the objects inside a function term are linked like those of a static fact."""
     by_predicate: dict[str, list] = defaultdict(list)
     by_object: dict[str, list] = defaultdict(list)
-    for atom in problem.init:
+    for atom in (*problem.init, *numeric_facts(problem)):
         by_predicate[atom[0]].append(atom)
         for arg in set(atom[1:]):
             by_object[arg].append(atom)
@@ -124,12 +127,10 @@ class ConstraintRule:
 
 def _precondition_predicates(domain: Domain) -> set[str]:
     used = set()
-    for action in domain.actions:
-        for atom, _ in formula_atoms(action.precondition):
-            used.add(atom[1])
-        for _, _, condition in effect_literals(action.effect):
-            for atom, _ in formula_atoms(condition):
-                used.add(atom[1])
+    for action in domain.relaxed_actions:
+        used.update(atom.predicate for atom, _ in literals(action.precondition))
+        for item in effect_literals(action.effect):
+            used.update(atom.predicate for atom, _ in literals(item.condition))
     return used
 
 
@@ -140,20 +141,25 @@ def blocking_predicates(domain: Domain) -> set[tuple[str, int, int]]:
     adds U(?b)' where U is needed by some precondition: removing ?a is what
     makes ?b usable again (unstack in blocksworld, taking a plate off a cup).
     """
-    needed = {atom[1] for action in domain.actions for atom, positive in formula_atoms(action.precondition) if positive}
+    needed = {
+        atom.predicate
+        for action in domain.relaxed_actions
+        for atom, positive in literals(action.precondition)
+        if positive
+    }
     found = set()
     for action in domain.actions:
-        pre = [atom for atom, positive in formula_atoms(action.precondition) if positive]
-        literals = list(effect_literals(action.effect))
-        deleted = {(atom[1], atom[2]) for atom, is_add, _ in literals if not is_add}
-        added = [atom for atom, is_add, _ in literals if is_add]
+        pre = [atom for atom, positive in literals(action.precondition) if positive]
+        effects = list(effect_literals(action.effect))
+        deleted = {item.atom for item in effects if not item.is_add}
+        added = [item.atom for item in effects if item.is_add]
         for atom in pre:
-            if len(atom[2]) != 2 or (atom[1], atom[2]) not in deleted:
+            if len(atom.args) != 2 or atom not in deleted:
                 continue
-            a, b = atom[2]
+            a, b = atom.args
             for add in added:
-                if add[1] in needed and add[2] == (b,) and a != b:
-                    found.add((atom[1], 0, 1))
+                if add.predicate in needed and add.args == (b,) and a != b:
+                    found.add((atom.predicate, 0, 1))
     return found
 
 
@@ -179,10 +185,6 @@ class GoalAnalysis:
     goal_variable_types: frozenset  # types quantified in the goal
 
 
-def _atoms_with_polarity(formula: Formula):
-    return [(atom[1], atom[2], positive) for atom, positive in formula_atoms(formula)]
-
-
 def analyse_goal(domain: Domain, problem: Problem, index: InitIndex | None = None) -> GoalAnalysis:
     """Regress the goal through the schemas on typed patterns (no grounding).
 
@@ -200,25 +202,11 @@ def analyse_goal(domain: Domain, problem: Problem, index: InitIndex | None = Non
     objects.update(problem.objects)
     goal_types = set()
     start: list[tuple[tuple, int]] = []
-    stack = [(problem.goal, {})]
-    while stack:
-        formula, variables = stack.pop()
-        kind = formula[0]
-        if kind == "atom":
-            if formula[1] != "=":
-                args = tuple(("type", variables[a]) if a in variables else ("obj", a) for a in formula[2])
-                start.append(((formula[1], args), 0))
-        elif kind in ("and", "or"):
-            stack.extend((part, variables) for part in formula[1:])
-        elif kind == "not":
-            stack.append((formula[1], variables))
-        elif kind == "imply":
-            stack.extend(((formula[1], variables), (formula[2], variables)))
-        elif kind in ("exists", "forall"):
-            inner = dict(variables)
-            inner.update(formula[1])
-            goal_types.update(t for _, t in formula[1])
-            stack.append((formula[2], inner))
+    for atom, _, scope in scoped_literals(problem.goal):
+        variables = dict(scope)
+        goal_types.update(variables.values())
+        args = tuple(("type", variables[a]) if a in variables else ("obj", a) for a in atom.args)
+        start.append(((atom.predicate, args), 0))
 
     def initially_satisfiable(pattern) -> bool:
         # Some initial fact matches: some object of the right type already has
@@ -237,10 +225,10 @@ def analyse_goal(domain: Domain, problem: Problem, index: InitIndex | None = Non
     role_depth: dict[str, int] = {t: 0 for t in goal_types}
     frontier = list(start)
     achievers = defaultdict(list)
-    for action in domain.actions:
-        for atom, is_add, condition in effect_literals(action.effect):
-            if is_add:
-                achievers[atom[1]].append((action, atom, condition))
+    for action in domain.relaxed_actions:
+        for item in effect_literals(action.effect):
+            if item.is_add:
+                achievers[item.atom.predicate].append((action, item.atom, item.condition))
     while frontier:
         pattern, depth = frontier.pop()
         if best.get(pattern, 1 << 30) <= depth:
@@ -252,7 +240,12 @@ def analyse_goal(domain: Domain, problem: Problem, index: InitIndex | None = Non
         for action, added, condition in achievers.get(pattern[0], ()):
             bound = _unify(domain, objects, action, added, pattern[1])
             if bound is not None:
-                pre_atoms = [a for a in _atoms_with_polarity(("and", action.precondition, condition)) if a[2]]
+                pre_atoms = [
+                    (atom.predicate, atom.args, True)
+                    for part in (action.precondition, condition)
+                    for atom, positive in literals(part)
+                    if positive
+                ]
                 options.append((action, bound, pre_atoms, _roles(action, bound, pre_atoms, index)))
         if not options:
             continue
@@ -269,8 +262,6 @@ def analyse_goal(domain: Domain, problem: Problem, index: InitIndex | None = Non
                 if role_depth.get(type_name, 1 << 30) > depth + 1:
                     role_depth[type_name] = depth + 1
             for predicate_name, args, _ in pre_atoms:
-                if predicate_name == "=":
-                    continue
                 # A condition on a newly introduced role is one step further away.
                 next_depth = depth + (1 if roles_here.intersection(args) else 0)
                 new_args = []
@@ -302,11 +293,11 @@ def single_valued_predicates(domain: Domain, index: InitIndex) -> frozenset:
             continue
         adders = [
             action
-            for action in domain.actions
-            if any(is_add and atom[1] == predicate for atom, is_add, _ in effect_literals(action.effect))
+            for action in domain.relaxed_actions
+            if any(item.is_add and item.atom.predicate == predicate for item in effect_literals(action.effect))
         ]
         if adders and all(
-            any(not is_add and atom[1] == predicate for atom, is_add, _ in effect_literals(action.effect))
+            any(not item.is_add and item.atom.predicate == predicate for item in effect_literals(action.effect))
             for action in adders
         ):
             result.add(predicate)
@@ -317,7 +308,7 @@ def _unify(domain: Domain, objects: Mapping[str, str], action, added, pattern_ar
     """Bind the achiever's parameters to the pattern's objects and types, or None if they clash."""
     params = dict(action.parameters)
     bound: dict[str, tuple] = {}
-    for arg, want in zip(added[2], pattern_args):
+    for arg, want in zip(added.args, pattern_args):
         if arg.startswith("?"):
             declared = params.get(arg, "object")
             if want[0] == "obj":

@@ -25,7 +25,7 @@ from collections import defaultdict, deque
 from collections.abc import Callable, Mapping, Sequence, Set
 from dataclasses import dataclass
 
-from relevance_plan.pddl.reader import Formula
+from relevance_plan.pddl.formulas import Atom, conjuncts, effect_literals
 from relevance_plan.relevance.analysis import object_distances
 from relevance_plan.relevance.closure import Restored
 from relevance_plan.relevance.types import InferredTypes, infer_types
@@ -44,15 +44,11 @@ class Reachability:
     plan_objects: frozenset = frozenset()
 
 
-def _conjuncts(formula: Formula):
+def _required_atoms(formula):
     """Positive atoms that must hold (top-level conjunction only; the rest is ignored: a relaxation)."""
-    kind = formula[0]
-    if kind == "atom":
-        if formula[1] != "=":
-            yield formula[1], formula[2]
-    elif kind == "and":
-        for part in formula[1:]:
-            yield from _conjuncts(part)
+    for part in conjuncts(formula):
+        if isinstance(part, Atom):
+            yield part.predicate, part.args
 
 
 @dataclass(frozen=True)
@@ -65,30 +61,18 @@ class _Schema:
 
 
 def _schemas(domain) -> list[_Schema]:
+    """The relaxed actions (derived rules included) as join schemas; effect conditions are ignored."""
     result = []
-    for action in domain.actions:
-        pre = tuple(_conjuncts(action.precondition))
-        add = tuple(_adds(action.effect, ()))
-        result.append(
-            _Schema(
-                action.name, tuple(v for v, _ in action.parameters), tuple(t for _, t in action.parameters), pre, add
-            )
+    for action in domain.relaxed_actions:
+        pre = tuple(_required_atoms(action.precondition))
+        add = tuple(
+            (item.atom.predicate, item.atom.args, tuple((v, t) for v, t in item.quantified if v in item.atom.args))
+            for item in effect_literals(action.effect)
+            if item.is_add
         )
+        variables = tuple(v for v, _ in action.parameters)
+        result.append(_Schema(action.name, variables, tuple(t for _, t in action.parameters), pre, add))
     return result
-
-
-def _adds(effect: Formula, quantified: tuple):
-    """(predicate, args, quantified variables with types) of every atom an effect can add; conditions ignored."""
-    kind = effect[0]
-    if kind == "atom":
-        yield effect[1], effect[2], tuple((v, t) for v, t in quantified if v in effect[2])
-    elif kind == "and":
-        for part in effect[1:]:
-            yield from _adds(part, quantified)
-    elif kind == "forall":
-        yield from _adds(effect[2], quantified + tuple(effect[1]))
-    elif kind == "when":
-        yield from _adds(effect[2], quantified)
 
 
 class _OutOfBudget(Exception):
@@ -108,11 +92,13 @@ def relaxed_reachability(task, kept: Set[str], budget: int = DEFAULT_BUDGET) -> 
     allowed = set(kept) | set(domain.constants)
     types_of = dict(domain.constants)
     types_of.update(problem.objects)
-    goal = [(p,) + args for p, args in _conjuncts(problem.goal) if not any(a.startswith("?") for a in args)]
+    goal = [(p, *args) for p, args in _required_atoms(problem.goal) if not any(a.startswith("?") for a in args)]
     facts: dict[tuple, tuple | None] = {}  # fact -> (step, schema, binding) that first reached it; None: initial
     queue: deque = deque()
     # sorted: the same objects give the same relaxed plan whatever order the set was built in
-    for atom in sorted(atom for atom in problem.init if all(arg in allowed for arg in atom[1:])):
+    # timed initial literals that make a fact true count as reached: a plan may wait for them
+    timed = {literal.atom for literal in problem.timed_literals if literal.atom is not None and not literal.negated}
+    for atom in sorted(atom for atom in problem.init | timed if all(arg in allowed for arg in atom[1:])):
         facts[atom] = None
         queue.append(atom)
     of_type: dict[str, list] = {}

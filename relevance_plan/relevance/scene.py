@@ -12,7 +12,7 @@ import re
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-from relevance_plan.pddl.reader import Domain, Problem
+from relevance_plan.pddl.model import Domain, Problem
 
 _INDEX_SUFFIX = re.compile(r"[_\-]?\d+$")
 

@@ -24,7 +24,8 @@ from collections import defaultdict
 from dataclasses import dataclass
 from types import MappingProxyType
 
-from relevance_plan.pddl.reader import Action, Domain, Problem, effect_literals, formula_atoms
+from relevance_plan.pddl.formulas import effect_literals, literals
+from relevance_plan.pddl.model import Domain, Problem
 
 
 @dataclass(frozen=True)
@@ -36,8 +37,9 @@ class InferredTypes:
 
 
 def static_predicates(domain: Domain) -> frozenset:
-    """Predicates no action adds or deletes."""
-    changed = {atom[1] for action in domain.actions for atom, _, _ in effect_literals(action.effect)}
+    """Predicates no action adds or deletes (derived predicates are never static)."""
+    changed = {item.atom.predicate for action in domain.actions for item in effect_literals(action.effect)}
+    changed |= domain.derived_predicates
     return frozenset(p for p in domain.predicates if p not in changed)
 
 
@@ -90,20 +92,20 @@ def infer_types(domain: Domain, problem: Problem) -> InferredTypes:
     actions = []
     for action in domain.actions:
         needed: dict[str, set] = defaultdict(set)
-        for atom, positive in formula_atoms(action.precondition):
-            if not positive or atom[1] not in static:
+        for atom, positive in literals(action.precondition):
+            if not positive or atom.predicate not in static:
                 continue
-            args = atom[2]
-            if atom[1] in unary:
-                needed[args[0]].add(atom[1])
+            args = atom.args
+            if atom.predicate in unary:
+                needed[args[0]].add(atom.predicate)
             else:
                 for position, arg in enumerate(args):
-                    needed[arg].add(f"{atom[1]}@{position}")
+                    needed[arg].add(f"{atom.predicate}@{position}")
         params = []
         for variable, declared in action.parameters:
             wanted = frozenset(needed[variable] & unary) or frozenset(needed[variable] - unary)
             params.append((variable, parameter_type(wanted) if declared == "object" else declared))
-        actions.append(Action(action.name, tuple(params), action.precondition, action.effect))
+        actions.append(dataclasses.replace(action, parameters=tuple(params)))
     frozen_types = MappingProxyType(types)
     typed_domain = dataclasses.replace(
         domain,

@@ -19,7 +19,8 @@ import re
 from dataclasses import dataclass
 
 from relevance_plan.errors import RelevancePlanError
-from relevance_plan.pddl.reader import Formula, formula_constants, read_problem
+from relevance_plan.pddl.formulas import Formula, names_in
+from relevance_plan.pddl.parser import read_problem
 from relevance_plan.pddl.sexpr import parse_sexpr
 from relevance_plan.relevance.knowledge import KnowledgeModel
 from relevance_plan.session.state import LiveScene
@@ -162,4 +163,4 @@ def parse_goal(text: str, scene: LiveScene) -> Formula:
 
 
 def _goal_names(goal: Formula) -> set:
-    return set(formula_constants(goal))
+    return set(names_in(goal))

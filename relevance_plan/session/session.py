@@ -26,7 +26,8 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 
-from relevance_plan.pddl.reader import Domain, Problem, goal_objects
+from relevance_plan.pddl.model import Domain, Problem, goal_objects
+from relevance_plan.pddl.plans import Plan
 from relevance_plan.pddl.writer import write_pruned_problem
 from relevance_plan.planning.loop import PlanOptions, PlanResult, PlanStatus, first_selection, run_attempts, summarise
 from relevance_plan.planning.runner import RunOutcome
@@ -80,7 +81,7 @@ class Determination:
 @dataclass(frozen=True)
 class PlanReport:
     status: PlanStatus
-    steps: tuple = ()  # ((action, arg, ...), ...) lower-case
+    steps: Plan = Plan()
     source: str = "planner"  # "planner" or "previous" (still valid: the planner was not called)
     message: str = ""
     result: PlanResult | None = None
@@ -142,7 +143,7 @@ class Session:
         self._rules = None  # (functional positions, closure rules by predicate) for the trigger check
         self._singletons = self.scene.index.singletons
         self._single_valued = single_valued_predicates(domain, _IndexView(self.scene))
-        self.plan_steps: tuple | None = None
+        self.plan_steps: Plan | None = None
         self.planned_kept: frozenset | None = None
         self.planned_goal = None
         self._recount_passing()
@@ -483,7 +484,7 @@ class Session:
             self._planned(result.plan)
         return PlanReport(result.status, result.plan, "planner", result.message, result)
 
-    def _planned(self, steps: tuple) -> None:
+    def _planned(self, steps: Plan) -> None:
         self.plan_steps = steps
         self.planned_kept = self.kept
         self.planned_goal = self.scene.goal

@@ -14,8 +14,10 @@ from collections import defaultdict
 from collections.abc import Iterable
 from types import MappingProxyType
 
-from relevance_plan.pddl.formatter import format_atom
-from relevance_plan.pddl.reader import Domain, Formula, Problem, formula_atoms, read_problem
+from relevance_plan.pddl.formatter import format_problem
+from relevance_plan.pddl.formulas import Formula, literals
+from relevance_plan.pddl.model import Domain, Problem
+from relevance_plan.pddl.parser import read_problem
 
 
 class LiveIndex:
@@ -123,7 +125,7 @@ class LiveScene:
     @property
     def idle_goal(self) -> bool:
         """Whether the goal asks for nothing (``(and)``)."""
-        return not any(True for _ in formula_atoms(self.goal))
+        return not any(True for _ in literals(self.goal))
 
     def ordered_objects(self) -> dict:
         """The objects grouped by type, types in order of first appearance (the order of :meth:`problem_text`)."""
@@ -146,44 +148,8 @@ class LiveScene:
 
     def problem_text(self) -> str:
         """The current state as PDDL in the user's spelling (objects grouped by type, facts sorted)."""
-        show = self.display.get
-        by_type: dict[str, list[str]] = {}
-        for name, type_name in self.objects.items():
-            by_type.setdefault(type_name, []).append(show(name, name))
-        lines = [f"(define (problem {self.name})", f"  (:domain {self.domain.name})", "  (:objects"]
-        lines.extend(f"    {' '.join(names)} - {type_name}" for type_name, names in by_type.items())
-        lines.append("  )")
-        lines.append("  (:init")
-        for fact in sorted(self.facts):
-            lines.append("    " + format_atom([fact[0]] + [show(arg, arg) for arg in fact[1:]]))
-        lines.append("  )")
-        lines.append(f"  (:goal {format_formula(self.goal, show)})")
-        lines.append(")")
-        return "\n".join(lines) + "\n"
+        return format_problem(self.snapshot_problem())
 
     def read_problem(self) -> Problem:
         """The current state as a Problem read back from :meth:`problem_text` (with source spans)."""
         return read_problem(self.problem_text(), self.domain)
-
-
-def format_formula(formula: Formula, show=lambda name, default=None: name) -> str:
-    """PDDL text of a formula of the reader (``reader.py`` describes the tuples)."""
-    kind = formula[0]
-
-    def name(arg: str) -> str:
-        return arg if arg.startswith("?") else show(arg, arg)
-
-    if kind == "atom":
-        return "(" + " ".join([formula[1]] + [name(a) for a in formula[2]]) + ")"
-    if kind in ("and", "or"):
-        return "(" + " ".join([kind] + [format_formula(part, show) for part in formula[1:]]) + ")"
-    if kind == "not":
-        return f"(not {format_formula(formula[1], show)})"
-    if kind == "imply":
-        return f"(imply {format_formula(formula[1], show)} {format_formula(formula[2], show)})"
-    if kind in ("exists", "forall"):
-        params = " ".join(f"{var} - {type_name}" for var, type_name in formula[1])
-        return f"({kind} ({params}) {format_formula(formula[2], show)})"
-    if kind == "true":
-        return "(and)"
-    raise ValueError(f"not a formula: {formula!r}")

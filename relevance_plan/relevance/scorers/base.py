@@ -6,7 +6,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from functools import cached_property
 
-from relevance_plan.pddl.reader import Domain, Problem, goal_objects
+from relevance_plan.pddl.model import Domain, Problem, goal_objects
 from relevance_plan.relevance.analysis import GoalAnalysis, InitIndex, analyse_goal, index_init, object_distances
 from relevance_plan.relevance.knowledge import KnowledgeModel
 from relevance_plan.relevance.types import InferredTypes, infer_types

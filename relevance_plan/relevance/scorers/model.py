@@ -16,7 +16,7 @@ import math
 from dataclasses import dataclass, field
 
 from relevance_plan.errors import ModelError
-from relevance_plan.pddl.reader import formula_atoms
+from relevance_plan.pddl.formulas import predicates_in
 from relevance_plan.relevance.knowledge import Human, KnowledgeModel, ModelClass
 from relevance_plan.relevance.scene import Element, build_scene
 from relevance_plan.relevance.scorers.base import PlanningTask, ScoreRequest, ScoreResult
@@ -49,7 +49,7 @@ def _choose_objective(goal, model: KnowledgeModel, request: ScoreRequest) -> tup
                 f"unknown objective '{request.objective}' (model has: {', '.join(model.objectives)})", path=model.path
             )
         return request.objective, ""
-    goal_predicates = {atom[1] for atom, _ in formula_atoms(goal)}
+    goal_predicates = predicates_in(goal)
     matches = model.objective_for_goal(goal_predicates)
     if not matches:
         return None, (

@@ -1,0 +1,452 @@
+"""PDDL formulas as immutable typed nodes, and the one walk every consumer uses.
+
+Conditions, effects, numeric expressions, timed parts and PDDL3 constraints
+are small frozen dataclasses.  Terms stay plain strings (an object or
+constant name, or a ``?variable``, lower-cased) and ground atoms stay tuples
+``(predicate, arg, ...)``: states hold millions of those, and a tuple is the
+cheapest hashable value Python has.
+
+Every traversal goes through :func:`children` (the one place that knows
+which fields of a node are sub-nodes).  On top of it sit the walks the
+pipeline needs: :func:`walk`, :func:`literals` (atoms with their polarity),
+:func:`effect_literals`, :func:`numeric_effects`, :func:`quantifiers`,
+:func:`names_in` and :func:`substitute`.  Evaluation (the simulator) and
+formatting dispatch on node types themselves; nothing else does.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator, Mapping
+from dataclasses import dataclass
+
+Parameters = tuple[tuple[str, str], ...]  # ((?variable, type), ...)
+GroundAtom = tuple[str, ...]  # (predicate, arg, ...)
+
+
+def is_variable(term: str) -> bool:
+    return term.startswith("?")
+
+
+# --------------------------------------------------------------------------- numeric expressions
+
+
+@dataclass(frozen=True, slots=True)
+class Number:
+    value: float
+
+
+@dataclass(frozen=True, slots=True)
+class Fluent:
+    """A function term ``(f a ?x)``; ``total-cost``, ``total-time`` and ``is-violated`` included."""
+
+    function: str
+    args: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
+class NumericVariable:
+    """``?duration`` in a duration constraint or a durative action's effect."""
+
+    name: str
+
+
+@dataclass(frozen=True, slots=True)
+class Arithmetic:
+    """``(+ a b)``, ``(- a b)``, ``(* a b)``, ``(/ a b)``; ``(- a)`` is negation (one argument)."""
+
+    op: str
+    args: tuple[Expression, ...]
+
+
+Expression = Number | Fluent | NumericVariable | Arithmetic
+
+# --------------------------------------------------------------------------- conditions
+
+
+@dataclass(frozen=True, slots=True)
+class Atom:
+    predicate: str
+    args: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
+class Equality:
+    """``(= a b)`` between objects (numeric equality is a :class:`Comparison`)."""
+
+    left: str
+    right: str
+
+
+@dataclass(frozen=True, slots=True)
+class Not:
+    body: Formula
+
+
+@dataclass(frozen=True, slots=True)
+class And:
+    parts: tuple[Formula, ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
+class Or:
+    parts: tuple[Formula, ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
+class Imply:
+    condition: Formula
+    consequence: Formula
+
+
+@dataclass(frozen=True, slots=True)
+class Exists:
+    parameters: Parameters
+    body: Formula
+
+
+@dataclass(frozen=True, slots=True)
+class Forall:
+    """A universal condition, or a universally quantified effect."""
+
+    parameters: Parameters
+    body: Formula
+
+
+@dataclass(frozen=True, slots=True)
+class Comparison:
+    """A numeric condition: ``op`` is one of ``< <= > >= =``."""
+
+    op: str
+    left: Expression
+    right: Expression
+
+
+TIMES = {"start": "at start", "end": "at end", "all": "over all"}
+
+
+@dataclass(frozen=True, slots=True)
+class Timed:
+    """``(at start X)``, ``(at end X)``, ``(over all X)`` in a durative action (``when`` is a key of ``TIMES``)."""
+
+    when: str
+    body: Formula
+
+
+@dataclass(frozen=True, slots=True)
+class Preference:
+    """A PDDL3 soft goal or soft constraint; ``name`` may be None (anonymous)."""
+
+    name: str | None
+    body: Formula
+
+
+# PDDL3 trajectory-constraint operators and how many leading numbers each takes.
+MODAL_OPERATORS = {
+    "always": 0,
+    "sometime": 0,
+    "at-most-once": 0,
+    "sometime-after": 0,
+    "sometime-before": 0,
+    "within": 1,
+    "always-within": 1,
+    "hold-after": 1,
+    "hold-during": 2,
+    "at-end": 0,  # (at end φ) inside :constraints
+}
+
+
+@dataclass(frozen=True, slots=True)
+class Modal:
+    """A PDDL3 trajectory constraint: ``(always φ)``, ``(within 5 φ)``, ``(sometime-after φ ψ)``, ..."""
+
+    operator: str
+    numbers: tuple[float, ...]
+    parts: tuple[Formula, ...]
+
+
+# --------------------------------------------------------------------------- effects
+
+
+@dataclass(frozen=True, slots=True)
+class When:
+    condition: Formula
+    effect: Formula
+
+
+NUMERIC_EFFECT_OPS = ("assign", "increase", "decrease", "scale-up", "scale-down")
+
+
+@dataclass(frozen=True, slots=True)
+class NumericEffect:
+    op: str
+    fluent: Fluent
+    value: Expression
+
+
+Formula = (
+    Atom
+    | Equality
+    | Not
+    | And
+    | Or
+    | Imply
+    | Exists
+    | Forall
+    | Comparison
+    | Timed
+    | Preference
+    | Modal
+    | When
+    | NumericEffect
+)
+Node = Formula | Number | Fluent | NumericVariable | Arithmetic
+
+TRUE = And(())
+
+# --------------------------------------------------------------------------- the walk
+
+
+def children(node: Node) -> tuple[Node, ...]:
+    """The direct sub-nodes of ``node``, in source order (the only place that knows the fields)."""
+    if isinstance(node, (And, Or)):
+        return node.parts
+    if isinstance(node, (Not, Timed, Preference, Exists, Forall)):
+        return (node.body,)
+    if isinstance(node, Imply):
+        return (node.condition, node.consequence)
+    if isinstance(node, When):
+        return (node.condition, node.effect)
+    if isinstance(node, Comparison):
+        return (node.left, node.right)
+    if isinstance(node, NumericEffect):
+        return (node.fluent, node.value)
+    if isinstance(node, Arithmetic):
+        return node.args
+    if isinstance(node, Modal):
+        return node.parts
+    return ()
+
+
+def walk(node: Node) -> Iterator[Node]:
+    """Every node of ``node``, itself first (pre-order)."""
+    stack = [node]
+    while stack:
+        current = stack.pop()
+        yield current
+        stack.extend(reversed(children(current)))
+
+
+def literals(formula: Formula, positive: bool = True) -> Iterator[tuple[Atom, bool]]:
+    """Every atom of a condition with its polarity (``imply`` negates its condition).
+
+    Timed parts, preferences and quantifiers are looked through: this is the
+    relaxed view (a durative action is its conditions at both ends).
+    Numeric comparisons and object equality have no atoms.
+    """
+    if isinstance(formula, Atom):
+        yield formula, positive
+    elif isinstance(formula, Not):
+        yield from literals(formula.body, not positive)
+    elif isinstance(formula, Imply):
+        yield from literals(formula.condition, not positive)
+        yield from literals(formula.consequence, positive)
+    elif isinstance(formula, Modal) and formula.operator in ("at-most-once", "sometime-before", "sometime-after"):
+        # these constrain both ways: each part is required true at some points and false at others
+        for part in formula.parts:
+            yield from literals(part, positive)
+            yield from literals(part, not positive)
+    else:
+        for part in children(formula):
+            if not isinstance(part, (Number, Fluent, NumericVariable, Arithmetic)):
+                yield from literals(part, positive)
+
+
+@dataclass(frozen=True, slots=True)
+class EffectLiteral:
+    """An atom an effect adds or deletes, under its condition and its quantified variables."""
+
+    atom: Atom
+    is_add: bool
+    condition: Formula = TRUE
+    quantified: Parameters = ()
+    when: str | None = None  # "start" / "end" for a durative action's timed effect
+
+
+def effect_literals(effect: Formula) -> Iterator[EffectLiteral]:
+    """Every literal an effect can set (numeric effects are :func:`numeric_effects`)."""
+    yield from _effect_literals(effect, TRUE, (), None)
+
+
+def _effect_literals(effect: Formula, condition: Formula, quantified: Parameters, when: str | None):
+    if isinstance(effect, Atom):
+        yield EffectLiteral(effect, True, condition, quantified, when)
+    elif isinstance(effect, Not) and isinstance(effect.body, Atom):
+        yield EffectLiteral(effect.body, False, condition, quantified, when)
+    elif isinstance(effect, And):
+        for part in effect.parts:
+            yield from _effect_literals(part, condition, quantified, when)
+    elif isinstance(effect, Forall):
+        yield from _effect_literals(effect.body, condition, quantified + effect.parameters, when)
+    elif isinstance(effect, When):
+        combined = effect.condition if condition == TRUE else And((condition, effect.condition))
+        yield from _effect_literals(effect.effect, combined, quantified, when)
+    elif isinstance(effect, Timed):
+        yield from _effect_literals(effect.body, condition, quantified, effect.when)
+
+
+def numeric_effects(effect: Formula) -> Iterator[tuple[NumericEffect, Formula, Parameters, str | None]]:
+    """(effect, condition, quantified variables, time) of every numeric effect."""
+    stack: list[tuple[Formula, Formula, Parameters, str | None]] = [(effect, TRUE, (), None)]
+    while stack:
+        node, condition, quantified, when = stack.pop()
+        if isinstance(node, NumericEffect):
+            yield node, condition, quantified, when
+        elif isinstance(node, And):
+            stack.extend((part, condition, quantified, when) for part in reversed(node.parts))
+        elif isinstance(node, Forall):
+            stack.append((node.body, condition, quantified + node.parameters, when))
+        elif isinstance(node, When):
+            combined = node.condition if condition == TRUE else And((condition, node.condition))
+            stack.append((node.effect, combined, quantified, when))
+        elif isinstance(node, Timed):
+            stack.append((node.body, condition, quantified, node.when))
+
+
+def quantifiers(formula: Formula, positive: bool = True) -> Iterator[tuple[Exists | Forall, bool]]:
+    """Every quantifier of a condition with its polarity (a universal is one under positive
+    polarity, or an existential under negative polarity)."""
+    if isinstance(formula, (Exists, Forall)):
+        yield formula, positive
+        yield from quantifiers(formula.body, positive)
+    elif isinstance(formula, Not):
+        yield from quantifiers(formula.body, not positive)
+    elif isinstance(formula, Imply):
+        yield from quantifiers(formula.condition, not positive)
+        yield from quantifiers(formula.consequence, positive)
+    elif isinstance(formula, Modal) and formula.operator in ("at-most-once", "sometime-before", "sometime-after"):
+        for part in formula.parts:
+            yield from quantifiers(part, positive)
+            yield from quantifiers(part, not positive)
+    else:
+        for part in children(formula):
+            if not isinstance(part, (Number, Fluent, NumericVariable, Arithmetic)):
+                yield from quantifiers(part, positive)
+
+
+def terms_of(node: Node) -> Iterator[str]:
+    """Every term (name or variable) that appears as an argument in ``node``."""
+    for current in walk(node):
+        if isinstance(current, (Atom, Fluent)):
+            yield from current.args
+        elif isinstance(current, Equality):
+            yield current.left
+            yield current.right
+
+
+def names_in(node: Node) -> Iterator[str]:
+    """Object and constant names in ``node`` (variables left out); may repeat."""
+    return (term for term in terms_of(node) if not is_variable(term))
+
+
+def predicates_in(node: Node) -> set[str]:
+    return {current.predicate for current in walk(node) if isinstance(current, Atom)}
+
+
+def functions_in(node: Node) -> set[str]:
+    return {current.function for current in walk(node) if isinstance(current, Fluent)}
+
+
+def substitute(node: Node, binding: Mapping[str, str]) -> Node:
+    """``node`` with its free variables replaced by ``binding``'s names (bound variables stay)."""
+    return _rebuild(node, lambda term: binding.get(term, term), binding)
+
+
+def _rebuild(node: Node, rename: Callable[[str], str], binding: Mapping[str, str]) -> Node:
+    if isinstance(node, Atom):
+        return Atom(node.predicate, tuple(rename(a) for a in node.args))
+    if isinstance(node, Fluent):
+        return Fluent(node.function, tuple(rename(a) for a in node.args))
+    if isinstance(node, Equality):
+        return Equality(rename(node.left), rename(node.right))
+    if isinstance(node, (Exists, Forall)):
+        shadowed = {variable for variable, _ in node.parameters}
+        inner = {k: v for k, v in binding.items() if k not in shadowed}
+        return type(node)(node.parameters, _rebuild(node.body, lambda t: inner.get(t, t), inner))
+    parts = children(node)
+    if not parts:
+        return node
+    rebuilt = tuple(_rebuild(part, rename, binding) for part in parts)
+    if isinstance(node, And):
+        return And(rebuilt)
+    if isinstance(node, Or):
+        return Or(rebuilt)
+    if isinstance(node, Not):
+        return Not(rebuilt[0])
+    if isinstance(node, Imply):
+        return Imply(rebuilt[0], rebuilt[1])
+    if isinstance(node, Timed):
+        return Timed(node.when, rebuilt[0])
+    if isinstance(node, Preference):
+        return Preference(node.name, rebuilt[0])
+    if isinstance(node, When):
+        return When(rebuilt[0], rebuilt[1])
+    if isinstance(node, Comparison):
+        return Comparison(node.op, rebuilt[0], rebuilt[1])  # type: ignore[arg-type]
+    if isinstance(node, NumericEffect):
+        return NumericEffect(node.op, rebuilt[0], rebuilt[1])  # type: ignore[arg-type]
+    if isinstance(node, Arithmetic):
+        return Arithmetic(node.op, rebuilt)  # type: ignore[arg-type]
+    if isinstance(node, Modal):
+        return Modal(node.operator, node.numbers, rebuilt)
+    raise TypeError(f"not a formula node: {node!r}")
+
+
+def conjuncts(formula: Formula) -> Iterator[Formula]:
+    """The parts of a top-level conjunction (timed parts looked through), else the formula itself."""
+    if isinstance(formula, And):
+        for part in formula.parts:
+            yield from conjuncts(part)
+    elif isinstance(formula, Timed):
+        yield from conjuncts(formula.body)
+    else:
+        yield formula
+
+
+def ground(atom: Atom, binding: Mapping[str, str]) -> GroundAtom:
+    return (atom.predicate, *(binding.get(a, a) for a in atom.args))
+
+
+def is_durative_part(formula: Formula) -> bool:
+    return any(isinstance(node, Timed) for node in walk(formula))
+
+
+def conjuncts_timed(formula: Formula) -> Iterator[Timed]:
+    """The timed parts of a durative action's condition or effect (an untimed part counts as ``at start``)."""
+    if isinstance(formula, And):
+        for part in formula.parts:
+            yield from conjuncts_timed(part)
+    elif isinstance(formula, Timed):
+        yield formula
+    elif isinstance(formula, Preference):
+        return  # soft: never checked
+    else:
+        yield Timed("start", formula)
+
+
+def scoped_literals(
+    formula: Formula, positive: bool = True, scope: Parameters = ()
+) -> Iterator[tuple[Atom, bool, Parameters]]:
+    """Like :func:`literals`, with the quantified variables (and their types) around each atom."""
+    if isinstance(formula, Atom):
+        yield formula, positive, scope
+    elif isinstance(formula, Not):
+        yield from scoped_literals(formula.body, not positive, scope)
+    elif isinstance(formula, Imply):
+        yield from scoped_literals(formula.condition, not positive, scope)
+        yield from scoped_literals(formula.consequence, positive, scope)
+    elif isinstance(formula, (Exists, Forall)):
+        yield from scoped_literals(formula.body, positive, scope + formula.parameters)
+    else:
+        for part in children(formula):
+            if not isinstance(part, (Number, Fluent, NumericVariable, Arithmetic)):
+                yield from scoped_literals(part, positive, scope)

@@ -1,0 +1,228 @@
+"""The immutable PDDL model: domains, problems, actions, derived predicates, metrics.
+
+Built by ``parser.py``, written back by ``formatter.py`` (whole files) and
+``writer.py`` (the user's own file minus pruned objects).  Names are
+lower-cased (PDDL is case-insensitive); a problem keeps the user's spelling
+of every object and the source spans the cutting writer needs.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Iterator, Mapping
+from dataclasses import dataclass, field
+from types import MappingProxyType
+
+from relevance_plan.pddl.formulas import TRUE, Atom, Expression, Formula, GroundAtom, Parameters, names_in
+
+NUMBER = "number"  # the type of a numeric function
+
+
+def frozen(mapping: Mapping) -> Mapping:
+    return MappingProxyType(dict(mapping))
+
+
+def either_members(type_name: str) -> tuple[str, ...]:
+    """``(either a b)`` -> ("a", "b"); a plain type -> (type,)."""
+    if type_name.startswith("(either "):
+        return tuple(type_name[len("(either ") : -1].split())
+    return (type_name,)
+
+
+@dataclass(frozen=True, slots=True)
+class Action:
+    """An action schema; a durative action has a ``duration`` constraint and timed conditions and effects."""
+
+    name: str
+    parameters: Parameters
+    precondition: Formula = TRUE  # a durative action's :condition
+    effect: Formula = TRUE
+    duration: Formula | None = None
+
+    @property
+    def durative(self) -> bool:
+        return self.duration is not None
+
+
+@dataclass(frozen=True, slots=True)
+class DerivedPredicate:
+    """``(:derived (p ?x ...) body)``: ``p`` holds of whatever satisfies ``body``."""
+
+    head: Atom  # its arguments are the parameters' variables
+    parameters: Parameters
+    body: Formula
+
+
+@dataclass(frozen=True, slots=True)
+class Metric:
+    direction: str  # "minimize" or "maximize"
+    expression: Expression
+
+
+@dataclass(frozen=True, slots=True)
+class TimedLiteral:
+    """``(at T fact)``, ``(at T (not fact))`` or ``(at T (= (f ...) v))`` in a problem's :init."""
+
+    time: float
+    atom: GroundAtom | None = None  # a fact that becomes true (or false when ``negated``)
+    negated: bool = False
+    fluent: GroundAtom | None = None  # (function, args...) that takes ``value``
+    value: float | None = None
+
+
+@dataclass(frozen=True, eq=False)
+class Domain:
+    name: str
+    requirements: frozenset
+    types: Mapping[str, str]  # type -> parent type ("object" has parent "")
+    constants: Mapping[str, str]  # constant -> type
+    predicates: Mapping[str, Parameters]
+    actions: tuple[Action, ...]
+    path: str | None = None
+    functions: Mapping[str, Parameters] = field(default_factory=dict)
+    function_types: Mapping[str, str] = field(default_factory=dict)  # function -> "number" (no object fluents)
+    derived: tuple[DerivedPredicate, ...] = ()
+    constraints: Formula | None = None
+
+    def ancestors(self, type_name: str) -> tuple[str, ...]:
+        """The type itself and every supertype, most specific first."""
+        chain = []
+        seen = set()
+        current = type_name
+        while current and current not in seen:
+            chain.append(current)
+            seen.add(current)
+            current = self.types.get(current, "object" if current != "object" else "")
+        return tuple(chain)
+
+    def is_subtype(self, type_name: str, of: str) -> bool:
+        if of == "object":
+            return True
+        targets = either_members(of)
+        return any(t in self.ancestors(member) for member in either_members(type_name) for t in targets)
+
+    def action(self, name: str) -> Action | None:
+        return self._actions_by_name.get(name)
+
+    @property
+    def _actions_by_name(self) -> Mapping[str, Action]:
+        cached = self.__dict__.get("_action_index")
+        if cached is None:
+            cached = {action.name: action for action in self.actions}
+            object.__setattr__(self, "_action_index", cached)
+        return cached
+
+    @property
+    def relaxed_actions(self) -> tuple[Action, ...]:
+        """The actions plus one pseudo-action per derived rule (its body as precondition, its head as
+        effect): the view of the domain the relevance analysis works on.  Timed parts of durative
+        actions are looked through by the walks of ``formulas``."""
+        cached = self.__dict__.get("_relaxed_actions")
+        if cached is None:
+            rules = tuple(
+                Action(f"(derive {rule.head.predicate})", rule.parameters, rule.body, rule.head)
+                for rule in self.derived
+            )
+            cached = self.actions + rules
+            object.__setattr__(self, "_relaxed_actions", cached)
+        return cached
+
+    @property
+    def derived_predicates(self) -> frozenset:
+        return frozenset(rule.head.predicate for rule in self.derived)
+
+    @property
+    def temporal(self) -> bool:
+        return any(action.durative for action in self.actions)
+
+    @property
+    def numeric(self) -> bool:
+        """Numeric fluents beyond action costs (a ``total-cost`` only domain is not numeric)."""
+        return any(name != "total-cost" for name in self.functions)
+
+
+@dataclass(frozen=True, eq=False)
+class Problem:
+    name: str
+    domain_name: str
+    objects: Mapping[str, str]  # object -> type, in file order
+    init: frozenset  # ground atoms that are true
+    goal: Formula
+    text: str = field(repr=False)
+    path: str | None = None
+    display_names: Mapping[str, str] = field(default_factory=dict, repr=False)
+    numeric_init: Mapping[GroundAtom, float] = field(default_factory=dict, repr=False)  # (f, args...) -> value
+    timed_literals: tuple[TimedLiteral, ...] = ()
+    constraints: Formula | None = None
+    metric: Metric | None = None
+    requirements: frozenset = frozenset()
+    # Source layout, for cutting the file (see writer.py).
+    object_groups: tuple = field(default=(), repr=False)  # ((symbols...), type_symbol | None)
+    init_spans: tuple = field(default=(), repr=False)  # ((start, end), frozenset(objects)) of every :init entry
+    init_line: Mapping[GroundAtom, int] = field(default_factory=dict, repr=False)
+
+    def display(self, name: str) -> str:
+        return self.display_names.get(name, name)
+
+    def object_line(self, name: str) -> int | None:
+        """The line that declares object ``name``, if the problem came from text."""
+        for symbols, _ in self.object_groups:
+            for symbol in symbols:
+                if symbol.text.lower() == name:
+                    return symbol.line
+        return None
+
+
+def make_problem(
+    name: str,
+    domain_name: str,
+    objects: Mapping[str, str],
+    init: Iterable[GroundAtom],
+    goal: Formula,
+    *,
+    display: Mapping[str, str] | None = None,
+    numeric_init: Mapping[GroundAtom, float] | None = None,
+    metric: Metric | None = None,
+) -> Problem:
+    """A problem built in code (no source text); ``init`` keeps its order when formatted."""
+    order: dict[GroundAtom, int] = {}
+    for atom in init:
+        order.setdefault(tuple(atom), len(order) + 1)
+    return Problem(
+        name=name,
+        domain_name=domain_name,
+        objects=frozen(objects),
+        init=frozenset(order),
+        goal=goal,
+        text="",
+        display_names=frozen(display or {}),
+        numeric_init=frozen(numeric_init or {}),
+        metric=metric,
+        init_line=frozen(order),
+    )
+
+
+def all_objects(domain: Domain, problem: Problem) -> Mapping[str, str]:
+    """Constants and objects with their types."""
+    everything = dict(domain.constants)
+    everything.update(problem.objects)
+    return everything
+
+
+def goal_objects(problem: Problem, domain: Domain) -> frozenset:
+    """Objects named in the goal (constants excluded: they are never pruned)."""
+    return frozenset(name for name in names_in(problem.goal) if name in problem.objects) - set(domain.constants)
+
+
+def pinned_objects(problem: Problem, domain: Domain) -> frozenset:
+    """Objects that must stay whatever their relevance: named in the goal, the trajectory
+    constraints or the metric (pruning them would change what the problem asks)."""
+    found = set(names_in(problem.goal))
+    for part in (problem.constraints, problem.metric.expression if problem.metric else None):
+        if part is not None:
+            found.update(names_in(part))
+    return frozenset(name for name in found if name in problem.objects)
+
+
+def numeric_facts(problem: Problem) -> Iterator[GroundAtom]:
+    """The initial numeric values' terms as facts ``(function, args...)``, for linking objects."""
+    return (term for term in problem.numeric_init if len(term) > 1)

@@ -1,0 +1,831 @@
+"""Read PDDL text into the model of ``model.py``: PDDL 3.1 without PDDL+.
+
+Typed STRIPS and ADL, action costs and numeric fluents, durative actions
+(with duration inequalities), derived predicates, timed initial literals,
+``either`` types, and PDDL3 preferences and trajectory constraints, which
+are read and passed through.  PDDL+ (processes, events, continuous effects)
+and object fluents are refused in one line naming the construct.
+
+Errors name the file and the line.  A mistake inside the domain is a PDDL
+error (exit 32); a problem that uses a name its domain lacks does not belong
+to the domain (exit 34).  It is fast on big problems (no grounding, one pass
+over the text) and keeps the spans the cutting writer needs.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Mapping
+from dataclasses import dataclass, replace
+from types import MappingProxyType
+
+from relevance_plan.errors import DomainMismatchError, PDDLParseError, UnsupportedFeatureError
+from relevance_plan.pddl import formulas as f
+from relevance_plan.pddl.model import NUMBER, Action, DerivedPredicate, Domain, Metric, Problem, TimedLiteral, frozen
+from relevance_plan.pddl.sexpr import Node, Symbol, parse_sexpr
+
+# Accepted as written; PDDL+ is refused (see UNSUPPORTED_REQUIREMENTS).
+KNOWN_REQUIREMENTS = frozenset(
+    {
+        ":strips",
+        ":typing",
+        ":negative-preconditions",
+        ":disjunctive-preconditions",
+        ":equality",
+        ":existential-preconditions",
+        ":universal-preconditions",
+        ":quantified-preconditions",
+        ":conditional-effects",
+        ":adl",
+        ":action-costs",
+        ":fluents",
+        ":numeric-fluents",
+        ":durative-actions",
+        ":duration-inequalities",
+        ":derived-predicates",
+        ":timed-initial-literals",
+        ":preferences",
+        ":constraints",
+        ":goal-utilities",
+        ":domain-axioms",
+        ":safety-constraints",
+        ":expression-evaluation",
+        ":open-world",
+        ":true-negation",
+        ":ucpop",
+        ":foralls",
+        ":action-expansions",
+        ":foreach-expansions",
+        ":dag-expansions",
+        ":subgoals-through-axioms",
+        ":numbers",
+        ":timed-initial-fluents",
+    }
+)
+UNSUPPORTED_REQUIREMENTS = {
+    ":continuous-effects": "continuous effects (PDDL+)",
+    ":processes": "processes (PDDL+)",
+    ":events": "events (PDDL+)",
+    ":time": "continuous time (PDDL+)",
+    ":object-fluents": "object fluents",
+}
+# Functions every planner knows without a declaration.
+BUILTIN_FUNCTIONS = {"total-cost": (), "total-time": ()}
+
+_NUMBER_RE = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?")
+_COMPARISONS = ("<", "<=", ">", ">=", "=")
+_ARITHMETIC = ("+", "-", "*", "/")
+
+
+def _number(text: str) -> float | None:
+    return float(text) if _NUMBER_RE.fullmatch(text) else None
+
+
+@dataclass(frozen=True)
+class _Scope:
+    """What names mean where a formula is read."""
+
+    types: Mapping[str, str]
+    predicates: Mapping[str, f.Parameters]
+    functions: Mapping[str, f.Parameters]
+    objects: Mapping[str, str] | None  # None: any name (the problem is not known yet)
+    variables: Mapping[str, str]
+    in_problem: bool = False  # unknown names then mean the problem does not fit its domain
+    durative: bool = False  # ``at start`` / ``over all`` / ``?duration`` allowed
+    trajectory: bool = False  # PDDL3 modal operators allowed (:constraints)
+    preferences: bool = False
+
+    def with_variables(self, parameters: f.Parameters) -> _Scope:
+        variables = dict(self.variables)
+        variables.update(parameters)
+        return replace(self, variables=variables)
+
+
+class _Reader:
+    def __init__(self, path: str | None):
+        self.path = path
+
+    def fail(self, message: str, where, error=PDDLParseError):
+        raise error(message, path=self.path, line=where.line if where is not None else None)
+
+    def mismatch(self, scope: _Scope):
+        return DomainMismatchError if scope.in_problem else PDDLParseError
+
+    def symbol(self, item, what: str) -> str:
+        if not isinstance(item, Symbol):
+            self.fail(f"expected {what}, found a list", item)
+        return item.text.lower()
+
+    @staticmethod
+    def keyword_of(node) -> str | None:
+        if isinstance(node, Node) and node.items and isinstance(node.items[0], Symbol):
+            return node.items[0].text.lower()
+        return None
+
+    def header(self, root: Node, kind: str) -> tuple[str, list]:
+        items = root.items
+        if not items or self.keyword_of(root) != "define":
+            self.fail("expected '(define ...)'", root)
+        if len(items) < 2 or not isinstance(items[1], Node) or len(items[1].items) != 2:
+            self.fail(f"expected '({kind} NAME)' after define", items[1] if len(items) > 1 else root)
+        head = items[1]
+        head_kind = self.symbol(head.items[0], kind)
+        if head_kind != kind:
+            other = "problem" if kind == "domain" else "domain"
+            if head_kind == other:
+                self.fail(f"this is a PDDL {other} file, not a {kind} file", head)
+            self.fail(f"expected '({kind} NAME)', found '({head_kind} ...)'", head)
+        return self.symbol(head.items[1], f"{kind} name"), items[2:]
+
+    def requirements(self, body: list) -> frozenset:
+        found = set()
+        for item in body:
+            requirement = self.symbol(item, "a requirement")
+            if requirement in UNSUPPORTED_REQUIREMENTS:
+                self.fail(
+                    f"requirement '{item.text}': {UNSUPPORTED_REQUIREMENTS[requirement]} are not supported",
+                    item,
+                    UnsupportedFeatureError,
+                )
+            if not requirement.startswith(":"):
+                self.fail(f"requirement '{item.text}' must start with ':'", item)
+            found.add(requirement)
+        return frozenset(found)
+
+    # ---------------------------------------------------------------- typed lists
+
+    def type_name(self, item) -> str:
+        if isinstance(item, Node):
+            if self.keyword_of(item) != "either" or len(item.items) < 2:
+                self.fail("expected a type name or '(either TYPE ...)'", item)
+            members = [self.symbol(member, "a type name") for member in item.items[1:]]
+            return "(either " + " ".join(members) + ")" if len(members) > 1 else members[0]
+        return item.text.lower()
+
+    def typed_list(self, items: list, what: str) -> tuple[list, list]:
+        """'a b - t c - u d' -> [(symbol, type)] and the groups ((symbols...), type item | None)."""
+        result: list = []
+        groups: list = []
+        pending: list[Symbol] = []
+        index = 0
+        while index < len(items):
+            item = items[index]
+            if isinstance(item, Node):
+                self.fail(f"unexpected list in {what}", item)
+            if item.text == "-":
+                if index + 1 >= len(items):
+                    self.fail(f"missing type after '-' in {what}", item)
+                if not pending:
+                    self.fail(f"type given to nothing in {what}", item)
+                type_item = items[index + 1]
+                type_name = self.type_name(type_item)
+                result.extend((symbol, type_name) for symbol in pending)
+                groups.append((tuple(pending), type_item))
+                pending = []
+                index += 2
+                continue
+            pending.append(item)
+            index += 1
+        if pending:
+            result.extend((symbol, "object") for symbol in pending)
+            groups.append((tuple(pending), None))
+        return result, groups
+
+    def parameters(self, node, scope: _Scope | None, *, unique: bool = True) -> f.Parameters:
+        if not isinstance(node, Node):
+            self.fail("expected a parameter list", node)
+        pairs, _ = self.typed_list(node.items, "parameter list")
+        params: list[tuple[str, str]] = []
+        for symbol, type_name in pairs:
+            if not symbol.text.startswith("?"):
+                self.fail(f"parameter '{symbol.text}' must start with '?'", symbol)
+            name = symbol.text.lower()
+            if scope is not None:
+                for member in type_name.removeprefix("(either ").rstrip(")").split():
+                    if member not in scope.types:
+                        self.fail(f"unknown type '{member}'", symbol, self.mismatch(scope))
+            if unique and any(name == other for other, _ in params):
+                self.fail(f"parameter '{symbol.text}' is declared twice", symbol)
+            params.append((name, type_name))
+        return tuple(params)
+
+    # ---------------------------------------------------------------- terms and expressions
+
+    def term(self, item, scope: _Scope, context: str) -> str:
+        if isinstance(item, Node):
+            self.fail(
+                f"a function term as an argument of '{context}' (object fluents) is not supported",
+                item,
+                UnsupportedFeatureError,
+            )
+        text = item.text.lower()
+        if text.startswith("?"):
+            if text not in scope.variables:
+                self.fail(f"unknown variable '{item.text}'", item)
+        elif scope.objects is not None and text not in scope.objects:
+            self.fail(f"unknown object or constant '{item.text}' in '({context} ...)'", item, self.mismatch(scope))
+        return text
+
+    def expression(self, item, scope: _Scope) -> f.Expression:
+        if isinstance(item, Symbol):
+            value = _number(item.text)
+            if value is not None:
+                return f.Number(value)
+            text = item.text.lower()
+            if text == "#t":
+                self.fail("continuous effects ('#t', PDDL+) are not supported", item, UnsupportedFeatureError)
+            if text == "?duration" and scope.durative:
+                return f.NumericVariable(text)
+            if text in scope.functions or text in BUILTIN_FUNCTIONS:
+                return f.Fluent(text)  # a 0-ary function written without parentheses
+            self.fail(f"expected a number or a numeric expression, found '{item.text}'", item)
+        head = self.keyword_of(item)
+        if head is None:
+            self.fail("expected a numeric expression", item)
+        args = item.items[1:]
+        if head in _ARITHMETIC:
+            if not args or (head != "-" and len(args) < 2):
+                self.fail(f"'{head}' needs {'one or more' if head == '-' else 'two or more'} arguments", item)
+            return f.Arithmetic(head, tuple(self.expression(arg, scope) for arg in args))
+        return self.fluent(item, scope)
+
+    def fluent(self, node: Node, scope: _Scope) -> f.Fluent:
+        name = self.symbol(node.items[0], "a function name")
+        if name == "is-violated":
+            return f.Fluent(name, tuple(self.symbol(arg, "a preference name") for arg in node.items[1:]))
+        declared = scope.functions.get(name, BUILTIN_FUNCTIONS.get(name))
+        if declared is None:
+            self.fail(f"undeclared function '{name}'", node, self.mismatch(scope))
+        args = tuple(self.term(arg, scope, name) for arg in node.items[1:])
+        if len(args) != len(declared):
+            self.fail(f"function '{name}' takes {len(declared)} arguments, got {len(args)}", node, self.mismatch(scope))
+        return f.Fluent(name, args)
+
+    def numeric_operand(self, item) -> bool:
+        if isinstance(item, Node):
+            return True
+        return _number(item.text) is not None or item.text.lower() == "?duration"
+
+    # ---------------------------------------------------------------- conditions
+
+    def condition(self, node, scope: _Scope) -> f.Formula:
+        if isinstance(node, Symbol):
+            self.fail(f"expected a condition, found '{node.text}'", node)
+        if not node.items:
+            return f.TRUE
+        head = self.keyword_of(node)
+        if head is None:
+            self.fail("expected a condition", node)
+        args = node.items[1:]
+        if head in ("and", "or"):
+            parts = tuple(self.condition(part, scope) for part in args)
+            return f.And(parts) if head == "and" else f.Or(parts)
+        if head == "not":
+            if len(args) != 1:
+                self.fail("'not' takes one condition", node)
+            return f.Not(self.condition(args[0], scope))
+        if head == "imply":
+            if len(args) != 2:
+                self.fail("'imply' takes two conditions", node)
+            return f.Imply(self.condition(args[0], scope), self.condition(args[1], scope))
+        if head in ("exists", "forall"):
+            if len(args) != 2:
+                self.fail(f"'{head}' takes a parameter list and a condition", node)
+            params = self.parameters(args[0], scope)
+            body = self.condition(args[1], scope.with_variables(params))
+            return f.Exists(params, body) if head == "exists" else f.Forall(params, body)
+        if head in _COMPARISONS and len(args) == 2 and (head != "=" or any(map(self.numeric_operand, args))):
+            return f.Comparison(head, self.expression(args[0], scope), self.expression(args[1], scope))
+        special = self.special_condition(node, head, args, scope)
+        if special is not None:
+            return special
+        return self.atom(node, scope)
+
+    def special_condition(self, node: Node, head: str, args: list, scope: _Scope) -> f.Formula | None:
+        """Timed conditions, preferences and PDDL3 modal operators; None for an ordinary atom."""
+        timed = self.timed_part(node, head, args, scope)
+        if timed is not None:
+            return f.Timed(timed[0], self.condition(timed[1], scope))
+        if head == "preference" and args:
+            if not (scope.preferences or scope.trajectory):
+                self.fail("'preference' outside a goal, precondition or constraint", node)
+            if len(args) == 2:
+                return f.Preference(self.symbol(args[0], "a preference name"), self.condition(args[1], scope))
+            if len(args) == 1:
+                return f.Preference(None, self.condition(args[0], scope))
+            self.fail("'preference' takes a name and a condition", node)
+        if scope.trajectory and head in f.MODAL_OPERATORS and head not in scope.predicates:
+            return self.modal(node, head, args, scope)
+        if scope.trajectory and head == "at" and len(args) == 2 and self.keyword_of_symbol(args[0]) == "end":
+            return f.Modal("at-end", (), (self.condition(args[1], scope),))
+        return None
+
+    @staticmethod
+    def keyword_of_symbol(item) -> str | None:
+        return item.text.lower() if isinstance(item, Symbol) else None
+
+    def timed_part(self, node: Node, head: str, args: list, scope: _Scope) -> tuple[str, Node] | None:
+        if not scope.durative or len(args) != 2 or not isinstance(args[1], Node):
+            return None
+        second = self.keyword_of_symbol(args[0])
+        if head == "at" and second in ("start", "end"):
+            return second, args[1]
+        if head == "over" and second == "all":
+            return "all", args[1]
+        return None
+
+    def modal(self, node: Node, head: str, args: list, scope: _Scope) -> f.Modal:
+        count = f.MODAL_OPERATORS[head]
+        numbers = []
+        for item in args[:count]:
+            value = _number(item.text) if isinstance(item, Symbol) else None
+            if value is None:
+                self.fail(f"'{head}' expects {count} number(s) before its condition(s)", node)
+            numbers.append(value)
+        wanted = 2 if head in ("sometime-after", "sometime-before", "always-within") else 1
+        parts = args[count:]
+        if len(parts) != wanted:
+            self.fail(f"'{head}' takes {wanted} condition(s)", node)
+        return f.Modal(head, tuple(numbers), tuple(self.condition(part, scope) for part in parts))
+
+    def atom(self, node: Node, scope: _Scope) -> f.Atom | f.Equality:
+        head = self.keyword_of(node)
+        if head is None:
+            self.fail("expected an atom", node)
+        args = tuple(self.term(item, scope, head) for item in node.items[1:])
+        if head == "=":
+            if len(args) != 2:
+                self.fail("'=' takes two arguments", node)
+            return f.Equality(args[0], args[1])
+        declared = scope.predicates.get(head)
+        if declared is None:
+            if head in scope.functions:
+                self.fail(f"function '{head}' used as a predicate", node, self.mismatch(scope))
+            self.fail(f"unknown predicate '{head}'", node, self.mismatch(scope))
+        if len(declared) != len(args):
+            self.fail(
+                f"predicate '{head}' takes {len(declared)} arguments, got {len(args)}", node, self.mismatch(scope)
+            )
+        return f.Atom(head, args)
+
+    # ---------------------------------------------------------------- effects
+
+    def effect(self, node, scope: _Scope) -> f.Formula:
+        if isinstance(node, Symbol):
+            self.fail(f"expected an effect, found '{node.text}'", node)
+        if not node.items:
+            return f.TRUE
+        head = self.keyword_of(node)
+        args = node.items[1:]
+        if head == "and":
+            return f.And(tuple(self.effect(part, scope) for part in args))
+        if head == "not":
+            if len(args) != 1 or not isinstance(args[0], Node):
+                self.fail("'not' in an effect takes one atom", node)
+            inner = self.atom(args[0], scope)
+            if not isinstance(inner, f.Atom):
+                self.fail("'not' in an effect takes one atom", node)
+            return f.Not(inner)
+        if head == "forall":
+            if len(args) != 2:
+                self.fail("'forall' in an effect takes a parameter list and an effect", node)
+            params = self.parameters(args[0], scope)
+            return f.Forall(params, self.effect(args[1], scope.with_variables(params)))
+        if head == "when":
+            if len(args) != 2:
+                self.fail("'when' takes a condition and an effect", node)
+            return f.When(self.condition(args[0], scope), self.effect(args[1], scope))
+        if head in f.NUMERIC_EFFECT_OPS:
+            return self.numeric_effect(node, head, args, scope)
+        timed = self.timed_part(node, head or "", args, scope)
+        if timed is not None:
+            if timed[0] == "all":
+                self.fail("'over all' is not allowed in an effect", node)
+            return f.Timed(timed[0], self.effect(timed[1], scope))
+        atom = self.atom(node, scope)
+        if not isinstance(atom, f.Atom):
+            self.fail("'=' is not an effect (use 'assign' for numeric values)", node)
+        return atom
+
+    def numeric_effect(self, node: Node, head: str, args: list, scope: _Scope) -> f.NumericEffect:
+        if len(args) != 2 or not isinstance(args[0], Node):
+            self.fail(f"'{head}' takes a function term and a value", node)
+        target = self.fluent(args[0], scope)
+        return f.NumericEffect(head, target, self.expression(args[1], scope))
+
+
+# --------------------------------------------------------------------------- domains
+
+
+@dataclass
+class _DomainParts:
+    requirements: frozenset = frozenset()
+    types: dict | None = None
+    constants: dict | None = None
+    predicates: dict | None = None
+    functions: dict | None = None
+    function_types: dict | None = None
+    action_nodes: list | None = None
+    derived_nodes: list | None = None
+    constraint_node: Node | None = None
+
+    def __post_init__(self):
+        self.types = {"object": ""}
+        self.constants, self.predicates, self.functions, self.function_types = {}, {}, {}, {}
+        self.action_nodes, self.derived_nodes = [], []
+
+
+def read_domain(text: str, path: str | None = None) -> Domain:
+    """Build a Domain from PDDL text; errors name ``path`` and the line."""
+    reader = _Reader(path)
+    name, sections = reader.header(parse_sexpr(text, path), "domain")
+    parts = _DomainParts()
+    for section in sections:
+        _read_domain_section(reader, section, parts)
+    scope = _Scope(
+        MappingProxyType(parts.types),
+        MappingProxyType(parts.predicates),
+        MappingProxyType(parts.functions),
+        MappingProxyType(parts.constants),
+        {},
+        preferences=True,
+    )
+    actions = []
+    seen: set[str] = set()
+    for node in parts.action_nodes:
+        action = _read_action(reader, node, scope)
+        if action.name in seen:
+            reader.fail(f"action '{action.name}' is defined twice", node)
+        seen.add(action.name)
+        actions.append(action)
+    derived = tuple(_read_derived(reader, node, scope) for node in parts.derived_nodes)
+    constraints = None
+    if parts.constraint_node is not None:
+        constraints = reader.condition(parts.constraint_node, replace(scope, trajectory=True))
+    return Domain(
+        name=name,
+        requirements=parts.requirements,
+        types=frozen(parts.types),
+        constants=frozen(parts.constants),
+        predicates=frozen(parts.predicates),
+        actions=tuple(actions),
+        path=path,
+        functions=frozen(parts.functions),
+        function_types=frozen(parts.function_types),
+        derived=derived,
+        constraints=constraints,
+    )
+
+
+def _read_domain_section(reader: _Reader, section, parts: _DomainParts) -> None:
+    key = reader.keyword_of(section)
+    if key is None:
+        reader.fail("expected a '(:section ...)'", section)
+    body = section.items[1:]
+    if key == ":requirements":
+        parts.requirements = parts.requirements | reader.requirements(body)
+    elif key == ":types":
+        _read_types(reader, body, parts.types)
+    elif key == ":constants":
+        pairs, _ = reader.typed_list(body, ":constants")
+        for symbol, type_name in pairs:
+            _check_type(reader, type_name, parts.types, symbol, f"constant '{symbol.text}'", PDDLParseError)
+            parts.constants[symbol.text.lower()] = type_name
+    elif key == ":predicates":
+        for item in body:
+            if not isinstance(item, Node) or not item.items:
+                reader.fail("expected '(predicate ?x - type ...)'", item)
+            predicate = reader.symbol(item.items[0], "a predicate name")
+            if predicate in parts.predicates:
+                reader.fail(f"predicate '{predicate}' is declared twice", item)
+            params = reader.parameters(Node(item.items[1:], item.start, item.end, item.line), None, unique=False)
+            for (_, type_name), symbol in zip(params, item.items[1:]):
+                _check_type(reader, type_name, parts.types, symbol, f"predicate '{predicate}'", PDDLParseError)
+            parts.predicates[predicate] = params
+    elif key == ":functions":
+        _read_functions(reader, body, parts)
+    elif key in (":action", ":durative-action"):
+        parts.action_nodes.append(section)
+    elif key == ":derived":
+        parts.derived_nodes.append(section)
+    elif key == ":constraints":
+        if len(body) != 1:
+            reader.fail("expected '(:constraints CONDITION)'", section)
+        parts.constraint_node = body[0]
+    elif key in (":process", ":event"):
+        reader.fail(f"'{key}' (PDDL+) is not supported", section, UnsupportedFeatureError)
+    else:
+        reader.fail(f"unknown domain section '{key}'", section)
+
+
+def _check_type(reader: _Reader, type_name: str, types: Mapping[str, str], where, what: str, error) -> None:
+    for member in type_name.removeprefix("(either ").rstrip(")").split():
+        if member not in types:
+            reader.fail(f"{what} uses unknown type '{member}'", where, error)
+
+
+def _read_types(reader: _Reader, body: list, types: dict) -> None:
+    pairs, _ = reader.typed_list(body, ":types")
+    for symbol, parent in pairs:
+        name = symbol.text.lower()
+        if parent.startswith("(either"):
+            parent = "object"  # a type cannot have two parents here; objects of it still match 'object'
+        types[name] = parent if name != "object" else ""
+    for parent in list(types.values()):
+        if parent and parent not in types:
+            types[parent] = "object"  # a parent used but never declared is a subtype of object
+
+
+def _read_functions(reader: _Reader, body: list, parts: _DomainParts) -> None:
+    index = 0
+    while index < len(body):
+        item = body[index]
+        if isinstance(item, Symbol) and item.text == "-":
+            if index + 1 >= len(body):
+                reader.fail("missing type after '-' in :functions", item)
+            kind = reader.type_name(body[index + 1])
+            if kind != NUMBER:
+                reader.fail(
+                    f"object fluents (functions of type '{kind}') are not supported", item, UnsupportedFeatureError
+                )
+            index += 2
+            continue
+        if not isinstance(item, Node) or not item.items:
+            reader.fail("expected '(function ?x - type ...)' in :functions", item)
+        name = reader.symbol(item.items[0], "a function name")
+        if name in parts.functions:
+            reader.fail(f"function '{name}' is declared twice", item)
+        params = reader.parameters(Node(item.items[1:], item.start, item.end, item.line), None, unique=False)
+        for (_, type_name), symbol in zip(params, item.items[1:]):
+            _check_type(reader, type_name, parts.types, symbol, f"function '{name}'", PDDLParseError)
+        parts.functions[name] = params
+        parts.function_types[name] = NUMBER
+        index += 1
+
+
+_ACTION_FIELDS = (":parameters", ":precondition", ":effect")
+_DURATIVE_FIELDS = (":parameters", ":duration", ":condition", ":effect")
+
+
+def _read_action(reader: _Reader, node: Node, scope: _Scope) -> Action:
+    items = node.items
+    durative = reader.keyword_of(node) == ":durative-action"
+    if len(items) < 2:
+        reader.fail(f"'{items[0].text}' needs a name", node)
+    name = reader.symbol(items[1], "an action name")
+    allowed = _DURATIVE_FIELDS if durative else _ACTION_FIELDS
+    fields: dict[str, object] = {}
+    index = 2
+    while index < len(items):
+        key_item = items[index]
+        key = reader.symbol(key_item, "', '".join(allowed))
+        if key not in allowed:
+            reader.fail(f"unknown field '{key}' in action '{name}' (expected {', '.join(allowed)})", key_item)
+        if index + 1 >= len(items):
+            reader.fail(f"'{key}' of action '{name}' has no value", key_item)
+        fields[key] = items[index + 1]
+        index += 2
+    params = reader.parameters(fields[":parameters"], scope) if ":parameters" in fields else ()
+    inner = replace(scope.with_variables(params), durative=durative)
+    condition_key = ":condition" if durative else ":precondition"
+    precondition = reader.condition(fields[condition_key], inner) if condition_key in fields else f.TRUE
+    effect = reader.effect(fields[":effect"], inner) if ":effect" in fields else f.TRUE
+    duration = None
+    if durative:
+        if ":duration" not in fields:
+            reader.fail(f"durative action '{name}' has no ':duration'", node)
+        duration = _read_duration(reader, fields[":duration"], inner, name)
+    return Action(name, params, precondition, effect, duration)
+
+
+def _read_duration(reader: _Reader, node, scope: _Scope, action: str) -> f.Formula:
+    duration = reader.condition(node, scope)
+    comparisons = [n for n in f.walk(duration) if isinstance(n, f.Comparison)]
+    if (
+        not comparisons
+        or not all(f.NumericVariable("?duration") in (c.left, c.right) for c in comparisons)
+        or any(isinstance(n, (f.Atom, f.Or, f.Not, f.Exists, f.Forall)) for n in f.walk(duration))
+    ):
+        reader.fail(
+            f"malformed ':duration' of action '{action}': expected '(= ?duration EXPR)' or a conjunction of"
+            " comparisons with ?duration",
+            node,
+        )
+    return duration
+
+
+def _read_derived(reader: _Reader, node: Node, scope: _Scope) -> DerivedPredicate:
+    if len(node.items) != 3 or not isinstance(node.items[1], Node) or not node.items[1].items:
+        reader.fail("expected '(:derived (PREDICATE ?x ...) CONDITION)'", node)
+    head_node = node.items[1]
+    predicate = reader.symbol(head_node.items[0], "a predicate name")
+    params = reader.parameters(Node(head_node.items[1:], head_node.start, head_node.end, head_node.line), scope)
+    declared = scope.predicates.get(predicate)
+    if declared is None:
+        reader.fail(f"derived predicate '{predicate}' is not declared in :predicates", head_node)
+    if len(declared) != len(params):
+        reader.fail(f"derived predicate '{predicate}' takes {len(declared)} arguments, got {len(params)}", head_node)
+    body = reader.condition(node.items[2], scope.with_variables(params))
+    return DerivedPredicate(f.Atom(predicate, tuple(v for v, _ in params)), params, body)
+
+
+# --------------------------------------------------------------------------- problems
+
+
+@dataclass
+class _InitParts:
+    facts: set
+    numeric: dict
+    timed: list
+    spans: list
+    lines: dict
+
+
+def read_problem(text: str, domain: Domain, path: str | None = None) -> Problem:
+    """Build a Problem for ``domain`` from PDDL text; errors name ``path`` and the line."""
+    reader = _Reader(path)
+    root = parse_sexpr(text, path)
+    name, sections = reader.header(root, "problem")
+    found: dict[str, object] = {"init": []}
+    requirements: frozenset = frozenset()
+    for section in sections:
+        key = reader.keyword_of(section)
+        if key is None:
+            reader.fail("expected a '(:section ...)'", section)
+        if key in found and key != ":init":
+            reader.fail(f"section '{key}' appears twice", section)
+        body = section.items[1:]
+        if key == ":domain":
+            if len(body) != 1:
+                reader.fail("expected '(:domain NAME)'", section)
+            domain_name = reader.symbol(body[0], "a domain name")
+            if domain_name != domain.name:
+                reader.fail(
+                    f"problem is for domain '{body[0].text}', but the domain file defines '{domain.name}'",
+                    section,
+                    DomainMismatchError,
+                )
+            found[key] = domain_name
+        elif key == ":requirements":
+            requirements = reader.requirements(body)
+            found[key] = True
+        elif key == ":init":
+            found["init"].extend(body)  # type: ignore[attr-defined]
+        elif key in (":objects", ":goal", ":constraints", ":metric"):
+            found[key] = section
+        elif key == ":length":
+            found[key] = True  # PDDL 1.2's plan-length hint: planners ignore it
+        else:
+            reader.fail(f"unknown problem section '{key}'", section)
+    if ":domain" not in found:
+        reader.fail("missing '(:domain NAME)'", root)
+    if ":goal" not in found and ":constraints" not in found:
+        reader.fail("missing '(:goal ...)'", root)
+    objects, display, groups = _read_objects(reader, found.get(":objects"), domain)
+    known = dict(domain.constants)
+    known.update(objects)
+    scope = _Scope(domain.types, domain.predicates, domain.functions, MappingProxyType(known), {}, in_problem=True)
+    init = _read_init(reader, found["init"], scope, objects)  # type: ignore[arg-type]
+    goal = _read_goal(reader, found.get(":goal"), replace(scope, preferences=True))
+    constraints = None
+    if ":constraints" in found:
+        constraints = _single(reader, found[":constraints"], ":constraints", replace(scope, trajectory=True))
+    return Problem(
+        name=name,
+        domain_name=domain.name,
+        objects=frozen(objects),
+        init=frozenset(init.facts),
+        goal=goal,
+        text=text,
+        path=path,
+        display_names=frozen(display),
+        numeric_init=frozen(init.numeric),
+        timed_literals=tuple(init.timed),
+        constraints=constraints,
+        metric=_read_metric(reader, found.get(":metric"), scope),
+        requirements=requirements,
+        object_groups=groups,
+        init_spans=tuple(init.spans),
+        init_line=frozen(init.lines),
+    )
+
+
+def _single(reader: _Reader, section, key: str, scope: _Scope) -> f.Formula:
+    body = section.items[1:]
+    if len(body) != 1:
+        reader.fail(f"expected '({key} CONDITION)'", section)
+    return reader.condition(body[0], scope)
+
+
+def _read_goal(reader: _Reader, section, scope: _Scope) -> f.Formula:
+    if section is None:
+        return f.TRUE  # a problem of trajectory constraints only
+    return _single(reader, section, ":goal", scope)
+
+
+def _read_objects(reader: _Reader, section, domain: Domain) -> tuple[dict, dict, tuple]:
+    objects: dict[str, str] = {}
+    display: dict[str, str] = {}
+    if section is None:
+        return objects, display, ()
+    pairs, groups = reader.typed_list(section.items[1:], ":objects")
+    for symbol, type_name in pairs:
+        lowered = symbol.text.lower()
+        for member in type_name.removeprefix("(either ").rstrip(")").split():
+            if member not in domain.types:
+                reader.fail(f"object '{symbol.text}' has unknown type '{member}'", symbol, DomainMismatchError)
+        if lowered in objects or lowered in domain.constants:
+            reader.fail(f"object '{symbol.text}' is declared twice", symbol)
+        objects[lowered] = type_name
+        display[lowered] = symbol.text
+    return objects, display, tuple(groups)
+
+
+def _read_init(reader: _Reader, nodes: list, scope: _Scope, objects: Mapping[str, str]) -> _InitParts:
+    parts = _InitParts(set(), {}, [], [], {})
+    for node in nodes:
+        if not isinstance(node, Node) or not node.items:
+            reader.fail("expected an atom in ':init'", node)
+        head = reader.keyword_of(node)
+        mentioned: set[str] = set()
+        if head == "at" and len(node.items) == 3 and _number(_text(node.items[1])) is not None:
+            parts.timed.append(_read_timed_literal(reader, node, scope, mentioned))
+        elif head == "=":
+            term, value = _read_numeric_value(reader, node, scope)
+            parts.numeric[term] = value
+            mentioned.update(term[1:])
+        elif head == "not":
+            if len(node.items) != 2 or not isinstance(node.items[1], Node):
+                reader.fail("'not' in ':init' takes one atom", node)
+            atom = reader.atom(node.items[1], scope)
+            mentioned.update(_atom_terms(atom))  # closed world: changes nothing, but cut with its objects
+        else:
+            atom = reader.atom(node, scope)
+            if not isinstance(atom, f.Atom):
+                reader.fail("an equality is not an initial fact", node)
+            ground = (atom.predicate, *atom.args)
+            parts.facts.add(ground)
+            parts.lines.setdefault(ground, node.line)
+            mentioned.update(atom.args)
+        parts.spans.append(((node.start, node.end), frozenset(mentioned) & objects.keys()))
+    return parts
+
+
+def _text(item) -> str:
+    return item.text if isinstance(item, Symbol) else ""
+
+
+def _atom_terms(atom: f.Atom | f.Equality) -> tuple[str, ...]:
+    return atom.args if isinstance(atom, f.Atom) else (atom.left, atom.right)
+
+
+def _read_numeric_value(reader: _Reader, node: Node, scope: _Scope) -> tuple[tuple, float]:
+    if len(node.items) != 3 or not isinstance(node.items[1], Node):
+        reader.fail("expected '(= (FUNCTION ARG ...) NUMBER)' in ':init'", node)
+    fluent = reader.fluent(node.items[1], scope)
+    value_item = node.items[2]
+    value = _number(value_item.text) if isinstance(value_item, Symbol) else None
+    if value is None:
+        reader.fail(
+            f"the initial value of '{fluent.function}' must be a number (object fluents are not supported)",
+            node,
+            UnsupportedFeatureError if isinstance(value_item, Symbol) else PDDLParseError,
+        )
+    return (fluent.function, *fluent.args), value
+
+
+def _read_timed_literal(reader: _Reader, node: Node, scope: _Scope, mentioned: set) -> TimedLiteral:
+    time = _number(_text(node.items[1]))
+    assert time is not None
+    if time < 0:
+        reader.fail(f"a timed initial literal at a negative time ({node.items[1].text})", node)
+    inner = node.items[2]
+    if not isinstance(inner, Node):
+        reader.fail("expected '(at TIME FACT)'", node)
+    head = reader.keyword_of(inner)
+    if head == "=":
+        term, value = _read_numeric_value(reader, inner, scope)
+        mentioned.update(term[1:])
+        return TimedLiteral(time, fluent=term, value=value)
+    negated = head == "not"
+    if negated:
+        if len(inner.items) != 2 or not isinstance(inner.items[1], Node):
+            reader.fail("'not' in a timed literal takes one atom", inner)
+        inner = inner.items[1]
+    atom = reader.atom(inner, scope)
+    if not isinstance(atom, f.Atom):
+        reader.fail("expected a fact in a timed literal", inner)
+    mentioned.update(atom.args)
+    return TimedLiteral(time, atom=(atom.predicate, *atom.args), negated=negated)
+
+
+def _read_metric(reader: _Reader, section, scope: _Scope) -> Metric | None:
+    if section is None:
+        return None
+    body = section.items[1:]
+    if len(body) != 2:
+        reader.fail("expected '(:metric minimize|maximize EXPRESSION)'", section)
+    direction = reader.symbol(body[0], "'minimize' or 'maximize'")
+    if direction not in ("minimize", "maximize"):
+        reader.fail(f"expected 'minimize' or 'maximize', found '{body[0].text}'", body[0])
+    return Metric(direction, reader.expression(body[1], replace(scope, durative=False)))

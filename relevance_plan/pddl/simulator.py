@@ -1,0 +1,499 @@
+"""The builtin plan simulator: does a plan reach the goal of a problem, step by step?
+
+Semantics:
+
+* sequential plans: STRIPS with ADL conditions (negation, disjunction,
+  implication, quantifiers, equality), conditional and universal effects;
+  numeric fluents (comparisons; ``assign``, ``increase``, ``decrease``,
+  ``scale-up``, ``scale-down``, all evaluated in the state before the step);
+  derived predicates (stratified, recomputed after every step);
+* timed plans (PDDL 2.1): each durative step is a start and an end
+  happening; ``at start`` conditions are checked before the start,
+  ``at end`` ones before the end, ``over all`` ones in every state strictly
+  between; the duration must satisfy the action's duration constraint;
+  happenings at the same instant must not interfere (one writes what
+  another reads or writes); timed initial literals happen at their times.
+
+Trajectory constraints and preferences are not checked (they are passed
+through; preferences change a plan's quality, not its validity).
+Every loop that enumerates bindings watches an optional deadline and raises
+:class:`~relevance_plan.errors.SimulationTimeout` past it.
+"""
+
+from __future__ import annotations
+
+import itertools
+import time
+from collections.abc import Iterator, Mapping, Sequence
+from dataclasses import dataclass
+
+from relevance_plan.errors import SimulationTimeout
+from relevance_plan.pddl import formulas as f
+from relevance_plan.pddl.model import Action, Domain, Problem, all_objects
+from relevance_plan.pddl.plans import Plan, PlanStep
+
+DURATION_TOLERANCE = 1e-3  # planners print durations with three decimals
+SAME_INSTANT = 1e-9
+_CHECK_EVERY = 4096  # bindings between deadline checks
+
+
+class StepFailure(Exception):
+    """A plan step (or the goal) fails; ``step`` is 1-based, None for the goal."""
+
+    def __init__(self, message: str, step: int | None = None):
+        super().__init__(message)
+        self.message = message
+        self.step = step
+
+
+@dataclass(frozen=True)
+class Simulation:
+    valid: bool
+    message: str
+    failed_step: int | None = None
+    cost: float | None = None  # the total-cost fluent at the end, when the problem has one
+    makespan: float | None = None  # timed plans
+
+
+@dataclass
+class State:
+    facts: set
+    values: dict  # (function, args...) -> float
+
+    def copy(self) -> State:
+        return State(set(self.facts), dict(self.values))
+
+
+class Simulator:
+    """Evaluates formulas and applies effects on one problem's objects."""
+
+    def __init__(self, domain: Domain, problem: Problem, deadline: float | None = None):
+        self.domain = domain
+        self.problem = problem
+        self.objects = all_objects(domain, problem)
+        self.deadline = deadline
+        self._by_type: dict[str, tuple[str, ...]] = {}
+        self._work = 0
+        self._strata = _strata(domain) if domain.derived else ()
+
+    # ---------------------------------------------------------------- bindings
+
+    def objects_of(self, type_name: str) -> tuple[str, ...]:
+        cached = self._by_type.get(type_name)
+        if cached is None:
+            cached = tuple(o for o, t in self.objects.items() if self.domain.is_subtype(t, type_name))
+            self._by_type[type_name] = cached
+        return cached
+
+    def tick(self) -> None:
+        self._work += 1
+        if self._work % _CHECK_EVERY == 0 and self.deadline is not None and time.monotonic() > self.deadline:
+            raise SimulationTimeout("plan validation ran out of time")
+
+    def bindings(self, params: f.Parameters, binding: Mapping[str, str]) -> Iterator[dict]:
+        pools = [self.objects_of(type_name) for _, type_name in params]
+        names = [name for name, _ in params]
+        for values in itertools.product(*pools):
+            self.tick()
+            inner = dict(binding)
+            inner.update(zip(names, values))
+            yield inner
+
+    # ---------------------------------------------------------------- conditions
+
+    def holds(self, formula: f.Formula, state: State, binding: Mapping[str, str]) -> bool:
+        if isinstance(formula, f.Atom):
+            return f.ground(formula, binding) in state.facts
+        if isinstance(formula, f.And):
+            return all(self.holds(part, state, binding) for part in formula.parts)
+        if isinstance(formula, f.Or):
+            return any(self.holds(part, state, binding) for part in formula.parts)
+        if isinstance(formula, f.Not):
+            return not self.holds(formula.body, state, binding)
+        if isinstance(formula, f.Imply):
+            return not self.holds(formula.condition, state, binding) or self.holds(formula.consequence, state, binding)
+        if isinstance(formula, f.Exists):
+            return any(self.holds(formula.body, state, inner) for inner in self.bindings(formula.parameters, binding))
+        if isinstance(formula, f.Forall):
+            return all(self.holds(formula.body, state, inner) for inner in self.bindings(formula.parameters, binding))
+        if isinstance(formula, f.Equality):
+            return binding.get(formula.left, formula.left) == binding.get(formula.right, formula.right)
+        if isinstance(formula, f.Comparison):
+            return _compare(
+                formula.op, self.value(formula.left, state, binding), self.value(formula.right, state, binding)
+            )
+        if isinstance(formula, (f.Timed, f.Preference)):
+            # a preference is soft: it never makes a plan invalid
+            return True if isinstance(formula, f.Preference) else self.holds(formula.body, state, binding)
+        raise StepFailure(f"cannot evaluate {type(formula).__name__} in a condition")
+
+    def value(self, expression: f.Expression, state: State, binding: Mapping[str, str]) -> float:
+        if isinstance(expression, f.Number):
+            return expression.value
+        if isinstance(expression, f.Fluent):
+            key = (expression.function, *(binding.get(a, a) for a in expression.args))
+            found = state.values.get(key)
+            if found is None:
+                raise StepFailure(f"the value of ({' '.join(key)}) is undefined")
+            return found
+        if isinstance(expression, f.NumericVariable):
+            found = binding.get(expression.name)
+            if found is None:
+                raise StepFailure(f"{expression.name} has no value here")
+            return float(found)
+        values = [self.value(arg, state, binding) for arg in expression.args]
+        if expression.op == "-" and len(values) == 1:
+            return -values[0]
+        result = values[0]
+        for other in values[1:]:
+            if expression.op == "+":
+                result += other
+            elif expression.op == "-":
+                result -= other
+            elif expression.op == "*":
+                result *= other
+            elif other == 0:
+                raise StepFailure("division by zero in a numeric expression")
+            else:
+                result /= other
+        return result
+
+    # ---------------------------------------------------------------- effects
+
+    def effects(self, effect: f.Formula, state: State, binding: Mapping[str, str], when: str | None = None) -> Effects:
+        """What ``effect`` does in ``state`` (conditions and values read in ``state``); for a
+        durative action, only its parts at ``when`` ("start" or "end")."""
+        found = Effects(set(), set(), {})
+        self._collect(effect, state, binding, when, None, found)
+        return found
+
+    def _collect(self, effect, state, binding, when, current, found: Effects) -> None:
+        if isinstance(effect, f.Atom):
+            if current == when:
+                found.adds.add(f.ground(effect, binding))
+        elif isinstance(effect, f.Not):
+            if current == when:
+                found.deletes.add(f.ground(effect.body, binding))
+        elif isinstance(effect, f.And):
+            for part in effect.parts:
+                self._collect(part, state, binding, when, current, found)
+        elif isinstance(effect, f.Forall):
+            for inner in self.bindings(effect.parameters, binding):
+                self._collect(effect.body, state, inner, when, current, found)
+        elif isinstance(effect, f.When):
+            # Conditions are read in the state before the happening; a timed condition
+            # part is checked with the happening that carries the effect.
+            if self.holds(effect.condition, state, binding):
+                self._collect(effect.effect, state, binding, when, current, found)
+        elif isinstance(effect, f.Timed):
+            self._collect(effect.body, state, binding, when, effect.when, found)
+        elif isinstance(effect, f.NumericEffect):
+            if current == when:
+                self._numeric(effect, state, binding, found)
+
+    def _numeric(self, effect: f.NumericEffect, state: State, binding, found: Effects) -> None:
+        key = (effect.fluent.function, *(binding.get(a, a) for a in effect.fluent.args))
+        amount = self.value(effect.value, state, binding)
+        if effect.op == "assign":
+            new = amount
+        else:
+            old = state.values.get(key)
+            if old is None:
+                raise StepFailure(f"'{effect.op}' of ({' '.join(key)}), whose value is undefined")
+            new = {
+                "increase": old + amount,
+                "decrease": old - amount,
+                "scale-up": old * amount,
+                "scale-down": old / amount if amount else None,
+            }[effect.op]
+            if new is None:
+                raise StepFailure("scale-down by zero")
+        if key in found.values and found.values[key] != new:
+            raise StepFailure(f"two effects give ({' '.join(key)}) different values at once")
+        found.values[key] = new
+
+    # ---------------------------------------------------------------- derived predicates
+
+    def derive(self, state: State) -> None:
+        """Replace the derived facts of ``state`` by those its basic facts imply (stratified fixpoint)."""
+        if not self._strata:
+            return
+        derived = self.domain.derived_predicates
+        state.facts = {fact for fact in state.facts if fact[0] not in derived}
+        for stratum in self._strata:
+            changed = True
+            while changed:
+                changed = False
+                for rule in stratum:
+                    for binding in self.bindings(rule.parameters, {}):
+                        fact = f.ground(rule.head, binding)
+                        if fact not in state.facts and self.holds(rule.body, state, binding):
+                            state.facts.add(fact)
+                            changed = True
+
+
+@dataclass
+class Effects:
+    adds: set
+    deletes: set
+    values: dict
+
+    def apply(self, state: State) -> None:
+        state.facts.difference_update(self.deletes - self.adds)  # add-after-delete, as the planners do
+        state.facts.update(self.adds)
+        state.values.update(self.values)
+
+    def writes(self) -> set:
+        return {("fact",) + atom for atom in self.adds | self.deletes} | {("value",) + key for key in self.values}
+
+
+def _compare(op: str, left: float, right: float) -> bool:
+    if op == "<":
+        return left < right
+    if op == "<=":
+        return left <= right
+    if op == ">":
+        return left > right
+    if op == ">=":
+        return left >= right
+    return abs(left - right) <= 1e-9 * max(1.0, abs(left), abs(right))
+
+
+def _strata(domain: Domain) -> tuple[tuple, ...]:
+    """Derived rules in strata: a rule that reads a derived predicate negatively comes after its rules."""
+    derived = domain.derived_predicates
+    level = {predicate: 0 for predicate in derived}
+    for _ in range(len(derived) + 1):
+        changed = False
+        for rule in domain.derived:
+            head = rule.head.predicate
+            for atom, positive in f.literals(rule.body):
+                if atom.predicate in derived:
+                    needed = level[atom.predicate] + (0 if positive else 1)
+                    if needed > level[head]:
+                        level[head] = needed
+                        changed = True
+        if not changed:
+            break
+    top = max(level.values(), default=0)
+    return tuple(tuple(r for r in domain.derived if level[r.head.predicate] == i) for i in range(top + 1))
+
+
+def initial_state(problem: Problem) -> State:
+    return State(set(problem.init), dict(problem.numeric_init))
+
+
+# --------------------------------------------------------------------------- sequential plans
+
+
+def simulate(
+    domain: Domain, problem: Problem, plan: Plan | Sequence[PlanStep], deadline: float | None = None
+) -> Simulation:
+    """Run ``plan`` on ``problem``; a timed plan (steps with start times) gets PDDL 2.1 semantics."""
+    steps = plan.steps if isinstance(plan, Plan) else tuple(plan)
+    simulator = Simulator(domain, problem, deadline)
+    try:
+        if any(step.time is not None for step in steps) or domain.temporal or problem.timed_literals:
+            state, makespan = _run_timed(simulator, steps)
+        else:
+            state, makespan = _run_sequential(simulator, steps), None
+        if not simulator.holds(problem.goal, state, {}):
+            raise StepFailure("the goal is not satisfied at the end of the plan")
+    except StepFailure as failure:
+        return Simulation(False, failure.message, failure.step)
+    cost = state.values.get(("total-cost",))
+    what = f"{len(steps)} steps" + (f", makespan {makespan:g}" if makespan is not None else "")
+    return Simulation(True, f"{what}, goal reached", cost=cost, makespan=makespan)
+
+
+def _run_sequential(simulator: Simulator, steps: Sequence[PlanStep]) -> State:
+    state = initial_state(simulator.problem)
+    simulator.derive(state)
+    for number, step in enumerate(steps, start=1):
+        action, binding = _bind(simulator, step, number)
+        if action.durative:
+            raise StepFailure(f"step {number} {step}: a durative action needs a start time and a duration", number)
+        try:
+            if not simulator.holds(action.precondition, state, binding):
+                raise StepFailure("precondition not satisfied")
+            effects = simulator.effects(action.effect, state, binding)
+        except StepFailure as failure:
+            raise StepFailure(f"step {number} {step}: {failure.message}", number) from None
+        effects.apply(state)
+        simulator.derive(state)
+    return state
+
+
+def _bind(simulator: Simulator, step: PlanStep, number: int) -> tuple[Action, dict]:
+    action = simulator.domain.action(step.action)
+    if action is None:
+        raise StepFailure(f"step {number} {step}: unknown action", number)
+    if len(step.args) != len(action.parameters):
+        raise StepFailure(f"step {number} {step}: expects {len(action.parameters)} arguments", number)
+    for arg, (_, type_name) in zip(step.args, action.parameters):
+        if arg not in simulator.objects:
+            raise StepFailure(f"step {number} {step}: unknown object '{arg}'", number)
+        if not simulator.domain.is_subtype(simulator.objects[arg], type_name):
+            raise StepFailure(f"step {number} {step}: '{arg}' is not of type {type_name}", number)
+    return action, {name: arg for (name, _), arg in zip(action.parameters, step.args)}
+
+
+# --------------------------------------------------------------------------- timed plans
+
+
+@dataclass(frozen=True)
+class _Happening:
+    time: float
+    order: int  # ends before starts at one instant is not assumed: ties keep plan order
+    kind: str  # "start", "end", "instant", "til"
+    number: int  # 1-based step number (0 for a timed literal)
+    step: PlanStep | None = None
+    action: Action | None = None
+    binding: Mapping[str, str] | None = None
+    literal: object = None
+
+
+def _run_timed(simulator: Simulator, steps: Sequence[PlanStep]) -> tuple[State, float]:
+    state = initial_state(simulator.problem)
+    simulator.derive(state)
+    happenings = _happenings(simulator, steps, state)
+    happenings.sort(key=lambda h: (h.time, h.order))
+    running: dict[int, _Happening] = {}  # step number -> its start happening, while it runs
+    index = 0
+    makespan = 0.0
+    while index < len(happenings):
+        group = [happenings[index]]
+        while index + len(group) < len(happenings) and (
+            happenings[index + len(group)].time - group[0].time <= SAME_INSTANT
+        ):
+            group.append(happenings[index + len(group)])
+        index += len(group)
+        _apply_group(simulator, state, group, running)
+        makespan = max(makespan, group[0].time)
+        for start in running.values():
+            _check_invariant(simulator, state, start)
+    return state, makespan
+
+
+def _happenings(simulator: Simulator, steps: Sequence[PlanStep], state: State) -> list[_Happening]:
+    happenings: list[_Happening] = []
+    for number, step in enumerate(steps, start=1):
+        action, binding = _bind(simulator, step, number)
+        start = step.time if step.time is not None else float(number - 1)
+        if not action.durative:
+            happenings.append(_Happening(start, len(happenings), "instant", number, step, action, binding))
+            continue
+        duration = _duration(simulator, action, step, binding, state, number)
+        timed = dict(binding)
+        timed["?duration"] = repr(duration)
+        happenings.append(_Happening(start, len(happenings), "start", number, step, action, timed))
+        happenings.append(_Happening(start + duration, len(happenings), "end", number, step, action, timed))
+    for literal in simulator.problem.timed_literals:
+        happenings.append(_Happening(literal.time, len(happenings), "til", 0, literal=literal))
+    return happenings
+
+
+def _duration(simulator: Simulator, action: Action, step: PlanStep, binding, state: State, number: int) -> float:
+    """The step's duration, checked against the action's constraint (evaluated in the initial
+    state's values for its fluents: durations in the IPC domains depend on static functions)."""
+    assert action.duration is not None
+    duration = step.duration
+    if duration is None:
+        exact = [c for c in f.conjuncts(action.duration) if isinstance(c, f.Comparison) and c.op == "="]
+        if not exact:
+            raise StepFailure(f"step {number} {step}: no duration given", number)
+        other = exact[0].right if exact[0].left == f.NumericVariable("?duration") else exact[0].left
+        duration = simulator.value(other, state, binding)
+    if duration <= 0:
+        raise StepFailure(f"step {number} {step}: duration {duration:g} is not positive", number)
+    for part in f.conjuncts(action.duration):
+        if isinstance(part, f.Comparison) and not _duration_fits(simulator, part, duration, state, binding):
+            raise StepFailure(f"step {number} {step}: duration {duration:g} violates its constraint", number)
+    return duration
+
+
+def _duration_fits(simulator: Simulator, part: f.Comparison, duration: float, state: State, binding) -> bool:
+    timed = dict(binding)
+    timed["?duration"] = repr(duration)
+    left = simulator.value(part.left, state, timed)
+    right = simulator.value(part.right, state, timed)
+    if part.op == "=":
+        return abs(left - right) <= DURATION_TOLERANCE + 1e-9 * abs(right)
+    return _compare(part.op, left, right) or abs(left - right) <= DURATION_TOLERANCE
+
+
+def _apply_group(simulator: Simulator, state: State, group: list[_Happening], running: dict) -> None:
+    """Apply the happenings of one instant: conditions in the state before, then every effect at once."""
+    found: list[tuple[_Happening, Effects, set]] = []
+    for happening in group:
+        effects, reads = _happening_effects(simulator, state, happening)
+        found.append((happening, effects, reads))
+    for i, (first, first_effects, first_reads) in enumerate(found):
+        for second, second_effects, second_reads in found[i + 1 :]:
+            writes_a, writes_b = first_effects.writes(), second_effects.writes()
+            if writes_a & (writes_b | second_reads) or writes_b & first_reads:
+                raise StepFailure(
+                    f"{_describe(first)} and {_describe(second)} interfere at time {first.time:g}",
+                    first.number or second.number or None,
+                )
+    for happening, effects, _ in found:
+        effects.apply(state)
+        if happening.kind == "start":
+            running[happening.number] = happening
+        elif happening.kind == "end":
+            running.pop(happening.number, None)
+    simulator.derive(state)
+
+
+def _happening_effects(simulator: Simulator, state: State, happening: _Happening) -> tuple[Effects, set]:
+    if happening.kind == "til":
+        literal = happening.literal
+        if literal.fluent is not None:  # type: ignore[attr-defined]
+            effects = Effects(set(), set(), {literal.fluent: literal.value})  # type: ignore[attr-defined]
+        elif literal.negated:  # type: ignore[attr-defined]
+            effects = Effects(set(), {literal.atom}, {})  # type: ignore[attr-defined]
+        else:
+            effects = Effects({literal.atom}, set(), {})  # type: ignore[attr-defined]
+        return effects, set()
+    action, binding, number = happening.action, happening.binding, happening.number
+    assert action is not None and binding is not None
+    when = None if happening.kind == "instant" else happening.kind
+    condition = action.precondition if when is None else _at(action.precondition, when)
+    try:
+        if not simulator.holds(condition, state, binding):
+            raise StepFailure(f"{'precondition' if when is None else f'at {when} condition'} not satisfied")
+        effects = simulator.effects(action.effect, state, binding, when)
+    except StepFailure as failure:
+        raise StepFailure(
+            f"step {number} {happening.step} ({_describe(happening)}): {failure.message}", number
+        ) from None
+    return effects, _reads(condition, binding)
+
+
+def _at(condition: f.Formula, when: str) -> f.Formula:
+    """The part of a durative condition checked at ``when``."""
+    return f.And(tuple(part.body for part in f.conjuncts_timed(condition) if part.when == when))
+
+
+def _check_invariant(simulator: Simulator, state: State, start: _Happening) -> None:
+    action, binding = start.action, start.binding
+    assert action is not None and binding is not None
+    invariant = _at(action.precondition, "all")
+    if invariant.parts and not simulator.holds(invariant, state, binding):
+        raise StepFailure(f"step {start.number} {start.step}: over all condition broken while it runs", start.number)
+
+
+def _reads(condition: f.Formula, binding: Mapping[str, str]) -> set:
+    reads = set()
+    for node in f.walk(condition):
+        if isinstance(node, f.Atom) and all(not f.is_variable(binding.get(a, a)) for a in node.args):
+            reads.add(("fact", *f.ground(node, binding)))
+        elif isinstance(node, f.Fluent):
+            reads.add(("value", node.function, *(binding.get(a, a) for a in node.args)))
+    return reads
+
+
+def _describe(happening: _Happening) -> str:
+    if happening.kind == "til":
+        return "a timed initial literal"
+    return f"the {happening.kind} of step {happening.number} {happening.step}"
