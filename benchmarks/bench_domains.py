@@ -13,11 +13,10 @@ import sys
 import tempfile
 from pathlib import Path
 
+from padded_worlds import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
+
 REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))
-sys.path.insert(0, str(REPO / "tests"))
-
-from worlds import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem  # noqa: E402
 
 from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task  # noqa: E402
 

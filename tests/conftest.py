@@ -1,11 +1,13 @@
+"""Fixtures shared by the test modules; plain helpers are in ``support.py``."""
+
 import os
-from pathlib import Path
+import sys
 
 import pytest
+from support import COFFEE_DOMAIN, DOMAINS, REPO
 
-REPO = Path(__file__).resolve().parent.parent
-DOMAINS = REPO / "domains"
-PROBLEMS = REPO / "problems"
+# The padded classic worlds belong to the benchmarks; the tests use the same module.
+sys.path.insert(0, str(REPO / "benchmarks"))
 
 
 def pytest_addoption(parser):
@@ -23,9 +25,37 @@ def pytest_collection_modifyitems(config, items):
 
 @pytest.fixture
 def coffee_domain_path():
-    return DOMAINS / "coffee" / "domain.pddl"
+    return COFFEE_DOMAIN
 
 
 @pytest.fixture
 def cereal_domain_path():
     return DOMAINS / "cereal" / "domain.pddl"
+
+
+@pytest.fixture
+def coffee_extra_plates():
+    """The extra plates of ``coffee_files``' problem; a module overrides this fixture to change it."""
+    return 6
+
+
+@pytest.fixture
+def coffee_files(tmp_path, coffee_domain_path, coffee_extra_plates):
+    """The shipped coffee domain and a tiny coffee problem in ``tmp_path / "coffee.pddl"``."""
+    from kitchen import coffee_problem
+
+    problem = tmp_path / "coffee.pddl"
+    problem.write_text(coffee_problem(extra_plates=coffee_extra_plates))
+    return coffee_domain_path, problem
+
+
+@pytest.fixture
+def copied_coffee_files(tmp_path):
+    """A copy of the coffee domain (a test may change it) and a problem with two extra plates, in ``tmp_path``."""
+    from kitchen import coffee_problem
+
+    domain = tmp_path / "domain.pddl"
+    domain.write_bytes(COFFEE_DOMAIN.read_bytes())
+    problem = tmp_path / "problem.pddl"
+    problem.write_text(coffee_problem(extra_plates=2))
+    return domain, problem

@@ -1,4 +1,4 @@
-"""Tiny kitchen problems built in code for the tests."""
+"""Tiny kitchen problems built in code for the tests, and edits of their goal."""
 
 from __future__ import annotations
 
@@ -52,3 +52,23 @@ def coffee_problem(extra_plates: int = 0, plate_on_cup: bool = True, name: str =
     for i in range(1, extra_plates + 1):
         stand(f"side_plate_{i}", "counter_1" if i % 2 else "table_1")
     return format_problem_parts(name, "coffee", objects, init, [("coffee-served", "alice")])
+
+
+def goal_of(text: str) -> str:
+    """The goal formula of a problem's text (without the ``(:goal`` around it)."""
+    start = text.index("(:goal") + len("(:goal")
+    end = text.rindex(")", 0, text.rindex(")"))
+    return text[start:end].strip()
+
+
+def replace_goal(text: str, goal: str) -> str:
+    """The problem's text with ``goal`` in place of its goal formula."""
+    start = text.index("(:goal") + len("(:goal")
+    end = text.rindex(")", 0, text.rindex(")"))
+    return text[:start] + " " + goal + text[end:]
+
+
+def nested_goal(depth: int) -> str:
+    """The tiny coffee problem with its goal wrapped in ``depth`` levels of ``(and ...)``."""
+    text = coffee_problem()
+    return replace_goal(text, "(and " * depth + goal_of(text) + ")" * depth)

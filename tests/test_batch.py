@@ -15,8 +15,7 @@ import time
 from pathlib import Path
 
 import pytest
-from click.testing import CliRunner
-from test_report import make_row
+from support import REPO, TOOL, invoke, make_row, process_gone
 
 from relevance_plan.batch.jobs import build_jobs, compare, connect_scheduler, run_job
 from relevance_plan.batch.store import SCHEMA_VERSION, ResultStore
@@ -27,7 +26,6 @@ from relevance_plan.planning import runner
 from relevance_plan.planning.loop import PlanOptions
 from relevance_plan.relevance.prune import Thresholds
 
-REPO = Path(__file__).resolve().parent.parent
 ALL_METHODS = "relevance,pure,random,oracle"
 
 
@@ -51,21 +49,6 @@ def populated_store(tmp_path):
     with ResultStore(path) as store:
         store.add(make_row("old", "a", "pure"))
     return path
-
-
-def cli_group():
-    """The real ``relevance-plan`` group."""
-    from relevance_plan.cli import main
-
-    return main
-
-
-def cli_module() -> str:
-    return "relevance_plan"
-
-
-def invoke(*arguments):
-    return CliRunner().invoke(cli_group(), [str(a) for a in arguments])
 
 
 def assert_one_line_error(result, code, fragment):
@@ -126,14 +109,6 @@ def free_port() -> int:
     with socket.socket() as sock:
         sock.bind(("127.0.0.1", 0))
         return sock.getsockname()[1]
-
-
-def process_gone(pid: int) -> bool:
-    try:
-        state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
-    except (FileNotFoundError, ProcessLookupError):
-        return True
-    return state in ("Z", "X")
 
 
 # --------------------------------------------------------------------------- store
@@ -232,6 +207,7 @@ def test_build_jobs_rejects_bad_input(tmp_path, suite):
 # --------------------------------------------------------------------------- running
 
 
+@pytest.mark.planner
 def test_compare_stores_every_job_once_and_resumes(suite, tmp_path):
     store = tmp_path / "r.sqlite"
     summary = compare([suite], ALL_METHODS, PlanOptions(timeout=60), jobs=2, store_path=store, progress=False)
@@ -250,6 +226,7 @@ def test_compare_stores_every_job_once_and_resumes(suite, tmp_path):
     assert read_store(store) == rows
 
 
+@pytest.mark.planner
 def test_input_error_becomes_a_row_not_a_crash(suite, tmp_path):
     (suite / "coffee-simple-009.pddl").write_text("(define (problem broken) (:domain coffee) (:objects a - ")
     store = tmp_path / "r.sqlite"
@@ -263,6 +240,7 @@ def test_input_error_becomes_a_row_not_a_crash(suite, tmp_path):
     assert {r["status"] for r in rows if r not in broken} == {"solved"}
 
 
+@pytest.mark.planner
 @pytest.mark.parametrize(
     "body, code",
     [("sys.exit(35)\n", 35), ("os.kill(os.getpid(), signal.SIGKILL)\n", -signal.SIGKILL)],
@@ -291,6 +269,7 @@ def test_missing_planner_stops_the_batch_and_stores_nothing(suite, tmp_path, mon
     assert read_store(store) == []
 
 
+@pytest.mark.planner
 def test_run_job_returns_a_complete_row(suite):
     from relevance_plan.batch.store import COLUMNS
 
@@ -305,12 +284,13 @@ def test_run_job_returns_a_complete_row(suite):
 
 
 def start_compare(suite, store, *extra, env=None):
-    command = [sys.executable, "-m", cli_module(), "compare", str(suite), "--store", str(store), *map(str, extra)]
+    command = [*TOOL, "compare", str(suite), "--store", str(store), *map(str, extra)]
     return subprocess.Popen(
         command, cwd=REPO, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env={**os.environ, **(env or {})}
     )
 
 
+@pytest.mark.planner
 def test_resume_after_kill_9_loses_nothing_and_repeats_nothing(tmp_path):
     suite = tiny_suite(tmp_path / "coffee-simple", count=3)
     store = tmp_path / "results.sqlite"
@@ -333,7 +313,7 @@ def test_resume_after_kill_9_loses_nothing_and_repeats_nothing(tmp_path):
     assert 2 <= len(survivors) < 12, "the first run should have been killed half-way"
 
     finished = subprocess.run(
-        [sys.executable, "-m", cli_module(), "compare", str(suite), "--store", str(store), *map(str, arguments)],
+        [*TOOL, "compare", str(suite), "--store", str(store), *map(str, arguments)],
         cwd=REPO,
         capture_output=True,
         text=True,
@@ -353,7 +333,7 @@ def test_resume_after_kill_9_loses_nothing_and_repeats_nothing(tmp_path):
     assert rows[:done] == survivors
 
     third = subprocess.run(
-        [sys.executable, "-m", cli_module(), "compare", str(suite), "--store", str(store), *map(str, arguments)],
+        [*TOOL, "compare", str(suite), "--store", str(store), *map(str, arguments)],
         cwd=REPO,
         capture_output=True,
         text=True,
@@ -363,6 +343,7 @@ def test_resume_after_kill_9_loses_nothing_and_repeats_nothing(tmp_path):
     assert read_store(store) == rows
 
 
+@pytest.mark.planner
 @pytest.mark.parametrize("signum", [signal.SIGINT, signal.SIGTERM], ids=["ctrl-c", "sigterm"])
 def test_ctrl_c_kills_running_planners_and_keeps_finished_rows(tmp_path, signum):
     suite = tiny_suite(tmp_path / "coffee-simple", count=3)
@@ -418,6 +399,7 @@ def test_dask_missing_says_how_to_install(monkeypatch):
         connect_scheduler("tcp://127.0.0.1:1", timeout=1)
 
 
+@pytest.mark.planner
 def test_dask_cluster_runs_the_jobs_into_the_local_store(tmp_path):
     pytest.importorskip("distributed")
     suite = tiny_suite(tmp_path / "coffee-simple", count=1)
@@ -544,6 +526,7 @@ def test_cli_incompatible_or_foreign_store(tmp_path, suite):
             assert snapshot(store) == before
 
 
+@pytest.mark.planner
 def test_cli_compare_then_report(suite, tmp_path):
     store = tmp_path / "r.sqlite"
     result = invoke(
@@ -558,6 +541,7 @@ def test_cli_compare_then_report(suite, tmp_path):
     assert "|  | n | 4 | 4 |" in report.stdout
 
 
+@pytest.mark.planner
 def test_demo_end_to_end(tmp_path):
     workdir = tmp_path / "demo"
     result = invoke("demo", "--workdir", workdir, "--tiny", "--timeout", 60, "--jobs", 2, "-q")

@@ -124,6 +124,7 @@ def test_widening_goes_to_the_full_problem_when_it_would_keep_most_objects():
             assert result.text == task.problem.text
 
 
+@pytest.mark.planner
 def test_an_unpruneable_problem_goes_straight_to_the_full_problem(tmp_path):
     problem = generate_classic_problem("gripper", seed=1, index=1, size=30, dense=True)
     task = classic_task("gripper", problem.pddl_text)
@@ -137,6 +138,7 @@ def test_an_unpruneable_problem_goes_straight_to_the_full_problem(tmp_path):
     assert planned.attempts[0].objects_kept == planned.objects_total
 
 
+@pytest.mark.planner
 @pytest.mark.parametrize("world", CLASSIC_WORLDS)
 def test_relevance_plans_are_valid_on_the_original(tmp_path, world):
     problem = generate_classic_problem(world, seed=2, index=1, size=60)
@@ -151,6 +153,7 @@ def test_relevance_plans_are_valid_on_the_original(tmp_path, world):
     assert validate_plan(task.domain, task.problem, result.plan).status is ValidationStatus.VALID
 
 
+@pytest.mark.planner
 @pytest.mark.parametrize("method", ["pure", "oracle"])
 def test_pure_and_oracle_plans_are_valid_on_the_original(tmp_path, method):
     problem = generate_classic_problem("logistics", seed=2, index=1, size=60)

@@ -2,18 +2,14 @@
 
 import json
 import subprocess
-import sys
-from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
 from kitchen import coffee_problem
+from support import COFFEE_DOMAIN, COFFEE_MODEL, TOOL, invoke, write_file
 
 from relevance_plan.cli import main
 from relevance_plan.exitcodes import ExitCode
-
-REPO = Path(__file__).resolve().parent.parent
-COFFEE_DOMAIN = REPO / "domains" / "coffee" / "domain.pddl"
 
 
 @pytest.fixture
@@ -28,24 +24,20 @@ def problem(tmp_path):
     return path
 
 
-def invoke(runner, *args):
-    return runner.invoke(main, [str(a) for a in args], catch_exceptions=False)
-
-
-def test_score_table_and_json(runner, problem):
-    result = invoke(runner, "score", COFFEE_DOMAIN, problem)
+def test_score_table_and_json(problem):
+    result = invoke("score", COFFEE_DOMAIN, problem)
     assert result.exit_code == 0
     assert "R(C)" in result.output and "side_plate_1" in result.output
     assert "restored" in result.output and "on top of plastic_cup_1" in result.output
-    data = json.loads(invoke(runner, "score", COFFEE_DOMAIN, problem, "--json").output)
+    data = json.loads(invoke("score", COFFEE_DOMAIN, problem, "--json").output)
     assert data["sufficient"] is True
     assert {"kept", "removed", "restored", "scores", "sufficient"} <= set(data)
     assert "Plastic_Cup_1" in data["kept"]  # the user's spelling
     assert any(r["object"] == "dinner_plate_1" and "on top of" in r["reason"] for r in data["restored"])
 
 
-def test_score_inquiries(runner, problem):
-    data = json.loads(invoke(runner, "score", COFFEE_DOMAIN, problem, "--inquiries", "--json").output)
+def test_score_inquiries(problem):
+    data = json.loads(invoke("score", COFFEE_DOMAIN, problem, "--inquiries", "--json").output)
     inquiries = data["inquiries"]
     assert "cold_brew" in inquiries["necessary"]
     assert {"plastic_cup", "paper_cup"} <= set(inquiries["questions"])
@@ -53,9 +45,10 @@ def test_score_inquiries(runner, problem):
     assert inquiries["with_necessity"] < inquiries["relevance_only"] < inquiries["no_relevance"]
 
 
-def test_prune_writes_a_problem_that_planners_read(runner, problem, tmp_path):
+@pytest.mark.planner
+def test_prune_writes_a_problem_that_planners_read(problem, tmp_path):
     out = tmp_path / "pruned.pddl"
-    result = invoke(runner, "prune", COFFEE_DOMAIN, problem, "-o", out, "--json")
+    result = invoke("prune", COFFEE_DOMAIN, problem, "-o", out, "--json")
     assert result.exit_code == 0
     data = json.loads(result.output)
     assert "side_plate_1" in data["removed"] and "Plastic_Cup_1" in data["kept"]
@@ -77,9 +70,10 @@ def test_prune_writes_a_problem_that_planners_read(runner, problem, tmp_path):
     assert validate_plan(domain, original, outcome.plan).valid
 
 
-def test_plan_json_fields_and_plan_file(runner, problem, tmp_path):
+@pytest.mark.planner
+def test_plan_json_fields_and_plan_file(problem, tmp_path):
     plan_file = tmp_path / "out.plan"
-    result = invoke(runner, "plan", COFFEE_DOMAIN, problem, "--plan-file", plan_file, "--json")
+    result = invoke("plan", COFFEE_DOMAIN, problem, "--plan-file", plan_file, "--json")
     assert result.exit_code == 0, result.output
     data = json.loads(result.output)
     for key in (
@@ -101,8 +95,9 @@ def test_plan_json_fields_and_plan_file(runner, problem, tmp_path):
     assert any("Plastic_Cup_1" in l or "paper_cup_1" in l for l in lines)
 
 
-def test_plan_summary_text(runner, problem, tmp_path):
-    result = invoke(runner, "plan", COFFEE_DOMAIN, problem, "--plan-file", tmp_path / "p", "--method", "pure", "-q")
+@pytest.mark.planner
+def test_plan_summary_text(problem, tmp_path):
+    result = invoke("plan", COFFEE_DOMAIN, problem, "--plan-file", tmp_path / "p", "--method", "pure", "-q")
     assert result.exit_code == 0
     assert "valid on the original problem" in result.output
 
@@ -114,7 +109,7 @@ def _bad_yaml(tmp_path):
 
 
 def _bad_probability(tmp_path):
-    text = (REPO / "domains" / "coffee" / "relevance.yaml").read_text().replace("coffee: 0.98", "coffee: 1.98", 1)
+    text = COFFEE_MODEL.read_text().replace("coffee: 0.98", "coffee: 1.98", 1)
     path = tmp_path / "prob.yaml"
     path.write_text(text)
     return path
@@ -129,7 +124,7 @@ def _bad_probability(tmp_path):
             lambda t, p: [
                 "score",
                 COFFEE_DOMAIN,
-                _write(t, "broken.pddl", p.read_text().replace("(hand-empty)", "(hand-empty")),
+                write_file(t, "broken.pddl", p.read_text().replace("(hand-empty)", "(hand-empty")),
             ],
             ExitCode.PDDL_SYNTAX,
             "broken.pddl",
@@ -138,7 +133,7 @@ def _bad_probability(tmp_path):
             lambda t, p: [
                 "score",
                 COFFEE_DOMAIN,
-                _write(t, "other.pddl", p.read_text().replace("(:domain coffee)", "(:domain cereal)")),
+                write_file(t, "other.pddl", p.read_text().replace("(:domain coffee)", "(:domain cereal)")),
             ],
             ExitCode.DOMAIN_MISMATCH,
             "other.pddl:2",
@@ -177,12 +172,6 @@ def test_bad_input_gives_one_line_and_exit_code(runner, problem, tmp_path, args,
     assert all(p.suffix in (".pddl", ".yaml") and p.name not in ("x.pddl", "x.plan") for p in created)
 
 
-def _write(directory, name, text):
-    path = directory / name
-    path.write_text(text)
-    return path
-
-
 def test_insufficient_cues_exit_code_from_plan(runner, problem, tmp_path):
     result = runner.invoke(
         main,
@@ -194,7 +183,7 @@ def test_insufficient_cues_exit_code_from_plan(runner, problem, tmp_path):
 
 def test_no_traceback_from_the_real_command(tmp_path, problem):
     completed = subprocess.run(
-        [sys.executable, "-m", "relevance_plan", "score", str(COFFEE_DOMAIN), str(tmp_path / "nope.pddl")],
+        TOOL + ["score", str(COFFEE_DOMAIN), str(tmp_path / "nope.pddl")],
         capture_output=True,
         text=True,
     )
@@ -202,12 +191,13 @@ def test_no_traceback_from_the_real_command(tmp_path, problem):
     assert completed.stderr.strip().count("\n") == 0 and "Traceback" not in completed.stderr
 
 
-def test_exit_code_table_is_printed(runner):
-    result = invoke(runner, "exit-codes")
+def test_exit_code_table_is_printed():
+    result = invoke("exit-codes")
     for code in ExitCode:
         assert f"{int(code):>4}  {code.name}" in result.output
 
 
+@pytest.mark.planner
 def test_plan_bad_planner_config_and_malformed_problem(runner, problem, tmp_path):
     result = runner.invoke(
         main,
@@ -224,7 +214,7 @@ def test_plan_bad_planner_config_and_malformed_problem(runner, problem, tmp_path
         ],
     )
     assert result.exit_code == ExitCode.USAGE
-    broken = _write(tmp_path, "broken.pddl", problem.read_text().replace("(:init", "(:init (at)"))
+    broken = write_file(tmp_path, "broken.pddl", problem.read_text().replace("(:init", "(:init (at)"))
     result = runner.invoke(main, ["plan", str(COFFEE_DOMAIN), str(broken), "--plan-file", str(tmp_path / "p")])
     assert result.exit_code == ExitCode.DOMAIN_MISMATCH and "broken.pddl:" in result.output
     assert not (tmp_path / "p").exists()

@@ -19,10 +19,10 @@ import time
 from pathlib import Path
 
 import pytest
+from support import DOMAINS, PROBLEMS, REPO
 
-ROOT = Path(__file__).resolve().parent.parent
-if str(ROOT) not in sys.path:  # the repository is not necessarily installed
-    sys.path.insert(0, str(ROOT))
+if str(REPO) not in sys.path:  # the repository is not necessarily installed
+    sys.path.insert(0, str(REPO))
 
 from relevance_plan.errors import InputFileError, UsageError  # noqa: E402
 from relevance_plan.generators import (  # noqa: E402
@@ -38,8 +38,6 @@ from relevance_plan.generators import (  # noqa: E402
 )
 from relevance_plan.generators.problem import blockers, goal_objects, relevant_objects  # noqa: E402
 
-DOMAINS = ROOT / "domains"
-PROBLEMS = ROOT / "problems"
 SUITES = [("coffee", "simple"), ("coffee", "hard"), ("cereal", "simple"), ("cereal", "hard")]
 NAME = re.compile(r"^[a-z]+(_[a-z]+)*_[1-9][0-9]*$")
 
@@ -332,7 +330,7 @@ def test_same_arguments_same_problem_across_processes():
         env = dict(os.environ, PYTHONHASHSEED=hash_seed)
         outputs.append(
             subprocess.run(
-                [sys.executable, "-c", script, str(ROOT)], env=env, capture_output=True, text=True, check=True
+                [sys.executable, "-c", script, str(REPO)], env=env, capture_output=True, text=True, check=True
             ).stdout
         )
     problem = generate_problem("coffee", "hard", 5, 2)
@@ -479,6 +477,7 @@ def _check_necessary_restriction(tmp_path, domain, problem_path, restricted):
     validate_on(domain, problem_path, plan)
 
 
+@pytest.mark.planner
 @pytest.mark.parametrize("scene_name,index,distractors", _planning_cases())
 def test_full_and_necessary_problems_are_solvable(tmp_path, scene_name, index, distractors):
     """Base scenes and small generated problems: Fast Downward solves the full
@@ -491,6 +490,7 @@ def test_full_and_necessary_problems_are_solvable(tmp_path, scene_name, index, d
     _check_necessary_restriction(tmp_path, domain, problem_path, restricted)
 
 
+@pytest.mark.planner
 @pytest.mark.parametrize("world,difficulty", SUITES)
 @pytest.mark.parametrize("index", [1, 2])
 def test_necessary_restriction_of_paper_sized_problems(tmp_path, world, difficulty, index):
@@ -501,6 +501,7 @@ def test_necessary_restriction_of_paper_sized_problems(tmp_path, world, difficul
     _check_necessary_restriction(tmp_path, domain, problem_path, restricted)
 
 
+@pytest.mark.planner
 @pytest.mark.slow
 @pytest.mark.parametrize("world,difficulty", SUITES)
 @pytest.mark.parametrize("index", [1, 2])

@@ -14,39 +14,26 @@ from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
-from kitchen import coffee_problem
+from kitchen import coffee_problem, goal_of, replace_goal
+from support import COFFEE_DOMAIN, COFFEE_MODEL, alias_bomb, write_file
 
 from relevance_plan.cli import main
 from relevance_plan.exitcodes import ExitCode
 
-REPO = Path(__file__).resolve().parent.parent
-COFFEE = REPO / "domains" / "coffee"
 DOCUMENTED = {int(code) for code in ExitCode}
 
 
 # --------------------------------------------------------------------------- generators of hostile text
 
 
-def _replace_goal(text: str, goal: str) -> str:
-    start = text.index("(:goal") + len("(:goal")
-    end = text.rindex(")", 0, text.rindex(")"))
-    return text[:start] + " " + goal + text[end:]
-
-
-def _goal(text: str) -> str:
-    start = text.index("(:goal") + len("(:goal")
-    end = text.rindex(")", 0, text.rindex(")"))
-    return text[start:end].strip()
-
-
 def hostile_problems() -> dict[str, bytes]:
     base = coffee_problem(extra_plates=2)
-    goal = _goal(base)
+    goal = goal_of(base)
     rng = random.Random(11)
     huge = "p" * 100_000
     return {
-        "deep-and": _replace_goal(base, "(and " * 500 + goal + ")" * 500).encode(),
-        "deep-not": _replace_goal(base, "(not " * 700 + goal + ")" * 700).encode(),
+        "deep-and": replace_goal(base, "(and " * 500 + goal + ")" * 500).encode(),
+        "deep-not": replace_goal(base, "(not " * 700 + goal + ")" * 700).encode(),
         "deep-parens-only": ("(" * 100_000).encode(),
         "closing-parens": (")" * 1000).encode(),
         "huge-object-name": base.replace("side_plate_1", huge).encode(),
@@ -63,9 +50,9 @@ def hostile_problems() -> dict[str, bytes]:
         "only-comments": b"; nothing here\n; at all\n",
         "unbalanced": base[:-5].encode(),
         "two-definitions": (base + base).encode(),
-        "domain-as-problem": (COFFEE / "domain.pddl").read_bytes(),
-        "unknown-object-in-goal": _replace_goal(base, "(coffee-served nobody)").encode(),
-        "numeric-goal": _replace_goal(base, "(> (total-cost) 3)").encode(),
+        "domain-as-problem": COFFEE_DOMAIN.read_bytes(),
+        "unknown-object-in-goal": replace_goal(base, "(coffee-served nobody)").encode(),
+        "numeric-goal": replace_goal(base, "(> (total-cost) 3)").encode(),
         "many-objects": base.replace(
             "(:objects", "(:objects " + " ".join(f"x{i} - plate" for i in range(3000))
         ).encode(),
@@ -75,7 +62,7 @@ def hostile_problems() -> dict[str, bytes]:
 
 
 def hostile_domains() -> dict[str, bytes]:
-    text = (COFFEE / "domain.pddl").read_text()
+    text = COFFEE_DOMAIN.read_text()
     at = text.index(":precondition") + len(":precondition")
     deep = text[:at] + " " + "(and " * 600 + "(hand-empty)" + ")" * 600 + text[at:].split(")", 0)[0]
     params = text.index(":parameters (") + len(":parameters (")
@@ -89,17 +76,10 @@ def hostile_domains() -> dict[str, bytes]:
     }
 
 
-def _alias_bomb(levels: int = 9) -> bytes:
-    lines = ['a0: &a0 ["lol", "lol", "lol", "lol", "lol", "lol", "lol", "lol", "lol"]']
-    for level in range(1, levels):
-        lines.append(f"a{level}: &a{level} [" + ", ".join([f"*a{level - 1}"] * 9) + "]")
-    return ("\n".join(lines) + "\n").encode()
-
-
 def hostile_models() -> dict[str, bytes]:
-    model = (COFFEE / "relevance.yaml").read_text()
+    model = COFFEE_MODEL.read_text()
     return {
-        "alias-bomb": _alias_bomb(),
+        "alias-bomb": alias_bomb(),
         "alias-bomb-in-mapping": b"base: &b {x: 1}\nmore: *b\n",
         "deep-flow": ("x: " + "[" * 5000 + "]" * 5000).encode(),
         "deep-block": "".join("  " * i + f"k{i}:\n" for i in range(300)).encode(),
@@ -187,27 +167,22 @@ def workspace(tmp_path):
     out = tmp_path / "out"
     out.mkdir()
     domain = user / "domain.pddl"
-    domain.write_bytes((COFFEE / "domain.pddl").read_bytes())
+    domain.write_bytes(COFFEE_DOMAIN.read_bytes())
     problem = user / "problem.pddl"
     problem.write_text(coffee_problem(extra_plates=2))
     model = user / "model.yaml"
-    model.write_bytes((COFFEE / "relevance.yaml").read_bytes())
+    model.write_bytes(COFFEE_MODEL.read_bytes())
     return Checker(user), user, out, domain, problem, model
-
-
-def _write(directory: Path, name: str, data: bytes) -> Path:
-    path = directory / name
-    path.write_bytes(data)
-    return path
 
 
 # --------------------------------------------------------------------------- the runs
 
 
+@pytest.mark.planner
 def test_hostile_problems_through_score_prune_and_plan(workspace):
     check, user, out, domain, _, _ = workspace
-    bad = {name: _write(user, f"{name}.pddl", data) for name, data in hostile_problems().items()}
-    _write(user, "no-events.jsonl", b"\x00\xff not json\n" + b"[" * 10000 + b"\n")
+    bad = {name: write_file(user, f"{name}.pddl", data) for name, data in hostile_problems().items()}
+    write_file(user, "no-events.jsonl", b"\x00\xff not json\n" + b"[" * 10000 + b"\n")
     for name, path in bad.items():
         check("score", domain, path, "--json")
         check("prune", domain, path, "-o", out / f"{name}.pddl")
@@ -220,7 +195,7 @@ def test_hostile_problems_through_score_prune_and_plan(workspace):
 def test_hostile_domains(workspace):
     check, user, out, _, problem, _ = workspace
     for name, data in hostile_domains().items():
-        path = _write(user, f"{name}-domain.pddl", data)
+        path = write_file(user, f"{name}-domain.pddl", data)
         check("score", path, problem, allowed={30, 31, 32, 33, 34})
         check("plan", path, problem, "-q", "--plan-file", out / "plan", allowed={30, 31, 32, 33, 34})
 
@@ -228,13 +203,14 @@ def test_hostile_domains(workspace):
 def test_hostile_models(workspace):
     check, user, out, domain, problem, _ = workspace
     for name, data in hostile_models().items():
-        path = _write(user, f"{name}.yaml", data)
+        path = write_file(user, f"{name}.yaml", data)
         # YAML itself allows a byte-order mark.
         allowed = {0} if name == "bom" else {ExitCode.MODEL, ExitCode.INPUT_FILE}
         check("score", domain, problem, "--model", path, allowed=allowed)
         check("prune", domain, problem, "--model", path, "-o", out / "x.pddl", allowed=allowed)
 
 
+@pytest.mark.planner
 def test_hostile_suites_through_sweep_compare_and_report(workspace):
     check, user, out, domain, problem, _ = workspace
     suite = user / "suite"
@@ -242,21 +218,22 @@ def test_hostile_suites_through_sweep_compare_and_report(workspace):
     (suite / "domain.pddl").write_bytes(domain.read_bytes())
     problems = hostile_problems()
     for name in ("deep-and", "binary", "bom", "non-ascii-name", "empty", "huge-object-name"):
-        _write(suite, f"{name}.pddl", problems[name])
+        write_file(suite, f"{name}.pddl", problems[name])
     for index, data in enumerate(hostile_sidecars().values()):
-        _write(suite, f"good-{index}.pddl", problem.read_bytes())
-        _write(suite, f"good-{index}.json", data)
+        write_file(suite, f"good-{index}.pddl", problem.read_bytes())
+        write_file(suite, f"good-{index}.json", data)
     store = out / "results.sqlite"
     check("compare", suite, "--methods", "relevance,oracle", "--store", store, "-q", "--timeout", "30", allowed={0})
     check("report", store, allowed={0})
     check("sweep", suite, allowed={ExitCode.INPUT_FILE, ExitCode.PDDL_SYNTAX})
     for name, data in hostile_stores().items():
-        path = _write(user, f"{name}.sqlite", data)
+        path = write_file(user, f"{name}.sqlite", data)
         check("report", path, allowed={ExitCode.STORE})
         if data:  # an empty file is where compare may start a new store
             check("compare", suite, "--methods", "pure", "--store", path, "-q", allowed={ExitCode.STORE})
 
 
+@pytest.mark.planner
 def test_hostile_numbers(workspace):
     check, user, out, domain, problem, _ = workspace
     suite = user / "suite"

@@ -7,16 +7,14 @@ import os
 import subprocess
 import sys
 import zipfile
-from pathlib import Path
 
 import pytest
-from worlds import GRIPPER_DOMAIN, gripper_problem
+from padded_worlds import GRIPPER_DOMAIN, gripper_problem
+from support import REPO
 
 from relevance_plan.batch.jobs import FINGERPRINT_RULES, build_jobs, config_fingerprint, config_hash, run_job
 from relevance_plan.planning.loop import PLAN_OPTION_FIELDS, PlanOptions, plan_task
 from relevance_plan.relevance.prune import Thresholds
-
-REPO = Path(__file__).resolve().parent.parent
 
 # A value other than the default for every option (None where the default is set).
 OTHER_VALUES = {
@@ -63,6 +61,7 @@ def hard_gripper(tmp_path):
     return domain, problem
 
 
+@pytest.mark.planner
 def test_plan_compare_and_the_up_engine_make_the_same_attempts(hard_gripper, tmp_path):
     from unified_planning.engines import PlanGenerationResultStatus as Status
     from unified_planning.io import PDDLReader
@@ -125,6 +124,7 @@ def test_the_wheel_ships_the_worlds_and_no_stray_top_level_packages(wheel):
         assert needed in names
 
 
+@pytest.mark.planner
 def test_the_installed_tool_runs_without_the_source_tree(wheel, tmp_path):
     target = tmp_path / "site"
     subprocess.run(

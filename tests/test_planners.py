@@ -10,8 +10,8 @@ from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
-from kitchen import coffee_problem
-from worlds import GRIPPER_DOMAIN, gripper_problem
+from padded_worlds import GRIPPER_DOMAIN, gripper_problem
+from support import running
 
 from relevance_plan.cli import main
 from relevance_plan.errors import PlannerError, UsageError
@@ -27,10 +27,9 @@ from relevance_plan.planning.runner import PlannerStatus
 
 
 @pytest.fixture
-def coffee_files(tmp_path, coffee_domain_path):
-    problem = tmp_path / "coffee.pddl"
-    problem.write_text(coffee_problem(extra_plates=3))
-    return coffee_domain_path, problem
+def coffee_extra_plates():
+    """``coffee_files`` (conftest.py) with three extra plates."""
+    return 3
 
 
 @pytest.fixture
@@ -72,15 +71,6 @@ FD_TO_FILE = """
 """
 
 
-def running(pid: int) -> bool:
-    """Alive and not a zombie waiting to be reaped by whoever adopted it."""
-    try:
-        state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
-    except (FileNotFoundError, ProcessLookupError):
-        return False
-    return state != "Z"
-
-
 # --------------------------------------------------------------------------- names
 
 
@@ -116,6 +106,7 @@ def test_ipc_plans_are_parsed_and_garbage_is_refused():
 # --------------------------------------------------------------------------- cmd: inside the loop
 
 
+@pytest.mark.planner
 def test_external_command_plan_is_validated_on_the_original(tmp_path, coffee_files):
     domain, problem = coffee_files
     planner = "cmd:" + script(tmp_path, "fd-stdout", FD_ON_STDOUT) + " {domain} {problem}"
@@ -125,6 +116,7 @@ def test_external_command_plan_is_validated_on_the_original(tmp_path, coffee_fil
     assert result.objects_kept < result.objects_total
 
 
+@pytest.mark.planner
 def test_external_command_on_a_classic_problem_with_a_plan_file(tmp_path, gripper_files):
     domain, problem = gripper_files
     planner = "cmd:" + script(tmp_path, "fd-file", FD_TO_FILE) + " {domain} {problem} {plan}"
@@ -133,6 +125,7 @@ def test_external_command_on_a_classic_problem_with_a_plan_file(tmp_path, grippe
     assert result.valid and result.objects_kept < result.objects_total
 
 
+@pytest.mark.planner
 @pytest.mark.parametrize(
     "body, planner_status, plan_status",
     [
@@ -156,6 +149,7 @@ def test_misbehaving_commands_get_the_right_outcome_and_the_loop_carries_on(
         assert all(a.validation is not None and not a.validation.valid for a in result.attempts)
 
 
+@pytest.mark.planner
 def test_a_hanging_command_is_killed_with_its_children(tmp_path, coffee_files):
     domain, problem = coffee_files
     marker = tmp_path / "child.pid"
@@ -192,6 +186,7 @@ def test_plan_command_takes_a_planner_and_refuses_a_bad_one(tmp_path, coffee_fil
 # --------------------------------------------------------------------------- up:NAME
 
 
+@pytest.mark.planner
 @pytest.mark.parametrize("files", ["coffee_files", "gripper_files"])
 def test_unified_planning_engine_in_a_child_process(request, files):
     pytest.importorskip("up_lpg")
@@ -201,6 +196,7 @@ def test_unified_planning_engine_in_a_child_process(request, files):
     assert result.valid and result.planner == "up:lpg"
 
 
+@pytest.mark.planner
 def test_pyperplan_solves_a_classic_problem_and_refuses_features_it_lacks(gripper_files, coffee_files):
     pytest.importorskip("up_pyperplan")
     domain, problem = gripper_files
@@ -221,6 +217,7 @@ def test_an_engine_that_is_not_installed_names_the_extra():
 # --------------------------------------------------------------------------- compare --planners
 
 
+@pytest.mark.planner
 def test_compare_with_two_planners_resumes_and_reports_per_planner(tmp_path):
     pytest.importorskip("up_lpg")
     from relevance_plan.generators.generate import generate_suite

@@ -2,25 +2,15 @@
 
 import json
 import time
-from pathlib import Path
 
 import pytest
 from kitchen import coffee_problem
-from worlds import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
+from padded_worlds import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
 
 from relevance_plan.io import load_task
 from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task
 from relevance_plan.planning.validate import ValidationStatus, validate_with_up
 from relevance_plan.relevance.prune import Thresholds
-
-REPO = Path(__file__).resolve().parent.parent
-
-
-@pytest.fixture
-def coffee_files(tmp_path, coffee_domain_path):
-    problem = tmp_path / "coffee.pddl"
-    problem.write_text(coffee_problem(extra_plates=6))
-    return coffee_domain_path, problem
 
 
 def assert_valid_on_original(domain_path, problem_path, result):
@@ -31,6 +21,7 @@ def assert_valid_on_original(domain_path, problem_path, result):
     assert validate_with_up(domain, problem, result.plan).status is ValidationStatus.VALID
 
 
+@pytest.mark.planner
 @pytest.mark.parametrize("method", ["relevance", "pure", "random"])
 def test_every_method_gives_a_plan_valid_on_the_original(coffee_files, method):
     domain_path, problem_path = coffee_files
@@ -46,6 +37,7 @@ def test_every_method_gives_a_plan_valid_on_the_original(coffee_files, method):
         assert result.objects_kept == result.objects_total
 
 
+@pytest.mark.planner
 def test_oracle_uses_the_sidecar(coffee_files):
     domain_path, problem_path = coffee_files
     necessary = ["alice", "counter_1", "table_1", "paper_cup_1", "cold_brew_1", "creamer_1", "fridge_1", "stir_stick_1"]
@@ -55,6 +47,7 @@ def test_oracle_uses_the_sidecar(coffee_files):
     assert result.objects_kept == len(necessary)
 
 
+@pytest.mark.planner
 def test_relaxation_recovers_when_the_first_pruning_removed_a_needed_object(coffee_files):
     domain_path, problem_path = coffee_files
     strict = Thresholds(0.2, 0.85)  # keeps the cup and the coffee, drops whitener and stirrer
@@ -65,6 +58,7 @@ def test_relaxation_recovers_when_the_first_pruning_removed_a_needed_object(coff
     assert result.attempts[0].objects_kept < result.attempts[-1].objects_kept
 
 
+@pytest.mark.planner
 def test_a_goal_object_is_never_set_aside(tmp_path, coffee_domain_path):
     # the plate-covered plastic cup is named by the goal, so it stays with its plate
     problem = tmp_path / "coffee.pddl"
@@ -79,6 +73,7 @@ def test_a_goal_object_is_never_set_aside(tmp_path, coffee_domain_path):
     assert {"plastic_cup_1", "dinner_plate_1"} <= result.prune.kept
 
 
+@pytest.mark.planner
 def test_widening_brings_back_a_set_aside_alternative_when_the_free_one_cannot_serve(tmp_path, coffee_domain_path):
     # the free paper cup is not empty, so only the plastic cup under the plate can take coffee
     problem = tmp_path / "coffee.pddl"
@@ -90,6 +85,7 @@ def test_widening_brings_back_a_set_aside_alternative_when_the_free_one_cannot_s
     assert any("plastic_cup_1" in step.args for step in result.plan)
 
 
+@pytest.mark.planner
 def test_no_relax_reports_the_failed_pruning(coffee_files):
     domain_path, problem_path = coffee_files
     result = plan_task(
@@ -99,6 +95,7 @@ def test_no_relax_reports_the_failed_pruning(coffee_files):
     assert len(result.attempts) == 1 and not result.plan.steps
 
 
+@pytest.mark.planner
 def test_unsolvable_original_is_reported_as_unsolvable(tmp_path, coffee_domain_path):
     problem = tmp_path / "no-cup.pddl"
     text = coffee_problem(plate_on_cup=False).replace("plastic_cup_1 paper_cup_1 - cup", "")
@@ -109,6 +106,7 @@ def test_unsolvable_original_is_reported_as_unsolvable(tmp_path, coffee_domain_p
     assert result.attempts[-1].objects_kept == result.objects_total  # proven on the full problem
 
 
+@pytest.mark.planner
 def test_insufficient_cues_is_its_own_outcome(coffee_files):
     domain_path, problem_path = coffee_files
     result = plan_task(domain_path, problem_path, PlanOptions(objective="drink-at-break", timeout=60))
@@ -118,6 +116,7 @@ def test_insufficient_cues_is_its_own_outcome(coffee_files):
     assert resolved.status is PlanStatus.SOLVED
 
 
+@pytest.mark.planner
 @pytest.mark.parametrize(
     "domain_text, problem_text, expected_kept_at_most",
     [
@@ -137,6 +136,7 @@ def test_goal_scorer_plans_on_classic_domains_without_a_model(
     assert result.objects_kept <= expected_kept_at_most
 
 
+@pytest.mark.planner
 def test_out_of_time_is_reported(tmp_path):
     domain_path, problem_path = tmp_path / "domain.pddl", tmp_path / "problem.pddl"
     domain_path.write_text(BLOCKSWORLD_DOMAIN)
@@ -147,6 +147,7 @@ def test_out_of_time_is_reported(tmp_path):
     assert time.perf_counter() - started < 15
 
 
+@pytest.mark.planner
 def test_out_of_memory_is_reported(tmp_path):
     domain_path, problem_path = tmp_path / "domain.pddl", tmp_path / "problem.pddl"
     domain_path.write_text(BLOCKSWORLD_DOMAIN)
@@ -155,6 +156,7 @@ def test_out_of_memory_is_reported(tmp_path):
     assert result.status is PlanStatus.OUT_OF_MEMORY
 
 
+@pytest.mark.planner
 def test_bad_planner_configuration_is_not_a_pddl_error(coffee_files):
     domain_path, problem_path = coffee_files
     result = plan_task(

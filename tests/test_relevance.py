@@ -4,7 +4,7 @@ import math
 
 import pytest
 from kitchen import coffee_problem
-from worlds import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
+from padded_worlds import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
 
 from relevance_plan.errors import ModelError, UsageError
 from relevance_plan.io import load_domain

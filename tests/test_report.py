@@ -4,62 +4,15 @@ from __future__ import annotations
 
 import csv
 import io
-import json
 import sys
 
 import pytest
-from click.testing import CliRunner
+from support import TIMEOUT, invoke, make_row
 
 from relevance_plan.batch.report import build_report, format_report, job_time, write_plots
 from relevance_plan.batch.store import COLUMNS, ResultStore
 from relevance_plan.errors import UsageError
 from relevance_plan.exitcodes import ExitCode
-
-TIMEOUT = 100.0
-
-
-def make_row(
-    suite,
-    problem,
-    method,
-    status="solved",
-    wall=1.0,
-    relevance=0.0,
-    first=None,
-    kept=10,
-    total=20,
-    seed=0,
-    config="c",
-    exit_code=0,
-):
-    config_json = json.dumps({"method": method, "timeout": TIMEOUT, "config": config}, sort_keys=True)
-    return {
-        "problem_hash": f"hash-{suite}-{problem}",
-        "method": method,
-        "config_hash": f"{config}-{seed}",
-        "planner_version": "1.0.0",
-        "suite": suite,
-        "problem": f"{problem}.pddl",
-        "world": "coffee",
-        "difficulty": "simple",
-        "seed": seed,
-        "status": status,
-        "valid": int(status == "solved"),
-        "exit_code": exit_code,
-        "wall_time": wall,
-        "relevance_time": relevance,
-        "planner_time": max(wall - relevance, 0.0),
-        "objects_total": total,
-        "objects_kept": kept,
-        "attempts": 1,
-        "first_attempt_status": first or status,
-        "plan_length": 10 if status == "solved" else None,
-        "timeout": TIMEOUT,
-        "message": "",
-        "config_json": config_json,
-        "finished_at": "2026-11-22T00:00:00.000+00:00",
-        "result_json": "{}",
-    }
 
 
 def known_rows():
@@ -246,19 +199,12 @@ def test_plots_without_matplotlib_say_how_to_install(known_store, tmp_path, monk
 # --------------------------------------------------------------------------- CLI
 
 
-def cli_group():
-    from relevance_plan.cli import main
-
-    return main
-
-
 def test_report_command(known_store, tmp_path):
-    runner = CliRunner()
     before = known_store.read_bytes()
-    result = runner.invoke(cli_group(), ["report", str(known_store)])
+    result = invoke("report", known_store)
     assert result.exit_code == 0, result.output
     assert result.stdout == format_report(build_report(known_rows()), "markdown")
-    result = runner.invoke(cli_group(), ["report", str(known_store), "--format", "csv", "--plots", str(tmp_path / "p")])
+    result = invoke("report", known_store, "--format", "csv", "--plots", tmp_path / "p")
     assert result.exit_code == 0, result.output
     assert result.stdout.startswith("suite,method,n,")
     assert (tmp_path / "p" / "cactus.png").is_file()
@@ -267,7 +213,7 @@ def test_report_command(known_store, tmp_path):
 
 def test_report_on_a_missing_store_creates_nothing(tmp_path):
     missing = tmp_path / "nothing.sqlite"
-    result = CliRunner().invoke(cli_group(), ["report", str(missing)])
+    result = invoke("report", missing)
     assert result.exit_code == ExitCode.INPUT_FILE
     assert result.stderr.count("\n") == 1 and "results store not found" in result.stderr
     assert not missing.exists()

@@ -12,6 +12,7 @@ from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 import pytest
+from support import write_file
 
 from relevance_plan import errors
 from relevance_plan.planning import runner
@@ -66,20 +67,14 @@ def big_problem(n: int) -> str:
     return f"(define (problem big{n}) (:domain big) (:objects {objects}) (:init {init}) (:goal (done)))"
 
 
-def write(tmp_path: Path, name: str, text: str) -> Path:
-    path = tmp_path / name
-    path.write_text(text)
-    return path
-
-
 @pytest.fixture
 def gripper(tmp_path: Path) -> tuple[Path, Path]:
-    return write(tmp_path, "domain.pddl", GRIPPER_DOMAIN), write(tmp_path, "p.pddl", gripper_problem())
+    return write_file(tmp_path, "domain.pddl", GRIPPER_DOMAIN), write_file(tmp_path, "p.pddl", gripper_problem())
 
 
 @pytest.fixture
 def big40(tmp_path: Path) -> tuple[Path, Path]:
-    return write(tmp_path, "big.pddl", BIG_DOMAIN), write(tmp_path, "big40.pddl", big_problem(40))
+    return write_file(tmp_path, "big.pddl", BIG_DOMAIN), write_file(tmp_path, "big40.pddl", big_problem(40))
 
 
 def live_session_members(session: int) -> list[int]:
@@ -140,6 +135,7 @@ def test_command_puts_driver_options_before_files_and_search_after(tmp_path: Pat
     assert command[2:] == ["--plan-file", "sas_plan", "--alias", "seq-sat-lama-2011", str(domain), str(problem)]
 
 
+@pytest.mark.planner  # reads Fast Downward's own exit-code table: needs the planner installed
 def test_exit_code_table_matches_driver_returncodes() -> None:
     codes = runpy.run_path(str(runner.find_fast_downward().parent / "driver" / "returncodes.py"))
     expected = {
@@ -179,9 +175,9 @@ def test_classify_splits_translator_critical_error_by_log() -> None:
 
 
 def test_read_plan_takes_last_complete_anytime_plan(tmp_path: Path) -> None:
-    write(tmp_path, "sas_plan.2", "(A X)\n(B Y)\n; cost = 2 (unit cost)\n")
-    write(tmp_path, "sas_plan.10", "(c z)\n; cost = 1 (unit cost)\n")
-    write(tmp_path, "sas_plan.11", "(d z)\n")  # cut off by a kill mid-write
+    write_file(tmp_path, "sas_plan.2", "(A X)\n(B Y)\n; cost = 2 (unit cost)\n")
+    write_file(tmp_path, "sas_plan.10", "(c z)\n; cost = 1 (unit cost)\n")
+    write_file(tmp_path, "sas_plan.11", "(d z)\n")  # cut off by a kill mid-write
     found = runner._read_plan(tmp_path)
     assert [str(step) for step in found] == ["(c z)"] and found.cost == 1
     (tmp_path / "sas_plan.10").unlink()
@@ -193,7 +189,7 @@ def test_read_plan_takes_last_complete_anytime_plan(tmp_path: Path) -> None:
 
 
 def test_driver_override_and_missing_driver(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    fake = write(tmp_path, "fd.py", "")
+    fake = write_file(tmp_path, "fd.py", "")
     monkeypatch.setenv(runner.FAST_DOWNWARD_ENV, str(fake))
     assert runner.find_fast_downward() == fake.resolve()
     monkeypatch.setenv(runner.FAST_DOWNWARD_ENV, str(tmp_path / "nowhere.py"))
@@ -227,6 +223,7 @@ def test_bad_limits(gripper: tuple[Path, Path]) -> None:
 # --- real planner runs -----------------------------------------------------------
 
 
+@pytest.mark.planner
 def test_solved(gripper: tuple[Path, Path]) -> None:
     cwd = os.getcwd()
     outcome = runner.run_fast_downward(*gripper, time_limit=30)
@@ -247,6 +244,7 @@ def test_solved(gripper: tuple[Path, Path]) -> None:
     assert len(outcome.log_tail.splitlines()) <= runner.LOG_TAIL_LINES
 
 
+@pytest.mark.planner
 @pytest.mark.parametrize("config", ["lama", "ff-gbfs", "astar-lmcut", "astar-blind", "astar(blind())"])
 def test_other_configs(gripper: tuple[Path, Path], config: str) -> None:
     outcome = runner.run_fast_downward(*gripper, config=config, time_limit=30)
@@ -254,22 +252,25 @@ def test_other_configs(gripper: tuple[Path, Path], config: str) -> None:
     assert len(outcome.plan) == 3 and outcome.plan_cost == 3
 
 
+@pytest.mark.planner
 def test_unsolvable(tmp_path: Path) -> None:
-    domain = write(tmp_path, "domain.pddl", GRIPPER_DOMAIN)
-    problem = write(tmp_path, "p.pddl", gripper_problem(free_gripper=False))
+    domain = write_file(tmp_path, "domain.pddl", GRIPPER_DOMAIN)
+    problem = write_file(tmp_path, "p.pddl", gripper_problem(free_gripper=False))
     outcome = runner.run_fast_downward(domain, problem, time_limit=30)
     assert outcome.status is PlannerStatus.UNSOLVABLE
     assert outcome.exit_code == 11 and not outcome.plan.steps and outcome.plan_cost is None
 
 
+@pytest.mark.planner
 def test_syntax_error_is_input_error(tmp_path: Path) -> None:
-    domain = write(tmp_path, "domain.pddl", GRIPPER_DOMAIN)
-    problem = write(tmp_path, "p.pddl", gripper_problem().replace("(free left))", "(free left)"))
+    domain = write_file(tmp_path, "domain.pddl", GRIPPER_DOMAIN)
+    problem = write_file(tmp_path, "p.pddl", gripper_problem().replace("(free left))", "(free left)"))
     outcome = runner.run_fast_downward(domain, problem, time_limit=30)
     assert outcome.status is PlannerStatus.INPUT_ERROR
     assert outcome.exit_code == 31
 
 
+@pytest.mark.planner
 @pytest.mark.parametrize("config, code", [("no-such-alias", 36), ("astar(no_such_heuristic())", 33)])
 def test_bad_config_is_input_error(gripper: tuple[Path, Path], config: str, code: int) -> None:
     outcome = runner.run_fast_downward(*gripper, config=config, time_limit=30)
@@ -277,6 +278,7 @@ def test_bad_config_is_input_error(gripper: tuple[Path, Path], config: str, code
     assert outcome.exit_code == code
 
 
+@pytest.mark.planner
 @pytest.mark.parametrize("time_limit", [1, 2])
 def test_out_of_time(big40: tuple[Path, Path], time_limit: int) -> None:
     # Unlimited, translating big40 takes ~5.5 s.  With 1 s the translator's CPU
@@ -290,14 +292,16 @@ def test_out_of_time(big40: tuple[Path, Path], time_limit: int) -> None:
     assert_session_gone(outcome.process_group)
 
 
+@pytest.mark.planner
 def test_out_of_memory(tmp_path: Path) -> None:
-    domain = write(tmp_path, "big.pddl", BIG_DOMAIN)
-    problem = write(tmp_path, "big30.pddl", big_problem(30))  # needs ~125 MB
+    domain = write_file(tmp_path, "big.pddl", BIG_DOMAIN)
+    problem = write_file(tmp_path, "big30.pddl", big_problem(30))  # needs ~125 MB
     outcome = runner.run_fast_downward(domain, problem, time_limit=20, memory_limit_mb=80)
     assert outcome.status is PlannerStatus.OUT_OF_MEMORY, outcome.log_tail
     assert outcome.exit_code == 20
 
 
+@pytest.mark.planner
 def test_watchdog_kills_whole_process_group(big40: tuple[Path, Path]) -> None:
     outcome = runner.run_fast_downward(*big40, time_limit=1, driver_limits=False, watchdog_grace=0.5)
     assert outcome.killed_by_watchdog
@@ -307,6 +311,7 @@ def test_watchdog_kills_whole_process_group(big40: tuple[Path, Path]) -> None:
     assert_session_gone(outcome.process_group)
 
 
+@pytest.mark.planner
 def test_keyboard_interrupt_kills_process_group(big40: tuple[Path, Path], monkeypatch: pytest.MonkeyPatch) -> None:
     started: list[subprocess.Popen[bytes]] = []
 
@@ -330,13 +335,14 @@ def test_keyboard_interrupt_kills_process_group(big40: tuple[Path, Path], monkey
     assert_session_gone(started[0].pid)
 
 
+@pytest.mark.planner
 def test_parallel_runs_from_threads(tmp_path: Path) -> None:
-    domain = write(tmp_path, "domain.pddl", GRIPPER_DOMAIN)
+    domain = write_file(tmp_path, "domain.pddl", GRIPPER_DOMAIN)
     problems = {
-        "to_b": write(tmp_path, "b.pddl", gripper_problem("roomb")),
-        "to_c": write(tmp_path, "c.pddl", gripper_problem("roomc")),
-        "stuck1": write(tmp_path, "s1.pddl", gripper_problem("roomb", free_gripper=False)),
-        "stuck2": write(tmp_path, "s2.pddl", gripper_problem("roomc", free_gripper=False)),
+        "to_b": write_file(tmp_path, "b.pddl", gripper_problem("roomb")),
+        "to_c": write_file(tmp_path, "c.pddl", gripper_problem("roomc")),
+        "stuck1": write_file(tmp_path, "s1.pddl", gripper_problem("roomb", free_gripper=False)),
+        "stuck2": write_file(tmp_path, "s2.pddl", gripper_problem("roomc", free_gripper=False)),
     }
     with ThreadPoolExecutor(max_workers=4) as pool:
         futures = {
@@ -351,6 +357,7 @@ def test_parallel_runs_from_threads(tmp_path: Path) -> None:
     assert len({outcome.process_group for outcome in outcomes.values()}) == 4
 
 
+@pytest.mark.planner
 def test_terminate_all_runs_stops_every_running_planner(big40: tuple[Path, Path]) -> None:
     """Batch Ctrl-C: every planner started from threads is killed, none survives."""
     import threading

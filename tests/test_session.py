@@ -7,6 +7,8 @@ import random
 
 import pytest
 from click.testing import CliRunner
+from kitchen import coffee_problem
+from padded_worlds import BLOCKSWORLD_DOMAIN, blocksworld_problem
 
 from relevance_plan.cli import main
 from relevance_plan.data import DOMAINS_DIR, PROBLEMS_DIR
@@ -19,8 +21,6 @@ from relevance_plan.planning.validate import validate_plan
 from relevance_plan.relevance.scorers import PlanningTask
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
 from relevance_plan.session import TRIGGERS, Session
-from tests.kitchen import coffee_problem
-from tests.worlds import BLOCKSWORLD_DOMAIN, blocksworld_problem
 
 COFFEE_DOMAIN = DOMAINS_DIR / "coffee" / "domain.pddl"
 COFFEE_SIMPLE = PROBLEMS_DIR / "coffee-simple.pddl"
@@ -417,6 +417,7 @@ class CountingPlanner:
         return self.planner.run(str(COFFEE_DOMAIN), str(path), time_limit=limit, memory_limit_mb=None)
 
 
+@pytest.mark.planner
 def test_every_reported_plan_is_valid_on_the_current_state_and_still_valid_plans_are_kept(tmp_path):
     planner = CountingPlanner(tmp_path)
     session = coffee_session(
@@ -513,6 +514,7 @@ def test_watch_writes_one_line_per_event_and_a_snapshot_prune_agrees_with(tmp_pa
     assert sorted(json.loads(result.stdout)["kept"]) == kept
 
 
+@pytest.mark.planner
 def test_watch_with_plan_reports_validated_plans(tmp_path):
     events = [
         {
@@ -548,6 +550,7 @@ def test_watch_missing_file_is_one_line_and_exit_code_31(tmp_path):
     assert result.exit_code == 31 and "events file not found" in result.stderr
 
 
+@pytest.mark.planner
 def test_watch_reads_standard_input_until_it_ends(tmp_path):
     result = CliRunner().invoke(
         main,

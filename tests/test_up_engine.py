@@ -12,9 +12,9 @@ import subprocess
 import sys
 import textwrap
 import warnings
-from pathlib import Path
 
 import pytest
+from support import REPO
 from unified_planning.engines import PlanGenerationResultStatus as Status
 from unified_planning.engines.results import ValidationResultStatus
 from unified_planning.io import PDDLReader
@@ -39,8 +39,6 @@ from unified_planning.shortcuts import (
 
 from relevance_plan.errors import UsageError
 from relevance_plan.integrations.up_engine import lift_plan, register_relevance_engine, restrict_problem
-
-REPO = Path(__file__).resolve().parent.parent
 
 
 @pytest.fixture(scope="module", autouse=True)
@@ -253,6 +251,7 @@ def test_restricted_problem_maps_back_to_the_original():
 # --------------------------------------------------------------------------- end to end with Fast Downward
 
 
+@pytest.mark.planner
 def test_gripper_extra_balls_are_pruned_and_the_plan_is_the_originals():
     problem = gripper(extra=10)
     explicit_before = len(problem.explicit_initial_values)
@@ -272,6 +271,7 @@ def test_gripper_extra_balls_are_pruned_and_the_plan_is_the_originals():
     assert len(problem.explicit_initial_values) == explicit_before
 
 
+@pytest.mark.planner
 def test_blocks_in_the_way_are_kept_by_closure():
     problem = blocksworld(in_the_way=2, towers=3)
     result = solve(problem)
@@ -284,6 +284,7 @@ def test_blocks_in_the_way_are_kept_by_closure():
     assert {"x1", "x2"} <= moved
 
 
+@pytest.mark.planner
 def test_relaxation_recovers_when_the_first_pruning_removes_something_needed():
     problem = gripper(extra=10)
     result = solve(problem, tau_class=0.95, tau_element=0.95)
@@ -295,6 +296,7 @@ def test_relaxation_recovers_when_the_first_pruning_removes_something_needed():
     assert "attempt 1: 4 of 18 objects" in log_text(result) and "UNSOLVABLE_PROVEN" in log_text(result)
 
 
+@pytest.mark.planner
 def test_unsolvable_is_proven_only_on_the_whole_problem():
     problem = gripper(extra=6)
     problem.add_goal(problem.fluent("at")(problem.object("Ball1"), problem.object("Room 3")))  # two rooms at once
@@ -306,12 +308,14 @@ def test_unsolvable_is_proven_only_on_the_whole_problem():
     assert "the whole problem" in log_text(result)
 
 
+@pytest.mark.planner
 def test_no_time_left_is_a_timeout_not_a_verdict():
     result = solve(gripper(extra=2), timeout=1e-9)
     assert result.status is Status.TIMEOUT
     assert result.metrics["attempts"] == "0"
 
 
+@pytest.mark.planner
 def test_adl_features_and_action_costs_survive_the_round_trip():
     """Subtypes, equality, negation, existential conditions, conditional forall effects, costs."""
     Loc, Thing = UserType("Loc"), UserType("Thing")
@@ -365,6 +369,7 @@ def test_adl_features_and_action_costs_survive_the_round_trip():
     assert not [m for m in result.log_messages if m.level.name == "WARNING"]
 
 
+@pytest.mark.planner
 def test_costs_from_a_static_fluent_are_pruned_and_validated():
     """Costs from a static numeric fluent: forced past the kind check, our reader reads them, so the
     relevance stage prunes, and the plan validates on the original."""
@@ -386,6 +391,7 @@ def test_costs_from_a_static_fluent_are_pruned_and_validated():
     assert "relevance stage skipped" not in log_text(result)
 
 
+@pytest.mark.planner
 def test_knowledge_model_is_used_when_the_domain_is_named():
     problem = PDDLReader().parse_problem(
         str(REPO / "domains" / "coffee" / "domain.pddl"), str(REPO / "problems" / "coffee-simple.pddl")
@@ -400,6 +406,7 @@ def test_knowledge_model_is_used_when_the_domain_is_named():
 # --------------------------------------------------------------------------- other inner planners
 
 
+@pytest.mark.planner
 def test_pyperplan_as_inner_planner():
     pytest.importorskip("up_pyperplan")
     problem = gripper(extra=10, room_name="room{}")  # up-pyperplan splits plan steps on spaces
@@ -412,6 +419,7 @@ def test_pyperplan_as_inner_planner():
     assert result.metrics["objects_kept"] == "6"  # as `plan` keeps: the goal filter applies here too
 
 
+@pytest.mark.planner
 def test_enhsp_as_inner_planner():
     pytest.importorskip("up_enhsp")
     if shutil.which("java") is None:

@@ -27,7 +27,6 @@ import hashlib
 import json
 import os
 import re
-import signal
 import threading
 import time
 from collections import Counter
@@ -55,6 +54,7 @@ from relevance_plan.planning.loop import (
 from relevance_plan.planning.planners import make_planner
 from relevance_plan.relevance.knowledge import find_model
 from relevance_plan.relevance.sidecar import read_sidecar_for, sidecar_path
+from relevance_plan.signals import stop_event_on_signals
 
 DASK_INSTALL_HINT = "pip install 'relevance-plan[dask]'"
 DEFAULT_SCHEDULER_TIMEOUT = 10.0
@@ -430,31 +430,6 @@ def _reporter(total: int, description: str, show: bool):
         yield bar
 
 
-@contextlib.contextmanager
-def _stop_signals():
-    """An event that SIGINT, SIGTERM and SIGHUP set while a batch runs (main thread only).
-
-    The handler only sets the event: the loops below check it between
-    completions and stop at a safe point.  A KeyboardInterrupt raised at an
-    arbitrary instruction could land inside a lock another thread needs.
-    SIGINT is set explicitly too, in case it was inherited as ignored.
-    """
-    stop = threading.Event()
-    if threading.current_thread() is not threading.main_thread():
-        yield stop
-        return
-
-    def request_stop(signum, frame):
-        stop.set()
-
-    previous = {signum: signal.signal(signum, request_stop) for signum in runner.STOP_SIGNALS}
-    try:
-        yield stop
-    finally:
-        for signum, handler in previous.items():
-            signal.signal(signum, handler)
-
-
 _POLL_SECONDS = 0.2  # how often a running batch looks at its stop event
 
 
@@ -538,7 +513,7 @@ def compare(
             recorder = None
             if pending:
                 with (
-                    _stop_signals() as stop,
+                    stop_event_on_signals() as stop,
                     _reporter(len(pending), f"compare ({len(pending)} jobs)", progress) as bar,
                 ):
                     recorder = _Recorder(store, bar)

@@ -32,10 +32,10 @@ def handle_errors(command):
 
     @functools.wraps(command)
     def wrapper(*args, **kwargs):
-        from relevance_plan.planning.runner import stop_on_signals
+        from relevance_plan.signals import interrupt_on_signals
 
         try:
-            with stop_on_signals():
+            with interrupt_on_signals():
                 return command(*args, **kwargs)
         except RelevancePlanError as error:
             fail(str(error), exit_code_for_error(error))

@@ -6,13 +6,11 @@ whole process tree (driver, translator, search) can be killed at once.
 The session is led by a small guard (``guard.py``) that kills it if this
 process dies.  The driver's own limits are CPU time and address space per
 component; a wall-clock watchdog backs them up.  The module is thread-safe:
-many runs may go at once from a thread pool.  ``stop_on_signals`` turns
-SIGTERM and SIGHUP into the same clean stop as Ctrl-C.
+many runs may go at once from a thread pool.
 """
 
 from __future__ import annotations
 
-import contextlib
 import enum
 import functools
 import importlib.util
@@ -270,48 +268,6 @@ def _build_command(
         limits += ["--overall-memory-limit", f"{memory_limit_mb}M"]
     before, after = _split_driver_options(planner_arguments(config))
     return [python, str(driver), "--plan-file", PLAN_FILE, *limits, *before, str(domain), str(problem), *after]
-
-
-class Interrupted(KeyboardInterrupt):
-    """SIGTERM or SIGHUP, raised like Ctrl-C so every cleanup on the way out runs."""
-
-    def __init__(self, signum: int):
-        super().__init__(signal.Signals(signum).name)
-        self.signum = signum
-
-
-STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)
-
-
-@contextlib.contextmanager
-def stop_on_signals():
-    """While a command runs, SIGTERM and SIGHUP stop it as Ctrl-C does.
-
-    The exception unwinds through ``run_fast_downward`` (which kills and reaps
-    the planner's group) and every temporary directory's cleanup.  Signals
-    after the first are ignored so that a second one cannot cut the cleanup
-    short.  Main thread only; elsewhere this does nothing.
-    """
-    if threading.current_thread() is not threading.main_thread():
-        yield
-        return
-    stopping = False
-
-    def stop(signum, frame):
-        nonlocal stopping
-        if stopping:
-            return
-        stopping = True
-        if signum == signal.SIGINT:
-            raise KeyboardInterrupt
-        raise Interrupted(signum)
-
-    previous = {signum: signal.signal(signum, stop) for signum in STOP_SIGNALS}
-    try:
-        yield
-    finally:
-        for signum, handler in previous.items():
-            signal.signal(signum, handler)
 
 
 # Process groups of the planners running now, so a batch's Ctrl-C can stop them all.

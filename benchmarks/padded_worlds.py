@@ -2,7 +2,9 @@
 
 Used to show that pruning without a knowledge model (the goal scorer) pays
 off on domains we did not design: blocksworld with extra towers and blocks
-stacked on the goal's blocks, gripper with extra balls.
+stacked on the goal's blocks, gripper with extra balls.  The benchmarks import
+this module from their own directory; the tests use it too (``tests/conftest.py``
+puts ``benchmarks/`` on the path).
 """
 
 from __future__ import annotations

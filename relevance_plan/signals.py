@@ -1,0 +1,77 @@
+"""How every command stops on SIGINT, SIGTERM and SIGHUP: the one signal module.
+
+Two ways, for two kinds of work:
+
+* :func:`interrupt_on_signals` — a single run (``plan``, ``prune``,
+  ``watch``...): the signal raises :class:`Interrupted` (a
+  ``KeyboardInterrupt``), so every cleanup on the way out runs: the planner's
+  process group is killed and reaped, temporary files are removed.  Signals
+  after the first are ignored so that a second one cannot cut the cleanup short.
+* :func:`stop_event_on_signals` — a batch (``compare``): the handler only sets
+  an event, and the batch loop checks it at safe points.  A KeyboardInterrupt
+  raised at an arbitrary instruction could land inside a lock another thread needs.
+
+Both only act in the main thread (elsewhere Python cannot install handlers)
+and put back the previous handlers when the block ends.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import signal
+import threading
+from collections.abc import Iterator
+
+STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)
+
+
+class Interrupted(KeyboardInterrupt):
+    """SIGTERM or SIGHUP, raised like Ctrl-C so every cleanup on the way out runs."""
+
+    def __init__(self, signum: int):
+        super().__init__(signal.Signals(signum).name)
+        self.signum = signum
+
+
+@contextlib.contextmanager
+def _handlers(handler) -> Iterator[None]:
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    previous = {signum: signal.signal(signum, handler) for signum in STOP_SIGNALS}
+    try:
+        yield
+    finally:
+        for signum, old in previous.items():
+            signal.signal(signum, old)
+
+
+@contextlib.contextmanager
+def interrupt_on_signals() -> Iterator[None]:
+    """While the block runs, SIGTERM and SIGHUP stop it as Ctrl-C does (raise :class:`Interrupted`)."""
+    stopping = False
+
+    def stop(signum, frame):
+        nonlocal stopping
+        if stopping:
+            return
+        stopping = True
+        if signum == signal.SIGINT:
+            raise KeyboardInterrupt
+        raise Interrupted(signum)
+
+    with _handlers(stop):
+        yield
+
+
+@contextlib.contextmanager
+def stop_event_on_signals() -> Iterator[threading.Event]:
+    """An event that SIGINT, SIGTERM and SIGHUP set while the block runs (SIGINT is handled even
+    if it was inherited as ignored)."""
+    stop = threading.Event()
+
+    def request_stop(signum, frame):
+        stop.set()
+
+    with _handlers(request_stop):
+        yield stop

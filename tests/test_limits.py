@@ -1,0 +1,127 @@
+"""Limits: --timeout covers the whole run, too little memory is out of memory, deep nesting and
+YAML alias bombs are refused at once, and absurd limit values are usage errors."""
+
+from __future__ import annotations
+
+import time
+
+import pytest
+from kitchen import coffee_problem, nested_goal
+from support import COFFEE_DOMAIN, alias_bomb, one_line_error, run
+
+from relevance_plan.exitcodes import ExitCode
+
+# --------------------------------------------------------------------------- time
+
+
+def test_timeout_covers_reading_and_scoring(tmp_path):
+    suite = tmp_path / "suite"
+    assert run("generate", "coffee", "--count", "1", "--distractors", "20000", "--out", suite)[0] == 0
+    started = time.monotonic()
+    code, _, stderr = run(
+        "plan",
+        suite / "domain.pddl",
+        suite / "coffee-simple-001.pddl",
+        "-q",
+        "--timeout",
+        "0.05",
+        "--plan-file",
+        tmp_path / "plan",
+    )
+    assert code == ExitCode.OUT_OF_TIME
+    line = one_line_error(stderr)
+    assert "out of time while" in line and "--timeout" in line
+    assert time.monotonic() - started < 20
+
+
+# --------------------------------------------------------------------------- memory
+
+
+@pytest.mark.planner
+def test_too_little_memory_for_the_planner_is_out_of_memory(copied_coffee_files, tmp_path):
+    domain, problem = copied_coffee_files
+    for limit in ("16", "20"):
+        code, _, stderr = run("plan", domain, problem, "-q", "--memory-limit", limit, "--plan-file", tmp_path / "p")
+        assert code == ExitCode.OUT_OF_MEMORY, stderr
+        one_line_error(stderr)
+
+
+def test_the_loaders_messages_are_out_of_memory():
+    from relevance_plan.planning.runner import PlannerStatus, _classify
+
+    log = "error while loading shared libraries: libc.so.6: failed to map segment from shared object"
+    assert _classify(127, False, False, log, 0.0, 10.0, memory_limited=True) is PlannerStatus.OUT_OF_MEMORY
+    assert _classify(120, False, False, "", 0.0, 10.0, memory_limited=True) is PlannerStatus.OUT_OF_MEMORY
+    assert _classify(120, False, False, "", 0.0, 10.0, memory_limited=False) is PlannerStatus.PLANNER_CRASH
+
+
+# --------------------------------------------------------------------------- deep nesting
+
+
+@pytest.mark.planner
+def test_deep_nesting_is_exit_32_naming_file_and_line(copied_coffee_files, tmp_path):
+    domain, _ = copied_coffee_files
+    deep = tmp_path / "deep.pddl"
+    deep.write_text(nested_goal(500))
+    for command in ("score", "plan"):
+        code, _, stderr = run(command, domain, deep, "-q" if command == "plan" else "--json")
+        assert code == ExitCode.PDDL_SYNTAX
+        assert f"{deep}:" in one_line_error(stderr) and "nested" in stderr
+    fine = tmp_path / "fine.pddl"
+    fine.write_text(nested_goal(100))
+    assert run("plan", domain, fine, "-q", "--plan-file", tmp_path / "plan")[0] == 0
+
+
+@pytest.mark.planner
+def test_compare_records_a_deep_problem_as_an_input_error_and_carries_on(tmp_path):
+    suite = tmp_path / "suite"
+    suite.mkdir()
+    (suite / "domain.pddl").write_bytes(COFFEE_DOMAIN.read_bytes())
+    (suite / "a.pddl").write_text(nested_goal(500))
+    (suite / "b.pddl").write_text(coffee_problem())
+    store = tmp_path / "results.sqlite"
+    code, stdout, _ = run("compare", suite, "--methods", "relevance", "--store", store, "-q")
+    assert code == 0 and "1 input-error" in stdout and "1 solved" in stdout
+
+
+# --------------------------------------------------------------------------- YAML alias bomb
+
+
+def test_yaml_alias_bomb_is_exit_35_at_once(copied_coffee_files, tmp_path):
+    domain, problem = copied_coffee_files
+    bomb = tmp_path / "bomb.yaml"
+    bomb.write_bytes(alias_bomb())
+    started = time.monotonic()
+    code, _, stderr = run("score", domain, problem, "--model", bomb)
+    assert code == ExitCode.MODEL and "aliases" in one_line_error(stderr)
+    assert time.monotonic() - started < 1.0
+
+
+# --------------------------------------------------------------------------- absurd limits
+
+
+@pytest.mark.parametrize(
+    "option, value",
+    [
+        ("--timeout", "inf"),
+        ("--timeout", "nan"),
+        ("--timeout", "1e12"),
+        ("--timeout", "-1"),
+        ("--memory-limit", "10000000000000"),
+        ("--memory-limit", "-5"),
+    ],
+)
+def test_absurd_limits_are_exit_30(copied_coffee_files, tmp_path, option, value):
+    domain, problem = copied_coffee_files
+    code, _, stderr = run("plan", domain, problem, "-q", option, value, "--plan-file", tmp_path / "plan")
+    assert code == ExitCode.USAGE
+    one_line_error(stderr)
+    store = tmp_path / "results.sqlite"
+    suite = tmp_path / "suite"
+    suite.mkdir()
+    (suite / "domain.pddl").write_bytes(domain.read_bytes())
+    (suite / "p.pddl").write_bytes(problem.read_bytes())
+    code, _, stderr = run("compare", suite, "--store", store, option, value, "-q")
+    assert code == ExitCode.USAGE
+    one_line_error(stderr)
+    assert not store.exists()
