@@ -57,7 +57,7 @@ def sweep_suite(suite_dir: Path, taus: Sequence[float], options: ScoringOptions 
     """
     domain_path, problem_paths = find_suite_problems(suite_dir)
     domain = load_domain(domain_path)
-    model = resolve_model(domain.name, str(domain_path), options.model_path)
+    model = resolve_model(domain, str(domain_path), options.model_path)
     relevant_cells: dict = {(c, e): [] for c in taus for e in taus}
     necessary_cells: dict = {(c, e): [] for c in taus for e in taus}
     insufficient = 0

@@ -60,6 +60,7 @@ from unified_planning.model.problem_kind_versioning import LATEST_PROBLEM_KIND_V
 from unified_planning.plans import ActionInstance, SequentialPlan
 
 from relevance_plan.errors import RelevancePlanError, UsageError
+from relevance_plan.pddl.model import Domain
 from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.pddl.plans import Plan, PlanStep
 from relevance_plan.planning.loop import Attempt, PlanOptions, PlanStatus, first_selection, run_attempts, summarise
@@ -268,20 +269,13 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin):
             status, found if status in POSITIVE_OUTCOMES else None, self.name, metrics=metrics, log_messages=logs
         )
 
-    def _choose_model(self, domain_name: str) -> KnowledgeModel | None:
+    def _choose_model(self, domain: Domain) -> KnowledgeModel | None:
         """The ``model`` param, else a shipped model for the ``domain`` param or the exported name."""
         if self._model is not None:
             return self._model
-        if self._domain is not None:
-            candidates = [self._domain]
-        else:
-            # The writer names the domain '<problem name>-domain'.
-            candidates = [domain_name, domain_name.removesuffix("-domain")]
-        for candidate in candidates:
-            model = resolve_model(candidate, None, None)
-            if model is not None:
-                return model
-        return None
+        # The writer names the domain '<problem name>-domain'.
+        names = [self._domain] if self._domain is not None else [domain.name.removesuffix("-domain")]
+        return resolve_model(domain, None, None, names)
 
 
 # --------------------------------------------------------------------------- the relevance stage
@@ -306,7 +300,7 @@ class _RelevanceStage:
         task = PlanningTask(domain, read_problem(problem_text, domain, "<unified-planning problem>"))
         up_names = {name: writer.get_item_named(name).name for name in task.problem.objects}
         action_names = {action.name: writer.get_item_named(action.name).name for action in domain.actions}
-        model = choose_model(domain.name)
+        model = choose_model(domain)
         scoring_options = options.scoring
         if scoring_options.scorer == "model" and model is None:
             warnings.append("no knowledge model applies to this problem: using the goal scorer")

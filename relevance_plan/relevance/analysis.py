@@ -5,7 +5,7 @@ Nothing here grounds an action.  Two results feed the rest of the pipeline:
 * ``infer_constraint_rules``: which initial facts tie one object to another
   so tightly that keeping one requires keeping the other (what it stands on,
   what holds it, what sits on top of it, the robot's only position);
-* ``goal_roles``: which types of objects can play a part in reaching the goal,
+* ``analyse_goal``: which types of objects can play a part in reaching the goal,
   found by regressing the goal through the action schemas (the backward
   fixpoint of pyperplan's relevance analysis, done on typed patterns instead
   of ground atoms).
@@ -197,87 +197,106 @@ def analyse_goal(domain: Domain, problem: Problem, index: InitIndex | None = Non
     further (a clear cup, a free gripper): the objects in the way of a
     particular one are closure's business, not the goal's.
     """
-    index = index or index_init(problem)
-    objects = dict(domain.constants)
-    objects.update(problem.objects)
-    goal_types = set()
-    start: list[tuple[tuple, int]] = []
-    for atom, _, scope in scoped_literals(problem.goal):
-        variables = dict(scope)
-        goal_types.update(variables.values())
-        args = tuple(("type", variables[a]) if a in variables else ("obj", a) for a in atom.args)
-        start.append(((atom.predicate, args), 0))
+    return _Regression(domain, problem, index or index_init(problem)).run()
 
-    def initially_satisfiable(pattern) -> bool:
+
+_FAR = 1 << 30
+
+
+class _Regression:
+    """The backward fixpoint of :func:`analyse_goal`: patterns with the fewest role steps from the goal."""
+
+    def __init__(self, domain: Domain, problem: Problem, index: InitIndex):
+        self.domain = domain
+        self.index = index
+        self.objects = dict(domain.constants)
+        self.objects.update(problem.objects)
+        self.problem = problem
+        self.achievers: dict[str, list] = defaultdict(list)
+        for action in domain.relaxed_actions:
+            for item in effect_literals(action.effect):
+                if item.is_add:
+                    self.achievers[item.atom.predicate].append((action, item.atom, item.condition))
+        self.best: dict[tuple, int] = {}
+        self.role_depth: dict[str, int] = {}
+
+    def run(self) -> GoalAnalysis:
+        goal_types = set()
+        frontier: list[tuple[tuple, int]] = []
+        for atom, _, scope in scoped_literals(self.problem.goal):
+            variables = dict(scope)
+            goal_types.update(variables.values())
+            args = tuple(("type", variables[a]) if a in variables else ("obj", a) for a in atom.args)
+            frontier.append(((atom.predicate, args), 0))
+        self.role_depth = {t: 0 for t in goal_types}
+        while frontier:
+            pattern, depth = frontier.pop()
+            if self.best.get(pattern, _FAR) <= depth:
+                continue
+            self.best[pattern] = depth
+            if not self.initially_satisfiable(pattern):
+                frontier.extend(self.regress(pattern, depth))
+        return GoalAnalysis(
+            relevant_predicates=frozenset(p for p, _ in self.best),
+            role_depth=self.role_depth,
+            goal_variable_types=frozenset(goal_types),
+        )
+
+    def initially_satisfiable(self, pattern) -> bool:
         # Some initial fact matches: some object of the right type already has
         # the property (a cup that is clear, a free gripper), so the pattern
         # need not be regressed; closure handles the objects in the way.
         predicate, args = pattern
-        for atom in index.by_predicate.get(predicate, ()):
+        for atom in self.index.by_predicate.get(predicate, ()):
             if all(
-                atom[1 + i] == a[1] if a[0] == "obj" else domain.is_subtype(objects.get(atom[1 + i], "object"), a[1])
+                atom[1 + i] == a[1]
+                if a[0] == "obj"
+                else self.domain.is_subtype(self.objects.get(atom[1 + i], "object"), a[1])
                 for i, a in enumerate(args)
             ):
                 return True
         return False
 
-    best: dict[tuple, int] = {}
-    role_depth: dict[str, int] = {t: 0 for t in goal_types}
-    frontier = list(start)
-    achievers = defaultdict(list)
-    for action in domain.relaxed_actions:
-        for item in effect_literals(action.effect):
-            if item.is_add:
-                achievers[item.atom.predicate].append((action, item.atom, item.condition))
-    while frontier:
-        pattern, depth = frontier.pop()
-        if best.get(pattern, 1 << 30) <= depth:
-            continue
-        best[pattern] = depth
-        if initially_satisfiable(pattern):
-            continue
+    def regress(self, pattern, depth: int) -> list[tuple[tuple, int]]:
+        """The patterns the achievers of ``pattern`` need, with their depths; records new roles."""
         options = []
-        for action, added, condition in achievers.get(pattern[0], ()):
-            bound = _unify(domain, objects, action, added, pattern[1])
+        for action, added, condition in self.achievers.get(pattern[0], ()):
+            bound = _unify(self.domain, self.objects, action, added, pattern[1])
             if bound is not None:
                 pre_atoms = [
-                    (atom.predicate, atom.args, True)
+                    (atom.predicate, atom.args)
                     for part in (action.precondition, condition)
                     for atom, positive in literals(part)
                     if positive
                 ]
-                options.append((action, bound, pre_atoms, _roles(action, bound, pre_atoms, index)))
+                options.append((action, bound, pre_atoms, _roles(action, bound, pre_atoms, self.index)))
         if not options:
-            continue
+            return []
         # Only the achievers that need the fewest new roles count: picking up a
         # cup needs nothing new, unstacking it from "some item" would make every
         # item look useful.
         fewest = min(len(option[3]) for option in options)
+        found = []
         for action, bound, pre_atoms, roles_here in options:
             if len(roles_here) != fewest:
                 continue
             params = dict(action.parameters)
             for var in roles_here:
-                type_name = params[var]
-                if role_depth.get(type_name, 1 << 30) > depth + 1:
-                    role_depth[type_name] = depth + 1
-            for predicate_name, args, _ in pre_atoms:
+                if self.role_depth.get(params[var], _FAR) > depth + 1:
+                    self.role_depth[params[var]] = depth + 1
+            for predicate_name, args in pre_atoms:
                 # A condition on a newly introduced role is one step further away.
                 next_depth = depth + (1 if roles_here.intersection(args) else 0)
-                new_args = []
-                for arg in args:
-                    if arg in bound:
-                        new_args.append(bound[arg])
-                    elif arg.startswith("?"):
-                        new_args.append(("type", params.get(arg, "object")))
-                    else:
-                        new_args.append(("obj", arg))
-                frontier.append(((predicate_name, tuple(new_args)), next_depth))
-    return GoalAnalysis(
-        relevant_predicates=frozenset(p for p, _ in best),
-        role_depth=role_depth,
-        goal_variable_types=frozenset(goal_types),
-    )
+                new_args = tuple(
+                    bound[arg]
+                    if arg in bound
+                    else ("type", params.get(arg, "object"))
+                    if arg.startswith("?")
+                    else ("obj", arg)
+                    for arg in args
+                )
+                found.append(((predicate_name, new_args), next_depth))
+        return found
 
 
 def single_valued_predicates(domain: Domain, index: InitIndex) -> frozenset:
@@ -337,7 +356,7 @@ def _roles(action, bound: Mapping[str, tuple], pre_atoms, index: InitIndex) -> s
         for var in new_vars:
             if var in anchored:
                 continue
-            for predicate_name, args, _ in pre_atoms:
+            for predicate_name, args in pre_atoms:
                 if var not in args:
                     continue
                 position = args.index(var)

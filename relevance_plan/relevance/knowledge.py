@@ -18,7 +18,8 @@ from typing import Any
 import yaml
 
 from relevance_plan.data import DOMAINS_DIR as REPOSITORY_DOMAINS
-from relevance_plan.errors import ModelError, UsageError
+from relevance_plan.errors import ModelError, UsageError, printable
+from relevance_plan.pddl.model import Domain
 from relevance_plan.relevance.scene import PLACEMENT_CONDITIONS, ScenePredicates
 
 SCHEMA_VERSION = 1
@@ -110,11 +111,14 @@ class Human:
 
 
 @dataclass(frozen=True)
-class Dependency:
+class ModelDependency:
+    """Keeping the object at ``when_kept`` of a ``predicate`` fact keeps the one at ``restore`` (0-based)."""
+
     predicate: str
-    when_kept: int  # 0-based
+    when_kept: int
     restore: int
     reason: str
+    line: int | None = None  # where the model declares it, for errors found against a domain
 
 
 @dataclass(frozen=True)
@@ -169,8 +173,8 @@ class _Checker:
 
     def probability(self, parent: _LineDict, key: str, what: str) -> float:
         value = parent[key]
-        if isinstance(value, bool) or not isinstance(value, (int, float)) or math.isnan(value):
-            self.fail(f"{what} must be a number in [0, 1], got {value!r}", parent, key)
+        if not _finite_number(value):
+            self.fail(f"{what} must be a number in [0, 1], got {printable(repr(value), 60)}", parent, key)
         if not 0.0 <= float(value) <= 1.0:
             self.fail(f"{what} = {value} is outside [0, 1]", parent, key)
         return float(value)
@@ -198,66 +202,100 @@ class _Checker:
 
 def parse_model(text: str, path: str = "<model>") -> KnowledgeModel:
     """Validate and build a knowledge model from YAML text."""
-    try:
-        data = yaml.load(text, Loader=_Loader)  # noqa: S506 - a SafeLoader subclass
-    except ModelError as error:
-        raise ModelError(error.message, path=path, line=error.line) from None
-    except yaml.YAMLError as error:
-        mark = getattr(error, "problem_mark", None)
-        problem = getattr(error, "problem", None) or str(error).splitlines()[0]
-        raise ModelError(f"invalid YAML: {problem}", path=path, line=mark.line + 1 if mark else None) from None
+    data = _load_yaml(text, path)
     check = _Checker(path)
     if not isinstance(data, _LineDict):
         check.fail("the model must be a YAML mapping")
-    check.known_keys(
-        data,
-        {
-            "version",
-            "domain",
-            "description",
-            "entropy_bound",
-            "defaults",
-            "scene",
-            "objectives",
-            "tasks",
-            "classes",
-            "placement",
-            "humans",
-            "dependencies",
-        },
-        "the model",
-    )
+    check.known_keys(data, _TOP_LEVEL_KEYS, "the model")
     if data.get("version") != SCHEMA_VERSION:
         check.fail(f"'version' must be {SCHEMA_VERSION}", data, "version")
     domain = data.get("domain")
     if not isinstance(domain, str):
         check.fail("'domain' must name the PDDL domain the model is for", data, "domain")
     entropy_bound = data.get("entropy_bound", 1.0)
-    if isinstance(entropy_bound, bool) or not isinstance(entropy_bound, (int, float)) or entropy_bound < 0:
-        check.fail("'entropy_bound' must be a non-negative number (nats)", data, "entropy_bound")
-
+    if not _finite_number(entropy_bound) or entropy_bound < 0:
+        check.fail("'entropy_bound' must be a finite non-negative number (nats)", data, "entropy_bound")
     defaults = check.mapping(data, "defaults", required=False)
     check.known_keys(defaults, {"unknown_class_relevance", "kind_relevance"}, "'defaults'")
-    unknown_relevance = (
-        check.probability(defaults, "unknown_class_relevance", "defaults.unknown_class_relevance")
-        if "unknown_class_relevance" in defaults
-        else 0.05
-    )
-    default_kind = (
-        check.probability(defaults, "kind_relevance", "defaults.kind_relevance")
-        if "kind_relevance" in defaults
-        else 0.5
+    unknown_relevance = _optional_probability(check, defaults, "unknown_class_relevance", 0.05)
+    default_kind = _optional_probability(check, defaults, "kind_relevance", 0.5)
+    classes = _read_classes(check, check.mapping(data, "classes"), default_kind)
+    task_classes = _read_tasks(check, check.mapping(data, "tasks"), classes)
+    objectives = _read_objectives(check, check.mapping(data, "objectives"), task_classes)
+    return KnowledgeModel(
+        path=path,
+        domain=domain.lower(),
+        description=str(data.get("description", "")),
+        entropy_bound=float(entropy_bound),
+        unknown_class_relevance=unknown_relevance,
+        scene=_read_scene(check, check.mapping(data, "scene", required=False)),
+        objectives=MappingProxyType(objectives),
+        task_classes=MappingProxyType(task_classes),
+        classes=MappingProxyType(classes),
+        placement=_read_placement(check, check.mapping(data, "placement", required=False)),
+        humans=MappingProxyType(
+            _read_humans(check, check.mapping(data, "humans", required=False), classes, task_classes, objectives)
+        ),
+        dependencies=_read_dependencies(check, data),
     )
 
-    scene_section = check.mapping(data, "scene", required=False)
-    check.known_keys(scene_section, {"location", "support", "access", "human_location"}, "'scene'")
-    scene = ScenePredicates(**{key: str(value).lower() for key, value in scene_section.items()})
 
+_TOP_LEVEL_KEYS = {
+    "version",
+    "domain",
+    "description",
+    "entropy_bound",
+    "defaults",
+    "scene",
+    "objectives",
+    "tasks",
+    "classes",
+    "placement",
+    "humans",
+    "dependencies",
+}
+
+
+def _finite_number(value: Any) -> bool:
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        return False
+    try:
+        return math.isfinite(value)
+    except OverflowError:  # an integer too large for a float
+        return False
+
+
+def _load_yaml(text: str, path: str) -> Any:
+    try:
+        return yaml.load(text, Loader=_Loader)  # noqa: S506 - a SafeLoader subclass
+    except ModelError as error:
+        raise ModelError(error.message, path=path, line=error.line) from None
+    except yaml.YAMLError as error:
+        mark = getattr(error, "problem_mark", None)
+        problem = getattr(error, "problem", None) or str(error).splitlines()[0]
+        raise ModelError(f"invalid YAML: {problem}", path=path, line=mark.line + 1 if mark else None) from None
+    except (ValueError, OverflowError) as error:
+        # e.g. an integer of thousands of digits: Python refuses to convert it
+        raise ModelError(f"invalid YAML value: {str(error).splitlines()[0]}", path=path) from None
+
+
+def _optional_probability(check: _Checker, section: _LineDict, key: str, default: float) -> float:
+    return check.probability(section, key, f"defaults.{key}") if key in section else default
+
+
+def _read_scene(check: _Checker, section: _LineDict) -> ScenePredicates:
+    check.known_keys(section, {"location", "support", "access", "human_location"}, "'scene'")
+    for key, value in section.items():
+        if not isinstance(value, str) or not value.strip() or any(c.isspace() or c in "()" for c in value):
+            check.fail(f"scene.{key} must be one predicate name, got {value!r}", section, key)
+    return ScenePredicates(**{key: value.lower() for key, value in section.items()})
+
+
+def _read_classes(check: _Checker, section: _LineDict, default_kind: float) -> dict[str, ModelClass]:
     classes: dict[str, ModelClass] = {}
-    class_section = check.mapping(data, "classes")
-    for name, entry in class_section.items():
+    for name, entry in section.items():
         if not isinstance(entry, _LineDict):
-            check.fail(f"class '{name}' must be a mapping", class_section, name)
+            check.fail(f"class '{name}' must be a mapping", section, name)
         check.known_keys(
             entry, {"description", "types", "kinds", "kind_relevance", "relevance", "relevance_from"}, f"class '{name}'"
         )
@@ -268,12 +306,11 @@ def parse_model(text: str, path: str = "<model>") -> KnowledgeModel:
         relevance_from = entry.get("relevance_from")
         if relevance_from not in (None, "contents"):
             check.fail("'relevance_from' must be 'contents'", entry, "relevance_from")
-        kinds = check.names(entry, "kinds") + tuple(k for k in kind_probs if k not in check.names(entry, "kinds"))
+        listed = check.names(entry, "kinds")
+        kinds = listed + tuple(k for k in kind_probs if k not in listed)
         types = check.names(entry, "types")
         if not kinds and not types:
-            check.fail(
-                f"class '{name}' needs 'types' or 'kinds' to say which objects belong to it", class_section, name
-            )
+            check.fail(f"class '{name}' needs 'types' or 'kinds' to say which objects belong to it", section, name)
         classes[name] = ModelClass(
             name=name,
             types=types,
@@ -284,22 +321,26 @@ def parse_model(text: str, path: str = "<model>") -> KnowledgeModel:
             from_contents=relevance_from == "contents",
             description=str(entry.get("description", "")),
         )
+    return classes
 
-    task_section = check.mapping(data, "tasks")
+
+def _read_tasks(check: _Checker, section: _LineDict, classes: Mapping[str, ModelClass]) -> dict:
     task_classes: dict[str, Mapping[str, float]] = {}
-    for task, entry in task_section.items():
+    for task, entry in section.items():
         if not isinstance(entry, _LineDict):
-            check.fail(f"task '{task}' must map classes to P(class | task, objective)", task_section, task)
+            check.fail(f"task '{task}' must map classes to P(class | task, objective)", section, task)
         for class_name in entry:
             if class_name not in classes:
                 check.fail(f"task '{task}' names unknown class '{class_name}'", entry, class_name)
         task_classes[task] = check.probabilities(entry, lambda class_name, task=task: f"P({class_name} | {task})")
+    return task_classes
 
+
+def _read_objectives(check: _Checker, section: _LineDict, task_classes: Mapping) -> dict[str, Objective]:
     objectives: dict[str, Objective] = {}
-    objective_section = check.mapping(data, "objectives")
-    for name, entry in objective_section.items():
+    for name, entry in section.items():
         if not isinstance(entry, _LineDict):
-            check.fail(f"objective '{name}' must be a mapping", objective_section, name)
+            check.fail(f"objective '{name}' must be a mapping", section, name)
         check.known_keys(entry, {"description", "goal_predicates", "tasks"}, f"objective '{name}'")
         tasks = check.mapping(entry, "tasks")
         probabilities = check.probabilities(tasks, f"P(task | {name})")
@@ -313,62 +354,82 @@ def parse_model(text: str, path: str = "<model>") -> KnowledgeModel:
             goal_predicates=check.names(entry, "goal_predicates"),
             tasks=probabilities,
         )
+    return objectives
 
-    placement_section = check.mapping(data, "placement", required=False)
-    for condition in placement_section:
+
+def _read_placement(check: _Checker, section: _LineDict) -> Mapping[str, float]:
+    for condition in section:
         if condition not in PLACEMENT_CONDITIONS:
             check.fail(
                 f"unknown placement condition '{condition}' (expected one of: {', '.join(PLACEMENT_CONDITIONS)})",
-                placement_section,
+                section,
                 condition,
             )
-    placement = check.probabilities(placement_section, "placement factor")
+    return check.probabilities(section, "placement factor")
 
+
+def _read_humans(
+    check: _Checker, section: _LineDict, classes: Mapping, task_classes: Mapping, objectives: Mapping
+) -> dict[str, Human]:
     humans: dict[str, Human] = {}
-    human_section = check.mapping(data, "humans", required=False)
-    for name, entry in human_section.items():
+    for name, entry in section.items():
         if not isinstance(entry, _LineDict):
-            check.fail(f"human '{name}' must be a mapping", human_section, name)
+            check.fail(f"human '{name}' must be a mapping", section, name)
         check.known_keys(entry, {"description", "objectives", "tasks", "kind_relevance"}, f"human '{name}'")
-        objective_tasks = {}
-        for objective, tasks in check.mapping(entry, "objectives", required=False).items():
-            if objective not in objectives:
-                check.fail(f"human '{name}' names unknown objective '{objective}'", entry, "objectives")
-            if not isinstance(tasks, _LineDict):
-                check.fail(
-                    f"human '{name}': objective '{objective}' must map tasks to probabilities", entry, "objectives"
-                )
-            probabilities = check.probabilities(tasks, f"{name}: P(task | {objective})")
-            _check_distribution(check, tasks, probabilities, f"{name}: P(task | {objective})")
-            for task in probabilities:
-                if task not in task_classes:
-                    check.fail(f"human '{name}' names task '{task}' that has no entry under 'tasks'", tasks, task)
-            objective_tasks[objective] = probabilities
-        preferences = {}
-        for task, entry_classes in check.mapping(entry, "tasks", required=False).items():
-            if not isinstance(entry_classes, _LineDict):
-                check.fail(f"human '{name}': task '{task}' must map classes to probabilities", entry, "tasks")
-            for class_name in entry_classes:
-                if class_name not in classes:
-                    check.fail(f"human '{name}' names unknown class '{class_name}'", entry_classes, class_name)
-            preferences[task] = check.probabilities(entry_classes, f"{name}: P(class | {task})")
-        kinds = {}
-        for class_name, entry_kinds in check.mapping(entry, "kind_relevance", required=False).items():
-            if class_name not in classes:
-                check.fail(f"human '{name}' names unknown class '{class_name}'", entry, "kind_relevance")
-            if not isinstance(entry_kinds, _LineDict):
-                check.fail(
-                    f"human '{name}': kind relevance of '{class_name}' must be a mapping", entry, "kind_relevance"
-                )
-            kinds[class_name] = check.probabilities(entry_kinds, f"{name}: P(kind | {class_name})")
         humans[name] = Human(
             name=name,
             description=str(entry.get("description", "")),
-            objective_tasks=MappingProxyType(objective_tasks),
-            task_classes=MappingProxyType(preferences),
-            kind_relevance=MappingProxyType(kinds),
+            objective_tasks=MappingProxyType(_human_objectives(check, name, entry, task_classes, objectives)),
+            task_classes=MappingProxyType(_human_tasks(check, name, entry, classes)),
+            kind_relevance=MappingProxyType(_human_kinds(check, name, entry, classes)),
         )
+    return humans
 
+
+def _human_objectives(check: _Checker, name: str, entry: _LineDict, task_classes: Mapping, objectives: Mapping) -> dict:
+    found = {}
+    for objective, tasks in check.mapping(entry, "objectives", required=False).items():
+        if objective not in objectives:
+            check.fail(f"human '{name}' names unknown objective '{objective}'", entry, "objectives")
+        if not isinstance(tasks, _LineDict):
+            check.fail(f"human '{name}': objective '{objective}' must map tasks to probabilities", entry, "objectives")
+        probabilities = check.probabilities(tasks, f"{name}: P(task | {objective})")
+        _check_distribution(check, tasks, probabilities, f"{name}: P(task | {objective})")
+        for task in probabilities:
+            if task not in task_classes:
+                check.fail(f"human '{name}' names task '{task}' that has no entry under 'tasks'", tasks, task)
+        found[objective] = probabilities
+    return found
+
+
+def _human_tasks(check: _Checker, name: str, entry: _LineDict, classes: Mapping) -> dict:
+    found = {}
+    for task, entry_classes in check.mapping(entry, "tasks", required=False).items():
+        if not isinstance(entry_classes, _LineDict):
+            check.fail(f"human '{name}': task '{task}' must map classes to probabilities", entry, "tasks")
+        for class_name in entry_classes:
+            if class_name not in classes:
+                check.fail(f"human '{name}' names unknown class '{class_name}'", entry_classes, class_name)
+        found[task] = check.probabilities(entry_classes, f"{name}: P(class | {task})")
+    return found
+
+
+def _human_kinds(check: _Checker, name: str, entry: _LineDict, classes: Mapping) -> dict:
+    found = {}
+    for class_name, entry_kinds in check.mapping(entry, "kind_relevance", required=False).items():
+        if class_name not in classes:
+            check.fail(f"human '{name}' names unknown class '{class_name}'", entry, "kind_relevance")
+        if not isinstance(entry_kinds, _LineDict):
+            check.fail(f"human '{name}': kind relevance of '{class_name}' must be a mapping", entry, "kind_relevance")
+        found[class_name] = check.probabilities(entry_kinds, f"{name}: P(kind | {class_name})")
+    return found
+
+
+# A dependency's argument position: PDDL predicates with more arguments than this do not exist.
+MAX_POSITION = 64
+
+
+def _read_dependencies(check: _Checker, data: _LineDict) -> tuple[ModelDependency, ...]:
     dependencies = []
     dependency_list = data.get("dependencies", [])
     if not isinstance(dependency_list, list):
@@ -380,32 +441,23 @@ def parse_model(text: str, path: str = "<model>") -> KnowledgeModel:
         for key in ("predicate", "when_kept", "restore"):
             if key not in entry:
                 check.fail(f"dependency needs '{key}'", entry)
+        predicate = entry["predicate"]
+        if not isinstance(predicate, str) or not predicate.strip() or any(c.isspace() for c in predicate):
+            check.fail(f"a dependency's 'predicate' must be one predicate name, got {predicate!r}", entry, "predicate")
         for key in ("when_kept", "restore"):
-            if isinstance(entry[key], bool) or not isinstance(entry[key], int) or entry[key] < 1:
-                check.fail(f"'{key}' is a 1-based argument position", entry, key)
+            value = entry[key]
+            if isinstance(value, bool) or not isinstance(value, int) or not 1 <= value <= MAX_POSITION:
+                check.fail(f"'{key}' is a 1-based argument position (1 to {MAX_POSITION})", entry, key)
         dependencies.append(
-            Dependency(
-                str(entry["predicate"]).lower(),
+            ModelDependency(
+                predicate.lower(),
                 entry["when_kept"] - 1,
                 entry["restore"] - 1,
                 str(entry.get("reason", "")),
+                line=entry.line,
             )
         )
-
-    return KnowledgeModel(
-        path=path,
-        domain=domain.lower(),
-        description=str(data.get("description", "")),
-        entropy_bound=float(entropy_bound),
-        unknown_class_relevance=unknown_relevance,
-        scene=scene,
-        objectives=MappingProxyType(objectives),
-        task_classes=MappingProxyType(task_classes),
-        classes=MappingProxyType(classes),
-        placement=placement,
-        humans=MappingProxyType(humans),
-        dependencies=tuple(dependencies),
-    )
+    return tuple(dependencies)
 
 
 def _check_distribution(check: _Checker, section: _LineDict, probabilities: Mapping[str, float], what: str) -> None:
@@ -422,21 +474,53 @@ def load_model(path: str | os.PathLike) -> KnowledgeModel:
     return parse_model(read_text(path, "knowledge model"), str(path))
 
 
+def shipped_models() -> dict[str, Path]:
+    """Domain name -> the knowledge model shipped for it (``data/domains/<world>/relevance.yaml``)."""
+    return {
+        folder.name: folder / "relevance.yaml"
+        for folder in sorted(REPOSITORY_DOMAINS.iterdir())
+        if (folder / "relevance.yaml").is_file()
+    }
+
+
 def find_model(domain_name: str, domain_path: str | None) -> Path | None:
-    """The model next to the domain file, else ``domains/<domain name>/relevance.yaml``."""
-    candidates = []
+    """The model next to the domain file, else the one shipped for a domain of that name.
+
+    The name is only ever a key of :func:`shipped_models`, never part of a path:
+    a domain called ``../..`` finds nothing.
+    """
     if domain_path:
-        candidates.append(Path(domain_path).resolve().parent / "relevance.yaml")
-    candidates.append(REPOSITORY_DOMAINS / domain_name / "relevance.yaml")
-    for candidate in candidates:
-        if candidate.is_file():
-            return candidate
-    return None
+        beside = Path(domain_path).resolve().parent / "relevance.yaml"
+        if beside.is_file():
+            return beside
+    return shipped_models().get(domain_name)
 
 
-def check_model_applies(model: KnowledgeModel, domain_name: str) -> None:
-    if model.domain != domain_name:
-        raise ModelError(f"model is for domain '{model.domain}', not '{domain_name}'", path=model.path)
+def check_model_applies(model: KnowledgeModel, domain: Domain) -> None:
+    """Refuse a model for another domain, or one whose scene predicates or dependencies the domain lacks."""
+    if model.domain != domain.name:
+        raise ModelError(f"model is for domain '{model.domain}', not '{domain.name}'", path=model.path)
+    for role, predicate in vars(model.scene).items():
+        if predicate not in domain.predicates and role != "human_location":
+            raise ModelError(
+                f"scene.{role} '{predicate}' is not a predicate of domain '{domain.name}'", path=model.path
+            )
+    for dependency in model.dependencies:
+        params = domain.predicates.get(dependency.predicate)
+        if params is None:
+            raise ModelError(
+                f"dependency on '{dependency.predicate}', which is not a predicate of domain '{domain.name}'",
+                path=model.path,
+                line=dependency.line,
+            )
+        for position in (dependency.when_kept, dependency.restore):
+            if position >= len(params):
+                raise ModelError(
+                    f"dependency on '{dependency.predicate}': position {position + 1} is beyond its"
+                    f" {len(params)} argument(s)",
+                    path=model.path,
+                    line=dependency.line,
+                )
 
 
 def check_threshold(value: float, name: str) -> float:

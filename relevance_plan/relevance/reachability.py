@@ -88,109 +88,126 @@ def relaxed_reachability(task, kept: Set[str], budget: int = DEFAULT_BUDGET) -> 
     Fast Downward's translator).
     """
     typing = typing_of(task)
-    domain, problem = typing.domain, typing.problem
-    allowed = set(kept) | set(domain.constants)
-    types_of = dict(domain.constants)
-    types_of.update(problem.objects)
-    goal = [(p, *args) for p, args in _required_atoms(problem.goal) if not any(a.startswith("?") for a in args)]
-    facts: dict[tuple, tuple | None] = {}  # fact -> (step, schema, binding) that first reached it; None: initial
-    queue: deque = deque()
-    # sorted: the same objects give the same relaxed plan whatever order the set was built in
-    # timed initial literals that make a fact true count as reached: a plan may wait for them
-    timed = {literal.atom for literal in problem.timed_literals if literal.atom is not None and not literal.negated}
-    for atom in sorted(atom for atom in problem.init | timed if all(arg in allowed for arg in atom[1:])):
-        facts[atom] = None
-        queue.append(atom)
-    of_type: dict[str, list] = {}
-    fits: dict[str, frozenset] = {}
+    exploration = _Exploration(typing.domain, typing.problem, kept, budget)
+    try:
+        exploration.run()
+    except _OutOfBudget:
+        return Reachability(False, False)
+    goal, facts = exploration.goal, exploration.facts
+    unreached = tuple(atom for atom in goal if atom not in facts)
+    if unreached:
+        return Reachability(False, True, unreached)
+    plan, objects = _relaxed_plan(facts, goal)
+    return Reachability(True, True, (), tuple(plan), frozenset(objects) - set(typing.domain.constants))
 
-    def objects_of(type_name: str) -> list:
-        if type_name not in of_type:
-            of_type[type_name] = sorted(o for o in allowed if domain.is_subtype(types_of.get(o, "object"), type_name))
-            fits[type_name] = frozenset(of_type[type_name])
-        return of_type[type_name]
 
-    schemas = _schemas(domain)
-    triggers: dict[str, list] = defaultdict(list)
-    for schema in schemas:
-        for i, (predicate, _) in enumerate(schema.pre):
-            triggers[predicate].append((schema, i))
-    processed: dict[tuple, list] = defaultdict(list)  # (predicate, position, value) -> facts; (predicate,) -> facts
-    work = [0]
-    missing = set(goal) - set(facts)
+class _Exploration:
+    """The delete-relaxed exploration of :func:`relaxed_reachability` on one object set."""
 
-    def apply(schema: _Schema, binding: dict) -> None:
+    def __init__(self, domain, problem, kept: Set[str], budget: int):
+        self.domain = domain
+        self.budget = budget
+        self.work = [0]
+        self.allowed = set(kept) | set(domain.constants)
+        self.types_of = dict(domain.constants)
+        self.types_of.update(problem.objects)
+        self.goal = [(p, *args) for p, args in _required_atoms(problem.goal) if not any(a[0] == "?" for a in args)]
+        self.facts: dict[tuple, tuple | None] = {}  # fact -> (step, schema, binding) that first reached it
+        self.queue: deque = deque()
+        # sorted: the same objects give the same relaxed plan whatever order the set was built in;
+        # timed initial literals that make a fact true count as reached: a plan may wait for them
+        timed = {literal.atom for literal in problem.timed_literals if literal.atom is not None and not literal.negated}
+        for atom in sorted(atom for atom in problem.init | timed if all(arg in self.allowed for arg in atom[1:])):
+            self.facts[atom] = None
+            self.queue.append(atom)
+        self.of_type: dict[str, list] = {}
+        self.fits: dict[str, frozenset] = {}
+        self.schemas = _schemas(domain)
+        self.triggers: dict[str, list] = defaultdict(list)
+        for schema in self.schemas:
+            for i, (predicate, _) in enumerate(schema.pre):
+                self.triggers[predicate].append((schema, i))
+        # (predicate, position, value) -> facts; (predicate,) -> facts
+        self.processed: dict[tuple, list] = defaultdict(list)
+        self.missing = set(self.goal) - set(self.facts)
+
+    def objects_of(self, type_name: str) -> list:
+        if type_name not in self.of_type:
+            self.of_type[type_name] = sorted(
+                o for o in self.allowed if self.domain.is_subtype(self.types_of.get(o, "object"), type_name)
+            )
+            self.fits[type_name] = frozenset(self.of_type[type_name])
+        return self.of_type[type_name]
+
+    def run(self) -> None:
+        for schema in self.schemas:
+            if not schema.pre:
+                self.apply(schema, {})
+        while self.queue and self.missing:
+            fact = self.queue.popleft()
+            self.processed[(fact[0],)].append(fact)
+            for position, value in enumerate(fact[1:]):
+                self.processed[(fact[0], position, value)].append(fact)
+            for schema, i in self.triggers.get(fact[0], ()):
+                binding = _match(schema.pre[i][1], fact, {})
+                if binding is None:
+                    continue
+                for found in list(self.join(list(schema.pre[:i] + schema.pre[i + 1 :]), binding)):
+                    self.apply(schema, found)
+
+    def apply(self, schema: _Schema, binding: dict) -> None:
         for variable, type_name in zip(schema.parameters, schema.types):
             if type_name == "object":
                 continue
-            if type_name not in fits:
-                objects_of(type_name)
-            if variable in binding and binding[variable] not in fits[type_name]:
+            if type_name not in self.fits:
+                self.objects_of(type_name)
+            if variable in binding and binding[variable] not in self.fits[type_name]:
                 return
         free = [(v, t) for v, t in zip(schema.parameters, schema.types) if v not in binding]
-        for full in _fill(binding, free, objects_of, work, budget):
+        for full in _fill(binding, free, self.objects_of, self.work, self.budget):
             step = (schema.name,) + tuple(full[v] for v in schema.parameters)
             for predicate, args, quantified in schema.add:
                 # a universally quantified effect adds its atom for every kept object of the variable's type
-                for each in _fill(full, list(quantified), objects_of, work, budget):
+                for each in _fill(full, list(quantified), self.objects_of, self.work, self.budget):
                     fact = (predicate,) + tuple(each.get(a, a) for a in args)
-                    if fact not in facts:
-                        facts[fact] = (step, schema, full)
-                        queue.append(fact)
-                        missing.discard(fact)
+                    if fact not in self.facts:
+                        self.facts[fact] = (step, schema, full)
+                        self.queue.append(fact)
+                        self.missing.discard(fact)
 
-    def join(pre: list, binding: dict):
+    def join(self, pre: list, binding: dict):
         if not pre:
             yield binding
             return
-        # the condition whose bound arguments leave the fewest processed facts goes first
-        best, best_key, best_size = 0, None, None
+        best, best_key = self.smallest(pre, binding)
+        predicate, args = pre[best]
+        rest = pre[:best] + pre[best + 1 :]
+        for fact in self.processed.get(best_key, ()):
+            self.work[0] += 1
+            if self.work[0] > self.budget:
+                raise _OutOfBudget
+            new = _match(args, fact, binding)
+            if new is not None:
+                yield from self.join(rest, new)
+
+    def smallest(self, pre: list, binding: dict) -> tuple[int, tuple]:
+        """The condition whose bound arguments leave the fewest processed facts, and that index key."""
+        best, best_key, best_size = 0, (pre[0][0],), None
         for j, (predicate, args) in enumerate(pre):
-            key = (predicate,)
-            size = len(processed.get(key, ()))
+            key: tuple = (predicate,)
+            size = len(self.processed.get(key, ()))
             for position, arg in enumerate(args):
                 value = binding.get(arg, arg) if arg[0] == "?" else arg
                 if value[0] != "?":
                     candidate = (predicate, position, value)
-                    candidate_size = len(processed.get(candidate, ()))
+                    candidate_size = len(self.processed.get(candidate, ()))
                     if candidate_size < size:
                         key, size = candidate, candidate_size
             if best_size is None or size < best_size:
                 best, best_key, best_size = j, key, size
                 if size == 0:
                     break
-        predicate, args = pre[best]
-        rest = pre[:best] + pre[best + 1 :]
-        for fact in processed.get(best_key, ()):
-            work[0] += 1
-            if work[0] > budget:
-                raise _OutOfBudget
-            new = _match(args, fact, binding)
-            if new is not None:
-                yield from join(rest, new)
-
-    try:
-        for schema in schemas:
-            if not schema.pre:
-                apply(schema, {})
-        while queue and missing:
-            fact = queue.popleft()
-            processed[(fact[0],)].append(fact)
-            for position, value in enumerate(fact[1:]):
-                processed[(fact[0], position, value)].append(fact)
-            for schema, i in triggers.get(fact[0], ()):
-                binding = _match(schema.pre[i][1], fact, {})
-                if binding is None:
-                    continue
-                for found in list(join(list(schema.pre[:i] + schema.pre[i + 1 :]), binding)):
-                    apply(schema, found)
-    except _OutOfBudget:
-        return Reachability(False, False)
-    unreached = tuple(atom for atom in goal if atom not in facts)
-    if unreached:
-        return Reachability(False, True, unreached)
-    plan, objects = _relaxed_plan(facts, goal)
-    return Reachability(True, True, (), tuple(plan), frozenset(objects) - set(domain.constants))
+        return best, best_key
 
 
 def _match(args: tuple, fact: tuple, binding: dict) -> dict | None:

@@ -8,9 +8,11 @@ the unified-planning engine all call :func:`score_problem` with a
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass, field
+from collections.abc import Iterable
+from dataclasses import dataclass, field, replace
 
 from relevance_plan.errors import UsageError
+from relevance_plan.pddl.model import Domain
 from relevance_plan.relevance.knowledge import KnowledgeModel, check_model_applies, find_model, load_model
 from relevance_plan.relevance.prune import PruneResult, Thresholds, prune_with_scores
 from relevance_plan.relevance.scorers import SCORERS, PlanningTask, ScoreRequest, ScoreResult
@@ -50,17 +52,24 @@ class Scoring:
         return prune_with_scores(self.task, self.scores, thresholds, self.model, **how)
 
 
-def resolve_model(domain_name: str, domain_path: str | None, model_path: str | None) -> KnowledgeModel | None:
-    """The explicit ``--model``, else one found next to the domain or among the shipped worlds."""
+def resolve_model(
+    domain: Domain, domain_path: str | None, model_path: str | None, names: Iterable[str] = ()
+) -> KnowledgeModel | None:
+    """The explicit ``--model``, else one found next to the domain or shipped for the domain's name
+    (or one of ``names``); an explicit model that does not fit the domain is an error."""
     if model_path is not None:
         model = load_model(model_path)
-        check_model_applies(model, domain_name)
+        check_model_applies(model, domain)
         return model
-    found = find_model(domain_name, domain_path)
-    if found is None:
-        return None
-    model = load_model(found)
-    return model if model.domain == domain_name else None
+    for name in (domain.name, *names):
+        found = find_model(name, domain_path)
+        if found is None:
+            continue
+        model = load_model(found)
+        if model.domain == name:
+            check_model_applies(replace(model, domain=domain.name), domain)
+            return model
+    return None
 
 
 def choose_scorer(method: str, model: KnowledgeModel | None, override: str | None) -> str:
@@ -86,8 +95,9 @@ def score_problem(
     ``model`` skips the model look-up (a front end that found it already);
     ``problem_path`` locates the sidecar the oracle needs.
     """
-    if model is None:
-        model = resolve_model(task.domain.name, None if domain_path is None else str(domain_path), options.model_path)
+    if model is None and options.scorer in (None, "model"):
+        # Only the model scorer reads a model: a broken file next to the domain must not stop the others.
+        model = resolve_model(task.domain, None if domain_path is None else str(domain_path), options.model_path)
     scorer = choose_scorer(method, model, options.scorer)
     if scorer == "model" and model is None:
         raise UsageError(f"no knowledge model found for domain '{task.domain.name}': give --model or use --scorer goal")

@@ -125,7 +125,9 @@ class Session:
     ):
         self.domain = domain
         self.options = options
-        self.model = model if model is not None else resolve_model(domain.name, domain_path, options.model_path)
+        if model is None and options.scorer in (None, "model"):
+            model = resolve_model(domain, domain_path, options.model_path)
+        self.model = model
         self.scene = LiveScene(domain, problem)
         scorer = choose_scorer("relevance", self.model, options.scorer)
         if scorer == "model" and self.model is not None:
