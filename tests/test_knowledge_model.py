@@ -33,8 +33,14 @@ def _with(replacements: dict[str, str]) -> str:
         (_with({"coffee: 0.98": "coffee: 1" + "0" * 400}), "must be a number in [0, 1]"),
         (_with({'support: "on"': "support: [on, under]"}), "scene.support must be one predicate name"),
         (_with({'support: "on"': "support: on"}), "scene.support must be one predicate name"),
-        (NO_DEPENDENCIES + "dependencies:\n  - {predicate: 'on', when_kept: 1, restore: 99}\n", "1-based argument position"),
-        (NO_DEPENDENCIES + "dependencies:\n  - {predicate: 'two words', when_kept: 1, restore: 2}\n", "one predicate name"),
+        (
+            NO_DEPENDENCIES + "dependencies:\n  - {predicate: 'on', when_kept: 1, restore: 99}\n",
+            "1-based argument position",
+        ),
+        (
+            NO_DEPENDENCIES + "dependencies:\n  - {predicate: 'two words', when_kept: 1, restore: 2}\n",
+            "one predicate name",
+        ),
     ],
 )
 def test_malformed_models_are_refused_naming_the_entry(text, message):

@@ -20,8 +20,9 @@ from relevance_plan.relevance.analysis import ConstraintRule, InitIndex
 class Restored:
     name: str
     because_of: str  # the kept object that needed it ("" for singleton facts)
-    rule: str  # "blocker", "anchor", "singleton", "model", "reachability"
+    rule: str  # "blocker", "anchor", "singleton", "model", "reachability", "soundness"
     fact: tuple  # the initial fact that ties them
+    note: str = ""  # for "soundness": the quantifier that ranges over the object
 
     @property
     def reason(self) -> str:
@@ -34,6 +35,8 @@ class Restored:
             if self.fact == ("goal",):
                 return "the goal is unreachable without it, even ignoring deletes"
             return f"used by a relaxed plan to the goal ({' '.join(self.fact)})"
+        if self.rule == "soundness":
+            return self.note
         if self.rule == "singleton":
             return f"only initial fact of its predicate {fact}"
         return f"declared dependency of {self.because_of} {fact}"

@@ -12,6 +12,7 @@ from relevance_plan.relevance.closure import Restored, close_over_constraints
 from relevance_plan.relevance.knowledge import KnowledgeModel, check_threshold
 from relevance_plan.relevance.reachability import repair_selection
 from relevance_plan.relevance.scorers import PlanningTask, ScoreResult
+from relevance_plan.relevance.soundness import KeptForSoundness
 
 DEFAULT_TAU = 0.2
 FULL_ABOVE = 0.8  # a selection keeping more than this share of the objects plans on the full problem
@@ -81,7 +82,7 @@ def select_relevant(
     the human, useless to the planner.  Closure still puts back what the kept
     objects need (their places, what stands on them).
     """
-    selected = set(task.goal_objects & task.problem.objects.keys())
+    selected = set(task.pinned_objects)
     for name, score in scores.element_scores.items():
         if scores.class_scores:
             class_name = scores.element_class.get(name)
@@ -147,10 +148,19 @@ def prune_with_scores(
     rules = constraint_rules(task, model)
     singletons = single_valued_predicates(task.domain, task.init_index)
 
+    sound = task.kept_for_soundness
+
     def close(names):
-        return close_over_constraints(
-            names, rules, task.init_index, candidates=task.problem.objects.keys(), singleton_predicates=singletons
+        # what a quantifier ranges over stays, so that a plan of the pruned problem is one of the original
+        missing = sorted(sound.keys() - set(names))
+        closed, found = close_over_constraints(
+            set(names) | set(missing),
+            rules,
+            task.init_index,
+            candidates=task.problem.objects.keys(),
+            singleton_predicates=singletons,
         )
+        return closed, tuple(soundness_reason(name, sound[name]) for name in missing) + found
 
     kept, restored = close(selected)
     set_aside: frozenset = frozenset()
@@ -181,6 +191,12 @@ def prune_with_scores(
         text=write_pruned_problem(task.problem, kept),
         set_aside=set_aside,
     )
+
+
+def soundness_reason(name: str, requirement: KeptForSoundness) -> Restored:
+    admitted = f" with ({requirement.guard} ...)" if requirement.guard else ""
+    note = f"{requirement.where} quantifies over every {requirement.type_name}{admitted}: {requirement.formula}"
+    return Restored(name, "", "soundness", (), note)
 
 
 def full_problem(

@@ -23,10 +23,10 @@ problem text and time limit to a ``RunOutcome``.
 from __future__ import annotations
 
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, replace
 
-from relevance_plan.pddl.model import Domain, Problem, goal_objects
+from relevance_plan.pddl.model import Domain, Problem, goal_objects, pinned_objects
 from relevance_plan.pddl.plans import Plan
 from relevance_plan.pddl.writer import write_pruned_problem
 from relevance_plan.planning.loop import PlanOptions, PlanResult, PlanStatus, first_selection, run_attempts, summarise
@@ -37,6 +37,7 @@ from relevance_plan.relevance.knowledge import KnowledgeModel
 from relevance_plan.relevance.prune import PruneResult, constraint_rules, prune_with_scores
 from relevance_plan.relevance.scorers import PlanningTask, ScoreResult
 from relevance_plan.relevance.setup import Scoring, ScoringOptions, choose_scorer, resolve_model
+from relevance_plan.relevance.soundness import objects_to_keep, soundness_requirements
 from relevance_plan.session.events import Event, EventError, check_event, parse_event_line
 from relevance_plan.session.rescoring import ALL, FullScores, LiveModelScores, restrict
 from relevance_plan.session.state import LiveScene
@@ -500,6 +501,8 @@ class _LiveTask:
     problem: Problem
     init_index: object
     goal_objects: frozenset = field(default=frozenset())
+    pinned_objects: frozenset = field(default=frozenset())
+    kept_for_soundness: Mapping = field(default_factory=dict)
 
     @classmethod
     def of(cls, scene: LiveScene, with_problem: bool = True) -> _LiveTask:
@@ -507,7 +510,15 @@ class _LiveTask:
         if not with_problem:
             return cls(scene.domain, None, _IndexView(scene))
         problem = scene.snapshot_problem()
-        return cls(scene.domain, problem, _IndexView(scene), goal_objects(problem, scene.domain))
+        sound = objects_to_keep(scene.domain, problem, soundness_requirements(scene.domain, problem))
+        return cls(
+            scene.domain,
+            problem,
+            _IndexView(scene),
+            goal_objects(problem, scene.domain),
+            pinned_objects(problem, scene.domain),
+            sound,
+        )
 
 
 class _IndexView:

@@ -6,9 +6,10 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from functools import cached_property
 
-from relevance_plan.pddl.model import Domain, Problem, goal_objects
+from relevance_plan.pddl.model import Domain, Problem, goal_objects, pinned_objects
 from relevance_plan.relevance.analysis import GoalAnalysis, InitIndex, analyse_goal, index_init, object_distances
 from relevance_plan.relevance.knowledge import KnowledgeModel
+from relevance_plan.relevance.soundness import KeptForSoundness, objects_to_keep, soundness_requirements
 from relevance_plan.relevance.types import InferredTypes, infer_types
 
 
@@ -45,6 +46,16 @@ class PlanningTask:
     @cached_property
     def goal_objects(self) -> frozenset:
         return goal_objects(self.problem, self.domain)
+
+    @cached_property
+    def pinned_objects(self) -> frozenset:
+        """Objects named in the goal, the trajectory constraints or the metric: never pruned."""
+        return pinned_objects(self.problem, self.domain)
+
+    @cached_property
+    def kept_for_soundness(self) -> Mapping[str, KeptForSoundness]:
+        """Objects a quantifier ranges over where pruning them could change a verdict (``soundness``)."""
+        return objects_to_keep(self.domain, self.problem, soundness_requirements(self.domain, self.problem))
 
 
 @dataclass(frozen=True)
