@@ -6,9 +6,16 @@ relevance method (goal scorer: no model applies) and, where the sidecar has a
 ``necessary`` set, the oracle; every plan is validated on the original
 problem.  Prints one row per problem as it goes, then per domain the median
 times, the pure/relevance ratio of the medians, objects kept, attempts, and
-the geometric mean of the ratios over domains, with the issue's targets.
+the geometric mean of the ratios over domains, each next to its target:
+geometric-mean speed-up >= 5x, median attempts <= 2, no problem slower than
+pure by more than 25 % + 1 s, every plan valid, no relevance failure.
+
+Takes about 3 minutes on 2 cores with the defaults (one problem per world;
+pure planning takes 10-45 s per problem), about 7 minutes with --count 3,
+and under a minute with --unpadded.
 
     python benchmarks/bench_classic.py                       # untyped worlds, default sizes
+    python benchmarks/bench_classic.py --count 3 --seed 1    # the table in docs/results.md
     python benchmarks/bench_classic.py --typed --count 2 --seed 7
     python benchmarks/bench_classic.py --unpadded            # every movable object in the goal
     python benchmarks/bench_classic.py --worlds logistics grid --size 600
@@ -52,17 +59,28 @@ def median(values):
     return statistics.median(values) if values else None
 
 
-def main() -> int:
+def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--worlds", nargs="*", default=list(BUILDERS))
+    parser.add_argument(
+        "--worlds",
+        nargs="*",
+        default=list(BUILDERS),
+        choices=list(BUILDERS),
+        metavar="WORLD",
+        help=f"classic worlds to run (default: all of {', '.join(BUILDERS)})",
+    )
     parser.add_argument("--typed", action="store_true", help="use the typed variants")
     parser.add_argument("--unpadded", action="store_true", help="every movable object in the goal, small sizes")
-    parser.add_argument("--count", type=int, default=1)
-    parser.add_argument("--seed", type=int, default=1)
+    parser.add_argument("--count", type=int, default=1, help="problems per world (default: 1)")
+    parser.add_argument("--seed", type=int, default=1, help="generator seed (default: 1)")
     parser.add_argument("--size", type=int, default=None, help="objects per problem (default: each world's)")
-    parser.add_argument("--timeout", type=float, default=120.0)
+    parser.add_argument("--timeout", type=float, default=120.0, help="seconds per planning run (default: 120)")
     parser.add_argument("--json", type=Path, default=None, help="also write the raw rows here")
-    args = parser.parse_args()
+    return parser.parse_args(argv)
+
+
+def main() -> int:
+    args = parse_args()
 
     rows = []
     print(

@@ -6,7 +6,12 @@ at 10, 50 and 100 distractors; blocksworld and gripper padded with objects
 the goal does not need), runs ``pure`` and ``relevance`` through the same
 attempt loop and prints their times and the ratio.  Every reported plan was
 validated on the original problem; a run without a valid plan is shown with
-its status.
+its status.  ``up:`` planners need their packages (``pip install -e
+'.[planners]'``); a planner that is not installed is refused before any run.
+
+Takes about 11 minutes on 2 cores with the defaults: pure SymK runs out of
+the 120 s timeout on four of the five problems.  Fast Downward alone
+(``--planners fast-downward``) takes under a minute.
 
     python benchmarks/bench_planners.py
     python benchmarks/bench_planners.py --planners fast-downward,up:pyperplan --timeout 60
@@ -53,11 +58,19 @@ def seconds(result) -> str:
     return f"{result.status.value} ({result.wall_time:.0f} s)"
 
 
+def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument(
+        "--planners",
+        default="fast-downward,up:symk,up:lpg",
+        help="comma-separated planner names, as for --planner (default: fast-downward,up:symk,up:lpg)",
+    )
+    parser.add_argument("--timeout", type=float, default=120.0, help="seconds per planning run (default: 120)")
+    return parser.parse_args(argv)
+
+
 def main() -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--planners", default="fast-downward,up:symk,up:lpg")
-    parser.add_argument("--timeout", type=float, default=120.0)
-    args = parser.parse_args()
+    args = parse_args()
     planners = split_planner_names(args.planners)
     for name in planners:
         make_planner(name, check=True)
