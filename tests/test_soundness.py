@@ -97,7 +97,8 @@ def lift_problem(seed: int, untyped: bool = False) -> str:
         objects = " ".join(f"p{i}" for i in range(passengers)) + " - passenger "
         objects += " ".join(f"f{i}" for i in range(floors)) + " - floor"
         goal = "(forall (?p - passenger) (served ?p))"
-    return f"(define (problem lift-{seed}) (:domain lift-adl) (:objects {objects}) (:init {' '.join(init)}) (:goal {goal}))"
+    header = f"(define (problem lift-{seed}) (:domain lift-adl)"
+    return f"{header} (:objects {objects}) (:init {' '.join(init)}) (:goal {goal}))"
 
 
 def rooms_problem(seed: int) -> str:
@@ -173,8 +174,9 @@ def test_quantifiers_in_preconditions_derived_predicates_and_effect_conditions_k
 
 
 def _prune_plan_validate(tmp_path: Path, world: str, seed: int) -> bool:
-    from relevance_plan.planning.runner import run_fast_downward
     from support import run
+
+    from relevance_plan.planning.runner import run_fast_downward
 
     domain_text, make = WORLDS[world]
     domain_path, problem_path = tmp_path / f"{world}.pddl", tmp_path / f"{world}-{seed}.pddl"
