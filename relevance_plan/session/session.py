@@ -335,7 +335,7 @@ class Session:
         crossed = set()
         thresholds = self.options.thresholds
         for name in set(rescored) | (self.passing - self.scene.objects.keys()):
-            now = name in self.scene.objects and self.scores.passes(name, thresholds.tau_class, thresholds.tau_element)
+            now = name in self.scene.objects and self.scores.passes(name, thresholds)
             if now != (name in self.passing):
                 crossed.add(name)
                 (self.passing.add if now else self.passing.discard)(name)
@@ -376,9 +376,7 @@ class Session:
 
     def _recount_passing(self) -> None:
         thresholds = self.options.thresholds
-        self.passing = {
-            n for n in self.scene.objects if self.scores.passes(n, thresholds.tau_class, thresholds.tau_element)
-        }
+        self.passing = {n for n in self.scene.objects if self.scores.passes(n, thresholds)}
 
     # ------------------------------------------------------------------ determination
 
