@@ -17,7 +17,9 @@ from pathlib import Path
 import pytest
 from support import REPO, TOOL, invoke, make_row, process_gone
 
-from relevance_plan.batch.jobs import build_jobs, compare, connect_scheduler, run_job
+from relevance_plan.batch.compare import compare
+from relevance_plan.batch.executors import connect_scheduler
+from relevance_plan.batch.jobs import build_jobs, run_job
 from relevance_plan.batch.store import SCHEMA_VERSION, ResultStore
 from relevance_plan.errors import InputFileError, SchedulerError, StoreError, UsageError
 from relevance_plan.exitcodes import ExitCode
@@ -556,3 +558,50 @@ def test_demo_end_to_end(tmp_path):
     # Running it again reuses every stored result.
     again = invoke("demo", "--workdir", workdir, "--tiny", "--timeout", 60, "--jobs", 2, "-q")
     assert again.exit_code == 0 and "(0 run now, 8 reused)" in again.stdout
+
+
+# --------------------------------------------------------------------------- the demo's temporary folder
+
+
+@pytest.mark.parametrize("outcome", ["finished", "failed", "interrupted"])
+def test_a_demo_without_workdir_removes_its_temporary_folder(tmp_path, monkeypatch, outcome):
+    import tempfile
+
+    from relevance_plan.batch import demo
+    from relevance_plan.batch.compare import CompareSummary
+
+    def fake_compare(suites, methods, options, *, store_path, **_):
+        ResultStore(store_path).close()
+        if outcome == "failed":
+            raise StoreError("cannot write to the results store", path=str(store_path))
+        if outcome == "interrupted":
+            raise KeyboardInterrupt
+        return CompareSummary(str(store_path), 0, 0, 0, 0, {}, 0.0)
+
+    monkeypatch.setattr(tempfile, "tempdir", str(tmp_path))
+    monkeypatch.setattr(demo, "compare", fake_compare)
+    if outcome == "finished":
+        run = demo.run_demo(None, tiny=True, progress=False)
+        assert run.workdir is None and run.store_path is None
+    else:
+        with pytest.raises((StoreError, KeyboardInterrupt)):
+            demo.run_demo(None, tiny=True, progress=False)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_the_demo_says_its_temporary_folder_is_gone(tmp_path, monkeypatch):
+    import tempfile
+
+    from relevance_plan.batch import demo
+    from relevance_plan.batch.compare import CompareSummary
+
+    def fake_compare(suites, methods, options, *, store_path, **_):
+        ResultStore(store_path).close()
+        return CompareSummary(str(store_path), 8, 0, 8, 0, {"solved": 8}, 1.0)
+
+    monkeypatch.setattr(tempfile, "tempdir", str(tmp_path))
+    monkeypatch.setattr(demo, "compare", fake_compare)
+    result = invoke("demo", "--tiny", "-q")
+    assert result.exit_code == 0, result.output
+    assert "temporary folder, now removed; --workdir DIR keeps" in result.stdout
+    assert list(tmp_path.iterdir()) == []

@@ -357,36 +357,6 @@ def _print_plan_summary(result: PlanResult, plan_file, err: bool = False) -> Non
         echo(f"plan file:   {plan_file}")
 
 
-# --------------------------------------------------------------------------- sweep
-
-
-@main.command()
-@click.argument("suite_dir", metavar="SUITE_DIR", type=click.Path())
-@scoring_options
-@click.option("--taus", default="0.1,0.2,0.3,0.4,0.5", show_default=True, help="Threshold values for both axes.")
-@click.option(
-    "--heatmap", type=click.Path(dir_okay=False), default=None, help="Write a PNG heatmap (needs matplotlib)."
-)
-@click.option("--json", "as_json", is_flag=True)
-@handle_errors
-def sweep(suite_dir, taus, heatmap, as_json, **values):
-    """Precision, recall, F1 and N over a tau_c x tau_e grid for a generated suite."""
-    from relevance_plan.batch.sweep import format_sweep, sweep_suite, write_heatmap
-    from relevance_plan.relevance.knowledge import check_threshold
-
-    options = take_scoring(values)
-    try:
-        grid = tuple(float(v) for v in taus.split(","))
-    except ValueError:
-        raise UsageError(f"--taus must be comma-separated numbers, got '{taus}'") from None
-    for value in grid:
-        check_threshold(value, "each --taus value")
-    result = sweep_suite(Path(suite_dir), grid, options)
-    if heatmap:
-        write_heatmap(result, heatmap)
-    click.echo(json.dumps(result.to_json(), indent=2) if as_json else format_sweep(result))
-
-
 # --------------------------------------------------------------------------- exit codes
 
 
