@@ -74,8 +74,8 @@ def test_plan_compare_and_the_up_engine_make_the_same_attempts(hard_gripper, tmp
     options = PlanOptions(thresholds=Thresholds(0.95, 0.95), timeout=120)
     planned = plan_task(domain, problem, options)
     assert len(planned.attempts) >= 2, "the first pruning should fail on this problem"
-    assert planned.attempts[0].status != "solved" and planned.status.value == "solved"
-    plan_attempts = [(a.objects_kept, a.outcome.status.value, a.status) for a in planned.attempts]
+    assert planned.attempts[0].status.value != "solved" and planned.status.value == "solved"
+    plan_attempts = [(a.objects_kept, a.outcome.status.value, a.status.value) for a in planned.attempts]
 
     (job,) = build_jobs([tmp_path], "relevance", (0,), options)
     row = run_job(job)

@@ -43,7 +43,7 @@ def known_rows():
             status="out-of-time",
             wall=100.5,
             relevance=0.25,
-            first="out_of_time",
+            first="out-of-time",
             kept=10,
             total=20,
             exit_code=-9,

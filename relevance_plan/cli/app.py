@@ -25,25 +25,11 @@ from relevance_plan.cli.common import (
 )
 from relevance_plan.cli.watch import watch
 from relevance_plan.errors import UsageError
-from relevance_plan.exitcodes import EXIT_CODE_DESCRIPTIONS, ExitCode
+from relevance_plan.exitcodes import EXIT_CODE_DESCRIPTIONS, ExitCode, exit_code_for_status
 from relevance_plan.planning.loop import PlanResult, PlanStatus, plan_task
 from relevance_plan.relevance.prune import PruneResult
 from relevance_plan.relevance.scorers import PlanningTask
 from relevance_plan.relevance.setup import Scoring, ScoringOptions, score_problem
-
-PLAN_STATUS_EXIT = {
-    PlanStatus.SOLVED: ExitCode.SUCCESS,
-    PlanStatus.UNSOLVABLE: ExitCode.UNSOLVABLE,
-    PlanStatus.NO_VALID_PLAN: ExitCode.NO_VALID_PLAN,
-    PlanStatus.OUT_OF_TIME: ExitCode.OUT_OF_TIME,
-    PlanStatus.OUT_OF_MEMORY: ExitCode.OUT_OF_MEMORY,
-    PlanStatus.INSUFFICIENT_CUES: ExitCode.INSUFFICIENT_CUES,
-    PlanStatus.INPUT_ERROR: ExitCode.PDDL_SYNTAX,
-    PlanStatus.UNSUPPORTED: ExitCode.UNSUPPORTED_PDDL,
-    PlanStatus.PLANNER_CONFIG_ERROR: ExitCode.USAGE,
-    PlanStatus.PLANNER_ERROR: ExitCode.PLANNER,
-    PlanStatus.VALIDATOR_UNAVAILABLE: ExitCode.VALIDATOR,
-}
 
 
 def _score_and_prune(domain_path, problem_path, options: ScoringOptions) -> tuple[Scoring, PruneResult]:
@@ -334,7 +320,7 @@ def plan(domain_path, problem_path, method, plan_file, as_json, quiet, **values)
     else:
         # With the plan on stdout, the summary goes to stderr.
         _print_plan_summary(result, plan_file, err=plan_file == STDOUT)
-    code = PLAN_STATUS_EXIT[result.status]
+    code = exit_code_for_status(result.status.value)
     if code is not ExitCode.SUCCESS:
         if not as_json:
             click.echo(f"relevance-plan: {result.status.value}: {result.message}", err=True)

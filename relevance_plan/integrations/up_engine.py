@@ -64,7 +64,8 @@ from relevance_plan.pddl.model import Domain
 from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.pddl.plans import Plan, PlanStep
 from relevance_plan.planning.loop import Attempt, PlanOptions, PlanStatus, first_selection, run_attempts, summarise
-from relevance_plan.planning.runner import PlannerStatus, RunOutcome
+from relevance_plan.planning.outcome import PlannerStatus, RunOutcome
+from relevance_plan.planning.up_engines import UP_STATUS, up_status_name
 from relevance_plan.relevance.knowledge import KnowledgeModel, load_model
 from relevance_plan.relevance.prune import DEFAULT_TAU, PruneResult, Thresholds
 from relevance_plan.relevance.scorers import SCORERS, PlanningTask
@@ -95,10 +96,6 @@ _READER_FEATURES = {
     "quality_metrics": ("ACTIONS_COST", "PLAN_LENGTH"),
     "actions_cost_kind": ("INT_NUMBERS_IN_ACTIONS_COST",),
 }
-
-# Inner results after which trying the same problem with more objects is pointless:
-# go straight to the whole problem instead.
-_FAULTS = frozenset({PlanGenerationResultStatus.INTERNAL_ERROR, PlanGenerationResultStatus.UNSUPPORTED_PROBLEM})
 
 
 def relevance_supported_kind() -> ProblemKind:
@@ -346,7 +343,7 @@ class _InnerPlanner:
         result = self.engine.solve(target, self.heuristic, limit, self.output_stream)
         wall = time.perf_counter() - started
         self.last_result = result
-        status = _UP_TO_PLANNER.get(result.status, PlannerStatus.PLANNER_CRASH)
+        status = UP_STATUS.get(result.status.name, PlannerStatus.PLANNER_CRASH)
         steps = Plan()
         if result.status in POSITIVE_OUTCOMES:
             lifted = lift_plan(result.plan, self.problem) if result.plan is not None else None
@@ -364,6 +361,7 @@ class _InnerPlanner:
             config=self.engine.name,
             planner=self.engine.name,
             raw_status=result.status.name,
+            reason=f"{self.engine.name}: unified-planning status {result.status.name}",
             optimal=result.status is PlanGenerationResultStatus.SOLVED_OPTIMALLY,
         )
 
@@ -374,28 +372,18 @@ class _InnerPlanner:
         return PlanStep(self.reader_actions[step.action.name], arguments)
 
 
-_UP_TO_PLANNER = {
-    PlanGenerationResultStatus.SOLVED_SATISFICING: PlannerStatus.SOLVED,
-    PlanGenerationResultStatus.SOLVED_OPTIMALLY: PlannerStatus.SOLVED,
-    PlanGenerationResultStatus.UNSOLVABLE_PROVEN: PlannerStatus.UNSOLVABLE,
-    PlanGenerationResultStatus.UNSOLVABLE_INCOMPLETELY: PlannerStatus.SEARCH_INCOMPLETE,
-    PlanGenerationResultStatus.TIMEOUT: PlannerStatus.OUT_OF_TIME,
-    PlanGenerationResultStatus.MEMOUT: PlannerStatus.OUT_OF_MEMORY,
-    PlanGenerationResultStatus.INTERNAL_ERROR: PlannerStatus.PLANNER_CRASH,
-    PlanGenerationResultStatus.UNSUPPORTED_PROBLEM: PlannerStatus.UNSUPPORTED,
-}
+def up_status(status: PlannerStatus) -> PlanGenerationResultStatus:
+    """Ours as unified-planning says it (``planning.up_engines.UP_STATUS`` read backwards)."""
+    return PlanGenerationResultStatus[up_status_name(status)]
 
-# The loop's verdict, as unified-planning says it.
-_PLAN_TO_UP = {
-    PlanStatus.UNSOLVABLE: PlanGenerationResultStatus.UNSOLVABLE_PROVEN,
-    PlanStatus.OUT_OF_TIME: PlanGenerationResultStatus.TIMEOUT,
-    PlanStatus.OUT_OF_MEMORY: PlanGenerationResultStatus.MEMOUT,
-    PlanStatus.INPUT_ERROR: PlanGenerationResultStatus.INTERNAL_ERROR,
-    PlanStatus.UNSUPPORTED: PlanGenerationResultStatus.UNSUPPORTED_PROBLEM,
-    PlanStatus.PLANNER_ERROR: PlanGenerationResultStatus.INTERNAL_ERROR,
-    PlanStatus.PLANNER_CONFIG_ERROR: PlanGenerationResultStatus.INTERNAL_ERROR,
-    PlanStatus.VALIDATOR_UNAVAILABLE: PlanGenerationResultStatus.INTERNAL_ERROR,
-}
+
+def up_verdict(status: PlanStatus) -> PlanGenerationResultStatus:
+    """The loop's verdict as unified-planning says it: a verdict spelled like a planner status
+    (unsolvable, out-of-time, ...) maps as that status does; any other is an internal error."""
+    try:
+        return up_status(PlannerStatus(status.value))
+    except ValueError:
+        return PlanGenerationResultStatus.INTERNAL_ERROR
 
 
 def describe_attempt(attempt: Attempt, total: int) -> str:
@@ -449,7 +437,7 @@ def _final_status(result, found, attempts) -> tuple[PlanGenerationResultStatus, 
             )
     if result.status is PlanStatus.UNSOLVABLE:
         return PlanGenerationResultStatus.UNSOLVABLE_PROVEN, "the problem is unsolvable (proven on the whole problem)"
-    status = _PLAN_TO_UP.get(result.status, PlanGenerationResultStatus.INTERNAL_ERROR)
+    status = up_verdict(result.status)
     return (
         status,
         f"the inner planner reported {last.outcome.raw_status or last.outcome.status.name} on the whole problem",
@@ -469,9 +457,7 @@ def _final_status_whole(problem: Problem, found, attempts) -> tuple[PlanGenerati
                 f"plan of {len(found.actions)} steps validated on the original problem",
             )
         return PlanGenerationResultStatus.INTERNAL_ERROR, "the inner planner's plan does not validate"
-    return {v: k for k, v in _UP_TO_PLANNER.items() if k is not PlanGenerationResultStatus.SOLVED_OPTIMALLY}.get(
-        last.outcome.status, PlanGenerationResultStatus.INTERNAL_ERROR
-    ), f"the inner planner reported {last.outcome.raw_status} on the whole problem"
+    return up_status(last.outcome.status), f"the inner planner reported {last.outcome.raw_status} on the whole problem"
 
 
 # --------------------------------------------------------------------------- building and mapping back

@@ -30,7 +30,7 @@ from relevance_plan.pddl.model import Domain, Problem, goal_objects, pinned_obje
 from relevance_plan.pddl.plans import Plan
 from relevance_plan.pddl.writer import write_pruned_problem
 from relevance_plan.planning.loop import PlanOptions, PlanResult, PlanStatus, first_selection, run_attempts, summarise
-from relevance_plan.planning.runner import RunOutcome
+from relevance_plan.planning.outcome import RunOutcome
 from relevance_plan.planning.validate import validate_plan
 from relevance_plan.relevance.analysis import single_valued_predicates
 from relevance_plan.relevance.knowledge import KnowledgeModel
