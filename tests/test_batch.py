@@ -24,7 +24,7 @@ from relevance_plan.batch.store import SCHEMA_VERSION, ResultStore
 from relevance_plan.errors import InputFileError, SchedulerError, StoreError, UsageError
 from relevance_plan.exitcodes import ExitCode
 from relevance_plan.generators.generate import generate_suite
-from relevance_plan.planning import runner
+from relevance_plan.planning import fast_downward
 from relevance_plan.planning.loop import PlanOptions
 from relevance_plan.relevance.prune import Thresholds
 
@@ -249,7 +249,7 @@ def test_input_error_becomes_a_row_not_a_crash(suite, tmp_path):
     ids=["exit-35", "killed"],
 )
 def test_planner_crash_is_recorded_with_its_exit_code(suite, tmp_path, monkeypatch, body, code):
-    monkeypatch.setenv(runner.FAST_DOWNWARD_ENV, str(fake_planner(tmp_path, body)))
+    monkeypatch.setenv(fast_downward.FAST_DOWNWARD_ENV, str(fake_planner(tmp_path, body)))
     store = tmp_path / "r.sqlite"
     summary = compare([suite], "pure,relevance", PlanOptions(timeout=30), jobs=2, store_path=store, progress=False)
     assert summary.ran == 4 and summary.failed == 4
@@ -264,7 +264,7 @@ def test_planner_crash_is_recorded_with_its_exit_code(suite, tmp_path, monkeypat
 def test_missing_planner_stops_the_batch_and_stores_nothing(suite, tmp_path, monkeypatch):
     from relevance_plan.errors import PlannerError
 
-    monkeypatch.setenv(runner.FAST_DOWNWARD_ENV, str(tmp_path / "no-such-driver.py"))
+    monkeypatch.setenv(fast_downward.FAST_DOWNWARD_ENV, str(tmp_path / "no-such-driver.py"))
     store = tmp_path / "r.sqlite"
     with pytest.raises(PlannerError):
         compare([suite], "pure", PlanOptions(timeout=30), jobs=1, store_path=store, progress=False)
@@ -363,7 +363,7 @@ def test_ctrl_c_kills_running_planners_and_keeps_finished_rows(tmp_path, signum)
     """,
     )
     store = tmp_path / "results.sqlite"
-    env = {runner.FAST_DOWNWARD_ENV: str(planner), "FAKE_PLANNER_MARKERS": str(markers)}
+    env = {fast_downward.FAST_DOWNWARD_ENV: str(planner), "FAKE_PLANNER_MARKERS": str(markers)}
     process = start_compare(suite, store, "--methods", "pure", "--timeout", 300, "--jobs", 1, env=env)
     try:
         deadline = time.monotonic() + 60

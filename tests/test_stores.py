@@ -16,7 +16,7 @@ from support import REPO, TOOL, make_row
 
 from relevance_plan.batch.store import ResultStore
 from relevance_plan.exitcodes import ExitCode
-from relevance_plan.planning import runner
+from relevance_plan.planning import fast_downward
 
 GRIPPER = REPO / "relevance_plan" / "data" / "domains" / "gripper" / "domain.pddl"
 BROKEN_PROBLEM = "(define (problem p{}) (:domain gripper) (:objects a - "
@@ -51,7 +51,7 @@ def marker_planner(tmp_path: Path) -> tuple[Path, dict]:
     marker = tmp_path / "a-job-ran"
     script = tmp_path / "planner.py"
     script.write_text(f"import sys\nopen({str(marker)!r}, 'w').close()\nsys.exit(35)\n")
-    return marker, {runner.FAST_DOWNWARD_ENV: str(script)}
+    return marker, {fast_downward.FAST_DOWNWARD_ENV: str(script)}
 
 
 def populated_store(path: Path, rows: int = 3) -> Path:

@@ -27,7 +27,7 @@ from typing import Any
 
 from relevance_plan.batch.jobs import Job, run_job
 from relevance_plan.errors import SchedulerError
-from relevance_plan.planning import runner
+from relevance_plan.planning.process import terminate_all_runs
 
 DASK_INSTALL_HINT = "pip install 'relevance-plan[dask]'"
 DEFAULT_SCHEDULER_TIMEOUT = 10.0
@@ -80,7 +80,7 @@ def _stop_local(pool: concurrent.futures.ThreadPoolExecutor, futures: Sequence[c
     while True:
         try:
             # Again and again: a job between two attempts may start one more planner.
-            runner.terminate_all_runs()
+            terminate_all_runs()
             running = [f for f in futures if not f.done()]
             if not running or time.monotonic() > deadline:
                 return
@@ -106,7 +106,7 @@ def connect_scheduler(address: str, timeout: float = DEFAULT_SCHEDULER_TIMEOUT):
 
 
 def _terminate_worker_runs() -> None:
-    runner.terminate_all_runs()
+    terminate_all_runs()
 
 
 def run_dask(pending: Sequence[Job], client, address: str, record: Record, stop: threading.Event) -> None:

@@ -20,9 +20,8 @@ from relevance_plan import __version__
 from relevance_plan.batch.store import ResultKey
 from relevance_plan.errors import InputFileError, RelevancePlanError
 from relevance_plan.io import load_domain, read_bytes
-from relevance_plan.planning import runner
 from relevance_plan.planning.loop import PLAN_OPTION_FIELDS, PlanOptions
-from relevance_plan.planning.planners import make_planner
+from relevance_plan.planning.planners import DEFAULT_PLANNER_CONFIG, make_planner
 from relevance_plan.relevance.knowledge import find_model
 from relevance_plan.relevance.sidecar import sidecar_path
 
@@ -59,7 +58,7 @@ def unreadable_hash(problem_path: str | os.PathLike, reason: str) -> str:
     )
 
 
-def planner_version(planner: str = "fast-downward", config: str = runner.DEFAULT_CONFIG) -> str:
+def planner_version(planner: str = "fast-downward", config: str = DEFAULT_PLANNER_CONFIG) -> str:
     """The version of the planner a job runs (a changed planner must not reuse stored rows)."""
     return make_planner(planner, config).version()
 
