@@ -47,7 +47,10 @@ EXIT_CODE_DESCRIPTIONS: dict[ExitCode, str] = {
     ExitCode.INSUFFICIENT_CUES: "insufficient cues: relevance cannot be decided; give --task, --objective or --human",
     ExitCode.OUT_OF_TIME: "out of time",
     ExitCode.OUT_OF_MEMORY: "out of memory",
-    ExitCode.USAGE: "bad argument value (threshold outside [0, 1], unknown method, negative count, ...)",
+    ExitCode.USAGE: (
+        "bad argument value (threshold outside [0, 1], unknown method, negative count, ...)"
+        " or an optional extra that is not installed"
+    ),
     ExitCode.INPUT_FILE: "missing, unreadable or unwritable file or directory",
     ExitCode.PDDL_SYNTAX: "malformed PDDL",
     ExitCode.UNSUPPORTED_PDDL: "PDDL feature not supported",

@@ -7,7 +7,7 @@ from datetime import datetime, timezone
 from typing import TYPE_CHECKING, Any
 
 from relevance_plan.batch.keys import canonical_json
-from relevance_plan.errors import InputFileError, RelevancePlanError
+from relevance_plan.errors import InputFileError, RelevancePlanError, UnsupportedFeatureError
 from relevance_plan.planning.loop import PlanResult, PlanStatus
 from relevance_plan.relevance.sidecar import read_sidecar_for
 
@@ -66,11 +66,13 @@ def result_row(job: Job, result: PlanResult) -> dict[str, Any]:
 
 
 def error_row(job: Job, error: RelevancePlanError, elapsed: float) -> dict[str, Any]:
-    """The store row of a job whose input the library rejected (status 'input-error')."""
+    """The store row of a job whose input the library rejected: 'unsupported' for legal PDDL the
+    tool or the planner cannot take, else 'input-error'."""
     message = str(error)
+    status = (PlanStatus.UNSUPPORTED if isinstance(error, UnsupportedFeatureError) else PlanStatus.INPUT_ERROR).value
     data = {
         "method": job.method,
-        "status": PlanStatus.INPUT_ERROR.value,
+        "status": status,
         "valid": False,
         "error": type(error).__name__,
         "message": message,
@@ -78,7 +80,7 @@ def error_row(job: Job, error: RelevancePlanError, elapsed: float) -> dict[str, 
     }
     return {
         **_base_row(job),
-        "status": PlanStatus.INPUT_ERROR.value,
+        "status": status,
         "valid": 0,
         "exit_code": None,
         "wall_time": elapsed,
@@ -87,7 +89,7 @@ def error_row(job: Job, error: RelevancePlanError, elapsed: float) -> dict[str, 
         "objects_total": 0,
         "objects_kept": 0,
         "attempts": 0,
-        "first_attempt_status": PlanStatus.INPUT_ERROR.value,
+        "first_attempt_status": status,
         "plan_length": None,
         "message": message,
         "finished_at": _now(),

@@ -16,8 +16,9 @@ set (or a new goal, or a ``plan`` event) plans again with the one attempt
 loop of ``planning.loop``; a previous plan that is still valid on the current
 full state is kept without calling the planner.
 
-The session does no I/O: the caller passes the planner as a function from
-problem text and time limit to a ``RunOutcome``.
+The session starts no process itself: the caller passes the planner as a
+function from problem text and time limit to a ``RunOutcome``.  Its only
+file access is loading the knowledge model, once, when it starts.
 """
 
 from __future__ import annotations
