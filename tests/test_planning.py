@@ -30,10 +30,10 @@ def test_every_method_gives_a_plan_valid_on_the_original(coffee_files, method):
     assert_valid_on_original(domain_path, problem_path, result)
     if method == "relevance":
         assert result.objects_kept < result.objects_total
-        assert "side_plate_1" in result.prune.removed
+        assert "side_plate_1" in result.selection.removed
         # the plate stands on the plastic cup, which is set aside for the free paper cup
-        assert result.prune.set_aside == {"plastic_cup_1"}
-        assert "dinner_plate_1" in result.prune.removed
+        assert result.selection.set_aside == {"plastic_cup_1"}
+        assert "dinner_plate_1" in result.selection.removed
     if method == "pure":
         assert result.objects_kept == result.objects_total
 
@@ -70,8 +70,8 @@ def test_a_goal_object_is_never_set_aside(tmp_path, coffee_domain_path):
     )
     result = plan_task(coffee_domain_path, problem, PlanOptions(timeout=60))
     assert_valid_on_original(coffee_domain_path, problem, result)
-    assert result.prune.set_aside == frozenset()
-    assert {"plastic_cup_1", "dinner_plate_1"} <= result.prune.kept
+    assert result.selection.set_aside == frozenset()
+    assert {"plastic_cup_1", "dinner_plate_1"} <= result.selection.kept
 
 
 @pytest.mark.planner
@@ -81,7 +81,7 @@ def test_widening_brings_back_a_set_aside_alternative_when_the_free_one_cannot_s
     problem.write_text(coffee_problem(extra_plates=2).replace("(empty paper_cup_1)", ""))
     result = plan_task(coffee_domain_path, problem, PlanOptions(timeout=60))
     assert_valid_on_original(coffee_domain_path, problem, result)
-    assert result.prune.set_aside == {"plastic_cup_1"}
+    assert result.selection.set_aside == {"plastic_cup_1"}
     assert result.first_attempt_status == "unsolvable" and len(result.attempts) >= 2
     assert any("plastic_cup_1" in step.args for step in result.plan)
 
@@ -133,7 +133,7 @@ def test_goal_scorer_plans_on_classic_domains_without_a_model(
     problem_path.write_text(problem_text)
     result = plan_task(domain_path, problem_path, PlanOptions(timeout=60))
     assert_valid_on_original(domain_path, problem_path, result)
-    assert result.prune.scores.scorer == "goal"
+    assert result.selection.scores.scorer == "goal"
     assert result.objects_kept <= expected_kept_at_most
 
 

@@ -27,12 +27,12 @@ from relevance_plan.cli.watch import watch
 from relevance_plan.errors import UsageError
 from relevance_plan.exitcodes import EXIT_CODE_DESCRIPTIONS, ExitCode, exit_code_for_status
 from relevance_plan.planning.loop import PlanResult, PlanStatus, plan_task
-from relevance_plan.relevance.prune import PruneResult
+from relevance_plan.relevance.prune import Selection
 from relevance_plan.relevance.scorers import PlanningTask
 from relevance_plan.relevance.setup import Scoring, ScoringOptions, score_problem
 
 
-def _score_and_prune(domain_path, problem_path, options: ScoringOptions) -> tuple[Scoring, PruneResult]:
+def _score_and_prune(domain_path, problem_path, options: ScoringOptions) -> tuple[Scoring, Selection]:
     from relevance_plan.io import load_task
 
     domain, problem = load_task(domain_path, problem_path)
@@ -40,7 +40,7 @@ def _score_and_prune(domain_path, problem_path, options: ScoringOptions) -> tupl
     return scoring, scoring.prune(options.thresholds)
 
 
-def _prune_json(result: PruneResult) -> dict:
+def _prune_json(result: Selection) -> dict:
     problem = result.task.problem
     scores = result.scores
     return {
@@ -166,7 +166,7 @@ def score(domain_path, problem_path, inquiries, as_json, **values):
         fail(f"insufficient cues: {scores.insufficiency}", ExitCode.INSUFFICIENT_CUES)
 
 
-def _inquiries(scoring: Scoring, result: PruneResult) -> dict:
+def _inquiries(scoring: Scoring, result: Selection) -> dict:
     from relevance_plan.relevance.metrics import plan_inquiries
     from relevance_plan.relevance.scene import kind_of
 
@@ -186,7 +186,7 @@ def _inquiries(scoring: Scoring, result: PruneResult) -> dict:
     }
 
 
-def _print_score_table(result: PruneResult) -> None:
+def _print_score_table(result: Selection) -> None:
     scores = result.scores
     problem = result.task.problem
     if not scores.sufficient:
@@ -307,7 +307,7 @@ def plan(domain_path, problem_path, method, plan_file, as_json, quiet, **values)
     say = None if (quiet or as_json) else (lambda message: click.echo(f"... {message}", err=True))
     result = plan_task(domain_path, problem_path, options, progress=say)
     if result.status is PlanStatus.SOLVED:
-        problem = result.prune.task.problem if result.prune is not None else None
+        problem = result.selection.task.problem if result.selection is not None else None
         if problem is None:
             from relevance_plan.io import load_task
 

@@ -67,7 +67,7 @@ from relevance_plan.planning.loop import Attempt, PlanOptions, PlanStatus, first
 from relevance_plan.planning.outcome import PlannerStatus, RunOutcome
 from relevance_plan.planning.up_engines import UP_STATUS, up_status_name
 from relevance_plan.relevance.knowledge import KnowledgeModel, load_model
-from relevance_plan.relevance.prune import DEFAULT_TAU, PruneResult, Thresholds
+from relevance_plan.relevance.prune import DEFAULT_TAU, Selection, Thresholds
 from relevance_plan.relevance.scorers import SCORERS, PlanningTask
 from relevance_plan.relevance.setup import Scoring, resolve_model, score_problem
 
@@ -313,7 +313,7 @@ class _RelevanceStage:
             scoring = dataclasses.replace(scoring, model=None)
         return cls(scoring, up_names, action_names)
 
-    def removed_objects(self, selection: PruneResult | None) -> frozenset:
+    def removed_objects(self, selection: Selection | None) -> frozenset:
         if selection is None:
             return frozenset()
         return frozenset(self.up_names[name] for name in selection.removed)
@@ -335,7 +335,7 @@ class _InnerPlanner:
         self.reader_objects = {up: reader for reader, up in stage.up_names.items()} if stage else {}
         self.reader_actions = {up: reader for reader, up in stage.action_names.items()} if stage else {}
 
-    def __call__(self, selection: PruneResult | None, limit: float | None) -> RunOutcome:
+    def __call__(self, selection: Selection | None, limit: float | None) -> RunOutcome:
         self.calls += 1
         removed = self.stage.removed_objects(selection) if self.stage is not None else frozenset()
         target = restrict_problem(self.problem, removed)

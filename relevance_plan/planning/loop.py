@@ -37,7 +37,7 @@ from relevance_plan.planning.outcome import PlannerStatus, RunOutcome
 from relevance_plan.planning.planners import DEFAULT_PLANNER, DEFAULT_PLANNER_CONFIG, make_planner
 from relevance_plan.planning.validate import ValidationResult, ValidationStatus, validate_plan
 from relevance_plan.relevance.knowledge import KnowledgeModel
-from relevance_plan.relevance.prune import PruneResult, Thresholds, widen
+from relevance_plan.relevance.prune import Selection, Thresholds, widen
 from relevance_plan.relevance.scorers import PlanningTask
 from relevance_plan.relevance.setup import Scoring, ScoringOptions, score_problem
 
@@ -189,7 +189,7 @@ class PlanResult:
     validation_time: float = 0.0
     objects_total: int = 0
     objects_kept: int = 0
-    prune: PruneResult | None = None
+    selection: Selection | None = None  # the first attempt's objects (None: pure planning)
     message: str = ""
     peak_memory_mb: float = 0.0
     planner: str = DEFAULT_PLANNER
@@ -267,10 +267,10 @@ ProgressCallback = Callable[[str], None]
 
 # Runs the planner on one object set (None: the user's full problem) within a
 # time limit (None: no limit) and returns its outcome.
-PlannerCall = Callable[["PruneResult | None", "float | None"], RunOutcome]
+PlannerCall = Callable[["Selection | None", "float | None"], RunOutcome]
 
 
-def first_selection(scoring: Scoring, options: PlanOptions) -> PruneResult:
+def first_selection(scoring: Scoring, options: PlanOptions) -> Selection:
     """The object set of the first attempt: thresholds, closure, and for 'relevance' the goal
     filter and the set-aside of blocked alternatives (a bet on the first attempt only:
     widening never sets aside, so it brings them back if the bet was wrong)."""
@@ -284,7 +284,7 @@ def first_selection(scoring: Scoring, options: PlanOptions) -> PruneResult:
 
 def run_attempts(
     task: PlanningTask,
-    selection: PruneResult | None,
+    selection: Selection | None,
     call_planner: PlannerCall,
     options: PlanOptions,
     *,
@@ -411,10 +411,10 @@ def plan_task(
 
     with scratch_directory() as scratch:
 
-        def call_planner(chosen: PruneResult | None, limit: float | None) -> RunOutcome:
+        def call_planner(objects: Selection | None, limit: float | None) -> RunOutcome:
             target = problem_path
-            if chosen is not None:
-                target = str(write_text_atomic(Path(scratch) / f"pruned-{len(chosen.kept)}.pddl", chosen.text))
+            if objects is not None:
+                target = str(write_text_atomic(Path(scratch) / f"pruned-{len(objects.kept)}.pddl", objects.text))
             return planner.run(domain_path, target, time_limit=limit, memory_limit_mb=options.memory_limit_mb)
 
         attempts, widening_time = run_attempts(
@@ -453,7 +453,7 @@ def summarise(
     attempts: Sequence[Attempt],
     started: float,
     relevance_time: float,
-    selection: PruneResult | None,
+    selection: Selection | None,
     planner: str = DEFAULT_PLANNER,
     scorer: str | None = None,
 ) -> PlanResult:
@@ -467,7 +467,7 @@ def summarise(
         planner_time=sum(a.outcome.wall_time for a in attempts),
         validation_time=sum(a.validation_time for a in attempts),
         objects_total=total,
-        prune=selection,
+        selection=selection,
         peak_memory_mb=max((a.outcome.peak_memory_mb for a in attempts), default=0.0),
         planner=planner,
         scorer=scorer,

@@ -41,7 +41,7 @@ class Thresholds:
 
 
 @dataclass(frozen=True)
-class PruneResult:
+class Selection:
     task: PlanningTask
     scores: ScoreResult
     thresholds: Thresholds
@@ -135,7 +135,7 @@ def prune_with_scores(
     *,
     repair: bool | None = None,
     full_above: float | None = None,
-) -> PruneResult:
+) -> Selection:
     """Threshold the scores, add ``extra`` objects, close over constraints, check, write the text.
 
     With ``prefer_free``, blocked alternatives are set aside (``free_alternatives``)
@@ -184,7 +184,7 @@ def prune_with_scores(
         restored = tuple(restored) + repaired
     if len(kept) > full_above * total:
         return full_problem(task, scores, thresholds, selected, restored)
-    return PruneResult(
+    return Selection(
         task=task,
         scores=scores,
         thresholds=thresholds,
@@ -208,9 +208,9 @@ def full_problem(
     thresholds: Thresholds,
     selected: Set[str] = frozenset(),
     restored: Sequence[Restored] = (),
-) -> PruneResult:
+) -> Selection:
     """The result that keeps every object: the attempt loop plans on the user's own file."""
-    return PruneResult(
+    return Selection(
         task=task,
         scores=scores,
         thresholds=thresholds,
@@ -222,7 +222,7 @@ def full_problem(
 
 
 def widen(
-    result: PruneResult,
+    result: Selection,
     factor: float,
     extra: Set[str] = frozenset(),
     model: KnowledgeModel | None = None,
@@ -230,7 +230,7 @@ def widen(
     *,
     growth: float = GROWTH,
     full_above: float = FULL_ABOVE,
-) -> tuple[PruneResult, frozenset[str]]:
+) -> tuple[Selection, frozenset[str]]:
     """One relaxation step after a failed attempt; returns the new result and the extra set.
 
     The thresholds shrink by ``factor`` and the best-ranked removed objects
@@ -271,14 +271,14 @@ def ranked_names(task: PlanningTask, scores: ScoreResult, kept: Set[str] = froze
     )
 
 
-def ranked_by_score(result: PruneResult) -> Sequence[str]:
+def ranked_by_score(result: Selection) -> Sequence[str]:
     """Pruned objects, most relevant first: the order in which relaxation adds them back."""
     return ranked_names(result.task, result.scores, result.kept)
 
 
 __all__ = [
     "DEFAULT_TAU",
-    "PruneResult",
+    "Selection",
     "Restored",
     "Thresholds",
     "constraint_rules",

@@ -15,7 +15,7 @@ from typing import Any
 from relevance_plan.errors import UsageError
 from relevance_plan.pddl.model import Domain
 from relevance_plan.relevance.knowledge import KnowledgeModel, check_model_applies, find_model, load_model
-from relevance_plan.relevance.prune import PruneResult, Thresholds, prune_with_scores
+from relevance_plan.relevance.prune import Selection, Thresholds, prune_with_scores
 from relevance_plan.relevance.scorers import SCORERS, PlanningTask, ScoreRequest, ScoreResult
 from relevance_plan.relevance.sidecar import necessary_objects
 
@@ -49,7 +49,7 @@ class Scoring:
     def scorer(self) -> str:
         return self.scores.scorer
 
-    def prune(self, thresholds: Thresholds, **how: Any) -> PruneResult:
+    def prune(self, thresholds: Thresholds, **how: Any) -> Selection:
         return prune_with_scores(self.task, self.scores, thresholds, self.model, **how)
 
 
