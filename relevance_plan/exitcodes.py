@@ -42,7 +42,7 @@ EXIT_CODE_DESCRIPTIONS: dict[ExitCode, str] = {
     ExitCode.COMMAND_LINE: "malformed command line (unknown option, missing argument)",
     ExitCode.UNSOLVABLE: "the original problem is unsolvable",
     ExitCode.NO_VALID_PLAN: (
-        "no valid plan: search ended without one (incomplete search, invalid plans, or --no-relax failure)"
+        "no valid plan: search ended without one (incomplete search, invalid plans, or --no-widen failure)"
     ),
     ExitCode.INSUFFICIENT_CUES: "insufficient cues: relevance cannot be decided; give --task, --objective or --human",
     ExitCode.OUT_OF_TIME: "out of time",

@@ -87,10 +87,10 @@ def test_widening_brings_back_a_set_aside_alternative_when_the_free_one_cannot_s
 
 
 @pytest.mark.planner
-def test_no_relax_reports_the_failed_pruning(coffee_files):
+def test_no_widen_reports_the_failed_pruning(coffee_files):
     domain_path, problem_path = coffee_files
     result = plan_task(
-        domain_path, problem_path, PlanOptions(thresholds=Thresholds(0.2, 0.85), relax=False, timeout=60)
+        domain_path, problem_path, PlanOptions(thresholds=Thresholds(0.2, 0.85), widen=False, timeout=60)
     )
     assert result.status is PlanStatus.NO_VALID_PLAN
     assert len(result.attempts) == 1 and not result.plan.steps

@@ -93,8 +93,8 @@ FINGERPRINT_RULES: dict[str, str] = {
     "validators": "derived",  # the validators that will actually run
     "seed": "always",
     "thresholds": "derived",  # as tau_class and tau_element
-    "relax": "pruning",
-    "relax_factor": "pruning",
+    "widen": "pruning",
+    "widen_factor": "pruning",
     "first_share": "pruning",
     "scorer": "pruning",
     "goal_filter": "pruning",

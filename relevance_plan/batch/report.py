@@ -14,9 +14,9 @@ Conventions (all numbers are computed from stored rows only):
     - *first attempt*: share of jobs whose first attempt was not ``solved``
       (includes a first attempt that ran out of its share of the time, and
       jobs that never reached the planner: input errors, insufficient cues);
-      without relaxation this is the paper's failure rate;
+      without widening this is the paper's failure rate;
     - *final*: share of jobs whose final status is neither ``solved`` nor
-      ``out-of-time`` (what is left after relaxation).
+      ``out-of-time`` (what is left after widening).
 - **pure / method** (and **oracle / method**): the median time of ``pure``
   (``oracle``) on the same suite divided by the method's median time: how
   many times faster than pure the method is (above 1: faster).  The one

@@ -29,7 +29,7 @@ section, see ``docs/up.ini.example``) and ask for it by name::
 Options go through UP's ``params``: ``tau_class``, ``tau_element``,
 ``scorer`` (``goal``, ``model`` or ``random``), ``model`` (a knowledge-model
 file), ``domain`` (the knowledge-model domain to look up under ``domains/``),
-``relax_factor``, ``first_share`` and ``seed``; every other parameter goes to
+``widen_factor``, ``first_share`` and ``seed``; every other parameter goes to
 the inner planner unchanged.
 """
 
@@ -77,7 +77,7 @@ ENGINE_NAME = "relevance"
 ENGINE_SCORERS = tuple(name for name in SCORERS if name != "oracle")
 
 # The params this engine takes for itself; the others go to the inner planner.
-OWN_PARAMS = frozenset({"tau_class", "tau_element", "scorer", "model", "domain", "relax_factor", "first_share", "seed"})
+OWN_PARAMS = frozenset({"tau_class", "tau_element", "scorer", "model", "domain", "widen_factor", "first_share", "seed"})
 
 # What our PDDL reader handles (pddl.SUPPORTED_REQUIREMENTS).  The engine
 # supports the intersection of this with the inner planner's kind.
@@ -123,7 +123,7 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin):
         scorer: str | None = None,
         model: str | None = None,
         domain: str | None = None,
-        relax_factor: float = 0.5,
+        widen_factor: float = 0.5,
         first_share: float = 0.5,
         seed: int = 0,
         **kwargs,
@@ -132,8 +132,8 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin):
         Thresholds(float(tau_class), float(tau_element))
         if scorer is not None and scorer not in ENGINE_SCORERS:
             raise UsageError(f"unknown scorer '{scorer}' (choose from: {', '.join(ENGINE_SCORERS)})")
-        if not 0.0 < float(relax_factor) < 1.0:
-            raise UsageError(f"relax_factor must be in (0, 1), got {relax_factor}")
+        if not 0.0 < float(widen_factor) < 1.0:
+            raise UsageError(f"widen_factor must be in (0, 1), got {widen_factor}")
         if not 0.0 < float(first_share) <= 1.0:
             raise UsageError(f"first_share must be in (0, 1], got {first_share}")
         self._model: KnowledgeModel | None = load_model(model) if model is not None else None
@@ -143,7 +143,7 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin):
             method="relevance",
             thresholds=Thresholds(float(tau_class), float(tau_element)),
             scorer=scorer,
-            relax_factor=float(relax_factor),
+            widen_factor=float(widen_factor),
             first_share=float(first_share),
             seed=int(seed),
             timeout=None,

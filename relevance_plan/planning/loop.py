@@ -75,8 +75,8 @@ class PlanOptions:
     timeout: float | None = 120.0  # None: no limit (the UP engine without a timeout)
     memory_limit_mb: int | None = None
     thresholds: Thresholds = field(default_factory=Thresholds)
-    relax: bool = True
-    relax_factor: float = 0.5  # thresholds shrink by this factor at each widening
+    widen: bool = True  # after a failed attempt, widen the selection and try again
+    widen_factor: float = 0.5  # thresholds shrink by this factor at each widening
     first_share: float = 0.5  # share of the remaining time a pruned attempt may use
     scorer: str | None = None  # overrides the method's scorer
     goal_filter: bool = True  # for 'relevance': drop relevant objects no goal-directed action can use
@@ -99,8 +99,8 @@ class PlanOptions:
             raise UsageError(f"--memory-limit must be at least {MIN_MEMORY_MB} MB, got {self.memory_limit_mb}")
         if self.memory_limit_mb is not None and self.memory_limit_mb > MAX_MEMORY_MB:
             raise UsageError(f"--memory-limit must be at most {MAX_MEMORY_MB} MB (1 PB), got {self.memory_limit_mb}")
-        if not 0.0 < self.relax_factor < 1.0:
-            raise UsageError(f"relax factor must be in (0, 1), got {self.relax_factor}")
+        if not 0.0 < self.widen_factor < 1.0:
+            raise UsageError(f"widen factor must be in (0, 1), got {self.widen_factor}")
         if not 0.0 < self.first_share <= 1.0:
             raise UsageError(f"first share must be in (0, 1], got {self.first_share}")
 
@@ -310,7 +310,7 @@ def run_attempts(
         full = current is None or len(current.kept) >= total
         kept = total if full else len(current.kept)
         say(f"attempt {number}: the full problem" if full else f"attempt {number}: {kept} of {total} objects")
-        final = full or not options.relax
+        final = full or not options.widen
         if deadline is None:
             limit = None
         else:
@@ -332,7 +332,7 @@ def run_attempts(
         )
         if validation is not None and validation.status is not ValidationStatus.INVALID:
             break  # valid, out of time, or no validator could run: report it, never retry blindly
-        if not options.relax or full:
+        if not options.widen or full:
             break
         if outcome.status in _PLANNER_STOPS:
             break
@@ -341,7 +341,7 @@ def run_attempts(
             current = None
             continue
         widen_started = time.perf_counter()
-        current, extra = widen(current, options.relax_factor, extra, model, goal_filter)
+        current, extra = widen(current, options.widen_factor, extra, model, goal_filter)
         widening_time += time.perf_counter() - widen_started
     return attempts, widening_time
 
@@ -522,7 +522,7 @@ def _failure(last: Attempt, options: PlanOptions) -> tuple[PlanStatus, str]:
     because = f" ({outcome.reason})" if outcome.reason else ""
     if status is PlanStatus.UNSOLVABLE and not last.full:
         # Only the full problem's unsolvability says anything about the user's problem.
-        why = "relaxation is off" if not options.relax else "no time was left to widen it"
+        why = "widening is off" if not options.widen else "no time was left to widen it"
         return PlanStatus.NO_VALID_PLAN, f"the pruned problem is unsolvable (pruning removed something needed; {why})"
     if status is PlanStatus.UNSOLVABLE:
         return status, "the problem is unsolvable"

@@ -231,7 +231,7 @@ def widen(
     growth: float = GROWTH,
     full_above: float = FULL_ABOVE,
 ) -> tuple[Selection, frozenset[str]]:
-    """One relaxation step after a failed attempt; returns the new result and the extra set.
+    """One widening step after a failed attempt; returns the new result and the extra set.
 
     The thresholds shrink by ``factor`` and the best-ranked removed objects
     (score, then distance from the goal's objects) are put back until the kept
@@ -272,7 +272,7 @@ def ranked_names(task: PlanningTask, scores: ScoreResult, kept: Set[str] = froze
 
 
 def ranked_by_score(result: Selection) -> Sequence[str]:
-    """Pruned objects, most relevant first: the order in which relaxation adds them back."""
+    """Pruned objects, most relevant first: the order in which widening adds them back."""
     return ranked_names(result.task, result.scores, result.kept)
 
 
