@@ -212,7 +212,7 @@ def test_build_jobs_rejects_bad_input(tmp_path, suite):
 @pytest.mark.planner
 def test_compare_stores_every_job_once_and_resumes(suite, tmp_path):
     store = tmp_path / "r.sqlite"
-    summary = compare([suite], ALL_METHODS, PlanOptions(timeout=60), jobs=2, store_path=store, progress=False)
+    summary = compare([suite], ALL_METHODS, PlanOptions(timeout=60), jobs=2, store_path=store, progress=None)
     assert (summary.total, summary.already_stored, summary.ran) == (8, 0, 8)
     rows = read_store(store)
     assert len(rows) == 8
@@ -223,7 +223,7 @@ def test_compare_stores_every_job_once_and_resumes(suite, tmp_path):
     assert by_method["pure"]["world"] == "coffee" and by_method["pure"]["difficulty"] == "simple"
     result = json.loads(by_method["relevance"]["result_json"])
     assert result["status"] == "solved" and result["plan"]
-    again = compare([suite], ALL_METHODS, PlanOptions(timeout=60), jobs=2, store_path=store, progress=False)
+    again = compare([suite], ALL_METHODS, PlanOptions(timeout=60), jobs=2, store_path=store, progress=None)
     assert (again.already_stored, again.ran) == (8, 0)
     assert read_store(store) == rows
 
@@ -232,7 +232,7 @@ def test_compare_stores_every_job_once_and_resumes(suite, tmp_path):
 def test_input_error_becomes_a_row_not_a_crash(suite, tmp_path):
     (suite / "coffee-simple-009.pddl").write_text("(define (problem broken) (:domain coffee) (:objects a - ")
     store = tmp_path / "r.sqlite"
-    summary = compare([suite], "pure,relevance", PlanOptions(timeout=60), jobs=2, store_path=store, progress=False)
+    summary = compare([suite], "pure,relevance", PlanOptions(timeout=60), jobs=2, store_path=store, progress=None)
     assert summary.ran == 6
     rows = read_store(store)
     broken = [r for r in rows if r["problem"] == "coffee-simple-009.pddl"]
@@ -251,7 +251,7 @@ def test_input_error_becomes_a_row_not_a_crash(suite, tmp_path):
 def test_planner_crash_is_recorded_with_its_exit_code(suite, tmp_path, monkeypatch, body, code):
     monkeypatch.setenv(fast_downward.FAST_DOWNWARD_ENV, str(fake_planner(tmp_path, body)))
     store = tmp_path / "r.sqlite"
-    summary = compare([suite], "pure,relevance", PlanOptions(timeout=30), jobs=2, store_path=store, progress=False)
+    summary = compare([suite], "pure,relevance", PlanOptions(timeout=30), jobs=2, store_path=store, progress=None)
     assert summary.ran == 4 and summary.failed == 4
     rows = read_store(store)
     assert len(rows) == 4
@@ -267,7 +267,7 @@ def test_missing_planner_stops_the_batch_and_stores_nothing(suite, tmp_path, mon
     monkeypatch.setenv(fast_downward.FAST_DOWNWARD_ENV, str(tmp_path / "no-such-driver.py"))
     store = tmp_path / "r.sqlite"
     with pytest.raises(PlannerError):
-        compare([suite], "pure", PlanOptions(timeout=30), jobs=1, store_path=store, progress=False)
+        compare([suite], "pure", PlanOptions(timeout=30), jobs=1, store_path=store, progress=None)
     assert read_store(store) == []
 
 
@@ -455,14 +455,14 @@ def test_dask_cluster_runs_the_jobs_into_the_local_store(tmp_path):
             client.close()
         store = tmp_path / "results.sqlite"
         summary = compare(
-            [suite], ALL_METHODS, PlanOptions(timeout=60), jobs=1, store_path=store, scheduler=address, progress=False
+            [suite], ALL_METHODS, PlanOptions(timeout=60), jobs=1, store_path=store, scheduler=address, progress=None
         )
         assert (summary.total, summary.ran, summary.failed) == (4, 4, 0)
         rows = read_store(store)
         assert sorted(r["method"] for r in rows) == sorted(ALL_METHODS.split(","))
         assert {r["status"] for r in rows} == {"solved"}
         again = compare(
-            [suite], ALL_METHODS, PlanOptions(timeout=60), jobs=1, store_path=store, scheduler=address, progress=False
+            [suite], ALL_METHODS, PlanOptions(timeout=60), jobs=1, store_path=store, scheduler=address, progress=None
         )
         assert (again.already_stored, again.ran) == (4, 0)
     finally:
@@ -581,11 +581,11 @@ def test_a_demo_without_workdir_removes_its_temporary_folder(tmp_path, monkeypat
     monkeypatch.setattr(tempfile, "tempdir", str(tmp_path))
     monkeypatch.setattr(demo, "compare", fake_compare)
     if outcome == "finished":
-        run = demo.run_demo(None, tiny=True, progress=False)
+        run = demo.run_demo(None, tiny=True, progress=None)
         assert run.workdir is None and run.store_path is None
     else:
         with pytest.raises((StoreError, KeyboardInterrupt)):
-            demo.run_demo(None, tiny=True, progress=False)
+            demo.run_demo(None, tiny=True, progress=None)
     assert list(tmp_path.iterdir()) == []
 
 

@@ -30,6 +30,7 @@ from relevance_plan.batch.store import ResultKey, ResultStore, check_store_writa
 from relevance_plan.errors import UsageError
 from relevance_plan.planning.loop import MAX_TIMEOUT, PlanOptions, PlanStatus
 from relevance_plan.planning.planners import make_planner
+from relevance_plan.progress import ProgressCallback, ProgressEvent, ignore
 from relevance_plan.signals import stop_event_on_signals
 
 
@@ -54,37 +55,22 @@ class CompareSummary:
         )
 
 
-class _Quiet:
-    """Stands in for a progress bar when progress is off."""
-
-    def advance(self, failed: bool = False) -> None:
-        pass
-
-
-@contextlib.contextmanager
-def _reporter(total: int, description: str, show: bool):
-    if not show:
-        yield _Quiet()
-        return
-    from relevance_plan.progress import progress
-
-    with progress(total, description) as bar:
-        yield bar
-
-
 class _Recorder:
-    """Writes finished rows (main thread only) and counts them."""
+    """Writes finished rows (main thread only), counts them and reports each one."""
 
-    def __init__(self, store: ResultStore, bar):
+    def __init__(self, store: ResultStore, total: int, progress: ProgressCallback):
         self.store = store
-        self.bar = bar
-        self.statuses: Counter = Counter()
+        self.total = total
+        self.done = 0
+        self.progress = progress
+        self.statuses: Counter[str] = Counter()
 
     def __call__(self, row: dict[str, Any]) -> None:
         inserted = self.store.add(row)
         if inserted:
             self.statuses[row["status"]] += 1
-        self.bar.advance(failed=row["status"] != PlanStatus.SOLVED.value)
+        self.done += 1
+        self.progress(ProgressEvent(done=self.done, total=self.total, failed=row["status"] != PlanStatus.SOLVED.value))
 
 
 def check_compare_options(
@@ -122,7 +108,7 @@ def compare(
     store_path: str | os.PathLike = "results.sqlite",
     scheduler: str | None = None,
     scheduler_timeout: float = DEFAULT_SCHEDULER_TIMEOUT,
-    progress: bool = True,
+    progress: ProgressCallback | None = None,
 ) -> CompareSummary:
     """Run every method (with every planner) on every problem of ``suites``; store one row per job.
 
@@ -155,7 +141,7 @@ def compare(
         with ResultStore(store_path) as store:
             stored = store.keys()
             pending = [job for key, job in unique.items() if key not in stored]
-            statuses = _run(pending, store, client, scheduler, jobs, progress)
+            statuses = _run(pending, store, client, scheduler, jobs, progress or ignore)
     finally:
         if client is not None:
             with contextlib.suppress(Exception):
@@ -174,12 +160,14 @@ def compare(
     )
 
 
-def _run(pending: Sequence[Job], store: ResultStore, client, scheduler, workers: int, show: bool) -> dict:
+def _run(
+    pending: Sequence[Job], store: ResultStore, client, scheduler, workers: int, progress: ProgressCallback
+) -> dict[str, int]:
     """Run ``pending`` into ``store``; the count of each stored status."""
     if not pending:
         return {}
-    with stop_event_on_signals() as stop, _reporter(len(pending), f"compare ({len(pending)} jobs)", show) as bar:
-        recorder = _Recorder(store, bar)
+    with stop_event_on_signals() as stop:
+        recorder = _Recorder(store, len(pending), progress)
         if client is None:
             run_local(pending, workers, recorder, stop)
         else:

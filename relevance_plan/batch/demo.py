@@ -21,6 +21,7 @@ from relevance_plan.batch.report import build_report, format_report
 from relevance_plan.batch.store import KEY_COLUMNS, ResultStore
 from relevance_plan.errors import InputFileError, UsageError
 from relevance_plan.planning.loop import METHODS, PlanOptions
+from relevance_plan.progress import ProgressCallback
 
 DEMO_SUITES = (("coffee", "simple"), ("cereal", "simple"))
 DEMO_SEED = 0
@@ -65,7 +66,7 @@ def run_demo(
     *,
     distractors: int | None = None,
     tiny: bool = False,
-    progress: bool = True,
+    progress: ProgressCallback | None = None,
 ) -> DemoRun:
     """Generate coffee-simple and cereal-simple suites (``count`` problems each,
     seed 0, ``distractors`` distractors), compare relevance, pure, random and
@@ -84,7 +85,9 @@ def run_demo(
     return dataclasses.replace(run, workdir=None, store_path=None, suites=())
 
 
-def _run_in(workdir: Path, count: int, timeout: float, jobs: int, distractors: int, progress: bool) -> DemoRun:
+def _run_in(
+    workdir: Path, count: int, timeout: float, jobs: int, distractors: int, progress: ProgressCallback | None
+) -> DemoRun:
     from relevance_plan.generators.generate import generate_suite
 
     try:

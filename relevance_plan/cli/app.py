@@ -99,25 +99,23 @@ def main():
 def generate(world, difficulty, count, seed, out_dir, distractors, size, force):
     """Generate a seeded benchmark suite for WORLD: coffee or cereal, or a classic world
     (blocksworld, logistics, gripper, ferry, grid, miconic, each also as NAME-typed)."""
+    from relevance_plan.cli.display import progress_bar
     from relevance_plan.generators.classic import CLASSIC_WORLDS, check_classic_arguments, generate_classic_suite
     from relevance_plan.generators.generate import generate_suite
     from relevance_plan.generators.scenes import WORLD_NAMES
-    from relevance_plan.progress import progress
 
     if world in CLASSIC_WORLDS:
         if distractors is not None:
             raise UsageError("--distractors applies to the kitchen worlds; classic worlds take --size")
         check_classic_arguments(world, count, seed, size)
-        with progress(count, f"generate {world}") as bar:
-            paths = generate_classic_suite(
-                world, count, seed, Path(out_dir), size=size, progress=lambda done, total: bar.advance(), force=force
-            )
+        with progress_bar(f"generate {world}", count) as bar:
+            paths = generate_classic_suite(world, count, seed, Path(out_dir), size=size, progress=bar, force=force)
     else:
         if world not in WORLD_NAMES:
             raise UsageError(f"unknown world {world!r}: choose one of {', '.join(WORLD_NAMES + CLASSIC_WORLDS)}")
         if size is not None:
             raise UsageError("--size applies to the classic worlds; kitchen worlds take --distractors")
-        with progress(count, f"generate {world}-{difficulty}") as bar:
+        with progress_bar(f"generate {world}-{difficulty}", count) as bar:
             paths = generate_suite(
                 world,
                 difficulty,
@@ -125,7 +123,7 @@ def generate(world, difficulty, count, seed, out_dir, distractors, size, force):
                 seed,
                 Path(out_dir),
                 distractors=distractors,
-                progress=lambda done, total: bar.advance(),
+                progress=bar,
                 force=force,
             )
     click.echo(f"wrote {len(paths)} problems to {out_dir}")
@@ -304,7 +302,7 @@ def plan(domain_path, problem_path, method, plan_file, as_json, quiet, **values)
 
     options = take_plan_options(values, method)
     make_planner(options.planner, options.planner_config, check=True)
-    say = None if (quiet or as_json) else (lambda message: click.echo(f"... {message}", err=True))
+    say = None if (quiet or as_json) else (lambda event: click.echo(f"... {event.message}", err=True))
     result = plan_task(domain_path, problem_path, options, progress=say)
     if result.status is PlanStatus.SOLVED:
         problem = result.selection.task.problem if result.selection is not None else None

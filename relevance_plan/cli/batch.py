@@ -14,6 +14,7 @@ from relevance_plan.cli.common import (
     take_plan_options,
     take_scoring,
 )
+from relevance_plan.cli.display import progress_bar
 from relevance_plan.errors import UsageError
 from relevance_plan.planning.loop import METHODS
 
@@ -64,18 +65,19 @@ def compare(suite_dirs, methods, planners, jobs, store_path, scheduler, schedule
     from relevance_plan.planning.planners import split_planner_names
 
     options = take_plan_options(values)
-    summary = run_compare(
-        list(suite_dirs),
-        methods,
-        options,
-        planners=split_planner_names(planners) if planners else (),
-        seeds=seeds,
-        jobs=jobs,
-        store_path=store_path,
-        scheduler=scheduler,
-        scheduler_timeout=scheduler_timeout,
-        progress=not quiet,
-    )
+    with progress_bar("compare", live=None if not quiet else False) as bar:
+        summary = run_compare(
+            list(suite_dirs),
+            methods,
+            options,
+            planners=split_planner_names(planners) if planners else (),
+            seeds=seeds,
+            jobs=jobs,
+            store_path=store_path,
+            scheduler=scheduler,
+            scheduler_timeout=scheduler_timeout,
+            progress=None if quiet else bar,
+        )
     click.echo(summary.describe())
     click.echo(f"report: relevance-plan report {store_path}")
 
@@ -181,7 +183,10 @@ def demo(workdir, count, timeout, jobs, distractors, tiny, quiet):
     """Generate coffee and cereal suites, compare relevance, pure, random and oracle, print the table."""
     from relevance_plan.batch.demo import run_demo
 
-    run = run_demo(workdir, count, timeout, jobs, distractors=distractors, tiny=tiny, progress=not quiet)
+    with progress_bar("compare", live=None if not quiet else False) as bar:
+        run = run_demo(
+            workdir, count, timeout, jobs, distractors=distractors, tiny=tiny, progress=None if quiet else bar
+        )
     click.echo(run.table, nl=False)
     click.echo("")
     if run.workdir is None:

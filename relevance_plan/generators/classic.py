@@ -31,6 +31,7 @@ from typing import Any
 from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.errors import UsageError
 from relevance_plan.pddl.formatter import format_problem_parts
+from relevance_plan.progress import ProgressCallback
 
 GENERATOR = "relevance_plan.generators"
 CLASSIC_VERSION = "1"
@@ -392,7 +393,7 @@ def generate_classic_suite(
     seed: int,
     out_dir: Path,
     size: int | None = None,
-    progress: Callable[[int, int], None] | None = None,
+    progress: ProgressCallback | None = None,
     force: bool = False,
 ) -> list[Path]:
     """Write ``count`` problems of a classic world into ``out_dir`` (the kitchen suites' layout and rules)."""

@@ -36,6 +36,7 @@ from relevance_plan.pddl.plans import Plan
 from relevance_plan.planning.outcome import PlannerStatus, RunOutcome
 from relevance_plan.planning.planners import DEFAULT_PLANNER, DEFAULT_PLANNER_CONFIG, make_planner
 from relevance_plan.planning.validate import ValidationResult, ValidationStatus, validate_plan
+from relevance_plan.progress import ProgressCallback, ProgressEvent
 from relevance_plan.relevance.knowledge import KnowledgeModel
 from relevance_plan.relevance.prune import Selection, Thresholds, widen
 from relevance_plan.relevance.scorers import PlanningTask
@@ -263,7 +264,6 @@ _PLANNER_FAULTS = (PlannerStatus.INPUT_ERROR, PlannerStatus.PLANNER_CRASH)
 # configuration, would fail the full problem the same way: stop.
 _PLANNER_STOPS = (PlannerStatus.UNSUPPORTED, PlannerStatus.PLANNER_CONFIG_ERROR)
 
-ProgressCallback = Callable[[str], None]
 
 # Runs the planner on one object set (None: the user's full problem) within a
 # time limit (None: no limit) and returns its outcome.
@@ -290,14 +290,14 @@ def run_attempts(
     *,
     started: float,
     model: KnowledgeModel | None = None,
-    say: ProgressCallback | None = None,
+    progress: ProgressCallback | None = None,
 ) -> tuple[list[Attempt], float]:
     """Plan on ``selection`` (None: the full problem), widening after each failure.
 
     Returns the attempts and the seconds spent widening.  The deadline is
     ``started + options.timeout``.
     """
-    say = say or (lambda message: None)
+    say = _teller(progress)
     total = len(task.problem.objects)
     deadline = None if options.timeout is None else started + options.timeout
     goal_filter = options.goal_filter and options.narrows_first
@@ -346,6 +346,13 @@ def run_attempts(
     return attempts, widening_time
 
 
+def _teller(progress: ProgressCallback | None) -> Callable[[str], None]:
+    """A function that reports one step as a message (nothing when nobody listens)."""
+    if progress is None:
+        return lambda message: None
+    return lambda message: progress(ProgressEvent(message=message))
+
+
 def _validate(
     task: PlanningTask, outcome: RunOutcome, options: PlanOptions, deadline: float | None
 ) -> tuple[ValidationResult | None, float]:
@@ -365,7 +372,7 @@ def plan_task(
     progress: ProgressCallback | None = None,
 ) -> PlanResult:
     """Run one method on one problem; the plan returned is always validated on the original."""
-    say = progress or (lambda message: None)
+    say = _teller(progress)
     started = time.perf_counter()
     domain_path, problem_path = str(domain_path), str(problem_path)
     planner = make_planner(options.planner, options.planner_config)
@@ -418,7 +425,13 @@ def plan_task(
             return planner.run(domain_path, target, time_limit=limit, memory_limit_mb=options.memory_limit_mb)
 
         attempts, widening_time = run_attempts(
-            task, selection, call_planner, options, started=started, model=scoring.model if scoring else None, say=say
+            task,
+            selection,
+            call_planner,
+            options,
+            started=started,
+            model=scoring.model if scoring else None,
+            progress=progress,
         )
     return summarise(
         task,
