@@ -11,7 +11,7 @@ import pytest
 
 from relevance_plan.io import load_task
 from relevance_plan.pddl.parser import read_domain, read_problem
-from relevance_plan.planning.loop import PlanOptions, first_selection
+from relevance_plan.planning.loop import PlanOptions
 from relevance_plan.planning.validate import validate_plan
 from relevance_plan.relevance.scorers import PlanningTask
 from relevance_plan.relevance.setup import score_problem
@@ -151,7 +151,7 @@ def first_kept(domain_text: str, problem_text: str) -> tuple[PlanningTask, froze
     domain = read_domain(domain_text)
     task = PlanningTask(domain, read_problem(problem_text, domain))
     options = PlanOptions()
-    selection = first_selection(score_problem(task, options.scoring), options)
+    selection = score_problem(task, options.scoring).first_selection()
     return task, selection.kept, selection.restored
 
 

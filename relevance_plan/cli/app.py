@@ -37,13 +37,14 @@ def _score_and_prune(domain_path, problem_path, options: ScoringOptions) -> tupl
 
     domain, problem = load_task(domain_path, problem_path)
     scoring = score_problem(PlanningTask(domain, problem), options, domain_path=domain_path, problem_path=problem_path)
-    return scoring, scoring.prune(options.thresholds)
+    return scoring, scoring.first_selection()
 
 
 def _prune_json(result: Selection) -> dict:
     problem = result.task.problem
     scores = result.scores
     return {
+        **result.describe(),
         "scorer": scores.scorer,
         "sufficient": scores.sufficient,
         "insufficiency": scores.insufficiency or None,
@@ -52,14 +53,7 @@ def _prune_json(result: Selection) -> dict:
         "task_entropy": scores.task_entropy,
         "tau_class": result.thresholds.tau_class,
         "tau_element": result.thresholds.tau_element,
-        "objects_total": len(problem.objects),
-        "kept": [problem.display(n) for n in problem.objects if n in result.kept],
-        "removed": [problem.display(n) for n in result.removed],
         "selected": [problem.display(n) for n in problem.objects if n in result.selected],
-        "restored": [
-            {"object": problem.display(r.name), "reason": r.reason, "rule": r.rule, "because_of": r.because_of}
-            for r in result.restored
-        ],
         "scores": {problem.display(n): round(s, 6) for n, s in scores.element_scores.items()},
         "classes": {
             c: {"relevance": round(s, 6), "kept": s > result.thresholds.tau_class}
@@ -166,6 +160,7 @@ def score(domain_path, problem_path, inquiries, as_json, **values):
 
 def _inquiries(scoring: Scoring, result: Selection) -> dict:
     from relevance_plan.relevance.metrics import plan_inquiries
+    from relevance_plan.relevance.prune import select_relevant
     from relevance_plan.relevance.scene import kind_of
 
     task, model, scores = scoring.task, scoring.model, scoring.scores
@@ -173,7 +168,9 @@ def _inquiries(scoring: Scoring, result: Selection) -> dict:
     if model is not None:
         structural = {c.name for c in model.classes.values() if c.fixed_relevance is not None or c.from_contents}
     kinds = {name: kind_of(name) for name in task.problem.objects}
-    found = plan_inquiries(scores, result.selected, kinds, structural)
+    # what the human may want is what relevance selects, before planning narrows it (goal filter, set-aside)
+    relevant = select_relevant(task, scores, result.thresholds)
+    found = plan_inquiries(scores, relevant, kinds, structural)
     return {
         "necessary": list(found.necessary),
         "questions": list(found.optional),
@@ -213,6 +210,9 @@ def _print_score_table(result: Selection) -> None:
                 why = "named in the goal"
         elif name in restored:
             kept, why = "restored", restored[name].reason
+        elif name in result.set_aside:
+            kept = "aside"
+            why = "something stands on it and a free object of its class is kept (plan brings it back if needed)"
         else:
             kept, why = "no", scores.explanations.get(name, "")
         click.echo(

@@ -63,7 +63,7 @@ from relevance_plan.errors import RelevancePlanError, UsageError
 from relevance_plan.pddl.model import Domain
 from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.pddl.plans import Plan, PlanStep
-from relevance_plan.planning.loop import Attempt, PlanOptions, PlanStatus, first_selection, run_attempts, summarise
+from relevance_plan.planning.loop import Attempt, PlanOptions, PlanStatus, run_attempts, summarise
 from relevance_plan.planning.outcome import PlannerStatus, RunOutcome
 from relevance_plan.planning.up_engines import UP_STATUS, up_status_name
 from relevance_plan.relevance.knowledge import KnowledgeModel, load_model
@@ -218,7 +218,7 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin):
             attempts = _solve_whole(inner, options, started)
             relevance_time = 0.0
         else:
-            selection = first_selection(stage.scoring, options)
+            selection = stage.scoring.first_selection(options.narrows_first)
             relevance_time = time.perf_counter() - started
             attempts, widening_time = run_attempts(
                 stage.scoring.task, selection, inner, options, started=started, model=stage.scoring.model

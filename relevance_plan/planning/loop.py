@@ -29,6 +29,7 @@ import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, fields
 from pathlib import Path
+from typing import Any
 
 from relevance_plan.errors import UsageError
 from relevance_plan.io import load_domain, load_problem, scratch_directory, write_text_atomic
@@ -40,7 +41,7 @@ from relevance_plan.progress import ProgressCallback, ProgressEvent
 from relevance_plan.relevance.knowledge import KnowledgeModel
 from relevance_plan.relevance.prune import Selection, Thresholds, widen
 from relevance_plan.relevance.scorers import PlanningTask
-from relevance_plan.relevance.setup import Scoring, ScoringOptions, score_problem
+from relevance_plan.relevance.setup import ScoringOptions, score_problem
 
 METHODS = ("relevance", "pure", "random", "oracle")
 # Limits beyond these are typos: the watchdog's timer cannot even hold much more.
@@ -164,6 +165,7 @@ class Attempt:
     validation: ValidationResult | None
     time_limit: float | None
     validation_time: float = 0.0
+    selection: Selection | None = None  # the objects it planned on (None: the user's full problem)
 
     @property
     def full(self) -> bool:
@@ -237,6 +239,7 @@ class PlanResult:
                     "planner_exit_code": a.outcome.exit_code,
                     "status": a.status.value,
                     "wall_time": round(a.outcome.wall_time, 4),
+                    **_objects_of(a),
                 }
                 for a in self.attempts
             ],
@@ -244,6 +247,14 @@ class PlanResult:
             "message": self.message,
             "plan": [str(step) for step in self.plan.steps] if self.status is PlanStatus.SOLVED else [],
         }
+
+
+def _objects_of(attempt: Attempt) -> dict[str, Any]:
+    """The attempt's kept, removed and restored objects (with reasons); the full problem keeps all."""
+    if attempt.selection is None:
+        return {"pruned": False, "kept": "all", "removed": [], "restored": []}
+    described = attempt.selection.describe()
+    return {key: described[key] for key in ("pruned", "unpruned_reason", "kept", "removed", "restored", "set_aside")}
 
 
 _PLANNER_TO_PLAN_STATUS = {
@@ -268,18 +279,6 @@ _PLANNER_STOPS = (PlannerStatus.UNSUPPORTED, PlannerStatus.PLANNER_CONFIG_ERROR)
 # Runs the planner on one object set (None: the user's full problem) within a
 # time limit (None: no limit) and returns its outcome.
 PlannerCall = Callable[["Selection | None", "float | None"], RunOutcome]
-
-
-def first_selection(scoring: Scoring, options: PlanOptions) -> Selection:
-    """The object set of the first attempt: thresholds, closure, and for 'relevance' the goal
-    filter and the set-aside of blocked alternatives (a bet on the first attempt only:
-    widening never sets aside, so it brings them back if the bet was wrong)."""
-    narrow = options.narrows_first
-    return scoring.prune(
-        options.thresholds,
-        goal_filter=options.goal_filter and narrow,
-        prefer_free=options.prefer_free and narrow,
-    )
 
 
 def run_attempts(
@@ -328,6 +327,7 @@ def run_attempts(
                 validation,
                 limit,
                 validation_time,
+                None if full else current,
             )
         )
         if validation is not None and validation.status is not ValidationStatus.INVALID:
@@ -406,7 +406,7 @@ def plan_task(
                 planner=planner.name,
                 scorer=scoring.scorer,
             )
-        selection = first_selection(scoring, options)
+        selection = scoring.first_selection(options.narrows_first)
         overran = _overran("pruning and closure", started, options, total)
         if overran is not None:
             return overran

@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections import defaultdict
 from collections.abc import Sequence, Set
 from dataclasses import dataclass, field
+from typing import Any
 
 from relevance_plan.pddl.writer import write_pruned_problem
 from relevance_plan.relevance.analysis import ConstraintRule, infer_constraint_rules, single_valued_predicates
@@ -50,6 +51,7 @@ class Selection:
     restored: tuple[Restored, ...]  # in the order closure found them
     text: str = field(repr=False)  # the pruned problem in the user's own layout
     set_aside: frozenset[str] = frozenset()  # relevant alternatives left for a later attempt (see free_alternatives)
+    unpruned: str = ""  # why every object is kept, when one is ("" when the selection prunes)
 
     @property
     def removed(self) -> tuple[str, ...]:
@@ -58,6 +60,23 @@ class Selection:
     @property
     def sufficient(self) -> bool:
         return self.scores.sufficient
+
+    def describe(self) -> dict[str, Any]:
+        """What was kept, removed and restored (with reasons), in the user's spelling, for JSON output."""
+        problem = self.task.problem
+        return {
+            "pruned": bool(self.removed),
+            "unpruned_reason": self.unpruned or None,
+            "objects_total": len(problem.objects),
+            "objects_kept": len(self.kept),
+            "kept": [problem.display(n) for n in problem.objects if n in self.kept],
+            "removed": [problem.display(n) for n in self.removed],
+            "restored": [
+                {"object": problem.display(r.name), "reason": r.reason, "rule": r.rule, "because_of": r.because_of}
+                for r in self.restored
+            ],
+            "set_aside": [problem.display(n) for n in problem.objects if n in self.set_aside],
+        }
 
 
 def constraint_rules(task: PlanningTask, model: KnowledgeModel | None) -> tuple[ConstraintRule, ...]:
@@ -183,7 +202,8 @@ def prune_with_scores(
         kept, repaired, _ = repair_selection(task, kept, scores.element_scores, close)
         restored = tuple(restored) + repaired
     if len(kept) > full_above * total:
-        return full_problem(task, scores, thresholds, selected, restored)
+        why = f"the selection kept {len(kept)} of {total} objects (more than {full_above:.0%}): the full problem"
+        return full_problem(task, scores, thresholds, selected, restored, why)
     return Selection(
         task=task,
         scores=scores,
@@ -193,7 +213,17 @@ def prune_with_scores(
         restored=restored,
         text=write_pruned_problem(task.problem, kept),
         set_aside=set_aside,
+        unpruned=_why_nothing_pruned(task, kept, restored),
     )
+
+
+def _why_nothing_pruned(task: PlanningTask, kept: Set[str], restored: Sequence[Restored]) -> str:
+    if len(kept) < len(task.problem.objects):
+        return ""
+    rules = sorted({item.rule for item in restored})
+    if "soundness" in rules:
+        return "every object is kept: a quantifier ranges over them (see the soundness reasons)"
+    return "every object is relevant or needed by a relevant one" + (f" ({', '.join(rules)})" if rules else "")
 
 
 def soundness_reason(name: str, requirement: KeptForSoundness) -> Restored:
@@ -208,8 +238,9 @@ def full_problem(
     thresholds: Thresholds,
     selected: Set[str] = frozenset(),
     restored: Sequence[Restored] = (),
+    why: str = "",
 ) -> Selection:
-    """The result that keeps every object: the attempt loop plans on the user's own file."""
+    """The result that keeps every object (``why`` says why): the attempt loop plans on the user's own file."""
     return Selection(
         task=task,
         scores=scores,
@@ -218,6 +249,7 @@ def full_problem(
         kept=frozenset(task.problem.objects),
         restored=tuple(restored),
         text=task.problem.text,
+        unpruned=why,
     )
 
 
@@ -244,7 +276,8 @@ def widen(
     target = max(len(result.kept) + 4, int(growth * len(result.kept) + 0.999))
     if target > full_above * total:
         everything = frozenset(task.problem.objects)
-        return full_problem(task, result.scores, result.thresholds.scaled(factor), result.selected), everything
+        why = f"widening would keep more than {full_above:.0%} of the objects: the full problem"
+        return full_problem(task, result.scores, result.thresholds.scaled(factor), result.selected, (), why), everything
     ranked = ranked_by_score(result)
     extra = frozenset(extra) | frozenset(ranked[: target - len(result.kept)])
     widened = prune_with_scores(

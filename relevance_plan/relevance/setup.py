@@ -31,6 +31,8 @@ class ScoringOptions:
     human: str | None = None
     thresholds: Thresholds = field(default_factory=Thresholds)
     seed: int = 0
+    goal_filter: bool = True  # the first selection leaves out relevant objects no goal-directed action can use
+    prefer_free: bool = True  # ... and, with a model, alternatives something stands on when a free one exists
 
     def __post_init__(self) -> None:
         if self.scorer is not None and self.scorer not in SCORERS:
@@ -44,6 +46,7 @@ class Scoring:
     task: PlanningTask
     model: KnowledgeModel | None
     scores: ScoreResult
+    options: ScoringOptions = field(default_factory=ScoringOptions)
 
     @property
     def scorer(self) -> str:
@@ -51,6 +54,16 @@ class Scoring:
 
     def prune(self, thresholds: Thresholds, **how: Any) -> Selection:
         return prune_with_scores(self.task, self.scores, thresholds, self.model, **how)
+
+    def first_selection(self, narrow: bool = True) -> Selection:
+        """The objects ``prune`` writes and ``plan`` tries first: thresholds and closure, and when
+        ``narrow`` (the relevance method) the goal filter and the set-aside of blocked alternatives
+        (a bet on the first attempt only: widening never sets aside, so it brings them back)."""
+        return self.prune(
+            self.options.thresholds,
+            goal_filter=self.options.goal_filter and narrow,
+            prefer_free=self.options.prefer_free and narrow,
+        )
 
 
 def resolve_model(
@@ -113,7 +126,7 @@ def score_problem(
         seed=options.seed,
         necessary=necessary,
     )
-    return Scoring(task, model, SCORERS[scorer](task, request))
+    return Scoring(task, model, SCORERS[scorer](task, request), options)
 
 
 __all__ = ["Scoring", "ScoringOptions", "choose_scorer", "resolve_model", "score_problem"]

@@ -30,7 +30,7 @@ from dataclasses import dataclass, field, replace
 from relevance_plan.pddl.model import Domain, Problem, goal_objects, pinned_objects
 from relevance_plan.pddl.plans import Plan
 from relevance_plan.pddl.writer import write_pruned_problem
-from relevance_plan.planning.loop import PlanOptions, PlanResult, PlanStatus, first_selection, run_attempts, summarise
+from relevance_plan.planning.loop import PlanOptions, PlanResult, PlanStatus, run_attempts, summarise
 from relevance_plan.planning.outcome import RunOutcome
 from relevance_plan.planning.validate import validate_plan
 from relevance_plan.relevance.analysis import single_valued_predicates
@@ -442,7 +442,7 @@ class Session:
             if not scores.sufficient:  # plan with the selection in force (stale)
                 scores = restrict(self.selection.scores, problem.objects)
             scorer = scores.scorer
-            selection = first_selection(Scoring(task, self.model, scores), options)
+            selection = Scoring(task, self.model, scores, options.scoring).first_selection(options.narrows_first)
         relevance_time = time.perf_counter() - started
 
         def call_planner(objects: Selection | None, limit: float | None) -> RunOutcome:
