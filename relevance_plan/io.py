@@ -47,6 +47,24 @@ def load_problem(path: str | os.PathLike, domain: Domain) -> Problem:
     return read_problem(read_text(path, "problem file"), domain, str(path))
 
 
+Source = str | os.PathLike  # a file's path, or (a str starting with '(' or ';') the PDDL text itself
+
+
+def is_pddl_text(source: object) -> bool:
+    """A string that holds a PDDL definition rather than naming a file."""
+    return isinstance(source, str) and source.lstrip().startswith(("(", ";"))
+
+
+def load_sources(domain: Domain | Source, problem: Problem | Source) -> tuple[Domain, Problem]:
+    """The domain and the problem from paths, PDDL text, or values already read."""
+    if not isinstance(domain, Domain):
+        domain = read_domain(domain, "<domain text>") if is_pddl_text(domain) else load_domain(domain)
+    if not isinstance(problem, Problem):
+        text = is_pddl_text(problem)
+        problem = read_problem(str(problem), domain, "<problem text>") if text else load_problem(problem, domain)
+    return domain, problem
+
+
 def load_task(domain_path: str | os.PathLike, problem_path: str | os.PathLike) -> tuple[Domain, Problem]:
     domain = load_domain(domain_path)
     return domain, load_problem(problem_path, domain)

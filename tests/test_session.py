@@ -590,7 +590,7 @@ def test_the_shipped_example_replays_the_paper_demonstration():
 @pytest.mark.skipif(REPO is None, reason="needs the source tree (examples/, README.md)")
 def test_the_readme_session_snippet_runs(monkeypatch):
     readme = (REPO / "README.md").read_text()
-    snippet = next(block for block in readme.split("```python")[1:] if "relevance_plan.session" in block)
+    snippet = next(block for block in readme.split("```python")[1:] if "rp.Session" in block)
     monkeypatch.chdir(REPO)
     namespace: dict = {}
     exec(snippet.split("```")[0], namespace)

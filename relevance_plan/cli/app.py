@@ -294,7 +294,6 @@ def prune(domain_path, problem_path, output, as_json, **values):
 def plan(domain_path, problem_path, method, plan_file, as_json, quiet, **values):
     """Prune, plan, validate on the original problem, widen until solved."""
     from relevance_plan.io import STDOUT, write_output
-    from relevance_plan.pddl.plans import format_plan
     from relevance_plan.planning.planners import make_planner
 
     if plan_file == STDOUT and as_json:
@@ -305,12 +304,7 @@ def plan(domain_path, problem_path, method, plan_file, as_json, quiet, **values)
     say = None if (quiet or as_json) else (lambda event: click.echo(f"... {event.message}", err=True))
     result = plan_task(domain_path, problem_path, options, progress=say)
     if result.status is PlanStatus.SOLVED:
-        problem = result.selection.task.problem if result.selection is not None else None
-        if problem is None:
-            from relevance_plan.io import load_task
-
-            problem = load_task(domain_path, problem_path)[1]
-        write_output(plan_file, format_plan(result.plan, problem.display))
+        write_output(plan_file, result.plan_text())
     if as_json:
         data = result.to_json()
         data["plan_file"] = str(plan_file) if result.status is PlanStatus.SOLVED else None

@@ -33,7 +33,8 @@ from typing import Any
 
 from relevance_plan.errors import UsageError
 from relevance_plan.io import load_domain, load_problem, scratch_directory, write_text_atomic
-from relevance_plan.pddl.plans import Plan
+from relevance_plan.pddl.model import Problem
+from relevance_plan.pddl.plans import Plan, format_plan
 from relevance_plan.planning.outcome import PlannerStatus, RunOutcome
 from relevance_plan.planning.planners import DEFAULT_PLANNER, DEFAULT_PLANNER_CONFIG, make_planner
 from relevance_plan.planning.validate import ValidationResult, ValidationStatus, validate_plan
@@ -198,6 +199,11 @@ class PlanResult:
     planner: str = DEFAULT_PLANNER
     scorer: str | None = None
     log_tail: str = ""  # the last planner's log tail when it failed
+    problem: Problem | None = field(default=None, repr=False)  # the original problem (for the user's spelling)
+
+    def plan_text(self) -> str:
+        """The plan in the IPC format, object names in the user's spelling."""
+        return format_plan(self.plan, self.problem.display if self.problem is not None else None)
 
     @property
     def valid(self) -> bool:
@@ -484,6 +490,7 @@ def summarise(
         peak_memory_mb=max((a.outcome.peak_memory_mb for a in attempts), default=0.0),
         planner=planner,
         scorer=scorer,
+        problem=task.problem,
     )
     if not attempts:
         return PlanResult(status=PlanStatus.OUT_OF_TIME, message="no time left for planning", **common)

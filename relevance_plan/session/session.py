@@ -23,10 +23,19 @@ file access is loading the knowledge model, once, when it starts.
 
 from __future__ import annotations
 
+import itertools
+import os
+import tempfile
 import time
+import weakref
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, replace
+from pathlib import Path
+from types import MappingProxyType
+from typing import Any
 
+from relevance_plan.io import Source, is_pddl_text, load_sources, write_text_atomic
+from relevance_plan.pddl.formatter import format_domain
 from relevance_plan.pddl.model import Domain, Problem, goal_objects, pinned_objects
 from relevance_plan.pddl.plans import Plan
 from relevance_plan.pddl.writer import write_pruned_problem
@@ -82,17 +91,65 @@ class EventReport:
     ask: Ask | None = None
     seconds: float = 0.0  # trigger check + determination
     plan: PlanReport | None = None
+    display: Mapping[str, str] = field(default_factory=dict, repr=False)  # object -> the user's spelling
 
     @property
     def reason(self) -> str:
         return "; ".join(self.reasons)
 
+    def show(self, name: str) -> str:
+        """An object's name in the user's spelling (a name that left the scene as given)."""
+        return self.display.get(name, name)
+
+    @property
+    def kept(self) -> list[str]:
+        """The objects the selection in force keeps, in the user's spelling, sorted."""
+        return sorted(self.show(n) for n in (self.selection.kept if self.selection is not None else ()))
+
+    def to_json(self) -> dict[str, Any]:
+        """The event's report as ``watch`` prints it (names in the user's spelling)."""
+        data: dict[str, Any] = {
+            "seq": self.seq,
+            "event": self.event,
+            "triggered": self.triggered,
+            "reason": self.reason,
+            "sufficient": self.sufficient,
+            "stale": self.stale,
+        }
+        if self.error is not None:
+            data["error"] = self.error
+        if not self.sufficient:
+            data["insufficiency"] = self.insufficiency
+        if self.triggered:
+            data["kept"] = self.kept
+            restored = self.selection.restored if self.selection is not None else ()
+            data["restored"] = [{"object": self.show(r.name), "reason": r.reason} for r in restored]
+            data["removed"] = len(self.selection.removed) if self.selection is not None else None
+        data["added"] = [self.show(n) for n in self.added]
+        data["dropped"] = [self.show(n) for n in self.dropped]
+        ask = self.ask
+        data["ask"] = None if ask is None else {"cue": ask.cue, "question": ask.question, "options": list(ask.options)}
+        data["determination_ms"] = round(self.seconds * 1000, 3)
+        if self.plan is not None:
+            data["plan_status"] = self.plan.status.value
+            data["plan"] = ["(" + " ".join([s.action, *map(self.show, s.args)]) + ")" for s in self.plan.steps]
+            data["plan_source"] = self.plan.source
+            data["plan_message"] = self.plan.message
+        return data
+
 
 class Session:
+    """A live scene and its relevance, kept current one event at a time (see the module docstring).
+
+    ``domain`` and ``problem`` are values, paths or PDDL text.  Without ``run_planner``, a
+    ``plan`` event runs ``plan_options.planner`` on files in a private folder the session removes
+    when it is garbage-collected.
+    """
+
     def __init__(
         self,
-        domain: Domain,
-        problem: Problem,
+        domain: Domain | Source,
+        problem: Problem | Source,
         options: ScoringOptions = ScoringOptions(),
         *,
         model: KnowledgeModel | None = None,
@@ -102,6 +159,11 @@ class Session:
         plan_in_loop: bool = False,
         triggers: dict[str, Trigger] | None = None,
     ):
+        domain_text = str(domain) if is_pddl_text(domain) else None
+        if domain_path is None and not isinstance(domain, Domain) and domain_text is None:
+            domain_path = os.fspath(domain)
+        domain, problem = load_sources(domain, problem)
+        domain_path = domain_path or domain.path
         self.domain = domain
         self.options = options
         if model is None and options.scorer in (None, "model"):
@@ -114,8 +176,8 @@ class Session:
         else:
             self.scores = FullScores(self.scene, self.model, options, domain_path)
         self.plan_options = plan_options or PlanOptions(thresholds=options.thresholds)
-        self.run_planner = run_planner
-        self.plan_in_loop = plan_in_loop and run_planner is not None
+        self.run_planner = run_planner or planner_in_folder(self, self.plan_options, domain_path, domain_text or domain)
+        self.plan_in_loop = plan_in_loop
         self.triggers = TRIGGERS if triggers is None else triggers
         self.served: str | None = None  # the human of the last 'human' event
         self.seq = 0
@@ -228,6 +290,7 @@ class Session:
             sufficient=self.scores.sufficient,
             stale=not self.scores.sufficient and self.selection is not None,
             selection=self.selection,
+            display=MappingProxyType(self.scene.display),
         )
 
     def _show(self, name: str) -> str:
@@ -383,6 +446,7 @@ class Session:
             dropped=tuple(sorted(before - now)) if reasons else (),
             ask=self.ask(scores) if (reasons or not scores.sufficient) and not self.idle else None,
             seconds=seconds,
+            display=MappingProxyType(self.scene.display),
         )
 
     def ask(self, scores: ScoreResult | None = None) -> Ask | None:
@@ -467,6 +531,29 @@ class Session:
         self.plan_steps = steps
         self.planned_kept = self.kept
         self.planned_goal = self.scene.goal
+
+
+def planner_in_folder(owner: object, options: PlanOptions, domain_path: str | None, domain: str | Domain) -> RunPlanner:
+    """A planner call that writes each problem into a private folder, removed with ``owner``
+    (the domain too, from its text, when it has no file)."""
+    from relevance_plan.planning.planners import make_planner
+
+    folder = tempfile.TemporaryDirectory(prefix="relevance-plan-session-")
+    weakref.finalize(owner, folder.cleanup)
+    if domain_path is None:
+        domain_path = str(
+            write_text_atomic(
+                Path(folder.name) / "domain.pddl", domain if isinstance(domain, str) else format_domain(domain)
+            )
+        )
+    runs = itertools.count(1)
+
+    def run(text: str, limit: float | None) -> RunOutcome:
+        planner = make_planner(options.planner, options.planner_config)
+        path = write_text_atomic(Path(folder.name) / f"problem-{next(runs)}.pddl", text)
+        return planner.run(str(domain_path), str(path), time_limit=limit, memory_limit_mb=options.memory_limit_mb)
+
+    return run
 
 
 @dataclass(frozen=True)
