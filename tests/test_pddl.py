@@ -144,3 +144,22 @@ def test_a_forall_effect_with_a_missing_part_is_a_syntax_error(effect):
     with pytest.raises(PDDLParseError, match="'forall' in an effect takes") as caught:
         read_domain(text, "d.pddl")
     assert caught.value.line == 2
+
+
+def test_a_dash_glued_to_its_type_is_read_as_published_domains_write_it():
+    domain = read_domain(
+        "(define (domain d) (:requirements :typing) (:types ball room)"
+        " (:predicates (at ?b -ball ?r - room)) (:action a :parameters (?b -ball) :precondition (and) :effect (and)))"
+    )
+    assert domain.predicates["at"] == (("?b", "ball"), ("?r", "room"))
+    assert domain.actions[0].parameters == (("?b", "ball"),)
+
+
+@pytest.mark.parametrize(
+    "effect, construct",
+    [("(oneof (p) (q))", "non-deterministic effects"), ("(probabilistic 0.5 (p))", "probabilistic effects")],
+)
+def test_fond_and_ppddl_effects_are_refused_naming_the_construct(effect, construct):
+    text = f"(define (domain d) (:predicates (p) (q)) (:action a :parameters () :precondition (and) :effect {effect}))"
+    with pytest.raises(UnsupportedFeatureError, match=construct):
+        read_domain(text, "d.pddl")

@@ -79,6 +79,14 @@ UNSUPPORTED_REQUIREMENTS = {
     ":events": "events (PDDL+)",
     ":time": "continuous time (PDDL+)",
     ":object-fluents": "object fluents",
+    ":probabilistic-effects": "probabilistic effects (PPDDL)",
+    ":non-deterministic": "non-deterministic effects (FOND)",
+    ":rewards": "rewards (PPDDL)",
+}
+# Effects of other planning formalisms, refused naming the construct.
+UNSUPPORTED_EFFECTS = {
+    "oneof": "non-deterministic effects ('oneof', FOND)",
+    "probabilistic": "probabilistic effects ('probabilistic', PPDDL)",
 }
 # Functions every planner knows without a declaration.
 BUILTIN_FUNCTIONS = {"total-cost": (), "total-time": ()}
@@ -183,6 +191,16 @@ class _Reader:
             item = items[index]
             if isinstance(item, Node):
                 self.fail(f"unexpected list in {what}", item)
+            if len(item.text) > 1 and item.text[0] == "-" and item.text[1].isalpha():
+                # '?x -type', a dash glued to its type as some published domains write it
+                if not pending:
+                    self.fail(f"type given to nothing in {what}", item)
+                type_name = item.text[1:].lower()
+                result.extend((symbol, type_name) for symbol in pending)
+                groups.append((tuple(pending), item))
+                pending = []
+                index += 1
+                continue
             if item.text == "-":
                 if index + 1 >= len(items):
                     self.fail(f"missing type after '-' in {what}", item)
@@ -408,6 +426,8 @@ class _Reader:
             return f.When(self.condition(args[0], scope), self.effect(args[1], scope))
         if head in f.NUMERIC_EFFECT_OPS:
             return self.numeric_effect(node, head, args, scope)
+        if head in UNSUPPORTED_EFFECTS and head not in scope.predicates:
+            self.fail(f"{UNSUPPORTED_EFFECTS[head]} are not supported", node, UnsupportedFeatureError)
         timed = self.timed_part(node, head or "", args, scope)
         if timed is not None:
             if timed[0] == "all":
