@@ -24,6 +24,7 @@ from __future__ import annotations
 from collections import defaultdict, deque
 from collections.abc import Callable, Mapping, Sequence, Set
 from dataclasses import dataclass
+from typing import Any
 
 from relevance_plan.pddl.formulas import Atom, conjuncts, effect_literals
 from relevance_plan.relevance.analysis import object_distances
@@ -313,7 +314,9 @@ def repair_selection(
     pool = first + [name for name in pool if name not in set(first)]
     rank = {name: i for i, name in enumerate(pool)}
     current = kept
-    batch = max(4, len(kept))
+    # The missing classes' representatives alone first (one airplane may carry every package),
+    # then doubling batches by rank.
+    batch = len(first) or max(4, len(kept))
     while pool and not check.reachable:
         take, pool = pool[:batch], pool[batch:]
         current, _ = close(current | frozenset(take))
@@ -322,12 +325,13 @@ def repair_selection(
         check = relaxed_reachability(task, current, budget)
         if not check.complete:
             break
-        batch *= 2
+        batch = max(4, len(kept), 2 * batch)
     if not check.reachable:
         # Nothing short of the whole problem reaches the goal (or the check gave up): let the planner decide.
         added = frozenset(current) - kept
         return frozenset(current), tuple(Restored(n, "", "reachability", ("goal",)) for n in sorted(added)), check
     used = {name for name in check.plan_objects if name in task.problem.objects and name not in kept}
+    used, check = _economize(task, kept, used, classes, rank, check, close, budget)
     step_of: dict[str, tuple] = {}
     for step in check.plan:
         for arg in step[1:]:
@@ -339,6 +343,61 @@ def repair_selection(
     closed, closure_reasons = close(kept | frozenset(used))
     reasons.extend(r for r in closure_reasons if r.name not in used and r.name not in kept)
     return closed, tuple(reasons), check
+
+
+def _economize(
+    task: Any,
+    kept: frozenset[str],
+    used: set[str],
+    classes: Mapping[str, str],
+    rank: Mapping[str, int],
+    check: Reachability,
+    close: CloseFn,
+    budget: int,
+) -> tuple[set[str], Reachability]:
+    """Fewer added objects of one class where fewer do: a relaxed plan takes the first airplane it
+    meets for each package, when one airplane carries them all.  Class by class (most members
+    first), keep the member the current relaxed plan uses most, alone, if the goal stays
+    relaxed-reachable, else drop the less used half while it does; what the last relaxed plan no
+    longer uses goes too.  A few checks, each on the small kept set."""
+    by_class: dict[str, list[str]] = {}
+    for name in used:
+        by_class.setdefault(classes.get(name, "object"), []).append(name)
+    for cls in sorted((c for c in by_class if len(by_class[c]) > 1), key=lambda c: (-len(by_class[c]), c)):
+        while True:
+            members = _by_use([m for m in by_class[cls] if m in used], check, rank)
+            if len(members) < 2:
+                break
+            trial_used, trial = _without(task, kept, used, members[1:], close, budget)
+            if trial is None and len(members) > 3:
+                trial_used, trial = _without(task, kept, used, members[len(members) // 2 :], close, budget)
+            if trial is None or len(trial_used) >= len(used):
+                break  # no smaller set reaches the goal (closure may bring the dropped ones back)
+            used, check = trial_used, trial
+    return used, check
+
+
+def _by_use(members: list[str], check: Reachability, rank: Mapping[str, int]) -> list[str]:
+    uses: dict[str, int] = {}
+    for step in check.plan:
+        for arg in step[1:]:
+            uses[arg] = uses.get(arg, 0) + 1
+    return sorted(members, key=lambda n: (-uses.get(n, 0), rank.get(n, len(rank)), n))
+
+
+def _without(
+    task: Any, kept: frozenset[str], used: set[str], dropped: list[str], close: CloseFn, budget: int
+) -> tuple[set[str], Reachability | None]:
+    """``used`` without ``dropped`` (and without what its relaxed plan then leaves unused), if the goal
+    stays relaxed-reachable."""
+    trial = used - set(dropped)
+    closed, _ = close(kept | frozenset(trial))
+    attempt = relaxed_reachability(task, closed, budget)
+    if not attempt.reachable:
+        return used, None
+    # what the relaxed plan uses, closure's additions included (they stay only through their cause)
+    needed = {n for n in attempt.plan_objects if n in closed and n not in kept}
+    return needed or trial, attempt
 
 
 def typing_of(task) -> InferredTypes:

@@ -1,0 +1,47 @@
+"""Selections as small as the task needs: where many objects share a role, one does."""
+
+from __future__ import annotations
+
+import random
+
+from relevance_plan.data import DOMAINS_DIR
+from relevance_plan.io import load_domain
+from relevance_plan.pddl.parser import read_problem
+from relevance_plan.relevance.scorers import PlanningTask
+from relevance_plan.relevance.setup import ScoringOptions, score_problem
+
+
+def many_goal_logistics(seed: int, cities: int = 6, packages: int = 12, airplanes: int = 20) -> str:
+    """Every package in the goal, each in another city than its destination; many airplanes."""
+    rng = random.Random(seed)
+    objects = []
+    init = []
+    for c in range(cities):
+        objects += [f"city{c} - city", f"ap{c} - airport", f"post{c} - location", f"truck{c} - truck"]
+        init += [f"(in-city ap{c} city{c})", f"(in-city post{c} city{c})", f"(at truck{c} post{c})"]
+    for a in range(airplanes):
+        objects.append(f"plane{a} - airplane")
+        init.append(f"(at plane{a} ap{rng.randrange(cities)})")
+    goal = []
+    for p in range(packages):
+        origin, target = rng.sample(range(cities), 2)
+        objects.append(f"pkg{p} - package")
+        init.append(f"(at pkg{p} post{origin})")
+        goal.append(f"(at pkg{p} post{target})")
+    return (
+        f"(define (problem many-goals-{seed}) (:domain logistics-typed) (:objects {' '.join(objects)})"
+        f" (:init {' '.join(init)}) (:goal (and {' '.join(goal)})))"
+    )
+
+
+def test_the_repair_picks_one_airplane_where_one_suffices():
+    domain = load_domain(DOMAINS_DIR / "logistics-typed" / "domain.pddl")
+    for seed in range(3):
+        problem = read_problem(many_goal_logistics(seed), domain)
+        selection = score_problem(PlanningTask(domain, problem), ScoringOptions(scorer="goal")).first_selection()
+        airplanes = {n for n in selection.kept if problem.objects[n] == "airplane"}
+        packages = {n for n in problem.objects if problem.objects[n] == "package"}
+        assert packages <= selection.kept
+        assert len(airplanes) == 1, (seed, sorted(airplanes))
+        reasons = {r.name: r for r in selection.restored}
+        assert reasons[next(iter(airplanes))].rule == "reachability"
