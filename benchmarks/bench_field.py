@@ -1,0 +1,295 @@
+"""The field's own problems: does `prune` accept them, and is relevance ever slower than the planner?
+
+Walks one or more corpus folders (any layout `compare` reads: IPC folders with
+``domain.pddl``, per-problem domain files, potassco's ``domains/`` +
+``instances/``, pddlgym's ``NAME.pddl`` + ``NAME/``), one entry per folder.
+
+``accept`` (the default) reads each folder's domain and first problem and
+prunes it with the goal scorer (no planner), then prints per track
+(classical, adl, numeric, temporal, pddl3; from the requirements and the
+model; FOND/PPDDL, PDDL+ and malformed files apart) how many folders were
+accepted, and every refusal with its one line.
+A traceback is a failure of the tool, never a refusal.  Target: at least
+95 % of the folders of every track except PDDL+ accepted.  Seconds per folder.
+
+``speed`` runs, for every classical problem Fast Downward reads (up to
+``--per-folder`` problems per folder), pure Fast Downward (`lama-first`) and
+`relevance-plan plan` (the goal scorer, every plan validated on the
+original), one after the other in one run, and prints pure / relevance per
+problem, the geometric mean (target >= 0.95) and every problem slower than
+pure x 1.25 + 0.5 s (target: none).  Both count the whole process, start-up
+included (`--in-process` measures the library call instead).  A few minutes
+per 50 problems on 2 cores.
+
+    python benchmarks/bench_field.py accept /path/to/corpus
+    python benchmarks/bench_field.py speed /path/to/corpus --per-folder 2 --timeout 60
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import statistics
+import subprocess
+import sys
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(REPO))
+
+from relevance_plan.errors import PDDLParseError, RelevancePlanError  # noqa: E402
+from relevance_plan.io import SuiteProblem, find_suite_problems, load_domain, load_problem  # noqa: E402
+from relevance_plan.pddl.model import Domain  # noqa: E402
+
+DEFAULT_CORPUS = "/work/corpus"
+
+
+@dataclass
+class Folder:
+    path: Path
+    entries: list[SuiteProblem]
+
+
+def folders(roots: list[str]) -> list[Folder]:
+    """Every folder under ``roots`` that holds a problem with a domain (its first problems)."""
+    found: list[Folder] = []
+    for root in roots:
+        for directory, subdirectories, files in sorted(os.walk(root)):
+            subdirectories.sort()
+            if not any(name.endswith(".pddl") for name in files):
+                continue
+            try:
+                entries = [e for e in find_suite_problems(directory) if e.domain is not None and e.error is None]
+            except RelevancePlanError:
+                continue
+            if entries:
+                found.append(Folder(Path(directory), entries))
+    seen: set[tuple] = set()
+    unique = []
+    for folder in found:  # a domain file shared by nested folders counts once
+        key = (str(folder.entries[0].domain), str(folder.entries[0].problem))
+        if key not in seen:
+            seen.add(key)
+            unique.append(folder)
+    return unique
+
+
+def track(domain: Domain) -> str:
+    requirements = domain.requirements
+    if {":processes", ":events", ":time"} & requirements:
+        return "pddl+"
+    if domain.temporal or ":durative-actions" in requirements:
+        return "temporal"
+    if domain.numeric or {":fluents", ":numeric-fluents"} & requirements:
+        return "numeric"
+    if domain.constraints is not None or {":preferences", ":constraints"} & requirements:
+        return "pddl3"
+    if domain.derived or {":adl", ":conditional-effects", ":derived-predicates"} & requirements:
+        return "adl"
+    return "classical"
+
+
+def accept(roots: list[str]) -> int:
+    from relevance_plan.relevance.scorers import PlanningTask
+    from relevance_plan.relevance.setup import ScoringOptions, score_problem
+
+    totals: dict[str, list[int]] = {}
+    failures = 0
+    for folder in folders(roots):
+        entry = folder.entries[0]
+        name = os.path.relpath(folder.path, os.path.commonpath(roots) if len(roots) > 1 else roots[0])
+        kind, verdict = "?", "ok"
+        try:
+            domain = load_domain(entry.domain)
+            kind = track(domain)
+            problem = load_problem(entry.problem, domain)
+            selection = score_problem(PlanningTask(domain, problem), ScoringOptions(scorer="goal")).first_selection()
+            verdict = f"ok, kept {len(selection.kept)}/{len(problem.objects)}"
+        except PDDLParseError as error:
+            verdict, kind = f"refused: {error}", "malformed"
+        except RelevancePlanError as error:
+            verdict = f"refused: {error}"
+            kind = kind if kind != "?" else _guess_track(entry.domain)
+        except Exception as error:  # a traceback is the tool's failure, counted apart
+            verdict = f"FAILURE {type(error).__name__}: {error}"
+            failures += 1
+        counts = totals.setdefault(kind, [0, 0])
+        counts[1] += 1
+        counts[0] += verdict.startswith("ok")
+        if not verdict.startswith("ok"):
+            print(f"{kind:<10} {name}: {verdict[:200]}")
+    print()
+    print("| track | folders | accepted | share | target |")
+    print("|---|---|---|---|---|")
+    for kind, (ok, total) in sorted(totals.items()):
+        target = "-" if kind in ("pddl+", "fond/ppddl", "malformed") else ">= 95 %"
+        print(f"| {kind} | {total} | {ok} | {100 * ok / total:.0f} % | {target} |")
+    print(f"\ntracebacks: {failures}")
+    return 1 if failures else 0
+
+
+def _guess_track(domain_path: Path) -> str:
+    """The track of a domain our reader refused: from its text."""
+    text = domain_path.read_text(errors="replace").lower()
+    words = (
+        (":non-deterministic", "fond/ppddl"),
+        ("(oneof", "fond/ppddl"),
+        (":probabilistic-effects", "fond/ppddl"),
+        ("(probabilistic", "fond/ppddl"),
+        (":durative-action", "temporal"),
+        (":process", "pddl+"),
+        (":functions", "numeric"),
+    )
+    for word, kind in words:
+        if word in text:
+            return kind
+    return "classical"
+
+
+def timed(command: list[str], timeout: float) -> tuple[int, float]:
+    started = time.perf_counter()
+    try:
+        completed = subprocess.run(command, capture_output=True, timeout=timeout + 30)
+        code = completed.returncode
+    except subprocess.TimeoutExpired:
+        code = -1
+    return code, time.perf_counter() - started
+
+
+def speed(roots: list[str], per_folder: int, timeout: float, in_process: bool) -> int:
+    from relevance_plan.planning.fast_downward import find_fast_downward
+
+    driver = str(find_fast_downward())
+    rows = []
+    print("| problem | objects | pure (s) | relevance (s) | pure/relevance | kept | attempts |")
+    print("|---|---|---|---|---|---|---|")
+    with _scratch() as scratch:
+        for folder in folders(roots):
+            for entry in folder.entries[:per_folder]:
+                try:
+                    domain = load_domain(entry.domain)
+                    if track(domain) not in ("classical", "adl"):
+                        continue
+                    total = len(load_problem(entry.problem, domain).objects)
+                except RelevancePlanError:
+                    continue
+                plan_file = scratch / "sas_plan"
+                pure_code, pure = timed(
+                    [
+                        sys.executable,
+                        driver,
+                        "--plan-file",
+                        str(plan_file),
+                        "--overall-time-limit",
+                        f"{int(timeout)}s",
+                        "--alias",
+                        "lama-first",
+                        str(entry.domain),
+                        str(entry.problem),
+                    ],
+                    timeout,
+                )
+                if pure_code != 0:
+                    continue  # the benchmark compares problems the planner alone solves
+                kept, attempts, relevance = _relevance(entry, timeout, scratch, in_process)
+                if relevance is None:
+                    print(f"| {entry.problem.name} | {total} | {pure:.2f} | FAILED | - | - | - |")
+                    rows.append((entry.problem, pure, math.inf))
+                    continue
+                rows.append((entry.problem, pure, relevance))
+                print(
+                    f"| {entry.problem.parent.name}/{entry.problem.name} | {total} | {pure:.2f} | {relevance:.2f}"
+                    f" | {pure / relevance:.2f} | {kept}/{total} | {attempts} |",
+                    flush=True,
+                )
+    return _speed_summary(rows)
+
+
+def _relevance(entry: SuiteProblem, timeout: float, scratch: Path, in_process: bool):
+    import json
+
+    if in_process:
+        from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task
+
+        started = time.perf_counter()
+        result = plan_task(entry.domain, entry.problem, PlanOptions(timeout=timeout, scorer="goal"))
+        elapsed = time.perf_counter() - started
+        solved = result.status is PlanStatus.SOLVED
+        return result.objects_kept, len(result.attempts), elapsed if solved else None
+    command = [
+        sys.executable,
+        "-m",
+        "relevance_plan",
+        "plan",
+        str(entry.domain),
+        str(entry.problem),
+        "--json",
+        "--scorer",
+        "goal",
+        "--timeout",
+        str(timeout),
+        "--plan-file",
+        str(scratch / "plan"),
+    ]
+    started = time.perf_counter()
+    completed = subprocess.run(command, capture_output=True, timeout=timeout + 60)
+    elapsed = time.perf_counter() - started
+    if completed.returncode != 0:
+        return None, None, None
+    data = json.loads(completed.stdout)
+    return data["objects_kept"], data["attempts"], elapsed
+
+
+def _speed_summary(rows: list) -> int:
+    ratios = [pure / relevance for _, pure, relevance in rows if relevance not in (None, math.inf)]
+    if not rows:
+        print("no classical problem that Fast Downward solves was found")
+        return 1
+    gmean = math.exp(statistics.fmean(math.log(r) for r in ratios)) if ratios else 0.0
+    slow = [(p, pure, rel) for p, pure, rel in rows if rel > pure * 1.25 + 0.5]
+    print(f"\n{len(rows)} problems; geometric mean pure/relevance {gmean:.2f} (target >= 0.95)")
+    print(f"slower than pure x 1.25 + 0.5 s: {len(slow)} (target 0)")
+    for problem, pure, rel in slow:
+        print(f"  {problem}: pure {pure:.2f} s, relevance {rel:.2f} s")
+    return 0
+
+
+def _scratch():
+    import tempfile
+
+    class _Folder:
+        def __enter__(self):
+            self.tmp = tempfile.TemporaryDirectory(prefix="bench-field-")
+            return Path(self.tmp.name)
+
+        def __exit__(self, *exc):
+            self.tmp.cleanup()
+
+    return _Folder()
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(
+        description=__doc__.split("\n\n")[0],
+        epilog=__doc__.split("\n\n", 1)[1],
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    parser.add_argument("mode", choices=("accept", "speed"), nargs="?", default="accept")
+    parser.add_argument("roots", nargs="*", default=[DEFAULT_CORPUS], help="corpus folders (default: %(default)s)")
+    parser.add_argument("--per-folder", type=int, default=1, help="problems per folder in speed mode")
+    parser.add_argument("--timeout", type=float, default=60.0)
+    parser.add_argument("--in-process", action="store_true", help="time the library call, not the command")
+    args = parser.parse_args()
+    for root in args.roots:
+        if not Path(root).is_dir():
+            parser.error(f"not a folder: {root}")
+    if args.mode == "accept":
+        return accept(args.roots)
+    return speed(args.roots, args.per_folder, args.timeout, args.in_process)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
