@@ -10,7 +10,8 @@ prunes it with the goal scorer (no planner), then prints per track
 model; FOND/PPDDL, PDDL+ and malformed files apart) how many folders were
 accepted, and every refusal with its one line.
 A traceback is a failure of the tool, never a refusal.  Target: at least
-95 % of the folders of every track except PDDL+ accepted.  Seconds per folder.
+95 % of the folders of every track except PDDL+ accepted.  Takes about a
+second per folder.
 
 ``speed`` runs, for every classical problem Fast Downward reads (up to
 ``--per-folder`` problems per folder), pure Fast Downward (`lama-first`) and
@@ -18,7 +19,7 @@ A traceback is a failure of the tool, never a refusal.  Target: at least
 original), one after the other in one run, and prints pure / relevance per
 problem, the geometric mean (target >= 0.95) and every problem slower than
 pure x 1.25 + 0.5 s (target: none).  Both count the whole process, start-up
-included (`--in-process` measures the library call instead).  A few minutes
+included (`--in-process` measures the library call instead).  Takes a few minutes
 per 50 problems on 2 cores.
 
     python benchmarks/bench_field.py accept /path/to/corpus
