@@ -151,13 +151,13 @@ def same(session: Session, scores, result) -> bool:
         return False
     if not scores.sufficient:
         return current.insufficiency == scores.insufficiency
-    decision = session.decision
+    selection = session.selection
     return (
         current.element_scores == scores.element_scores
         and current.class_scores == scores.class_scores
-        and decision.kept == result.kept
-        and decision.selected == result.selected
-        and {r.name for r in decision.restored} == {r.name for r in result.restored}
+        and selection.kept == result.kept
+        and selection.selected == result.selected
+        and {r.name for r in selection.restored} == {r.name for r in result.restored}
     )
 
 

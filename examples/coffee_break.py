@@ -67,7 +67,7 @@ def main() -> None:
             if report.triggered and not report.sufficient:
                 print(f"{'':34}insufficient cues: {report.insufficiency.split(' — ')[0]}")
             elif report.triggered:
-                kept = sorted(show(n, n) for n in report.determination.kept)
+                kept = sorted(show(n, n) for n in report.selection.kept)
                 print(f"{'':34}kept {len(kept)} of {len(session.scene.objects)}: {', '.join(kept)}")
                 if report.added or report.dropped:
                     print(

@@ -1,8 +1,11 @@
-"""Exit codes of the ``relevance-plan`` command, grouped by tens.
+"""Exit codes of the ``relevance-plan`` command, grouped by tens: the tool's one exit table.
 
 Modelled on Fast Downward's ``driver/returncodes.py``: 0-9 success,
 10-19 no plan, 20-29 resource limits, 30-39 bad input, 40-49 tool errors.
-``cli.py`` is the only module that calls ``sys.exit``.
+Both ways of ending are mapped here: a library error (:func:`exit_code_for_error`)
+and a ``plan`` verdict (:func:`exit_code_for_status`).  The CLI
+(``relevance_plan.cli``) is the only part of the package that calls ``sys.exit``.
+A planner's own exit codes are its adapter's business and never appear here.
 """
 
 from __future__ import annotations
@@ -39,12 +42,15 @@ EXIT_CODE_DESCRIPTIONS: dict[ExitCode, str] = {
     ExitCode.COMMAND_LINE: "malformed command line (unknown option, missing argument)",
     ExitCode.UNSOLVABLE: "the original problem is unsolvable",
     ExitCode.NO_VALID_PLAN: (
-        "no valid plan: search ended without one (incomplete search, invalid plans, or --no-relax failure)"
+        "no valid plan: search ended without one (incomplete search, invalid plans, or --no-widen failure)"
     ),
     ExitCode.INSUFFICIENT_CUES: "insufficient cues: relevance cannot be decided; give --task, --objective or --human",
     ExitCode.OUT_OF_TIME: "out of time",
     ExitCode.OUT_OF_MEMORY: "out of memory",
-    ExitCode.USAGE: "bad argument value (threshold outside [0, 1], unknown method, negative count, ...)",
+    ExitCode.USAGE: (
+        "bad argument value (threshold outside [0, 1], unknown method, negative count, ...)"
+        " or an optional extra that is not installed"
+    ),
     ExitCode.INPUT_FILE: "missing, unreadable or unwritable file or directory",
     ExitCode.PDDL_SYNTAX: "malformed PDDL",
     ExitCode.UNSUPPORTED_PDDL: "PDDL feature not supported",
@@ -76,3 +82,25 @@ def exit_code_for_error(error: errors.RelevancePlanError) -> ExitCode:
         if isinstance(error, error_type):
             return code
     return ExitCode.USAGE
+
+
+# A ``plan`` verdict (a ``planning.loop.PlanStatus`` value; this module sits below
+# the planning layer, so the table is keyed by the one spelling of each status).
+PLAN_STATUS_EXIT: dict[str, ExitCode] = {
+    "solved": ExitCode.SUCCESS,
+    "unsolvable": ExitCode.UNSOLVABLE,
+    "no-valid-plan": ExitCode.NO_VALID_PLAN,
+    "out-of-time": ExitCode.OUT_OF_TIME,
+    "out-of-memory": ExitCode.OUT_OF_MEMORY,
+    "insufficient-cues": ExitCode.INSUFFICIENT_CUES,
+    "input-error": ExitCode.PDDL_SYNTAX,
+    "unsupported": ExitCode.UNSUPPORTED_PDDL,
+    "planner-config-error": ExitCode.USAGE,
+    "planner-error": ExitCode.PLANNER,
+    "validator-unavailable": ExitCode.VALIDATOR,
+}
+
+
+def exit_code_for_status(status: str) -> ExitCode:
+    """The exit code of a ``plan`` verdict, given as its status value."""
+    return PLAN_STATUS_EXIT[status]

@@ -17,12 +17,14 @@ from pathlib import Path
 import pytest
 from support import REPO, TOOL, invoke, make_row, process_gone
 
-from relevance_plan.batch.jobs import build_jobs, compare, connect_scheduler, run_job
+from relevance_plan.batch.compare import compare
+from relevance_plan.batch.executors import connect_scheduler
+from relevance_plan.batch.jobs import build_jobs, run_job
 from relevance_plan.batch.store import SCHEMA_VERSION, ResultStore
 from relevance_plan.errors import InputFileError, SchedulerError, StoreError, UsageError
 from relevance_plan.exitcodes import ExitCode
 from relevance_plan.generators.generate import generate_suite
-from relevance_plan.planning import runner
+from relevance_plan.planning import fast_downward
 from relevance_plan.planning.loop import PlanOptions
 from relevance_plan.relevance.prune import Thresholds
 
@@ -210,7 +212,7 @@ def test_build_jobs_rejects_bad_input(tmp_path, suite):
 @pytest.mark.planner
 def test_compare_stores_every_job_once_and_resumes(suite, tmp_path):
     store = tmp_path / "r.sqlite"
-    summary = compare([suite], ALL_METHODS, PlanOptions(timeout=60), jobs=2, store_path=store, progress=False)
+    summary = compare([suite], ALL_METHODS, PlanOptions(timeout=60), jobs=2, store_path=store, progress=None)
     assert (summary.total, summary.already_stored, summary.ran) == (8, 0, 8)
     rows = read_store(store)
     assert len(rows) == 8
@@ -221,7 +223,7 @@ def test_compare_stores_every_job_once_and_resumes(suite, tmp_path):
     assert by_method["pure"]["world"] == "coffee" and by_method["pure"]["difficulty"] == "simple"
     result = json.loads(by_method["relevance"]["result_json"])
     assert result["status"] == "solved" and result["plan"]
-    again = compare([suite], ALL_METHODS, PlanOptions(timeout=60), jobs=2, store_path=store, progress=False)
+    again = compare([suite], ALL_METHODS, PlanOptions(timeout=60), jobs=2, store_path=store, progress=None)
     assert (again.already_stored, again.ran) == (8, 0)
     assert read_store(store) == rows
 
@@ -230,7 +232,7 @@ def test_compare_stores_every_job_once_and_resumes(suite, tmp_path):
 def test_input_error_becomes_a_row_not_a_crash(suite, tmp_path):
     (suite / "coffee-simple-009.pddl").write_text("(define (problem broken) (:domain coffee) (:objects a - ")
     store = tmp_path / "r.sqlite"
-    summary = compare([suite], "pure,relevance", PlanOptions(timeout=60), jobs=2, store_path=store, progress=False)
+    summary = compare([suite], "pure,relevance", PlanOptions(timeout=60), jobs=2, store_path=store, progress=None)
     assert summary.ran == 6
     rows = read_store(store)
     broken = [r for r in rows if r["problem"] == "coffee-simple-009.pddl"]
@@ -247,9 +249,9 @@ def test_input_error_becomes_a_row_not_a_crash(suite, tmp_path):
     ids=["exit-35", "killed"],
 )
 def test_planner_crash_is_recorded_with_its_exit_code(suite, tmp_path, monkeypatch, body, code):
-    monkeypatch.setenv(runner.FAST_DOWNWARD_ENV, str(fake_planner(tmp_path, body)))
+    monkeypatch.setenv(fast_downward.FAST_DOWNWARD_ENV, str(fake_planner(tmp_path, body)))
     store = tmp_path / "r.sqlite"
-    summary = compare([suite], "pure,relevance", PlanOptions(timeout=30), jobs=2, store_path=store, progress=False)
+    summary = compare([suite], "pure,relevance", PlanOptions(timeout=30), jobs=2, store_path=store, progress=None)
     assert summary.ran == 4 and summary.failed == 4
     rows = read_store(store)
     assert len(rows) == 4
@@ -262,10 +264,10 @@ def test_planner_crash_is_recorded_with_its_exit_code(suite, tmp_path, monkeypat
 def test_missing_planner_stops_the_batch_and_stores_nothing(suite, tmp_path, monkeypatch):
     from relevance_plan.errors import PlannerError
 
-    monkeypatch.setenv(runner.FAST_DOWNWARD_ENV, str(tmp_path / "no-such-driver.py"))
+    monkeypatch.setenv(fast_downward.FAST_DOWNWARD_ENV, str(tmp_path / "no-such-driver.py"))
     store = tmp_path / "r.sqlite"
     with pytest.raises(PlannerError):
-        compare([suite], "pure", PlanOptions(timeout=30), jobs=1, store_path=store, progress=False)
+        compare([suite], "pure", PlanOptions(timeout=30), jobs=1, store_path=store, progress=None)
     assert read_store(store) == []
 
 
@@ -361,7 +363,7 @@ def test_ctrl_c_kills_running_planners_and_keeps_finished_rows(tmp_path, signum)
     """,
     )
     store = tmp_path / "results.sqlite"
-    env = {runner.FAST_DOWNWARD_ENV: str(planner), "FAKE_PLANNER_MARKERS": str(markers)}
+    env = {fast_downward.FAST_DOWNWARD_ENV: str(planner), "FAKE_PLANNER_MARKERS": str(markers)}
     process = start_compare(suite, store, "--methods", "pure", "--timeout", 300, "--jobs", 1, env=env)
     try:
         deadline = time.monotonic() + 60
@@ -453,14 +455,14 @@ def test_dask_cluster_runs_the_jobs_into_the_local_store(tmp_path):
             client.close()
         store = tmp_path / "results.sqlite"
         summary = compare(
-            [suite], ALL_METHODS, PlanOptions(timeout=60), jobs=1, store_path=store, scheduler=address, progress=False
+            [suite], ALL_METHODS, PlanOptions(timeout=60), jobs=1, store_path=store, scheduler=address, progress=None
         )
         assert (summary.total, summary.ran, summary.failed) == (4, 4, 0)
         rows = read_store(store)
         assert sorted(r["method"] for r in rows) == sorted(ALL_METHODS.split(","))
         assert {r["status"] for r in rows} == {"solved"}
         again = compare(
-            [suite], ALL_METHODS, PlanOptions(timeout=60), jobs=1, store_path=store, scheduler=address, progress=False
+            [suite], ALL_METHODS, PlanOptions(timeout=60), jobs=1, store_path=store, scheduler=address, progress=None
         )
         assert (again.already_stored, again.ran) == (4, 0)
     finally:
@@ -556,3 +558,50 @@ def test_demo_end_to_end(tmp_path):
     # Running it again reuses every stored result.
     again = invoke("demo", "--workdir", workdir, "--tiny", "--timeout", 60, "--jobs", 2, "-q")
     assert again.exit_code == 0 and "(0 run now, 8 reused)" in again.stdout
+
+
+# --------------------------------------------------------------------------- the demo's temporary folder
+
+
+@pytest.mark.parametrize("outcome", ["finished", "failed", "interrupted"])
+def test_a_demo_without_workdir_removes_its_temporary_folder(tmp_path, monkeypatch, outcome):
+    import tempfile
+
+    from relevance_plan.batch import demo
+    from relevance_plan.batch.compare import CompareSummary
+
+    def fake_compare(suites, methods, options, *, store_path, **_):
+        ResultStore(store_path).close()
+        if outcome == "failed":
+            raise StoreError("cannot write to the results store", path=str(store_path))
+        if outcome == "interrupted":
+            raise KeyboardInterrupt
+        return CompareSummary(str(store_path), 0, 0, 0, 0, {}, 0.0)
+
+    monkeypatch.setattr(tempfile, "tempdir", str(tmp_path))
+    monkeypatch.setattr(demo, "compare", fake_compare)
+    if outcome == "finished":
+        run = demo.run_demo(None, tiny=True, progress=None)
+        assert run.workdir is None and run.store_path is None
+    else:
+        with pytest.raises((StoreError, KeyboardInterrupt)):
+            demo.run_demo(None, tiny=True, progress=None)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_the_demo_says_its_temporary_folder_is_gone(tmp_path, monkeypatch):
+    import tempfile
+
+    from relevance_plan.batch import demo
+    from relevance_plan.batch.compare import CompareSummary
+
+    def fake_compare(suites, methods, options, *, store_path, **_):
+        ResultStore(store_path).close()
+        return CompareSummary(str(store_path), 8, 0, 8, 0, {"solved": 8}, 1.0)
+
+    monkeypatch.setattr(tempfile, "tempdir", str(tmp_path))
+    monkeypatch.setattr(demo, "compare", fake_compare)
+    result = invoke("demo", "--tiny", "-q")
+    assert result.exit_code == 0, result.output
+    assert "temporary folder, now removed; --workdir DIR keeps" in result.stdout
+    assert list(tmp_path.iterdir()) == []

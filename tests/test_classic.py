@@ -147,7 +147,7 @@ def test_relevance_plans_are_valid_on_the_original(tmp_path, world):
     problem_path.write_text(problem.pddl_text)
     result = plan_task(domain_path, problem_path, PlanOptions(timeout=60))
     assert result.status is PlanStatus.SOLVED, result.message
-    assert result.prune.scores.scorer == "goal"
+    assert result.selection.scores.scorer == "goal"
     assert result.objects_kept < result.objects_total
     task = classic_task(world, problem.pddl_text)
     assert validate_plan(task.domain, task.problem, result.plan).status is ValidationStatus.VALID

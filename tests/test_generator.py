@@ -361,7 +361,9 @@ def read_tree(directory: Path) -> dict[str, bytes]:
 
 def test_suite_layout_and_determinism(tmp_path):
     calls = []
-    paths = generate_suite("cereal", "simple", 3, 42, tmp_path / "a", progress=lambda d, t: calls.append((d, t)))
+    paths = generate_suite(
+        "cereal", "simple", 3, 42, tmp_path / "a", progress=lambda e: calls.append((e.done, e.total))
+    )
     assert calls == [(1, 3), (2, 3), (3, 3)]
     assert [p.name for p in paths] == [f"cereal-simple-00{i}.pddl" for i in (1, 2, 3)]
     tree = read_tree(tmp_path / "a")

@@ -12,7 +12,8 @@ import pytest
 from padded_worlds import GRIPPER_DOMAIN, gripper_problem
 from support import REPO
 
-from relevance_plan.batch.jobs import FINGERPRINT_RULES, build_jobs, config_fingerprint, config_hash, run_job
+from relevance_plan.batch.jobs import build_jobs, run_job
+from relevance_plan.batch.keys import FINGERPRINT_RULES, config_fingerprint, config_hash
 from relevance_plan.planning.loop import PLAN_OPTION_FIELDS, PlanOptions, plan_task
 from relevance_plan.relevance.prune import Thresholds
 
@@ -23,8 +24,8 @@ OTHER_VALUES = {
     "timeout": 7.0,
     "memory_limit_mb": 512,
     "thresholds": Thresholds(0.1, 0.3),
-    "relax": False,
-    "relax_factor": 0.25,
+    "widen": False,
+    "widen_factor": 0.25,
     "first_share": 0.75,
     "scorer": "goal",
     "goal_filter": False,
@@ -73,8 +74,8 @@ def test_plan_compare_and_the_up_engine_make_the_same_attempts(hard_gripper, tmp
     options = PlanOptions(thresholds=Thresholds(0.95, 0.95), timeout=120)
     planned = plan_task(domain, problem, options)
     assert len(planned.attempts) >= 2, "the first pruning should fail on this problem"
-    assert planned.attempts[0].status != "solved" and planned.status.value == "solved"
-    plan_attempts = [(a.objects_kept, a.outcome.status.value, a.status) for a in planned.attempts]
+    assert planned.attempts[0].status.value != "solved" and planned.status.value == "solved"
+    plan_attempts = [(a.objects_kept, a.outcome.status.value, a.status.value) for a in planned.attempts]
 
     (job,) = build_jobs([tmp_path], "relevance", (0,), options)
     row = run_job(job)

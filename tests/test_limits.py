@@ -47,7 +47,8 @@ def test_too_little_memory_for_the_planner_is_out_of_memory(copied_coffee_files,
 
 
 def test_the_loaders_messages_are_out_of_memory():
-    from relevance_plan.planning.runner import PlannerStatus, _classify
+    from relevance_plan.planning.fast_downward import classify as _classify
+    from relevance_plan.planning.outcome import PlannerStatus
 
     log = "error while loading shared libraries: libc.so.6: failed to map segment from shared object"
     assert _classify(127, False, False, log, 0.0, 10.0, memory_limited=True) is PlannerStatus.OUT_OF_MEMORY

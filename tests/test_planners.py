@@ -14,16 +14,13 @@ from padded_worlds import GRIPPER_DOMAIN, gripper_problem
 from support import running
 
 from relevance_plan.cli import main
-from relevance_plan.errors import PlannerError, UsageError
+from relevance_plan.errors import PlannerError, UnsupportedFeatureError, UsageError
 from relevance_plan.exitcodes import ExitCode
+from relevance_plan.planning import up_engines
+from relevance_plan.planning.command import CommandPlanner
 from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task
-from relevance_plan.planning.planners import (
-    CommandPlanner,
-    make_planner,
-    parse_ipc_plan,
-    split_planner_names,
-)
-from relevance_plan.planning.runner import PlannerStatus
+from relevance_plan.planning.outcome import PlannerStatus, parse_ipc_plan
+from relevance_plan.planning.planners import make_planner, split_planner_names
 
 
 @pytest.fixture
@@ -52,7 +49,7 @@ def script(tmp_path: Path, name: str, body: str) -> str:
 # A planner that asks Fast Downward and prints its plan on stdout: a real plan from a foreign binary.
 FD_ON_STDOUT = """
     import subprocess, sys, tempfile, os
-    from relevance_plan.planning.runner import run_fast_downward
+    from relevance_plan.planning.fast_downward import run_fast_downward
     outcome = run_fast_downward(sys.argv[1], sys.argv[2], time_limit=60)
     for step in outcome.plan:
         print(step)
@@ -62,7 +59,7 @@ FD_ON_STDOUT = """
 
 FD_TO_FILE = """
     import sys
-    from relevance_plan.planning.runner import run_fast_downward
+    from relevance_plan.planning.fast_downward import run_fast_downward
     outcome = run_fast_downward(sys.argv[1], sys.argv[2], time_limit=60)
     with open(sys.argv[3], "w") as out:
         out.write("; found by a planner writing to its plan file\\n")
@@ -101,6 +98,177 @@ def test_ipc_plans_are_parsed_and_garbage_is_refused():
     plan = parse_ipc_plan("(pick A b)\n; cost = 3 (unit cost)\n\n0: (drop a b) [1]\n")
     assert [str(step) for step in plan] == ["(pick a b)", "(drop a b)"] and plan.cost == 3
     assert parse_ipc_plan("Solution found!\n(pick a b)\n") is None
+
+
+# --------------------------------------------------------------------------- planner-agnostic core
+
+PLANNER_WORDS = (
+    "fast-downward",
+    "fast downward",
+    "fast_downward",
+    "downward",
+    "lama",
+    "pyperplan",
+    "lpg",
+    "symk",
+    "up:",
+    "cmd:",
+    "sas_plan",
+)
+
+
+def test_the_attempt_loop_names_no_planner():
+    import relevance_plan.planning.loop as loop
+
+    text = Path(loop.__file__).read_text().lower()
+    assert [word for word in PLANNER_WORDS if word in text] == []
+
+
+DURATIVE_DOMAIN = """
+(define (domain timed) (:requirements :durative-actions :typing)
+  (:types thing)
+  (:predicates (ready ?t - thing) (done ?t - thing))
+  (:durative-action work :parameters (?t - thing) :duration (= ?duration 2)
+    :condition (at start (ready ?t))
+    :effect (at end (done ?t))))
+"""
+
+DURATIVE_PROBLEM = "(define (problem p) (:domain timed) (:objects a - thing) (:init (ready a)) (:goal (done a)))"
+
+
+def _task(tmp_path, domain_text, problem_text):
+    from relevance_plan.io import load_task
+
+    domain_path, problem_path = tmp_path / "domain.pddl", tmp_path / "problem.pddl"
+    domain_path.write_text(domain_text)
+    problem_path.write_text(problem_text)
+    return load_task(domain_path, problem_path)
+
+
+def test_check_refuses_what_the_planner_does_not_take_in_one_line(tmp_path, coffee_files):
+    from relevance_plan.io import load_task
+
+    domain, problem = load_task(*coffee_files)
+    with pytest.raises(UnsupportedFeatureError) as refused:
+        make_planner("up:pyperplan").check(domain, problem)
+    message = str(refused.value)
+    assert "negative-preconditions" in message and "up:pyperplan" in message and "\n" not in message
+    make_planner("fast-downward").check(domain, problem)  # Fast Downward takes them
+    make_planner("cmd:any-planner {domain} {problem}").check(domain, problem)  # unknown: the planner decides
+    domain, problem = _task(tmp_path, DURATIVE_DOMAIN, DURATIVE_PROBLEM)
+    with pytest.raises(UnsupportedFeatureError, match="Fast Downward does not take durative-actions") as refused:
+        make_planner("fast-downward").check(domain, problem)
+    assert "\n" not in str(refused.value) and str(tmp_path / "domain.pddl") in str(refused.value)
+
+
+def test_check_still_refuses_names_fast_downward_cannot_read(tmp_path):
+    domain, problem = _task(tmp_path, GRIPPER_DOMAIN, gripper_problem(extra=1).replace("left", "gauche_é"))
+    with pytest.raises(UnsupportedFeatureError, match="non-ASCII name, which Fast Downward does not accept"):
+        make_planner("fast-downward").check(domain, problem)
+    make_planner("up:pyperplan").check(domain, problem)
+
+
+FEATURE_CASES = [
+    ("(:action a :parameters (?x) :precondition (p ?x) :effect (q ?x))", {"strips"}),
+    (
+        "(:action a :parameters (?x - t) :precondition (not (p ?x)) :effect (q ?x))",
+        {"typing", "negative-preconditions"},
+    ),
+    (
+        "(:action a :parameters (?x) :precondition (or (p ?x) (= ?x ?x)) :effect (q ?x))",
+        {"disjunctive-preconditions", "equality"},
+    ),
+    (
+        "(:action a :parameters () :precondition (exists (?x) (p ?x)) :effect (forall (?y) (when (p ?y) (q ?y))))",
+        {"existential-preconditions", "conditional-effects"},
+    ),
+    # for all x: not (p x)
+    (
+        "(:action a :parameters () :precondition (not (exists (?x) (p ?x))) :effect (q c))",
+        {"universal-preconditions", "negative-preconditions"},
+    ),
+    (
+        "(:action a :parameters (?x) :precondition (p ?x) :effect (and (q ?x) (increase (total-cost) 1)))",
+        {"action-costs"},
+    ),
+    ("(:action a :parameters (?x) :precondition (> (f ?x) 0) :effect (decrease (f ?x) 1))", {"numeric-fluents"}),
+    (
+        "(:derived (r ?x) (p ?x)) (:action a :parameters (?x) :precondition (r ?x) :effect (q ?x))",
+        {"derived-predicates"},
+    ),
+]
+
+
+@pytest.mark.parametrize("body, expected", FEATURE_CASES)
+def test_problem_features_come_from_what_the_files_use(tmp_path, body, expected):
+    from relevance_plan.planning.features import problem_features
+
+    types = "(:types t)" if " - t" in body else ""
+    domain_text = (
+        f"(define (domain d) (:requirements :adl :typing :action-costs :numeric-fluents :derived-predicates) {types}"
+        " (:constants c) (:predicates (p ?x) (q ?x) (r ?x)) (:functions (total-cost) (f ?x)) " + body + ")"
+    )
+    domain, problem = _task(tmp_path, domain_text, "(define (problem p) (:domain d) (:init) (:goal (q c)))")
+    assert problem_features(domain, problem) == frozenset({"strips"} | expected)
+
+
+def test_problem_features_of_durative_and_timed_problems(tmp_path):
+    from relevance_plan.planning.features import problem_features
+
+    timed = DURATIVE_PROBLEM.replace("(:init (ready a))", "(:init (at 5 (ready a)))")
+    domain, problem = _task(tmp_path, DURATIVE_DOMAIN.replace(":typing", ":typing :timed-initial-literals"), timed)
+    assert problem_features(domain, problem) == {"strips", "typing", "durative-actions", "timed-initial-literals"}
+
+
+# --------------------------------------------------------------------------- each adapter's exit codes
+
+
+def test_one_unified_planning_table_keyed_by_status_names():
+    from unified_planning.engines.results import PlanGenerationResultStatus
+
+    names = {status.name for status in PlanGenerationResultStatus}
+    assert set(up_engines.UP_STATUS) <= names
+    # every verdict an engine can end a one-shot run with is in the table
+    assert names - set(up_engines.UP_STATUS) == {"INTERMEDIATE"}
+    assert up_engines.up_status_name(PlannerStatus.SOLVED) == "SOLVED_SATISFICING"
+    assert up_engines.up_status_name(PlannerStatus.INPUT_ERROR) == "INTERNAL_ERROR"
+    for name, status in up_engines.UP_STATUS.items():
+        if name != "SOLVED_OPTIMALLY":
+            assert up_engines.up_status_name(status) == name
+
+
+def test_the_unified_planning_child_is_classified_by_its_verdict():
+    classify = up_engines.classify
+    assert classify(0, "SOLVED_SATISFICING", True, False, "") is PlannerStatus.SOLVED
+    assert classify(0, "SOLVED_SATISFICING", False, False, "") is PlannerStatus.PLANNER_CRASH  # no plan written
+    assert classify(0, "TIMEOUT", False, False, "") is PlannerStatus.OUT_OF_TIME
+    assert classify(0, "UNSUPPORTED_PROBLEM", False, False, "") is PlannerStatus.UNSUPPORTED
+    assert classify(up_engines.CHILD_CANNOT_READ, None, False, False, "") is PlannerStatus.INPUT_ERROR
+    assert classify(-9, None, False, True, "") is PlannerStatus.OUT_OF_TIME  # the watchdog
+    assert classify(1, None, False, False, "Traceback ... MemoryError") is PlannerStatus.OUT_OF_MEMORY
+    assert classify(1, None, False, False, "Traceback") is PlannerStatus.PLANNER_CRASH
+    assert up_engines.exit_reason("up:x", 0, "MEMOUT", False) == "up:x: unified-planning status MEMOUT"
+    assert up_engines.exit_reason("up:x", -9, None, False) == "up:x child process exit code -9: killed by SIGKILL"
+
+
+def test_an_external_command_is_classified_by_its_exit_and_output():
+    from relevance_plan.pddl.plans import Plan, PlanStep
+    from relevance_plan.planning.command import classify, exit_reason
+    from relevance_plan.planning.process import ProcessRun
+
+    def run(code, fired=False):
+        return ProcessRun(0, code, 0.0, 0.0, fired, 1.0, 1)
+
+    plan = Plan((PlanStep("a"),))
+    assert classify(run(0), plan, False, "") is PlannerStatus.SOLVED
+    assert classify(run(0), Plan(), False, "") is PlannerStatus.SEARCH_INCOMPLETE  # said nothing
+    assert classify(run(0), Plan(), True, "") is PlannerStatus.SOLVED  # an empty plan file: the goal holds
+    assert classify(run(0), None, False, "") is PlannerStatus.PLANNER_CRASH  # output is not a plan
+    assert classify(run(3), plan, False, "") is PlannerStatus.PLANNER_CRASH
+    assert classify(run(1), None, False, "MemoryError") is PlannerStatus.OUT_OF_MEMORY
+    assert classify(run(-9, fired=True), None, False, "") is PlannerStatus.OUT_OF_TIME
+    assert exit_reason("ff", run(3), None) == "ff exit code 3"
+    assert exit_reason("ff", run(-11), None) == "ff exit code -11: killed by SIGSEGV"
 
 
 # --------------------------------------------------------------------------- cmd: inside the loop
@@ -203,10 +371,23 @@ def test_pyperplan_solves_a_classic_problem_and_refuses_features_it_lacks(grippe
     result = plan_task(domain, problem, PlanOptions(planner="up:pyperplan", timeout=120))
     assert result.status is PlanStatus.SOLVED, result.message
     assert result.valid
-    # the coffee domain has negative preconditions, which pyperplan cannot take: one attempt, a clear verdict
+    # the coffee domain has negative preconditions, which pyperplan cannot take: refused before any attempt
+    domain, problem = coffee_files
+    with pytest.raises(UnsupportedFeatureError, match="up:pyperplan does not take negative-preconditions") as refused:
+        plan_task(domain, problem, PlanOptions(planner="up:pyperplan", timeout=120))
+    assert "\n" not in str(refused.value) and str(domain) in str(refused.value)
+
+
+@pytest.mark.planner
+def test_an_engine_that_refuses_in_its_child_is_unsupported_after_one_attempt(coffee_files, monkeypatch):
+    """An engine whose features are unknown decides itself; its refusal ends the loop with a clear verdict."""
+    pytest.importorskip("up_pyperplan")
+    monkeypatch.delitem(up_engines.ENGINE_FEATURES, "pyperplan")
     domain, problem = coffee_files
     refused = plan_task(domain, problem, PlanOptions(planner="up:pyperplan", timeout=120))
     assert refused.status is PlanStatus.UNSUPPORTED and len(refused.attempts) == 1
+    assert refused.attempts[0].outcome.reason == "up:pyperplan: unified-planning status UNSUPPORTED_PROBLEM"
+    assert "(up:pyperplan: unified-planning status UNSUPPORTED_PROBLEM)" in refused.message
 
 
 def test_an_engine_that_is_not_installed_names_the_extra():

@@ -1,6 +1,7 @@
 """Prune-then-plan: every method's plan validates on the original; relaxation recovers."""
 
 import json
+import re
 import time
 
 import pytest
@@ -29,10 +30,10 @@ def test_every_method_gives_a_plan_valid_on_the_original(coffee_files, method):
     assert_valid_on_original(domain_path, problem_path, result)
     if method == "relevance":
         assert result.objects_kept < result.objects_total
-        assert "side_plate_1" in result.prune.removed
+        assert "side_plate_1" in result.selection.removed
         # the plate stands on the plastic cup, which is set aside for the free paper cup
-        assert result.prune.set_aside == {"plastic_cup_1"}
-        assert "dinner_plate_1" in result.prune.removed
+        assert result.selection.set_aside == {"plastic_cup_1"}
+        assert "dinner_plate_1" in result.selection.removed
     if method == "pure":
         assert result.objects_kept == result.objects_total
 
@@ -69,8 +70,8 @@ def test_a_goal_object_is_never_set_aside(tmp_path, coffee_domain_path):
     )
     result = plan_task(coffee_domain_path, problem, PlanOptions(timeout=60))
     assert_valid_on_original(coffee_domain_path, problem, result)
-    assert result.prune.set_aside == frozenset()
-    assert {"plastic_cup_1", "dinner_plate_1"} <= result.prune.kept
+    assert result.selection.set_aside == frozenset()
+    assert {"plastic_cup_1", "dinner_plate_1"} <= result.selection.kept
 
 
 @pytest.mark.planner
@@ -80,16 +81,16 @@ def test_widening_brings_back_a_set_aside_alternative_when_the_free_one_cannot_s
     problem.write_text(coffee_problem(extra_plates=2).replace("(empty paper_cup_1)", ""))
     result = plan_task(coffee_domain_path, problem, PlanOptions(timeout=60))
     assert_valid_on_original(coffee_domain_path, problem, result)
-    assert result.prune.set_aside == {"plastic_cup_1"}
+    assert result.selection.set_aside == {"plastic_cup_1"}
     assert result.first_attempt_status == "unsolvable" and len(result.attempts) >= 2
     assert any("plastic_cup_1" in step.args for step in result.plan)
 
 
 @pytest.mark.planner
-def test_no_relax_reports_the_failed_pruning(coffee_files):
+def test_no_widen_reports_the_failed_pruning(coffee_files):
     domain_path, problem_path = coffee_files
     result = plan_task(
-        domain_path, problem_path, PlanOptions(thresholds=Thresholds(0.2, 0.85), relax=False, timeout=60)
+        domain_path, problem_path, PlanOptions(thresholds=Thresholds(0.2, 0.85), widen=False, timeout=60)
     )
     assert result.status is PlanStatus.NO_VALID_PLAN
     assert len(result.attempts) == 1 and not result.plan.steps
@@ -132,7 +133,7 @@ def test_goal_scorer_plans_on_classic_domains_without_a_model(
     problem_path.write_text(problem_text)
     result = plan_task(domain_path, problem_path, PlanOptions(timeout=60))
     assert_valid_on_original(domain_path, problem_path, result)
-    assert result.prune.scores.scorer == "goal"
+    assert result.selection.scores.scorer == "goal"
     assert result.objects_kept <= expected_kept_at_most
 
 
@@ -167,10 +168,100 @@ def test_bad_planner_configuration_is_not_a_pddl_error(coffee_files):
 
 def test_a_planner_that_cannot_start_is_a_clear_error(coffee_files, monkeypatch, tmp_path):
     from relevance_plan.errors import PlannerError
-    from relevance_plan.planning import runner
+    from relevance_plan.planning import fast_downward
 
     monkeypatch.setenv("RELEVANCE_PLAN_FAST_DOWNWARD", str(tmp_path / "absent" / "fast-downward.py"))
-    runner.find_fast_downward.cache_clear() if hasattr(runner.find_fast_downward, "cache_clear") else None
+    fast_downward.find_fast_downward.cache_clear() if hasattr(fast_downward.find_fast_downward, "cache_clear") else None
     domain_path, problem_path = coffee_files
     with pytest.raises(PlannerError):
         plan_task(domain_path, problem_path, PlanOptions(method="pure", timeout=30))
+
+
+@pytest.mark.planner
+def test_an_anytime_configuration_gives_its_best_plan_to_the_validator(tmp_path):
+    domain_path, problem_path = tmp_path / "domain.pddl", tmp_path / "problem.pddl"
+    domain_path.write_text(GRIPPER_DOMAIN)
+    problem_path.write_text(gripper_problem(3, rooms=3))
+    result = plan_task(domain_path, problem_path, PlanOptions(method="pure", planner_config="lama", timeout=60))
+    assert_valid_on_original(domain_path, problem_path, result)
+    assert result.plan_cost == len(result.plan)  # the last (best) of the numbered plans, complete
+
+
+# --------------------------------------------------------------------------- one spelling per status
+
+
+def _status_strings(data, found):
+    """Every string held under a key that names a status, anywhere in ``data``."""
+    if isinstance(data, dict):
+        for key, value in data.items():
+            if key.endswith("status") and isinstance(value, str):
+                found.append(value)
+            _status_strings(value, found)
+    elif isinstance(data, list):
+        for value in data:
+            _status_strings(value, found)
+    return found
+
+
+def _spelling(value: str) -> str:
+    return value.lower().replace("_", "-").replace(" ", "-")
+
+
+def test_every_status_enum_spells_its_values_one_way():
+    from relevance_plan.exitcodes import PLAN_STATUS_EXIT
+    from relevance_plan.planning.loop import AttemptStatus
+    from relevance_plan.planning.outcome import PlannerStatus
+    from relevance_plan.planning.validate import ValidationStatus
+
+    values = [status.value for enum in (PlanStatus, AttemptStatus, PlannerStatus, ValidationStatus) for status in enum]
+    assert all(value == _spelling(value) for value in values), values
+    # the planner's statuses reach an attempt's status unchanged
+    assert {status.value for status in PlannerStatus} <= {status.value for status in AttemptStatus}
+    # the tool's exit table covers every verdict of `plan`
+    assert set(PLAN_STATUS_EXIT) == {status.value for status in PlanStatus}
+
+
+@pytest.mark.planner
+def test_plan_json_spells_every_status_one_way(tmp_path, coffee_domain_path):
+    """Several outcomes of `plan --json`; every status string in them is an enum value, spelled one way."""
+    from support import invoke
+
+    from relevance_plan.planning.loop import AttemptStatus
+    from relevance_plan.planning.outcome import PlannerStatus
+    from relevance_plan.planning.validate import ValidationStatus
+
+    coffee = tmp_path / "coffee.pddl"
+    coffee.write_text(coffee_problem(extra_plates=2))
+    no_cup = tmp_path / "no-cup.pddl"
+    text = coffee_problem(plate_on_cup=False).replace("plastic_cup_1 paper_cup_1 - cup", "")
+    no_cup.write_text("\n".join(line for line in text.splitlines() if "_cup_1" not in line))
+    blocks_domain, blocks = tmp_path / "blocks-domain.pddl", tmp_path / "blocks.pddl"
+    blocks_domain.write_text(BLOCKSWORLD_DOMAIN)
+    blocks.write_text(blocksworld_problem(150, seed=1))
+    strict = ("--tau-class", "0.2", "--tau-element", "0.85", "--timeout", "60")
+    runs = {
+        "solved after a failed first attempt": (coffee_domain_path, coffee, *strict),
+        "unsolvable": (coffee_domain_path, no_cup, "--timeout", "60"),
+        "out of time": (blocks_domain, blocks, "--method", "pure", "--timeout", "2"),
+    }
+    outputs = {}
+    for name, (domain, problem, *options) in runs.items():
+        result = invoke("plan", domain, problem, "--json", "--plan-file", tmp_path / "plan", *options)
+        outputs[name] = json.loads(result.output)
+    assert outputs["solved after a failed first attempt"]["status"] == "solved"
+    assert outputs["solved after a failed first attempt"]["first_attempt_status"] == "unsolvable"
+    assert outputs["unsolvable"]["status"] == "unsolvable"
+    assert outputs["out of time"]["status"] == "out-of-time"
+
+    known = {s.value for enum in (PlanStatus, AttemptStatus, PlannerStatus, ValidationStatus) for s in enum}
+    found = [value for data in outputs.values() for value in _status_strings(data, [])]
+    assert {"solved", "unsolvable", "out-of-time"} <= set(found)
+    assert set(found) <= known, set(found) - known
+    spellings: dict[str, set] = {}
+    for value in found:
+        spellings.setdefault(_spelling(value), set()).add(value)
+    assert all(len(values) == 1 for values in spellings.values()), spellings
+    # a message quoting the planner's exit code says whose it is, never a bare "(exit code N)"
+    message = outputs["out of time"]["message"]
+    assert message.startswith("planner: out-of-time (") and "Fast Downward" in message, message
+    assert re.search(r"\(exit code -?\d+\)", message) is None

@@ -4,12 +4,14 @@ from __future__ import annotations
 
 import csv
 import io
+import json
 import sys
 
 import pytest
 from support import TIMEOUT, invoke, make_row
 
-from relevance_plan.batch.report import build_report, format_report, job_time, write_plots
+from relevance_plan.batch.plots import write_plots
+from relevance_plan.batch.report import JOB_FIELDS, build_report, format_report, job_time
 from relevance_plan.batch.store import COLUMNS, ResultStore
 from relevance_plan.errors import UsageError
 from relevance_plan.exitcodes import ExitCode
@@ -41,7 +43,7 @@ def known_rows():
             status="out-of-time",
             wall=100.5,
             relevance=0.25,
-            first="out_of_time",
+            first="out-of-time",
             kept=10,
             total=20,
             exit_code=-9,
@@ -90,8 +92,9 @@ def test_report_numbers_from_a_known_store(known_store):
     assert pure.median_time == pytest.approx(25.0)
     assert pure.timeout_rate == pytest.approx(0.25)
     assert pure.first_failure_rate is None and pure.failure_rate is None  # not applicable to pure
-    assert pure.ratio_to_pure == pytest.approx(1.0)
-    assert pure.ratio_to_oracle == pytest.approx(50.0)
+    # One direction everywhere: pure / method, how many times faster than pure.
+    assert pure.pure_over_method == pytest.approx(1.0)
+    assert pure.oracle_over_method == pytest.approx(0.5 / 25.0)
     assert pure.mean_kept_fraction == pytest.approx(1.0)
 
     relevance = by_key[("alpha", "relevance")]
@@ -100,8 +103,8 @@ def test_report_numbers_from_a_known_store(known_store):
     assert relevance.timeout_rate == 0.0
     assert relevance.first_failure_rate == pytest.approx(0.25)  # problem b's first attempt
     assert relevance.failure_rate == 0.0  # relaxation recovered it
-    assert relevance.ratio_to_pure == pytest.approx(0.1)
-    assert relevance.ratio_to_oracle == pytest.approx(5.0)
+    assert relevance.pure_over_method == pytest.approx(10.0)
+    assert relevance.oracle_over_method == pytest.approx(0.2)
     assert relevance.mean_objects_kept == pytest.approx(5.0)
     assert relevance.mean_objects_total == pytest.approx(20.0)
     assert relevance.mean_kept_fraction == pytest.approx(0.25)
@@ -113,17 +116,18 @@ def test_report_numbers_from_a_known_store(known_store):
     assert random.timeout_rate == pytest.approx(0.25)
     assert random.first_failure_rate == pytest.approx(0.5)  # the crash and the time-out
     assert random.failure_rate == pytest.approx(0.25)  # only the crash: time-outs are not failures
-    assert random.ratio_to_pure == pytest.approx(7.0 / 25.0)
-    assert random.ratio_to_oracle == pytest.approx(14.0)
+    assert random.pure_over_method == pytest.approx(25.0 / 7.0)
+    assert random.oracle_over_method == pytest.approx(0.5 / 7.0)
     assert random.mean_relevance_time == pytest.approx(0.25)
 
     oracle = by_key[("alpha", "oracle")]
-    assert oracle.ratio_to_oracle == pytest.approx(1.0)
+    assert oracle.oracle_over_method == pytest.approx(1.0)
+    assert oracle.pure_over_method == pytest.approx(50.0)
     assert oracle.mean_kept_fraction == pytest.approx(0.2)
 
     beta = by_key[("beta", "relevance")]
     assert beta.n == 1 and beta.median_time == pytest.approx(7.0)
-    assert beta.ratio_to_pure is None and beta.ratio_to_oracle is None  # no pure/oracle on beta
+    assert beta.pure_over_method is None and beta.oracle_over_method is None  # no pure/oracle on beta
     assert beta.mean_kept_fraction == pytest.approx(0.25)
     assert all(r.configs == 1 for r in records)
 
@@ -136,14 +140,14 @@ def test_markdown_has_the_papers_shape(known_store):
     assert "|  | timeout | 0.00 | 0.25 | 0.25 | 0.00 |" in lines
     assert "|  | fail (first attempt) | 0.25 | – | 0.50 | 0.00 |" in lines
     assert "|  | fail (final) | 0.00 | – | 0.25 | 0.00 |" in lines
-    assert "|  | median × pure | 0.10 | 1.00 | 0.28 | 0.02 |" in lines
-    assert "|  | median × oracle | 5.00 | 50.00 | 14.00 | 1.00 |" in lines
-    assert "|  | objects kept | 5.0/20.0 | 20.0/20.0 | 10.0/20.0 | 4.0/20.0 |" in lines
+    assert "|  | pure / method (median) | 10.00 | 1.00 | 3.57 | 50.00 |" in lines
+    assert "|  | oracle / method (median) | 0.20 | 0.02 | 0.07 | 1.00 |" in lines
+    assert "|  | objects kept | 5/20 | 20/20 | 10/20 | 4/20 |" in lines
     assert "|  | n | 4 | 4 | 4 | 4 |" in lines
     # beta has no pure or oracle: no ratio rows, missing methods shown as '–'.
     assert "| beta | time (s) | 7.00 | – | – | – |" in lines
     beta = lines[lines.index("| beta | time (s) | 7.00 | – | – | – |") :]
-    assert not any("×" in line for line in beta)
+    assert not any("/ method" in line for line in beta if line.startswith("|"))
     assert any("counted at the timeout (100 s)" in line for line in lines)
 
 
@@ -156,7 +160,7 @@ def test_csv_has_one_line_per_suite_and_method(known_store):
     assert float(pure["mean_time"]) == pytest.approx(40.0)
     random = next(r for r in table if r["method"] == "random")
     assert float(random["failure_rate"]) == pytest.approx(0.25)
-    assert float(random["ratio_to_pure"]) == pytest.approx(0.28)
+    assert float(random["pure_over_method"]) == pytest.approx(25.0 / 7.0, rel=1e-5)
 
 
 def test_latex_table(known_store):
@@ -164,7 +168,7 @@ def test_latex_table(known_store):
     assert "\\begin{tabular}{llrrrr}" in text
     assert "alpha & time (s) & 2.50 & 40.00 & 29.00 & 0.50 \\\\" in text
     assert " & fail (final) & 0.00 & -- & 0.25 & 0.00 \\\\" in text
-    assert "median $\\times$ pure" in text
+    assert "pure / method (median)" in text
     assert text.rstrip().endswith("\\end{tabular}")
 
 
@@ -221,3 +225,55 @@ def test_report_on_a_missing_store_creates_nothing(tmp_path):
 
 def test_store_columns_cover_every_row_field():
     assert set(make_row("s", "a", "pure")) == set(COLUMNS)
+
+
+# --------------------------------------------------------------------------- one row per job
+
+
+def per_job_store(tmp_path):
+    """The known rows, one with a validation time in its result and one from another planner."""
+    rows = known_rows()
+    rows[0] = {**rows[0], "result_json": json.dumps({"validation_time": 0.125})}
+    config = json.loads(rows[1]["config_json"])
+    rows[1] = {**rows[1], "config_json": json.dumps({**config, "planner": "up:pyperplan"}, sort_keys=True)}
+    path = tmp_path / "jobs.sqlite"
+    with ResultStore(path) as store:
+        for row in rows:
+            store.add(row)
+    return path
+
+
+def test_report_json_rows_round_trip_to_the_store_rows(tmp_path):
+    path = per_job_store(tmp_path)
+    result = invoke("report", path, "--json")
+    assert result.exit_code == 0, result.output
+    jobs = json.loads(result.stdout)
+    stored = stored_rows(path)
+    assert len(jobs) == len(stored)
+    for job, row in zip(jobs, stored):
+        assert set(job) == {name for name, _ in JOB_FIELDS}
+        for name in job:
+            if name in row:
+                assert job[name] == row[name], name
+    assert jobs[0]["validation_time"] == 0.125 and jobs[2]["validation_time"] is None
+    assert jobs[1]["planner"] == "up:pyperplan" and jobs[0]["planner"] == "fast-downward"
+
+
+def test_report_csv_rows_read_back_as_the_json_rows(tmp_path):
+    path = per_job_store(tmp_path)
+    jobs = json.loads(invoke("report", path, "--json").stdout)
+    result = invoke("report", path, "--csv")
+    assert result.exit_code == 0, result.output
+    types = dict(JOB_FIELDS)
+    table = list(csv.DictReader(io.StringIO(result.stdout)))
+    read_back = [{name: None if text == "" else types[name](text) for name, text in line.items()} for line in table]
+    # An empty message and a missing one are the same field in CSV.
+    assert read_back == [{**job, "message": job["message"] or None} for job in jobs]
+
+
+@pytest.mark.parametrize(
+    "options", [["--json", "--csv"], ["--json", "--format", "latex"], ["--csv", "--format", "csv"]]
+)
+def test_report_takes_one_output_format(known_store, options):
+    result = invoke("report", known_store, *options)
+    assert result.exit_code == ExitCode.USAGE and "choose one output" in result.stderr

@@ -1,4 +1,4 @@
-"""Tests for relevance_plan.planning.runner: real Fast Downward runs on tiny PDDL files."""
+"""The Fast Downward adapter (fast_downward.py) and the process supervisor (process.py): real runs, tiny files."""
 
 from __future__ import annotations
 
@@ -15,8 +15,8 @@ import pytest
 from support import write_file
 
 from relevance_plan import errors
-from relevance_plan.planning import runner
-from relevance_plan.planning.runner import PlannerStatus
+from relevance_plan.planning import fast_downward, process
+from relevance_plan.planning.outcome import PlannerStatus
 
 GRIPPER_DOMAIN = """
 (define (domain gripper)
@@ -106,19 +106,19 @@ def assert_session_gone(session: int) -> None:
 
 
 def test_planner_arguments() -> None:
-    assert runner.planner_arguments("lama-first") == ("--alias", "lama-first")
-    assert runner.planner_arguments("lama") == ("--alias", "seq-sat-lama-2011")
-    assert runner.planner_arguments("astar(lmcut())") == ("--search", "astar(lmcut())")
-    assert runner.planner_arguments("seq-opt-lmcut") == ("--alias", "seq-opt-lmcut")
+    assert fast_downward.planner_arguments("lama-first") == ("--alias", "lama-first")
+    assert fast_downward.planner_arguments("lama") == ("--alias", "seq-sat-lama-2011")
+    assert fast_downward.planner_arguments("astar(lmcut())") == ("--search", "astar(lmcut())")
+    assert fast_downward.planner_arguments("seq-opt-lmcut") == ("--alias", "seq-opt-lmcut")
     for name in ("lama-first", "lama", "ff-gbfs", "astar-lmcut", "astar-blind"):
-        assert name in runner.PLANNER_CONFIGS
+        assert name in fast_downward.PLANNER_CONFIGS
     with pytest.raises(errors.UsageError):
-        runner.planner_arguments(" ")
+        fast_downward.planner_arguments(" ")
 
 
 def test_command_puts_driver_options_before_files_and_search_after(tmp_path: Path) -> None:
     domain, problem = tmp_path / "d.pddl", tmp_path / "p.pddl"
-    command = runner._build_command("py", Path("fd.py"), domain, problem, "ff-gbfs", 9.2, 100)
+    command = fast_downward._build_command("py", Path("fd.py"), domain, problem, "ff-gbfs", 9.2, 100)
     assert command[:8] == [
         "py",
         "fd.py",
@@ -130,14 +130,14 @@ def test_command_puts_driver_options_before_files_and_search_after(tmp_path: Pat
         "100M",
     ]
     assert command[8:10] == [str(domain), str(problem)]
-    assert command[10:] == list(runner.PLANNER_CONFIGS["ff-gbfs"])
-    command = runner._build_command("py", Path("fd.py"), domain, problem, "lama", None, None)
+    assert command[10:] == list(fast_downward.PLANNER_CONFIGS["ff-gbfs"])
+    command = fast_downward._build_command("py", Path("fd.py"), domain, problem, "lama", None, None)
     assert command[2:] == ["--plan-file", "sas_plan", "--alias", "seq-sat-lama-2011", str(domain), str(problem)]
 
 
 @pytest.mark.planner  # reads Fast Downward's own exit-code table: needs the planner installed
 def test_exit_code_table_matches_driver_returncodes() -> None:
-    codes = runpy.run_path(str(runner.find_fast_downward().parent / "driver" / "returncodes.py"))
+    codes = runpy.run_path(str(fast_downward.find_fast_downward().parent / "driver" / "returncodes.py"))
     expected = {
         "SUCCESS": PlannerStatus.SOLVED,
         "TRANSLATE_UNSOLVABLE": PlannerStatus.UNSOLVABLE,
@@ -151,19 +151,26 @@ def test_exit_code_table_matches_driver_returncodes() -> None:
         "TRANSLATE_CRITICAL_ERROR": PlannerStatus.PLANNER_CRASH,
         "TRANSLATE_INPUT_ERROR": PlannerStatus.INPUT_ERROR,
         "SEARCH_CRITICAL_ERROR": PlannerStatus.PLANNER_CRASH,
-        "SEARCH_INPUT_ERROR": PlannerStatus.INPUT_ERROR,
+        "SEARCH_INPUT_ERROR": PlannerStatus.PLANNER_CONFIG_ERROR,
         "SEARCH_UNSUPPORTED": PlannerStatus.UNSUPPORTED,
         "DRIVER_CRITICAL_ERROR": PlannerStatus.PLANNER_CRASH,
-        "DRIVER_INPUT_ERROR": PlannerStatus.INPUT_ERROR,
+        "DRIVER_INPUT_ERROR": PlannerStatus.PLANNER_CONFIG_ERROR,
         "DRIVER_UNSUPPORTED": PlannerStatus.UNSUPPORTED,
     }
     for name, status in expected.items():
-        assert runner.EXIT_CODE_STATUS[codes[name]] is status, name
+        assert fast_downward.EXIT_CODES[codes[name]][1] is status, name
+    # Every code of the driver is in the table under the driver's own name; 2 without a plan
+    # is argparse's usage error (with a plan the run is solved before the table is read).
+    driver_codes = {value: name for name, value in codes.items() if name.isupper() and isinstance(value, int)}
+    for code, name in driver_codes.items():
+        if name != "SEARCH_PLAN_FOUND_AND_OUT_OF_TIME":
+            assert fast_downward.EXIT_CODES[code][0] == name, code
+    assert fast_downward.EXIT_CODES[2] == ("USAGE_ERROR", PlannerStatus.PLANNER_CONFIG_ERROR)
 
 
 def test_classify_splits_translator_critical_error_by_log() -> None:
     def classify(code: int, log: str = "", has_plan: bool = False) -> PlannerStatus:
-        return runner._classify(code, has_plan, False, log, 0.1, None)
+        return fast_downward.classify(code, has_plan, False, log, 0.1, None)
 
     assert classify(30, "Error: Could not read file: x.pddl") is PlannerStatus.INPUT_ERROR
     assert classify(30, "MemoryError") is PlannerStatus.OUT_OF_MEMORY
@@ -178,46 +185,46 @@ def test_read_plan_takes_last_complete_anytime_plan(tmp_path: Path) -> None:
     write_file(tmp_path, "sas_plan.2", "(A X)\n(B Y)\n; cost = 2 (unit cost)\n")
     write_file(tmp_path, "sas_plan.10", "(c z)\n; cost = 1 (unit cost)\n")
     write_file(tmp_path, "sas_plan.11", "(d z)\n")  # cut off by a kill mid-write
-    found = runner._read_plan(tmp_path)
+    found = fast_downward.read_best_plan(tmp_path)
     assert [str(step) for step in found] == ["(c z)"] and found.cost == 1
     (tmp_path / "sas_plan.10").unlink()
-    found = runner._read_plan(tmp_path)
+    found = fast_downward.read_best_plan(tmp_path)
     assert [str(step) for step in found] == ["(a x)", "(b y)"] and found.cost == 2
     empty = tmp_path / "empty"
     empty.mkdir()
-    assert runner._read_plan(empty) is None
+    assert fast_downward.read_best_plan(empty) is None
 
 
 def test_driver_override_and_missing_driver(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     fake = write_file(tmp_path, "fd.py", "")
-    monkeypatch.setenv(runner.FAST_DOWNWARD_ENV, str(fake))
-    assert runner.find_fast_downward() == fake.resolve()
-    monkeypatch.setenv(runner.FAST_DOWNWARD_ENV, str(tmp_path / "nowhere.py"))
+    monkeypatch.setenv(fast_downward.FAST_DOWNWARD_ENV, str(fake))
+    assert fast_downward.find_fast_downward() == fake.resolve()
+    monkeypatch.setenv(fast_downward.FAST_DOWNWARD_ENV, str(tmp_path / "nowhere.py"))
     with pytest.raises(errors.PlannerError):
-        runner.find_fast_downward()
-    monkeypatch.delenv(runner.FAST_DOWNWARD_ENV)
-    assert runner.find_fast_downward().name == "fast-downward.py"
-    assert runner.fast_downward_version()
+        fast_downward.find_fast_downward()
+    monkeypatch.delenv(fast_downward.FAST_DOWNWARD_ENV)
+    assert fast_downward.find_fast_downward().name == "fast-downward.py"
+    assert fast_downward.fast_downward_version()
 
 
 def test_missing_file_raises_before_starting(gripper: tuple[Path, Path], tmp_path: Path) -> None:
     domain, _ = gripper
     with pytest.raises(errors.InputFileError):
-        runner.run_fast_downward(domain, tmp_path / "missing.pddl")
+        fast_downward.run_fast_downward(domain, tmp_path / "missing.pddl")
     with pytest.raises(errors.InputFileError):
-        runner.run_fast_downward(tmp_path / "missing.pddl", domain)
+        fast_downward.run_fast_downward(tmp_path / "missing.pddl", domain)
 
 
 def test_unstartable_interpreter(gripper: tuple[Path, Path], tmp_path: Path) -> None:
     with pytest.raises(errors.PlannerError):
-        runner.run_fast_downward(*gripper, python=str(tmp_path / "no-python"))
+        fast_downward.run_fast_downward(*gripper, python=str(tmp_path / "no-python"))
 
 
 def test_bad_limits(gripper: tuple[Path, Path]) -> None:
     with pytest.raises(errors.UsageError):
-        runner.run_fast_downward(*gripper, time_limit=0)
+        fast_downward.run_fast_downward(*gripper, time_limit=0)
     with pytest.raises(errors.UsageError):
-        runner.run_fast_downward(*gripper, memory_limit_mb=-1)
+        fast_downward.run_fast_downward(*gripper, memory_limit_mb=-1)
 
 
 # --- real planner runs -----------------------------------------------------------
@@ -226,7 +233,7 @@ def test_bad_limits(gripper: tuple[Path, Path]) -> None:
 @pytest.mark.planner
 def test_solved(gripper: tuple[Path, Path]) -> None:
     cwd = os.getcwd()
-    outcome = runner.run_fast_downward(*gripper, time_limit=30)
+    outcome = fast_downward.run_fast_downward(*gripper, time_limit=30)
     assert os.getcwd() == cwd
     assert outcome.status is PlannerStatus.SOLVED and outcome.solved
     assert outcome.exit_code == 0
@@ -241,13 +248,13 @@ def test_solved(gripper: tuple[Path, Path]) -> None:
     assert outcome.search_time is not None and outcome.search_time >= 0
     assert outcome.config == "lama-first" and not outcome.killed_by_watchdog
     assert "search exit code: 0" in outcome.log_tail
-    assert len(outcome.log_tail.splitlines()) <= runner.LOG_TAIL_LINES
+    assert len(outcome.log_tail.splitlines()) <= process.LOG_TAIL_LINES
 
 
 @pytest.mark.planner
 @pytest.mark.parametrize("config", ["lama", "ff-gbfs", "astar-lmcut", "astar-blind", "astar(blind())"])
 def test_other_configs(gripper: tuple[Path, Path], config: str) -> None:
-    outcome = runner.run_fast_downward(*gripper, config=config, time_limit=30)
+    outcome = fast_downward.run_fast_downward(*gripper, config=config, time_limit=30)
     assert outcome.status is PlannerStatus.SOLVED, outcome.log_tail
     assert len(outcome.plan) == 3 and outcome.plan_cost == 3
 
@@ -256,7 +263,7 @@ def test_other_configs(gripper: tuple[Path, Path], config: str) -> None:
 def test_unsolvable(tmp_path: Path) -> None:
     domain = write_file(tmp_path, "domain.pddl", GRIPPER_DOMAIN)
     problem = write_file(tmp_path, "p.pddl", gripper_problem(free_gripper=False))
-    outcome = runner.run_fast_downward(domain, problem, time_limit=30)
+    outcome = fast_downward.run_fast_downward(domain, problem, time_limit=30)
     assert outcome.status is PlannerStatus.UNSOLVABLE
     assert outcome.exit_code == 11 and not outcome.plan.steps and outcome.plan_cost is None
 
@@ -265,17 +272,18 @@ def test_unsolvable(tmp_path: Path) -> None:
 def test_syntax_error_is_input_error(tmp_path: Path) -> None:
     domain = write_file(tmp_path, "domain.pddl", GRIPPER_DOMAIN)
     problem = write_file(tmp_path, "p.pddl", gripper_problem().replace("(free left))", "(free left)"))
-    outcome = runner.run_fast_downward(domain, problem, time_limit=30)
+    outcome = fast_downward.run_fast_downward(domain, problem, time_limit=30)
     assert outcome.status is PlannerStatus.INPUT_ERROR
     assert outcome.exit_code == 31
 
 
 @pytest.mark.planner
 @pytest.mark.parametrize("config, code", [("no-such-alias", 36), ("astar(no_such_heuristic())", 33)])
-def test_bad_config_is_input_error(gripper: tuple[Path, Path], config: str, code: int) -> None:
-    outcome = runner.run_fast_downward(*gripper, config=config, time_limit=30)
-    assert outcome.status is PlannerStatus.INPUT_ERROR
+def test_bad_config_is_a_config_error(gripper: tuple[Path, Path], config: str, code: int) -> None:
+    outcome = fast_downward.run_fast_downward(*gripper, config=config, time_limit=30)
+    assert outcome.status is PlannerStatus.PLANNER_CONFIG_ERROR
     assert outcome.exit_code == code
+    assert outcome.reason.startswith(f"Fast Downward exit code {code}: ")
 
 
 @pytest.mark.planner
@@ -283,7 +291,7 @@ def test_bad_config_is_input_error(gripper: tuple[Path, Path], config: str, code
 def test_out_of_time(big40: tuple[Path, Path], time_limit: int) -> None:
     # Unlimited, translating big40 takes ~5.5 s.  With 1 s the translator's CPU
     # limit rounds down to 0 s (SIGXCPU, exit -24); with 2 s it exits 21.
-    outcome = runner.run_fast_downward(*big40, time_limit=time_limit)
+    outcome = fast_downward.run_fast_downward(*big40, time_limit=time_limit)
     assert outcome.status is PlannerStatus.OUT_OF_TIME
     assert outcome.exit_code in (21, -signal.SIGXCPU)
     assert outcome.cpu_time < time_limit + 1.0
@@ -296,14 +304,14 @@ def test_out_of_time(big40: tuple[Path, Path], time_limit: int) -> None:
 def test_out_of_memory(tmp_path: Path) -> None:
     domain = write_file(tmp_path, "big.pddl", BIG_DOMAIN)
     problem = write_file(tmp_path, "big30.pddl", big_problem(30))  # needs ~125 MB
-    outcome = runner.run_fast_downward(domain, problem, time_limit=20, memory_limit_mb=80)
+    outcome = fast_downward.run_fast_downward(domain, problem, time_limit=20, memory_limit_mb=80)
     assert outcome.status is PlannerStatus.OUT_OF_MEMORY, outcome.log_tail
     assert outcome.exit_code == 20
 
 
 @pytest.mark.planner
 def test_watchdog_kills_whole_process_group(big40: tuple[Path, Path]) -> None:
-    outcome = runner.run_fast_downward(*big40, time_limit=1, driver_limits=False, watchdog_grace=0.5)
+    outcome = fast_downward.run_fast_downward(*big40, time_limit=1, driver_limits=False, watchdog_grace=0.5)
     assert outcome.killed_by_watchdog
     assert outcome.status is PlannerStatus.OUT_OF_TIME
     assert outcome.exit_code == -signal.SIGKILL
@@ -320,14 +328,14 @@ def test_keyboard_interrupt_kills_process_group(big40: tuple[Path, Path], monkey
             super().__init__(*args, **kwargs)
             started.append(self)
 
-    monkeypatch.setattr(runner.subprocess, "Popen", RecordingPopen)
+    monkeypatch.setattr(process.subprocess, "Popen", RecordingPopen)
     # A shell's background job inherits SIGINT ignored; install Python's default.
     previous = signal.signal(signal.SIGINT, signal.default_int_handler)
     interrupt = threading.Timer(0.7, os.kill, (os.getpid(), signal.SIGINT))
     interrupt.start()
     try:
         with pytest.raises(KeyboardInterrupt):
-            runner.run_fast_downward(*big40, time_limit=30)
+            fast_downward.run_fast_downward(*big40, time_limit=30)
     finally:
         interrupt.cancel()
         signal.signal(signal.SIGINT, previous)
@@ -346,7 +354,7 @@ def test_parallel_runs_from_threads(tmp_path: Path) -> None:
     }
     with ThreadPoolExecutor(max_workers=4) as pool:
         futures = {
-            name: pool.submit(runner.run_fast_downward, domain, problem, time_limit=30)
+            name: pool.submit(fast_downward.run_fast_downward, domain, problem, time_limit=30)
             for name, problem in problems.items()
         }
         outcomes = {name: future.result() for name, future in futures.items()}
@@ -362,24 +370,24 @@ def test_terminate_all_runs_stops_every_running_planner(big40: tuple[Path, Path]
     """Batch Ctrl-C: every planner started from threads is killed, none survives."""
     import threading
 
-    from relevance_plan.planning import runner
-
     domain, problem = big40
     outcomes = []
     threads = [
-        threading.Thread(target=lambda: outcomes.append(runner.run_fast_downward(domain, problem, time_limit=60)))
+        threading.Thread(
+            target=lambda: outcomes.append(fast_downward.run_fast_downward(domain, problem, time_limit=60))
+        )
         for _ in range(2)
     ]
     for thread in threads:
         thread.start()
     deadline = time.monotonic() + 20
-    while time.monotonic() < deadline and len(runner._ACTIVE_GROUPS) < 2:
+    while time.monotonic() < deadline and len(process._ACTIVE_GROUPS) < 2:
         time.sleep(0.05)
-    assert runner.terminate_all_runs() == 2
+    assert process.terminate_all_runs() == 2
     for thread in threads:
         thread.join(30)
     assert len(outcomes) == 2
     assert all(not o.solved for o in outcomes)
-    assert not runner._ACTIVE_GROUPS
+    assert not process._ACTIVE_GROUPS
     for outcome in outcomes:
         assert_session_gone(outcome.process_group)

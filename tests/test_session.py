@@ -52,11 +52,11 @@ def assert_same_as_scratch(session: Session, where: str = "", explanations: bool
     if explanations:
         assert current.explanations == scores.explanations, where
     assert current.unknown == scores.unknown, where
-    decision = session.decision
-    assert decision is not None, where
-    assert decision.selected == result.selected, where
-    assert decision.kept == result.kept, where
-    assert {r.name for r in decision.restored} == {r.name for r in result.restored}, where
+    selection = session.selection
+    assert selection is not None, where
+    assert selection.selected == result.selected, where
+    assert selection.kept == result.kept, where
+    assert {r.name for r in selection.restored} == {r.name for r in result.restored}, where
 
 
 def stand(item: str, place: str) -> list:
@@ -72,7 +72,7 @@ def test_add_of_a_relevant_element_triggers_and_keeps_it():
         {"event": "add", "object": "Mug_3", "type": "cup", "facts": stand("mug_3", "table_1") + [["empty", "mug_3"]]}
     )
     assert report.triggered and "element added: Mug_3" in report.reason
-    assert "mug_3" in report.determination.kept and report.added == ("mug_3",)
+    assert "mug_3" in report.selection.kept and report.added == ("mug_3",)
     assert_same_as_scratch(session)
 
 
@@ -107,7 +107,7 @@ def test_a_plate_put_on_the_kept_cup_triggers_and_is_restored_by_closure():
     assert "plastic_cup_1" in session.kept and "dinner_plate_2" not in session.kept
     report = session.handle({"event": "set", "fact": ["on", "dinner_plate_2", "plastic_cup_1"]})
     assert report.triggered and "kept plastic_cup_1" in report.reason
-    restored = {r.name: r.reason for r in report.determination.restored}
+    restored = {r.name: r.reason for r in report.selection.restored}
     assert restored["dinner_plate_2"] == "on top of plastic_cup_1 (on dinner_plate_2 plastic_cup_1)"
     assert "dinner_plate_2" in report.added
     assert_same_as_scratch(session)
@@ -146,7 +146,7 @@ def test_goal_human_and_cue_events_trigger_once_and_repeats_do_not():
         again = session.handle(event)
         assert not again.triggered and again.error is None
     assert session.options.human == "alice" and session.options.model_task == "tea"
-    assert "paper_cup_1" in session.decision.selected  # named in the goal
+    assert "paper_cup_1" in session.selection.selected  # named in the goal
 
 
 def test_trigger_registry_names():
@@ -320,7 +320,7 @@ IDLE_SCENE = """(define (problem break-table)
 
 def test_idle_scene_triggers_nothing_until_someone_is_served():
     session = coffee_session(IDLE_SCENE, options=ScoringOptions(objective="drink-at-break"))
-    assert session.idle and session.decision is None
+    assert session.idle and session.selection is None
     for event in (
         {"event": "add", "object": "donut_1", "type": "food", "facts": stand("donut_1", "table_1")},
         {"event": "set", "fact": ["on", "napkin_1", "whole_milk_1"]},
@@ -330,7 +330,7 @@ def test_idle_scene_triggers_nothing_until_someone_is_served():
         report = session.handle(event)
         assert not report.triggered and report.error is None
     report = session.handle({"event": "human", "name": "alice", "preferences": "alice"})
-    assert report.triggered and report.sufficient and "cold_brew_1" in report.determination.kept
+    assert report.triggered and report.sufficient and "cold_brew_1" in report.selection.kept
     assert not session.idle
     assert_same_as_scratch(session)
 
@@ -343,8 +343,8 @@ def test_insufficient_cues_keep_the_previous_decision_stale_until_a_cue():
     assert report.triggered and not report.sufficient and report.stale
     assert "objective ambiguous" in report.insufficiency
     assert report.ask.cue == "task" and report.ask.options[0] == "cold-brew-coffee"
-    assert report.determination.kept == before  # the previous decision stays in force
-    # While stale, element events still trigger but the decision waits for cues.
+    assert report.selection.kept == before  # the previous selection stays in force
+    # While stale, element events still trigger but the selection waits for cues.
     report = session.handle({"event": "add", "object": "mug_9", "type": "cup", "facts": stand("mug_9", "table_1")})
     assert report.triggered and report.stale and session.kept == before and report.ask.cue == "task"
     assert_same_as_scratch(session)
@@ -362,7 +362,7 @@ def test_no_objective_asks_for_one():
     report = session.handle({"event": "cue", "objective": "drink-at-break"})
     assert not report.sufficient and report.ask.cue == "task"
     report = session.handle({"event": "cue", "task": "cold-brew-coffee"})
-    assert report.sufficient and report.determination is not None and report.ask.cue == "preference"
+    assert report.sufficient and report.selection is not None and report.ask.cue == "preference"
 
 
 @pytest.mark.parametrize(
@@ -576,11 +576,11 @@ def test_the_shipped_example_replays_the_paper_demonstration():
     assert all(r.error is None for r in reports)
     assert [r.triggered for r in reports] == [False] * 6 + [True] * 6 + [False]
     alice, alice_goal, bob_arrives, bob, bob_goal, cue = reports[6:12]
-    assert alice.sufficient and "paper_cup_1" not in alice.determination.kept  # she dislikes paper cups
+    assert alice.sufficient and "paper_cup_1" not in alice.selection.kept  # she dislikes paper cups
     assert alice.ask is None and bob_arrives.sufficient
     assert not bob.sufficient and bob.ask.cue == "task" and bob.stale
-    assert not bob_goal.sufficient and bob_goal.determination.kept == bob_arrives.determination.kept
-    assert cue.sufficient and not cue.stale and cue.ask.cue == "preference" and "bob" in cue.determination.kept
+    assert not bob_goal.sufficient and bob_goal.selection.kept == bob_arrives.selection.kept
+    assert cue.sufficient and not cue.stale and cue.ask.cue == "preference" and "bob" in cue.selection.kept
 
 
 @pytest.mark.skipif(REPO is None, reason="needs the source tree (examples/, README.md)")

@@ -176,7 +176,7 @@ def test_quantifiers_in_preconditions_derived_predicates_and_effect_conditions_k
 def _prune_plan_validate(tmp_path: Path, world: str, seed: int) -> bool:
     from support import run
 
-    from relevance_plan.planning.runner import run_fast_downward
+    from relevance_plan.planning.fast_downward import run_fast_downward
 
     domain_text, make = WORLDS[world]
     domain_path, problem_path = tmp_path / f"{world}.pddl", tmp_path / f"{world}-{seed}.pddl"

@@ -451,3 +451,23 @@ def test_up_ini_example_registers_the_meta_engine(tmp_path):
         [sys.executable, str(script)], cwd=tmp_path, capture_output=True, text=True, timeout=60, check=True
     )
     assert "'relevance[fast-downward]'" in done.stdout
+
+
+def test_the_engine_derives_its_status_mappings_from_the_one_table():
+    from relevance_plan.integrations.up_engine import up_status, up_verdict
+    from relevance_plan.planning.loop import PlanStatus
+    from relevance_plan.planning.outcome import PlannerStatus
+
+    assert up_status(PlannerStatus.SOLVED) is Status.SOLVED_SATISFICING
+    assert up_status(PlannerStatus.SEARCH_INCOMPLETE) is Status.UNSOLVABLE_INCOMPLETELY
+    assert up_status(PlannerStatus.PLANNER_CRASH) is Status.INTERNAL_ERROR
+    assert up_status(PlannerStatus.INPUT_ERROR) is Status.INTERNAL_ERROR
+    expected = {
+        PlanStatus.UNSOLVABLE: Status.UNSOLVABLE_PROVEN,
+        PlanStatus.OUT_OF_TIME: Status.TIMEOUT,
+        PlanStatus.OUT_OF_MEMORY: Status.MEMOUT,
+        PlanStatus.UNSUPPORTED: Status.UNSUPPORTED_PROBLEM,
+    }
+    for verdict in PlanStatus:
+        if verdict is not PlanStatus.SOLVED:
+            assert up_verdict(verdict) is expected.get(verdict, Status.INTERNAL_ERROR), verdict

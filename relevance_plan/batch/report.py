@@ -1,4 +1,4 @@
-"""Tables and figures from the rows of a results store (the "report" step).
+"""Tables from the rows of a results store (the "report" step); ``plots`` draws them.
 
 Conventions (all numbers are computed from stored rows only):
 
@@ -14,13 +14,17 @@ Conventions (all numbers are computed from stored rows only):
     - *first attempt*: share of jobs whose first attempt was not ``solved``
       (includes a first attempt that ran out of its share of the time, and
       jobs that never reached the planner: input errors, insufficient cues);
-      without relaxation this is the paper's failure rate;
+      without widening this is the paper's failure rate;
     - *final*: share of jobs whose final status is neither ``solved`` nor
-      ``out-of-time`` (what is left after relaxation).
-- **× pure / × oracle**: median time of the method divided by the median
-  time of ``pure`` (``oracle``) on the same suite, when that method was run.
+      ``out-of-time`` (what is left after widening).
+- **pure / method** (and **oracle / method**): the median time of ``pure``
+  (``oracle``) on the same suite divided by the method's median time: how
+  many times faster than pure the method is (above 1: faster).  The one
+  direction used everywhere, shown when that suite has pure (oracle) rows.
 - **objects kept**: mean objects kept / mean objects in the problem (the
   last attempt's count); **relevance (s)**: mean ``relevance_time``.
+- counts print as integers ("15/48"); a mean over jobs keeps its fraction
+  only when it has one ("15.5/48").
 - ``n`` counts jobs: several seeds of one problem are several jobs.  Rows of
   one (suite, method) run under different options (timeout, planner config,
   thresholds, planner version) are pooled; the tables then say so.
@@ -31,19 +35,16 @@ from __future__ import annotations
 import csv
 import io
 import json
-import os
 import statistics
 from collections.abc import Iterable, Sequence
 from dataclasses import asdict, dataclass, field
-from pathlib import Path
 from typing import Any
 
-from relevance_plan.errors import InputFileError, UsageError
+from relevance_plan.errors import UsageError
 from relevance_plan.planning.loop import METHODS
 
 FORMATS = ("markdown", "csv", "latex")
 NOT_APPLICABLE = "–"
-PLOTS_INSTALL_HINT = "pip install 'relevance-plan[plots]'"
 
 SOLVED = "solved"
 OUT_OF_TIME = "out-of-time"
@@ -60,8 +61,8 @@ class ReportRecord:
     timeout_rate: float
     first_failure_rate: float | None  # None for pure
     failure_rate: float | None  # None for pure
-    ratio_to_pure: float | None
-    ratio_to_oracle: float | None
+    pure_over_method: float | None  # median of pure / median of this method: times faster than pure
+    oracle_over_method: float | None
     mean_objects_kept: float
     mean_objects_total: float
     mean_kept_fraction: float | None
@@ -94,8 +95,8 @@ def _share(count: int, total: int) -> float:
     return count / total if total else 0.0
 
 
-def _ratio(numerator: float, denominator: float | None) -> float | None:
-    if denominator is None or denominator <= 0:
+def _ratio(numerator: float | None, denominator: float) -> float | None:
+    if numerator is None or denominator <= 0:
         return None
     return numerator / denominator
 
@@ -155,8 +156,8 @@ def build_report(rows: Iterable[dict[str, Any]]) -> list[ReportRecord]:
                 timeout_rate=_share(sum(1 for r in group if r["status"] == OUT_OF_TIME), n),
                 first_failure_rate=None if pure else _share(first_failures, n),
                 failure_rate=None if pure else _share(final_failures, n),
-                ratio_to_pure=_ratio(median, medians.get((suite, "pure"))),
-                ratio_to_oracle=_ratio(median, medians.get((suite, "oracle"))),
+                pure_over_method=_ratio(medians.get((suite, "pure")), median),
+                oracle_over_method=_ratio(medians.get((suite, "oracle")), median),
                 mean_objects_kept=_mean([r["objects_kept"] for r in group]),
                 mean_objects_total=_mean([r["objects_total"] for r in group]),
                 mean_kept_fraction=_mean(fractions) if fractions else None,
@@ -178,8 +179,8 @@ _METRICS: tuple[tuple[str, str, str], ...] = (
     ("timeout", "timeout_rate", "{:.2f}"),
     ("fail (first attempt)", "first_failure_rate", "{:.2f}"),
     ("fail (final)", "failure_rate", "{:.2f}"),
-    ("median × pure", "ratio_to_pure", "{:.2f}"),
-    ("median × oracle", "ratio_to_oracle", "{:.2f}"),
+    ("pure / method (median)", "pure_over_method", "{:.2f}"),
+    ("oracle / method (median)", "oracle_over_method", "{:.2f}"),
     ("objects kept", "objects", ""),
     ("relevance (s)", "mean_relevance_time", "{:.3f}"),
     ("n", "n", "{}"),
@@ -190,7 +191,7 @@ def _cell(record: ReportRecord | None, attribute: str, pattern: str) -> str:
     if record is None:
         return NOT_APPLICABLE
     if attribute == "objects":
-        return f"{record.mean_objects_kept:.1f}/{record.mean_objects_total:.1f}"
+        return f"{format_count(record.mean_objects_kept)}/{format_count(record.mean_objects_total)}"
     value = getattr(record, attribute)
     return NOT_APPLICABLE if value is None else pattern.format(value)
 
@@ -205,17 +206,24 @@ def _table(records: Sequence[ReportRecord]) -> tuple[list[str], list[tuple[str, 
         present = {m for m in methods if (suite, m) in by_key}
         lines = []
         for label, attribute, pattern in _METRICS:
-            if attribute == "ratio_to_pure" and "pure" not in present:
+            if attribute == "pure_over_method" and "pure" not in present:
                 continue
-            if attribute == "ratio_to_oracle" and "oracle" not in present:
+            if attribute == "oracle_over_method" and "oracle" not in present:
                 continue
             lines.append((label, [_cell(by_key.get((suite, m)), attribute, pattern) for m in methods]))
         blocks.append((suite, lines))
     return methods, blocks
 
 
+def format_count(value: float) -> str:
+    """A count as an integer ("15"); a mean of counts keeps one decimal only when it has one ("15.5")."""
+    return f"{value:.0f}" if float(value).is_integer() else f"{value:.1f}"
+
+
 def _notes(records: Sequence[ReportRecord]) -> list[str]:
     notes = []
+    if any(r.pure_over_method is not None or r.oracle_over_method is not None for r in records):
+        notes.append("pure / method = median time of pure divided by the method's: times faster than pure")
     timeouts = sorted({t for r in records for t in r.timeouts})
     if timeouts:
         shown = ", ".join(f"{t:g}" for t in timeouts)
@@ -286,8 +294,8 @@ CSV_FIELDS = (
     "timeout_rate",
     "first_failure_rate",
     "failure_rate",
-    "ratio_to_pure",
-    "ratio_to_oracle",
+    "pure_over_method",
+    "oracle_over_method",
     "mean_objects_kept",
     "mean_objects_total",
     "mean_kept_fraction",
@@ -328,53 +336,105 @@ def format_report(records: Sequence[ReportRecord], fmt: str = "markdown") -> str
     return _markdown(records) if fmt == "markdown" else _latex(records)
 
 
-# --------------------------------------------------------------------------- plots
+# --------------------------------------------------------------------------- one row per job
+
+# (field, type) of the per-job rows of ``report --json`` / ``--csv``: the store's
+# columns a script needs, plus the planner and validation time from the row's options and result.
+JOB_FIELDS: tuple[tuple[str, type], ...] = (
+    ("suite", str),
+    ("problem", str),
+    ("method", str),
+    ("planner", str),
+    ("seed", int),
+    ("status", str),
+    ("valid", int),
+    ("wall_time", float),
+    ("relevance_time", float),
+    ("planner_time", float),
+    ("validation_time", float),
+    ("objects_kept", int),
+    ("objects_total", int),
+    ("attempts", int),
+    ("first_attempt_status", str),
+    ("plan_length", int),
+    ("exit_code", int),
+    ("timeout", float),
+    ("world", str),
+    ("difficulty", str),
+    ("message", str),
+    ("problem_hash", str),
+    ("config_hash", str),
+    ("planner_version", str),
+    ("finished_at", str),
+)
+JOB_FORMATS = ("json", "csv")
 
 
-def _figure_classes():
+def _validation_time(row: dict[str, Any]) -> float | None:
     try:
-        from matplotlib.backends.backend_agg import FigureCanvasAgg
-        from matplotlib.figure import Figure
-    except ImportError:
-        raise UsageError(f"plots need matplotlib: {PLOTS_INSTALL_HINT}") from None
-    return Figure, FigureCanvasAgg
+        value = json.loads(row.get("result_json") or "{}").get("validation_time")
+    except (ValueError, AttributeError):
+        return None
+    return float(value) if isinstance(value, (int, float)) else None
 
 
-def _save(figure, canvas_class, path: Path) -> Path:
-    from relevance_plan.io import write_bytes_atomic
+def job_rows(rows: Iterable[dict[str, Any]]) -> list[dict[str, Any]]:
+    """One plain dict per stored job (fields of ``JOB_FIELDS``), in the store's order."""
+    jobs = []
+    for row in rows:
+        job = {name: row.get(name) for name, _ in JOB_FIELDS}
+        job["planner"] = row_planner(row)
+        job["validation_time"] = _validation_time(row)
+        jobs.append(job)
+    return jobs
 
-    canvas_class(figure)
-    buffer = io.BytesIO()
-    figure.savefig(buffer, format="png", dpi=120)
-    return write_bytes_atomic(path, buffer.getvalue())
+
+def _csv_value(value: Any) -> str:
+    if value is None:
+        return ""
+    return repr(value) if isinstance(value, float) else str(value)  # repr: reads back as the same float
 
 
-def _cactus(rows: Sequence[dict[str, Any]], Figure):
-    figure = Figure(figsize=(6.4, 4.4), layout="constrained")
-    axes = figure.add_subplot()
+def format_jobs(rows: Iterable[dict[str, Any]], fmt: str = "json") -> str:
+    """The per-job rows as a JSON array or as CSV with a header (an empty field is a missing value)."""
+    if fmt not in JOB_FORMATS:
+        raise UsageError(f"unknown per-job format '{fmt}' (choose from: {', '.join(JOB_FORMATS)})")
+    jobs = job_rows(rows)
+    if fmt == "json":
+        return json.dumps(jobs, indent=2, ensure_ascii=False) + "\n"
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    writer.writerow(name for name, _ in JOB_FIELDS)
+    for job in jobs:
+        writer.writerow(_csv_value(job[name]) for name, _ in JOB_FIELDS)
+    return buffer.getvalue()
+
+
+# --------------------------------------------------------------------------- what the plots draw
+
+
+def solved_times(rows: Sequence[dict[str, Any]]) -> dict[str, list[float]]:
+    """Per method (in METHODS order), the sorted times of its solved jobs (a cactus plot's steps)."""
     methods = sorted({r["method"] for r in rows}, key=_method_order)
-    for method in methods:
-        times = sorted(job_time(r) for r in rows if r["method"] == method and r["status"] == SOLVED)
-        if times:
-            # Start at zero solved so that even one solved problem shows a step.
-            axes.step([times[0], *times], range(len(times) + 1), where="post", label=f"{method} ({len(times)})")
-        else:
-            axes.plot([], [], label=f"{method} (0)")
-    from matplotlib.ticker import MaxNLocator
-
-    axes.set_xscale("log")
-    axes.set_ylim(bottom=0)
-    axes.yaxis.set_major_locator(MaxNLocator(integer=True))
-    axes.set_xlabel("time per problem (s): relevance + planning")
-    axes.set_ylabel("problems solved")
-    axes.set_title("Solved problems within a time (all suites)")
-    axes.grid(True, which="both", alpha=0.3)
-    axes.legend()
-    return figure
+    return {
+        method: sorted(job_time(r) for r in rows if r["method"] == method and r["status"] == SOLVED)
+        for method in methods
+    }
 
 
-def _pairs(rows: Sequence[dict[str, Any]]) -> list[tuple[str, float, float, bool, bool]]:
-    """(suite, pure time, relevance time, pure timed out, relevance timed out) per problem and seed."""
+@dataclass(frozen=True)
+class TimePair:
+    """One problem and seed run by both pure and relevance (a point of the scatter plot)."""
+
+    suite: str
+    pure_time: float
+    relevance_time: float
+    pure_timed_out: bool
+    relevance_timed_out: bool
+
+
+def paired_times(rows: Sequence[dict[str, Any]]) -> list[TimePair]:
+    """Pure and relevance times of every (problem, seed) that has both, medians over repeated rows."""
     grouped: dict[tuple, dict[str, list[dict]]] = {}
     for row in rows:
         if row["method"] in ("pure", "relevance"):
@@ -385,7 +445,7 @@ def _pairs(rows: Sequence[dict[str, Any]]) -> list[tuple[str, float, float, bool
         if "pure" in methods and "relevance" in methods:
             pure, relevance = methods["pure"], methods["relevance"]
             pairs.append(
-                (
+                TimePair(
                     suite,
                     statistics.median(job_time(r) for r in pure),
                     statistics.median(job_time(r) for r in relevance),
@@ -394,53 +454,3 @@ def _pairs(rows: Sequence[dict[str, Any]]) -> list[tuple[str, float, float, bool
                 )
             )
     return pairs
-
-
-def _scatter(rows: Sequence[dict[str, Any]], Figure):
-    figure = Figure(figsize=(5.2, 5.2), layout="constrained")
-    axes = figure.add_subplot()
-    pairs = _pairs(rows)
-    timeout = max((float(r["timeout"]) for r in rows), default=1.0)
-    if pairs:
-        for suite in sorted({p[0] for p in pairs}):
-            mine = [p for p in pairs if p[0] == suite]
-            axes.scatter([p[1] for p in mine], [p[2] for p in mine], label=suite, alpha=0.8, s=24)
-        low = max(min(min(p[1], p[2]) for p in pairs) / 2, 1e-3)
-        high = timeout * 1.5
-        axes.plot([low, high], [low, high], color="grey", linewidth=0.8, linestyle=":", label="equal time")
-        axes.axvline(timeout, color="red", linewidth=0.8, linestyle="--", label=f"timeout ({timeout:g} s)")
-        axes.axhline(timeout, color="red", linewidth=0.8, linestyle="--")
-        axes.set_xlim(low, high)
-        axes.set_ylim(low, high)
-        axes.set_xscale("log")
-        axes.set_yscale("log")
-        axes.legend(fontsize="small")
-    else:
-        axes.text(
-            0.5,
-            0.5,
-            "no problem has both relevance and pure results",
-            ha="center",
-            va="center",
-            transform=axes.transAxes,
-        )
-    axes.set_xlabel("pure planning time (s)")
-    axes.set_ylabel("relevance time (s): relevance + planning")
-    axes.set_title("Per problem: relevance vs pure")
-    axes.grid(True, which="both", alpha=0.3)
-    return figure
-
-
-def write_plots(rows: Sequence[dict[str, Any]], directory: str | os.PathLike) -> list[Path]:
-    """Write ``cactus.png`` and ``relevance-vs-pure.png`` into ``directory`` (created if needed)."""
-    Figure, canvas = _figure_classes()
-    directory = Path(directory)
-    try:
-        directory.mkdir(parents=True, exist_ok=True)
-    except OSError as error:
-        raise InputFileError(f"cannot create the plot directory: {error.strerror}", path=str(directory)) from None
-    rows = list(rows)
-    return [
-        _save(_cactus(rows, Figure), canvas, directory / "cactus.png"),
-        _save(_scatter(rows, Figure), canvas, directory / "relevance-vs-pure.png"),
-    ]

@@ -10,23 +10,29 @@ whose key is already stored.
 A row's key is ``(problem_hash, method, config_hash, planner_version)``:
 
 - ``problem_hash``: sha256 of the domain text, a NUL byte and the problem
-  text (the files' bytes), so renaming or moving a suite keeps its results;
+  text (the files' bytes), so renaming or moving a suite keeps its results
+  (a problem that cannot be read is keyed by its file name and the reason);
 - ``config_hash``: sha256 of the canonical JSON of the options that influence
-  the result (see ``batch.config_fingerprint``);
+  the result (see ``batch.keys.config_fingerprint``);
 - ``planner_version``: the up-fast-downward version (plus a digest of the
   driver file when ``$RELEVANCE_PLAN_FAST_DOWNWARD`` overrides it).
 
 The ``meta`` table holds ``schema_version`` and the version of the tool that
-created the store.  A store of another schema version, or a file that is not
-a SQLite database, raises ``StoreError`` and is left untouched: nothing is
-written (not even the journal mode) before those checks pass.
+created the store.  A store of another schema version, one missing a
+column, or a file that is not a SQLite database, raises ``StoreError`` and is
+left untouched: nothing is written (not even the journal mode) before those
+checks pass.  A store or folder that cannot be written is ``InputFileError``
+(``check_store_writable``), found before a batch runs its first job; a
+write that finds the disk full is one ``StoreError`` line, and a store
+created by the failing run is removed again.
 """
 
 from __future__ import annotations
 
+import contextlib
 import os
 import sqlite3
-from collections.abc import Iterable
+import stat
 from pathlib import Path
 from typing import Any, NamedTuple
 
@@ -86,11 +92,66 @@ def _one_line(error: BaseException) -> str:
     return " ".join(str(error).split()) or type(error).__name__
 
 
+# How SQLite reports a write that found no room (a full disk, a file-size limit).
+_NO_ROOM = {"SQLITE_FULL", "SQLITE_IOERR_WRITE", "SQLITE_IOERR_SHMSIZE", "SQLITE_IOERR_TRUNCATE"}
+
+
+def _full(error: sqlite3.Error) -> bool:
+    return getattr(error, "sqlite_errorname", "") in _NO_ROOM
+
+
+def _write_failure(error: sqlite3.Error) -> str:
+    """What a failed write means, in words (a full disk says so rather than 'disk I/O error')."""
+    if _full(error):
+        return f"the disk is full or a file-size limit was reached ({_one_line(error)})"
+    return _one_line(error)
+
+
+def _companions(path: Path) -> list[Path]:
+    """The files SQLite keeps beside a store."""
+    return [path.with_name(path.name + suffix) for suffix in ("-wal", "-shm", "-journal")]
+
+
+def _no_write_bit(path: Path) -> bool:
+    # Refused even for root, who may write anyway: the user protected it.
+    return not path.stat().st_mode & 0o222 or not os.access(path, os.W_OK)
+
+
+def check_store_writable(path: str | os.PathLike) -> None:
+    """``InputFileError`` unless a results store can be written at ``path``; nothing is created.
+
+    A store in WAL mode keeps two files beside it, so its folder must be
+    writable too.  Called before any job runs.
+    """
+    path = Path(path)
+    try:
+        info = path.stat()
+    except FileNotFoundError:
+        info = None
+    except (OSError, ValueError) as error:
+        reason = getattr(error, "strerror", None) or _one_line(error)
+        raise InputFileError(f"cannot use the results store: {reason}", path=str(path)) from None
+    if info is not None and not stat.S_ISREG(info.st_mode):
+        raise InputFileError("results store is not a file", path=str(path))
+    if info is not None and _no_write_bit(path):
+        raise InputFileError("results store is read-only", path=str(path))
+    folder = Path(os.path.realpath(path)).parent
+    if not folder.is_dir():
+        raise InputFileError("directory of the results store does not exist", path=str(path))
+    if _no_write_bit(folder):
+        raise InputFileError(
+            "cannot write the results store: its folder is read-only (SQLite keeps two files beside it)",
+            path=str(path),
+        )
+
+
 class ResultStore:
     """A results store at ``path``; created when missing unless ``create=False``.
 
     ``read_only=True`` (reading commands) never creates or changes anything:
-    a file that is not a store is refused and stays byte-identical.
+    a file that is not a store is refused and stays byte-identical, and a
+    store on a read-only file system is read as it is.  A store this object
+    created is removed again when writing to it failed before any row was in it.
 
     Use from one thread (the batch's main thread writes; workers only compute).
     """
@@ -102,7 +163,7 @@ class ResultStore:
         if exists and not self.path.is_file():
             raise InputFileError("results store is not a file", path=str(self.path))
         if not exists:
-            if not create:
+            if not create or read_only:
                 raise InputFileError("results store not found", path=str(self.path))
             if not self.path.parent.is_dir():
                 raise InputFileError("directory of the results store does not exist", path=str(self.path))
@@ -110,15 +171,10 @@ class ResultStore:
             self._check_header()
             if read_only and self.path.stat().st_size == 0:
                 raise StoreError("empty file, not a results store", path=str(self.path))
-        try:
-            if not read_only:
-                connection = sqlite3.connect(self.path, isolation_level=None, timeout=BUSY_TIMEOUT_MS / 1000)
-            else:
-                # Reading commands open read-only: a file that is not a store stays byte-identical.
-                uri = self.path.resolve().as_uri() + "?mode=ro"
-                connection = sqlite3.connect(uri, uri=True, isolation_level=None, timeout=BUSY_TIMEOUT_MS / 1000)
-        except sqlite3.Error as error:
-            raise StoreError(f"cannot open the results store: {_one_line(error)}", path=str(self.path)) from None
+        self.created = not exists
+        # Companion files this object makes SQLite create are folded away again on closing.
+        self._tidy = not any(path.exists() for path in _companions(self.path))
+        connection = self._connect_read_only() if read_only else self._connect()
         try:
             connection.row_factory = sqlite3.Row
             connection.execute(f"PRAGMA busy_timeout = {BUSY_TIMEOUT_MS}")
@@ -126,15 +182,78 @@ class ResultStore:
             if not read_only:
                 connection.execute("PRAGMA journal_mode = WAL")
             connection.execute("PRAGMA synchronous = NORMAL")
+            connection.execute("SELECT COUNT(*) FROM results").fetchone()  # the first read opens the WAL index
         except sqlite3.DatabaseError as error:
-            connection.close()
+            self._abandon(connection)
+            if self.created:
+                message = f"cannot create the results store: {_write_failure(error)}"
+                raise StoreError(message, path=str(self.path)) from None
+            if _full(error):
+                message = f"cannot write to the results store: {_write_failure(error)}"
+                raise StoreError(message, path=str(self.path)) from None
             raise StoreError(f"not a usable results store ({_one_line(error)})", path=str(self.path)) from None
         except BaseException:
-            connection.close()
+            self._abandon(connection)
             raise
         self._connection = connection
 
     # ------------------------------------------------------------------ opening
+
+    def _connect(self) -> sqlite3.Connection:
+        try:
+            return sqlite3.connect(self.path, isolation_level=None, timeout=BUSY_TIMEOUT_MS / 1000)
+        except sqlite3.Error as error:
+            raise StoreError(f"cannot open the results store: {_one_line(error)}", path=str(self.path)) from None
+
+    def _connect_read_only(self) -> sqlite3.Connection:
+        """Read-only: a file that is not a store stays byte-identical.
+
+        SQLite reads a WAL store by creating its index file beside it; where
+        that folder is read-only (a read-only file system) and no write is
+        pending in a ``-wal`` file, the store is opened as immutable instead.
+        """
+        uri = self.path.resolve().as_uri()
+        try:
+            return _probed_connection(uri + "?mode=ro")
+        except sqlite3.Error as error:
+            wal = self.path.with_name(self.path.name + "-wal")
+            if os.access(self.path.resolve().parent, os.W_OK) or (wal.exists() and wal.stat().st_size > 0):
+                raise StoreError(f"cannot read the results store: {_one_line(error)}", path=str(self.path)) from None
+        try:
+            return _probed_connection(uri + "?immutable=1")
+        except sqlite3.Error as error:
+            raise StoreError(f"cannot read the results store: {_one_line(error)}", path=str(self.path)) from None
+
+    def _abandon(self, connection: sqlite3.Connection) -> None:
+        """Close after a failed open; a store this object created goes away again."""
+        connection.close()
+        if self.created:
+            self._remove_files()
+        else:
+            self._fold_companions()
+
+    def _fold_companions(self) -> None:
+        """Let SQLite remove the ``-wal`` and ``-shm`` files this object left (a reader cannot).
+
+        Only when they did not exist before: another process's files are its
+        own.  A writing connection that closes last folds an empty WAL away
+        without changing the store's bytes.
+        """
+        if not self._tidy or not any(path.exists() for path in _companions(self.path)):
+            return
+        if not os.access(self.path.parent, os.W_OK):
+            return
+        with contextlib.suppress(sqlite3.Error):
+            connection = sqlite3.connect(self.path, isolation_level=None)
+            try:
+                connection.execute("SELECT COUNT(*) FROM sqlite_master").fetchone()  # opens the WAL, to close it
+            finally:
+                connection.close()
+
+    def _remove_files(self) -> None:
+        for path in (self.path, *_companions(self.path)):
+            with contextlib.suppress(OSError):
+                path.unlink()
 
     def _check_header(self) -> None:
         try:
@@ -166,6 +285,12 @@ class ResultStore:
                 f"relevance-plan {__version__} with schema version {SCHEMA_VERSION}: use a new --store file",
                 path=str(self.path),
             )
+        present = {row[1] for row in connection.execute("PRAGMA table_info(results)")}
+        missing = [name for name in COLUMNS if name not in present]
+        if missing:
+            raise StoreError(
+                f"results store lacks the column(s) {', '.join(missing)}: use a new --store file", path=str(self.path)
+            )
         self.meta = meta
 
     def _create(self, connection: sqlite3.Connection) -> None:
@@ -180,7 +305,7 @@ class ResultStore:
             connection.execute("CREATE INDEX results_suite ON results (suite, method)")
             connection.execute("COMMIT")
         except BaseException:
-            connection.execute("ROLLBACK")
+            _roll_back(connection)
             raise
         self.meta = {"schema_version": str(SCHEMA_VERSION), "tool_version": __version__}
 
@@ -193,14 +318,20 @@ class ResultStore:
         return self._connection
 
     def contains(self, key: ResultKey) -> bool:
-        row = self.connection.execute(
+        rows = self._query(
             "SELECT 1 FROM results WHERE problem_hash = ? AND method = ? AND config_hash = ? AND planner_version = ?",
             tuple(key),
-        ).fetchone()
-        return row is not None
+        )
+        return bool(rows)
+
+    def _query(self, sql: str, parameters: tuple = ()) -> list[sqlite3.Row]:
+        try:
+            return self.connection.execute(sql, parameters).fetchall()
+        except sqlite3.Error as error:
+            raise StoreError(f"cannot read the results store: {_one_line(error)}", path=str(self.path)) from None
 
     def keys(self) -> set[ResultKey]:
-        return {ResultKey(*row) for row in self.connection.execute(f"SELECT {', '.join(KEY_COLUMNS)} FROM results")}
+        return {ResultKey(*row) for row in self._query(f"SELECT {', '.join(KEY_COLUMNS)} FROM results")}
 
     def add(self, row: dict[str, Any]) -> bool:
         """Insert one finished job in its own transaction; False if its key was already stored."""
@@ -217,9 +348,9 @@ class ResultStore:
             )
             connection.execute("COMMIT")
         except sqlite3.Error as error:
-            if connection.in_transaction:
-                connection.execute("ROLLBACK")
-            raise StoreError(f"cannot write to the results store: {_one_line(error)}", path=str(self.path)) from None
+            _roll_back(connection)
+            message = f"cannot write to the results store: {_write_failure(error)}"
+            raise StoreError(message, path=str(self.path)) from None
         return cursor.rowcount == 1
 
     def rows(self, suite: str | None = None) -> list[dict[str, Any]]:
@@ -229,29 +360,50 @@ class ResultStore:
         if suite is not None:
             query += " WHERE suite = ?"
             parameters = (suite,)
-        return [dict(row) for row in self.connection.execute(query + " ORDER BY rowid", parameters)]
+        return [dict(row) for row in self._query(query + " ORDER BY rowid", parameters)]
 
     def __len__(self) -> int:
-        return self.connection.execute("SELECT COUNT(*) FROM results").fetchone()[0]
+        return self._query("SELECT COUNT(*) FROM results")[0][0]
 
     def close(self) -> None:
         if self._connection is not None:
             self._connection.close()
             self._connection = None
+            self._fold_companions()
 
     def __enter__(self) -> ResultStore:
         return self
 
-    def __exit__(self, *exc) -> None:
+    def __exit__(self, kind, error, traceback) -> None:
+        # A store this run created and could not write a single row to is not left behind.
+        discard = False
+        if isinstance(error, StoreError) and self.created and self._connection is not None:
+            with contextlib.suppress(StoreError):
+                discard = len(self) == 0
         self.close()
+        if discard:
+            self._remove_files()
+
+
+def _probed_connection(uri: str) -> sqlite3.Connection:
+    """A connection to ``uri`` that has read once (SQLite opens files lazily, failing at the first read)."""
+    connection = sqlite3.connect(uri, uri=True, isolation_level=None, timeout=BUSY_TIMEOUT_MS / 1000)
+    try:
+        connection.execute("SELECT COUNT(*) FROM sqlite_master").fetchone()
+    except sqlite3.Error:
+        connection.close()
+        raise
+    return connection
+
+
+def _roll_back(connection: sqlite3.Connection) -> None:
+    """Undo a failed transaction; SQLite may already have (after a full disk), which is fine."""
+    if connection.in_transaction:
+        with contextlib.suppress(sqlite3.Error):
+            connection.execute("ROLLBACK")
 
 
 def read_rows(path: str | os.PathLike, suite: str | None = None) -> list[dict[str, Any]]:
     """Rows of an existing store (``InputFileError`` if it is missing; never creates one)."""
     with ResultStore(path, create=False, read_only=True) as store:
         return store.rows(suite)
-
-
-def add_rows(store: ResultStore, rows: Iterable[dict[str, Any]]) -> int:
-    """Add several rows, one transaction each; the number actually inserted."""
-    return sum(store.add(row) for row in rows)

@@ -25,28 +25,14 @@ from relevance_plan.cli.common import (
 )
 from relevance_plan.cli.watch import watch
 from relevance_plan.errors import UsageError
-from relevance_plan.exitcodes import EXIT_CODE_DESCRIPTIONS, ExitCode
+from relevance_plan.exitcodes import EXIT_CODE_DESCRIPTIONS, ExitCode, exit_code_for_status
 from relevance_plan.planning.loop import PlanResult, PlanStatus, plan_task
-from relevance_plan.relevance.prune import PruneResult
+from relevance_plan.relevance.prune import Selection
 from relevance_plan.relevance.scorers import PlanningTask
 from relevance_plan.relevance.setup import Scoring, ScoringOptions, score_problem
 
-PLAN_STATUS_EXIT = {
-    PlanStatus.SOLVED: ExitCode.SUCCESS,
-    PlanStatus.UNSOLVABLE: ExitCode.UNSOLVABLE,
-    PlanStatus.NO_VALID_PLAN: ExitCode.NO_VALID_PLAN,
-    PlanStatus.OUT_OF_TIME: ExitCode.OUT_OF_TIME,
-    PlanStatus.OUT_OF_MEMORY: ExitCode.OUT_OF_MEMORY,
-    PlanStatus.INSUFFICIENT_CUES: ExitCode.INSUFFICIENT_CUES,
-    PlanStatus.INPUT_ERROR: ExitCode.PDDL_SYNTAX,
-    PlanStatus.UNSUPPORTED: ExitCode.UNSUPPORTED_PDDL,
-    PlanStatus.PLANNER_CONFIG_ERROR: ExitCode.USAGE,
-    PlanStatus.PLANNER_ERROR: ExitCode.PLANNER,
-    PlanStatus.VALIDATOR_UNAVAILABLE: ExitCode.VALIDATOR,
-}
 
-
-def _score_and_prune(domain_path, problem_path, options: ScoringOptions) -> tuple[Scoring, PruneResult]:
+def _score_and_prune(domain_path, problem_path, options: ScoringOptions) -> tuple[Scoring, Selection]:
     from relevance_plan.io import load_task
 
     domain, problem = load_task(domain_path, problem_path)
@@ -54,7 +40,7 @@ def _score_and_prune(domain_path, problem_path, options: ScoringOptions) -> tupl
     return scoring, scoring.prune(options.thresholds)
 
 
-def _prune_json(result: PruneResult) -> dict:
+def _prune_json(result: Selection) -> dict:
     problem = result.task.problem
     scores = result.scores
     return {
@@ -119,21 +105,19 @@ def generate(world, difficulty, count, seed, out_dir, distractors, size, force):
     gripper, ferry, grid, miconic (each also as NAME-typed), driverlog-temporal,
     zenotravel-numeric, scenegraph, logistics-manygoals and miconic-manygoals (each
     also as NAME-typed)."""
+    from relevance_plan.cli.display import progress_bar
     from relevance_plan.generators.generate import generate_suite
     from relevance_plan.generators.kitchen_variants import KITCHEN_VARIANTS, generate_variant_suite
     from relevance_plan.generators.scenes import WORLD_NAMES
     from relevance_plan.generators.sized import SIZED_WORLDS, check_sized_arguments, generate_sized_suite
-    from relevance_plan.progress import progress
 
     kitchen_worlds = WORLD_NAMES + tuple(KITCHEN_VARIANTS)
     if world in SIZED_WORLDS:
         if distractors is not None:
             raise UsageError("--distractors applies to the kitchen worlds; classic and sized worlds take --size")
         check_sized_arguments(world, count, seed, size)
-        with progress(count, f"generate {world}") as bar:
-            paths = generate_sized_suite(
-                world, count, seed, Path(out_dir), size=size, progress=lambda done, total: bar.advance(), force=force
-            )
+        with progress_bar(f"generate {world}", count) as bar:
+            paths = generate_sized_suite(world, count, seed, Path(out_dir), size=size, progress=bar, force=force)
     else:
         if world not in kitchen_worlds:
             raise UsageError(f"unknown world {world!r}: choose one of {', '.join(kitchen_worlds + SIZED_WORLDS)}")
@@ -142,16 +126,9 @@ def generate(world, difficulty, count, seed, out_dir, distractors, size, force):
                 "--size applies to the classic worlds and the other sized worlds; kitchen worlds take --distractors"
             )
         write = generate_suite if world in WORLD_NAMES else generate_variant_suite
-        with progress(count, f"generate {world}-{difficulty}") as bar:
+        with progress_bar(f"generate {world}-{difficulty}", count) as bar:
             paths = write(
-                world,
-                difficulty,
-                count,
-                seed,
-                Path(out_dir),
-                distractors=distractors,
-                progress=lambda done, total: bar.advance(),
-                force=force,
+                world, difficulty, count, seed, Path(out_dir), distractors=distractors, progress=bar, force=force
             )
     click.echo(f"wrote {len(paths)} problems to {out_dir}")
 
@@ -191,7 +168,7 @@ def score(domain_path, problem_path, inquiries, as_json, **values):
         fail(f"insufficient cues: {scores.insufficiency}", ExitCode.INSUFFICIENT_CUES)
 
 
-def _inquiries(scoring: Scoring, result: PruneResult) -> dict:
+def _inquiries(scoring: Scoring, result: Selection) -> dict:
     from relevance_plan.relevance.metrics import plan_inquiries
     from relevance_plan.relevance.scene import kind_of
 
@@ -211,7 +188,7 @@ def _inquiries(scoring: Scoring, result: PruneResult) -> dict:
     }
 
 
-def _print_score_table(result: PruneResult) -> None:
+def _print_score_table(result: Selection) -> None:
     scores = result.scores
     problem = result.task.problem
     if not scores.sufficient:
@@ -329,10 +306,10 @@ def plan(domain_path, problem_path, method, plan_file, as_json, quiet, **values)
 
     options = take_plan_options(values, method)
     make_planner(options.planner, options.planner_config, check=True)
-    say = None if (quiet or as_json) else (lambda message: click.echo(f"... {message}", err=True))
+    say = None if (quiet or as_json) else (lambda event: click.echo(f"... {event.message}", err=True))
     result = plan_task(domain_path, problem_path, options, progress=say)
     if result.status is PlanStatus.SOLVED:
-        problem = result.prune.task.problem if result.prune is not None else None
+        problem = result.selection.task.problem if result.selection is not None else None
         if problem is None:
             from relevance_plan.io import load_task
 
@@ -345,7 +322,7 @@ def plan(domain_path, problem_path, method, plan_file, as_json, quiet, **values)
     else:
         # With the plan on stdout, the summary goes to stderr.
         _print_plan_summary(result, plan_file, err=plan_file == STDOUT)
-    code = PLAN_STATUS_EXIT[result.status]
+    code = exit_code_for_status(result.status.value)
     if code is not ExitCode.SUCCESS:
         if not as_json:
             click.echo(f"relevance-plan: {result.status.value}: {result.message}", err=True)
@@ -366,36 +343,6 @@ def _print_plan_summary(result: PlanResult, plan_file, err: bool = False) -> Non
     if result.status is PlanStatus.SOLVED:
         echo(f"plan:        {len(result.plan)} steps, valid on the original problem ({result.validation.validator})")
         echo(f"plan file:   {plan_file}")
-
-
-# --------------------------------------------------------------------------- sweep
-
-
-@main.command()
-@click.argument("suite_dir", metavar="SUITE_DIR", type=click.Path())
-@scoring_options
-@click.option("--taus", default="0.1,0.2,0.3,0.4,0.5", show_default=True, help="Threshold values for both axes.")
-@click.option(
-    "--heatmap", type=click.Path(dir_okay=False), default=None, help="Write a PNG heatmap (needs matplotlib)."
-)
-@click.option("--json", "as_json", is_flag=True)
-@handle_errors
-def sweep(suite_dir, taus, heatmap, as_json, **values):
-    """Precision, recall, F1 and N over a tau_c x tau_e grid for a generated suite."""
-    from relevance_plan.batch.sweep import format_sweep, sweep_suite, write_heatmap
-    from relevance_plan.relevance.knowledge import check_threshold
-
-    options = take_scoring(values)
-    try:
-        grid = tuple(float(v) for v in taus.split(","))
-    except ValueError:
-        raise UsageError(f"--taus must be comma-separated numbers, got '{taus}'") from None
-    for value in grid:
-        check_threshold(value, "each --taus value")
-    result = sweep_suite(Path(suite_dir), grid, options)
-    if heatmap:
-        write_heatmap(result, heatmap)
-    click.echo(json.dumps(result.to_json(), indent=2) if as_json else format_sweep(result))
 
 
 # --------------------------------------------------------------------------- exit codes

@@ -1,12 +1,21 @@
-"""The batch commands of ``relevance-plan``: ``compare``, ``report`` and ``demo``."""
+"""The batch commands of ``relevance-plan``: ``compare``, ``report``, ``sweep`` and ``demo``."""
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 import click
 
-from relevance_plan.cli.common import handle_errors, planning_options, scoring_options, take_plan_options
+from relevance_plan.cli.common import (
+    handle_errors,
+    planning_options,
+    scoring_options,
+    take_plan_options,
+    take_scoring,
+)
+from relevance_plan.cli.display import progress_bar
+from relevance_plan.errors import UsageError
 from relevance_plan.planning.loop import METHODS
 
 DEFAULT_METHODS = "relevance,pure,random"
@@ -52,29 +61,38 @@ def compare(suite_dirs, methods, planners, jobs, store_path, scheduler, schedule
 
     Rerunning the same command resumes: stored jobs are not run again.
     """
-    from relevance_plan.batch.jobs import compare as run_compare
+    from relevance_plan.batch.compare import compare as run_compare
     from relevance_plan.planning.planners import split_planner_names
 
     options = take_plan_options(values)
-    summary = run_compare(
-        list(suite_dirs),
-        methods,
-        options,
-        planners=split_planner_names(planners) if planners else (),
-        seeds=seeds,
-        jobs=jobs,
-        store_path=store_path,
-        scheduler=scheduler,
-        scheduler_timeout=scheduler_timeout,
-        progress=not quiet,
-    )
+    with progress_bar("compare", live=None if not quiet else False) as bar:
+        summary = run_compare(
+            list(suite_dirs),
+            methods,
+            options,
+            planners=split_planner_names(planners) if planners else (),
+            seeds=seeds,
+            jobs=jobs,
+            store_path=store_path,
+            scheduler=scheduler,
+            scheduler_timeout=scheduler_timeout,
+            progress=None if quiet else bar,
+        )
     click.echo(summary.describe())
     click.echo(f"report: relevance-plan report {store_path}")
 
 
 @click.command()
 @click.argument("store_path", metavar="STORE", type=click.Path(dir_okay=False))
-@click.option("--format", "fmt", type=click.Choice(["markdown", "csv", "latex"]), default="markdown", show_default=True)
+@click.option(
+    "--format",
+    "fmt",
+    type=click.Choice(["markdown", "csv", "latex"]),
+    default=None,
+    help="The table per suite and method  [default: markdown].",
+)
+@click.option("--json", "as_json", is_flag=True, help="One JSON object per job instead of the table.")
+@click.option("--csv", "as_csv", is_flag=True, help="One CSV line per job instead of the table.")
 @click.option("--suite", default=None, help="Only this suite.")
 @click.option(
     "--plots",
@@ -84,16 +102,67 @@ def compare(suite_dirs, methods, planners, jobs, store_path, scheduler, schedule
     help="Also write a cactus plot and a relevance-vs-pure scatter (PNG) here; needs matplotlib.",
 )
 @handle_errors
-def report(store_path, fmt, suite, plots_dir):
-    """Print the comparison table computed from the rows of STORE."""
-    from relevance_plan.batch.report import build_report, format_report, write_plots
+def report(store_path, fmt, as_json, as_csv, suite, plots_dir):
+    """Print the comparison table computed from the rows of STORE (or, with --json/--csv, every job)."""
+    from relevance_plan.batch.report import build_report, format_jobs, format_report
     from relevance_plan.batch.store import read_rows
 
+    per_job = [name for name, chosen in (("--json", as_json), ("--csv", as_csv)) if chosen]
+    if len(per_job) > 1 or (per_job and fmt is not None):
+        given = per_job + ([f"--format {fmt}"] if fmt is not None else [])
+        raise UsageError(f"choose one output: {' or '.join(given)}")
+    if plots_dir is not None:
+        from relevance_plan.batch.plots import require_matplotlib
+
+        require_matplotlib("--plots")
     rows = read_rows(store_path, suite)
     if plots_dir is not None:
-        written = write_plots(rows, plots_dir)
+        from relevance_plan.batch.plots import write_plots
+
+        written = write_plots(rows, plots_dir, store=store_path)
         click.echo("wrote " + ", ".join(str(path) for path in written), err=True)
-    click.echo(format_report(build_report(rows), fmt), nl=False)
+    if per_job:
+        click.echo(format_jobs(rows, "json" if as_json else "csv"), nl=False)
+    else:
+        click.echo(format_report(build_report(rows), fmt or "markdown"), nl=False)
+
+
+@click.command()
+@click.argument("suite_dir", metavar="SUITE_DIR", type=click.Path())
+@scoring_options
+@click.option("--taus", default="0.1,0.2,0.3,0.4,0.5", show_default=True, help="Threshold values for both axes.")
+@click.option(
+    "--heatmap", type=click.Path(dir_okay=False), default=None, help="Write a PNG heatmap (needs matplotlib)."
+)
+@click.option("--json", "as_json", is_flag=True)
+@handle_errors
+def sweep(suite_dir, taus, heatmap, as_json, **values):
+    """Objects kept, timing and (with the generator's sidecars) precision, recall, F1 and N
+    over a tau_c x tau_e grid for a suite."""
+    from relevance_plan.batch.sweep import format_sweep, sweep_suite
+    from relevance_plan.io import check_output_file, find_suite_problems
+    from relevance_plan.relevance.knowledge import check_threshold
+
+    options = take_scoring(values)
+    try:
+        grid = tuple(float(v) for v in taus.split(","))
+    except ValueError:
+        raise UsageError(f"--taus must be comma-separated numbers, got '{taus}'") from None
+    for value in grid:
+        check_threshold(value, "each --taus value")
+    if heatmap:
+        from relevance_plan.batch.plots import require_matplotlib
+
+        require_matplotlib("--heatmap")
+        # Every file the sweep reads is an input the heatmap must not replace (a domain may sit in a parent folder).
+        inputs = [str(p) for e in find_suite_problems(suite_dir) for p in (e.problem, e.domain) if p is not None]
+        check_output_file(heatmap, "heatmap file", inputs)
+    result = sweep_suite(Path(suite_dir), grid, options)
+    if heatmap:
+        from relevance_plan.batch.plots import write_heatmap
+
+        click.echo(f"wrote {write_heatmap(result, heatmap)}", err=True)
+    click.echo(json.dumps(result.to_json(), indent=2) if as_json else format_sweep(result))
 
 
 @click.command()
@@ -101,7 +170,7 @@ def report(store_path, fmt, suite, plots_dir):
     "--workdir",
     type=click.Path(file_okay=False),
     default=None,
-    help="Where suites and results go (default: a new temporary directory, kept).",
+    help="Where suites and results go, kept (default: a temporary folder, removed at the end).",
 )
 @click.option("--count", type=int, default=3, show_default=True, help="Problems per world.")
 @click.option("--timeout", type=float, default=60.0, show_default=True, help="Seconds per job.")
@@ -114,13 +183,21 @@ def demo(workdir, count, timeout, jobs, distractors, tiny, quiet):
     """Generate coffee and cereal suites, compare relevance, pure, random and oracle, print the table."""
     from relevance_plan.batch.demo import run_demo
 
-    run = run_demo(workdir, count, timeout, jobs, distractors=distractors, tiny=tiny, progress=not quiet)
-    workdir = run.workdir
+    with progress_bar("compare", live=None if not quiet else False) as bar:
+        run = run_demo(
+            workdir, count, timeout, jobs, distractors=distractors, tiny=tiny, progress=None if quiet else bar
+        )
     click.echo(run.table, nl=False)
     click.echo("")
+    if run.workdir is None:
+        click.echo(
+            f"{run.summary.ran} jobs run in a temporary folder, now removed; "
+            "--workdir DIR keeps the suites and the results store"
+        )
+        return
     click.echo(f"suites: {', '.join(str(s) for s in run.suites)}")
     click.echo(f"results: {run.store_path} ({run.summary.ran} run now, {run.summary.already_stored} reused)")
-    click.echo(f"more: relevance-plan report {run.store_path} --format latex --plots {Path(workdir) / 'plots'}")
+    click.echo(f"more: relevance-plan report {run.store_path} --format latex --plots {run.workdir / 'plots'}")
 
 
-COMMANDS = (compare, report, demo)
+COMMANDS = (compare, report, sweep, demo)

@@ -119,11 +119,11 @@ def take_scoring(values: dict) -> ScoringOptions:
 
 # --------------------------------------------------------------------------- planning
 
-PLANNING_KEYS = ("planner", "planner_config", "timeout", "memory_limit", "no_relax", "validators")
+PLANNING_KEYS = ("planner", "planner_config", "timeout", "memory_limit", "no_widen", "validators")
 
 
 def planning_options(per_job: bool = False):
-    """--planner --planner-config --timeout --memory-limit --no-relax --validator."""
+    """--planner --planner-config --timeout --memory-limit --no-widen --validator."""
     per = "each job (relevance + planning)" if per_job else "the whole run"
 
     def group(command):
@@ -147,7 +147,13 @@ def planning_options(per_job: bool = False):
                 click.option(
                     "--memory-limit", "memory_limit", type=int, default=None, help="Planner memory limit in MB."
                 ),
-                click.option("--no-relax", is_flag=True, help="One attempt only (the paper's behaviour)."),
+                click.option(
+                    "--no-widen",
+                    "--no-relax",
+                    "no_widen",
+                    is_flag=True,
+                    help="One attempt only (the paper's behaviour).",
+                ),
                 click.option(
                     "--validator",
                     "validators",
@@ -172,7 +178,7 @@ def take_plan_options(values: dict, method: str = "relevance") -> PlanOptions:
         planner_config=taken["planner_config"],
         timeout=taken["timeout"],
         memory_limit_mb=taken["memory_limit"],
-        relax=not taken["no_relax"],
+        widen=not taken["no_widen"],
         validators=tuple(taken["validators"]) or None,
     )
 

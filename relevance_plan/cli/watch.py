@@ -29,14 +29,14 @@ def report_json(report: EventReport, session: Session) -> dict:
     if not report.sufficient:
         data["insufficiency"] = report.insufficiency
     if report.triggered:
-        decision = report.determination
-        kept = decision.kept if decision is not None else frozenset()
+        selection = report.selection
+        kept = selection.kept if selection is not None else frozenset()
         data["kept"] = sorted(show(n, n) for n in kept)
         data["restored"] = [
             {"object": show(r.name, r.name), "reason": r.reason}
-            for r in (decision.restored if decision is not None else ())
+            for r in (selection.restored if selection is not None else ())
         ]
-        data["removed"] = len(decision.removed) if decision is not None else None
+        data["removed"] = len(selection.removed) if selection is not None else None
     data["added"] = [show(n, n) for n in report.added]
     data["dropped"] = [show(n, n) for n in report.dropped]  # a dropped object may have left: its name as given
     data["ask"] = (

@@ -32,6 +32,7 @@ from relevance_plan.generators.catalog import CATALOG
 from relevance_plan.generators.problem import choose_roles, format_scene, necessary_objects, relevant_objects
 from relevance_plan.generators.scenes import DIFFICULTIES, SCENES, WORLD_NAMES, Item, SceneLayout, name_key
 from relevance_plan.io import new_directory_mode
+from relevance_plan.progress import ProgressCallback, ProgressEvent
 
 GENERATOR = "relevance_plan.generators"
 GENERATOR_VERSION = "1"
@@ -336,7 +337,7 @@ def generate_suite(
     seed: int,
     out_dir: Path,
     distractors: int | None = None,
-    progress: Callable[[int, int], None] | None = None,
+    progress: ProgressCallback | None = None,
     force: bool = False,
 ) -> list[Path]:
     """Write ``count`` problems (indices 1..count) into ``out_dir`` as ``write_suite``
@@ -382,7 +383,7 @@ def write_suite(
     names: list[str],
     make: Callable[[int], SuiteProblem],
     manifest: dict,
-    progress: Callable[[int, int], None] | None = None,
+    progress: ProgressCallback | None = None,
     force: bool = False,
 ) -> list[Path]:
     """Write a suite (every generator's layout): ``domain.pddl``, ``NAME.pddl`` and
@@ -423,7 +424,7 @@ def write_suite(
             _write_text(staging / f"{name}.json", problem.sidecar_text)
             entries.append({"name": name, "problem": f"{name}.pddl", "sidecar": f"{name}.json", **problem.entry})
             if progress is not None:
-                progress(index, len(names))
+                progress(ProgressEvent(done=index, total=len(names)))
         full_manifest = {**manifest, "domain": "domain.pddl", "problems": entries}
         _write_text(staging / "suite.json", sidecar_json(full_manifest))
         _move_into_place(staging, out_dir, planned, previous)

@@ -23,7 +23,6 @@ from __future__ import annotations
 import hashlib
 import math
 import random
-from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -44,6 +43,7 @@ from relevance_plan.generators.scenes import SceneLayout
 from relevance_plan.pddl import formulas as f
 from relevance_plan.pddl.formatter import format_problem
 from relevance_plan.pddl.model import make_problem
+from relevance_plan.progress import ProgressCallback
 
 VARIANT_VERSION = "1"
 TEMPORAL = "temporal"
@@ -133,7 +133,7 @@ def generate_variant_suite(
     seed: int,
     out_dir: Path,
     distractors: int | None = None,
-    progress: Callable[[int, int], None] | None = None,
+    progress: ProgressCallback | None = None,
     force: bool = False,
 ) -> list[Path]:
     """Write ``count`` problems of a variant into ``out_dir`` (the kitchen suites' layout and rules)."""

@@ -47,6 +47,7 @@ from relevance_plan.generators.temporal_numeric import build_driverlog_temporal,
 from relevance_plan.pddl import formulas as f
 from relevance_plan.pddl.formatter import format_problem
 from relevance_plan.pddl.model import make_problem
+from relevance_plan.progress import ProgressCallback
 
 SIZED_VERSION = "1"
 
@@ -144,7 +145,7 @@ def generate_sized_suite(
     seed: int,
     out_dir: Path,
     size: int | None = None,
-    progress: Callable[[int, int], None] | None = None,
+    progress: ProgressCallback | None = None,
     force: bool = False,
 ) -> list[Path]:
     """Write ``count`` problems of any sized world into ``out_dir`` (the kitchen suites' layout and rules)."""

@@ -29,7 +29,7 @@ section, see ``docs/up.ini.example``) and ask for it by name::
 Options go through UP's ``params``: ``tau_class``, ``tau_element``,
 ``scorer`` (``goal``, ``model`` or ``random``), ``model`` (a knowledge-model
 file), ``domain`` (the knowledge-model domain to look up under ``domains/``),
-``relax_factor``, ``first_share`` and ``seed``; every other parameter goes to
+``widen_factor``, ``first_share`` and ``seed``; every other parameter goes to
 the inner planner unchanged.
 """
 
@@ -64,9 +64,10 @@ from relevance_plan.pddl.model import Domain
 from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.pddl.plans import Plan, PlanStep
 from relevance_plan.planning.loop import Attempt, PlanOptions, PlanStatus, first_selection, run_attempts, summarise
-from relevance_plan.planning.runner import PlannerStatus, RunOutcome
+from relevance_plan.planning.outcome import PlannerStatus, RunOutcome
+from relevance_plan.planning.up_engines import UP_STATUS, up_status_name
 from relevance_plan.relevance.knowledge import KnowledgeModel, load_model
-from relevance_plan.relevance.prune import DEFAULT_TAU, PruneResult, Thresholds
+from relevance_plan.relevance.prune import DEFAULT_TAU, Selection, Thresholds
 from relevance_plan.relevance.scorers import SCORERS, PlanningTask
 from relevance_plan.relevance.setup import Scoring, resolve_model, score_problem
 
@@ -76,7 +77,7 @@ ENGINE_NAME = "relevance"
 ENGINE_SCORERS = tuple(name for name in SCORERS if name != "oracle")
 
 # The params this engine takes for itself; the others go to the inner planner.
-OWN_PARAMS = frozenset({"tau_class", "tau_element", "scorer", "model", "domain", "relax_factor", "first_share", "seed"})
+OWN_PARAMS = frozenset({"tau_class", "tau_element", "scorer", "model", "domain", "widen_factor", "first_share", "seed"})
 
 # What our PDDL reader handles (pddl.SUPPORTED_REQUIREMENTS).  The engine
 # supports the intersection of this with the inner planner's kind.
@@ -95,10 +96,6 @@ _READER_FEATURES = {
     "quality_metrics": ("ACTIONS_COST", "PLAN_LENGTH"),
     "actions_cost_kind": ("INT_NUMBERS_IN_ACTIONS_COST",),
 }
-
-# Inner results after which trying the same problem with more objects is pointless:
-# go straight to the whole problem instead.
-_FAULTS = frozenset({PlanGenerationResultStatus.INTERNAL_ERROR, PlanGenerationResultStatus.UNSUPPORTED_PROBLEM})
 
 
 def relevance_supported_kind() -> ProblemKind:
@@ -126,7 +123,7 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin):
         scorer: str | None = None,
         model: str | None = None,
         domain: str | None = None,
-        relax_factor: float = 0.5,
+        widen_factor: float = 0.5,
         first_share: float = 0.5,
         seed: int = 0,
         **kwargs,
@@ -135,8 +132,8 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin):
         Thresholds(float(tau_class), float(tau_element))
         if scorer is not None and scorer not in ENGINE_SCORERS:
             raise UsageError(f"unknown scorer '{scorer}' (choose from: {', '.join(ENGINE_SCORERS)})")
-        if not 0.0 < float(relax_factor) < 1.0:
-            raise UsageError(f"relax_factor must be in (0, 1), got {relax_factor}")
+        if not 0.0 < float(widen_factor) < 1.0:
+            raise UsageError(f"widen_factor must be in (0, 1), got {widen_factor}")
         if not 0.0 < float(first_share) <= 1.0:
             raise UsageError(f"first_share must be in (0, 1], got {first_share}")
         self._model: KnowledgeModel | None = load_model(model) if model is not None else None
@@ -146,7 +143,7 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin):
             method="relevance",
             thresholds=Thresholds(float(tau_class), float(tau_element)),
             scorer=scorer,
-            relax_factor=float(relax_factor),
+            widen_factor=float(widen_factor),
             first_share=float(first_share),
             seed=int(seed),
             timeout=None,
@@ -316,7 +313,7 @@ class _RelevanceStage:
             scoring = dataclasses.replace(scoring, model=None)
         return cls(scoring, up_names, action_names)
 
-    def removed_objects(self, selection: PruneResult | None) -> frozenset:
+    def removed_objects(self, selection: Selection | None) -> frozenset:
         if selection is None:
             return frozenset()
         return frozenset(self.up_names[name] for name in selection.removed)
@@ -338,7 +335,7 @@ class _InnerPlanner:
         self.reader_objects = {up: reader for reader, up in stage.up_names.items()} if stage else {}
         self.reader_actions = {up: reader for reader, up in stage.action_names.items()} if stage else {}
 
-    def __call__(self, selection: PruneResult | None, limit: float | None) -> RunOutcome:
+    def __call__(self, selection: Selection | None, limit: float | None) -> RunOutcome:
         self.calls += 1
         removed = self.stage.removed_objects(selection) if self.stage is not None else frozenset()
         target = restrict_problem(self.problem, removed)
@@ -346,7 +343,7 @@ class _InnerPlanner:
         result = self.engine.solve(target, self.heuristic, limit, self.output_stream)
         wall = time.perf_counter() - started
         self.last_result = result
-        status = _UP_TO_PLANNER.get(result.status, PlannerStatus.PLANNER_CRASH)
+        status = UP_STATUS.get(result.status.name, PlannerStatus.PLANNER_CRASH)
         steps = Plan()
         if result.status in POSITIVE_OUTCOMES:
             lifted = lift_plan(result.plan, self.problem) if result.plan is not None else None
@@ -364,6 +361,7 @@ class _InnerPlanner:
             config=self.engine.name,
             planner=self.engine.name,
             raw_status=result.status.name,
+            reason=f"{self.engine.name}: unified-planning status {result.status.name}",
             optimal=result.status is PlanGenerationResultStatus.SOLVED_OPTIMALLY,
         )
 
@@ -374,28 +372,18 @@ class _InnerPlanner:
         return PlanStep(self.reader_actions[step.action.name], arguments)
 
 
-_UP_TO_PLANNER = {
-    PlanGenerationResultStatus.SOLVED_SATISFICING: PlannerStatus.SOLVED,
-    PlanGenerationResultStatus.SOLVED_OPTIMALLY: PlannerStatus.SOLVED,
-    PlanGenerationResultStatus.UNSOLVABLE_PROVEN: PlannerStatus.UNSOLVABLE,
-    PlanGenerationResultStatus.UNSOLVABLE_INCOMPLETELY: PlannerStatus.SEARCH_INCOMPLETE,
-    PlanGenerationResultStatus.TIMEOUT: PlannerStatus.OUT_OF_TIME,
-    PlanGenerationResultStatus.MEMOUT: PlannerStatus.OUT_OF_MEMORY,
-    PlanGenerationResultStatus.INTERNAL_ERROR: PlannerStatus.PLANNER_CRASH,
-    PlanGenerationResultStatus.UNSUPPORTED_PROBLEM: PlannerStatus.UNSUPPORTED,
-}
+def up_status(status: PlannerStatus) -> PlanGenerationResultStatus:
+    """Ours as unified-planning says it (``planning.up_engines.UP_STATUS`` read backwards)."""
+    return PlanGenerationResultStatus[up_status_name(status)]
 
-# The loop's verdict, as unified-planning says it.
-_PLAN_TO_UP = {
-    PlanStatus.UNSOLVABLE: PlanGenerationResultStatus.UNSOLVABLE_PROVEN,
-    PlanStatus.OUT_OF_TIME: PlanGenerationResultStatus.TIMEOUT,
-    PlanStatus.OUT_OF_MEMORY: PlanGenerationResultStatus.MEMOUT,
-    PlanStatus.INPUT_ERROR: PlanGenerationResultStatus.INTERNAL_ERROR,
-    PlanStatus.UNSUPPORTED: PlanGenerationResultStatus.UNSUPPORTED_PROBLEM,
-    PlanStatus.PLANNER_ERROR: PlanGenerationResultStatus.INTERNAL_ERROR,
-    PlanStatus.PLANNER_CONFIG_ERROR: PlanGenerationResultStatus.INTERNAL_ERROR,
-    PlanStatus.VALIDATOR_UNAVAILABLE: PlanGenerationResultStatus.INTERNAL_ERROR,
-}
+
+def up_verdict(status: PlanStatus) -> PlanGenerationResultStatus:
+    """The loop's verdict as unified-planning says it: a verdict spelled like a planner status
+    (unsolvable, out-of-time, ...) maps as that status does; any other is an internal error."""
+    try:
+        return up_status(PlannerStatus(status.value))
+    except ValueError:
+        return PlanGenerationResultStatus.INTERNAL_ERROR
 
 
 def describe_attempt(attempt: Attempt, total: int) -> str:
@@ -449,7 +437,7 @@ def _final_status(result, found, attempts) -> tuple[PlanGenerationResultStatus, 
             )
     if result.status is PlanStatus.UNSOLVABLE:
         return PlanGenerationResultStatus.UNSOLVABLE_PROVEN, "the problem is unsolvable (proven on the whole problem)"
-    status = _PLAN_TO_UP.get(result.status, PlanGenerationResultStatus.INTERNAL_ERROR)
+    status = up_verdict(result.status)
     return (
         status,
         f"the inner planner reported {last.outcome.raw_status or last.outcome.status.name} on the whole problem",
@@ -469,9 +457,7 @@ def _final_status_whole(problem: Problem, found, attempts) -> tuple[PlanGenerati
                 f"plan of {len(found.actions)} steps validated on the original problem",
             )
         return PlanGenerationResultStatus.INTERNAL_ERROR, "the inner planner's plan does not validate"
-    return {v: k for k, v in _UP_TO_PLANNER.items() if k is not PlanGenerationResultStatus.SOLVED_OPTIMALLY}.get(
-        last.outcome.status, PlanGenerationResultStatus.INTERNAL_ERROR
-    ), f"the inner planner reported {last.outcome.raw_status} on the whole problem"
+    return up_status(last.outcome.status), f"the inner planner reported {last.outcome.raw_status} on the whole problem"
 
 
 # --------------------------------------------------------------------------- building and mapping back

@@ -68,16 +68,14 @@ def format_formula(node: f.Node, display: Display = _same) -> str:
         if isinstance(n, f.Timed):
             return f"({f.TIMES[n.when]} {text(n.body)})"
         if isinstance(n, f.Preference):
-            name = f"{n.name} " if n.name is not None else ""
-            return f"(preference {name}{text(n.body)})"
+            label = f"{n.name} " if n.name is not None else ""
+            return f"(preference {label}{text(n.body)})"
         if isinstance(n, f.Modal):
             if n.operator == "at-end":
                 return f"(at end {text(n.parts[0])})"
             return "(" + " ".join([n.operator, *map(format_number, n.numbers), *map(text, n.parts)]) + ")"
-        keyword = _KEYWORDS.get(type(n))
-        if keyword is None:
-            keyword = n.op  # Comparison, Arithmetic, NumericEffect
-        return "(" + " ".join([keyword, *map(text, f.children(n))]) + ")"
+        head = _KEYWORDS.get(type(n)) or str(getattr(n, "op", "?"))  # Comparison, Arithmetic, NumericEffect
+        return "(" + " ".join([head, *map(text, f.children(n))]) + ")"
 
     return text(node)
 
@@ -186,7 +184,7 @@ def format_problem_parts(
     return format_problem(problem, comment)
 
 
-def _init_order(problem: Problem) -> Iterable[tuple]:
+def _init_order(problem: Problem) -> Iterable[f.GroundAtom]:
     # Facts in the order the problem's own text had them when it has one, else sorted.
     if problem.init_line:
         return sorted(problem.init, key=lambda atom: (problem.init_line.get(atom, 0), atom))

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass
+from typing import Any
 
 Parameters = tuple[tuple[str, str], ...]  # ((?variable, type), ...)
 GroundAtom = tuple[str, ...]  # (predicate, arg, ...)
@@ -256,9 +257,9 @@ def literals(formula: Formula, positive: bool = True) -> Iterator[tuple[Atom, bo
             yield from literals(part, positive)
             yield from literals(part, not positive)
     else:
-        for part in children(formula):
-            if not isinstance(part, (Number, Fluent, NumericVariable, Arithmetic)):
-                yield from literals(part, positive)
+        for child in children(formula):
+            if not isinstance(child, (Number, Fluent, NumericVariable, Arithmetic)):
+                yield from literals(child, positive)
 
 
 @dataclass(frozen=True, slots=True)
@@ -277,7 +278,9 @@ def effect_literals(effect: Formula) -> Iterator[EffectLiteral]:
     yield from _effect_literals(effect, TRUE, (), None)
 
 
-def _effect_literals(effect: Formula, condition: Formula, quantified: Parameters, when: str | None):
+def _effect_literals(
+    effect: Formula, condition: Formula, quantified: Parameters, when: str | None
+) -> Iterator[EffectLiteral]:
     if isinstance(effect, Atom):
         yield EffectLiteral(effect, True, condition, quantified, when)
     elif isinstance(effect, Not) and isinstance(effect.body, Atom):
@@ -328,9 +331,9 @@ def quantifiers(formula: Formula, positive: bool = True) -> Iterator[tuple[Exist
             yield from quantifiers(part, positive)
             yield from quantifiers(part, not positive)
     else:
-        for part in children(formula):
-            if not isinstance(part, (Number, Fluent, NumericVariable, Arithmetic)):
-                yield from quantifiers(part, positive)
+        for child in children(formula):
+            if not isinstance(child, (Number, Fluent, NumericVariable, Arithmetic)):
+                yield from quantifiers(child, positive)
 
 
 def terms_of(node: Node) -> Iterator[str]:
@@ -371,11 +374,12 @@ def _rebuild(node: Node, rename: Callable[[str], str], binding: Mapping[str, str
     if isinstance(node, (Exists, Forall)):
         shadowed = {variable for variable, _ in node.parameters}
         inner = {k: v for k, v in binding.items() if k not in shadowed}
-        return type(node)(node.parameters, _rebuild(node.body, lambda t: inner.get(t, t), inner))
+        body: Any = _rebuild(node.body, lambda t: inner.get(t, t), inner)
+        return type(node)(node.parameters, body)
     parts = children(node)
     if not parts:
         return node
-    rebuilt = tuple(_rebuild(part, rename, binding) for part in parts)
+    rebuilt: tuple[Any, ...] = tuple(_rebuild(part, rename, binding) for part in parts)
     if isinstance(node, And):
         return And(rebuilt)
     if isinstance(node, Or):
@@ -391,11 +395,11 @@ def _rebuild(node: Node, rename: Callable[[str], str], binding: Mapping[str, str
     if isinstance(node, When):
         return When(rebuilt[0], rebuilt[1])
     if isinstance(node, Comparison):
-        return Comparison(node.op, rebuilt[0], rebuilt[1])  # type: ignore[arg-type]
+        return Comparison(node.op, rebuilt[0], rebuilt[1])
     if isinstance(node, NumericEffect):
-        return NumericEffect(node.op, rebuilt[0], rebuilt[1])  # type: ignore[arg-type]
+        return NumericEffect(node.op, rebuilt[0], rebuilt[1])
     if isinstance(node, Arithmetic):
-        return Arithmetic(node.op, rebuilt)  # type: ignore[arg-type]
+        return Arithmetic(node.op, rebuilt)
     if isinstance(node, Modal):
         return Modal(node.operator, node.numbers, rebuilt)
     raise TypeError(f"not a formula node: {node!r}")

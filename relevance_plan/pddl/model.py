@@ -11,13 +11,22 @@ from __future__ import annotations
 from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
+from typing import TypeVar
 
 from relevance_plan.pddl.formulas import TRUE, Atom, Expression, Formula, GroundAtom, Parameters, names_in
+from relevance_plan.pddl.sexpr import Item, Symbol
 
 NUMBER = "number"  # the type of a numeric function
 
+ObjectGroup = tuple[tuple[Symbol, ...], "Item | None"]  # the names of one ``a b - t`` group, and its type
+InitSpan = tuple[tuple[int, int], frozenset[str]]  # (start, end) of an :init entry, the objects it mentions
 
-def frozen(mapping: Mapping) -> Mapping:
+
+K = TypeVar("K")
+V = TypeVar("V")
+
+
+def frozen(mapping: Mapping[K, V]) -> Mapping[K, V]:
     return MappingProxyType(dict(mapping))
 
 
@@ -72,7 +81,7 @@ class TimedLiteral:
 @dataclass(frozen=True, eq=False)
 class Domain:
     name: str
-    requirements: frozenset
+    requirements: frozenset[str]
     types: Mapping[str, str]  # type -> parent type ("object" has parent "")
     constants: Mapping[str, str]  # constant -> type
     predicates: Mapping[str, Parameters]
@@ -127,7 +136,7 @@ class Domain:
         return cached
 
     @property
-    def derived_predicates(self) -> frozenset:
+    def derived_predicates(self) -> frozenset[str]:
         return frozenset(rule.head.predicate for rule in self.derived)
 
     @property
@@ -145,7 +154,7 @@ class Problem:
     name: str
     domain_name: str
     objects: Mapping[str, str]  # object -> type, in file order
-    init: frozenset  # ground atoms that are true
+    init: frozenset[GroundAtom]  # ground atoms that are true
     goal: Formula
     text: str = field(repr=False)
     path: str | None = None
@@ -154,10 +163,10 @@ class Problem:
     timed_literals: tuple[TimedLiteral, ...] = ()
     constraints: Formula | None = None
     metric: Metric | None = None
-    requirements: frozenset = frozenset()
+    requirements: frozenset[str] = frozenset()
     # Source layout, for cutting the file (see writer.py).
-    object_groups: tuple = field(default=(), repr=False)  # ((symbols...), type_symbol | None)
-    init_spans: tuple = field(default=(), repr=False)  # ((start, end), frozenset(objects)) of every :init entry
+    object_groups: tuple[ObjectGroup, ...] = field(default=(), repr=False)
+    init_spans: tuple[InitSpan, ...] = field(default=(), repr=False)  # every :init entry and its objects
     init_line: Mapping[GroundAtom, int] = field(default_factory=dict, repr=False)
 
     def display(self, name: str) -> str:
@@ -168,7 +177,7 @@ class Problem:
         for symbols, _ in self.object_groups:
             for symbol in symbols:
                 if symbol.text.lower() == name:
-                    return symbol.line
+                    return int(symbol.line)
         return None
 
 
@@ -208,12 +217,12 @@ def all_objects(domain: Domain, problem: Problem) -> Mapping[str, str]:
     return everything
 
 
-def goal_objects(problem: Problem, domain: Domain) -> frozenset:
+def goal_objects(problem: Problem, domain: Domain) -> frozenset[str]:
     """Objects named in the goal (constants excluded: they are never pruned)."""
     return frozenset(name for name in names_in(problem.goal) if name in problem.objects) - set(domain.constants)
 
 
-def pinned_objects(problem: Problem, domain: Domain) -> frozenset:
+def pinned_objects(problem: Problem, domain: Domain) -> frozenset[str]:
     """Objects that must stay whatever their relevance: named in the goal, the trajectory
     constraints or the metric (pruning them would change what the problem asks)."""
     found = set(names_in(problem.goal))

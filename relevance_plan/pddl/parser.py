@@ -16,13 +16,24 @@ from __future__ import annotations
 
 import re
 from collections.abc import Mapping
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from types import MappingProxyType
+from typing import Any, NoReturn
 
-from relevance_plan.errors import DomainMismatchError, PDDLParseError, UnsupportedFeatureError
+from relevance_plan.errors import DomainMismatchError, PDDLParseError, RelevancePlanError, UnsupportedFeatureError
 from relevance_plan.pddl import formulas as f
-from relevance_plan.pddl.model import NUMBER, Action, DerivedPredicate, Domain, Metric, Problem, TimedLiteral, frozen
-from relevance_plan.pddl.sexpr import Node, Symbol, parse_sexpr
+from relevance_plan.pddl.model import (
+    NUMBER,
+    Action,
+    DerivedPredicate,
+    Domain,
+    Metric,
+    ObjectGroup,
+    Problem,
+    TimedLiteral,
+    frozen,
+)
+from relevance_plan.pddl.sexpr import Item, Node, Symbol, parse_sexpr
 
 # Accepted as written; PDDL+ is refused (see UNSUPPORTED_REQUIREMENTS).
 KNOWN_REQUIREMENTS = frozenset(
@@ -105,24 +116,24 @@ class _Reader:
     def __init__(self, path: str | None):
         self.path = path
 
-    def fail(self, message: str, where, error=PDDLParseError):
+    def fail(self, message: str, where: Item | None, error: type[RelevancePlanError] = PDDLParseError) -> NoReturn:
         raise error(message, path=self.path, line=where.line if where is not None else None)
 
-    def mismatch(self, scope: _Scope):
+    def mismatch(self, scope: _Scope) -> type[RelevancePlanError]:
         return DomainMismatchError if scope.in_problem else PDDLParseError
 
-    def symbol(self, item, what: str) -> str:
+    def symbol(self, item: Item, what: str) -> str:
         if not isinstance(item, Symbol):
             self.fail(f"expected {what}, found a list", item)
         return item.text.lower()
 
     @staticmethod
-    def keyword_of(node) -> str | None:
+    def keyword_of(node: object) -> str | None:
         if isinstance(node, Node) and node.items and isinstance(node.items[0], Symbol):
             return node.items[0].text.lower()
         return None
 
-    def header(self, root: Node, kind: str) -> tuple[str, list]:
+    def header(self, root: Node, kind: str) -> tuple[str, list[Item]]:
         items = root.items
         if not items or self.keyword_of(root) != "define":
             self.fail("expected '(define ...)'", root)
@@ -137,24 +148,24 @@ class _Reader:
             self.fail(f"expected '({kind} NAME)', found '({head_kind} ...)'", head)
         return self.symbol(head.items[1], f"{kind} name"), items[2:]
 
-    def requirements(self, body: list) -> frozenset:
+    def requirements(self, body: list[Item]) -> frozenset[str]:
         found = set()
         for item in body:
             requirement = self.symbol(item, "a requirement")
             if requirement in UNSUPPORTED_REQUIREMENTS:
                 self.fail(
-                    f"requirement '{item.text}': {UNSUPPORTED_REQUIREMENTS[requirement]} are not supported",
+                    f"requirement '{requirement}': {UNSUPPORTED_REQUIREMENTS[requirement]} are not supported",
                     item,
                     UnsupportedFeatureError,
                 )
             if not requirement.startswith(":"):
-                self.fail(f"requirement '{item.text}' must start with ':'", item)
+                self.fail(f"requirement '{requirement}' must start with ':'", item)
             found.add(requirement)
         return frozenset(found)
 
     # ---------------------------------------------------------------- typed lists
 
-    def type_name(self, item) -> str:
+    def type_name(self, item: Item) -> str:
         if isinstance(item, Node):
             if self.keyword_of(item) != "either" or len(item.items) < 2:
                 self.fail("expected a type name or '(either TYPE ...)'", item)
@@ -162,10 +173,10 @@ class _Reader:
             return "(either " + " ".join(members) + ")" if len(members) > 1 else members[0]
         return item.text.lower()
 
-    def typed_list(self, items: list, what: str) -> tuple[list, list]:
+    def typed_list(self, items: list[Item], what: str) -> tuple[list[tuple[Symbol, str]], list[ObjectGroup]]:
         """'a b - t c - u d' -> [(symbol, type)] and the groups ((symbols...), type item | None)."""
-        result: list = []
-        groups: list = []
+        result: list[tuple[Symbol, str]] = []
+        groups: list[ObjectGroup] = []
         pending: list[Symbol] = []
         index = 0
         while index < len(items):
@@ -191,7 +202,7 @@ class _Reader:
             groups.append((tuple(pending), None))
         return result, groups
 
-    def parameters(self, node, scope: _Scope | None, *, unique: bool = True) -> f.Parameters:
+    def parameters(self, node: Item, scope: _Scope | None, *, unique: bool = True) -> f.Parameters:
         if not isinstance(node, Node):
             self.fail("expected a parameter list", node)
         pairs, _ = self.typed_list(node.items, "parameter list")
@@ -211,7 +222,7 @@ class _Reader:
 
     # ---------------------------------------------------------------- terms and expressions
 
-    def term(self, item, scope: _Scope, context: str) -> str:
+    def term(self, item: Item, scope: _Scope, context: str) -> str:
         if isinstance(item, Node):
             self.fail(
                 f"a function term as an argument of '{context}' (object fluents) is not supported",
@@ -226,7 +237,7 @@ class _Reader:
             self.fail(f"unknown object or constant '{item.text}' in '({context} ...)'", item, self.mismatch(scope))
         return text
 
-    def expression(self, item, scope: _Scope) -> f.Expression:
+    def expression(self, item: Item, scope: _Scope) -> f.Expression:
         if isinstance(item, Symbol):
             value = _number(item.text)
             if value is not None:
@@ -261,14 +272,14 @@ class _Reader:
             self.fail(f"function '{name}' takes {len(declared)} arguments, got {len(args)}", node, self.mismatch(scope))
         return f.Fluent(name, args)
 
-    def numeric_operand(self, item) -> bool:
+    def numeric_operand(self, item: Item) -> bool:
         if isinstance(item, Node):
             return True
         return _number(item.text) is not None or item.text.lower() == "?duration"
 
     # ---------------------------------------------------------------- conditions
 
-    def condition(self, node, scope: _Scope) -> f.Formula:
+    def condition(self, node: Item, scope: _Scope) -> f.Formula:
         if isinstance(node, Symbol):
             self.fail(f"expected a condition, found '{node.text}'", node)
         if not node.items:
@@ -301,7 +312,7 @@ class _Reader:
             return special
         return self.atom(node, scope)
 
-    def special_condition(self, node: Node, head: str, args: list, scope: _Scope) -> f.Formula | None:
+    def special_condition(self, node: Node, head: str, args: list[Item], scope: _Scope) -> f.Formula | None:
         """Timed conditions, preferences and PDDL3 modal operators; None for an ordinary atom."""
         timed = self.timed_part(node, head, args, scope)
         if timed is not None:
@@ -321,10 +332,10 @@ class _Reader:
         return None
 
     @staticmethod
-    def keyword_of_symbol(item) -> str | None:
+    def keyword_of_symbol(item: Item) -> str | None:
         return item.text.lower() if isinstance(item, Symbol) else None
 
-    def timed_part(self, node: Node, head: str, args: list, scope: _Scope) -> tuple[str, Node] | None:
+    def timed_part(self, node: Node, head: str, args: list[Item], scope: _Scope) -> tuple[str, Node] | None:
         if not scope.durative or len(args) != 2 or not isinstance(args[1], Node):
             return None
         second = self.keyword_of_symbol(args[0])
@@ -334,9 +345,9 @@ class _Reader:
             return "all", args[1]
         return None
 
-    def modal(self, node: Node, head: str, args: list, scope: _Scope) -> f.Modal:
+    def modal(self, node: Node, head: str, args: list[Item], scope: _Scope) -> f.Modal:
         count = f.MODAL_OPERATORS[head]
-        numbers = []
+        numbers: list[float] = []
         for item in args[:count]:
             value = _number(item.text) if isinstance(item, Symbol) else None
             if value is None:
@@ -370,7 +381,7 @@ class _Reader:
 
     # ---------------------------------------------------------------- effects
 
-    def effect(self, node, scope: _Scope) -> f.Formula:
+    def effect(self, node: Item, scope: _Scope) -> f.Formula:
         if isinstance(node, Symbol):
             self.fail(f"expected an effect, found '{node.text}'", node)
         if not node.items:
@@ -407,7 +418,7 @@ class _Reader:
             self.fail("'=' is not an effect (use 'assign' for numeric values)", node)
         return atom
 
-    def numeric_effect(self, node: Node, head: str, args: list, scope: _Scope) -> f.NumericEffect:
+    def numeric_effect(self, node: Node, head: str, args: list[Item], scope: _Scope) -> f.NumericEffect:
         if len(args) != 2 or not isinstance(args[0], Node):
             self.fail(f"'{head}' takes a function term and a value", node)
         target = self.fluent(args[0], scope)
@@ -419,20 +430,15 @@ class _Reader:
 
 @dataclass
 class _DomainParts:
-    requirements: frozenset = frozenset()
-    types: dict | None = None
-    constants: dict | None = None
-    predicates: dict | None = None
-    functions: dict | None = None
-    function_types: dict | None = None
-    action_nodes: list | None = None
-    derived_nodes: list | None = None
-    constraint_node: Node | None = None
-
-    def __post_init__(self):
-        self.types = {"object": ""}
-        self.constants, self.predicates, self.functions, self.function_types = {}, {}, {}, {}
-        self.action_nodes, self.derived_nodes = [], []
+    requirements: frozenset[str] = frozenset()
+    types: dict[str, str] = field(default_factory=lambda: {"object": ""})
+    constants: dict[str, str] = field(default_factory=dict)
+    predicates: dict[str, f.Parameters] = field(default_factory=dict)
+    functions: dict[str, f.Parameters] = field(default_factory=dict)
+    function_types: dict[str, str] = field(default_factory=dict)
+    action_nodes: list[Node] = field(default_factory=list)
+    derived_nodes: list[Node] = field(default_factory=list)
+    constraint_node: Item | None = None
 
 
 def read_domain(text: str, path: str | None = None) -> Domain:
@@ -477,9 +483,9 @@ def read_domain(text: str, path: str | None = None) -> Domain:
     )
 
 
-def _read_domain_section(reader: _Reader, section, parts: _DomainParts) -> None:
+def _read_domain_section(reader: _Reader, section: Item, parts: _DomainParts) -> None:
     key = reader.keyword_of(section)
-    if key is None:
+    if key is None or not isinstance(section, Node):
         reader.fail("expected a '(:section ...)'", section)
     body = section.items[1:]
     if key == ":requirements":
@@ -499,8 +505,8 @@ def _read_domain_section(reader: _Reader, section, parts: _DomainParts) -> None:
             if predicate in parts.predicates:
                 reader.fail(f"predicate '{predicate}' is declared twice", item)
             params = reader.parameters(Node(item.items[1:], item.start, item.end, item.line), None, unique=False)
-            for (_, type_name), symbol in zip(params, item.items[1:]):
-                _check_type(reader, type_name, parts.types, symbol, f"predicate '{predicate}'", PDDLParseError)
+            for (_, type_name), element in zip(params, item.items[1:]):
+                _check_type(reader, type_name, parts.types, element, f"predicate '{predicate}'", PDDLParseError)
             parts.predicates[predicate] = params
     elif key == ":functions":
         _read_functions(reader, body, parts)
@@ -518,13 +524,15 @@ def _read_domain_section(reader: _Reader, section, parts: _DomainParts) -> None:
         reader.fail(f"unknown domain section '{key}'", section)
 
 
-def _check_type(reader: _Reader, type_name: str, types: Mapping[str, str], where, what: str, error) -> None:
+def _check_type(
+    reader: _Reader, type_name: str, types: Mapping[str, str], where: Item, what: str, error: type[RelevancePlanError]
+) -> None:
     for member in type_name.removeprefix("(either ").rstrip(")").split():
         if member not in types:
             reader.fail(f"{what} uses unknown type '{member}'", where, error)
 
 
-def _read_types(reader: _Reader, body: list, types: dict) -> None:
+def _read_types(reader: _Reader, body: list[Item], types: dict[str, str]) -> None:
     pairs, _ = reader.typed_list(body, ":types")
     for symbol, parent in pairs:
         name = symbol.text.lower()
@@ -536,7 +544,7 @@ def _read_types(reader: _Reader, body: list, types: dict) -> None:
             types[parent] = "object"  # a parent used but never declared is a subtype of object
 
 
-def _read_functions(reader: _Reader, body: list, parts: _DomainParts) -> None:
+def _read_functions(reader: _Reader, body: list[Item], parts: _DomainParts) -> None:
     index = 0
     while index < len(body):
         item = body[index]
@@ -571,10 +579,10 @@ def _read_action(reader: _Reader, node: Node, scope: _Scope) -> Action:
     items = node.items
     durative = reader.keyword_of(node) == ":durative-action"
     if len(items) < 2:
-        reader.fail(f"'{items[0].text}' needs a name", node)
+        reader.fail(f"'{reader.keyword_of(node)}' needs a name", node)
     name = reader.symbol(items[1], "an action name")
     allowed = _DURATIVE_FIELDS if durative else _ACTION_FIELDS
-    fields: dict[str, object] = {}
+    fields: dict[str, Item] = {}
     index = 2
     while index < len(items):
         key_item = items[index]
@@ -598,7 +606,7 @@ def _read_action(reader: _Reader, node: Node, scope: _Scope) -> Action:
     return Action(name, params, precondition, effect, duration)
 
 
-def _read_duration(reader: _Reader, node, scope: _Scope, action: str) -> f.Formula:
+def _read_duration(reader: _Reader, node: Item, scope: _Scope, action: str) -> f.Formula:
     duration = reader.condition(node, scope)
     comparisons = [n for n in f.walk(duration) if isinstance(n, f.Comparison)]
     if (
@@ -634,11 +642,11 @@ def _read_derived(reader: _Reader, node: Node, scope: _Scope) -> DerivedPredicat
 
 @dataclass
 class _InitParts:
-    facts: set
-    numeric: dict
-    timed: list
-    spans: list
-    lines: dict
+    facts: set[f.GroundAtom]
+    numeric: dict[f.GroundAtom, float]
+    timed: list[TimedLiteral]
+    spans: list[tuple[tuple[int, int], frozenset[str]]]
+    lines: dict[f.GroundAtom, int]
 
 
 def read_problem(text: str, domain: Domain, path: str | None = None) -> Problem:
@@ -646,11 +654,11 @@ def read_problem(text: str, domain: Domain, path: str | None = None) -> Problem:
     reader = _Reader(path)
     root = parse_sexpr(text, path)
     name, sections = reader.header(root, "problem")
-    found: dict[str, object] = {"init": []}
-    requirements: frozenset = frozenset()
+    found: dict[str, Any] = {"init": []}
+    requirements: frozenset[str] = frozenset()
     for section in sections:
         key = reader.keyword_of(section)
-        if key is None:
+        if key is None or not isinstance(section, Node):
             reader.fail("expected a '(:section ...)'", section)
         if key in found and key != ":init":
             reader.fail(f"section '{key}' appears twice", section)
@@ -661,7 +669,7 @@ def read_problem(text: str, domain: Domain, path: str | None = None) -> Problem:
             domain_name = reader.symbol(body[0], "a domain name")
             if domain_name != domain.name:
                 reader.fail(
-                    f"problem is for domain '{body[0].text}', but the domain file defines '{domain.name}'",
+                    f"problem is for domain '{domain_name}', but the domain file defines '{domain.name}'",
                     section,
                     DomainMismatchError,
                 )
@@ -670,7 +678,7 @@ def read_problem(text: str, domain: Domain, path: str | None = None) -> Problem:
             requirements = reader.requirements(body)
             found[key] = True
         elif key == ":init":
-            found["init"].extend(body)  # type: ignore[attr-defined]
+            found["init"].extend(body)
         elif key in (":objects", ":goal", ":constraints", ":metric"):
             found[key] = section
         elif key == ":length":
@@ -685,7 +693,7 @@ def read_problem(text: str, domain: Domain, path: str | None = None) -> Problem:
     known = dict(domain.constants)
     known.update(objects)
     scope = _Scope(domain.types, domain.predicates, domain.functions, MappingProxyType(known), {}, in_problem=True)
-    init = _read_init(reader, found["init"], scope, objects)  # type: ignore[arg-type]
+    init = _read_init(reader, found["init"], scope, objects)
     goal = _read_goal(reader, found.get(":goal"), replace(scope, preferences=True))
     constraints = None
     if ":constraints" in found:
@@ -710,20 +718,22 @@ def read_problem(text: str, domain: Domain, path: str | None = None) -> Problem:
     )
 
 
-def _single(reader: _Reader, section, key: str, scope: _Scope) -> f.Formula:
+def _single(reader: _Reader, section: Node, key: str, scope: _Scope) -> f.Formula:
     body = section.items[1:]
     if len(body) != 1:
         reader.fail(f"expected '({key} CONDITION)'", section)
     return reader.condition(body[0], scope)
 
 
-def _read_goal(reader: _Reader, section, scope: _Scope) -> f.Formula:
+def _read_goal(reader: _Reader, section: Node | None, scope: _Scope) -> f.Formula:
     if section is None:
         return f.TRUE  # a problem of trajectory constraints only
     return _single(reader, section, ":goal", scope)
 
 
-def _read_objects(reader: _Reader, section, domain: Domain) -> tuple[dict, dict, tuple]:
+def _read_objects(
+    reader: _Reader, section: Node | None, domain: Domain
+) -> tuple[dict[str, str], dict[str, str], tuple[ObjectGroup, ...]]:
     objects: dict[str, str] = {}
     display: dict[str, str] = {}
     if section is None:
@@ -741,7 +751,7 @@ def _read_objects(reader: _Reader, section, domain: Domain) -> tuple[dict, dict,
     return objects, display, tuple(groups)
 
 
-def _read_init(reader: _Reader, nodes: list, scope: _Scope, objects: Mapping[str, str]) -> _InitParts:
+def _read_init(reader: _Reader, nodes: list[Item], scope: _Scope, objects: Mapping[str, str]) -> _InitParts:
     parts = _InitParts(set(), {}, [], [], {})
     for node in nodes:
         if not isinstance(node, Node) or not node.items:
@@ -771,7 +781,7 @@ def _read_init(reader: _Reader, nodes: list, scope: _Scope, objects: Mapping[str
     return parts
 
 
-def _text(item) -> str:
+def _text(item: Item) -> str:
     return item.text if isinstance(item, Symbol) else ""
 
 
@@ -779,7 +789,7 @@ def _atom_terms(atom: f.Atom | f.Equality) -> tuple[str, ...]:
     return atom.args if isinstance(atom, f.Atom) else (atom.left, atom.right)
 
 
-def _read_numeric_value(reader: _Reader, node: Node, scope: _Scope) -> tuple[tuple, float]:
+def _read_numeric_value(reader: _Reader, node: Node, scope: _Scope) -> tuple[f.GroundAtom, float]:
     if len(node.items) != 3 or not isinstance(node.items[1], Node):
         reader.fail("expected '(= (FUNCTION ARG ...) NUMBER)' in ':init'", node)
     fluent = reader.fluent(node.items[1], scope)
@@ -794,11 +804,11 @@ def _read_numeric_value(reader: _Reader, node: Node, scope: _Scope) -> tuple[tup
     return (fluent.function, *fluent.args), value
 
 
-def _read_timed_literal(reader: _Reader, node: Node, scope: _Scope, mentioned: set) -> TimedLiteral:
+def _read_timed_literal(reader: _Reader, node: Node, scope: _Scope, mentioned: set[str]) -> TimedLiteral:
     time = _number(_text(node.items[1]))
     assert time is not None
     if time < 0:
-        reader.fail(f"a timed initial literal at a negative time ({node.items[1].text})", node)
+        reader.fail(f"a timed initial literal at a negative time ({time:g})", node)
     inner = node.items[2]
     if not isinstance(inner, Node):
         reader.fail("expected '(at TIME FACT)'", node)
@@ -819,7 +829,7 @@ def _read_timed_literal(reader: _Reader, node: Node, scope: _Scope, mentioned: s
     return TimedLiteral(time, atom=(atom.predicate, *atom.args), negated=negated)
 
 
-def _read_metric(reader: _Reader, section, scope: _Scope) -> Metric | None:
+def _read_metric(reader: _Reader, section: Node | None, scope: _Scope) -> Metric | None:
     if section is None:
         return None
     body = section.items[1:]
@@ -827,5 +837,5 @@ def _read_metric(reader: _Reader, section, scope: _Scope) -> Metric | None:
         reader.fail("expected '(:metric minimize|maximize EXPRESSION)'", section)
     direction = reader.symbol(body[0], "'minimize' or 'maximize'")
     if direction not in ("minimize", "maximize"):
-        reader.fail(f"expected 'minimize' or 'maximize', found '{body[0].text}'", body[0])
+        reader.fail(f"expected 'minimize' or 'maximize', found '{direction}'", body[0])
     return Metric(direction, reader.expression(body[1], replace(scope, durative=False)))

@@ -31,10 +31,13 @@ class Symbol:
 
 @dataclass(slots=True)
 class Node:
-    items: list  # of Node | Symbol
+    items: list[Node | Symbol]
     start: int
     end: int
     line: int
+
+
+Item = Node | Symbol
 
 
 class LineIndex:

@@ -29,7 +29,7 @@ from dataclasses import dataclass
 
 from relevance_plan.errors import SimulationTimeout
 from relevance_plan.pddl import formulas as f
-from relevance_plan.pddl.model import Action, Domain, Problem, all_objects
+from relevance_plan.pddl.model import Action, DerivedPredicate, Domain, Problem, TimedLiteral, all_objects
 from relevance_plan.pddl.plans import Plan, PlanStep
 
 DURATION_TOLERANCE = 1e-3  # planners print durations with three decimals
@@ -57,8 +57,8 @@ class Simulation:
 
 @dataclass
 class State:
-    facts: set
-    values: dict  # (function, args...) -> float
+    facts: set[f.GroundAtom]
+    values: dict[f.GroundAtom, float]  # (function, args...) -> float
 
     def copy(self) -> State:
         return State(set(self.facts), dict(self.values))
@@ -90,7 +90,7 @@ class Simulator:
         if self._work % _CHECK_EVERY == 0 and self.deadline is not None and time.monotonic() > self.deadline:
             raise SimulationTimeout("plan validation ran out of time")
 
-    def bindings(self, params: f.Parameters, binding: Mapping[str, str]) -> Iterator[dict]:
+    def bindings(self, params: f.Parameters, binding: Mapping[str, str]) -> Iterator[dict[str, str]]:
         pools = [self.objects_of(type_name) for _, type_name in params]
         names = [name for name, _ in params]
         for values in itertools.product(*pools):
@@ -137,10 +137,10 @@ class Simulator:
                 raise StepFailure(f"the value of ({' '.join(key)}) is undefined")
             return found
         if isinstance(expression, f.NumericVariable):
-            found = binding.get(expression.name)
-            if found is None:
+            text = binding.get(expression.name)
+            if text is None:
                 raise StepFailure(f"{expression.name} has no value here")
-            return float(found)
+            return float(text)
         values = [self.value(arg, state, binding) for arg in expression.args]
         if expression.op == "-" and len(values) == 1:
             return -values[0]
@@ -167,11 +167,19 @@ class Simulator:
         self._collect(effect, state, binding, when, None, found)
         return found
 
-    def _collect(self, effect, state, binding, when, current, found: Effects) -> None:
+    def _collect(
+        self,
+        effect: f.Formula,
+        state: State,
+        binding: Mapping[str, str],
+        when: str | None,
+        current: str | None,
+        found: Effects,
+    ) -> None:
         if isinstance(effect, f.Atom):
             if current == when:
                 found.adds.add(f.ground(effect, binding))
-        elif isinstance(effect, f.Not):
+        elif isinstance(effect, f.Not) and isinstance(effect.body, f.Atom):
             if current == when:
                 found.deletes.add(f.ground(effect.body, binding))
         elif isinstance(effect, f.And):
@@ -191,23 +199,10 @@ class Simulator:
             if current == when:
                 self._numeric(effect, state, binding, found)
 
-    def _numeric(self, effect: f.NumericEffect, state: State, binding, found: Effects) -> None:
+    def _numeric(self, effect: f.NumericEffect, state: State, binding: Mapping[str, str], found: Effects) -> None:
         key = (effect.fluent.function, *(binding.get(a, a) for a in effect.fluent.args))
         amount = self.value(effect.value, state, binding)
-        if effect.op == "assign":
-            new = amount
-        else:
-            old = state.values.get(key)
-            if old is None:
-                raise StepFailure(f"'{effect.op}' of ({' '.join(key)}), whose value is undefined")
-            new = {
-                "increase": old + amount,
-                "decrease": old - amount,
-                "scale-up": old * amount,
-                "scale-down": old / amount if amount else None,
-            }[effect.op]
-            if new is None:
-                raise StepFailure("scale-down by zero")
+        new = amount if effect.op == "assign" else _update(effect.op, state.values.get(key), amount, key)
         if key in found.values and found.values[key] != new:
             raise StepFailure(f"two effects give ({' '.join(key)}) different values at once")
         found.values[key] = new
@@ -234,17 +229,31 @@ class Simulator:
 
 @dataclass
 class Effects:
-    adds: set
-    deletes: set
-    values: dict
+    adds: set[f.GroundAtom]
+    deletes: set[f.GroundAtom]
+    values: dict[f.GroundAtom, float]
 
     def apply(self, state: State) -> None:
         state.facts.difference_update(self.deletes - self.adds)  # add-after-delete, as the planners do
         state.facts.update(self.adds)
         state.values.update(self.values)
 
-    def writes(self) -> set:
+    def writes(self) -> set[tuple[str, ...]]:
         return {("fact",) + atom for atom in self.adds | self.deletes} | {("value",) + key for key in self.values}
+
+
+def _update(op: str, old: float | None, amount: float, key: f.GroundAtom) -> float:
+    if old is None:
+        raise StepFailure(f"'{op}' of ({' '.join(key)}), whose value is undefined")
+    if op == "increase":
+        return old + amount
+    if op == "decrease":
+        return old - amount
+    if op == "scale-up":
+        return old * amount
+    if amount == 0:
+        raise StepFailure("scale-down by zero")
+    return old / amount
 
 
 def _compare(op: str, left: float, right: float) -> bool:
@@ -259,7 +268,7 @@ def _compare(op: str, left: float, right: float) -> bool:
     return abs(left - right) <= 1e-9 * max(1.0, abs(left), abs(right))
 
 
-def _strata(domain: Domain) -> tuple[tuple, ...]:
+def _strata(domain: Domain) -> tuple[tuple[DerivedPredicate, ...], ...]:
     """Derived rules in strata: a rule that reads a derived predicate negatively comes after its rules."""
     derived = domain.derived_predicates
     level = {predicate: 0 for predicate in derived}
@@ -324,7 +333,7 @@ def _run_sequential(simulator: Simulator, steps: Sequence[PlanStep]) -> State:
     return state
 
 
-def _bind(simulator: Simulator, step: PlanStep, number: int) -> tuple[Action, dict]:
+def _bind(simulator: Simulator, step: PlanStep, number: int) -> tuple[Action, dict[str, str]]:
     action = simulator.domain.action(step.action)
     if action is None:
         raise StepFailure(f"step {number} {step}: unknown action", number)
@@ -350,7 +359,7 @@ class _Happening:
     step: PlanStep | None = None
     action: Action | None = None
     binding: Mapping[str, str] | None = None
-    literal: object = None
+    literal: TimedLiteral | None = None
 
 
 def _run_timed(simulator: Simulator, steps: Sequence[PlanStep]) -> tuple[State, float]:
@@ -393,7 +402,9 @@ def _happenings(simulator: Simulator, steps: Sequence[PlanStep], state: State) -
     return happenings
 
 
-def _duration(simulator: Simulator, action: Action, step: PlanStep, binding, state: State, number: int) -> float:
+def _duration(
+    simulator: Simulator, action: Action, step: PlanStep, binding: Mapping[str, str], state: State, number: int
+) -> float:
     """The step's duration, checked against the action's constraint (evaluated in the initial
     state's values for its fluents: durations in the IPC domains depend on static functions)."""
     assert action.duration is not None
@@ -412,7 +423,9 @@ def _duration(simulator: Simulator, action: Action, step: PlanStep, binding, sta
     return duration
 
 
-def _duration_fits(simulator: Simulator, part: f.Comparison, duration: float, state: State, binding) -> bool:
+def _duration_fits(
+    simulator: Simulator, part: f.Comparison, duration: float, state: State, binding: Mapping[str, str]
+) -> bool:
     timed = dict(binding)
     timed["?duration"] = repr(duration)
     left = simulator.value(part.left, state, timed)
@@ -422,9 +435,9 @@ def _duration_fits(simulator: Simulator, part: f.Comparison, duration: float, st
     return _compare(part.op, left, right) or abs(left - right) <= DURATION_TOLERANCE
 
 
-def _apply_group(simulator: Simulator, state: State, group: list[_Happening], running: dict) -> None:
+def _apply_group(simulator: Simulator, state: State, group: list[_Happening], running: dict[int, _Happening]) -> None:
     """Apply the happenings of one instant: conditions in the state before, then every effect at once."""
-    found: list[tuple[_Happening, Effects, set]] = []
+    found: list[tuple[_Happening, Effects, set[tuple[str, ...]]]] = []
     for happening in group:
         effects, reads = _happening_effects(simulator, state, happening)
         found.append((happening, effects, reads))
@@ -445,15 +458,17 @@ def _apply_group(simulator: Simulator, state: State, group: list[_Happening], ru
     simulator.derive(state)
 
 
-def _happening_effects(simulator: Simulator, state: State, happening: _Happening) -> tuple[Effects, set]:
-    if happening.kind == "til":
-        literal = happening.literal
-        if literal.fluent is not None:  # type: ignore[attr-defined]
-            effects = Effects(set(), set(), {literal.fluent: literal.value})  # type: ignore[attr-defined]
-        elif literal.negated:  # type: ignore[attr-defined]
-            effects = Effects(set(), {literal.atom}, {})  # type: ignore[attr-defined]
+def _happening_effects(
+    simulator: Simulator, state: State, happening: _Happening
+) -> tuple[Effects, set[tuple[str, ...]]]:
+    literal = happening.literal
+    if literal is not None:
+        if literal.fluent is not None:
+            effects = Effects(set(), set(), {literal.fluent: literal.value or 0.0})
+        elif literal.atom is not None and literal.negated:
+            effects = Effects(set(), {literal.atom}, {})
         else:
-            effects = Effects({literal.atom}, set(), {})  # type: ignore[attr-defined]
+            effects = Effects({literal.atom} if literal.atom is not None else set(), set(), {})
         return effects, set()
     action, binding, number = happening.action, happening.binding, happening.number
     assert action is not None and binding is not None
@@ -470,7 +485,7 @@ def _happening_effects(simulator: Simulator, state: State, happening: _Happening
     return effects, _reads(condition, binding)
 
 
-def _at(condition: f.Formula, when: str) -> f.Formula:
+def _at(condition: f.Formula, when: str) -> f.And:
     """The part of a durative condition checked at ``when``."""
     return f.And(tuple(part.body for part in f.conjuncts_timed(condition) if part.when == when))
 
@@ -483,7 +498,7 @@ def _check_invariant(simulator: Simulator, state: State, start: _Happening) -> N
         raise StepFailure(f"step {start.number} {start.step}: over all condition broken while it runs", start.number)
 
 
-def _reads(condition: f.Formula, binding: Mapping[str, str]) -> set:
+def _reads(condition: f.Formula, binding: Mapping[str, str]) -> set[tuple[str, ...]]:
     reads = set()
     for node in f.walk(condition):
         if isinstance(node, f.Atom) and all(not f.is_variable(binding.get(a, a)) for a in node.args):

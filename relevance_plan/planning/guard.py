@@ -2,7 +2,7 @@
 
 ``python guard.py FD COMMAND...``: FD is the read end of a pipe whose only
 write end the tool holds.  The guard leads the planner's process group
-(the runner starts it in a new session) and runs COMMAND in that group.
+(``process.run_process_group`` starts it in a new session) and runs COMMAND in that group.
 When the tool dies, even by ``kill -9``, the kernel closes the write end;
 the guard reads end-of-file and kills the whole group, itself included, at
 once, and removes the run's scratch directory (its cwd).  Fast Downward's
@@ -10,7 +10,7 @@ driver forks its translator and search, so a parent-death signal on the
 driver alone would leave them running.
 
 The guard exits as the planner did (a death by signal N as 256 - N, which
-the runner reads back as -N, as it does for the driver's own codes).
+``process`` reads back as -N, as it does for the driver's own codes).
 """
 
 import os
@@ -21,7 +21,7 @@ import sys
 import threading
 import time
 
-# Only a directory the runner made for this run is removed (tempfile prefix "relevance-plan-").
+# Only a directory an adapter made for this run is removed (tempfile prefix "relevance-plan-").
 SCRATCH_PREFIX = "relevance-plan-"
 
 

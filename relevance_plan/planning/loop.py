@@ -14,6 +14,12 @@ called: the front end passes a function that runs the planner on one object
 set (``plan_task`` writes the pruned file and calls a registered planner; the
 unified-planning engine restricts a UP problem and calls its inner engine).
 Both then turn the attempts into a :class:`PlanResult` with :func:`summarise`.
+
+The loop knows no planner by name.  What is a planner's own (the PDDL it
+takes, its exit codes, its plan files) is its adapter's (``planners.py``):
+``plan_task`` lets the planner ``check`` the problem before any work, and
+every run arrives as a :class:`RunOutcome` whose status the adapter already
+classified and whose ``reason`` says what the planner reported, in its terms.
 """
 
 from __future__ import annotations
@@ -27,11 +33,12 @@ from pathlib import Path
 from relevance_plan.errors import UsageError
 from relevance_plan.io import load_domain, load_problem, scratch_directory, write_text_atomic
 from relevance_plan.pddl.plans import Plan
-from relevance_plan.planning.planners import make_planner
-from relevance_plan.planning.runner import PlannerStatus, RunOutcome, check_planner_names
+from relevance_plan.planning.outcome import PlannerStatus, RunOutcome
+from relevance_plan.planning.planners import DEFAULT_PLANNER, DEFAULT_PLANNER_CONFIG, make_planner
 from relevance_plan.planning.validate import ValidationResult, ValidationStatus, validate_plan
+from relevance_plan.progress import ProgressCallback, ProgressEvent
 from relevance_plan.relevance.knowledge import KnowledgeModel
-from relevance_plan.relevance.prune import PruneResult, Thresholds, widen
+from relevance_plan.relevance.prune import Selection, Thresholds, widen
 from relevance_plan.relevance.scorers import PlanningTask
 from relevance_plan.relevance.setup import Scoring, ScoringOptions, score_problem
 
@@ -44,6 +51,8 @@ MAX_MEMORY_MB = 1 << 30
 
 
 class PlanStatus(enum.Enum):
+    """A problem's verdict.  These values are stored in results stores: never respell them."""
+
     SOLVED = "solved"
     UNSOLVABLE = "unsolvable"
     NO_VALID_PLAN = "no-valid-plan"
@@ -62,13 +71,13 @@ class PlanOptions:
     """Everything that decides how one problem is planned; every front end builds one."""
 
     method: str = "relevance"
-    planner: str = "fast-downward"  # a name from planning.planners (fast-downward, up:NAME, cmd:TEMPLATE)
-    planner_config: str = "lama-first"
+    planner: str = DEFAULT_PLANNER  # a planner name as planning.planners.make_planner takes it
+    planner_config: str = DEFAULT_PLANNER_CONFIG
     timeout: float | None = 120.0  # None: no limit (the UP engine without a timeout)
     memory_limit_mb: int | None = None
     thresholds: Thresholds = field(default_factory=Thresholds)
-    relax: bool = True
-    relax_factor: float = 0.5  # thresholds shrink by this factor at each widening
+    widen: bool = True  # after a failed attempt, widen the selection and try again
+    widen_factor: float = 0.5  # thresholds shrink by this factor at each widening
     first_share: float = 0.5  # share of the remaining time a pruned attempt may use
     scorer: str | None = None  # overrides the method's scorer
     goal_filter: bool = True  # for 'relevance': drop relevant objects no goal-directed action can use
@@ -91,8 +100,8 @@ class PlanOptions:
             raise UsageError(f"--memory-limit must be at least {MIN_MEMORY_MB} MB, got {self.memory_limit_mb}")
         if self.memory_limit_mb is not None and self.memory_limit_mb > MAX_MEMORY_MB:
             raise UsageError(f"--memory-limit must be at most {MAX_MEMORY_MB} MB (1 PB), got {self.memory_limit_mb}")
-        if not 0.0 < self.relax_factor < 1.0:
-            raise UsageError(f"relax factor must be in (0, 1), got {self.relax_factor}")
+        if not 0.0 < self.widen_factor < 1.0:
+            raise UsageError(f"widen factor must be in (0, 1), got {self.widen_factor}")
         if not 0.0 < self.first_share <= 1.0:
             raise UsageError(f"first share must be in (0, 1], got {self.first_share}")
 
@@ -116,6 +125,33 @@ SCORING_FIELDS = tuple(f.name for f in fields(ScoringOptions))
 assert set(SCORING_FIELDS) <= set(PLAN_OPTION_FIELDS), "PlanOptions must carry every scoring option"
 
 
+class AttemptStatus(enum.Enum):
+    """How one attempt ended: the planner's status, or for a found plan what validation said.
+
+    The planner's statuses are spelled as :class:`PlannerStatus` spells them (a test checks it).
+    """
+
+    SOLVED = "solved"  # a plan, valid on the original problem (or not validated: an engine's own verdict)
+    PLAN_INVALID = "plan-invalid"
+    PLAN_UNAVAILABLE = "plan-unavailable"  # a plan, but no validator could run
+    PLAN_OUT_OF_TIME = "plan-out-of-time"  # a plan, but validating it ran out of time
+    UNSOLVABLE = "unsolvable"
+    SEARCH_INCOMPLETE = "search-incomplete"
+    OUT_OF_TIME = "out-of-time"
+    OUT_OF_MEMORY = "out-of-memory"
+    INPUT_ERROR = "input-error"
+    PLANNER_CONFIG_ERROR = "planner-config-error"
+    UNSUPPORTED = "unsupported"
+    PLANNER_CRASH = "planner-crash"
+
+
+_VALIDATION_FAILURE = {
+    ValidationStatus.INVALID: AttemptStatus.PLAN_INVALID,
+    ValidationStatus.UNAVAILABLE: AttemptStatus.PLAN_UNAVAILABLE,
+    ValidationStatus.OUT_OF_TIME: AttemptStatus.PLAN_OUT_OF_TIME,
+}
+
+
 @dataclass(frozen=True)
 class Attempt:
     """One planner run on one object set; a found plan was validated on the original problem."""
@@ -134,10 +170,10 @@ class Attempt:
         return self.thresholds is None
 
     @property
-    def status(self) -> str:
+    def status(self) -> AttemptStatus:
         if self.outcome.status is PlannerStatus.SOLVED and self.validation is not None:
-            return "solved" if self.validation.valid else f"plan-{self.validation.status.value}"
-        return self.outcome.status.value
+            return AttemptStatus.SOLVED if self.validation.valid else _VALIDATION_FAILURE[self.validation.status]
+        return AttemptStatus(self.outcome.status.value)
 
 
 @dataclass(frozen=True)
@@ -154,10 +190,10 @@ class PlanResult:
     validation_time: float = 0.0
     objects_total: int = 0
     objects_kept: int = 0
-    prune: PruneResult | None = None
+    selection: Selection | None = None  # the first attempt's objects (None: pure planning)
     message: str = ""
     peak_memory_mb: float = 0.0
-    planner: str = "fast-downward"
+    planner: str = DEFAULT_PLANNER
     scorer: str | None = None
     log_tail: str = ""  # the last planner's log tail when it failed
 
@@ -167,13 +203,10 @@ class PlanResult:
 
     @property
     def first_attempt_status(self) -> str:
+        """The first attempt's status value; without attempts, the result's own."""
         if self.attempts:
-            return self.attempts[0].status
+            return self.attempts[0].status.value
         return self.status.value
-
-    @property
-    def objects_kept_first(self) -> int:
-        return self.attempts[0].objects_kept if self.attempts else self.objects_total
 
     def to_json(self) -> dict:
         return {
@@ -202,7 +235,7 @@ class PlanResult:
                     "time_limit": None if a.time_limit is None else round(a.time_limit, 3),
                     "planner_status": a.outcome.status.value,
                     "planner_exit_code": a.outcome.exit_code,
-                    "status": a.status,
+                    "status": a.status.value,
                     "wall_time": round(a.outcome.wall_time, 4),
                 }
                 for a in self.attempts
@@ -219,28 +252,25 @@ _PLANNER_TO_PLAN_STATUS = {
     PlannerStatus.OUT_OF_TIME: PlanStatus.OUT_OF_TIME,
     PlannerStatus.OUT_OF_MEMORY: PlanStatus.OUT_OF_MEMORY,
     PlannerStatus.INPUT_ERROR: PlanStatus.INPUT_ERROR,
+    PlannerStatus.PLANNER_CONFIG_ERROR: PlanStatus.PLANNER_CONFIG_ERROR,
     PlannerStatus.UNSUPPORTED: PlanStatus.UNSUPPORTED,
     PlannerStatus.PLANNER_CRASH: PlanStatus.PLANNER_ERROR,
 }
 
 # Planner results that say nothing about the object set: retrying a wider set
-# is pointless, so the loop goes straight to the full problem.  A planner that
-# cannot take the domain's features would refuse the full problem too: stop.
+# is pointless, so the loop goes straight to the full problem.
 _PLANNER_FAULTS = (PlannerStatus.INPUT_ERROR, PlannerStatus.PLANNER_CRASH)
+# A planner that cannot take the domain's features, or rejects its own
+# configuration, would fail the full problem the same way: stop.
+_PLANNER_STOPS = (PlannerStatus.UNSUPPORTED, PlannerStatus.PLANNER_CONFIG_ERROR)
 
-# Driver exit codes that reject the planner configuration, not the task:
-# argparse usage error, search input error, unknown alias (driver input error).
-# The full problem would fail the same way, so the loop stops.
-_CONFIG_ERROR_CODES = (2, 33, 36)
-
-ProgressCallback = Callable[[str], None]
 
 # Runs the planner on one object set (None: the user's full problem) within a
 # time limit (None: no limit) and returns its outcome.
-PlannerCall = Callable[["PruneResult | None", "float | None"], RunOutcome]
+PlannerCall = Callable[["Selection | None", "float | None"], RunOutcome]
 
 
-def first_selection(scoring: Scoring, options: PlanOptions) -> PruneResult:
+def first_selection(scoring: Scoring, options: PlanOptions) -> Selection:
     """The object set of the first attempt: thresholds, closure, and for 'relevance' the goal
     filter and the set-aside of blocked alternatives (a bet on the first attempt only:
     widening never sets aside, so it brings them back if the bet was wrong)."""
@@ -254,20 +284,20 @@ def first_selection(scoring: Scoring, options: PlanOptions) -> PruneResult:
 
 def run_attempts(
     task: PlanningTask,
-    selection: PruneResult | None,
+    selection: Selection | None,
     call_planner: PlannerCall,
     options: PlanOptions,
     *,
     started: float,
     model: KnowledgeModel | None = None,
-    say: ProgressCallback | None = None,
+    progress: ProgressCallback | None = None,
 ) -> tuple[list[Attempt], float]:
     """Plan on ``selection`` (None: the full problem), widening after each failure.
 
     Returns the attempts and the seconds spent widening.  The deadline is
     ``started + options.timeout``.
     """
-    say = say or (lambda message: None)
+    say = _teller(progress)
     total = len(task.problem.objects)
     deadline = None if options.timeout is None else started + options.timeout
     goal_filter = options.goal_filter and options.narrows_first
@@ -280,7 +310,7 @@ def run_attempts(
         full = current is None or len(current.kept) >= total
         kept = total if full else len(current.kept)
         say(f"attempt {number}: the full problem" if full else f"attempt {number}: {kept} of {total} objects")
-        final = full or not options.relax
+        final = full or not options.widen
         if deadline is None:
             limit = None
         else:
@@ -302,20 +332,25 @@ def run_attempts(
         )
         if validation is not None and validation.status is not ValidationStatus.INVALID:
             break  # valid, out of time, or no validator could run: report it, never retry blindly
-        if not options.relax or full:
+        if not options.widen or full:
             break
-        if outcome.status is PlannerStatus.UNSUPPORTED:
+        if outcome.status in _PLANNER_STOPS:
             break
         if outcome.status in _PLANNER_FAULTS:
-            if outcome.exit_code in _CONFIG_ERROR_CODES and outcome.planner == "fast-downward":
-                break
             say(f"the planner reported {outcome.status.value} on a pruned problem: trying the full problem")
             current = None
             continue
         widen_started = time.perf_counter()
-        current, extra = widen(current, options.relax_factor, extra, model, goal_filter)
+        current, extra = widen(current, options.widen_factor, extra, model, goal_filter)
         widening_time += time.perf_counter() - widen_started
     return attempts, widening_time
+
+
+def _teller(progress: ProgressCallback | None) -> Callable[[str], None]:
+    """A function that reports one step as a message (nothing when nobody listens)."""
+    if progress is None:
+        return lambda message: None
+    return lambda message: progress(ProgressEvent(message=message))
 
 
 def _validate(
@@ -337,15 +372,14 @@ def plan_task(
     progress: ProgressCallback | None = None,
 ) -> PlanResult:
     """Run one method on one problem; the plan returned is always validated on the original."""
-    say = progress or (lambda message: None)
+    say = _teller(progress)
     started = time.perf_counter()
     domain_path, problem_path = str(domain_path), str(problem_path)
     planner = make_planner(options.planner, options.planner_config)
     domain = load_domain(domain_path)
     task = PlanningTask(domain, load_problem(problem_path, domain))
     total = len(task.problem.objects)
-    if planner.name == "fast-downward":
-        check_planner_names(task.domain, task.problem)
+    planner.check(task.domain, task.problem)
     overran = _overran("reading the domain and problem", started, options, total)
     if overran is not None:
         return overran
@@ -384,14 +418,20 @@ def plan_task(
 
     with scratch_directory() as scratch:
 
-        def call_planner(chosen: PruneResult | None, limit: float | None) -> RunOutcome:
+        def call_planner(objects: Selection | None, limit: float | None) -> RunOutcome:
             target = problem_path
-            if chosen is not None:
-                target = str(write_text_atomic(Path(scratch) / f"pruned-{len(chosen.kept)}.pddl", chosen.text))
+            if objects is not None:
+                target = str(write_text_atomic(Path(scratch) / f"pruned-{len(objects.kept)}.pddl", objects.text))
             return planner.run(domain_path, target, time_limit=limit, memory_limit_mb=options.memory_limit_mb)
 
         attempts, widening_time = run_attempts(
-            task, selection, call_planner, options, started=started, model=scoring.model if scoring else None, say=say
+            task,
+            selection,
+            call_planner,
+            options,
+            started=started,
+            model=scoring.model if scoring else None,
+            progress=progress,
         )
     return summarise(
         task,
@@ -426,8 +466,8 @@ def summarise(
     attempts: Sequence[Attempt],
     started: float,
     relevance_time: float,
-    selection: PruneResult | None,
-    planner: str = "fast-downward",
+    selection: Selection | None,
+    planner: str = DEFAULT_PLANNER,
     scorer: str | None = None,
 ) -> PlanResult:
     """The result of a run of attempts: the plan of the last attempt if it validated, else why not."""
@@ -440,7 +480,7 @@ def summarise(
         planner_time=sum(a.outcome.wall_time for a in attempts),
         validation_time=sum(a.validation_time for a in attempts),
         objects_total=total,
-        prune=selection,
+        selection=selection,
         peak_memory_mb=max((a.outcome.peak_memory_mb for a in attempts), default=0.0),
         planner=planner,
         scorer=scorer,
@@ -450,64 +490,59 @@ def summarise(
     last = attempts[-1]
     common["objects_kept"] = last.objects_kept
     if last.outcome.status is PlannerStatus.SOLVED:
-        validation = last.validation
-        if validation is not None and validation.valid:
-            plan = last.outcome.plan
-            return PlanResult(
-                status=PlanStatus.SOLVED,
-                plan=plan,
-                plan_cost=last.outcome.plan_cost,
-                validation=validation,
-                message=f"plan of {len(plan)} steps validated on the original problem ({validation.validator})",
-                **common,
-            )
-        if validation is not None and validation.status is ValidationStatus.OUT_OF_TIME:
-            return PlanResult(
-                status=PlanStatus.OUT_OF_TIME,
-                validation=validation,
-                message=f"a plan was found but validating it ran out of time: {validation.message}",
-                **common,
-            )
-        if validation is not None and validation.status is ValidationStatus.UNAVAILABLE:
-            return PlanResult(
-                status=PlanStatus.VALIDATOR_UNAVAILABLE,
-                validation=validation,
-                message=f"a plan was found but NO VALIDATOR COULD RUN: {validation.message}",
-                **common,
-            )
+        return _validated(last, common)
+    status, message = _failure(last, options)
+    return PlanResult(status=status, message=message, log_tail=last.outcome.log_tail, **common)
+
+
+def _validated(last: Attempt, common: dict) -> PlanResult:
+    """The result when the last attempt found a plan: what its validation on the original said."""
+    validation = last.validation
+    if validation is not None and validation.valid:
+        plan = last.outcome.plan
         return PlanResult(
-            status=PlanStatus.NO_VALID_PLAN,
+            status=PlanStatus.SOLVED,
+            plan=plan,
+            plan_cost=last.outcome.plan_cost,
             validation=validation,
-            message=f"the plan failed validation on the original problem: {validation.message if validation else ''}",
+            message=f"plan of {len(plan)} steps validated on the original problem ({validation.validator})",
             **common,
         )
-    status = _PLANNER_TO_PLAN_STATUS.get(last.outcome.status, PlanStatus.PLANNER_ERROR)
-    if (
-        status is PlanStatus.INPUT_ERROR
-        and last.outcome.exit_code in _CONFIG_ERROR_CODES
-        and last.outcome.planner == "fast-downward"
-    ):
-        status = PlanStatus.PLANNER_CONFIG_ERROR
+    if validation is not None and validation.status is ValidationStatus.OUT_OF_TIME:
+        status = PlanStatus.OUT_OF_TIME
+        message = f"a plan was found but validating it ran out of time: {validation.message}"
+    elif validation is not None and validation.status is ValidationStatus.UNAVAILABLE:
+        status = PlanStatus.VALIDATOR_UNAVAILABLE
+        message = f"a plan was found but NO VALIDATOR COULD RUN: {validation.message}"
+    else:
+        status = PlanStatus.NO_VALID_PLAN
+        message = f"the plan failed validation on the original problem: {validation.message if validation else ''}"
+    return PlanResult(status=status, validation=validation, message=message, **common)
+
+
+# Verdicts whose message ends with the planner's last line of output.
+_QUOTES_OUTPUT = (PlanStatus.PLANNER_ERROR, PlanStatus.INPUT_ERROR, PlanStatus.UNSUPPORTED)
+
+
+def _failure(last: Attempt, options: PlanOptions) -> tuple[PlanStatus, str]:
+    """The verdict and its message when the last attempt found no plan.
+
+    The planner's exit code is quoted only through its ``reason``, which
+    says whose code it is and what it means.
+    """
+    outcome = last.outcome
+    status = _PLANNER_TO_PLAN_STATUS.get(outcome.status, PlanStatus.PLANNER_ERROR)
+    because = f" ({outcome.reason})" if outcome.reason else ""
     if status is PlanStatus.UNSOLVABLE and not last.full:
         # Only the full problem's unsolvability says anything about the user's problem.
-        status = PlanStatus.NO_VALID_PLAN
-        why = "relaxation is off" if not options.relax else "no time was left to widen it"
-        message = f"the pruned problem is unsolvable (pruning removed something needed; {why})"
-    elif status is PlanStatus.UNSOLVABLE:
-        message = "the problem is unsolvable"
-    elif status is PlanStatus.PLANNER_CONFIG_ERROR:
-        message = (
-            f"Fast Downward rejected --planner-config '{options.planner_config}'"
-            f" (unknown alias or bad search string; exit code {last.outcome.exit_code})"
-        )
-    else:
-        message = f"planner: {last.outcome.status.value} (exit code {last.outcome.exit_code})"
-        output = last.outcome.log_tail.strip().splitlines()
-        if output and status in (
-            PlanStatus.PLANNER_ERROR,
-            PlanStatus.INPUT_ERROR,
-            PlanStatus.UNSUPPORTED,
-            PlanStatus.PLANNER_CONFIG_ERROR,
-        ):
-            message += f"; last planner output: {output[-1].strip()[:200]}"
-    return PlanResult(status=status, message=message, log_tail=last.outcome.log_tail, **common)
+        why = "widening is off" if not options.widen else "no time was left to widen it"
+        return PlanStatus.NO_VALID_PLAN, f"the pruned problem is unsolvable (pruning removed something needed; {why})"
+    if status is PlanStatus.UNSOLVABLE:
+        return status, "the problem is unsolvable"
+    if status is PlanStatus.PLANNER_CONFIG_ERROR:
+        return status, f"{outcome.planner} rejected --planner-config '{options.planner_config}'{because}"
+    message = f"planner: {outcome.status.value}{because}"
+    output = outcome.log_tail.strip().splitlines()
+    if output and status in _QUOTES_OUTPUT:
+        message += f"; last planner output: {output[-1].strip()[:200]}"
+    return status, message

@@ -1,21 +1,29 @@
 """Child process of the ``up:NAME`` planners: read PDDL with unified-planning, solve, write the plan.
 
-Run as ``python -m relevance_plan.planning.up_child ENGINE DOMAIN PROBLEM PLAN TIMEOUT``
-by ``planners.UnifiedPlanningPlanner``, inside its own session so that the
+Run as ``python -m relevance_plan.planning.up_child ENGINE DOMAIN PROBLEM PLAN VERDICT TIMEOUT``
+by ``up_engines.UnifiedPlanningPlanner``, inside its own session so that the
 parent's watchdog can kill it (and whatever the engine started) at once.
-The plan is written in the IPC format with the names of the PDDL files; the
-exit code says how the engine ended (``planners.UP_CHILD_STATUS``).
+The plan is written to PLAN in the IPC format with the names of the PDDL
+files; the engine's verdict, the name of its ``PlanGenerationResultStatus``,
+to VERDICT (the parent maps it through ``up_engines.UP_STATUS``).  When
+unified-planning cannot read the files there is no verdict and the exit code
+is ``up_engines.CHILD_CANNOT_READ``.
 """
 
 from __future__ import annotations
 
 import sys
 
+from relevance_plan.planning.up_engines import CHILD_CANNOT_READ
+
+# An engine that raises instead of answering cannot take the problem's features.
+_REFUSED = "UNSUPPORTED_PROBLEM"
+
 
 def main(arguments: list[str]) -> int:
-    engine, domain_path, problem_path, plan_path, timeout_text = arguments
+    engine, domain_path, problem_path, plan_path, verdict_path, timeout_text = arguments
     import unified_planning.shortcuts as shortcuts
-    from unified_planning.engines.results import PlanGenerationResultStatus as Status
+    from unified_planning.engines.results import POSITIVE_OUTCOMES
     from unified_planning.io import PDDLReader
 
     shortcuts.get_environment().credits_stream = None
@@ -23,30 +31,27 @@ def main(arguments: list[str]) -> int:
         problem = PDDLReader().parse_problem(domain_path, problem_path)
     except Exception as error:  # the engine's reader rejects it: an input error, said in the log
         print(f"unified-planning cannot read the problem: {error}", file=sys.stderr)
-        return 31
+        return CHILD_CANNOT_READ
     timeout = None if timeout_text == "none" else float(timeout_text)
     try:
         with shortcuts.OneshotPlanner(name=engine, problem_kind=problem.kind) as planner:
             result = planner.solve(problem, timeout=timeout)
-    except Exception as error:  # the engine cannot take the problem's features
+    except Exception as error:
         print(f"{engine}: {type(error).__name__}: {error}", file=sys.stderr)
-        return 34
-    print(f"{engine}: {result.status.name}")
-    if result.status in (Status.SOLVED_SATISFICING, Status.SOLVED_OPTIMALLY) and result.plan is not None:
-        lines = []
-        for step in result.plan.actions:
-            names = [step.action.name] + [str(parameter) for parameter in step.actual_parameters]
-            lines.append("(" + " ".join(names) + ")")
-        with open(plan_path, "w", encoding="utf-8") as stream:
-            stream.write("\n".join(lines) + "\n")
-        return 0
-    return {
-        Status.UNSOLVABLE_PROVEN: 10,
-        Status.UNSOLVABLE_INCOMPLETELY: 12,
-        Status.MEMOUT: 22,
-        Status.TIMEOUT: 23,
-        Status.UNSUPPORTED_PROBLEM: 34,
-    }.get(result.status, 30)
+        verdict = _REFUSED
+    else:
+        verdict = result.status.name
+        print(f"{engine}: {verdict}")
+        if result.status in POSITIVE_OUTCOMES and result.plan is not None:
+            lines = []
+            for step in result.plan.actions:
+                names = [step.action.name] + [str(parameter) for parameter in step.actual_parameters]
+                lines.append("(" + " ".join(names) + ")")
+            with open(plan_path, "w", encoding="utf-8") as stream:
+                stream.write("\n".join(lines) + "\n")
+    with open(verdict_path, "w", encoding="utf-8") as stream:
+        stream.write(verdict + "\n")
+    return 0
 
 
 if __name__ == "__main__":

@@ -125,7 +125,7 @@ def val_available() -> bool:
 
 
 def validate_with_val(domain: Domain, problem: Problem, plan: Plan, deadline: float | None = None) -> ValidationResult:
-    from relevance_plan.planning.runner import run_val  # subprocess access lives in the runner module
+    from relevance_plan.planning.process import run_val  # subprocess access lives in the process module
 
     if not val_available():
         return ValidationResult(ValidationStatus.UNAVAILABLE, "val", "VAL's Validate is not on PATH")

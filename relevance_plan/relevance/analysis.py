@@ -14,11 +14,15 @@ Nothing here grounds an action.  Two results feed the rest of the pipeline:
 from __future__ import annotations
 
 from collections import defaultdict
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 
-from relevance_plan.pddl.formulas import effect_literals, literals, scoped_literals
-from relevance_plan.pddl.model import Domain, Problem, numeric_facts
+from relevance_plan.pddl.formulas import Atom, Formula, GroundAtom, effect_literals, literals, scoped_literals
+from relevance_plan.pddl.model import Action, Domain, Problem, numeric_facts
+
+# A lifted goal pattern: (predicate, args), each arg ("obj", name) or ("type", type name).
+Term = tuple[str, str]
+Pattern = tuple[str, tuple[Term, ...]]
 
 # --------------------------------------------------------------------------- init-state facts
 
@@ -27,29 +31,29 @@ from relevance_plan.pddl.model import Domain, Problem, numeric_facts
 class InitIndex:
     """The initial state indexed by predicate, for rule inference and closure."""
 
-    by_predicate: Mapping[str, tuple]
-    by_object: Mapping[str, tuple]
-    functional: frozenset  # (predicate, key_position, other_position): key determines other
+    by_predicate: Mapping[str, tuple[GroundAtom, ...]]
+    by_object: Mapping[str, tuple[GroundAtom, ...]]
+    functional: frozenset[tuple[str, int, int]]  # (predicate, key_position, other_position): key determines other
 
     @property
-    def singletons(self) -> frozenset:
+    def singletons(self) -> frozenset[str]:
         return frozenset(p for p, atoms in self.by_predicate.items() if len(atoms) == 1)
 
 
 def index_init(problem: Problem) -> InitIndex:
     """Facts by predicate and by object; a numeric value's term ``(distance a b)`` counts as a fact,
     so the objects inside a function term are linked like those of a static fact."""
-    by_predicate: dict[str, list] = defaultdict(list)
-    by_object: dict[str, list] = defaultdict(list)
+    by_predicate: dict[str, list[GroundAtom]] = defaultdict(list)
+    by_object: dict[str, list[GroundAtom]] = defaultdict(list)
     for atom in (*problem.init, *numeric_facts(problem)):
         by_predicate[atom[0]].append(atom)
         for arg in set(atom[1:]):
             by_object[arg].append(atom)
-    functional = set()
+    functional: set[tuple[str, int, int]] = set()
     for predicate, atoms in by_predicate.items():
         arity = len(atoms[0]) - 1
         for key in range(arity):
-            seen: dict[str, tuple] = {}
+            seen: dict[str, tuple[str, ...]] = {}
             is_functional = True
             for atom in atoms:
                 value = atom[1 + key]
@@ -67,7 +71,7 @@ def index_init(problem: Problem) -> InitIndex:
     )
 
 
-def fan_in(index: InitIndex) -> dict[tuple, float]:
+def fan_in(index: InitIndex) -> dict[tuple[str, int], float]:
     """(predicate, position) -> facts per distinct object at that position: high for class-like
     values (the shape of forty keys), about one for a place or an owner."""
     result = {}
@@ -79,7 +83,7 @@ def fan_in(index: InitIndex) -> dict[tuple, float]:
 
 
 def object_distances(
-    index: InitIndex, sources, hub_degree: int | None = None, max_fan: float | None = None
+    index: InitIndex, sources: Iterable[str], hub_degree: int | None = None, max_fan: float | None = None
 ) -> dict[str, int]:
     """Breadth-first hops from ``sources`` through initial facts (two objects in one fact are one hop apart).
 
@@ -91,7 +95,7 @@ def object_distances(
     fans = fan_in(index) if max_fan is not None else {}
     distance = {name: 0 for name in sources}
     frontier = list(distance)
-    seen_facts: set = set()
+    seen_facts: set[GroundAtom] = set()
     while frontier:
         following = []
         for name in frontier:
@@ -126,7 +130,7 @@ class ConstraintRule:
 
 
 def _precondition_predicates(domain: Domain) -> set[str]:
-    used = set()
+    used: set[str] = set()
     for action in domain.relaxed_actions:
         used.update(atom.predicate for atom, _ in literals(action.precondition))
         for item in effect_literals(action.effect):
@@ -180,9 +184,9 @@ def infer_constraint_rules(domain: Domain, index: InitIndex) -> tuple[Constraint
 
 @dataclass(frozen=True)
 class GoalAnalysis:
-    relevant_predicates: frozenset
+    relevant_predicates: frozenset[str]
     role_depth: Mapping[str, int]  # type -> fewest role introductions from the goal
-    goal_variable_types: frozenset  # types quantified in the goal
+    goal_variable_types: frozenset[str]  # types quantified in the goal
 
 
 def analyse_goal(domain: Domain, problem: Problem, index: InitIndex | None = None) -> GoalAnalysis:
@@ -212,17 +216,17 @@ class _Regression:
         self.objects = dict(domain.constants)
         self.objects.update(problem.objects)
         self.problem = problem
-        self.achievers: dict[str, list] = defaultdict(list)
+        self.achievers: dict[str, list[tuple[Action, Atom, Formula]]] = defaultdict(list)
         for action in domain.relaxed_actions:
             for item in effect_literals(action.effect):
                 if item.is_add:
                     self.achievers[item.atom.predicate].append((action, item.atom, item.condition))
-        self.best: dict[tuple, int] = {}
+        self.best: dict[Pattern, int] = {}
         self.role_depth: dict[str, int] = {}
 
     def run(self) -> GoalAnalysis:
-        goal_types = set()
-        frontier: list[tuple[tuple, int]] = []
+        goal_types: set[str] = set()
+        frontier: list[tuple[Pattern, int]] = []
         for atom, _, scope in scoped_literals(self.problem.goal):
             variables = dict(scope)
             goal_types.update(variables.values())
@@ -242,7 +246,7 @@ class _Regression:
             goal_variable_types=frozenset(goal_types),
         )
 
-    def initially_satisfiable(self, pattern) -> bool:
+    def initially_satisfiable(self, pattern: Pattern) -> bool:
         # Some initial fact matches: some object of the right type already has
         # the property (a cup that is clear, a free gripper), so the pattern
         # need not be regressed; closure handles the objects in the way.
@@ -257,7 +261,7 @@ class _Regression:
                 return True
         return False
 
-    def regress(self, pattern, depth: int) -> list[tuple[tuple, int]]:
+    def regress(self, pattern: Pattern, depth: int) -> list[tuple[Pattern, int]]:
         """The patterns the achievers of ``pattern`` need, with their depths; records new roles."""
         options = []
         for action, added, condition in self.achievers.get(pattern[0], ()):
@@ -299,7 +303,7 @@ class _Regression:
         return found
 
 
-def single_valued_predicates(domain: Domain, index: InitIndex) -> frozenset:
+def single_valued_predicates(domain: Domain, index: InitIndex) -> frozenset[str]:
     """Predicates with one initial fact that stay single-valued: every action adding one deletes one.
 
     The robot's position is the typical case: pruning the place it stands on
@@ -323,10 +327,12 @@ def single_valued_predicates(domain: Domain, index: InitIndex) -> frozenset:
     return frozenset(result)
 
 
-def _unify(domain: Domain, objects: Mapping[str, str], action, added, pattern_args) -> dict | None:
+def _unify(
+    domain: Domain, objects: Mapping[str, str], action: Action, added: Atom, pattern_args: tuple[Term, ...]
+) -> dict[str, Term] | None:
     """Bind the achiever's parameters to the pattern's objects and types, or None if they clash."""
     params = dict(action.parameters)
-    bound: dict[str, tuple] = {}
+    bound: dict[str, Term] = {}
     for arg, want in zip(added.args, pattern_args):
         if arg.startswith("?"):
             declared = params.get(arg, "object")
@@ -346,7 +352,9 @@ def _unify(domain: Domain, objects: Mapping[str, str], action, added, pattern_ar
     return bound
 
 
-def _roles(action, bound: Mapping[str, tuple], pre_atoms, index: InitIndex) -> set:
+def _roles(
+    action: Action, bound: Mapping[str, Term], pre_atoms: list[tuple[str, tuple[str, ...]]], index: InitIndex
+) -> set[str]:
     """New parameters the initial state does not determine from known ones."""
     anchored = set(bound)
     new_vars = [name for name, _ in action.parameters if name not in bound]

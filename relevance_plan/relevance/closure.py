@@ -21,7 +21,7 @@ class Restored:
     name: str
     because_of: str  # the kept object that needed it ("" for singleton facts)
     rule: str  # "blocker", "anchor", "singleton", "model", "reachability", "soundness"
-    fact: tuple  # the initial fact that ties them
+    fact: tuple[str, ...]  # the initial fact that ties them
     note: str = ""  # for "soundness": the quantifier that ranges over the object
 
     @property
@@ -48,7 +48,7 @@ def close_over_constraints(
     index: InitIndex,
     candidates: Set[str],
     singleton_predicates: Set[str] = frozenset(),
-) -> tuple[frozenset, tuple[Restored, ...]]:
+) -> tuple[frozenset[str], tuple[Restored, ...]]:
     """Return (closed kept set, what was put back and why); inputs are not changed.
 
     ``candidates`` are the prunable objects; domain constants never need restoring.
@@ -59,7 +59,7 @@ def close_over_constraints(
     result = set(kept)
     restored: list[Restored] = []
 
-    def keep(name: str, because_of: str, rule: str, fact: tuple, worklist: list) -> None:
+    def keep(name: str, because_of: str, rule: str, fact: tuple[str, ...], worklist: list[str]) -> None:
         if name in candidates and name not in result:
             result.add(name)
             restored.append(Restored(name, because_of, rule, fact))

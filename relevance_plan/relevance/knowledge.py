@@ -7,13 +7,14 @@ error names the file and the line of the offending entry.
 
 from __future__ import annotations
 
+import functools
 import math
 import os
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from types import MappingProxyType
-from typing import Any
+from typing import Any, NoReturn
 
 import yaml
 
@@ -25,10 +26,10 @@ from relevance_plan.relevance.scene import PLACEMENT_CONDITIONS, ScenePredicates
 SCHEMA_VERSION = 1
 
 
-class _LineDict(dict):
+class _LineDict(dict[str, Any]):
     """A dict that remembers the line of each key (1-based)."""
 
-    lines: dict
+    lines: dict[str, int]
     line: int
 
 
@@ -46,16 +47,16 @@ class _Loader(yaml.SafeLoader):
 
     _depth = 0
 
-    def compose_node(self, parent, index):
+    def compose_node(self, parent: yaml.Node | None, index: int) -> yaml.Node | None:
         if self.check_event(yaml.AliasEvent):
-            event = self.peek_event()
+            event = self.peek_event()  # type: ignore[no-untyped-call]
             raise ModelError(
                 "YAML aliases ('*name') are not allowed in a knowledge model", line=event.start_mark.line + 1
             )
         self._depth += 1
         try:
             if self._depth > MAX_YAML_NESTING:
-                mark = self.peek_event().start_mark
+                mark = self.peek_event().start_mark  # type: ignore[no-untyped-call]
                 raise ModelError(f"YAML nested more than {MAX_YAML_NESTING} levels deep", line=mark.line + 1)
             return super().compose_node(parent, index)
         finally:
@@ -84,8 +85,8 @@ _Loader.add_constructor(yaml.resolver.BaseResolver.DEFAULT_MAPPING_TAG, _constru
 @dataclass(frozen=True)
 class ModelClass:
     name: str
-    types: tuple
-    kinds: tuple
+    types: tuple[str, ...]
+    kinds: tuple[str, ...]
     kind_relevance: Mapping[str, float]
     default_kind_relevance: float
     fixed_relevance: float | None = None  # e.g. the human: always relevant
@@ -97,7 +98,7 @@ class ModelClass:
 class Objective:
     name: str
     description: str
-    goal_predicates: tuple
+    goal_predicates: tuple[str, ...]
     tasks: Mapping[str, float]  # P(T | O)
 
 
@@ -134,7 +135,7 @@ class KnowledgeModel:
     classes: Mapping[str, ModelClass]
     placement: Mapping[str, float]
     humans: Mapping[str, Human]
-    dependencies: tuple = field(default=())
+    dependencies: tuple[ModelDependency, ...] = field(default=())
 
     def objective_for_goal(self, goal_predicates: set[str]) -> list[str]:
         """Objectives whose goal predicates all appear in the problem's goal."""
@@ -152,7 +153,7 @@ class _Checker:
     def __init__(self, path: str):
         self.path = path
 
-    def fail(self, message: str, mapping: Any = None, key: str | None = None):
+    def fail(self, message: str, mapping: Any = None, key: str | None = None) -> NoReturn:
         line = None
         if isinstance(mapping, _LineDict):
             line = mapping.lines.get(key, mapping.line) if key is not None else mapping.line
@@ -165,7 +166,7 @@ class _Checker:
                 self.fail(f"missing section '{key}'", parent)
             empty = _LineDict()
             empty.lines = {}
-            empty.line = getattr(parent, "line", None)
+            empty.line = getattr(parent, "line", 0)
             return empty
         if not isinstance(value, _LineDict):
             self.fail(f"'{key}' must be a mapping", parent, key)
@@ -179,12 +180,12 @@ class _Checker:
             self.fail(f"{what} = {value} is outside [0, 1]", parent, key)
         return float(value)
 
-    def probabilities(self, parent: _LineDict, what) -> Mapping[str, float]:
+    def probabilities(self, parent: _LineDict, what: str | Callable[[str], str]) -> Mapping[str, float]:
         """``what`` names the values: a label (the key is appended) or a function of the key."""
         label = what if callable(what) else (lambda key: f"{what} '{key}'")
         return MappingProxyType({key: self.probability(parent, key, label(key)) for key in parent})
 
-    def names(self, parent: _LineDict, key: str) -> tuple:
+    def names(self, parent: _LineDict, key: str) -> tuple[str, ...]:
         value = parent.get(key, [])
         if isinstance(value, str):
             value = [value]
@@ -324,7 +325,9 @@ def _read_classes(check: _Checker, section: _LineDict, default_kind: float) -> d
     return classes
 
 
-def _read_tasks(check: _Checker, section: _LineDict, classes: Mapping[str, ModelClass]) -> dict:
+def _read_tasks(
+    check: _Checker, section: _LineDict, classes: Mapping[str, ModelClass]
+) -> dict[str, Mapping[str, float]]:
     task_classes: dict[str, Mapping[str, float]] = {}
     for task, entry in section.items():
         if not isinstance(entry, _LineDict):
@@ -332,11 +335,15 @@ def _read_tasks(check: _Checker, section: _LineDict, classes: Mapping[str, Model
         for class_name in entry:
             if class_name not in classes:
                 check.fail(f"task '{task}' names unknown class '{class_name}'", entry, class_name)
-        task_classes[task] = check.probabilities(entry, lambda class_name, task=task: f"P({class_name} | {task})")
+        task_classes[task] = check.probabilities(entry, functools.partial(_given, task=task))
     return task_classes
 
 
-def _read_objectives(check: _Checker, section: _LineDict, task_classes: Mapping) -> dict[str, Objective]:
+def _given(class_name: str, task: str) -> str:
+    return f"P({class_name} | {task})"
+
+
+def _read_objectives(check: _Checker, section: _LineDict, task_classes: Mapping[str, Any]) -> dict[str, Objective]:
     objectives: dict[str, Objective] = {}
     for name, entry in section.items():
         if not isinstance(entry, _LineDict):
@@ -369,7 +376,11 @@ def _read_placement(check: _Checker, section: _LineDict) -> Mapping[str, float]:
 
 
 def _read_humans(
-    check: _Checker, section: _LineDict, classes: Mapping, task_classes: Mapping, objectives: Mapping
+    check: _Checker,
+    section: _LineDict,
+    classes: Mapping[str, Any],
+    task_classes: Mapping[str, Any],
+    objectives: Mapping[str, Any],
 ) -> dict[str, Human]:
     humans: dict[str, Human] = {}
     for name, entry in section.items():
@@ -386,7 +397,9 @@ def _read_humans(
     return humans
 
 
-def _human_objectives(check: _Checker, name: str, entry: _LineDict, task_classes: Mapping, objectives: Mapping) -> dict:
+def _human_objectives(
+    check: _Checker, name: str, entry: _LineDict, task_classes: Mapping[str, Any], objectives: Mapping[str, Any]
+) -> dict[str, Mapping[str, float]]:
     found = {}
     for objective, tasks in check.mapping(entry, "objectives", required=False).items():
         if objective not in objectives:
@@ -402,7 +415,9 @@ def _human_objectives(check: _Checker, name: str, entry: _LineDict, task_classes
     return found
 
 
-def _human_tasks(check: _Checker, name: str, entry: _LineDict, classes: Mapping) -> dict:
+def _human_tasks(
+    check: _Checker, name: str, entry: _LineDict, classes: Mapping[str, Any]
+) -> dict[str, Mapping[str, float]]:
     found = {}
     for task, entry_classes in check.mapping(entry, "tasks", required=False).items():
         if not isinstance(entry_classes, _LineDict):
@@ -414,7 +429,9 @@ def _human_tasks(check: _Checker, name: str, entry: _LineDict, classes: Mapping)
     return found
 
 
-def _human_kinds(check: _Checker, name: str, entry: _LineDict, classes: Mapping) -> dict:
+def _human_kinds(
+    check: _Checker, name: str, entry: _LineDict, classes: Mapping[str, Any]
+) -> dict[str, Mapping[str, float]]:
     found = {}
     for class_name, entry_kinds in check.mapping(entry, "kind_relevance", required=False).items():
         if class_name not in classes:
@@ -468,7 +485,7 @@ def _check_distribution(check: _Checker, section: _LineDict, probabilities: Mapp
         check.fail(f"{what} sums to {total:.3f}, not 1", section)
 
 
-def load_model(path: str | os.PathLike) -> KnowledgeModel:
+def load_model(path: str | os.PathLike[str]) -> KnowledgeModel:
     from relevance_plan.io import read_text
 
     return parse_model(read_text(path, "knowledge model"), str(path))

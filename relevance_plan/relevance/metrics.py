@@ -19,7 +19,7 @@ class SetMetrics:
     f1: float
     ratio: float  # N
 
-    def as_dict(self) -> dict:
+    def as_dict(self) -> dict[str, float]:
         return {"precision": self.precision, "recall": self.recall, "f1": self.f1, "N": self.ratio}
 
 
@@ -52,9 +52,9 @@ NECESSITY_THRESHOLD = 0.9
 
 @dataclass(frozen=True)
 class Inquiries:
-    necessary: tuple  # kinds served without asking
-    optional: tuple  # kinds the robot asks about
-    relevant_kinds: tuple
+    necessary: tuple[str, ...]  # kinds served without asking
+    optional: tuple[str, ...]  # kinds the robot asks about
+    relevant_kinds: tuple[str, ...]
     objects: int  # questions without relevance: one per object
 
     @property
@@ -90,7 +90,8 @@ def plan_inquiries(
         if class_name is None or class_name in structural_classes:
             continue
         by_class.setdefault(class_name, set()).add(kinds[name])
-    necessary, optional = [], []
+    necessary: list[str] = []
+    optional: list[str] = []
     for class_name, class_kinds in sorted(by_class.items()):
         high = scores.class_scores.get(class_name, 0.0) >= necessity_threshold
         (necessary if high and len(class_kinds) == 1 else optional).extend(sorted(class_kinds))

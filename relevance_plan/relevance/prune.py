@@ -25,27 +25,34 @@ class Thresholds:
     tau_class: float = DEFAULT_TAU
     tau_element: float = DEFAULT_TAU
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         check_threshold(self.tau_class, "--tau-class")
         check_threshold(self.tau_element, "--tau-element")
+
+    def admits(self, class_score: float | None, element_score: float) -> bool:
+        """The paper's test, in one place: the element's class passes tau_c (when classes are
+        scored: ``class_score`` is None otherwise), then the element passes tau_e."""
+        if class_score is not None and class_score <= self.tau_class:
+            return False
+        return element_score > self.tau_element
 
     def scaled(self, factor: float) -> Thresholds:
         return Thresholds(self.tau_class * factor, self.tau_element * factor)
 
 
 @dataclass(frozen=True)
-class PruneResult:
+class Selection:
     task: PlanningTask
     scores: ScoreResult
     thresholds: Thresholds
-    selected: frozenset  # passed the thresholds (plus goal objects)
-    kept: frozenset  # after closure
-    restored: tuple  # of Restored, in the order closure found them
+    selected: frozenset[str]  # passed the thresholds (plus goal objects)
+    kept: frozenset[str]  # after closure
+    restored: tuple[Restored, ...]  # in the order closure found them
     text: str = field(repr=False)  # the pruned problem in the user's own layout
-    set_aside: frozenset = frozenset()  # relevant alternatives left for a later attempt (see free_alternatives)
+    set_aside: frozenset[str] = frozenset()  # relevant alternatives left for a later attempt (see free_alternatives)
 
     @property
-    def removed(self) -> tuple:
+    def removed(self) -> tuple[str, ...]:
         return tuple(name for name in self.task.problem.objects if name not in self.kept)
 
     @property
@@ -74,7 +81,7 @@ def can_serve_goal(task: PlanningTask, name: str) -> bool:
 
 def select_relevant(
     task: PlanningTask, scores: ScoreResult, thresholds: Thresholds, goal_filter: bool = False
-) -> frozenset:
+) -> frozenset[str]:
     """Elements whose class passes tau_c (when classes are scored) and whose score passes tau_e.
 
     With ``goal_filter``, relevant objects no action toward the goal can use
@@ -84,18 +91,14 @@ def select_relevant(
     """
     selected = set(task.pinned_objects)
     for name, score in scores.element_scores.items():
-        if scores.class_scores:
-            class_name = scores.element_class.get(name)
-            if scores.class_scores.get(class_name, 0.0) <= thresholds.tau_class:
-                continue
-        if score > thresholds.tau_element and (not goal_filter or can_serve_goal(task, name)):
+        if thresholds.admits(scores.class_score(name), score) and (not goal_filter or can_serve_goal(task, name)):
             selected.add(name)
     return frozenset(selected)
 
 
 def free_alternatives(
-    task: PlanningTask, scores: ScoreResult, selected: frozenset, restored: Sequence[Restored]
-) -> frozenset:
+    task: PlanningTask, scores: ScoreResult, selected: frozenset[str], restored: Sequence[Restored]
+) -> frozenset[str]:
     """``selected`` without the objects that something stands on, when another selected
     object of the same model class stands free.
 
@@ -109,7 +112,7 @@ def free_alternatives(
     if scores.scorer != "model":
         return selected
     encumbered = {item.because_of for item in restored if item.rule == "blocker"}
-    members_by_class: dict[str, set] = defaultdict(set)
+    members_by_class: dict[str, set[str]] = defaultdict(set)
     for name in selected - task.goal_objects:
         class_name = scores.element_class.get(name)
         if class_name is not None and class_name != UNKNOWN_CLASS:
@@ -132,7 +135,7 @@ def prune_with_scores(
     *,
     repair: bool | None = None,
     full_above: float | None = None,
-) -> PruneResult:
+) -> Selection:
     """Threshold the scores, add ``extra`` objects, close over constraints, check, write the text.
 
     With ``prefer_free``, blocked alternatives are set aside (``free_alternatives``)
@@ -150,7 +153,7 @@ def prune_with_scores(
 
     sound = task.kept_for_soundness
 
-    def close(names):
+    def close(names: Set[str]) -> tuple[frozenset[str], tuple[Restored, ...]]:
         # what a quantifier ranges over stays, so that a plan of the pruned problem is one of the original
         missing = sorted(sound.keys() - set(names))
         closed, found = close_over_constraints(
@@ -163,7 +166,7 @@ def prune_with_scores(
         return closed, tuple(soundness_reason(name, sound[name]) for name in missing) + found
 
     kept, restored = close(selected)
-    set_aside: frozenset = frozenset()
+    set_aside: frozenset[str] = frozenset()
     if prefer_free:
         narrowed = free_alternatives(task, scores, selected, restored)
         if narrowed != selected:
@@ -181,7 +184,7 @@ def prune_with_scores(
         restored = tuple(restored) + repaired
     if len(kept) > full_above * total:
         return full_problem(task, scores, thresholds, selected, restored)
-    return PruneResult(
+    return Selection(
         task=task,
         scores=scores,
         thresholds=thresholds,
@@ -200,10 +203,14 @@ def soundness_reason(name: str, requirement: KeptForSoundness) -> Restored:
 
 
 def full_problem(
-    task: PlanningTask, scores: ScoreResult, thresholds: Thresholds, selected=frozenset(), restored=()
-) -> PruneResult:
+    task: PlanningTask,
+    scores: ScoreResult,
+    thresholds: Thresholds,
+    selected: Set[str] = frozenset(),
+    restored: Sequence[Restored] = (),
+) -> Selection:
     """The result that keeps every object: the attempt loop plans on the user's own file."""
-    return PruneResult(
+    return Selection(
         task=task,
         scores=scores,
         thresholds=thresholds,
@@ -215,7 +222,7 @@ def full_problem(
 
 
 def widen(
-    result: PruneResult,
+    result: Selection,
     factor: float,
     extra: Set[str] = frozenset(),
     model: KnowledgeModel | None = None,
@@ -223,8 +230,8 @@ def widen(
     *,
     growth: float = GROWTH,
     full_above: float = FULL_ABOVE,
-) -> tuple[PruneResult, frozenset]:
-    """One relaxation step after a failed attempt; returns the new result and the extra set.
+) -> tuple[Selection, frozenset[str]]:
+    """One widening step after a failed attempt; returns the new result and the extra set.
 
     The thresholds shrink by ``factor`` and the best-ranked removed objects
     (score, then distance from the goal's objects) are put back until the kept
@@ -264,14 +271,14 @@ def ranked_names(task: PlanningTask, scores: ScoreResult, kept: Set[str] = froze
     )
 
 
-def ranked_by_score(result: PruneResult) -> Sequence[str]:
-    """Pruned objects, most relevant first: the order in which relaxation adds them back."""
+def ranked_by_score(result: Selection) -> Sequence[str]:
+    """Pruned objects, most relevant first: the order in which widening adds them back."""
     return ranked_names(result.task, result.scores, result.kept)
 
 
 __all__ = [
     "DEFAULT_TAU",
-    "PruneResult",
+    "Selection",
     "Restored",
     "Thresholds",
     "constraint_rules",

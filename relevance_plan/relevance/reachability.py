@@ -41,7 +41,7 @@ class Reachability:
     complete: bool  # False: the budget ran out, nothing is known
     unreached: tuple = ()  # goal atoms the relaxation does not reach
     plan: tuple = ()  # ground relaxed-plan steps (action, *args)
-    plan_objects: frozenset = frozenset()
+    plan_objects: frozenset[str] = frozenset()
 
 
 def _required_atoms(formula):
@@ -274,12 +274,12 @@ CloseFn = Callable[[Set[str]], tuple]
 
 def repair_selection(
     task,
-    kept: frozenset,
+    kept: frozenset[str],
     scores: Mapping[str, float],
     close: CloseFn,
     budget: int | None = None,
     give_up_above: int | None = None,
-) -> tuple[frozenset, tuple, Reachability]:
+) -> tuple[frozenset[str], tuple, Reachability]:
     """Add what the relaxed goal needs to ``kept``; returns (kept, what was put back and why, the last check).
 
     Candidates are tried best first: one member of every class the kept set

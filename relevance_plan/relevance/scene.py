@@ -37,18 +37,18 @@ class ScenePredicates:
 class Element:
     name: str
     type: str
-    types: tuple  # the type and its ancestors, most specific first
+    types: tuple[str, ...]  # the type and its ancestors, most specific first
     kind: str
     place: str | None
     stands_on: str | None
     covered: bool
-    conditions: frozenset  # placement conditions the knowledge model can weigh
+    conditions: frozenset[str]  # placement conditions the knowledge model can weigh
 
 
 @dataclass(frozen=True)
 class Scene:
     elements: Mapping[str, Element]
-    human_places: frozenset
+    human_places: frozenset[str]
 
 
 def build_scene(domain: Domain, problem: Problem, predicates: ScenePredicates = ScenePredicates()) -> Scene:

@@ -10,11 +10,12 @@ from __future__ import annotations
 import os
 from collections.abc import Iterable
 from dataclasses import dataclass, field, replace
+from typing import Any
 
 from relevance_plan.errors import UsageError
 from relevance_plan.pddl.model import Domain
 from relevance_plan.relevance.knowledge import KnowledgeModel, check_model_applies, find_model, load_model
-from relevance_plan.relevance.prune import PruneResult, Thresholds, prune_with_scores
+from relevance_plan.relevance.prune import Selection, Thresholds, prune_with_scores
 from relevance_plan.relevance.scorers import SCORERS, PlanningTask, ScoreRequest, ScoreResult
 from relevance_plan.relevance.sidecar import necessary_objects
 
@@ -31,7 +32,7 @@ class ScoringOptions:
     thresholds: Thresholds = field(default_factory=Thresholds)
     seed: int = 0
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         if self.scorer is not None and self.scorer not in SCORERS:
             raise UsageError(f"unknown scorer '{self.scorer}' (choose from: {', '.join(SCORERS)})")
 
@@ -48,7 +49,7 @@ class Scoring:
     def scorer(self) -> str:
         return self.scores.scorer
 
-    def prune(self, thresholds: Thresholds, **how) -> PruneResult:
+    def prune(self, thresholds: Thresholds, **how: Any) -> Selection:
         return prune_with_scores(self.task, self.scores, thresholds, self.model, **how)
 
 
@@ -86,8 +87,8 @@ def score_problem(
     options: ScoringOptions,
     *,
     method: str = "relevance",
-    domain_path: str | os.PathLike | None = None,
-    problem_path: str | os.PathLike | None = None,
+    domain_path: str | os.PathLike[str] | None = None,
+    problem_path: str | os.PathLike[str] | None = None,
     model: KnowledgeModel | None = None,
 ) -> Scoring:
     """Score every object of ``task``.

@@ -10,6 +10,7 @@ from __future__ import annotations
 import os
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 from relevance_plan.errors import InputFileError
 from relevance_plan.io import read_sidecar
@@ -20,15 +21,15 @@ class Sidecar:
     path: str
     world: str | None = None
     difficulty: str | None = None
-    relevant: frozenset | None = None  # lower-cased object names; None when the sidecar has none
-    necessary: frozenset | None = None
+    relevant: frozenset[str] | None = None  # lower-cased object names; None when the sidecar has none
+    necessary: frozenset[str] | None = None
 
 
-def sidecar_path(problem_path: str | os.PathLike) -> Path:
+def sidecar_path(problem_path: str | os.PathLike[str]) -> Path:
     return Path(problem_path).with_suffix(".json")
 
 
-def _names(data: dict, key: str, path: str) -> frozenset | None:
+def _names(data: dict[str, Any], key: str, path: str) -> frozenset[str] | None:
     if key not in data:
         return None
     value = data[key]
@@ -37,14 +38,14 @@ def _names(data: dict, key: str, path: str) -> frozenset | None:
     return frozenset(name.lower() for name in value)
 
 
-def _text(data: dict, key: str, path: str) -> str | None:
+def _text(data: dict[str, Any], key: str, path: str) -> str | None:
     value = data.get(key)
     if value is not None and not isinstance(value, str):
         raise InputFileError(f"sidecar field '{key}' must be a string", path=path)
     return value
 
 
-def read_sidecar_for(problem_path: str | os.PathLike, required: bool = False) -> Sidecar | None:
+def read_sidecar_for(problem_path: str | os.PathLike[str], required: bool = False) -> Sidecar | None:
     """The sidecar next to ``problem_path``; None when there is none and it is not ``required``."""
     path = sidecar_path(problem_path)
     if not path.is_file():
@@ -62,7 +63,7 @@ def read_sidecar_for(problem_path: str | os.PathLike, required: bool = False) ->
     )
 
 
-def necessary_objects(problem_path: str | os.PathLike) -> frozenset | None:
+def necessary_objects(problem_path: str | os.PathLike[str]) -> frozenset[str] | None:
     """The sidecar's ``necessary`` set (the oracle's answer); None without a sidecar or the field."""
     sidecar = read_sidecar_for(problem_path)
     return sidecar.necessary if sidecar is not None else None

@@ -29,7 +29,7 @@ untyped domain says "every passenger": ``(forall (?p) (imply (passenger ?p) (ser
 from __future__ import annotations
 
 import functools
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass
 
 from relevance_plan.pddl import formulas as f
@@ -57,8 +57,10 @@ def _domain_requirements(domain: Domain) -> tuple[KeptForSoundness, ...]:
     return _requirements(_domain_formulas(domain), _static_unary(domain))
 
 
-def _requirements(formulas, static: frozenset) -> tuple[KeptForSoundness, ...]:
-    found: dict[tuple, KeptForSoundness] = {}
+def _requirements(
+    formulas: Iterable[tuple[str, f.Formula, str]], static: frozenset[str]
+) -> tuple[KeptForSoundness, ...]:
+    found: dict[tuple[str, str | None, str], KeptForSoundness] = {}
     for where, formula, mode in formulas:
         for quantifier, _ in _risky(formula, mode):
             guards = _guards(quantifier, static)
@@ -73,7 +75,7 @@ def objects_to_keep(
     domain: Domain, problem: Problem, requirements: tuple[KeptForSoundness, ...]
 ) -> dict[str, KeptForSoundness]:
     """Object -> the requirement that keeps it (the first one that applies)."""
-    guarded: dict[str, set] = {}
+    guarded: dict[str, set[str]] = {}
     for atom in problem.init:
         if len(atom) == 2:
             guarded.setdefault(atom[0], set()).add(atom[1])
@@ -122,17 +124,17 @@ def _risky(formula: f.Formula, mode: str) -> Iterator[tuple[f.Exists | f.Forall,
             yield quantifier, positive
 
 
-def _inside_preference(formula: f.Formula, target) -> bool:
+def _inside_preference(formula: f.Formula, target: f.Node) -> bool:
     return any(isinstance(node, f.Preference) and any(n is target for n in f.walk(node)) for node in f.walk(formula))
 
 
-def _static_unary(domain: Domain) -> frozenset:
+def _static_unary(domain: Domain) -> frozenset[str]:
     changed = {item.atom.predicate for action in domain.actions for item in f.effect_literals(action.effect)}
     changed |= domain.derived_predicates
     return frozenset(p for p, params in domain.predicates.items() if len(params) == 1 and p not in changed)
 
 
-def _guards(quantifier: f.Exists | f.Forall, static: frozenset) -> Mapping[str, str]:
+def _guards(quantifier: f.Exists | f.Forall, static: frozenset[str]) -> Mapping[str, str]:
     """Variable -> a static unary predicate that must hold of it for the body to matter."""
     body = quantifier.body
     if isinstance(quantifier, f.Exists):

@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import dataclasses
 from collections import defaultdict
+from collections.abc import Mapping
 from dataclasses import dataclass
 from types import MappingProxyType
 
@@ -33,10 +34,10 @@ class InferredTypes:
     domain: Domain  # the domain with inferred types (the given one when it declares types)
     problem: Problem  # the problem with each object's inferred type
     inferred: bool  # False when the domain declared its own types
-    classes: tuple = ()  # (type name, (predicates...)) of every inferred class
+    classes: tuple[tuple[str, tuple[str, ...]], ...] = ()  # (type name, its predicates) of every inferred class
 
 
-def static_predicates(domain: Domain) -> frozenset:
+def static_predicates(domain: Domain) -> frozenset[str]:
     """Predicates no action adds or deletes (derived predicates are never static)."""
     changed = {item.atom.predicate for action in domain.actions for item in effect_literals(action.effect)}
     changed |= domain.derived_predicates
@@ -49,7 +50,7 @@ def declares_types(domain: Domain, problem: Problem) -> bool:
     return any(t != "object" for t in list(problem.objects.values()) + list(domain.constants.values()))
 
 
-def _class_name(signature: frozenset) -> str:
+def _class_name(signature: frozenset[str]) -> str:
     return "+".join(sorted(signature)) if signature else "object"
 
 
@@ -59,8 +60,8 @@ def infer_types(domain: Domain, problem: Problem) -> InferredTypes:
     static = static_predicates(domain)
     unary = {p for p in static if len(domain.predicates.get(p, ())) == 1}
     names = list(domain.constants) + list(problem.objects)
-    unary_of: dict[str, set] = defaultdict(set)
-    positions_of: dict[str, set] = defaultdict(set)
+    unary_of: dict[str, set[str]] = defaultdict(set)
+    positions_of: dict[str, set[str]] = defaultdict(set)
     for atom in problem.init:
         if atom[0] in unary:
             unary_of[atom[1]].add(atom[0])
@@ -77,7 +78,7 @@ def infer_types(domain: Domain, problem: Problem) -> InferredTypes:
         parent = max(parents, key=lambda s: (len(s), sorted(s))) if parents else None
         types[_class_name(cls)] = _class_name(parent) if parent else "object"
 
-    def parameter_type(needed: frozenset) -> str:
+    def parameter_type(needed: frozenset[str]) -> str:
         if not needed:
             return "object"
         candidates = [cls for cls in classes if needed <= cls]
@@ -91,16 +92,16 @@ def infer_types(domain: Domain, problem: Problem) -> InferredTypes:
 
     actions = []
     for action in domain.actions:
-        needed: dict[str, set] = defaultdict(set)
-        for atom, positive in literals(action.precondition):
-            if not positive or atom.predicate not in static:
+        needed: dict[str, set[str]] = defaultdict(set)
+        for literal, positive in literals(action.precondition):
+            if not positive or literal.predicate not in static:
                 continue
-            args = atom.args
-            if atom.predicate in unary:
-                needed[args[0]].add(atom.predicate)
+            args = literal.args
+            if literal.predicate in unary:
+                needed[args[0]].add(literal.predicate)
             else:
                 for position, arg in enumerate(args):
-                    needed[arg].add(f"{atom.predicate}@{position}")
+                    needed[arg].add(f"{literal.predicate}@{position}")
         params = []
         for variable, declared in action.parameters:
             wanted = frozenset(needed[variable] & unary) or frozenset(needed[variable] - unary)
@@ -119,7 +120,7 @@ def infer_types(domain: Domain, problem: Problem) -> InferredTypes:
     return InferredTypes(typed_domain, typed_problem, True, tuple((_class_name(c), tuple(sorted(c))) for c in classes))
 
 
-def _is_subtype(types, type_name: str, of: str) -> bool:
+def _is_subtype(types: Mapping[str, str], type_name: str, of: str) -> bool:
     seen = set()
     while type_name and type_name not in seen:
         if type_name == of:

@@ -1,7 +1,7 @@
 """Event-based relevance: a live scene session (see ``session.py``)."""
 
 from relevance_plan.session.events import EVENT_KINDS, Event, EventError
-from relevance_plan.session.session import Ask, Determination, EventReport, PlanReport, Session
+from relevance_plan.session.session import Ask, EventReport, PlanReport, Session
 from relevance_plan.session.triggers import TRIGGERS, Change
 
 __all__ = [
@@ -9,7 +9,6 @@ __all__ = [
     "TRIGGERS",
     "Ask",
     "Change",
-    "Determination",
     "Event",
     "EventError",
     "EventReport",

@@ -18,6 +18,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from relevance_plan.relevance.knowledge import KnowledgeModel
+from relevance_plan.relevance.prune import Thresholds
 from relevance_plan.relevance.scene import Element, build_scene
 from relevance_plan.relevance.scorers import PlanningTask, ScoreRequest, ScoreResult
 from relevance_plan.relevance.scorers.model import (
@@ -213,13 +214,12 @@ class LiveModelScores:
         unknown = len(self.members.get(UNKNOWN_CLASS, ()))
         return not unknown_share_problem(len(self.scene.objects) - unknown, len(self.scene.objects))
 
-    def passes(self, name: str, tau_class: float, tau_element: float) -> bool:
+    def passes(self, name: str, thresholds: Thresholds) -> bool:
         """Whether the element passes the thresholds (``prune.select_relevant`` for one element)."""
         if not self.sufficient:
             return False
-        if self.class_scores and self.class_scores.get(self.element_class.get(name), 0.0) <= tau_class:
-            return False
-        return self.scores.get(name, 0.0) > tau_element
+        class_score = self.class_scores.get(self.element_class.get(name, ""), 0.0) if self.class_scores else None
+        return thresholds.admits(class_score, self.scores.get(name, 0.0))
 
     def result(self) -> ScoreResult:
         context = self.context
@@ -272,11 +272,9 @@ class FullScores:
     def sufficient(self) -> bool:
         return self.result().sufficient
 
-    def passes(self, name: str, tau_class: float, tau_element: float) -> bool:
+    def passes(self, name: str, thresholds: Thresholds) -> bool:
         scores = self.result()
-        if scores.class_scores and scores.class_scores.get(scores.element_class.get(name), 0.0) <= tau_class:
-            return False
-        return scores.element_scores.get(name, 0.0) > tau_element
+        return thresholds.admits(scores.class_score(name), scores.element_scores.get(name, 0.0))
 
     def refresh(self, names):
         self._result = None

@@ -2,22 +2,23 @@
 
     session = Session(domain, problem, ScoringOptions(objective="drink-at-break"))
     report = session.handle({"event": "add", "object": "mug_2", "type": "cup", "facts": [...]})
-    report.triggered, report.reason, report.determination.kept, report.ask
+    report.triggered, report.reason, report.selection.kept, report.ask
 
 For each event the session checks it against the scene, applies it, updates
 the scores of the elements it can affect (``rescoring.py``), runs the
 trigger check (``triggers.py``) and, only when a trigger fires, determines
 relevance again: the same threshold + closure step as ``relevance-plan
 prune`` (``relevance.prune.prune_with_scores``) on the current state.  When
-the cues are insufficient the previous decision stays in force, marked
+the cues are insufficient the previous selection stays in force, marked
 stale, with the question to ask; a ``cue``, ``human`` or ``goal`` event that
 settles it resumes.  With a planner, a determination that changes the kept
 set (or a new goal, or a ``plan`` event) plans again with the one attempt
 loop of ``planning.loop``; a previous plan that is still valid on the current
 full state is kept without calling the planner.
 
-The session does no I/O: the caller passes the planner as a function from
-problem text and time limit to a ``RunOutcome``.
+The session starts no process itself: the caller passes the planner as a
+function from problem text and time limit to a ``RunOutcome``.  Its only
+file access is loading the knowledge model, once, when it starts.
 """
 
 from __future__ import annotations
@@ -30,11 +31,11 @@ from relevance_plan.pddl.model import Domain, Problem, goal_objects, pinned_obje
 from relevance_plan.pddl.plans import Plan
 from relevance_plan.pddl.writer import write_pruned_problem
 from relevance_plan.planning.loop import PlanOptions, PlanResult, PlanStatus, first_selection, run_attempts, summarise
-from relevance_plan.planning.runner import RunOutcome
+from relevance_plan.planning.outcome import RunOutcome
 from relevance_plan.planning.validate import validate_plan
 from relevance_plan.relevance.analysis import single_valued_predicates
 from relevance_plan.relevance.knowledge import KnowledgeModel
-from relevance_plan.relevance.prune import PruneResult, constraint_rules, prune_with_scores
+from relevance_plan.relevance.prune import Selection, constraint_rules, prune_with_scores
 from relevance_plan.relevance.scorers import PlanningTask, ScoreResult
 from relevance_plan.relevance.setup import Scoring, ScoringOptions, choose_scorer, resolve_model
 from relevance_plan.relevance.soundness import objects_to_keep, soundness_requirements
@@ -57,29 +58,6 @@ class Ask:
 
 
 @dataclass(frozen=True)
-class Determination:
-    """The decision in force: kept / removed / restored (with reasons) and the scores behind it."""
-
-    prune: PruneResult
-
-    @property
-    def kept(self) -> frozenset:
-        return self.prune.kept
-
-    @property
-    def selected(self) -> frozenset:
-        return self.prune.selected
-
-    @property
-    def restored(self) -> tuple:
-        return self.prune.restored
-
-    @property
-    def removed(self) -> tuple:
-        return self.prune.removed
-
-
-@dataclass(frozen=True)
 class PlanReport:
     status: PlanStatus
     steps: Plan = Plan()
@@ -97,8 +75,8 @@ class EventReport:
     error: str | None = None
     sufficient: bool = True
     insufficiency: str = ""
-    stale: bool = False  # the decision in force predates insufficient cues
-    determination: Determination | None = None  # the decision in force (after the event)
+    stale: bool = False  # the selection in force predates insufficient cues
+    selection: Selection | None = None  # the selection in force (after the event)
     added: tuple = ()  # kept now, not before (names)
     dropped: tuple = ()
     ask: Ask | None = None
@@ -141,7 +119,7 @@ class Session:
         self.triggers = TRIGGERS if triggers is None else triggers
         self.served: str | None = None  # the human of the last 'human' event
         self.seq = 0
-        self.decision: Determination | None = None  # the last determination with sufficient cues
+        self.selection: Selection | None = None  # the last selection made with sufficient cues
         self.passing: set = set()
         self._rules = None  # (functional positions, closure rules by predicate) for the trigger check
         self._singletons = self.scene.index.singletons
@@ -162,7 +140,7 @@ class Session:
 
     @property
     def kept(self) -> frozenset:
-        return self.decision.kept if self.decision is not None else frozenset()
+        return self.selection.kept if self.selection is not None else frozenset()
 
     @property
     def sufficient(self) -> bool:
@@ -175,7 +153,7 @@ class Session:
     def snapshot(self) -> tuple[str, str]:
         """(the current full problem, its pruned version) as PDDL text in the user's spelling."""
         problem = self.scene.read_problem()
-        kept = self.kept & problem.objects.keys() if self.decision is not None else problem.objects.keys()
+        kept = self.kept & problem.objects.keys() if self.selection is not None else problem.objects.keys()
         return problem.text, write_pruned_problem(problem, kept)
 
     # ------------------------------------------------------------------ events
@@ -217,7 +195,7 @@ class Session:
             show=self._show,
         )
         reasons = check_triggers(change, self.triggers)
-        previous = self.decision
+        previous = self.selection
         if reasons:
             self._determine()
         seconds = time.perf_counter() - started
@@ -230,11 +208,11 @@ class Session:
         elif (
             reasons
             and self.plan_in_loop
-            and self.decision is not None
+            and self.selection is not None
             and self.sufficient
             and not self.scene.idle_goal
             and (
-                self.decision.kept != self.planned_kept
+                self.selection.kept != self.planned_kept
                 or self.scene.goal != self.planned_goal
                 or change.touched & kept_before
             )
@@ -248,8 +226,8 @@ class Session:
             kind,
             error=error.message,
             sufficient=self.scores.sufficient,
-            stale=not self.scores.sufficient and self.decision is not None,
-            determination=self.decision,
+            stale=not self.scores.sufficient and self.selection is not None,
+            selection=self.selection,
         )
 
     def _show(self, name: str) -> str:
@@ -335,7 +313,7 @@ class Session:
         crossed = set()
         thresholds = self.options.thresholds
         for name in set(rescored) | (self.passing - self.scene.objects.keys()):
-            now = name in self.scene.objects and self.scores.passes(name, thresholds.tau_class, thresholds.tau_element)
+            now = name in self.scene.objects and self.scores.passes(name, thresholds)
             if now != (name in self.passing):
                 crossed.add(name)
                 (self.passing.add if now else self.passing.discard)(name)
@@ -376,9 +354,7 @@ class Session:
 
     def _recount_passing(self) -> None:
         thresholds = self.options.thresholds
-        self.passing = {
-            n for n in self.scene.objects if self.scores.passes(n, thresholds.tau_class, thresholds.tau_element)
-        }
+        self.passing = {n for n in self.scene.objects if self.scores.passes(n, thresholds)}
 
     # ------------------------------------------------------------------ determination
 
@@ -386,11 +362,11 @@ class Session:
         """Threshold + closure on the current state (the prune step), if the cues suffice."""
         scores = self.scores.result()
         if not scores.sufficient:
-            return  # the previous decision stays in force, stale
+            return  # the previous selection stays in force, stale
         task = _LiveTask.of(self.scene)
-        self.decision = Determination(prune_with_scores(task, scores, self.options.thresholds, self.model))
+        self.selection = prune_with_scores(task, scores, self.options.thresholds, self.model)
 
-    def _report(self, kind: str, reasons: tuple, previous: Determination | None, seconds: float) -> EventReport:
+    def _report(self, kind: str, reasons: tuple, previous: Selection | None, seconds: float) -> EventReport:
         scores = self.scores.result()
         before = previous.kept if previous is not None else frozenset()
         now = self.kept
@@ -401,8 +377,8 @@ class Session:
             reasons=reasons,
             sufficient=scores.sufficient,
             insufficiency=scores.insufficiency,
-            stale=not scores.sufficient and self.decision is not None,
-            determination=self.decision,
+            stale=not scores.sufficient and self.selection is not None,
+            selection=self.selection,
             added=tuple(sorted(now - before)) if reasons else (),
             dropped=tuple(sorted(before - now)) if reasons else (),
             ask=self.ask(scores) if (reasons or not scores.sufficient) and not self.idle else None,
@@ -423,13 +399,13 @@ class Session:
                 tasks = tuple(name for name, _ in ranked)
                 return Ask("task", "Which would you like: " + ", ".join(tasks) + "?", tasks)
             return Ask("model", scores.insufficiency)
-        if model is None or self.options.human is not None or self.decision is None or scores.scorer != "model":
+        if model is None or self.options.human is not None or self.selection is None or scores.scorer != "model":
             return None
         from relevance_plan.relevance.metrics import plan_inquiries
         from relevance_plan.relevance.scene import kind_of
 
         structural = {c.name for c in model.classes.values() if c.fixed_relevance is not None or c.from_contents}
-        selected = self.decision.selected
+        selected = self.selection.selected
         found = plan_inquiries(scores, selected, {n: kind_of(n) for n in selected}, structural)
         if not found.optional:
             return None
@@ -457,20 +433,20 @@ class Session:
                 )
         selection = None
         scorer = None
-        if self.decision is None and self.scores.sufficient:
+        if self.selection is None and self.scores.sufficient:
             self._determine()  # an idle session holds no determination yet
         if options.method != "pure":
-            if self.decision is None:
+            if self.selection is None:
                 return PlanReport(PlanStatus.INSUFFICIENT_CUES, message=self.scores.result().insufficiency)
             scores = self.scores.result()
-            if not scores.sufficient:  # plan with the decision in force (stale)
-                scores = restrict(self.decision.prune.scores, problem.objects)
+            if not scores.sufficient:  # plan with the selection in force (stale)
+                scores = restrict(self.selection.scores, problem.objects)
             scorer = scores.scorer
             selection = first_selection(Scoring(task, self.model, scores), options)
         relevance_time = time.perf_counter() - started
 
-        def call_planner(chosen: PruneResult | None, limit: float | None) -> RunOutcome:
-            return self.run_planner(problem.text if chosen is None else chosen.text, limit)
+        def call_planner(objects: Selection | None, limit: float | None) -> RunOutcome:
+            return self.run_planner(problem.text if objects is None else objects.text, limit)
 
         attempts, widening = run_attempts(task, selection, call_planner, options, started=started, model=self.model)
         result = summarise(

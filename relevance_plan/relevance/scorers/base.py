@@ -34,7 +34,7 @@ class PlanningTask:
         return analyse_goal(self.typing.domain, self.typing.problem, self.init_index)
 
     @cached_property
-    def goal_distance(self):
+    def goal_distance(self) -> dict[str, int]:
         """Hops from the goal's objects through initial facts (unreached objects are absent)."""
         hub = max(16, int(2 * len(self.problem.objects) ** 0.5))
         return object_distances(self.init_index, self.goal_objects, hub)
@@ -44,11 +44,11 @@ class PlanningTask:
         return self.typing.problem.objects[name]
 
     @cached_property
-    def goal_objects(self) -> frozenset:
+    def goal_objects(self) -> frozenset[str]:
         return goal_objects(self.problem, self.domain)
 
     @cached_property
-    def pinned_objects(self) -> frozenset:
+    def pinned_objects(self) -> frozenset[str]:
         """Objects named in the goal, the trajectory constraints or the metric: never pruned."""
         return pinned_objects(self.problem, self.domain)
 
@@ -65,7 +65,7 @@ class ScoreRequest:
     model_task: str | None = None  # the knowledge model's task (a kind of activity), not the planning task
     human: str | None = None
     seed: int = 0
-    necessary: frozenset | None = None  # the oracle's answer, from a generator sidecar
+    necessary: frozenset[str] | None = None  # the oracle's answer, from a generator sidecar
 
 
 @dataclass(frozen=True)
@@ -77,7 +77,13 @@ class ScoreResult:
     explanations: Mapping[str, str] = field(default_factory=dict)
     sufficient: bool = True
     insufficiency: str = ""
-    unknown: tuple = ()  # elements whose class the model does not know
+    unknown: tuple[str, ...] = ()  # elements whose class the model does not know
     objective: str | None = None
     task_distribution: Mapping[str, float] = field(default_factory=dict)
     task_entropy: float | None = None
+
+    def class_score(self, name: str) -> float | None:
+        """R(C) of the element's class; None when this scorer does not score classes."""
+        if not self.class_scores:
+            return None
+        return self.class_scores.get(self.element_class.get(name, ""), 0.0)

@@ -13,10 +13,11 @@ matches, or the model knows too few of the scene's objects, the result is
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 
 from relevance_plan.errors import ModelError
-from relevance_plan.pddl.formulas import predicates_in
+from relevance_plan.pddl.formulas import Formula, predicates_in
 from relevance_plan.relevance.knowledge import Human, KnowledgeModel, ModelClass
 from relevance_plan.relevance.scene import Element, build_scene
 from relevance_plan.relevance.scorers.base import PlanningTask, ScoreRequest, ScoreResult
@@ -26,7 +27,7 @@ UNKNOWN_CLASS = "(unknown)"
 MAX_UNKNOWN_SHARE = 0.5
 
 
-def task_entropy(distribution) -> float:
+def task_entropy(distribution: Mapping[str, float]) -> float:
     return -sum(p * math.log(p) for p in distribution.values() if p > 0)
 
 
@@ -42,7 +43,7 @@ def classify(element: Element, model: KnowledgeModel) -> ModelClass | None:
     return None
 
 
-def _choose_objective(goal, model: KnowledgeModel, request: ScoreRequest) -> tuple[str | None, str]:
+def _choose_objective(goal: Formula, model: KnowledgeModel, request: ScoreRequest) -> tuple[str | None, str]:
     if request.objective is not None:
         if request.objective not in model.objectives:
             raise ModelError(
@@ -77,10 +78,10 @@ class ModelContext:
     model: KnowledgeModel
     human: Human | None
     objective: str | None
-    distribution: dict
+    distribution: dict[str, float]
     entropy: float | None
     insufficiency: str = ""
-    _class_values: dict = field(default_factory=dict, repr=False)
+    _class_values: dict[str, float] = field(default_factory=dict, repr=False)
 
     def class_given_task(self, task_name: str, class_name: str) -> float:
         if self.human is not None:
@@ -114,7 +115,7 @@ class ModelContext:
         return value
 
 
-def model_context(goal, request: ScoreRequest) -> ModelContext:
+def model_context(goal: Formula, request: ScoreRequest) -> ModelContext:
     """The objective and P(task | objective) for ``goal`` (a formula) under ``request``."""
     model = request.model
     if model is None:
@@ -194,7 +195,7 @@ def unknown_share_problem(known: int, total: int) -> str:
     return ""
 
 
-def insufficient_result(objects, context: ModelContext, message: str) -> ScoreResult:
+def insufficient_result(objects: Iterable[str], context: ModelContext, message: str) -> ScoreResult:
     return ScoreResult(
         "model",
         {name: 0.0 for name in objects},

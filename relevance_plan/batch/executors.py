@@ -1,0 +1,163 @@
+"""Executors: where a batch's jobs run, locally on threads or on a Dask cluster.
+
+Both take the pending jobs, a ``record`` callback that the main thread calls
+with each finished row, and a stop event (set by ``signals.stop_event_on_signals``):
+
+- locally, ``workers`` threads each drive one planner subprocess (measured
+  faster and more robust than a process pool: one killed planner affects
+  only its own job);
+- on Dask (``scheduler='tcp://HOST:PORT'``), the same jobs go out with
+  ``client.submit(run_job, job, pure=False, retries=2)``.  Workers must see
+  the suite files under the same paths and have the same packages installed.
+
+On a stop (Ctrl-C, SIGTERM) or an error, pending jobs are cancelled, every
+running planner is killed, rows that were complete are still recorded, and
+the exception propagates.
+"""
+
+from __future__ import annotations
+
+import concurrent.futures
+import contextlib
+import re
+import threading
+import time
+from collections.abc import Callable, Sequence
+from typing import Any
+
+from relevance_plan.batch.jobs import Job, run_job
+from relevance_plan.errors import SchedulerError
+from relevance_plan.planning.process import terminate_all_runs
+
+DASK_INSTALL_HINT = "pip install 'relevance-plan[dask]'"
+DEFAULT_SCHEDULER_TIMEOUT = 10.0
+SCHEDULER_ADDRESS = re.compile(
+    r"^(?:(?:tcp|tls|ws|wss|ucx)://)?[^\s/:]+:\d+$|^(?:tcp|tls|ws|wss|ucx)://\[[0-9a-fA-F:.]+\]:\d+$"
+)
+_STOP_GRACE = 30.0  # seconds to wait for running jobs after their planners were killed
+_POLL_SECONDS = 0.2  # how often a running batch looks at its stop event
+
+Record = Callable[[dict[str, Any]], None]
+
+
+# --------------------------------------------------------------------------- local
+
+
+def run_local(pending: Sequence[Job], workers: int, record: Record, stop: threading.Event) -> None:
+    """Run ``pending`` on ``workers`` threads; ``record`` each row in this (the main) thread."""
+    pool = concurrent.futures.ThreadPoolExecutor(max_workers=workers, thread_name_prefix="relevance-plan-job")
+    futures = [pool.submit(run_job, job) for job in pending]
+    recorded: set = set()
+    try:
+        waiting = set(futures)
+        while waiting:
+            done, waiting = concurrent.futures.wait(
+                waiting, timeout=_POLL_SECONDS, return_when=concurrent.futures.FIRST_COMPLETED
+            )
+            for future in done:
+                row = future.result()  # an unexpected error stops the batch
+                recorded.add(future)
+                record(row)
+            if stop.is_set():
+                raise KeyboardInterrupt
+    except BaseException as error:
+        # Rows that were complete before the stop are genuine; keep them.
+        finished = [
+            f for f in futures if f not in recorded and f.done() and not f.cancelled() and f.exception() is None
+        ]
+        _stop_local(pool, futures)
+        if isinstance(error, KeyboardInterrupt):
+            for future in finished:
+                record(future.result())
+        raise
+    pool.shutdown(wait=True)
+
+
+def _stop_local(pool: concurrent.futures.ThreadPoolExecutor, futures: Sequence[concurrent.futures.Future]) -> None:
+    """Cancel what has not started, kill running planners until every running job has returned."""
+    pool.shutdown(wait=False, cancel_futures=True)
+    deadline = time.monotonic() + _STOP_GRACE
+    while True:
+        try:
+            # Again and again: a job between two attempts may start one more planner.
+            terminate_all_runs()
+            running = [f for f in futures if not f.done()]
+            if not running or time.monotonic() > deadline:
+                return
+            concurrent.futures.wait(running, timeout=0.1)
+        except KeyboardInterrupt:
+            continue  # a second Ctrl-C: finish stopping the planners first
+
+
+# --------------------------------------------------------------------------- Dask
+
+
+def connect_scheduler(address: str, timeout: float = DEFAULT_SCHEDULER_TIMEOUT):
+    """A ``dask.distributed.Client`` for ``address``; ``SchedulerError`` when unreachable or Dask is missing."""
+    try:
+        from dask.distributed import Client
+    except ImportError:
+        raise SchedulerError(f"Dask is not installed: {DASK_INSTALL_HINT}") from None
+    try:
+        return Client(address, timeout=timeout, set_as_default=False)
+    except (OSError, TimeoutError, ValueError) as error:
+        detail = " ".join(str(error).split()) or type(error).__name__
+        raise SchedulerError(f"cannot reach the Dask scheduler at {address}: {detail}") from None
+
+
+def _terminate_worker_runs() -> None:
+    terminate_all_runs()
+
+
+def run_dask(pending: Sequence[Job], client, address: str, record: Record, stop: threading.Event) -> None:
+    """Run ``pending`` on the Dask cluster of ``client``; ``record`` each row here as it completes."""
+    from dask.distributed import as_completed
+
+    futures = [client.submit(run_job, job, pure=False, retries=2) for job in pending]
+    recorded: set = set()
+    try:
+        finished = as_completed(futures, loop=client.loop)
+        while not finished.is_empty():
+            if stop.is_set():
+                raise KeyboardInterrupt
+            if not finished.has_ready():
+                time.sleep(_POLL_SECONDS / 4)
+                continue
+            for future in finished.next_batch(block=False):
+                row = _dask_row(future, address)
+                recorded.add(future.key)
+                record(row)
+                future.release()
+    except BaseException as error:
+        _stop_dask(client, futures, recorded, record, interrupted=isinstance(error, KeyboardInterrupt))
+        raise
+
+
+def _dask_row(future, address: str) -> dict[str, Any]:
+    try:
+        from distributed import KilledWorker
+    except ImportError:  # pragma: no cover - part of distributed
+        KilledWorker = ()  # type: ignore[assignment]
+    try:
+        return future.result()
+    except KilledWorker as error:
+        raise SchedulerError(f"a Dask worker died running a job 3 times: {error}") from None
+    except concurrent.futures.CancelledError:
+        raise SchedulerError(f"lost the Dask scheduler at {address}; rerun to resume") from None
+
+
+def _stop_dask(client, futures, recorded: set, record: Record, interrupted: bool) -> None:
+    rows = []
+    if interrupted:
+        # Rows that were complete before the stop are genuine; fetch them before cancelling.
+        for future in futures:
+            if future.key not in recorded and future.status == "finished":
+                with contextlib.suppress(Exception):
+                    rows.append(future.result(timeout=5))
+    with contextlib.suppress(Exception):
+        client.cancel(futures)
+    with contextlib.suppress(Exception):
+        # Our planners run in the workers' processes; stop them too.
+        client.run(_terminate_worker_runs)
+    for row in rows:
+        record(row)

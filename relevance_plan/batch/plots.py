@@ -1,0 +1,187 @@
+"""Figures drawn from the report's and the sweep's tables (the only module that imports matplotlib).
+
+matplotlib is the optional 'plots' extra: ``require_matplotlib`` says how to
+install it, and the commands call it before doing any work.
+"""
+
+from __future__ import annotations
+
+import io
+import os
+from collections.abc import Sequence
+from pathlib import Path
+from typing import Any
+
+from relevance_plan.batch.report import format_count, paired_times, solved_times
+from relevance_plan.batch.sweep import METRICS, N_MEANING, SweepResult, metric_grid, truth_tables
+from relevance_plan.errors import InputFileError, UsageError
+from relevance_plan.io import write_bytes_atomic
+
+PLOTS_INSTALL_HINT = "pip install 'relevance-plan[plots]'"
+PLOT_FILES = ("cactus.png", "relevance-vs-pure.png")
+
+
+def require_matplotlib(what: str = "plots") -> None:
+    """``UsageError`` naming the extra to install when matplotlib is missing."""
+    try:
+        import matplotlib.figure  # noqa: F401
+        from matplotlib.backends.backend_agg import FigureCanvasAgg  # noqa: F401
+    except ImportError:
+        raise UsageError(f"{what} need matplotlib, which is not installed: {PLOTS_INSTALL_HINT}") from None
+
+
+def _figure(**options):
+    from matplotlib.figure import Figure
+
+    return Figure(**options)
+
+
+def _save(figure, path: Path, dpi: int = 120) -> Path:
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    FigureCanvasAgg(figure)
+    buffer = io.BytesIO()
+    figure.savefig(buffer, format="png", dpi=dpi)
+    return write_bytes_atomic(path, buffer.getvalue())
+
+
+# --------------------------------------------------------------------------- report
+
+
+def _cactus(rows: Sequence[dict[str, Any]]):
+    from matplotlib.ticker import MaxNLocator
+
+    figure = _figure(figsize=(6.4, 4.4), layout="constrained")
+    axes = figure.add_subplot()
+    for method, times in solved_times(rows).items():
+        if times:
+            # Start at zero solved so that even one solved problem shows a step.
+            axes.step([times[0], *times], range(len(times) + 1), where="post", label=f"{method} ({len(times)})")
+        else:
+            axes.plot([], [], label=f"{method} (0)")
+    axes.set_xscale("log")
+    axes.set_ylim(bottom=0)
+    axes.yaxis.set_major_locator(MaxNLocator(integer=True))
+    axes.set_xlabel("time per problem (s): relevance + planning")
+    axes.set_ylabel("problems solved")
+    axes.set_title("Solved problems within a time (all suites)")
+    axes.grid(True, which="both", alpha=0.3)
+    axes.legend()
+    return figure
+
+
+def _scatter(rows: Sequence[dict[str, Any]]):
+    figure = _figure(figsize=(5.2, 5.2), layout="constrained")
+    axes = figure.add_subplot()
+    pairs = paired_times(rows)
+    timeout = max((float(r["timeout"]) for r in rows), default=1.0)
+    if pairs:
+        for suite in sorted({p.suite for p in pairs}):
+            mine = [p for p in pairs if p.suite == suite]
+            axes.scatter([p.pure_time for p in mine], [p.relevance_time for p in mine], label=suite, alpha=0.8, s=24)
+        low = max(min(min(p.pure_time, p.relevance_time) for p in pairs) / 2, 1e-3)
+        high = timeout * 1.5
+        axes.plot([low, high], [low, high], color="grey", linewidth=0.8, linestyle=":", label="equal time")
+        axes.axvline(timeout, color="red", linewidth=0.8, linestyle="--", label=f"timeout ({timeout:g} s)")
+        axes.axhline(timeout, color="red", linewidth=0.8, linestyle="--")
+        axes.set_xlim(low, high)
+        axes.set_ylim(low, high)
+        axes.set_xscale("log")
+        axes.set_yscale("log")
+        axes.legend(fontsize="small")
+    else:
+        message = "no problem has both relevance and pure results"
+        axes.text(0.5, 0.5, message, ha="center", va="center", transform=axes.transAxes)
+    axes.set_xlabel("pure planning time (s)")
+    axes.set_ylabel("relevance time (s): relevance + planning")
+    axes.set_title("Per problem: relevance vs pure")
+    axes.grid(True, which="both", alpha=0.3)
+    return figure
+
+
+def write_plots(
+    rows: Sequence[dict[str, Any]], directory: str | os.PathLike, store: str | os.PathLike | None = None
+) -> list[Path]:
+    """Write ``cactus.png`` and ``relevance-vs-pure.png`` into ``directory`` (created if needed).
+
+    ``store`` (the results store the rows came from) is never overwritten.
+    """
+    require_matplotlib()
+    directory = Path(directory)
+    targets = [directory / name for name in PLOT_FILES]
+    if store is not None:
+        for target in targets:
+            if target.exists() and os.path.samefile(target, store):
+                raise UsageError(f"plot {target} would replace the results store; choose another --plots folder")
+    try:
+        directory.mkdir(parents=True, exist_ok=True)
+    except OSError as error:
+        raise InputFileError(f"cannot create the plot directory: {error.strerror}", path=str(directory)) from None
+    rows = list(rows)
+    return [_save(_cactus(rows), targets[0]), _save(_scatter(rows), targets[1])]
+
+
+# --------------------------------------------------------------------------- sweep
+
+
+def _colour_range(metric: str, grid: list[list[float]]) -> tuple[float, float]:
+    """Shares on a fixed 0-1 scale; N from 0 to its largest value (a constant panel gets a real scale)."""
+    if metric != "N" and metric != "kept":
+        return 0.0, 1.0
+    return 0.0, max(1.0, max(max(row) for row in grid))
+
+
+def text_colour(shade: float) -> str:
+    """Readable text on a viridis cell at ``shade`` (0-1): viridis runs from dark purple to light yellow."""
+    return "black" if shade > 0.55 else "white"
+
+
+def _panel(axis, figure, result: SweepResult, grid: list[list[float]], metric: str, title: str) -> None:
+    low, high = _colour_range(metric, grid)
+    image = axis.imshow(grid, origin="lower", cmap="viridis", vmin=low, vmax=high)
+    ticks = [f"{t:g}" for t in result.taus]
+    axis.set_xticks(range(len(ticks)), ticks)
+    axis.set_yticks(range(len(ticks)), ticks)
+    axis.set_xlabel("tau_e")
+    axis.set_ylabel("tau_c")
+    axis.set_title(title)
+    for i, row in enumerate(grid):
+        for j, value in enumerate(row):
+            colour = text_colour((value - low) / (high - low))
+            axis.text(j, i, f"{value:.2f}", ha="center", va="center", color=colour, fontsize=8)
+    figure.colorbar(image, ax=axis, fraction=0.046)
+
+
+def _sweep_panels(result: SweepResult) -> list[tuple[str, list[list[float]], str]]:
+    """(metric, grid, title) of every panel, one row of four per ground-truth table, else the kept counts."""
+    panels = []
+    for label, _, table in truth_tables(result):
+        for metric in METRICS:
+            panels.append((metric, metric_grid(result, table, metric), f"{metric} ({label})"))
+    if not panels:
+        panels.append(("kept", metric_grid(result, result.kept), "objects kept (after closure)"))
+    return panels
+
+
+def heatmap_figure(result: SweepResult):
+    """The sweep's heatmaps like the paper's figure: a row of four per ground-truth table, else kept counts."""
+    panels = _sweep_panels(result)
+    columns = min(len(panels), len(METRICS))
+    rows = -(-len(panels) // columns)
+    figure = _figure(figsize=(max(4 * columns, 7), 3.75 * rows + 0.8), layout="constrained")
+    axes = figure.subplots(rows, columns, squeeze=False)
+    for index, (metric, grid, title) in enumerate(panels):
+        _panel(axes[index // columns][index % columns], figure, result, grid, metric, title)
+    caption = f"{Path(result.suite).name} — {result.problems} problems, scorer {result.scorer}"
+    if result.with_truth:
+        caption += f"\n{N_MEANING}"
+    else:
+        caption += f"\nno ground truth: objects kept of {format_count(result.objects_total)} per problem on average"
+    figure.suptitle(caption)
+    return figure
+
+
+def write_heatmap(result: SweepResult, path: str | os.PathLike) -> Path:
+    """Write ``heatmap_figure`` as a PNG (needs the 'plots' extra); returns where it wrote."""
+    require_matplotlib("--heatmap")
+    return _save(heatmap_figure(result), Path(path), dpi=100)

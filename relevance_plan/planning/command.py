@@ -1,0 +1,155 @@
+"""The ``cmd:TEMPLATE`` adapter: any external planner, from a command template.
+
+The template holds ``{domain}``, ``{problem}`` and optionally ``{plan}``; it
+is split into an argument list (never run by a shell).  With ``{plan}`` the
+planner writes its plan to that file, else the plan is read from its output.
+Nothing is known about the planner: it takes whatever PDDL it takes, and
+any exit code but 0 is a crash.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import re
+import shlex
+import shutil
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+
+from relevance_plan import errors
+from relevance_plan.pddl.model import Domain, Problem
+from relevance_plan.pddl.plans import Plan
+from relevance_plan.planning.features import refuse_unsupported
+from relevance_plan.planning.outcome import PlannerStatus, RunOutcome, parse_ipc_plan, signal_reason
+from relevance_plan.planning.process import ProcessRun, log_tail, read_log, run_process_group, watchdog_deadline
+
+KIND = "cmd"
+PLAN_FILE = "plan.txt"
+_PLACEHOLDER_RE = re.compile(r"\{(\w*)\}")
+_PLACEHOLDERS = frozenset({"domain", "problem", "plan"})
+
+
+def classify(run: ProcessRun, plan: Plan | None, uses_plan_file: bool, log: str) -> PlannerStatus:
+    """The command's ending in our words."""
+    if run.watchdog_fired:
+        return PlannerStatus.OUT_OF_TIME
+    if run.exit_code != 0:
+        return PlannerStatus.OUT_OF_MEMORY if "MemoryError" in log else PlannerStatus.PLANNER_CRASH
+    if plan is None:
+        return PlannerStatus.PLANNER_CRASH  # exit 0 but its output is not a plan
+    if not plan.steps and not uses_plan_file:
+        return PlannerStatus.SEARCH_INCOMPLETE  # said nothing: no plan found
+    return PlannerStatus.SOLVED
+
+
+def exit_reason(program: str, run: ProcessRun, plan: Plan | None) -> str:
+    """How the command ended, saying that the exit code is its own."""
+    if run.watchdog_fired:
+        return f"{program} killed by the watchdog at its wall-clock limit"
+    if run.exit_code < 0:
+        return f"{program} exit code {run.exit_code}: {signal_reason(run.exit_code)}"
+    if run.exit_code == 0 and plan is None:
+        return f"{program} exit code 0, but its output is not an IPC plan"
+    return f"{program} exit code {run.exit_code}"
+
+
+@dataclass(frozen=True)
+class CommandPlanner:
+    template: str
+
+    @property
+    def name(self) -> str:
+        return f"{KIND}:{self.template}"
+
+    @property
+    def features(self) -> None:
+        """Unknown: the planner decides."""
+        return None
+
+    @property
+    def arguments(self) -> list[str]:
+        try:
+            arguments = shlex.split(self.template)
+        except ValueError as error:
+            raise errors.UsageError(f"planner command template cannot be split: {error}") from None
+        if not arguments:
+            raise errors.UsageError("planner command template is empty")
+        return arguments
+
+    def check_installed(self) -> None:
+        found = set(_PLACEHOLDER_RE.findall(self.template))
+        unknown = found - _PLACEHOLDERS
+        if unknown:
+            raise errors.UsageError(
+                f"planner command template has unknown placeholder(s) "
+                f"{', '.join('{' + u + '}' for u in sorted(unknown))} "
+                "(use {domain}, {problem} and optionally {plan})"
+            )
+        missing = {"domain", "problem"} - found
+        if missing:
+            raise errors.UsageError(
+                f"planner command template needs {' and '.join('{' + m + '}' for m in sorted(missing))}"
+            )
+        self.executable()
+
+    def check(self, domain: Domain, problem: Problem) -> None:
+        refuse_unsupported(self.name, self.features, domain, problem)
+
+    def executable(self) -> str:
+        program = self.arguments[0]
+        found = shutil.which(program)
+        if found is None:
+            raise errors.PlannerError(f"planner executable not found: {program}")
+        return found
+
+    def version(self) -> str:
+        try:
+            digest = hashlib.sha256(Path(self.executable()).read_bytes()).hexdigest()[:12]
+        except OSError:
+            digest = "unreadable"
+        return f"cmd sha256:{digest}"
+
+    def run(self, domain_path, problem_path, *, time_limit, memory_limit_mb) -> RunOutcome:
+        uses_plan_file = "{plan}" in self.template
+        with tempfile.TemporaryDirectory(prefix="relevance-plan-cmd-") as tmp:
+            workdir = Path(tmp)
+            plan_path = workdir / PLAN_FILE
+            values = {
+                "domain": str(Path(domain_path).absolute()),
+                "problem": str(Path(problem_path).absolute()),
+                "plan": str(plan_path),
+            }
+            command = [_PLACEHOLDER_RE.sub(lambda m: values[m.group(1)], part) for part in self.arguments]
+            command[0] = self.executable()
+            run = run_process_group(
+                command,
+                workdir,
+                watchdog_deadline(time_limit),
+                what=self.name,
+                program=command[0],
+                memory_limit_mb=memory_limit_mb,
+            )
+            log = read_log(workdir)
+            if uses_plan_file:
+                text = plan_path.read_text(errors="replace") if plan_path.is_file() else None
+            else:
+                text = log
+        parsed = None if text is None else parse_ipc_plan(text)
+        tail = log_tail(log)
+        status = classify(run, parsed, uses_plan_file, tail)
+        return RunOutcome(
+            status=status,
+            exit_code=run.exit_code,
+            plan=parsed if parsed is not None and status is PlannerStatus.SOLVED else Plan(),
+            plan_cost=parsed.cost if parsed is not None else None,
+            wall_time=run.wall_time,
+            planner=self.name,
+            cpu_time=run.cpu_time,
+            peak_memory_mb=run.peak_memory_mb,
+            config=self.template,
+            log_tail=tail,
+            killed_by_watchdog=run.watchdog_fired,
+            process_group=run.process_group,
+            reason=exit_reason(Path(command[0]).name, run, parsed),
+        )

@@ -1,0 +1,439 @@
+"""The Fast Downward adapter: the planner shipped inside ``up_fast_downward``.
+
+What is Fast Downward's own lives here: where its driver is, the named
+configurations and how they become driver arguments, its exit codes (the
+driver's ``returncodes.py``) and what they mean for us, the plan files it
+writes (``sas_plan``, or ``sas_plan.1``, ``sas_plan.2``, ... with falling
+cost for anytime configurations such as ``lama``: the last complete one is
+the best), the logs it prints, and the PDDL it takes.  Each run gets a fresh
+temporary working directory (the driver writes ``output.sas`` and the plans
+into its cwd) and is supervised by ``process.run_process_group``.  The
+driver's own limits are CPU time and address space per component; the
+watchdog backs them up with wall-clock time.
+"""
+
+from __future__ import annotations
+
+import functools
+import hashlib
+import importlib.util
+import math
+import os
+import re
+import signal
+import sys
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+
+from relevance_plan import errors
+from relevance_plan.errors import PlanFormatError
+from relevance_plan.pddl.model import Domain, Problem
+from relevance_plan.pddl.plans import Plan, read_plan
+from relevance_plan.planning.features import CLASSICAL, refuse_unsupported
+from relevance_plan.planning.outcome import PlannerStatus, RunOutcome, signal_reason
+from relevance_plan.planning.process import log_tail, read_log, run_process_group, watchdog_deadline
+
+NAME = "fast-downward"
+FAST_DOWNWARD_ENV = "RELEVANCE_PLAN_FAST_DOWNWARD"
+DEFAULT_CONFIG = "lama-first"
+WHOSE = "Fast Downward"
+
+# Named configurations -> driver arguments.  Options the driver itself parses
+# (``--alias``) must precede the input files, while component options
+# (``--evaluator``, ``--search``) must follow them: ``--search`` before the
+# files would be read as the driver's "run search component" flag.
+# ``_split_driver_options`` puts each part in its place.
+PLANNER_CONFIGS: dict[str, tuple[str, ...]] = {
+    "lama-first": ("--alias", "lama-first"),
+    # Anytime: writes sas_plan.1, sas_plan.2, ... with decreasing cost.
+    "lama": ("--alias", "seq-sat-lama-2011"),
+    "ff-gbfs": ("--evaluator", "h=ff()", "--search", "lazy_greedy([h],preferred=[h])"),
+    "astar-lmcut": ("--search", "astar(lmcut())"),
+    "astar-blind": ("--search", "astar(blind())"),
+}
+
+# Driver options that take one value and belong before the input files.
+_DRIVER_OPTIONS = frozenset({"--alias", "--portfolio"})
+
+PLAN_FILE = "sas_plan"
+
+# Driver exit code -> (its name in the driver's ``returncodes.py``, our status).
+# Checked against the copy in up-fast-downward by the tests.  A negative code
+# -N means a process was killed by signal N: either the driver itself (seen
+# by os.wait4) or a component whose signal the driver passed on via
+# ``sys.exit(-N)``.  Codes not listed here, and codes 0-3 without a plan
+# file, are PLANNER_CRASH.
+EXIT_CODES: dict[int, tuple[str, PlannerStatus]] = {
+    0: ("SUCCESS", PlannerStatus.SOLVED),
+    1: ("SEARCH_PLAN_FOUND_AND_OUT_OF_MEMORY", PlannerStatus.SOLVED),
+    # The driver's 2 is SEARCH_PLAN_FOUND_AND_OUT_OF_TIME, but a run with a
+    # plan is SOLVED before this table is consulted; without one, 2 is
+    # argparse's usage error (an unknown driver option in --planner-config).
+    2: ("USAGE_ERROR", PlannerStatus.PLANNER_CONFIG_ERROR),
+    3: ("SEARCH_PLAN_FOUND_AND_OUT_OF_MEMORY_AND_TIME", PlannerStatus.SOLVED),
+    10: ("TRANSLATE_UNSOLVABLE", PlannerStatus.UNSOLVABLE),
+    11: ("SEARCH_UNSOLVABLE", PlannerStatus.UNSOLVABLE),  # also a statically unreachable goal
+    12: ("SEARCH_UNSOLVED_INCOMPLETE", PlannerStatus.SEARCH_INCOMPLETE),
+    # No plan below a cost bound proves nothing about the task itself.
+    13: ("SEARCH_UNSOLVABLE_WITHIN_BOUND", PlannerStatus.SEARCH_INCOMPLETE),
+    20: ("TRANSLATE_OUT_OF_MEMORY", PlannerStatus.OUT_OF_MEMORY),
+    21: ("TRANSLATE_OUT_OF_TIME", PlannerStatus.OUT_OF_TIME),
+    22: ("SEARCH_OUT_OF_MEMORY", PlannerStatus.OUT_OF_MEMORY),
+    23: ("SEARCH_OUT_OF_TIME", PlannerStatus.OUT_OF_TIME),
+    24: ("SEARCH_OUT_OF_MEMORY_AND_TIME", PlannerStatus.OUT_OF_TIME),
+    # Translator exit 1 (any uncaught exception, incl. "Could not read file")
+    # becomes 30; see _refine_status for the log-based split.
+    30: ("TRANSLATE_CRITICAL_ERROR", PlannerStatus.PLANNER_CRASH),
+    31: ("TRANSLATE_INPUT_ERROR", PlannerStatus.INPUT_ERROR),  # PDDL syntax, undefined names
+    32: ("SEARCH_CRITICAL_ERROR", PlannerStatus.PLANNER_CRASH),
+    33: ("SEARCH_INPUT_ERROR", PlannerStatus.PLANNER_CONFIG_ERROR),
+    34: ("SEARCH_UNSUPPORTED", PlannerStatus.UNSUPPORTED),
+    35: ("DRIVER_CRITICAL_ERROR", PlannerStatus.PLANNER_CRASH),
+    36: ("DRIVER_INPUT_ERROR", PlannerStatus.PLANNER_CONFIG_ERROR),
+    37: ("DRIVER_UNSUPPORTED", PlannerStatus.UNSUPPORTED),
+    # The translator's CPU limit can be 0 s after the driver's own start-up
+    # (it rounds the remainder down), so SIGXCPU arrives before the
+    # translator installs its handler.
+    -signal.SIGXCPU: ("SIGXCPU", PlannerStatus.OUT_OF_TIME),
+}
+
+_TRANSLATE_CRITICAL_ERROR = 30
+
+# What the user got wrong when the driver rejects --planner-config.
+_CONFIG_ERRORS = {
+    2: "an unknown driver option",
+    33: "a bad search string",
+    36: "an unknown alias or a bad option value",
+}
+
+# "Done! [0.390s CPU, 0.384s wall-clock]" ends a successful translator run.
+_TRANSLATE_DONE_RE = re.compile(r"^Done! \[[\d.]+s CPU, ([\d.]+)s wall-clock\]", re.MULTILINE)
+# "[t=0.0027s, 10544 KB] Total time: 0.0027s" ends the search component's log;
+# "Search time:" (search proper, without input reading) is the fallback.
+_SEARCH_TOTAL_RE = re.compile(r"\] Total time: ([\d.]+)s$", re.MULTILINE)
+_SEARCH_ONLY_RE = re.compile(r"\] Search time: ([\d.]+)s$", re.MULTILINE)
+_PLAN_COST_RE = re.compile(r"^;\s*cost\s*=\s*(\d+)", re.MULTILINE)
+_ANYTIME_PLAN_RE = re.compile(re.escape(PLAN_FILE) + r"\.(\d+)")
+
+# How a component dies when its address-space limit is too small for it to
+# even start: the loader cannot map libc (exit 127), Python raises MemoryError
+# during start-up, or fails to flush at exit (exit 120).
+_OUT_OF_MEMORY_MARKERS = ("MemoryError", "failed to map segment", "Cannot allocate memory", "std::bad_alloc")
+_PYTHON_FINALIZE_FAILED = 120
+
+
+# --------------------------------------------------------------------------- the driver
+
+
+@functools.cache
+def _locate_driver(override: str | None) -> Path:
+    if override:
+        path = Path(override).expanduser()
+        if not path.is_file():
+            raise errors.PlannerError(f"Fast Downward driver not found at {path} (from ${FAST_DOWNWARD_ENV})")
+        return path.resolve()
+    # find_spec locates the package without importing it (its __init__
+    # pulls in unified_planning, which is slow).
+    spec = importlib.util.find_spec("up_fast_downward")
+    if spec is None or not spec.submodule_search_locations:
+        raise errors.PlannerError(f"up-fast-downward is not installed; install it or set ${FAST_DOWNWARD_ENV}")
+    for location in spec.submodule_search_locations:
+        path = Path(location) / "downward" / "fast-downward.py"
+        if path.is_file():
+            return path.resolve()
+    raise errors.PlannerError(
+        f"up-fast-downward has no downward/fast-downward.py; reinstall it or set ${FAST_DOWNWARD_ENV}"
+    )
+
+
+def find_fast_downward() -> Path:
+    """Path of ``fast-downward.py``; ``$RELEVANCE_PLAN_FAST_DOWNWARD`` overrides it."""
+    # Cached per override value, so changing the variable takes effect.
+    return _locate_driver(os.environ.get(FAST_DOWNWARD_ENV) or None)
+
+
+@functools.lru_cache(maxsize=1)
+def fast_downward_version() -> str:
+    """Version of the installed up-fast-downward package (for result keys)."""
+    import importlib.metadata  # slow to import; only batch keys need it
+
+    try:
+        return importlib.metadata.version("up-fast-downward")
+    except importlib.metadata.PackageNotFoundError as error:
+        raise errors.PlannerError("up-fast-downward is not installed") from error
+
+
+def planner_arguments(config: str) -> tuple[str, ...]:
+    """Driver arguments for a named config, a raw search string or an alias.
+
+    Unknown aliases are left to the driver, which rejects them (exit 36).
+    """
+    if config in PLANNER_CONFIGS:
+        return PLANNER_CONFIGS[config]
+    if not config.strip():
+        raise errors.UsageError("empty planner configuration")
+    if "(" in config:
+        return ("--search", config)
+    return ("--alias", config)
+
+
+def _split_driver_options(arguments: tuple[str, ...]) -> tuple[list[str], list[str]]:
+    """(options before the input files, component options after them)."""
+    before: list[str] = []
+    index = 0
+    while index + 1 < len(arguments) and arguments[index] in _DRIVER_OPTIONS:
+        before.extend(arguments[index : index + 2])
+        index += 2
+    return before, list(arguments[index:])
+
+
+def _build_command(
+    python: str,
+    driver: Path,
+    domain: Path,
+    problem: Path,
+    config: str,
+    time_limit: float | None,
+    memory_limit_mb: int | None,
+) -> list[str]:
+    limits: list[str] = []
+    if time_limit is not None:
+        limits += ["--overall-time-limit", f"{math.ceil(time_limit)}s"]
+    if memory_limit_mb is not None:
+        limits += ["--overall-memory-limit", f"{memory_limit_mb}M"]
+    before, after = _split_driver_options(planner_arguments(config))
+    return [python, str(driver), "--plan-file", PLAN_FILE, *limits, *before, str(domain), str(problem), *after]
+
+
+# --------------------------------------------------------------------------- what it leaves behind
+
+
+def _plan_paths(workdir: Path) -> list[Path]:
+    """Plan files, best last: sas_plan, or sas_plan.1, .2, ... for anytime configs."""
+    numbered = []
+    for path in workdir.iterdir():
+        match = _ANYTIME_PLAN_RE.fullmatch(path.name)
+        if match:
+            numbered.append((int(match.group(1)), path))
+    if numbered:
+        return [path for _, path in sorted(numbered)]
+    single = workdir / PLAN_FILE
+    return [single] if single.is_file() else []
+
+
+def read_best_plan(workdir: Path) -> Plan | None:
+    """The last complete plan file (a cost line ends it), or None if there is none."""
+    for path in reversed(_plan_paths(workdir)):
+        text = path.read_text(errors="replace")
+        if _PLAN_COST_RE.search(text) is None:
+            continue  # cut off mid-write by a kill; an earlier plan may be whole
+        try:
+            return read_plan(text)
+        except PlanFormatError:
+            continue
+    return None
+
+
+def _last_float(pattern: re.Pattern[str], text: str) -> float | None:
+    matches = pattern.findall(text)
+    return float(matches[-1]) if matches else None
+
+
+def _search_time(log: str) -> float | None:
+    total = _last_float(_SEARCH_TOTAL_RE, log)
+    return total if total is not None else _last_float(_SEARCH_ONLY_RE, log)
+
+
+# --------------------------------------------------------------------------- exit codes -> status
+
+
+def exit_reason(exit_code: int, killed_by_watchdog: bool = False) -> str:
+    """What the driver's exit code means, saying that it is Fast Downward's."""
+    if killed_by_watchdog:
+        return f"{WHOSE} killed by the watchdog at its wall-clock limit"
+    if exit_code in EXIT_CODES and exit_code >= 0:
+        meaning = EXIT_CODES[exit_code][0].lower().replace("_", " ")
+        if exit_code in _CONFIG_ERRORS:
+            meaning += f", {_CONFIG_ERRORS[exit_code]}"
+        return f"{WHOSE} exit code {exit_code}: {meaning}"
+    if exit_code < 0:
+        return f"{WHOSE} exit code {exit_code}: {signal_reason(exit_code)}"
+    return f"{WHOSE} exit code {exit_code}: not one of the driver's codes"
+
+
+def _refine_status(
+    status: PlannerStatus,
+    exit_code: int,
+    log: str,
+    cpu_time: float,
+    driver_time_limit: float | None,
+    memory_limited: bool = False,
+) -> PlannerStatus:
+    """Split exit codes the driver uses for several causes, by the log."""
+    if exit_code == _TRANSLATE_CRITICAL_ERROR:
+        if "Could not read file" in log:
+            return PlannerStatus.INPUT_ERROR
+        if "MemoryError" in log:  # limit so low that Python could not start
+            return PlannerStatus.OUT_OF_MEMORY
+    if (
+        memory_limited
+        and status is PlannerStatus.PLANNER_CRASH
+        and (exit_code == _PYTHON_FINALIZE_FAILED or any(marker in log for marker in _OUT_OF_MEMORY_MARKERS))
+    ):
+        return PlannerStatus.OUT_OF_MEMORY
+    # A component that ignores SIGXCPU gets SIGKILL at the hard CPU limit.
+    if exit_code == -signal.SIGKILL and driver_time_limit is not None and cpu_time >= driver_time_limit - 1.0:
+        return PlannerStatus.OUT_OF_TIME
+    return status
+
+
+def classify(
+    exit_code: int,
+    has_plan: bool,
+    killed_by_watchdog: bool,
+    log: str,
+    cpu_time: float,
+    driver_time_limit: float | None,
+    memory_limited: bool = False,
+) -> PlannerStatus:
+    """Fast Downward's ending in our words."""
+    if has_plan:
+        # A plan file with its cost line is complete, even if the run was then
+        # stopped (anytime configs end by hitting a limit).
+        return PlannerStatus.SOLVED
+    if killed_by_watchdog:
+        return PlannerStatus.OUT_OF_TIME
+    _, status = EXIT_CODES.get(exit_code, ("", PlannerStatus.PLANNER_CRASH))
+    if status is PlannerStatus.SOLVED:
+        return PlannerStatus.PLANNER_CRASH  # "success" but no plan file
+    return _refine_status(status, exit_code, log, cpu_time, driver_time_limit, memory_limited)
+
+
+# --------------------------------------------------------------------------- one run
+
+
+def run_fast_downward(
+    domain_path: str | os.PathLike[str],
+    problem_path: str | os.PathLike[str],
+    *,
+    config: str = DEFAULT_CONFIG,
+    time_limit: float | None = 120.0,
+    memory_limit_mb: int | None = None,
+    python: str = sys.executable,
+    driver_limits: bool = True,
+    watchdog_grace: float | None = None,
+) -> RunOutcome:
+    """Run Fast Downward on one task and classify the result.
+
+    ``time_limit`` (seconds) goes to the driver as a CPU limit and, plus a
+    grace period (default max(5 s, 10 %)), to a wall-clock watchdog that
+    kills the whole process group.  ``driver_limits=False`` withholds the
+    limits from the driver so that only the watchdog applies (for tests).
+    """
+    domain = Path(domain_path).absolute()
+    problem = Path(problem_path).absolute()
+    for path in (domain, problem):
+        if not path.is_file():
+            raise errors.InputFileError("no such file", path=str(path))
+    if time_limit is not None and time_limit <= 0:
+        raise errors.UsageError(f"time limit must be positive, got {time_limit}")
+    if memory_limit_mb is not None and memory_limit_mb <= 0:
+        raise errors.UsageError(f"memory limit must be positive, got {memory_limit_mb}")
+    driver = find_fast_downward()
+    driver_time_limit = time_limit if driver_limits else None
+    command = _build_command(
+        python, driver, domain, problem, config, driver_time_limit, memory_limit_mb if driver_limits else None
+    )
+    with tempfile.TemporaryDirectory(prefix="relevance-plan-fd-") as tmp:
+        workdir = Path(tmp)
+        deadline = watchdog_deadline(time_limit, watchdog_grace)
+        run = run_process_group(command, workdir, deadline, what=WHOSE, program=driver)
+        log = read_log(workdir)
+        plan = read_best_plan(workdir)
+    killed = run.killed_by_watchdog
+    memory_limited = driver_limits and memory_limit_mb is not None
+    status = classify(run.exit_code, plan is not None, killed, log, run.cpu_time, driver_time_limit, memory_limited)
+    return RunOutcome(
+        status=status,
+        exit_code=run.exit_code,
+        plan=plan if plan is not None else Plan(),
+        plan_cost=plan.cost if plan is not None else None,
+        wall_time=run.wall_time,
+        planner=NAME,
+        cpu_time=run.cpu_time,
+        peak_memory_mb=run.peak_memory_mb,
+        translate_time=_last_float(_TRANSLATE_DONE_RE, log),
+        search_time=_search_time(log),
+        config=config,
+        log_tail=log_tail(log),
+        killed_by_watchdog=killed,
+        process_group=run.process_group,
+        raw_status=EXIT_CODES.get(run.exit_code, ("", status))[0],
+        reason=exit_reason(run.exit_code, killed),
+    )
+
+
+# --------------------------------------------------------------------------- the adapter
+
+
+def check_names(domain: Domain, problem: Problem) -> None:
+    """Refuse, before any planning, a name Fast Downward cannot read.
+
+    Its translator accepts only ASCII outside comments; our reader, like
+    PDDL tools that read Unicode, accepts more, so ``score`` and ``prune``
+    work while ``plan`` would fail deep inside the planner.
+    """
+    names = [("domain", domain.name), ("problem", problem.name)]
+    names += [("type", name) for name in domain.types]
+    names += [("constant", name) for name in domain.constants]
+    names += [("predicate", name) for name in domain.predicates]
+    names += [("action", action.name) for action in domain.actions]
+    for kind, name in names:
+        if not name.isascii():
+            raise errors.UnsupportedFeatureError(
+                f"{kind} '{name}' has a non-ASCII name, which {WHOSE} does not accept", path=domain.path
+            )
+    for name in problem.objects:
+        if not name.isascii():
+            raise errors.UnsupportedFeatureError(
+                f"object '{problem.display(name)}' has a non-ASCII name, which {WHOSE} does not accept",
+                path=problem.path,
+                line=problem.object_line(name),
+            )
+
+
+@dataclass(frozen=True)
+class FastDownwardPlanner:
+    config: str = DEFAULT_CONFIG
+    name: str = NAME
+
+    @property
+    def features(self) -> frozenset[str]:
+        """Classical planning with ADL, action costs and derived predicates; no numbers, time or preferences."""
+        return CLASSICAL
+
+    def check_installed(self) -> None:
+        """Nothing to check up front: up-fast-downward is a dependency of the tool, and a missing or
+        overridden driver is reported when the first run looks for it."""
+
+    def check(self, domain: Domain, problem: Problem) -> None:
+        check_names(domain, problem)
+        refuse_unsupported(WHOSE, self.features, domain, problem)
+
+    def version(self) -> str:
+        """The up-fast-downward version; a driver override adds a digest of its file."""
+        version = fast_downward_version()
+        override = os.environ.get(FAST_DOWNWARD_ENV)
+        if override:
+            try:
+                digest = hashlib.sha256(Path(override).expanduser().read_bytes()).hexdigest()
+            except OSError:
+                digest = "missing"
+            version += f"+custom-{digest[:12]}"
+        return version
+
+    def run(self, domain_path, problem_path, *, time_limit, memory_limit_mb) -> RunOutcome:
+        return run_fast_downward(
+            domain_path, problem_path, config=self.config, time_limit=time_limit, memory_limit_mb=memory_limit_mb
+        )

@@ -1,0 +1,86 @@
+"""What one planner run ends in, whatever the planner: a status, the plan, the costs, the planner's own words.
+
+Every planner adapter (``fast_downward``, ``up_engines``, ``command``)
+classifies its own exit codes into :class:`PlannerStatus` and says in
+``reason`` what the planner reported in the planner's own terms, naming
+whose terms they are ("Fast Downward exit code 23: search out of time"), so
+no message ever shows a bare number that the tool's own exit table could
+be taken to explain.
+"""
+
+from __future__ import annotations
+
+import enum
+import signal
+from dataclasses import dataclass
+
+from relevance_plan.errors import PlanFormatError
+from relevance_plan.pddl.plans import Plan, read_plan
+
+
+class PlannerStatus(enum.Enum):
+    """How one planner run ended (values: hyphenated lower case, like every status of the tool)."""
+
+    SOLVED = "solved"
+    UNSOLVABLE = "unsolvable"
+    SEARCH_INCOMPLETE = "search-incomplete"
+    OUT_OF_TIME = "out-of-time"
+    OUT_OF_MEMORY = "out-of-memory"
+    INPUT_ERROR = "input-error"
+    PLANNER_CONFIG_ERROR = "planner-config-error"  # the planner rejected its configuration, not the task
+    UNSUPPORTED = "unsupported"
+    PLANNER_CRASH = "planner-crash"
+
+
+@dataclass(frozen=True)
+class RunOutcome:
+    """One planner run.
+
+    ``plan`` holds the steps lower-cased and without the planner's
+    formatting.  ``exit_code`` is the planner process's (-N for death by
+    signal N; None when no process ran, as for an engine called in-process).
+    ``reason`` explains the end of the run in the planner's own terms and
+    says whose they are; ``raw_status`` is the planner's own word for it
+    (a driver code's name, an engine's status name), for logs.
+    ``cpu_time`` and ``peak_memory_mb`` cover the processes the run reaped;
+    ``translate_time`` and ``search_time`` are a planner's own reports, None
+    if it gives none.  ``process_group`` is the run's (now dead) group id.
+    """
+
+    status: PlannerStatus
+    exit_code: int | None
+    plan: Plan
+    plan_cost: float | None
+    wall_time: float
+    planner: str
+    cpu_time: float = 0.0
+    peak_memory_mb: float = 0.0
+    translate_time: float | None = None
+    search_time: float | None = None
+    config: str = ""
+    log_tail: str = ""
+    killed_by_watchdog: bool = False
+    process_group: int | None = None
+    raw_status: str = ""
+    reason: str = ""
+    optimal: bool = False  # the planner proved the plan optimal
+
+    @property
+    def solved(self) -> bool:
+        return self.status is PlannerStatus.SOLVED
+
+
+def parse_ipc_plan(text: str) -> Plan | None:
+    """The plan in the IPC format, or None when a line is neither a step nor a comment."""
+    try:
+        return read_plan(text)
+    except PlanFormatError:
+        return None
+
+
+def signal_reason(exit_code: int) -> str:
+    """ "killed by SIGKILL" for exit code -9 (a death by signal)."""
+    try:
+        return f"killed by {signal.Signals(-exit_code).name}"
+    except ValueError:
+        return f"killed by signal {-exit_code}"

@@ -1,0 +1,197 @@
+"""The ``up:NAME`` adapter: a one-shot planner installed for unified-planning, run in a child process.
+
+The child (``up_child.py``) reads the PDDL files with unified-planning,
+solves, and writes the plan and the engine's verdict (a
+``PlanGenerationResultStatus`` name) into the run's directory; it runs under
+``process.run_process_group`` so that its time limit holds and a hung
+engine can be killed with whatever it started.
+
+:data:`UP_STATUS` is the one table from unified-planning's statuses to ours,
+keyed by name so that reading it does not import unified_planning; the
+child's parent here and the ``relevance[...]`` meta-engine
+(``integrations.up_engine``) both derive their mappings from it.
+"""
+
+from __future__ import annotations
+
+import sys
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+
+from relevance_plan import errors
+from relevance_plan.pddl.model import Domain, Problem
+from relevance_plan.pddl.plans import Plan
+from relevance_plan.planning.features import STRIPS, TYPING, refuse_unsupported
+from relevance_plan.planning.outcome import PlannerStatus, RunOutcome, parse_ipc_plan, signal_reason
+from relevance_plan.planning.process import log_tail, read_log, run_process_group, watchdog_deadline
+
+KIND = "up"
+PLANNERS_EXTRA_HINT = "pip install 'relevance-plan[planners]'"
+
+# unified-planning's PlanGenerationResultStatus, by name -> our status.
+UP_STATUS: dict[str, PlannerStatus] = {
+    "SOLVED_SATISFICING": PlannerStatus.SOLVED,
+    "SOLVED_OPTIMALLY": PlannerStatus.SOLVED,
+    "UNSOLVABLE_PROVEN": PlannerStatus.UNSOLVABLE,
+    "UNSOLVABLE_INCOMPLETELY": PlannerStatus.SEARCH_INCOMPLETE,
+    "TIMEOUT": PlannerStatus.OUT_OF_TIME,
+    "MEMOUT": PlannerStatus.OUT_OF_MEMORY,
+    "INTERNAL_ERROR": PlannerStatus.PLANNER_CRASH,
+    "UNSUPPORTED_PROBLEM": PlannerStatus.UNSUPPORTED,
+}
+SOLVED_OPTIMALLY = "SOLVED_OPTIMALLY"
+
+
+def up_status_name(status: PlannerStatus) -> str:
+    """The unified-planning status name for one of ours (the first in :data:`UP_STATUS`; else INTERNAL_ERROR)."""
+    return next((name for name, ours in UP_STATUS.items() if ours is status), "INTERNAL_ERROR")
+
+
+# What the child leaves in the run's directory, and its one exit code of its own.
+PLAN_FILE = "plan.txt"
+VERDICT_FILE = "verdict.txt"
+CHILD_CANNOT_READ = 3  # unified-planning cannot read the PDDL files: an input error
+
+# What an engine takes, for the engines whose limits are known.  The engines'
+# declared ProblemKinds are advisory (up-lpg's lacks negative conditions, yet
+# LPG plans with them), so refusing by them would refuse problems an engine
+# solves; an engine not listed here decides for itself (the child reports
+# UNSUPPORTED_PROBLEM).
+ENGINE_FEATURES: dict[str, frozenset[str]] = {
+    # "Pyperplan supports the following PDDL fragment: STRIPS without action costs" (its credits).
+    "pyperplan": frozenset({STRIPS, TYPING}),
+}
+
+
+def installed_up_engines() -> tuple[str, ...]:
+    """One-shot planners the unified-planning factory knows (imports unified_planning: slow)."""
+    import unified_planning.environment as environment
+
+    factory = environment.get_environment().factory
+    names = []
+    for name in factory.engines:
+        if "[" in name:
+            continue  # a meta-engine (ours among them) is not a planner of its own
+        try:
+            if factory.engine(name).is_oneshot_planner():
+                names.append(name)
+        except Exception:  # an engine whose class cannot be loaded is not usable
+            continue
+    return tuple(sorted(names))
+
+
+def classify(exit_code: int, verdict: str | None, has_plan: bool, watchdog_fired: bool, log: str) -> PlannerStatus:
+    """The child's ending in our words."""
+    if watchdog_fired and not has_plan:
+        return PlannerStatus.OUT_OF_TIME
+    if verdict is not None:
+        status = UP_STATUS.get(verdict, PlannerStatus.PLANNER_CRASH)
+    elif exit_code == CHILD_CANNOT_READ:
+        status = PlannerStatus.INPUT_ERROR
+    else:
+        status = PlannerStatus.PLANNER_CRASH
+    if status is PlannerStatus.SOLVED and not has_plan:
+        return PlannerStatus.PLANNER_CRASH
+    if status is PlannerStatus.PLANNER_CRASH and "MemoryError" in log:
+        return PlannerStatus.OUT_OF_MEMORY
+    return status
+
+
+def exit_reason(name: str, exit_code: int, verdict: str | None, watchdog_fired: bool) -> str:
+    """How the child ended, saying whose words they are."""
+    if watchdog_fired:
+        return f"{name} killed by the watchdog at its wall-clock limit"
+    if verdict is not None:
+        return f"{name}: unified-planning status {verdict}"
+    if exit_code == CHILD_CANNOT_READ:
+        return f"{name}: unified-planning cannot read the problem"
+    if exit_code < 0:
+        return f"{name} child process exit code {exit_code}: {signal_reason(exit_code)}"
+    return f"{name} child process exit code {exit_code}: ended without a verdict"
+
+
+def _read_verdict(workdir: Path) -> str | None:
+    try:
+        text = (workdir / VERDICT_FILE).read_text().strip()
+    except OSError:
+        return None
+    return text or None
+
+
+@dataclass(frozen=True)
+class UnifiedPlanningPlanner:
+    engine: str
+
+    @property
+    def name(self) -> str:
+        return f"{KIND}:{self.engine}"
+
+    @property
+    def features(self) -> frozenset[str] | None:
+        return ENGINE_FEATURES.get(self.engine)
+
+    def check_installed(self) -> None:
+        if self.engine not in installed_up_engines():
+            raise errors.UsageError(
+                f"unified-planning engine '{self.engine}' is not installed (installed: "
+                f"{', '.join(installed_up_engines()) or 'none'}); {PLANNERS_EXTRA_HINT} adds pyperplan, symk and lpg"
+            )
+
+    def check(self, domain: Domain, problem: Problem) -> None:
+        refuse_unsupported(self.name, self.features, domain, problem)
+
+    def version(self) -> str:
+        import importlib.metadata  # slow to import; only batch keys need it
+
+        parts = [f"unified-planning {importlib.metadata.version('unified-planning')}"]
+        try:
+            parts.append(f"up-{self.engine} {importlib.metadata.version('up-' + self.engine)}")
+        except importlib.metadata.PackageNotFoundError:
+            pass
+        return "; ".join(parts)
+
+    def run(self, domain_path, problem_path, *, time_limit, memory_limit_mb) -> RunOutcome:
+        with tempfile.TemporaryDirectory(prefix="relevance-plan-up-") as tmp:
+            workdir = Path(tmp)
+            plan_path = workdir / PLAN_FILE
+            command = [
+                sys.executable,
+                "-m",
+                "relevance_plan.planning.up_child",
+                self.engine,
+                str(Path(domain_path).absolute()),
+                str(Path(problem_path).absolute()),
+                str(plan_path),
+                str(workdir / VERDICT_FILE),
+                "none" if time_limit is None else f"{time_limit:.3f}",
+            ]
+            run = run_process_group(
+                command,
+                workdir,
+                watchdog_deadline(time_limit),
+                what=self.name,
+                program=sys.executable,
+                memory_limit_mb=memory_limit_mb,
+            )
+            parsed = parse_ipc_plan(plan_path.read_text(errors="replace")) if plan_path.is_file() else None
+            verdict = _read_verdict(workdir)
+            log = log_tail(read_log(workdir))
+        status = classify(run.exit_code, verdict, parsed is not None, run.watchdog_fired, log)
+        return RunOutcome(
+            status=status,
+            exit_code=run.exit_code,
+            plan=parsed if parsed is not None and status is PlannerStatus.SOLVED else Plan(),
+            plan_cost=parsed.cost if parsed is not None else None,
+            wall_time=run.wall_time,
+            planner=self.name,
+            cpu_time=run.cpu_time,
+            peak_memory_mb=run.peak_memory_mb,
+            config=self.engine,
+            log_tail=log,
+            killed_by_watchdog=run.watchdog_fired,
+            process_group=run.process_group,
+            raw_status=verdict or "",
+            reason=exit_reason(self.name, run.exit_code, verdict, run.watchdog_fired),
+            optimal=verdict == SOLVED_OPTIMALLY and status is PlannerStatus.SOLVED,
+        )
