@@ -84,7 +84,7 @@ def _layout(rng: random.Random, inst: Instance, size: int) -> tuple[Graph, dict,
         inst.facts.append(("door-closed", door) if rng.random() < CLOSED_DOOR else ("door-open", door))
         add_edge(graph, a, b)
         door_of[(a, b)] = door_of[(b, a)] = door
-    receptacles = []
+    receptacles: list[str] = []
     for room in rooms:
         for _ in range(rng.randint(2, 5)):
             kind, openable = rng.choice(RECEPTACLE_KINDS)

@@ -86,7 +86,7 @@ SIZED_WORLDS: tuple[str, ...] = CLASSIC_WORLDS + tuple(NEW_WORLDS)
 def _world(world: object) -> SizedWorld:
     if world not in NEW_WORLDS:
         raise UsageError(f"unknown world {world!r}: choose one of {', '.join(SIZED_WORLDS)}")
-    return NEW_WORLDS[world]  # type: ignore[index]
+    return NEW_WORLDS[world]
 
 
 def sized_rng(seed: int, world: str, index: int, size: int) -> random.Random:
