@@ -5,6 +5,9 @@ and ``relevance-plan generate`` writes its suites with the usual layout and rule
 from __future__ import annotations
 
 import json
+import os
+import subprocess
+import sys
 
 import pytest
 from support import invoke, one_line_error
@@ -116,3 +119,31 @@ def test_cli_refuses_bad_options_in_one_line(tmp_path, arguments, message):
     assert result.exit_code != 0
     assert message in one_line_error(result.stderr)
     assert not (tmp_path / "out").exists()
+
+
+ACROSS_PROCESSES = (
+    "import sys\n"
+    "from relevance_plan.generators import generate_sized_problem, generate_variant_problem\n"
+    "for world in ('scenegraph', 'driverlog-temporal', 'zenotravel-numeric', 'logistics-manygoals'):\n"
+    "    sys.stdout.write(generate_sized_problem(world, 3, 1, 120).pddl_text)\n"
+    "sys.stdout.write(generate_variant_problem('cereal-temporal', 'hard', 3, 1).pddl_text)\n"
+)
+
+
+def test_same_bytes_across_processes_and_hash_seeds():
+    outputs = [
+        subprocess.run(
+            [sys.executable, "-c", ACROSS_PROCESSES],
+            env=dict(os.environ, PYTHONHASHSEED=hash_seed),
+            capture_output=True,
+            text=True,
+            check=True,
+        ).stdout
+        for hash_seed in ("1", "2")
+    ]
+    here = "".join(
+        generate_sized_problem(world, 3, 1, 120).pddl_text
+        for world in ("scenegraph", "driverlog-temporal", "zenotravel-numeric", "logistics-manygoals")
+    )
+    here += generate_variant_problem("cereal-temporal", "hard", 3, 1).pddl_text
+    assert outputs[0] == outputs[1] == here

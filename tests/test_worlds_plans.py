@@ -80,16 +80,17 @@ def check_world(tmp_path: Path, folder: str, text: str, necessary: list[str], fu
 
 
 @pytest.mark.parametrize(
-    "world,difficulty",
+    "world,difficulty,distractors",
     [
-        ("coffee-temporal", "simple"),
-        ("coffee-temporal", "hard"),
-        ("cereal-temporal", "simple"),
-        ("coffee-numeric", "hard"),
+        ("coffee-temporal", "simple", 4),
+        ("coffee-temporal", "hard", 0),
+        ("cereal-temporal", "simple", 4),
+        ("coffee-numeric", "simple", 4),
+        ("coffee-numeric", "hard", 0),
     ],
 )
-def test_kitchen_variants_full_with_few_distractors(tmp_path, world, difficulty):
-    problem = generate_variant_problem(world, difficulty, 3, 1, distractors=4)
+def test_kitchen_variants_full_with_few_distractors(tmp_path, world, difficulty, distractors):
+    problem = generate_variant_problem(world, difficulty, 3, 1, distractors=distractors)
     check_world(tmp_path, world, problem.pddl_text, problem.sidecar["necessary"])
 
 

@@ -161,3 +161,10 @@ def test_zenotravel_planes_can_always_fly_slowly_after_refuelling():
         assert values[("capacity", plane)] >= longest * values[("slow-burn", plane)]
         assert values[("fast-burn", plane)] > values[("slow-burn", plane)]
     assert task.problem.metric.direction == "minimize"
+
+
+@pytest.mark.parametrize("world", sorted(NEW_WORLDS))
+def test_default_size_is_the_worlds_benchmark_size(world):
+    problem = generate_sized_problem(world, 1, 1)
+    assert problem.sidecar["size"] == NEW_WORLDS[world].default_size >= 100
+    assert problem == generate_sized_problem(world, 1, 1, NEW_WORLDS[world].default_size)

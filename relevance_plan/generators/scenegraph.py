@@ -98,7 +98,7 @@ def _layout(rng: random.Random, inst: Instance, size: int) -> tuple[Graph, dict,
     return graph, door_of, room_of, receptacles
 
 
-def build_scenegraph(rng: random.Random, size: int, dense: bool = False) -> Instance:
+def build_scenegraph(rng: random.Random, size: int) -> Instance:
     inst = Instance()
     agent = inst.add("agent", "robot")
     graph, door_of, room_of, receptacles = _layout(rng, inst, size)
@@ -110,7 +110,7 @@ def build_scenegraph(rng: random.Random, size: int, dense: bool = False) -> Inst
     inst.facts += [("in", item, holder[item]) for item in items]
     stops = [start]
     needed = {agent}
-    for item in items if dense else rng.sample(items, rng.randint(1, 3)):
+    for item in rng.sample(items, rng.randint(1, 3)):
         target = rng.choice([r for r in receptacles if r != holder[item]])
         inst.goal.append(("in", item, target))
         needed.update({item, holder[item], target})

@@ -34,7 +34,7 @@ from relevance_plan.pddl.model import Metric
 MAP_SIDE = 100.0
 
 
-def build_driverlog_temporal(rng: random.Random, size: int, dense: bool = False) -> Instance:
+def build_driverlog_temporal(rng: random.Random, size: int) -> Instance:
     inst = Instance()
     roads_count = max(4, size // 5)
     vehicles = max(2, size // 30)
@@ -74,7 +74,7 @@ def build_driverlog_temporal(rng: random.Random, size: int, dense: bool = False)
     where = {package: rng.choice(names) for package in packages}
     inst.facts += [("at", package, where[package]) for package in packages]
     stops = [truck_at[trucks[0]]]
-    for package in packages if dense else rng.sample(packages, rng.randint(2, 3)):
+    for package in rng.sample(packages, rng.randint(2, 3)):
         target = rng.choice([n for n in names if n != where[package]])
         inst.goal.append(("at", package, target))
         stops += [where[package], target]
@@ -83,7 +83,7 @@ def build_driverlog_temporal(rng: random.Random, size: int, dense: bool = False)
     return inst
 
 
-def build_zenotravel_numeric(rng: random.Random, size: int, dense: bool = False) -> Instance:
+def build_zenotravel_numeric(rng: random.Random, size: int) -> Instance:
     inst = Instance()
     cities = [inst.add("city", f"city{i}") for i in range(1, max(3, size // 5) + 1)]
     points = random_points(rng, cities, 10 * MAP_SIDE)
@@ -115,7 +115,7 @@ def build_zenotravel_numeric(rng: random.Random, size: int, dense: bool = False)
     where = {person: rng.choice(cities) for person in people}
     inst.facts += [("at", person, where[person]) for person in people]
     needed = {aircraft[0], plane_at[aircraft[0]]}
-    for person in people if dense else rng.sample(people, rng.randint(2, 4)):
+    for person in rng.sample(people, rng.randint(2, 4)):
         target = rng.choice([c for c in cities if c != where[person]])
         inst.goal.append(("at", person, target))
         needed.update({person, where[person], target})
