@@ -75,50 +75,54 @@ def main():
 
 @main.command()
 @click.argument("world", type=str)
-@click.option("--difficulty", default="simple", show_default=True, help="simple or hard.")
+@click.option("--difficulty", default="simple", show_default=True, help="Kitchen worlds: simple or hard.")
 @click.option("--count", type=int, default=10, show_default=True, help="Number of problems.")
 @click.option("--seed", type=int, default=0, show_default=True)
 @click.option("--out", "out_dir", type=click.Path(file_okay=False), required=True, help="Suite directory to write.")
-@click.option("--distractors", type=int, default=None, help="Override the paper's distractor count.")
+@click.option("--distractors", type=int, default=None, help="Kitchen worlds: override the paper's distractor count.")
 @click.option(
     "--size",
     type=int,
     default=None,
-    help="Classic worlds: about how many objects per problem (default: a size where pure planning takes 5-120 s).",
+    help="Classic and other sized worlds: about how many objects per problem"
+    " (default: a size where pure planning takes seconds to a minute).",
 )
 @click.option(
     "--force", is_flag=True, help="Write into a non-empty directory that holds no suite, overwriting same-named files."
 )
 @handle_errors
 def generate(world, difficulty, count, seed, out_dir, distractors, size, force):
-    """Generate a seeded benchmark suite for WORLD: coffee or cereal, or a classic world
-    (blocksworld, logistics, gripper, ferry, grid, miconic, each also as NAME-typed)."""
-    from relevance_plan.cli.display import progress_bar
-    from relevance_plan.generators.classic import CLASSIC_WORLDS, check_classic_arguments, generate_classic_suite
-    from relevance_plan.generators.generate import generate_suite
-    from relevance_plan.generators.scenes import WORLD_NAMES
+    """Generate a seeded benchmark suite for WORLD.
 
-    if world in CLASSIC_WORLDS:
+    Kitchen worlds (--difficulty, --distractors): coffee, cereal, coffee-temporal,
+    cereal-temporal, coffee-numeric.  Sized worlds (--size): blocksworld, logistics,
+    gripper, ferry, grid, miconic (each also as NAME-typed), driverlog-temporal,
+    zenotravel-numeric, scenegraph, logistics-manygoals and miconic-manygoals (each
+    also as NAME-typed)."""
+    from relevance_plan.cli.display import progress_bar
+    from relevance_plan.generators.generate import generate_suite
+    from relevance_plan.generators.kitchen_variants import KITCHEN_VARIANTS, generate_variant_suite
+    from relevance_plan.generators.scenes import WORLD_NAMES
+    from relevance_plan.generators.sized import SIZED_WORLDS, check_sized_arguments, generate_sized_suite
+
+    kitchen_worlds = WORLD_NAMES + tuple(KITCHEN_VARIANTS)
+    if world in SIZED_WORLDS:
         if distractors is not None:
-            raise UsageError("--distractors applies to the kitchen worlds; classic worlds take --size")
-        check_classic_arguments(world, count, seed, size)
+            raise UsageError("--distractors applies to the kitchen worlds; classic and sized worlds take --size")
+        check_sized_arguments(world, count, seed, size)
         with progress_bar(f"generate {world}", count) as bar:
-            paths = generate_classic_suite(world, count, seed, Path(out_dir), size=size, progress=bar, force=force)
+            paths = generate_sized_suite(world, count, seed, Path(out_dir), size=size, progress=bar, force=force)
     else:
-        if world not in WORLD_NAMES:
-            raise UsageError(f"unknown world {world!r}: choose one of {', '.join(WORLD_NAMES + CLASSIC_WORLDS)}")
+        if world not in kitchen_worlds:
+            raise UsageError(f"unknown world {world!r}: choose one of {', '.join(kitchen_worlds + SIZED_WORLDS)}")
         if size is not None:
-            raise UsageError("--size applies to the classic worlds; kitchen worlds take --distractors")
+            raise UsageError(
+                "--size applies to the classic worlds and the other sized worlds; kitchen worlds take --distractors"
+            )
+        write = generate_suite if world in WORLD_NAMES else generate_variant_suite
         with progress_bar(f"generate {world}-{difficulty}", count) as bar:
-            paths = generate_suite(
-                world,
-                difficulty,
-                count,
-                seed,
-                Path(out_dir),
-                distractors=distractors,
-                progress=bar,
-                force=force,
+            paths = write(
+                world, difficulty, count, seed, Path(out_dir), distractors=distractors, progress=bar, force=force
             )
     click.echo(f"wrote {len(paths)} problems to {out_dir}")
 

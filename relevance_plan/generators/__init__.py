@@ -1,9 +1,16 @@
-"""Benchmark worlds (coffee, cereal), their base scenes and a seeded problem generator.
+"""Benchmark worlds, their base scenes and seeded problem generators.
 
-Public API::
+Kitchen worlds (coffee, cereal) and their temporal and numeric variants take
+a difficulty and a distractor count; every other world (the classic ones,
+driverlog-temporal, zenotravel-numeric, scenegraph, the many-goal forms)
+takes a size.  Public API::
 
     generate_suite(world, difficulty, count, seed, out_dir, distractors=None, progress=None) -> list[Path]
     generate_problem(world, difficulty, seed, index, distractors=None) -> GeneratedProblem
+    generate_variant_suite(world, difficulty, count, seed, out_dir, distractors=None, progress=None) -> list[Path]
+    generate_variant_problem(world, difficulty, seed, index, distractors=None) -> GeneratedProblem
+    generate_sized_suite(world, count, seed, out_dir, size=None, progress=None) -> list[Path]
+    generate_sized_problem(world, seed, index, size=None) -> ClassicProblem
     write_base_scenes(problems_dir) -> list[Path]
 
 The generator never depends on the pruning code; it writes problems with
@@ -22,7 +29,13 @@ from relevance_plan.generators.generate import (
     generate_suite,
     write_base_scenes,
 )
+from relevance_plan.generators.kitchen_variants import (
+    KITCHEN_VARIANTS,
+    generate_variant_problem,
+    generate_variant_suite,
+)
 from relevance_plan.generators.scenes import DIFFICULTIES, SCENES, WORLD_NAMES, WORLDS, SceneLayout, kind_of
+from relevance_plan.generators.sized import SIZED_WORLDS, generate_sized_problem, generate_sized_suite
 
 __all__ = [
     "CLASSIC_WORLDS",
@@ -36,13 +49,19 @@ __all__ = [
     "GENERATOR_VERSION",
     "GeneratedProblem",
     "KITCHENWARE_TYPES",
+    "KITCHEN_VARIANTS",
     "SCENES",
+    "SIZED_WORLDS",
     "SceneLayout",
     "WORLDS",
     "WORLD_NAMES",
     "base_scene_problem",
     "generate_problem",
+    "generate_sized_problem",
+    "generate_sized_suite",
     "generate_suite",
+    "generate_variant_problem",
+    "generate_variant_suite",
     "kind_of",
     "write_base_scenes",
 ]

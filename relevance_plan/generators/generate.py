@@ -103,6 +103,14 @@ def _check_arguments(world: object, difficulty: object, seed: object, distractor
             raise UsageError(f"distractors must be at most {MAX_DISTRACTORS}, not {distractors}")
 
 
+def check_suite_arguments(world: object, difficulty: object, count: object, seed: object, distractors: object) -> None:
+    """Raise ``UsageError`` for a bad kitchen world, difficulty, count, seed or distractor count."""
+    _check_arguments(world, difficulty, seed, distractors)
+    _check_int("count", count, 1)
+    if count > MAX_COUNT:  # type: ignore[operator]
+        raise UsageError(f"count must be at most {MAX_COUNT}, not {count}")
+
+
 def problem_rng(seed: int, world: str, difficulty: str, index: int) -> random.Random:
     """The random stream of one problem (stable across processes and Pythons)."""
     key = f"{GENERATOR}/{GENERATOR_VERSION}/{seed}/{world}/{difficulty}/{index}".encode()
@@ -335,10 +343,7 @@ def generate_suite(
     """Write ``count`` problems (indices 1..count) into ``out_dir`` as ``write_suite``
     does; return the ``.pddl`` paths.  Raises ``UsageError`` for bad arguments,
     ``InputFileError`` when the directory cannot be written."""
-    _check_arguments(world, difficulty, seed, distractors)
-    _check_int("count", count, 1)
-    if count > MAX_COUNT:
-        raise UsageError(f"count must be at most {MAX_COUNT}, not {count}")
+    check_suite_arguments(world, difficulty, count, seed, distractors)
     manifest = {
         "generator": GENERATOR,
         "generator_version": GENERATOR_VERSION,
