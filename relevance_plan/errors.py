@@ -75,7 +75,11 @@ class PlanFormatError(RelevancePlanError):
     """A plan file that is not in the IPC format (a planner wrote something else)."""
 
 
-class SimulationTimeout(RelevancePlanError):
+class OutOfTimeError(RelevancePlanError):
+    """A step (reading, scoring, writing) ran past the run's ``--timeout``."""
+
+
+class SimulationTimeout(OutOfTimeError):
     """The builtin simulator ran past its deadline."""
 
 

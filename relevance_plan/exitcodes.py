@@ -65,6 +65,7 @@ EXIT_CODE_DESCRIPTIONS: dict[ExitCode, str] = {
 
 _ERROR_CODES: tuple[tuple[type[errors.RelevancePlanError], ExitCode], ...] = (
     (errors.UsageError, ExitCode.USAGE),
+    (errors.OutOfTimeError, ExitCode.OUT_OF_TIME),
     (errors.InputFileError, ExitCode.INPUT_FILE),
     (errors.PDDLParseError, ExitCode.PDDL_SYNTAX),
     (errors.UnsupportedFeatureError, ExitCode.UNSUPPORTED_PDDL),

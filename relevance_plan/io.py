@@ -39,12 +39,14 @@ def read_text(path: str | os.PathLike, what: str = "file") -> str:
         raise InputFileError(f"not a UTF-8 text file ({error.reason})", path=str(path), line=line) from None
 
 
-def load_domain(path: str | os.PathLike) -> Domain:
-    return read_domain(read_text(path, "domain file"), str(path))
+def load_domain(path: str | os.PathLike, deadline: float | None = None) -> Domain:
+    """The domain in ``path``; ``deadline`` (``time.monotonic()`` seconds): past it, ``OutOfTimeError``."""
+    return read_domain(read_text(path, "domain file"), str(path), deadline)
 
 
-def load_problem(path: str | os.PathLike, domain: Domain) -> Problem:
-    return read_problem(read_text(path, "problem file"), domain, str(path))
+def load_problem(path: str | os.PathLike, domain: Domain, deadline: float | None = None) -> Problem:
+    """The problem in ``path`` for ``domain``; ``deadline`` as for :func:`load_domain`."""
+    return read_problem(read_text(path, "problem file"), domain, str(path), deadline)
 
 
 Source = str | os.PathLike  # a file's path, or (a str starting with '(' or ';') the PDDL text itself
@@ -65,9 +67,11 @@ def load_sources(domain: Domain | Source, problem: Problem | Source) -> tuple[Do
     return domain, problem
 
 
-def load_task(domain_path: str | os.PathLike, problem_path: str | os.PathLike) -> tuple[Domain, Problem]:
-    domain = load_domain(domain_path)
-    return domain, load_problem(problem_path, domain)
+def load_task(
+    domain_path: str | os.PathLike, problem_path: str | os.PathLike, deadline: float | None = None
+) -> tuple[Domain, Problem]:
+    domain = load_domain(domain_path, deadline)
+    return domain, load_problem(problem_path, domain, deadline)
 
 
 def write_text_atomic(path: str | os.PathLike, text: str) -> Path:
@@ -273,6 +277,9 @@ def new_directory_mode() -> int:
 
 
 STDOUT = "-"
+# An open descriptor of a process, as /proc shows it once the links are followed.
+_PROC_DESCRIPTOR = re.compile(r"/proc/(\d+)(?:/task/\d+)?/fd/(\d+)")
+_MAX_LINKS = 40  # as the kernel's own limit on a chain of symbolic links
 
 
 def _same_file(a: Path, b: Path) -> bool:
@@ -286,6 +293,40 @@ def _check_name(path: str | os.PathLike) -> None:
     # The OS refuses such names with ValueError, not OSError.
     if "\0" in os.fspath(path):
         raise InputFileError("a file name cannot contain a NUL byte", path=os.fspath(path))
+
+
+def _an(what: str) -> str:
+    return ("an " if what[:1] in "aeiou" else "a ") + what
+
+
+def descriptor_of(path: str | os.PathLike) -> int | None:
+    """The descriptor of this process that ``path`` names, or None for an ordinary path.
+
+    ``/dev/stdout``, ``/dev/fd/3``, ``/proc/self/fd/1`` and any chain of
+    links to them name a descriptor this process already has open: writing
+    there must go through that descriptor (appending where the shell's
+    ``>>`` put it), never replace what the link resolves to.
+    """
+    if str(path) == STDOUT:
+        return None
+    current = os.path.abspath(os.fspath(path))
+    for _ in range(_MAX_LINKS):
+        parent = os.path.realpath(os.path.dirname(current))
+        current = os.path.join(parent, os.path.basename(current))
+        found = _PROC_DESCRIPTOR.fullmatch(current)
+        if found is not None and int(found.group(1)) == os.getpid():
+            return int(found.group(2))
+        try:
+            target = os.readlink(current)
+        except (OSError, ValueError):
+            return None
+        current = os.path.join(parent, target)
+    return None
+
+
+def names_stdout(path: str | os.PathLike) -> bool:
+    """Whether writing to ``path`` writes to standard output (``-``, ``/dev/stdout``, a link to it)."""
+    return str(path) == STDOUT or descriptor_of(path) == 1
 
 
 def check_input_file(path: str | os.PathLike, what: str = "file") -> None:
@@ -302,12 +343,35 @@ def check_input_file(path: str | os.PathLike, what: str = "file") -> None:
     except OSError as error:
         raise InputFileError(f"cannot read {what}: {error.strerror}", path=str(path)) from None
     if stat.S_ISDIR(info.st_mode):
-        raise InputFileError(f"expected a {what}, found a directory", path=str(path))
+        raise InputFileError(f"expected {_an(what)}, found a directory", path=str(path))
     if stat.S_ISCHR(info.st_mode) or stat.S_ISBLK(info.st_mode):
         # /dev/zero would be read until memory runs out; a pipe (/dev/stdin) is fine.
-        raise InputFileError(f"expected a {what}, found a device", path=str(path))
+        raise InputFileError(f"expected {_an(what)}, found a device", path=str(path))
     if not os.access(path, os.R_OK):
         raise InputFileError(f"cannot read {what}: permission denied", path=str(path))
+
+
+def check_regular_file(path: str | os.PathLike, what: str, why: str) -> None:
+    """``InputFileError`` unless ``path`` is a regular file (not a pipe such as ``<(...)`` or /dev/stdin).
+
+    For inputs read more than once (a planner reads the domain again): a pipe
+    gives its text only once.  ``why`` names who reads it again ("plan gives it to the planner").
+    """
+    try:
+        regular = stat.S_ISREG(os.stat(path).st_mode)
+    except OSError:
+        return  # check_input_file reports it
+    if descriptor_of(path) is not None:
+        # /dev/stdin opened by another process is that process's own standard input.
+        raise InputFileError(
+            f"{what} names a descriptor of this process: {why}, which cannot open it; give the file's own name",
+            path=str(path),
+        )
+    if not regular:
+        raise InputFileError(
+            f"{what} is a pipe, not a regular file: {why}, which reads it again; save it to a file first",
+            path=str(path),
+        )
 
 
 def check_output_file(
@@ -315,8 +379,10 @@ def check_output_file(
 ) -> None:
     """Fail before any work if ``path`` cannot be written or would overwrite an input.
 
-    ``-`` (standard output) is always fine.  A file without any write
-    permission bit is refused even for root: the user protected it.
+    ``-`` (standard output) is always fine, and so is a name of one of this
+    process's open descriptors (``/dev/stdout``) that is open for writing.
+    A file without any write permission bit is refused even for root: the
+    user protected it.  A name ending in ``/`` names a directory.
     """
     if str(path) == STDOUT:
         return
@@ -325,12 +391,30 @@ def check_output_file(
         _check_output_file(Path(path), what, inputs)
     except OSError as error:  # a name too long, a loop of symlinks, ...
         raise InputFileError(f"cannot write {what}: {error.strerror}", path=str(path)) from None
+    descriptor = descriptor_of(path)
+    if descriptor is not None:
+        _check_descriptor(descriptor, what, str(path))
+    elif os.fspath(path).endswith(("/", os.sep)):
+        raise InputFileError(f"{what} name ends with '/', so it names a directory; give a file name", path=str(path))
+
+
+def _check_descriptor(descriptor: int, what: str, shown: str) -> None:
+    import fcntl
+
+    try:
+        mode = fcntl.fcntl(descriptor, fcntl.F_GETFL) & os.O_ACCMODE
+    except OSError:
+        raise InputFileError(f"{what} names descriptor {descriptor}, which is not open", path=shown) from None
+    if mode not in (os.O_WRONLY, os.O_RDWR):
+        raise InputFileError(f"{what} names descriptor {descriptor}, which is not open for writing", path=shown)
 
 
 def _check_output_file(path: Path, what: str, inputs) -> None:
     for source in inputs:
         if source is not None and str(source) != STDOUT and _same_file(path, Path(source)):
             raise UsageError(f"{what} {path} is the same file as the input {source}; choose another name")
+    if descriptor_of(path) is not None:
+        return
     target = Path(os.path.realpath(path))
     if target.is_dir():
         raise InputFileError(f"{what} is a directory", path=str(path))
@@ -352,6 +436,22 @@ def _check_output_file(path: Path, what: str, inputs) -> None:
         raise InputFileError(f"cannot write {what}: its directory is not writable", path=str(path))
 
 
+def _write_descriptor(descriptor: int, data: bytes, shown: str) -> None:
+    """Write through one of our own descriptors, at its current offset (``>>`` appends)."""
+    for stream in (sys.stdout, sys.stderr):
+        with contextlib.suppress(Exception):
+            if stream.fileno() == descriptor:
+                stream.flush()  # what click printed before must come first
+    view = memoryview(data)
+    try:
+        while view:
+            view = view[os.write(descriptor, view) :]
+    except BrokenPipeError:
+        raise
+    except OSError as error:
+        raise InputFileError(f"cannot write file: {error.strerror}", path=shown) from None
+
+
 def write_output(path: str | os.PathLike, text: str) -> str:
     """Write a user-facing output: ``-`` is standard output, anything else
     goes through ``write_bytes_atomic``.  Returns where it went."""
@@ -359,17 +459,29 @@ def write_output(path: str | os.PathLike, text: str) -> str:
         sys.stdout.write(text)
         sys.stdout.flush()
         return "standard output"
-    return str(write_bytes_atomic(path, text.encode("utf-8")))
+    written = write_bytes_atomic(path, text.encode("utf-8"))
+    return "standard output" if descriptor_of(path) == 1 else str(written)
 
 
 def write_bytes_atomic(path: str | os.PathLike, data: bytes) -> Path:
     """Write through a temporary file in the same directory and rename it into place.
 
     A symlink is followed (the link stays, its target gets the new text);
-    a device, FIFO or other non-regular file is written to directly, never
-    replaced; an existing file keeps its permissions, and a file without
-    write permission is refused rather than replaced.
+    a name of one of this process's open descriptors (``/dev/stdout``, a link
+    to ``/proc/self/fd/1``) is written through that descriptor; a device,
+    FIFO or other non-regular file is written to directly, never replaced;
+    an existing file keeps its permissions, and a file without write
+    permission is refused rather than replaced.  A name ending in ``/`` is
+    refused: it names a directory, never the file without the slash.
     """
+    _check_name(path)
+    descriptor = descriptor_of(path)
+    if descriptor is not None:
+        _check_descriptor(descriptor, "output file", str(path))
+        _write_descriptor(descriptor, data, str(path))
+        return Path(path)
+    if os.fspath(path).endswith(("/", os.sep)):
+        raise InputFileError("cannot write file: the name ends with '/', so it names a directory", path=str(path))
     path = Path(path)
     try:
         target = Path(os.path.realpath(path)) if path.is_symlink() else path

@@ -11,6 +11,10 @@ Two ways, for two kinds of work:
   an event, and the batch loop checks it at safe points.  A KeyboardInterrupt
   raised at an arbitrary instruction could land inside a lock another thread needs.
 
+A single run may also be given a deadline (:func:`deadline_alarm`): SIGALRM
+then stops it like the signals above, raising :class:`Interrupted` with
+``signum`` SIGALRM, which the CLI reports as out of time.
+
 Both only act in the main thread (elsewhere Python cannot install handlers)
 and put back the previous handlers when the block ends.
 """
@@ -23,6 +27,7 @@ import threading
 from collections.abc import Iterator
 
 STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)
+DEADLINE_SIGNAL = signal.SIGALRM
 
 
 class Interrupted(KeyboardInterrupt):
@@ -34,11 +39,11 @@ class Interrupted(KeyboardInterrupt):
 
 
 @contextlib.contextmanager
-def _handlers(handler) -> Iterator[None]:
+def _handlers(handler, signals: tuple = STOP_SIGNALS) -> Iterator[None]:
     if threading.current_thread() is not threading.main_thread():
         yield
         return
-    previous = {signum: signal.signal(signum, handler) for signum in STOP_SIGNALS}
+    previous = {signum: signal.signal(signum, handler) for signum in signals}
     try:
         yield
     finally:
@@ -48,7 +53,8 @@ def _handlers(handler) -> Iterator[None]:
 
 @contextlib.contextmanager
 def interrupt_on_signals() -> Iterator[None]:
-    """While the block runs, SIGTERM and SIGHUP stop it as Ctrl-C does (raise :class:`Interrupted`)."""
+    """While the block runs, SIGTERM and SIGHUP (and SIGALRM, see :func:`deadline_alarm`) stop it as
+    Ctrl-C does (raise :class:`Interrupted`)."""
     stopping = False
 
     def stop(signum, frame):
@@ -60,8 +66,27 @@ def interrupt_on_signals() -> Iterator[None]:
             raise KeyboardInterrupt
         raise Interrupted(signum)
 
-    with _handlers(stop):
+    with _handlers(stop, STOP_SIGNALS + (DEADLINE_SIGNAL,)):
         yield
+
+
+@contextlib.contextmanager
+def deadline_alarm(seconds: float | None) -> Iterator[None]:
+    """Send SIGALRM to this process ``seconds`` from now, unless the block ends first.
+
+    Inside :func:`interrupt_on_signals`, the alarm stops the block wherever
+    it is (reading, scoring, waiting for a planner), every cleanup included:
+    the backstop that holds a run's ``--timeout`` whatever step overruns it.
+    Only in the main thread; None: no alarm.
+    """
+    if seconds is None or threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    signal.setitimer(signal.ITIMER_REAL, max(seconds, 0.001))
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
 
 
 @contextlib.contextmanager

@@ -19,6 +19,10 @@ from relevance_plan.io import write_bytes_atomic
 
 PLOTS_INSTALL_HINT = "pip install 'relevance-plan[plots]'"
 PLOT_FILES = ("cactus.png", "relevance-vs-pure.png")
+# Written into every PNG we make (its tEXt "Software" entry): a plot file without it is the user's own.
+SOFTWARE = "relevance-plan"
+_MARK = b"Software\x00" + SOFTWARE.encode()
+_MARK_WITHIN = 4096  # the text chunks come before the image data
 
 
 def require_matplotlib(what: str = "plots") -> None:
@@ -41,7 +45,7 @@ def _save(figure, path: Path, dpi: int = 120) -> Path:
 
     FigureCanvasAgg(figure)
     buffer = io.BytesIO()
-    figure.savefig(buffer, format="png", dpi=dpi)
+    figure.savefig(buffer, format="png", dpi=dpi, metadata={"Software": SOFTWARE})
     return write_bytes_atomic(path, buffer.getvalue())
 
 
@@ -99,6 +103,36 @@ def _scatter(rows: Sequence[dict[str, Any]]):
     return figure
 
 
+def _ours(path: Path) -> bool:
+    """A PNG this tool wrote (it carries our Software entry)."""
+    try:
+        with open(path, "rb") as stream:
+            head = stream.read(_MARK_WITHIN)
+    except OSError:
+        return False
+    return head.startswith(b"\x89PNG") and _MARK in head
+
+
+def check_plot_targets(directory: str | os.PathLike, store: str | os.PathLike | None = None) -> list[Path]:
+    """The plot files of ``directory``, refused (``UsageError``) where one would replace a file
+    that is not a plot of ours: the results store, or the user's own ``cactus.png``."""
+    directory = Path(directory)
+    if directory.exists() and not directory.is_dir():
+        raise InputFileError("--plots names a file, not a folder", path=str(directory))
+    targets = [directory / name for name in PLOT_FILES]
+    for target in targets:
+        if not os.path.lexists(target):
+            continue
+        if store is not None and target.exists() and os.path.samefile(target, store):
+            raise UsageError(f"plot {target} would replace the results store; choose another --plots folder")
+        if not _ours(target):
+            raise UsageError(
+                f"{target} exists and is not a plot written by relevance-plan; move it away or choose another"
+                " --plots folder"
+            )
+    return targets
+
+
 def write_plots(
     rows: Sequence[dict[str, Any]], directory: str | os.PathLike, store: str | os.PathLike | None = None
 ) -> list[Path]:
@@ -108,11 +142,7 @@ def write_plots(
     """
     require_matplotlib()
     directory = Path(directory)
-    targets = [directory / name for name in PLOT_FILES]
-    if store is not None:
-        for target in targets:
-            if target.exists() and os.path.samefile(target, store):
-                raise UsageError(f"plot {target} would replace the results store; choose another --plots folder")
+    targets = check_plot_targets(directory, store)
     try:
         directory.mkdir(parents=True, exist_ok=True)
     except OSError as error:

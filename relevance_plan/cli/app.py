@@ -23,6 +23,7 @@ from relevance_plan.cli.common import (
     take_plan_options,
     take_scoring,
 )
+from relevance_plan.cli.exits import ToolGroup
 from relevance_plan.cli.watch import watch
 from relevance_plan.errors import UsageError
 from relevance_plan.exitcodes import EXIT_CODE_DESCRIPTIONS, ExitCode, exit_code_for_status
@@ -64,7 +65,7 @@ def _prune_json(result: Selection) -> dict:
     }
 
 
-@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+@click.group(cls=ToolGroup, context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, prog_name="relevance-plan")
 def main():
     """Relevance-based pruning for PDDL planning: score, prune, plan, validate."""
@@ -252,9 +253,10 @@ def prune(domain_path, problem_path, output, as_json, **values):
 
     "-o -" writes the pruned problem to standard output (the summary goes to stderr).
     """
-    from relevance_plan.io import STDOUT, write_output
+    from relevance_plan.io import names_stdout, write_output
 
-    if output == STDOUT and as_json:
+    to_stdout = names_stdout(output)
+    if to_stdout and as_json:
         raise UsageError("--json and '-o -' would both write to standard output; give -o a file name")
     scoring, result = _score_and_prune(domain_path, problem_path, take_scoring(values))
     scores = scoring.scores
@@ -271,8 +273,8 @@ def prune(domain_path, problem_path, output, as_json, **values):
         total = len(result.task.problem.objects)
         click.echo(
             f"kept {len(result.kept)} of {total} objects ({len(result.restored)} restored by closure);"
-            f" wrote {written if output == STDOUT else output}",
-            err=output == STDOUT,
+            f" wrote {written if to_stdout else output}",
+            err=to_stdout,
         )
 
 
@@ -297,16 +299,16 @@ def prune(domain_path, problem_path, output, as_json, **values):
 @handle_errors
 def plan(domain_path, problem_path, method, plan_file, as_json, quiet, **values):
     """Prune, plan, validate on the original problem, widen until solved."""
-    from relevance_plan.io import STDOUT, write_output
+    from relevance_plan.io import names_stdout, write_output
     from relevance_plan.planning.planners import make_planner
 
-    if plan_file == STDOUT and as_json:
+    to_stdout = names_stdout(plan_file)
+    if to_stdout and as_json:
         raise UsageError("--json and '--plan-file -' would both write to standard output; give a file name")
 
     options = take_plan_options(values, method)
     make_planner(options.planner, options.planner_config, check=True)
-    say = None if (quiet or as_json) else (lambda event: click.echo(f"... {event.message}", err=True))
-    result = plan_task(domain_path, problem_path, options, progress=say)
+    result = _plan_within_timeout(domain_path, problem_path, options, quiet or as_json)
     if result.status is PlanStatus.SOLVED:
         write_output(plan_file, result.plan_text())
     if as_json:
@@ -315,12 +317,39 @@ def plan(domain_path, problem_path, method, plan_file, as_json, quiet, **values)
         click.echo(json.dumps(data, indent=2))
     else:
         # With the plan on stdout, the summary goes to stderr.
-        _print_plan_summary(result, plan_file, err=plan_file == STDOUT)
+        _print_plan_summary(result, plan_file, err=to_stdout)
     code = exit_code_for_status(result.status.value)
     if code is not ExitCode.SUCCESS:
         if not as_json:
             click.echo(f"relevance-plan: {result.status.value}: {result.message}", err=True)
         sys.exit(int(code))
+
+
+# The backstop past --timeout: the loop holds the limit itself; this stops whatever step overruns it.
+DEADLINE_SLACK = 0.8
+
+
+def _plan_within_timeout(domain_path, problem_path, options, quiet: bool) -> PlanResult:
+    """``plan_task`` stopped (exit 20) if it runs past ``--timeout``, naming the step it was in."""
+    from relevance_plan.signals import DEADLINE_SIGNAL, Interrupted, deadline_alarm
+
+    steps: list[str] = []  # the first report comes once scoring is done
+
+    def progress(event) -> None:
+        steps.append(event.message)
+        if not quiet:
+            click.echo(f"... {event.message}", err=True)
+
+    timeout = options.timeout
+    try:
+        with deadline_alarm(None if timeout is None else timeout + DEADLINE_SLACK):
+            return plan_task(domain_path, problem_path, options, progress=progress)
+    except Interrupted as error:
+        if error.signum != DEADLINE_SIGNAL:
+            raise
+        where = f"after '{steps[-1]}'" if steps else "while reading and scoring"
+        fail(f"out of time: the {timeout:g} s --timeout ran out {where}", ExitCode.OUT_OF_TIME)
+        raise  # not reached: fail exits
 
 
 def _print_plan_summary(result: PlanResult, plan_file, err: bool = False) -> None:
@@ -343,6 +372,7 @@ def _print_plan_summary(result: PlanResult, plan_file, err: bool = False) -> Non
 
 
 @main.command("exit-codes")
+@handle_errors
 def exit_codes():
     """Print the table of exit codes."""
     for code in ExitCode:

@@ -112,9 +112,10 @@ def report(store_path, fmt, as_json, as_csv, suite, plots_dir):
         given = per_job + ([f"--format {fmt}"] if fmt is not None else [])
         raise UsageError(f"choose one output: {' or '.join(given)}")
     if plots_dir is not None:
-        from relevance_plan.batch.plots import require_matplotlib
+        from relevance_plan.batch.plots import check_plot_targets, require_matplotlib
 
         require_matplotlib("--plots")
+        check_plot_targets(plots_dir, store_path)
     rows = read_rows(store_path, suite)
     if plots_dir is not None:
         from relevance_plan.batch.plots import write_plots

@@ -9,6 +9,7 @@ here once, so ``score``, ``prune``, ``plan``, ``sweep``, ``compare`` and
 
 from __future__ import annotations
 
+import errno
 import functools
 import sys
 
@@ -27,12 +28,17 @@ def fail(message: str, code: ExitCode) -> None:
     sys.exit(int(code))
 
 
+# Errors of writing standard output (a full disk, /dev/full, an I/O error): they name no file.
+_OUTPUT_ERRNOS = (errno.ENOSPC, errno.EIO, errno.EFBIG, errno.EDQUOT)
+
+
 def handle_errors(command):
     """Every library error becomes one line on stderr and its documented exit code."""
 
     @functools.wraps(command)
     def wrapper(*args, **kwargs):
-        from relevance_plan.signals import interrupt_on_signals
+        from relevance_plan.cli.exits import quit_on_broken_pipe, quit_on_output_error, quit_out_of_memory
+        from relevance_plan.signals import DEADLINE_SIGNAL, interrupt_on_signals
 
         try:
             with interrupt_on_signals():
@@ -40,13 +46,19 @@ def handle_errors(command):
         except RelevancePlanError as error:
             fail(str(error), exit_code_for_error(error))
         except BrokenPipeError:
-            raise  # click's own handling: the reader went away
+            quit_on_broken_pipe()  # the reader of our output went away
         except OSError as error:
+            if error.filename is None and error.errno in _OUTPUT_ERRNOS:
+                quit_on_output_error(error)
             # A file-system error the library did not anticipate (a name too
             # long, a full disk) is still a file problem: one line, exit 31.
             where = InputFileError(error.strerror or str(error), path=error.filename)
             fail(str(where), ExitCode.INPUT_FILE)
+        except MemoryError:
+            quit_out_of_memory()
         except KeyboardInterrupt as error:
+            if getattr(error, "signum", None) == DEADLINE_SIGNAL:
+                fail("out of time: the run went past its --timeout", ExitCode.OUT_OF_TIME)
             by = f" by {error}" if str(error) else ""
             click.echo(f"relevance-plan: interrupted{by}", err=True)
             sys.exit(int(ExitCode.INTERRUPTED))

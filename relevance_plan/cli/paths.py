@@ -20,6 +20,8 @@ INPUT_FILES = {"domain_path": "domain file", "problem_path": "problem file", "mo
 OUTPUT_FILES = {"output": "output file", "plan_file": "plan file", "heatmap": "heatmap file"}
 # Read, never created, by these commands.
 INPUT_STORES = {"report"}
+# Inputs these commands hand to a planner, which reads them again: a pipe (``<(...)``, /dev/stdin) gives its text once.
+REREAD = {"plan": ("domain_path", "problem_path"), "watch": ("domain_path",)}
 
 
 class _UncheckedPath(click.Path):
@@ -36,12 +38,14 @@ def _as_list(value) -> list:
 
 
 def _check(command_name: str, values: dict) -> None:
-    from relevance_plan.io import check_input_file, check_output_file
+    from relevance_plan.io import check_input_file, check_output_file, check_regular_file
 
     inputs = []
     for name, what in INPUT_FILES.items():
         if values.get(name) is not None:
             check_input_file(values[name], what)
+            if name in REREAD.get(command_name, ()):
+                check_regular_file(values[name], what, f"{command_name} gives it to the planner")
             inputs.append(values[name])
     if values.get("domain_path") is not None and values.get("model_path") is None:
         # The model found next to the domain is an input too.

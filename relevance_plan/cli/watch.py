@@ -1,25 +1,79 @@
-"""``relevance-plan watch``: a live session over JSON-lines events, one JSON line out per event."""
+"""``relevance-plan watch``: a live session over JSON-lines events, one JSON line out per event.
+
+Each event is answered as soon as its line arrives (a live pipe is read line
+by line, never to its end first).  A line that is not valid UTF-8, not JSON,
+too long or not a valid event gets its error line and the session carries
+on.  The snapshot files are checked before the first event and written
+after the last, also when the session is interrupted (exit 130) or its
+reader goes away.
+"""
 
 from __future__ import annotations
 
 import json
 import sys
+from collections.abc import Iterator
 from pathlib import Path
+from typing import BinaryIO
 
 import click
 
 from relevance_plan.cli.common import handle_errors, planning_options, scoring_options, take_plan_options
 from relevance_plan.errors import InputFileError
+from relevance_plan.exitcodes import ExitCode
 from relevance_plan.session import Session
+from relevance_plan.session.events import MAX_EVENT_BYTES
+
+SNAPSHOT_FILES = ("current.pddl", "pruned.pddl")
 
 
-def _lines(events_path: str):
+def read_event_lines(stream: BinaryIO, limit: int = MAX_EVENT_BYTES) -> Iterator[str]:
+    """The lines of ``stream`` as they arrive, as text.
+
+    Bytes that are not UTF-8 are kept as lone surrogates, so the event they
+    belong to is refused by the event checks, not the whole stream.  A line
+    longer than ``limit`` bytes comes back cut to ``limit + 1`` characters
+    (the session refuses it) and the rest of it is skipped.
+    """
+    while True:
+        line = stream.readline(limit + 1)
+        if not line:
+            return
+        if len(line) > limit and not line.endswith(b"\n"):
+            while (rest := stream.readline(limit)) and not rest.endswith(b"\n"):
+                pass
+        yield line.decode("utf-8", errors="surrogateescape")
+
+
+def _open_events(events_path: str) -> BinaryIO:
     if events_path == "-":
-        yield from sys.stdin
-        return
-    from relevance_plan.io import read_text
+        if sys.stdin is None:
+            raise InputFileError("standard input is closed; give --events a file")
+        return sys.stdin.buffer
+    from relevance_plan.io import check_input_file
 
-    yield from read_text(events_path, "events file").splitlines()
+    check_input_file(events_path, "events file")
+    try:
+        return open(events_path, "rb")  # noqa: SIM115 - closed by watch
+    except OSError as error:
+        raise InputFileError(f"cannot read events file: {error.strerror}", path=events_path) from None
+
+
+def _check_snapshot_targets(snapshot_dir: str, inputs: list) -> list[Path]:
+    """The snapshot files, checked (and their folder made) before the first event."""
+    from relevance_plan.io import check_output_file
+
+    folder = Path(snapshot_dir)
+    if folder.exists() and not folder.is_dir():
+        raise InputFileError("--snapshot names a file, not a folder", path=snapshot_dir)
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as error:
+        raise InputFileError(f"cannot create the snapshot directory: {error.strerror}", path=snapshot_dir) from None
+    targets = [folder / name for name in SNAPSHOT_FILES]
+    for target in targets:
+        check_output_file(target, "snapshot file", inputs)
+    return targets
 
 
 @click.command()
@@ -55,26 +109,37 @@ def watch(domain_path, problem_path, events_path, plan_in_loop, snapshot_dir, **
     from relevance_plan.planning.planners import make_planner
 
     options = take_plan_options(values)
-    make_planner(options.planner, options.planner_config, check=plan_in_loop)
-    domain, problem = load_task(domain_path, problem_path)
+    targets = None
     if snapshot_dir is not None:
-        try:
-            Path(snapshot_dir).mkdir(parents=True, exist_ok=True)
-        except OSError as error:
-            raise InputFileError(f"cannot create the snapshot directory: {error.strerror}", path=snapshot_dir) from None
+        inputs = [domain_path, problem_path, options.model_path, None if events_path == "-" else events_path]
+        targets = _check_snapshot_targets(snapshot_dir, inputs)
+    make_planner(options.planner, options.planner_config, check=plan_in_loop)
+    events = _open_events(events_path)
+    domain, problem = load_task(domain_path, problem_path)
     session = Session(
         domain, problem, options.scoring, domain_path=domain_path, plan_options=options, plan_in_loop=plan_in_loop
     )
+    ending = None
     try:
-        for line in _lines(events_path):
+        for line in read_event_lines(events):
             if not line.strip():
                 continue
             report = session.handle_line(line)
             click.echo(json.dumps(report.to_json()))
             sys.stdout.flush()
-    except KeyboardInterrupt:
-        click.echo("relevance-plan: watch: interrupted; the session ended", err=True)
-    if snapshot_dir is not None:
-        current, pruned = session.snapshot()
-        write_text_atomic(Path(snapshot_dir) / "current.pddl", current)
-        write_text_atomic(Path(snapshot_dir) / "pruned.pddl", pruned)
+    except KeyboardInterrupt as error:
+        ending = error
+    except BrokenPipeError as error:
+        ending = error
+    finally:
+        if events_path != "-":
+            events.close()
+    if targets is not None:
+        for target, text in zip(targets, session.snapshot()):
+            write_text_atomic(target, text)
+    if isinstance(ending, BrokenPipeError):
+        raise ending  # the reader went away: quietly, once the snapshot is written
+    if ending is not None:
+        by = f" by {ending}" if str(ending) else ""
+        click.echo(f"relevance-plan: watch: interrupted{by}; the session ended", err=True)
+        sys.exit(int(ExitCode.INTERRUPTED))

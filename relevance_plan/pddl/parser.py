@@ -33,7 +33,7 @@ from relevance_plan.pddl.model import (
     TimedLiteral,
     frozen,
 )
-from relevance_plan.pddl.sexpr import Item, Node, Symbol, parse_sexpr
+from relevance_plan.pddl.sexpr import Item, Node, Symbol, check_deadline, collection_paused, parse_sexpr
 
 # Accepted as written; PDDL+ is refused (see UNSUPPORTED_REQUIREMENTS).
 KNOWN_REQUIREMENTS = frozenset(
@@ -461,10 +461,18 @@ class _DomainParts:
     constraint_node: Item | None = None
 
 
-def read_domain(text: str, path: str | None = None) -> Domain:
-    """Build a Domain from PDDL text; errors name ``path`` and the line."""
+def read_domain(text: str, path: str | None = None, deadline: float | None = None) -> Domain:
+    """Build a Domain from PDDL text; errors name ``path`` and the line.
+
+    ``deadline`` (``time.monotonic()`` seconds): past it, ``OutOfTimeError``.
+    """
+    with collection_paused():
+        return _read_domain(text, path, deadline)
+
+
+def _read_domain(text: str, path: str | None, deadline: float | None) -> Domain:
     reader = _Reader(path)
-    name, sections = reader.header(parse_sexpr(text, path), "domain")
+    name, sections = reader.header(parse_sexpr(text, path, deadline), "domain")
     parts = _DomainParts()
     for section in sections:
         _read_domain_section(reader, section, parts)
@@ -669,10 +677,18 @@ class _InitParts:
     lines: dict[f.GroundAtom, int]
 
 
-def read_problem(text: str, domain: Domain, path: str | None = None) -> Problem:
-    """Build a Problem for ``domain`` from PDDL text; errors name ``path`` and the line."""
+def read_problem(text: str, domain: Domain, path: str | None = None, deadline: float | None = None) -> Problem:
+    """Build a Problem for ``domain`` from PDDL text; errors name ``path`` and the line.
+
+    ``deadline`` (``time.monotonic()`` seconds): past it, ``OutOfTimeError``.
+    """
+    with collection_paused():
+        return _read_problem(text, domain, path, deadline)
+
+
+def _read_problem(text: str, domain: Domain, path: str | None, deadline: float | None) -> Problem:
     reader = _Reader(path)
-    root = parse_sexpr(text, path)
+    root = parse_sexpr(text, path, deadline)
     name, sections = reader.header(root, "problem")
     found: dict[str, Any] = {"init": []}
     requirements: frozenset[str] = frozenset()
@@ -710,10 +726,11 @@ def read_problem(text: str, domain: Domain, path: str | None = None) -> Problem:
     if ":goal" not in found and ":constraints" not in found:
         reader.fail("missing '(:goal ...)'", root)
     objects, display, groups = _read_objects(reader, found.get(":objects"), domain)
+    check_deadline(deadline, "reading the objects", path)
     known = dict(domain.constants)
     known.update(objects)
     scope = _Scope(domain.types, domain.predicates, domain.functions, MappingProxyType(known), {}, in_problem=True)
-    init = _read_init(reader, found["init"], scope, objects)
+    init = _read_init(reader, found["init"], scope, objects, deadline)
     goal = _read_goal(reader, found.get(":goal"), replace(scope, preferences=True))
     constraints = None
     if ":constraints" in found:
@@ -771,9 +788,13 @@ def _read_objects(
     return objects, display, tuple(groups)
 
 
-def _read_init(reader: _Reader, nodes: list[Item], scope: _Scope, objects: Mapping[str, str]) -> _InitParts:
+def _read_init(
+    reader: _Reader, nodes: list[Item], scope: _Scope, objects: Mapping[str, str], deadline: float | None = None
+) -> _InitParts:
     parts = _InitParts(set(), {}, [], [], {})
-    for node in nodes:
+    for count, node in enumerate(nodes):
+        if not count & 0xFFF:
+            check_deadline(deadline, "reading ':init'", reader.path, node.line)
         if not isinstance(node, Node) or not node.items:
             reader.fail("expected an atom in ':init'", node)
         head = reader.keyword_of(node)

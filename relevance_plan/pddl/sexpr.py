@@ -2,23 +2,38 @@
 
 Every node remembers where it starts and ends in the text and on which line,
 so errors can name the line and the writer can cut a user's file precisely
-instead of re-printing it.
+instead of re-printing it.  Lines end at LF, CRLF or a lone CR (old Mac
+files), and so do comments.
+
+Reading is one pass over the text, the same speed whether the file has one
+line or a million.  A reader given a ``deadline`` (``time.monotonic()``
+seconds) checks it every few thousand tokens and stops with
+:class:`~relevance_plan.errors.OutOfTimeError`.
 """
 
 from __future__ import annotations
 
 import bisect
+import contextlib
+import gc
 import re
+import threading
+import time
+from collections.abc import Iterator
 from dataclasses import dataclass
 
-from relevance_plan.errors import PDDLParseError
+from relevance_plan.errors import OutOfTimeError, PDDLParseError
 
-_TOKEN = re.compile(r";[^\n]*|\(|\)|[^\s();]+")
+# Group 1: '(', group 2: ')', no group: a comment or a symbol.
+_TOKEN = re.compile(r"(\()|(\))|;[^\n\r]*|[^\s();]+")
+_LINE_BREAK = re.compile(r"\r\n?|\n")
 
 # Lists nested deeper than this are refused, naming the line: the formula
 # walkers (ours and the planner's) recurse once or twice per level, and real
 # PDDL stays far below it.
 MAX_NESTING = 128
+# The deadline is checked once per this many tokens (a power of two: a mask test).
+DEADLINE_STRIDE = 1 << 14
 
 
 @dataclass(slots=True)
@@ -44,58 +59,108 @@ class LineIndex:
     """Maps a character offset to a 1-based line number."""
 
     def __init__(self, text: str):
-        self._starts = [0] + [m.end() for m in re.finditer("\n", text)]
+        self._starts = [0] + [m.end() for m in _LINE_BREAK.finditer(text)]
 
     def line_of(self, offset: int) -> int:
         return bisect.bisect_right(self._starts, offset)
 
 
-def parse_sexpr(text: str, path: str | None = None) -> Node:
+def check_deadline(deadline: float | None, what: str, path: str | None = None, line: int | None = None) -> None:
+    """``OutOfTimeError`` naming ``what`` when ``deadline`` (``time.monotonic()`` seconds) has passed."""
+    if deadline is not None and time.monotonic() > deadline:
+        raise OutOfTimeError(f"out of time while {what} (the --timeout ran out)", path=path, line=line)
+
+
+_PAUSES = 0
+_PAUSES_LOCK = threading.Lock()
+
+
+@contextlib.contextmanager
+def collection_paused() -> Iterator[None]:
+    """Pause the cyclic garbage collector while a big file becomes millions of small objects.
+
+    Its passes over the growing heap would otherwise take most of the time
+    (they more than double it on big problems).  Nothing read here forms a
+    cycle; the collector resumes when the last reader, of any thread, is done.
+    """
+    global _PAUSES
+    with _PAUSES_LOCK:
+        _PAUSES += 1
+        if _PAUSES == 1:
+            resume = gc.isenabled()
+            gc.disable()
+            collection_paused.resume = resume  # type: ignore[attr-defined]
+    try:
+        yield
+    finally:
+        with _PAUSES_LOCK:
+            _PAUSES -= 1
+            if _PAUSES == 0 and collection_paused.resume:  # type: ignore[attr-defined]
+                gc.enable()
+
+
+def parse_sexpr(text: str, path: str | None = None, deadline: float | None = None) -> Node:
     """Parse ``text`` holding exactly one top-level list (a PDDL domain or problem)."""
-    lines = LineIndex(text)
     if "\0" in text:
-        raise PDDLParseError("NUL byte in the file (a binary file?)", path=path, line=lines.line_of(text.index("\0")))
+        raise PDDLParseError(
+            "NUL byte in the file (a binary file?)", path=path, line=LineIndex(text).line_of(text.index("\0"))
+        )
+    with collection_paused():
+        root = _read_lists(text, path, deadline)
+    if root is None:
+        if text.strip():
+            raise PDDLParseError("no PDDL definition found: the file holds only comments", path=path, line=1)
+        raise PDDLParseError("empty file: no PDDL definition found", path=path, line=1)
+    return root
+
+
+def _read_lists(text: str, path: str | None, deadline: float | None) -> Node | None:
+    # Offsets where each line after the first starts; the sentinel is never reached.
+    starts = [m.end() for m in _LINE_BREAK.finditer(text)]
+    starts.append(len(text) + 1)
+    line, next_line = 1, starts[0]
     stack: list[Node] = []
     root: Node | None = None
-    for match in _TOKEN.finditer(text):
-        token = match.group()
-        if token[0] == ";":
-            continue
+    for count, match in enumerate(_TOKEN.finditer(text)):
         start = match.start()
-        if token == "(":
-            if root is not None and not stack:
-                raise PDDLParseError(
-                    "unexpected text after the end of the definition", path=path, line=lines.line_of(start)
-                )
+        while start >= next_line:
+            line += 1
+            next_line = starts[line - 1]
+        if not count & (DEADLINE_STRIDE - 1):
+            check_deadline(deadline, "reading the file", path, line)
+        kind = match.lastindex
+        if kind == 1:
+            if root is not None:
+                raise PDDLParseError("unexpected text after the end of the definition", path=path, line=line)
             if len(stack) >= MAX_NESTING:
-                raise PDDLParseError(
-                    f"lists nested more than {MAX_NESTING} levels deep", path=path, line=lines.line_of(start)
-                )
-            stack.append(Node([], start, -1, lines.line_of(start)))
-        elif token == ")":
+                raise PDDLParseError(f"lists nested more than {MAX_NESTING} levels deep", path=path, line=line)
+            stack.append(Node([], start, -1, line))
+        elif kind == 2:
             if not stack:
-                raise PDDLParseError("unbalanced ')'", path=path, line=lines.line_of(start))
+                raise PDDLParseError("unbalanced ')'", path=path, line=line)
             node = stack.pop()
-            node.end = match.end()
+            node.end = start + 1
             if stack:
                 stack[-1].items.append(node)
             else:
                 root = node
         else:
+            token = match.group()
+            if token[0] == ";":
+                continue
             if not stack:
-                if token.startswith("\ufeff") and start == 0:
-                    raise PDDLParseError(
-                        "the file starts with a byte-order mark (BOM), which planners reject; save it as UTF-8"
-                        " without BOM",
-                        path=path,
-                        line=1,
-                    )
-                raise PDDLParseError(
-                    f"unexpected token '{token}' outside any parenthesis", path=path, line=lines.line_of(start)
-                )
-            stack[-1].items.append(Symbol(token, start, match.end(), lines.line_of(start)))
+                _outside(token, start, path, line)
+            stack[-1].items.append(Symbol(token, start, match.end(), line))
     if stack:
         raise PDDLParseError("missing ')': a list is never closed", path=path, line=stack[-1].line)
-    if root is None:
-        raise PDDLParseError("empty file: no PDDL definition found", path=path, line=1)
     return root
+
+
+def _outside(token: str, start: int, path: str | None, line: int) -> None:
+    if token.startswith("\ufeff") and start == 0:
+        raise PDDLParseError(
+            "the file starts with a byte-order mark (BOM), which planners reject; save it as UTF-8 without BOM",
+            path=path,
+            line=1,
+        )
+    raise PDDLParseError(f"unexpected token '{token}' outside any parenthesis", path=path, line=line)

@@ -22,7 +22,14 @@ from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.plans import Plan
 from relevance_plan.planning.features import refuse_unsupported
 from relevance_plan.planning.outcome import PlannerStatus, RunOutcome, parse_ipc_plan, signal_reason
-from relevance_plan.planning.process import ProcessRun, log_tail, read_log, run_process_group, watchdog_deadline
+from relevance_plan.planning.process import (
+    ProcessRun,
+    log_tail,
+    read_log,
+    read_plan_file,
+    run_process_group,
+    watchdog_deadline,
+)
 
 KIND = "cmd"
 PLAN_FILE = "plan.txt"
@@ -131,10 +138,11 @@ class CommandPlanner:
                 memory_limit_mb=memory_limit_mb,
             )
             log = read_log(workdir)
-            if uses_plan_file:
-                text = plan_path.read_text(errors="replace") if plan_path.is_file() else None
-            else:
-                text = log
+            refused = ""
+            try:
+                text = read_plan_file(plan_path) if uses_plan_file else log
+            except errors.PlanFormatError as error:
+                text, refused = None, error.message
         parsed = None if text is None else parse_ipc_plan(text)
         tail = log_tail(log)
         status = classify(run, parsed, uses_plan_file, tail)
@@ -151,5 +159,5 @@ class CommandPlanner:
             log_tail=tail,
             killed_by_watchdog=run.watchdog_fired,
             process_group=run.process_group,
-            reason=exit_reason(Path(command[0]).name, run, parsed),
+            reason=refused or exit_reason(Path(command[0]).name, run, parsed),
         )

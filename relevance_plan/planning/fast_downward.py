@@ -245,6 +245,24 @@ def _search_time(log: str) -> float | None:
     return total if total is not None else _last_float(_SEARCH_ONLY_RE, log)
 
 
+# "translate exit code: 31": the driver's line after a component failed; the component's complaint precedes it.
+_COMPONENT_FAILED_RE = re.compile(r"^(?:translate|search) exit code: [1-9]\d*$", re.MULTILINE)
+_CONTEXT_PREFIXES = ("Got:", "Syntax:", "\t->", "INFO", "Parsing")
+
+
+def _up_to_complaint(log: str) -> str:
+    """The log up to the failed component's own complaint (the translator's "Expected ..."), so its
+    last line says what went wrong rather than the driver's closing lines."""
+    failed = _COMPONENT_FAILED_RE.search(log)
+    if failed is None:
+        return log
+    lines = log[: failed.start()].rstrip("\n").split("\n")
+    for index in range(len(lines) - 1, max(len(lines) - 12, -1), -1):
+        if lines[index].strip() and not lines[index].startswith(_CONTEXT_PREFIXES):
+            return "\n".join(lines[: index + 1])
+    return log
+
+
 # --------------------------------------------------------------------------- exit codes -> status
 
 
@@ -366,7 +384,7 @@ def run_fast_downward(
         translate_time=_last_float(_TRANSLATE_DONE_RE, log),
         search_time=_search_time(log),
         config=config,
-        log_tail=log_tail(log),
+        log_tail=log_tail(_up_to_complaint(log)),
         killed_by_watchdog=killed,
         process_group=run.process_group,
         raw_status=EXIT_CODES.get(run.exit_code, ("", status))[0],

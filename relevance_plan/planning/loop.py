@@ -31,7 +31,7 @@ from dataclasses import dataclass, field, fields
 from pathlib import Path
 from typing import Any
 
-from relevance_plan.errors import UsageError
+from relevance_plan.errors import OutOfTimeError, UsageError
 from relevance_plan.io import load_domain, load_problem, scratch_directory, write_text_atomic
 from relevance_plan.pddl.model import Problem
 from relevance_plan.pddl.plans import Plan, format_plan
@@ -382,8 +382,14 @@ def plan_task(
     started = time.perf_counter()
     domain_path, problem_path = str(domain_path), str(problem_path)
     planner = make_planner(options.planner, options.planner_config)
-    domain = load_domain(domain_path)
-    task = PlanningTask(domain, load_problem(problem_path, domain))
+    reading = None if options.timeout is None else time.monotonic() + options.timeout
+    try:
+        domain = load_domain(domain_path, deadline=reading)
+        task = PlanningTask(domain, load_problem(problem_path, domain, deadline=reading))
+    except OutOfTimeError:
+        overran = _overran("reading the domain and problem", started, options, 0, ran_out=True)
+        assert overran is not None  # ran_out: always a result
+        return overran
     total = len(task.problem.objects)
     planner.check(task.domain, task.problem)
     overran = _overran("reading the domain and problem", started, options, total)
@@ -451,10 +457,10 @@ def plan_task(
     )
 
 
-def _overran(step: str, started: float, options: PlanOptions, total: int) -> PlanResult | None:
-    """An out-of-time result naming ``step`` when ``--timeout`` ran out during it."""
+def _overran(step: str, started: float, options: PlanOptions, total: int, ran_out: bool = False) -> PlanResult | None:
+    """An out-of-time result naming ``step`` when ``--timeout`` ran out during it (``ran_out``: it did)."""
     elapsed = time.perf_counter() - started
-    if options.timeout is None or elapsed < options.timeout:
+    if not ran_out and (options.timeout is None or elapsed < options.timeout):
         return None
     return PlanResult(
         method=options.method,

@@ -2,12 +2,27 @@
 
 Every planner adapter runs its processes through :func:`run_process_group`:
 a fresh working directory chosen by the caller, a session of its own led by
-the guard (``guard.py``, which kills the group if this process dies, even by
-``kill -9``), the output in a file log, a wall-clock watchdog that kills
-the whole group, and the group's id kept reserved (its leader unreaped)
-until every member is gone.  The process groups running now are registered,
-so a batch's Ctrl-C can stop them all (:func:`terminate_all_runs`).  The
-module is thread-safe: many runs may go at once from a thread pool.
+the guard (``guard.py``), the output in a file log, a wall-clock watchdog,
+and the guard's pid kept reserved (unreaped) until every process of the run
+is gone.  The runs going on now are registered, so a batch's Ctrl-C can stop
+them all (:func:`terminate_all_runs`).  The module is thread-safe: many runs
+may go at once from a thread pool.
+
+A run is stopped whole at its time limit, when it ends, on Ctrl-C or
+SIGTERM, and (by the guard) when the tool itself is killed.  How much
+"whole" covers depends on the system:
+
+* Linux with a writable cgroup v2 (the tool may create a cgroup below its
+  own): the guard and everything it starts live in a cgroup of their own,
+  killed at once (``cgroup.kill``).  Nothing the planner starts escapes,
+  whatever it does with sessions, process groups or its own parents.
+  ``$RELEVANCE_PLAN_NO_CGROUP=1`` turns this off.
+* Linux otherwise: the guard is a child subreaper, so every process the
+  planner starts stays its descendant (``setsid``, ``timeout``, double
+  forks included); the descendants are found in ``/proc`` and killed until
+  none is left.  Only a planner that kills its own guard with SIGKILL and
+  leaves a process outside the guard's process group can escape.
+* Elsewhere (macOS): the guard's process group.
 
 VAL's ``Validate`` is the one other program the tool starts (:func:`run_val`).
 """
@@ -15,9 +30,11 @@ VAL's ``Validate`` is the one other program the tool starts (:func:`run_val`).
 from __future__ import annotations
 
 import functools
+import itertools
 import os
 import shutil
 import signal
+import stat
 import subprocess
 import sys
 import tempfile
@@ -27,11 +44,18 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from relevance_plan import errors
+from relevance_plan.planning import guard
 
 LOG_FILE = "planner.log"
 LOG_TAIL_LINES = 40
-DEFAULT_WATCHDOG_GRACE = 5.0
+# Past the time limit, the planner's own limit may act first for this long before the watchdog kills it.
+DEFAULT_WATCHDOG_GRACE = 0.5
+# What is read of a planner's output or plan file: its memory and time stay bounded whatever it writes.
+MAX_OUTPUT_BYTES = 8 * 2**20
+NO_CGROUP_ENV = "RELEVANCE_PLAN_NO_CGROUP"
 _GUARD = Path(__file__).with_name("guard.py")
+_LOW_SPACE_BYTES = 64 * 1024
+_NO_SPACE_MARKERS = ("No space left on device", "[Errno 28]", "ENOSPC")
 
 
 @dataclass(frozen=True)
@@ -50,43 +74,181 @@ class ProcessRun:
         return self.watchdog_fired and os.WIFSIGNALED(self.wait_status)
 
 
+@dataclass(frozen=True)
+class _Run:
+    """A run going on: the guard's pid (= its process group and session) and its cgroup, if any."""
+
+    pgid: int
+    cgroup: str | None
+
+
 def watchdog_deadline(time_limit: float | None, grace: float | None = None) -> float | None:
-    """Seconds after the start at which the watchdog kills the group: the limit plus a grace
-    period (default max(5 s, 10 %)) for the planner's own limit to act first."""
+    """Seconds after the start at which the watchdog kills the run: the limit plus a short
+    grace period (default ``DEFAULT_WATCHDOG_GRACE``) for the planner's own limit to act first."""
     if time_limit is None:
         return None
-    return time_limit + (grace if grace is not None else max(DEFAULT_WATCHDOG_GRACE, 0.1 * time_limit))
+    return time_limit + (grace if grace is not None else DEFAULT_WATCHDOG_GRACE)
+
+
+# --------------------------------------------------------------------------- reading what a planner wrote
+
+
+def _read_regular(path: Path, limit: int) -> tuple[bytes, int] | None:
+    """(at most the last ``limit`` bytes, the full size) of a regular file; None if it is not one.
+
+    Opened without blocking: a planner may have put a FIFO where its output was expected.
+    """
+    try:
+        handle = os.open(path, os.O_RDONLY | os.O_NONBLOCK)
+    except OSError:
+        return None
+    with os.fdopen(handle, "rb") as stream:
+        info = os.fstat(handle)
+        if not stat.S_ISREG(info.st_mode):
+            return None
+        if info.st_size > limit:
+            stream.seek(info.st_size - limit)
+        return stream.read(limit), info.st_size
+
+
+def read_output(path: str | os.PathLike, limit: int = MAX_OUTPUT_BYTES) -> str:
+    """A planner's output file as text: all of it, or its last ``limit`` bytes from a line start ('' if unreadable)."""
+    found = _read_regular(Path(path), limit)
+    if found is None:
+        return ""
+    data, size = found
+    if size > limit:
+        data = data[data.find(b"\n") + 1 :]
+    return data.decode("utf-8", errors="replace")
 
 
 def read_log(workdir: Path) -> str:
-    try:
-        return (workdir / LOG_FILE).read_text(errors="replace")
-    except OSError:
-        return ""
+    return read_output(workdir / LOG_FILE)
 
 
 def log_tail(log: str) -> str:
     return "\n".join(log.splitlines()[-LOG_TAIL_LINES:])
 
 
-# --------------------------------------------------------------------------- the active groups
+def read_plan_file(path: str | os.PathLike, limit: int = MAX_OUTPUT_BYTES) -> str | None:
+    """The text of a plan file a planner wrote; None if there is none.
 
-# Process groups of the planners running now, so a batch's Ctrl-C can stop them all.
-_ACTIVE_GROUPS: set[int] = set()
+    ``PlanFormatError`` when it is larger than ``limit`` bytes or not a regular file.
+    """
+    path = Path(path)
+    if not os.path.lexists(path):
+        return None
+    found = _read_regular(path, limit)
+    if found is None:
+        raise errors.PlanFormatError("the plan file is not a regular file", path=str(path))
+    data, size = found
+    if size > limit:
+        raise errors.PlanFormatError(
+            f"the plan file is {size / 2**20:.0f} MB, over the limit of {limit // 2**20} MB", path=str(path)
+        )
+    return data.decode("utf-8", errors="replace")
+
+
+# --------------------------------------------------------------------------- cgroups
+
+
+@functools.lru_cache(maxsize=1)
+def _own_cgroup() -> str | None:
+    """This process's cgroup v2 directory, or None (no cgroup v2, or not mounted where we can see it)."""
+    try:
+        with open("/proc/self/cgroup") as stream:
+            own = next(line[3:].strip() for line in stream if line.startswith("0::"))
+        with open("/proc/self/mountinfo") as stream:
+            for line in stream:
+                fields = line.split()
+                if "-" in fields and fields[fields.index("-") + 1] == "cgroup2":
+                    root, mount_point = fields[3], fields[4].replace("\\040", " ")
+                    break
+            else:
+                return None
+    except (OSError, StopIteration, IndexError):
+        return None
+    if not own.startswith(root):
+        return None
+    return os.path.join(mount_point, own[len(root) :].lstrip("/"))
+
+
+_CGROUP_NUMBERS = itertools.count(1)
+_CGROUPS_REFUSED: set[str] = set()  # parents where creating a cgroup failed once: not tried again
+
+
+def _new_cgroup() -> str | None:
+    """A fresh cgroup below this process's own, or None where that is not available or not permitted."""
+    if os.environ.get(NO_CGROUP_ENV) or not sys.platform.startswith("linux"):
+        return None
+    parent = _own_cgroup()
+    if parent is None or parent in _CGROUPS_REFUSED:
+        return None
+    path = os.path.join(parent, f"relevance-plan-{os.getpid()}-{next(_CGROUP_NUMBERS)}")
+    try:
+        os.mkdir(path)
+    except OSError:
+        _CGROUPS_REFUSED.add(parent)
+        return None
+    return path
+
+
+def _cgroup_members(cgroup: str) -> list[int]:
+    try:
+        with open(os.path.join(cgroup, "cgroup.procs")) as stream:
+            return [int(line) for line in stream if line.strip()]
+    except (OSError, ValueError):
+        return []
+
+
+def _kill_cgroup(cgroup: str) -> None:
+    try:
+        with open(os.path.join(cgroup, "cgroup.kill"), "w") as stream:
+            stream.write("1")
+        return
+    except OSError:
+        pass  # before Linux 5.14: one by one
+    for pid in _cgroup_members(cgroup):
+        try:
+            os.kill(pid, signal.SIGKILL)
+        except OSError:
+            pass
+
+
+def _remove_cgroup(cgroup: str, timeout: float = 2.0) -> None:
+    deadline = time.monotonic() + timeout
+    while True:
+        try:
+            os.rmdir(cgroup)
+            return
+        except FileNotFoundError:
+            return
+        except OSError:
+            if time.monotonic() > deadline:
+                return  # left behind, empty or not: never block the tool on it
+            _kill_cgroup(cgroup)
+            time.sleep(0.01)
+
+
+# --------------------------------------------------------------------------- stopping a run
+
+
+# The runs going on now, so a batch's Ctrl-C can stop them all.
+_ACTIVE_GROUPS: set[_Run] = set()
 _ACTIVE_LOCK = threading.Lock()
 
 
 def terminate_all_runs() -> int:
-    """Kill every planner process group this process started and still waits for.
+    """Kill every planner run this process started and still waits for.
 
-    Each group's leader stays unreaped until its waiting thread returns, so
-    a group id here cannot belong to an unrelated process.  Returns how many.
+    Each guard stays unreaped until its waiting thread returns, so a pid
+    here cannot belong to an unrelated process.  Returns how many.
     """
     with _ACTIVE_LOCK:
-        groups = list(_ACTIVE_GROUPS)
-    for pgid in groups:
-        _kill_group(pgid)
-    return len(groups)
+        runs = list(_ACTIVE_GROUPS)
+    for run in runs:
+        _stop(run)
+    return len(runs)
 
 
 def _kill_group(pgid: int) -> None:
@@ -97,7 +259,13 @@ def _kill_group(pgid: int) -> None:
         pass
 
 
-# --------------------------------------------------------------------------- waiting, watchdog, reaping
+def _stop(run: _Run) -> None:
+    """Kill every process of the run: its cgroup, the guard's descendants, the guard's group."""
+    if run.cgroup is not None:
+        _kill_cgroup(run.cgroup)
+    # The guard, our unreaped child, anchors its descendants: kill them before it.
+    guard.kill_descendants(run.pgid)
+    _kill_group(run.pgid)
 
 
 def _exit_code(wait_status: int) -> int:
@@ -108,18 +276,18 @@ def _exit_code(wait_status: int) -> int:
     return code - 256 if code > 128 else code
 
 
-def _wait_for_group(pgid: int, deadline: float | None) -> tuple[int, float, float, bool]:
-    """Wait for the group's leader; kill its whole group; reap it.
+def _wait_for_run(run: _Run, deadline: float | None) -> tuple[int, float, float, bool]:
+    """Wait for the guard; stop the whole run; reap the guard.
 
     Returns (wait status, cpu seconds, peak memory MB, watchdog fired).  The
-    leader stays an unreaped zombie until the group is killed, so its pid
-    (= the group id) cannot be reused by an unrelated process meanwhile.
+    guard stays an unreaped zombie until every process of the run is gone,
+    so its pid (= the group id) cannot be reused by an unrelated process meanwhile.
     """
     fired = threading.Event()
 
     def watchdog() -> None:
         fired.set()
-        _kill_group(pgid)
+        _stop(run)
 
     timer: threading.Timer | None = None
     if deadline is not None:
@@ -128,36 +296,38 @@ def _wait_for_group(pgid: int, deadline: float | None) -> tuple[int, float, floa
         timer.start()
     try:
         if hasattr(os, "waitid"):
-            os.waitid(os.P_PID, pgid, os.WEXITED | os.WNOWAIT)
+            os.waitid(os.P_PID, run.pgid, os.WEXITED | os.WNOWAIT)
         else:  # macOS: no waitid; reap first and accept a tiny pid-reuse window
-            _, status, usage = os.wait4(pgid, 0)
+            _, status, usage = os.wait4(run.pgid, 0)
     finally:
         # Runs on KeyboardInterrupt too: the planner lives in its own session,
         # so the terminal's Ctrl-C never reached it.
         if timer is not None:
             timer.cancel()
             timer.join()  # a kill in flight must land before the pid is freed
-        # Killing only the leader would leave a running translator orphaned.
-        _kill_group(pgid)
+        # Killing only the guard would leave a running translator orphaned.
+        _stop(run)
         if hasattr(os, "waitid"):
-            _await_group_death(pgid)
-            _, status, usage = os.wait4(pgid, 0)
+            _await_run_death(run)
+            _, status, usage = os.wait4(run.pgid, 0)
     cpu = usage.ru_utime + usage.ru_stime
     return status, cpu, usage.ru_maxrss / 1024.0, fired.is_set()
 
 
-def _await_group_death(pgid: int, timeout: float = 2.0) -> None:
-    """Wait until no member of the killed group still runs (Linux, via /proc).
+def _await_run_death(run: _Run, timeout: float = 2.0) -> None:
+    """Wait until no process of the killed run still runs (Linux, via /proc).
 
     SIGKILL lands at once, but a process takes a moment to exit; the unreaped
-    leader keeps the group id reserved meanwhile.  Without this, a caller
+    guard keeps the group id reserved meanwhile.  Without this, a caller
     could see the planner's children still running after the run returned.
     """
     if not os.path.isdir("/proc"):
         return
     deadline = time.monotonic() + timeout
-    while _group_runs(pgid) and time.monotonic() < deadline:
-        time.sleep(0.01)
+    while _group_runs(run.pgid) or (run.cgroup is not None and _cgroup_members(run.cgroup)):
+        if time.monotonic() > deadline:
+            return
+        time.sleep(0.005)
 
 
 def _group_runs(pgid: int) -> bool:
@@ -195,30 +365,32 @@ def run_process_group(
     env: dict | None = None,
     memory_limit_mb: int | None = None,
 ) -> ProcessRun:
-    """Run ``command`` (an argument list, never a shell string) in ``workdir`` as the leader
-    of its own session, output to ``workdir/planner.log``.
+    """Run ``command`` (an argument list, never a shell string) in ``workdir`` under the guard,
+    as the leader of its own session, output to ``workdir/planner.log``.
 
-    A watchdog kills the whole group ``deadline`` seconds after the start;
-    the group is killed and reaped in every case (Ctrl-C included).
+    A watchdog stops the whole run ``deadline`` seconds after the start;
+    the run is stopped and reaped in every case (Ctrl-C included).
     ``what`` and ``program`` name the planner in the error raised when it
-    cannot start.
+    cannot start.  ``InputFileError`` when the run failed because the
+    working folder's disk is full.
     """
     # The guard starts the command, so a missing program must be caught here.
     executable = command[0] if os.sep in command[0] else shutil.which(command[0])
     if executable is None or not os.access(executable, os.X_OK) or os.path.isdir(executable):
         raise errors.PlannerError(f"cannot start {what}: {command[0]} is not an executable program", path=str(program))
     started = time.monotonic()
-    # The guard kills the group when this process dies (its pipe's write end
+    # The guard stops the run when this process dies (its pipe's write end
     # closes, even on kill -9); os.pipe() fds are close-on-exec, so no other
     # child holds the write end.
     guard_read, guard_write = os.pipe()
+    cgroup = _new_cgroup()
     try:
         # A file, not a pipe: nobody has to drain it while we wait.
-        with open(workdir / LOG_FILE, "wb") as log_file:
+        with open(workdir / LOG_FILE, "w+b") as log_file:
             try:
                 process = subprocess.Popen(
                     # -I -S: the guard needs the standard library only; skipping site saves start-up
-                    [sys.executable, "-I", "-S", str(_GUARD), str(guard_read), *command],
+                    [sys.executable, "-I", "-S", str(_GUARD), str(guard_read), cgroup or guard.NO_CGROUP, *command],
                     cwd=workdir,
                     stdin=subprocess.DEVNULL,
                     stdout=log_file,
@@ -235,21 +407,68 @@ def run_process_group(
                 ) from None
             finally:
                 os.close(guard_read)
-        # start_new_session: the guard leads its own group, pgid == pid.
-        pgid = process.pid
-        with _ACTIVE_LOCK:
-            _ACTIVE_GROUPS.add(pgid)
-        try:
-            wait_status, cpu_time, peak_mb, fired = _wait_for_group(pgid, deadline)
-        finally:
+            # start_new_session: the guard leads its own group, pgid == pid.
+            run = _Run(process.pid, cgroup)
             with _ACTIVE_LOCK:
-                _ACTIVE_GROUPS.discard(pgid)
+                _ACTIVE_GROUPS.add(run)
+            try:
+                wait_status, cpu_time, peak_mb, fired = _wait_for_run(run, deadline)
+            finally:
+                with _ACTIVE_LOCK:
+                    _ACTIVE_GROUPS.discard(run)
+            _restore_workdir(workdir, log_file)
     finally:
         os.close(guard_write)
+        if cgroup is not None:
+            _remove_cgroup(cgroup)
     exit_code = _exit_code(wait_status)
     # We reaped it ourselves (for the rusage); tell Popen so it never waits.
     process.returncode = exit_code
-    return ProcessRun(wait_status, exit_code, cpu_time, peak_mb, fired, time.monotonic() - started, pgid)
+    if exit_code != 0:
+        _refuse_full_disk(workdir)
+    return ProcessRun(wait_status, exit_code, cpu_time, peak_mb, fired, time.monotonic() - started, run.pgid)
+
+
+def _restore_workdir(workdir: Path, log_file) -> None:
+    """Put back a working folder (and log) the planner removed, saying so in the log.
+
+    The adapters read the log and remove the folder; a planner that deleted
+    it would otherwise make its output vanish and the clean-up fail.
+    """
+    log_path = workdir / LOG_FILE
+    try:
+        now, ours = os.stat(log_path), os.fstat(log_file.fileno())
+        if (now.st_dev, now.st_ino) == (ours.st_dev, ours.st_ino):
+            return
+    except OSError:
+        pass
+    gone = "working folder" if not workdir.is_dir() else "log file"
+    try:
+        workdir.mkdir(exist_ok=True)
+        log_file.seek(0, os.SEEK_END)
+        size = log_file.tell()
+        log_file.seek(max(size - MAX_OUTPUT_BYTES, 0))
+        with open(log_path, "wb") as restored:
+            shutil.copyfileobj(log_file, restored)
+            restored.write(f"\nrelevance-plan: the planner removed its {gone} ({workdir})\n".encode())
+    except OSError:
+        pass
+
+
+def _refuse_full_disk(workdir: Path) -> None:
+    """``InputFileError`` when the planner failed for want of disk space in its working folder."""
+    try:
+        info = os.statvfs(workdir)
+        free = info.f_bavail * info.f_frsize
+    except OSError:
+        return
+    tail = log_tail(read_log(workdir))
+    if free < _LOW_SPACE_BYTES or any(marker in tail for marker in _NO_SPACE_MARKERS):
+        raise errors.InputFileError(
+            f"no space left for the planner's files ({free // 1024} KB free in the temporary folder;"
+            " set TMPDIR to a folder with room)",
+            path=str(workdir.parent),
+        )
 
 
 # --------------------------------------------------------------------------- VAL

@@ -10,6 +10,10 @@
 
 Extra fields are allowed and ignored.  A malformed or impossible event
 raises :class:`EventError` with a one-line reason; the session stays as it was.
+Nothing an event brings in can change the PDDL around it: a new object's
+name must be a PDDL name (a letter, then letters, digits, ``-`` and ``_``),
+every other name must already be in the scene, and a goal must be exactly
+one balanced list.
 """
 
 from __future__ import annotations
@@ -18,7 +22,7 @@ import json
 import re
 from dataclasses import dataclass
 
-from relevance_plan.errors import RelevancePlanError
+from relevance_plan.errors import MAX_MESSAGE, RelevancePlanError, printable
 from relevance_plan.pddl.formulas import Formula, names_in
 from relevance_plan.pddl.parser import read_problem
 from relevance_plan.pddl.sexpr import parse_sexpr
@@ -26,10 +30,19 @@ from relevance_plan.relevance.knowledge import KnowledgeModel
 from relevance_plan.session.state import LiveScene
 
 EVENT_KINDS = ("add", "remove", "set", "unset", "goal", "human", "cue", "plan")
+# One event line at most; a longer one is refused and the stream carries on.
+MAX_EVENT_BYTES = 1 << 20
+# A PDDL name: a letter, then letters, digits, '-' and '_' (of any script).
+_PDDL_NAME = re.compile(r"[^\W\d_][\w-]*")
+MAX_NAME_LENGTH = 1000
 
 
 class EventError(RelevancePlanError):
     """An event the session rejects (bad JSON, unknown object, wrong arity, ...)."""
+
+    def __init__(self, message: str, **where):
+        # Messages quote the event: one visible line of bounded length, whatever it held.
+        super().__init__(printable(message, MAX_MESSAGE), **where)
 
 
 @dataclass(frozen=True)
@@ -49,10 +62,14 @@ class Event:
 
 def parse_event_line(line: str) -> dict:
     """One JSON line -> a dict (raises EventError)."""
+    if len(line) > MAX_EVENT_BYTES:
+        raise EventError(f"an event line longer than {MAX_EVENT_BYTES} bytes")
     try:
         data = json.loads(line)
     except ValueError as error:
         raise EventError(f"not a JSON object: {error}") from None
+    except RecursionError:
+        raise EventError("not a JSON object: nested too deeply") from None
     if not isinstance(data, dict):
         raise EventError("an event must be a JSON object")
     return data
@@ -64,7 +81,7 @@ def check_event(data: dict, scene: LiveScene, model: KnowledgeModel | None) -> E
     if kind not in EVENT_KINDS:
         raise EventError(f"unknown event {kind!r} (expected one of: {', '.join(EVENT_KINDS)})")
     if kind == "add":
-        display = _text(data, "object")
+        display = check_name(_text(data, "object"), "object name")
         name = display.lower()
         if name in scene.objects or name in scene.domain.constants:
             raise EventError(f"object '{display}' is already in the scene")
@@ -112,6 +129,15 @@ def check_event(data: dict, scene: LiveScene, model: KnowledgeModel | None) -> E
             raise EventError(f"unknown objective {objective!r} (the model has: {', '.join(model.objectives)})")
         return Event("cue", task=task, objective=objective)
     return Event("plan")
+
+
+def check_name(text: str, what: str) -> str:
+    """``text`` if it is a PDDL name, else ``EventError`` (it would change the PDDL around it)."""
+    if len(text) > MAX_NAME_LENGTH or not _PDDL_NAME.fullmatch(text):
+        raise EventError(
+            f"{what} '{printable(text, 80)}' is not a PDDL name (a letter, then letters, digits, '-' or '_')"
+        )
+    return text
 
 
 def _text(data: dict, key: str) -> str:

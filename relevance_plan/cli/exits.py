@@ -1,0 +1,111 @@
+"""How a run ends when its surroundings fail: the output closed or full, memory exhausted.
+
+Library errors become one line and an exit code in ``common.handle_errors``;
+this module covers what is not the library's doing, so that no traceback
+ever reaches the user:
+
+* the reader of standard output went away (``relevance-plan score | head -1``):
+  stop at once and quietly with exit 141, as a filter killed by SIGPIPE does;
+* standard output is closed (``>&-``): refused before any work (exit 31),
+  rather than running with every line thrown away;
+* standard output cannot take the text (``> /dev/full``): one line, exit 31;
+* the tool itself runs out of memory (``ulimit -v``): one line, exit 21.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import errno
+import os
+import sys
+from typing import NoReturn
+
+import click
+
+from relevance_plan.exitcodes import ExitCode
+
+# What a shell reports for a process killed by SIGPIPE (128 + 13); Python ignores SIGPIPE, so we exit so.
+OUTPUT_CLOSED = 141
+_PREFIX = "relevance-plan: error: "
+
+
+def _say(message: str) -> None:
+    """One line on stderr with as little work as possible (memory may be exhausted)."""
+    with contextlib.suppress(OSError, ValueError):
+        os.write(2, (_PREFIX + message + "\n").encode("utf-8", errors="replace"))
+
+
+def _drop_stdout() -> None:
+    """Point standard output at /dev/null, so that the interpreter's last flush cannot fail again."""
+    with contextlib.suppress(OSError, ValueError, AttributeError):
+        fd = sys.stdout.fileno()
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, fd)
+        os.close(devnull)
+
+
+def quit_on_broken_pipe() -> NoReturn:
+    """The reader of our output left: say nothing, exit 141."""
+    _drop_stdout()
+    sys.exit(OUTPUT_CLOSED)
+
+
+def quit_out_of_memory() -> NoReturn:
+    _say("out of memory (raise the memory limit, or give the tool a smaller problem)")
+    _drop_stdout()
+    sys.exit(int(ExitCode.OUT_OF_MEMORY))
+
+
+def quit_on_output_error(error: OSError) -> NoReturn:
+    """Standard output refused the text (a full disk, /dev/full, an I/O error)."""
+    if error.errno == errno.EPIPE:
+        quit_on_broken_pipe()
+    _say(f"cannot write standard output: {error.strerror or error}")
+    _drop_stdout()
+    sys.exit(int(ExitCode.INPUT_FILE))
+
+
+def stdout_is_closed() -> bool:
+    """Standard output is not open at all (``>&-``); a captured stream (tests) counts as open."""
+    if sys.stdout is None:
+        return True
+    try:
+        fd = sys.stdout.fileno()
+    except (OSError, ValueError, AttributeError):
+        return False  # not backed by a descriptor: an in-memory stream
+    try:
+        os.fstat(fd)
+    except OSError:
+        return True
+    return False
+
+
+class ToolGroup(click.Group):
+    """The command group, with the endings above around every command (click's own included)."""
+
+    def main(self, *args, **kwargs):
+        if stdout_is_closed():
+            _say("standard output is closed; give the command somewhere to write (e.g. > /dev/null)")
+            sys.exit(int(ExitCode.INPUT_FILE))
+        try:
+            result = super().main(*args, **kwargs)
+        except SystemExit:
+            _flush_stdout()
+            raise
+        except MemoryError:
+            quit_out_of_memory()
+        except OSError as error:  # outside any command's own handling (click's help, its usage lines)
+            if error.filename is None:
+                quit_on_output_error(error)
+            _say(f"{error.filename}: {error.strerror or error}")
+            sys.exit(int(ExitCode.INPUT_FILE))
+        _flush_stdout()
+        return result
+
+
+def _flush_stdout() -> None:
+    try:
+        if sys.stdout is not None:
+            sys.stdout.flush()
+    except OSError as error:
+        quit_on_output_error(error)
