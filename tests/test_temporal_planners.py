@@ -16,7 +16,7 @@ from support import run
 
 from relevance_plan.errors import UnsupportedFeatureError
 from relevance_plan.io import load_task
-from relevance_plan.pddl.plans import PlanStep, read_plan
+from relevance_plan.pddl.plans import PlanStep, format_plan, read_plan
 from relevance_plan.planning import auto
 from relevance_plan.planning import features as f
 from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task
@@ -313,6 +313,7 @@ def test_lpg_plan_files_are_read_in_its_own_conventions():
     # with timed initial literals the time stamps matter: kept
     assert read_lpg_plan(LPG_PARALLEL_PLAN, "Problem with Timed Initial Literals: YES").timed
     assert read_lpg_plan("this is no plan\n", "") is None
+    assert read_plan(format_plan(timed)) == timed  # LPG's fractions of a millisecond survive writing
 
 
 def test_lpg_is_classified_by_its_exit_code_and_words():
@@ -327,6 +328,8 @@ def test_lpg_is_classified_by_its_exit_code_and_words():
     assert classify(run(1), None, unsupported) is PlannerStatus.UNSUPPORTED
     assert classify(run(0), None, "This version of LPG doesn't support SCALE_UP") is PlannerStatus.UNSUPPORTED
     assert classify(run(-9, fired=True), None, "") is PlannerStatus.OUT_OF_TIME
+    table = "too many relevant facts! increase MAX_RELEVANT_FACTS (currently 15000)"
+    assert classify(run(1), None, table) is PlannerStatus.OUT_OF_MEMORY
     assert classify(run(1), None, "Parsing domain file") is PlannerStatus.PLANNER_CRASH
 
 
@@ -401,6 +404,4 @@ def test_broken_timed_plans_are_invalid_for_both_validators(haul_files):
 
 
 def _text(plan) -> str:
-    from relevance_plan.pddl.plans import format_plan
-
     return format_plan(plan)

@@ -19,7 +19,10 @@ What is LPG's own lives here:
   the sequence they list, unless timed initial literals make time matter;
 - its endings: exit 0 with a plan file: solved; exit 0 without one: its
   local search gave up (or it named a construct it does not support); exit 1
-  with "can not be reached": the goal is unreachable from the initial state.
+  with "can not be reached": the goal is unreachable from the initial state;
+  exit 1 with "too many ... increase MAX_...": the problem outgrew one of its
+  fixed-size tables (a few hundred objects do it), which we count as out of
+  memory.
 
 The domain and problem are linked into the run's directory under short
 names, so its fixed-size path buffers never see a long path.
@@ -75,6 +78,7 @@ _SEQUENTIAL_MARK = "Actions having STRIPS duration"
 _TIMED_LITERALS_MARK = re.compile(r"Timed Initial Literals:\s*YES", re.IGNORECASE)
 _UNREACHABLE_MARK = "can not be reached"
 _UNSUPPORTED_RE = re.compile(r"(not supported|doesn't support)[^\n]*", re.IGNORECASE)
+_TABLE_FULL_RE = re.compile(r"too many [^\n]*increase MAX_\w+[^\n]*", re.IGNORECASE)
 
 
 def lpg_binary() -> Path | None:
@@ -111,7 +115,9 @@ def classify(run: ProcessRun, plan: Plan | None, log: str) -> PlannerStatus:
         return PlannerStatus.SEARCH_INCOMPLETE  # its local search gave up
     if run.exit_code == 1 and _UNREACHABLE_MARK in log:
         return PlannerStatus.UNSOLVABLE
-    return PlannerStatus.OUT_OF_MEMORY if "memory" in log.lower() else PlannerStatus.PLANNER_CRASH
+    if _TABLE_FULL_RE.search(log) or "memory" in log.lower():
+        return PlannerStatus.OUT_OF_MEMORY
+    return PlannerStatus.PLANNER_CRASH
 
 
 def exit_reason(run: ProcessRun, status: PlannerStatus, log: str) -> str:
@@ -125,6 +131,9 @@ def exit_reason(run: ProcessRun, status: PlannerStatus, log: str) -> str:
         return f"{WHOSE} exit code {run.exit_code}: {unsupported.group(0).strip()}"
     if status is PlannerStatus.UNSOLVABLE:
         return f"{WHOSE} exit code 1: the goal can not be reached"
+    table_full = _TABLE_FULL_RE.search(log)
+    if table_full:
+        return f"{WHOSE} exit code {run.exit_code}: {table_full.group(0).strip()}"
     if status is PlannerStatus.SEARCH_INCOMPLETE:
         return f"{WHOSE} exit code 0 without a plan: its search gave up"
     return f"{WHOSE} exit code {run.exit_code}"
