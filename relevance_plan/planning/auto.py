@@ -126,10 +126,11 @@ def choose(uses: frozenset[str], config: str, where: str | None = None) -> Choic
 def choose_unread(refused: UnsupportedFeatureError, config: str) -> Choice:
     """For input our reader refuses: ENHSP for PDDL+; anything else only a planner the user names can take."""
     if PDDL_PLUS in refused.message:
-        if ENHSP.installed():
-            return Choice(ENHSP.make(config), "a PDDL+ problem")
+        for candidate in PDDL_PLUS_ORDER:
+            if candidate.installed():
+                return Choice(candidate.make(config), "a PDDL+ problem")
         raise UnsupportedFeatureError(
-            f"{refused.message}, and no installed planner takes it: {ENHSP.install()}",
+            f"{refused.message}, and no installed planner takes it: {PDDL_PLUS_ORDER[0].install()}",
             path=refused.path,
             line=refused.line,
         )
