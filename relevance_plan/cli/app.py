@@ -25,7 +25,7 @@ from relevance_plan.cli.common import (
 )
 from relevance_plan.cli.exits import ToolGroup
 from relevance_plan.cli.watch import watch
-from relevance_plan.errors import UsageError
+from relevance_plan.errors import UnsupportedFeatureError, UsageError
 from relevance_plan.exitcodes import EXIT_CODE_DESCRIPTIONS, ExitCode, exit_code_for_status
 from relevance_plan.planning.loop import PlanResult, PlanStatus, plan_task
 from relevance_plan.relevance.prune import Selection
@@ -163,6 +163,19 @@ def score(domain_path, problem_path, inquiries, as_json, **values):
         fail(f"insufficient cues: {scores.insufficiency}", ExitCode.INSUFFICIENT_CUES)
 
 
+def _pass_through(problem_path, output, refused: UnsupportedFeatureError, as_json: bool) -> None:
+    """``prune --pass-through`` on input that cannot be pruned: the problem, unchanged, and why."""
+    from relevance_plan.io import STDOUT, read_text, write_output
+
+    reason = f"cannot be pruned: {refused}"
+    written = write_output(output, read_text(problem_path, "problem file"))
+    if as_json:
+        click.echo(json.dumps({"pruned": False, "unpruned_reason": reason, "output": str(output)}, indent=2))
+    else:
+        where = written if output == STDOUT else output
+        click.echo(f"pruned: no ({reason}); wrote the problem unchanged to {where}", err=output == STDOUT)
+
+
 def _inquiries(scoring: Scoring, result: Selection) -> dict:
     from relevance_plan.relevance.metrics import plan_inquiries
     from relevance_plan.relevance.prune import select_relevant
@@ -246,9 +259,15 @@ def _print_score_table(result: Selection) -> None:
     help="Pruned problem file ('-': standard output).",
 )
 @scoring_options
+@click.option(
+    "--pass-through",
+    is_flag=True,
+    help="When the input cannot be pruned (a construct the reader or the analysis does not take),"
+    " write PROBLEM unchanged, say why, and exit 0.",
+)
 @click.option("--json", "as_json", is_flag=True, help="Machine-readable report on stdout.")
 @handle_errors
-def prune(domain_path, problem_path, output, as_json, **values):
+def prune(domain_path, problem_path, output, pass_through, as_json, **values):
     """Write PROBLEM without the objects that do not matter (a drop-in filter for any planner).
 
     "-o -" writes the pruned problem to standard output (the summary goes to stderr).
@@ -258,7 +277,13 @@ def prune(domain_path, problem_path, output, as_json, **values):
     to_stdout = names_stdout(output)
     if to_stdout and as_json:
         raise UsageError("--json and '-o -' would both write to standard output; give -o a file name")
-    scoring, result = _score_and_prune(domain_path, problem_path, take_scoring(values))
+    try:
+        scoring, result = _score_and_prune(domain_path, problem_path, take_scoring(values))
+    except UnsupportedFeatureError as refused:
+        if not pass_through:
+            raise
+        _pass_through(problem_path, output, refused, as_json)
+        return
     scores = scoring.scores
     if not scores.sufficient:
         if as_json:
@@ -355,16 +380,28 @@ def _plan_within_timeout(domain_path, problem_path, options, quiet: bool) -> Pla
 def _print_plan_summary(result: PlanResult, plan_file, err: bool = False) -> None:
     echo = functools.partial(click.echo, err=err)
     echo(f"method:      {result.method}")
-    echo(f"planner:     {result.planner}")
+    echo(f"planner:     {result.planner}" + (f" (auto: {result.planner_choice})" if result.planner_choice else ""))
     echo(f"status:      {result.status.value}")
-    echo(f"objects:     {result.objects_kept} kept of {result.objects_total}")
+    unpruned = result.why_unpruned
+    if result.unpruned_reason and not result.objects_total:
+        echo(f"objects:     all (pruned: no, {unpruned})")
+    else:
+        echo(
+            f"objects:     {result.objects_kept} kept of {result.objects_total}"
+            + (f" (pruned: no, {unpruned})" if unpruned else "")
+        )
     echo(f"attempts:    {len(result.attempts)} (first: {result.first_attempt_status})")
     echo(
         f"time:        {result.wall_time:.2f} s total, {result.relevance_time:.2f} s relevance,"
         f" {result.planner_time:.2f} s planner, {result.validation_time:.2f} s validation"
     )
     if result.status is PlanStatus.SOLVED:
-        echo(f"plan:        {len(result.plan)} steps, valid on the original problem ({result.validation.validator})")
+        if result.validation is not None and result.valid:
+            echo(
+                f"plan:        {len(result.plan)} steps, valid on the original problem ({result.validation.validator})"
+            )
+        else:
+            echo(f"plan:        {len(result.plan)} steps, NOT validated (--validator none)")
         echo(f"plan file:   {plan_file}")
 
 

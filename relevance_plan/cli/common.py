@@ -18,6 +18,8 @@ import click
 from relevance_plan.errors import InputFileError, RelevancePlanError
 from relevance_plan.exitcodes import ExitCode, exit_code_for_error
 from relevance_plan.planning.loop import METHODS, PlanOptions
+from relevance_plan.planning.planners import DEFAULT_PLANNER, DEFAULT_PLANNER_CONFIG
+from relevance_plan.planning.validate import VALIDATOR_CHOICES
 from relevance_plan.relevance.prune import DEFAULT_TAU, Thresholds
 from relevance_plan.relevance.scorers import SCORERS
 from relevance_plan.relevance.setup import ScoringOptions
@@ -144,14 +146,15 @@ def planning_options(per_job: bool = False):
             [
                 click.option(
                     "--planner",
-                    default="fast-downward",
+                    default=DEFAULT_PLANNER,
                     show_default=True,
-                    help="fast-downward, up:NAME (a unified-planning engine) or cmd:'TEMPLATE' "
-                    "(an external planner; {domain} {problem} [{plan}]).",
+                    help="auto (chosen by the problem's features: Fast Downward for classical problems, a temporal"
+                    " or numeric planner otherwise), fast-downward, lpg, up:NAME (a unified-planning engine:"
+                    " aries, tamer, enhsp, ...) or cmd:'TEMPLATE' (an external planner; {domain} {problem} [{plan}]).",
                 ),
                 click.option(
                     "--planner-config",
-                    default="lama-first",
+                    default=DEFAULT_PLANNER_CONFIG,
                     show_default=True,
                     help="Fast Downward alias, registered name, or search string.",
                 ),
@@ -170,8 +173,9 @@ def planning_options(per_job: bool = False):
                     "--validator",
                     "validators",
                     multiple=True,
-                    type=click.Choice(["builtin", "up", "val"]),
-                    help="Validator(s) to use (default: builtin, plus VAL when on PATH).",
+                    type=click.Choice(VALIDATOR_CHOICES),
+                    help="Validator(s) to use (default: builtin, plus VAL when on PATH); 'none': report the plan"
+                    " NOT validated.",
                 ),
             ],
         )

@@ -130,11 +130,18 @@ def format_plan(plan: Plan | Sequence[PlanStep], display: Callable[[str], str] |
     for step in steps:
         text = "(" + " ".join([step.action, *(show(arg) for arg in step.args)]) + ")"
         if step.time is not None:
-            text = f"{step.time:.3f}: {text}"
+            text = f"{_decimals(step.time)}: {text}"
             if step.duration is not None:
-                text += f" [{step.duration:.3f}]"
+                text += f" [{_decimals(step.duration)}]"
         lines.append(text)
     cost = plan.cost if isinstance(plan, Plan) else None
     if not any(step.time is not None for step in steps):
         lines.append(f"; cost = {len(steps)} (unit cost)" if cost is None else f"; cost = {format_number(cost)}")
     return "\n".join(lines) + "\n"
+
+
+def _decimals(value: float) -> str:
+    """Three decimals, as planners print them, unless that would change the value (LPG separates
+    happenings by fractions of a millisecond): the plan written is the plan validated."""
+    short = f"{value:.3f}"
+    return short if float(short) == value else repr(float(value))

@@ -11,8 +11,12 @@ Semantics:
   happening; ``at start`` conditions are checked before the start,
   ``at end`` ones before the end, ``over all`` ones in every state strictly
   between; the duration must satisfy the action's duration constraint;
-  happenings at the same instant must not interfere (one writes what
-  another reads or writes); timed initial literals happen at their times.
+  happenings at the same instant must not interfere (PDDL 2.1's mutex, as
+  VAL checks it: one deletes what another adds, one changes what another
+  reads — a condition, a conditional effect's condition or a value an
+  effect is computed from —, or both change one value other than by
+  ``increase`` and ``decrease``, which commute and add up); timed initial
+  literals happen at their times.
 
 Trajectory constraints and preferences are not checked (they are passed
 through; preferences change a plan's quality, not its validity).
@@ -25,7 +29,7 @@ from __future__ import annotations
 import itertools
 import time
 from collections.abc import Iterator, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from relevance_plan.errors import SimulationTimeout
 from relevance_plan.pddl import formulas as f
@@ -191,6 +195,7 @@ class Simulator:
         elif isinstance(effect, f.When):
             # Conditions are read in the state before the happening; a timed condition
             # part is checked with the happening that carries the effect.
+            found.reads |= _reads(effect.condition, binding)
             if self.holds(effect.condition, state, binding):
                 self._collect(effect.effect, state, binding, when, current, found)
         elif isinstance(effect, f.Timed):
@@ -202,10 +207,17 @@ class Simulator:
     def _numeric(self, effect: f.NumericEffect, state: State, binding: Mapping[str, str], found: Effects) -> None:
         key = (effect.fluent.function, *(binding.get(a, a) for a in effect.fluent.args))
         amount = self.value(effect.value, state, binding)
-        new = amount if effect.op == "assign" else _update(effect.op, state.values.get(key), amount, key)
-        if key in found.values and found.values[key] != new:
-            raise StepFailure(f"two effects give ({' '.join(key)}) different values at once")
-        found.values[key] = new
+        found.reads |= _reads(effect.value, binding)
+        if effect.op in ADDITIVE:
+            _update(effect.op, state.values.get(key), amount, key)  # refuses an undefined value
+            found.deltas[key] = found.deltas.get(key, 0.0) + (amount if effect.op == "increase" else -amount)
+        else:
+            new = amount if effect.op == "assign" else _update(effect.op, state.values.get(key), amount, key)
+            if key in found.values and found.values[key] != new:
+                raise StepFailure(f"two effects give ({' '.join(key)}) different values at once")
+            found.values[key] = new
+        if key in found.values and key in found.deltas:
+            raise StepFailure(f"({' '.join(key)}) is assigned and updated at once")
 
     # ---------------------------------------------------------------- derived predicates
 
@@ -227,19 +239,37 @@ class Simulator:
                             changed = True
 
 
+ADDITIVE = frozenset({"increase", "decrease"})
+
+
 @dataclass
 class Effects:
     adds: set[f.GroundAtom]
     deletes: set[f.GroundAtom]
-    values: dict[f.GroundAtom, float]
+    values: dict[f.GroundAtom, float]  # assigned (assign, scale-up, scale-down)
+    deltas: dict[f.GroundAtom, float] = field(default_factory=dict)  # increase and decrease, summed
+    reads: set[tuple[str, ...]] = field(default_factory=set)  # read by the effects: ("fact"|"value", ...)
 
     def apply(self, state: State) -> None:
         state.facts.difference_update(self.deletes - self.adds)  # add-after-delete, as the planners do
         state.facts.update(self.adds)
         state.values.update(self.values)
+        for key, delta in self.deltas.items():
+            state.values[key] += delta
 
-    def writes(self) -> set[tuple[str, ...]]:
-        return {("fact",) + atom for atom in self.adds | self.deletes} | {("value",) + key for key in self.values}
+    def changes(self) -> set[tuple[str, ...]]:
+        facts = {("fact",) + atom for atom in self.adds | self.deletes}
+        return facts | {("value",) + key for key in (*self.values, *self.deltas)}
+
+    def interferes(self, reads: set[tuple[str, ...]], other: Effects, other_reads: set[tuple[str, ...]]) -> bool:
+        """PDDL 2.1's mutex between two happenings of one instant (``reads``: what each one's
+        condition reads)."""
+        if self.adds & other.deletes or self.deletes & other.adds:
+            return True
+        if self.changes() & (other_reads | other.reads) or other.changes() & (reads | self.reads):
+            return True
+        assigned, other_assigned = set(self.values), set(other.values)
+        return bool(assigned & (other_assigned | set(other.deltas)) or other_assigned & set(self.deltas))
 
 
 def _update(op: str, old: float | None, amount: float, key: f.GroundAtom) -> float:
@@ -443,8 +473,7 @@ def _apply_group(simulator: Simulator, state: State, group: list[_Happening], ru
         found.append((happening, effects, reads))
     for i, (first, first_effects, first_reads) in enumerate(found):
         for second, second_effects, second_reads in found[i + 1 :]:
-            writes_a, writes_b = first_effects.writes(), second_effects.writes()
-            if writes_a & (writes_b | second_reads) or writes_b & first_reads:
+            if first_effects.interferes(first_reads, second_effects, second_reads):
                 raise StepFailure(
                     f"{_describe(first)} and {_describe(second)} interfere at time {first.time:g}",
                     first.number or second.number or None,
@@ -498,7 +527,7 @@ def _check_invariant(simulator: Simulator, state: State, start: _Happening) -> N
         raise StepFailure(f"step {start.number} {start.step}: over all condition broken while it runs", start.number)
 
 
-def _reads(condition: f.Formula, binding: Mapping[str, str]) -> set[tuple[str, ...]]:
+def _reads(condition: f.Node, binding: Mapping[str, str]) -> set[tuple[str, ...]]:
     reads = set()
     for node in f.walk(condition):
         if isinstance(node, f.Atom) and all(not f.is_variable(binding.get(a, a)) for a in node.args):

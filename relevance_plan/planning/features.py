@@ -4,14 +4,17 @@ Feature names are PDDL's requirement names (without the colon), computed
 from what the files actually contain, not from their ``:requirements``
 (which often over- or under-declare).  Universal effects count as
 ``conditional-effects``, as in PDDL; numeric fluents mean more than action
-costs: a numeric effect on anything but ``total-cost``, or a numeric
-comparison.  Each planner adapter declares the features it takes and calls
+costs: a numeric effect on anything but ``total-cost``, a numeric
+comparison, or a function in a duration.  Two names are ours, for typings
+some planners' readers reject: ``hierarchical-typing`` (a type below
+another declared type) and ``either-types`` (``(either a b)``).  Each
+planner adapter declares the features it takes and calls
 :func:`refuse_unsupported` from its ``check``.
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
 
 from relevance_plan.errors import UnsupportedFeatureError
 from relevance_plan.pddl.formulas import (
@@ -27,6 +30,7 @@ from relevance_plan.pddl.formulas import (
     Or,
     Preference,
     When,
+    conjuncts,
     literals,
     quantifiers,
     walk,
@@ -35,6 +39,8 @@ from relevance_plan.pddl.model import Domain, Problem
 
 STRIPS = "strips"
 TYPING = "typing"
+HIERARCHICAL_TYPING = "hierarchical-typing"
+EITHER_TYPES = "either-types"
 NEGATIVE_PRECONDITIONS = "negative-preconditions"
 DISJUNCTIVE_PRECONDITIONS = "disjunctive-preconditions"
 EQUALITY = "equality"
@@ -44,6 +50,7 @@ CONDITIONAL_EFFECTS = "conditional-effects"
 ACTION_COSTS = "action-costs"
 NUMERIC_FLUENTS = "numeric-fluents"
 DURATIVE_ACTIONS = "durative-actions"
+DURATION_INEQUALITIES = "duration-inequalities"
 DERIVED_PREDICATES = "derived-predicates"
 TIMED_INITIAL_LITERALS = "timed-initial-literals"
 PREFERENCES = "preferences"
@@ -52,6 +59,8 @@ CONSTRAINTS = "constraints"
 FEATURES = (
     STRIPS,
     TYPING,
+    HIERARCHICAL_TYPING,
+    EITHER_TYPES,
     NEGATIVE_PRECONDITIONS,
     DISJUNCTIVE_PRECONDITIONS,
     EQUALITY,
@@ -61,6 +70,7 @@ FEATURES = (
     ACTION_COSTS,
     NUMERIC_FLUENTS,
     DURATIVE_ACTIONS,
+    DURATION_INEQUALITIES,
     DERIVED_PREDICATES,
     TIMED_INITIAL_LITERALS,
     PREFERENCES,
@@ -68,7 +78,16 @@ FEATURES = (
 )
 
 # Classical planning with everything ADL adds, action costs and derived predicates.
-CLASSICAL = frozenset(FEATURES) - {NUMERIC_FLUENTS, DURATIVE_ACTIONS, TIMED_INITIAL_LITERALS, PREFERENCES, CONSTRAINTS}
+CLASSICAL = frozenset(FEATURES) - {
+    NUMERIC_FLUENTS,
+    DURATIVE_ACTIONS,
+    DURATION_INEQUALITIES,
+    TIMED_INITIAL_LITERALS,
+    PREFERENCES,
+    CONSTRAINTS,
+}
+# What makes a problem temporal: it needs a planner that schedules.
+TEMPORAL = frozenset({DURATIVE_ACTIONS, DURATION_INEQUALITIES, TIMED_INITIAL_LITERALS})
 
 COST = "total-cost"
 # The metric may name the plan's duration; that is no numeric fluent of the domain.
@@ -81,11 +100,10 @@ def problem_features(domain: Domain, problem: Problem) -> frozenset[str]:
 
 
 def domain_features(domain: Domain) -> frozenset[str]:
-    found = {STRIPS}
-    if any(name != "object" for name in domain.types):
-        found.add(TYPING)
+    found = {STRIPS} | typing_features(domain)
     if domain.temporal:
         found.add(DURATIVE_ACTIONS)
+        found |= duration_features(action.duration for action in domain.actions if action.duration is not None)
     if domain.derived:
         found.add(DERIVED_PREDICATES)
     if domain.constraints is not None:
@@ -96,8 +114,43 @@ def domain_features(domain: Domain) -> frozenset[str]:
     return frozenset(found)
 
 
+def typing_features(domain: Domain) -> frozenset[str]:
+    found = set()
+    if any(name != "object" for name in domain.types):
+        found.add(TYPING)
+    if any(parent not in ("", "object") for parent in domain.types.values()):
+        found.add(HIERARCHICAL_TYPING)
+    declared = [*domain.constants.values(), *(t for _, t in _all_parameters(domain))]
+    if any(type_name.startswith("(either") for type_name in declared):
+        found.add(EITHER_TYPES)
+    return frozenset(found)
+
+
+def _all_parameters(domain: Domain) -> Iterator[tuple[str, str]]:
+    for parameters in (*domain.predicates.values(), *domain.functions.values()):
+        yield from parameters
+    for action in domain.actions:
+        yield from action.parameters
+    for rule in domain.derived:
+        yield from rule.parameters
+
+
+def duration_features(durations: Iterable[Formula]) -> frozenset[str]:
+    """A duration other than one ``=`` constraint is an inequality; a function in it is a numeric fluent."""
+    found = set()
+    for duration in durations:
+        parts = list(conjuncts(duration))
+        if len(parts) != 1 or not isinstance(parts[0], Comparison) or parts[0].op != "=":
+            found.add(DURATION_INEQUALITIES)
+        if any(isinstance(node, Fluent) for node in walk(duration)):
+            found.add(NUMERIC_FLUENTS)
+    return frozenset(found)
+
+
 def _problem_only_features(problem: Problem) -> frozenset[str]:
     found = set(condition_features([problem.goal]))
+    if any(type_name.startswith("(either") for type_name in problem.objects.values()):
+        found.add(EITHER_TYPES)
     if problem.constraints is not None:
         found |= {CONSTRAINTS} | condition_features([problem.constraints])
     if problem.timed_literals:

@@ -20,6 +20,11 @@ takes, its exit codes, its plan files) is its adapter's (``planners.py``):
 ``plan_task`` lets the planner ``check`` the problem before any work, and
 every run arrives as a :class:`RunOutcome` whose status the adapter already
 classified and whose ``reason`` says what the planner reported, in its terms.
+The default planner (``auto``) is chosen there too, by the problem's features.
+
+Nothing a planner can solve is refused: when our reader refuses the input
+(PDDL+, object fluents) or the relevance analysis cannot take it, the
+planner gets the full problem and the result says why it was not pruned.
 """
 
 from __future__ import annotations
@@ -31,18 +36,31 @@ from dataclasses import dataclass, field, fields
 from pathlib import Path
 from typing import Any
 
-from relevance_plan.errors import OutOfTimeError, UsageError
+from relevance_plan.errors import OutOfTimeError, UnsupportedFeatureError, UsageError
 from relevance_plan.io import load_domain, load_problem, scratch_directory, write_text_atomic
 from relevance_plan.pddl.model import Problem
 from relevance_plan.pddl.plans import Plan, format_plan
 from relevance_plan.planning.outcome import PlannerStatus, RunOutcome
-from relevance_plan.planning.planners import DEFAULT_PLANNER, DEFAULT_PLANNER_CONFIG, make_planner
-from relevance_plan.planning.validate import ValidationResult, ValidationStatus, validate_plan
+from relevance_plan.planning.planners import (
+    DEFAULT_PLANNER,
+    DEFAULT_PLANNER_CONFIG,
+    Planner,
+    make_planner,
+    planner_for,
+    planner_for_unread,
+)
+from relevance_plan.planning.validate import (
+    ValidationResult,
+    ValidationStatus,
+    check_validators,
+    validate_plan,
+    validate_unread,
+)
 from relevance_plan.progress import ProgressCallback, ProgressEvent
 from relevance_plan.relevance.knowledge import KnowledgeModel
 from relevance_plan.relevance.prune import Selection, Thresholds, widen
 from relevance_plan.relevance.scorers import PlanningTask
-from relevance_plan.relevance.setup import ScoringOptions, score_problem
+from relevance_plan.relevance.setup import Scoring, ScoringOptions, score_problem
 
 METHODS = ("relevance", "pure", "random", "oracle")
 # Limits beyond these are typos: the watchdog's timer cannot even hold much more.
@@ -106,6 +124,8 @@ class PlanOptions:
             raise UsageError(f"widen factor must be in (0, 1), got {self.widen_factor}")
         if not 0.0 < self.first_share <= 1.0:
             raise UsageError(f"first share must be in (0, 1], got {self.first_share}")
+        if self.validators:
+            check_validators(self.validators)
 
     @property
     def scoring(self) -> ScoringOptions:
@@ -133,7 +153,7 @@ class AttemptStatus(enum.Enum):
     The planner's statuses are spelled as :class:`PlannerStatus` spells them (a test checks it).
     """
 
-    SOLVED = "solved"  # a plan, valid on the original problem (or not validated: an engine's own verdict)
+    SOLVED = "solved"  # a plan, valid on the original problem (or not validated: --validator none)
     PLAN_INVALID = "plan-invalid"
     PLAN_UNAVAILABLE = "plan-unavailable"  # a plan, but no validator could run
     PLAN_OUT_OF_TIME = "plan-out-of-time"  # a plan, but validating it ran out of time
@@ -175,7 +195,7 @@ class Attempt:
     @property
     def status(self) -> AttemptStatus:
         if self.outcome.status is PlannerStatus.SOLVED and self.validation is not None:
-            return AttemptStatus.SOLVED if self.validation.valid else _VALIDATION_FAILURE[self.validation.status]
+            return AttemptStatus.SOLVED if self.validation.accepted else _VALIDATION_FAILURE[self.validation.status]
         return AttemptStatus(self.outcome.status.value)
 
 
@@ -200,6 +220,8 @@ class PlanResult:
     scorer: str | None = None
     log_tail: str = ""  # the last planner's log tail when it failed
     problem: Problem | None = field(default=None, repr=False)  # the original problem (for the user's spelling)
+    unpruned_reason: str = ""  # why the input could not be pruned at all (reader or analysis refused it)
+    planner_choice: str = ""  # why the default planner chose ``planner``
 
     def plan_text(self) -> str:
         """The plan in the IPC format, object names in the user's spelling."""
@@ -208,6 +230,22 @@ class PlanResult:
     @property
     def valid(self) -> bool:
         return self.validation is not None and self.validation.valid
+
+    @property
+    def pruned(self) -> bool:
+        """Whether the first attempt planned on fewer objects than the problem has."""
+        return self.selection is not None and bool(self.selection.removed)
+
+    @property
+    def why_unpruned(self) -> str | None:
+        """Why every object was kept (None when the problem was pruned)."""
+        if self.pruned:
+            return None
+        if self.unpruned_reason:
+            return self.unpruned_reason
+        if self.selection is not None:
+            return self.selection.unpruned or None
+        return "method 'pure' plans the full problem" if self.method == "pure" else None
 
     @property
     def first_attempt_status(self) -> str:
@@ -220,9 +258,13 @@ class PlanResult:
         return {
             "method": self.method,
             "planner": self.planner,
+            "planner_choice": self.planner_choice or None,
             "status": self.status.value,
             "valid": self.valid,
+            "validation": self.validation.status.value if self.validation else None,
             "validator": self.validation.validator if self.validation else None,
+            "pruned": self.pruned,
+            "unpruned_reason": self.why_unpruned,
             "plan_length": len(self.plan) if self.status is PlanStatus.SOLVED else None,
             "plan_cost": self.plan_cost,
             "wall_time": round(self.wall_time, 4),
@@ -251,7 +293,10 @@ class PlanResult:
             ],
             "peak_memory_mb": round(self.peak_memory_mb, 1),
             "message": self.message,
-            "plan": [str(step) for step in self.plan.steps] if self.status is PlanStatus.SOLVED else [],
+            # one IPC line per step: a timed step keeps its start time and duration
+            "plan": [format_plan((s,)).splitlines()[0] for s in self.plan.steps]
+            if self.status is PlanStatus.SOLVED
+            else [],
         }
 
 
@@ -312,8 +357,9 @@ def run_attempts(
     current = selection
     while deadline is None or time.perf_counter() < deadline:
         number = len(attempts) + 1
-        full = current is None or len(current.kept) >= total
-        kept = total if full else len(current.kept)
+        pruned = current if current is not None and len(current.kept) < total else None
+        full = pruned is None
+        kept = total if pruned is None else len(pruned.kept)
         say(f"attempt {number}: the full problem" if full else f"attempt {number}: {kept} of {total} objects")
         final = full or not options.widen
         if deadline is None:
@@ -321,24 +367,24 @@ def run_attempts(
         else:
             remaining = max(deadline - time.perf_counter(), 0.5)
             limit = remaining if final else max(1.0, remaining * options.first_share)
-        outcome = call_planner(None if full else current, limit)
+        outcome = call_planner(pruned, limit)
         validation, validation_time = _validate(task, outcome, options, deadline)
         attempts.append(
             Attempt(
                 number,
                 kept,
-                None if full else current.thresholds,
+                None if pruned is None else pruned.thresholds,
                 len(extra),
                 outcome,
                 validation,
                 limit,
                 validation_time,
-                None if full else current,
+                pruned,
             )
         )
         if validation is not None and validation.status is not ValidationStatus.INVALID:
             break  # valid, out of time, or no validator could run: report it, never retry blindly
-        if not options.widen or full:
+        if not options.widen or pruned is None:
             break
         if outcome.status in _PLANNER_STOPS:
             break
@@ -347,7 +393,7 @@ def run_attempts(
             current = None
             continue
         widen_started = time.perf_counter()
-        current, extra = widen(current, options.widen_factor, extra, model, goal_filter)
+        current, extra = widen(pruned, options.widen_factor, extra, model, goal_filter)
         widening_time += time.perf_counter() - widen_started
     return attempts, widening_time
 
@@ -390,19 +436,20 @@ def plan_task(
         overran = _overran("reading the domain and problem", started, options, 0, ran_out=True)
         assert overran is not None  # ran_out: always a result
         return overran
+    except UnsupportedFeatureError as refused:
+        return _plan_unread(domain_path, problem_path, planner, refused, options, started, say)
     total = len(task.problem.objects)
+    planner, choice = planner_for(planner, task.domain, task.problem)
+    if choice:
+        say(f"planner: {planner.name} (auto: {choice})")
     planner.check(task.domain, task.problem)
     overran = _overran("reading the domain and problem", started, options, total)
     if overran is not None:
         return overran
 
-    scoring = None
     selection = None
-    if options.method != "pure":
-        scoring = score_problem(
-            task, options.scoring, method=options.method, domain_path=domain_path, problem_path=problem_path
-        )
-        say(f"scoring {total} objects with the {scoring.scorer} scorer")
+    scoring, unpruned = _score(task, options, domain_path, problem_path, say)
+    if scoring is not None:
         overran = _overran("scoring", started, options, total)
         if overran is not None:
             return overran
@@ -422,10 +469,7 @@ def plan_task(
         overran = _overran("pruning and closure", started, options, total)
         if overran is not None:
             return overran
-        say(
-            f"kept {len(selection.kept)} of {total} objects ({len(selection.restored)} restored by closure"
-            + (f", {len(selection.set_aside)} blocked alternatives set aside)" if selection.set_aside else ")")
-        )
+        _say_selection(say, selection, total)
     relevance_time = time.perf_counter() - started
 
     with scratch_directory() as scratch:
@@ -454,6 +498,69 @@ def plan_task(
         selection,
         planner=planner.name,
         scorer=scoring.scorer if scoring else None,
+        unpruned_reason=unpruned,
+        planner_choice=choice,
+    )
+
+
+def _score(
+    task: PlanningTask, options: PlanOptions, domain_path: str, problem_path: str, say: Callable[[str], None]
+) -> tuple[Scoring | None, str]:
+    """The objects' scores (None for 'pure'); None and the reason when the analysis does not take the input."""
+    if options.method == "pure":
+        return None, ""
+    try:
+        scoring = score_problem(
+            task, options.scoring, method=options.method, domain_path=domain_path, problem_path=problem_path
+        )
+    except UnsupportedFeatureError as refused:
+        unpruned = f"the relevance analysis does not take this input: {refused.message}"
+        say(f"pruned: no ({unpruned}); planning the full problem")
+        return None, unpruned
+    say(f"scoring {len(task.problem.objects)} objects with the {scoring.scorer} scorer")
+    return scoring, ""
+
+
+def _say_selection(say: Callable[[str], None], selection: Selection, total: int) -> None:
+    say(
+        f"kept {len(selection.kept)} of {total} objects ({len(selection.restored)} restored by closure"
+        + (f", {len(selection.set_aside)} blocked alternatives set aside)" if selection.set_aside else ")")
+    )
+    if not selection.removed:
+        say(f"pruned: no ({selection.unpruned})")
+
+
+def _plan_unread(
+    domain_path: str,
+    problem_path: str,
+    planner: Planner,
+    refused: UnsupportedFeatureError,
+    options: PlanOptions,
+    started: float,
+    say: Callable[[str], None],
+) -> PlanResult:
+    """Input our reader refuses (PDDL+, object fluents): the planner gets the full problem, unpruned;
+    only validators that read the files themselves can check its plan."""
+    planner, choice = planner_for_unread(planner, refused)
+    unpruned = f"our reader refuses the input: {refused}"
+    say(
+        f"pruned: no ({unpruned}); planning the full problem with {planner.name}"
+        + (f" (auto: {choice})" if choice else "")
+    )
+    deadline = None if options.timeout is None else started + options.timeout
+    limit = None if deadline is None else max(deadline - time.perf_counter(), 0.5)
+    outcome = planner.run(domain_path, problem_path, time_limit=limit, memory_limit_mb=options.memory_limit_mb)
+    validation, validation_time = None, 0.0
+    if outcome.solved:
+        begun = time.perf_counter()
+        until = None if deadline is None else time.monotonic() + max(deadline - begun, 0.5)
+        validation = validate_unread(
+            domain_path, problem_path, outcome.plan, refused.message, options.validators, until
+        )
+        validation_time = time.perf_counter() - begun
+    attempt = Attempt(1, 0, None, 0, outcome, validation, limit, validation_time)
+    return summarise(
+        None, options, [attempt], started, 0.0, None, planner.name, unpruned_reason=unpruned, planner_choice=choice
     )
 
 
@@ -473,7 +580,7 @@ def _overran(step: str, started: float, options: PlanOptions, total: int, ran_ou
 
 
 def summarise(
-    task: PlanningTask,
+    task: PlanningTask | None,
     options: PlanOptions,
     attempts: Sequence[Attempt],
     started: float,
@@ -481,10 +588,14 @@ def summarise(
     selection: Selection | None,
     planner: str = DEFAULT_PLANNER,
     scorer: str | None = None,
+    unpruned_reason: str = "",
+    planner_choice: str = "",
 ) -> PlanResult:
-    """The result of a run of attempts: the plan of the last attempt if it validated, else why not."""
-    total = len(task.problem.objects)
-    common = dict(
+    """The result of a run of attempts: the plan of the last attempt if it validated, else why not.
+
+    ``task`` is None for input our reader refuses (no objects to count)."""
+    total = len(task.problem.objects) if task is not None else 0
+    common: dict[str, Any] = dict(
         method=options.method,
         attempts=tuple(attempts),
         wall_time=time.perf_counter() - started,
@@ -496,7 +607,9 @@ def summarise(
         peak_memory_mb=max((a.outcome.peak_memory_mb for a in attempts), default=0.0),
         planner=planner,
         scorer=scorer,
-        problem=task.problem,
+        problem=task.problem if task is not None else None,
+        unpruned_reason=unpruned_reason,
+        planner_choice=planner_choice,
     )
     if not attempts:
         return PlanResult(status=PlanStatus.OUT_OF_TIME, message="no time left for planning", **common)
@@ -511,14 +624,15 @@ def summarise(
 def _validated(last: Attempt, common: dict) -> PlanResult:
     """The result when the last attempt found a plan: what its validation on the original said."""
     validation = last.validation
-    if validation is not None and validation.valid:
+    if validation is not None and validation.accepted:
         plan = last.outcome.plan
+        checked = f"validated on the original problem ({validation.validator})"
         return PlanResult(
             status=PlanStatus.SOLVED,
             plan=plan,
             plan_cost=last.outcome.plan_cost,
             validation=validation,
-            message=f"plan of {len(plan)} steps validated on the original problem ({validation.validator})",
+            message=f"plan of {len(plan)} steps {checked if validation.valid else 'NOT validated (--validator none)'}",
             **common,
         )
     if validation is not None and validation.status is ValidationStatus.OUT_OF_TIME:

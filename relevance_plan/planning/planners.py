@@ -8,10 +8,13 @@ time, out of memory, input error, configuration error, crash — with its
 exit code explained in its own terms and the log tail).  ``PLANNERS`` maps a
 kind to its adapter; a planner is named ``KIND`` or ``KIND:ARGUMENT``:
 
+- ``auto`` (the default) — the installed planner that takes what the problem
+  uses, chosen by its features: ``auto.py``;
 - ``fast-downward`` — Fast Downward from up-fast-downward (``--planner-config``
   chooses its alias or search): ``fast_downward.py``;
+- ``lpg`` — the LPG-td binary of up-lpg (temporal and numeric PDDL 2.1): ``lpg.py``;
 - ``up:NAME`` — a one-shot planner installed for unified-planning
-  (``up:pyperplan``, ``up:symk``, ``up:lpg``, ...), run in a child process so
+  (``up:aries``, ``up:tamer``, ``up:enhsp``, ``up:pyperplan``, ``up:symk``, ...), run in a child process so
   that its time limit holds and a hung engine can be killed: ``up_engines.py``;
 - ``cmd:TEMPLATE`` — any external planner: a command template with
   ``{domain}``, ``{problem}`` and optionally ``{plan}``, split into an
@@ -28,13 +31,15 @@ from typing import Protocol
 
 from relevance_plan import errors
 from relevance_plan.pddl.model import Domain, Problem
-from relevance_plan.planning import fast_downward
+from relevance_plan.planning import auto, fast_downward, lpg
+from relevance_plan.planning.auto import AutoPlanner
 from relevance_plan.planning.command import CommandPlanner
 from relevance_plan.planning.fast_downward import FastDownwardPlanner
+from relevance_plan.planning.lpg import LpgPlanner
 from relevance_plan.planning.outcome import RunOutcome
 from relevance_plan.planning.up_engines import UnifiedPlanningPlanner
 
-DEFAULT_PLANNER = fast_downward.NAME
+DEFAULT_PLANNER = auto.NAME
 DEFAULT_PLANNER_CONFIG = fast_downward.DEFAULT_CONFIG
 
 
@@ -63,28 +68,48 @@ class Planner(Protocol):
 
 
 PLANNERS: dict[str, Callable[[str, str], Planner]] = {
+    auto.NAME: lambda argument, config: AutoPlanner(config),
     fast_downward.NAME: lambda argument, config: FastDownwardPlanner(config),
+    lpg.NAME: lambda argument, config: LpgPlanner(),
     "up": lambda argument, config: UnifiedPlanningPlanner(argument),
     "cmd": lambda argument, config: CommandPlanner(argument),
 }
 
 # Kinds named without an argument.
-_PLAIN = frozenset({fast_downward.NAME})
+_PLAIN = frozenset({auto.NAME, fast_downward.NAME, lpg.NAME})
 
 
 def make_planner(name: str, config: str = DEFAULT_PLANNER_CONFIG, check: bool = False) -> Planner:
-    """The planner called ``name`` (``fast-downward``, ``up:NAME`` or ``cmd:TEMPLATE``).
+    """The planner called ``name`` (``auto``, ``fast-downward``, ``lpg``, ``up:NAME`` or ``cmd:TEMPLATE``).
 
     With ``check``, also verify that it can run (engine installed, executable
     found, template complete) — a front end does this once, before any work.
     """
     kind, _, argument = name.partition(":")
     if kind not in PLANNERS or (kind in _PLAIN) == bool(argument):
-        raise errors.UsageError(f"unknown planner '{name}' (choose from: fast-downward, up:NAME, cmd:TEMPLATE)")
+        raise errors.UsageError(
+            f"unknown planner '{name}' (choose from: auto, fast-downward, lpg, up:NAME, cmd:TEMPLATE)"
+        )
     planner = PLANNERS[kind](argument, config)
     if check:
         planner.check_installed()
     return planner
+
+
+def planner_for(planner: Planner, domain: Domain, problem: Problem) -> tuple[Planner, str]:
+    """The planner that runs on this problem, and why: ``auto`` chooses by its features; any other is itself."""
+    if isinstance(planner, AutoPlanner):
+        choice = planner.choose(domain, problem)
+        return choice.planner, choice.reason
+    return planner, ""
+
+
+def planner_for_unread(planner: Planner, refused: errors.UnsupportedFeatureError) -> tuple[Planner, str]:
+    """The planner for input our reader refuses (it is planned unpruned); ``auto`` chooses by the refusal."""
+    if isinstance(planner, AutoPlanner):
+        choice = planner.choose_unread(refused)
+        return choice.planner, choice.reason
+    return planner, ""
 
 
 def split_planner_names(text: str) -> tuple[str, ...]:

@@ -4,10 +4,12 @@ Run as ``python -m relevance_plan.planning.up_child ENGINE DOMAIN PROBLEM PLAN V
 by ``up_engines.UnifiedPlanningPlanner``, inside its own session so that the
 parent's watchdog can kill it (and whatever the engine started) at once.
 The plan is written to PLAN in the IPC format with the names of the PDDL
-files; the engine's verdict, the name of its ``PlanGenerationResultStatus``,
+files (a time-triggered plan as timed lines ``t: (action args) [d]``, the
+duration left out for an instantaneous action); the engine's verdict, the name of its ``PlanGenerationResultStatus``,
 to VERDICT (the parent maps it through ``up_engines.UP_STATUS``).  When
 unified-planning cannot read the files there is no verdict and the exit code
-is ``up_engines.CHILD_CANNOT_READ``.
+is ``up_engines.CHILD_CANNOT_READ``.  A quality metric the engine does not
+take is dropped before solving: it ranks plans, and any plan is still one.
 """
 
 from __future__ import annotations
@@ -33,6 +35,7 @@ def main(arguments: list[str]) -> int:
         print(f"unified-planning cannot read the problem: {error}", file=sys.stderr)
         return CHILD_CANNOT_READ
     timeout = None if timeout_text == "none" else float(timeout_text)
+    _drop_metric_it_cannot_take(shortcuts.get_environment(), engine, problem)
     try:
         with shortcuts.OneshotPlanner(name=engine, problem_kind=problem.kind) as planner:
             result = planner.solve(problem, timeout=timeout)
@@ -43,15 +46,37 @@ def main(arguments: list[str]) -> int:
         verdict = result.status.name
         print(f"{engine}: {verdict}")
         if result.status in POSITIVE_OUTCOMES and result.plan is not None:
-            lines = []
-            for step in result.plan.actions:
-                names = [step.action.name] + [str(parameter) for parameter in step.actual_parameters]
-                lines.append("(" + " ".join(names) + ")")
             with open(plan_path, "w", encoding="utf-8") as stream:
-                stream.write("\n".join(lines) + "\n")
+                stream.write("".join(line + "\n" for line in _plan_lines(result.plan)))
     with open(verdict_path, "w", encoding="utf-8") as stream:
         stream.write(verdict + "\n")
     return 0
+
+
+def _drop_metric_it_cannot_take(environment, engine: str, problem) -> None:
+    try:
+        takes = environment.factory.engine(engine).supports(problem.kind)
+    except Exception:  # an unknown engine is reported by the solve below
+        return
+    if problem.quality_metrics and not takes:
+        problem.clear_quality_metrics()
+        if environment.factory.engine(engine).supports(problem.kind):
+            print(f"{engine}: solving without the metric, which it does not take", file=sys.stderr)
+
+
+def _plan_lines(plan) -> list[str]:
+    """The plan in the IPC format: timed lines for a time-triggered plan, else one action per line."""
+
+    def step(instance) -> str:
+        return "(" + " ".join([instance.action.name, *(str(p) for p in instance.actual_parameters)]) + ")"
+
+    timed = getattr(plan, "timed_actions", None)
+    if timed is None:
+        return [step(instance) for instance in plan.actions]
+    lines = []
+    for start, instance, duration in timed:
+        lines.append(f"{float(start)!r}: {step(instance)}" + ("" if duration is None else f" [{float(duration)!r}]"))
+    return lines
 
 
 if __name__ == "__main__":

@@ -14,6 +14,8 @@ child's parent here and the ``relevance[...]`` meta-engine
 
 from __future__ import annotations
 
+import os
+import shutil
 import sys
 import tempfile
 from dataclasses import dataclass
@@ -22,7 +24,8 @@ from pathlib import Path
 from relevance_plan import errors
 from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.plans import Plan
-from relevance_plan.planning.features import STRIPS, TYPING, refuse_unsupported
+from relevance_plan.planning import features as f
+from relevance_plan.planning.features import refuse_unsupported
 from relevance_plan.planning.outcome import PlannerStatus, RunOutcome, parse_ipc_plan, signal_reason
 from relevance_plan.planning.process import log_tail, read_log, run_process_group, watchdog_deadline
 
@@ -58,10 +61,52 @@ CHILD_CANNOT_READ = 3  # unified-planning cannot read the PDDL files: an input e
 # LPG plans with them), so refusing by them would refuse problems an engine
 # solves; an engine not listed here decides for itself (the child reports
 # UNSUPPORTED_PROBLEM).
+# unified-planning's PDDL reader takes no derived predicates, either types,
+# preferences or constraints, and turns every function into a real-valued
+# fluent; the engines' limits below were found by trying (docs/planners.md).
+_UP_READ = frozenset(
+    {f.STRIPS, f.TYPING, f.HIERARCHICAL_TYPING, f.NEGATIVE_PRECONDITIONS, f.DISJUNCTIVE_PRECONDITIONS, f.EQUALITY}
+)
+_TEMPORAL = frozenset({f.DURATIVE_ACTIONS, f.DURATION_INEQUALITIES, f.TIMED_INITIAL_LITERALS})
+_QUANTIFIED = frozenset({f.EXISTENTIAL_PRECONDITIONS, f.UNIVERSAL_PRECONDITIONS, f.CONDITIONAL_EFFECTS})
 ENGINE_FEATURES: dict[str, frozenset[str]] = {
     # "Pyperplan supports the following PDDL fragment: STRIPS without action costs" (its credits).
-    "pyperplan": frozenset({STRIPS, TYPING}),
+    "pyperplan": frozenset({f.STRIPS, f.TYPING, f.HIERARCHICAL_TYPING}),
+    # Aries: temporal and action costs; no real-valued fluents (so no other numbers from PDDL), no quantifiers.
+    "aries": _UP_READ | _TEMPORAL | {f.ACTION_COSTS},
+    # Tamer: temporal and numeric; its type checker rejects a type below another declared type.
+    "tamer": (_UP_READ - {f.HIERARCHICAL_TYPING}) | _TEMPORAL | {f.NUMERIC_FLUENTS, f.ACTION_COSTS},
+    # ENHSP: numeric planning with ADL; no durative actions.
+    "enhsp": _UP_READ | _QUANTIFIED | {f.NUMERIC_FLUENTS, f.ACTION_COSTS},
 }
+
+# Engines that start a Java virtual machine (``java`` from PATH).
+JAVA_ENGINES = frozenset({"enhsp", "enhsp-any", "enhsp-opt"})
+JAVA_HINT = "install a Java runtime (Debian: apt-get install default-jre-headless)"
+
+
+def java_runtime() -> Path | None:
+    """The ``java`` executable: on PATH, else under JAVA_HOME."""
+    found = shutil.which("java")
+    if found is not None:
+        return Path(found)
+    home = os.environ.get("JAVA_HOME")
+    candidate = Path(home) / "bin" / "java" if home else None
+    if candidate is not None and candidate.is_file() and os.access(candidate, os.X_OK):
+        return candidate
+    return None
+
+
+def java_environment(engine: str) -> dict[str, str] | None:
+    """The child's environment: PATH reaching ``java`` when the engine needs it (None: inherit)."""
+    if engine not in JAVA_ENGINES:
+        return None
+    java = java_runtime()
+    if java is None:
+        raise errors.PlannerError(f"up:{engine} needs a Java runtime, and none was found: {JAVA_HINT}")
+    if shutil.which("java") is not None:
+        return None
+    return {**os.environ, "PATH": os.pathsep.join([str(java.parent), os.environ.get("PATH", "")])}
 
 
 def installed_up_engines() -> tuple[str, ...]:
@@ -135,8 +180,10 @@ class UnifiedPlanningPlanner:
         if self.engine not in installed_up_engines():
             raise errors.UsageError(
                 f"unified-planning engine '{self.engine}' is not installed (installed: "
-                f"{', '.join(installed_up_engines()) or 'none'}); {PLANNERS_EXTRA_HINT} adds pyperplan, symk and lpg"
+                f"{', '.join(installed_up_engines()) or 'none'}); {PLANNERS_EXTRA_HINT} adds"
+                " pyperplan, symk, lpg, aries, tamer and enhsp"
             )
+        java_environment(self.engine)
 
     def check(self, domain: Domain, problem: Problem) -> None:
         refuse_unsupported(self.name, self.features, domain, problem)
@@ -152,6 +199,7 @@ class UnifiedPlanningPlanner:
         return "; ".join(parts)
 
     def run(self, domain_path, problem_path, *, time_limit, memory_limit_mb) -> RunOutcome:
+        environment = java_environment(self.engine)
         with tempfile.TemporaryDirectory(prefix="relevance-plan-up-") as tmp:
             workdir = Path(tmp)
             plan_path = workdir / PLAN_FILE
@@ -172,6 +220,7 @@ class UnifiedPlanningPlanner:
                 watchdog_deadline(time_limit),
                 what=self.name,
                 program=sys.executable,
+                env=environment,
                 memory_limit_mb=memory_limit_mb,
             )
             parsed = parse_ipc_plan(plan_path.read_text(errors="replace")) if plan_path.is_file() else None

@@ -1,0 +1,182 @@
+"""The ``auto`` planner: the installed planner that takes what the problem uses.
+
+The problem's features (``features.py``) name a family, and the family an
+order of planners; the first one installed that takes every feature runs:
+
+- classical (ADL, action costs, derived predicates): Fast Downward;
+- temporal (durative actions, timed initial literals): ``lpg``, then
+  ``up:aries``, then ``up:tamer``;
+- numeric without time: ``up:enhsp`` (with a Java runtime), then ``lpg``,
+  then ``up:tamer``;
+- PDDL+ (processes, events: our reader refuses them, so they are planned
+  unpruned): ``up:enhsp``.
+
+When none installed takes the problem, the refusal is one line naming what
+to install.  Whether a planner is installed is decided without importing
+it (unified-planning takes seconds to import).
+"""
+
+from __future__ import annotations
+
+import importlib.util
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+from relevance_plan.errors import UnsupportedFeatureError
+from relevance_plan.io import load_domain, load_problem
+from relevance_plan.pddl.model import Domain, Problem
+from relevance_plan.planning import features as f
+from relevance_plan.planning.fast_downward import DEFAULT_CONFIG, FastDownwardPlanner
+from relevance_plan.planning.lpg import FEATURES as LPG_FEATURES
+from relevance_plan.planning.lpg import INSTALL_HINT as LPG_HINT
+from relevance_plan.planning.lpg import LpgPlanner, lpg_binary
+from relevance_plan.planning.outcome import RunOutcome
+from relevance_plan.planning.up_engines import ENGINE_FEATURES, JAVA_ENGINES, JAVA_HINT, UnifiedPlanningPlanner
+from relevance_plan.planning.up_engines import java_runtime as find_java
+
+if TYPE_CHECKING:
+    from relevance_plan.planning.planners import Planner
+
+NAME = "auto"
+PDDL_PLUS = "PDDL+"  # how the reader's refusals of processes, events and continuous effects name them
+
+
+@dataclass(frozen=True)
+class Candidate:
+    name: str  # as --planner takes it
+    takes: frozenset[str]
+    installed: Callable[[], bool]
+    install: Callable[[], str]  # what to install, when it is not installed
+    make: Callable[[str], Planner]  # Fast Downward's configuration -> the planner
+
+
+def has_module(name: str) -> bool:
+    return importlib.util.find_spec(name) is not None
+
+
+def _engine(engine: str, package: str) -> Candidate:
+    needs_java = engine in JAVA_ENGINES
+
+    def installed() -> bool:
+        return has_module(package.replace("-", "_")) and (not needs_java or find_java() is not None)
+
+    def install() -> str:
+        missing = [] if has_module(package.replace("-", "_")) else [f"pip install {package}"]
+        if needs_java and find_java() is None:
+            missing.append(JAVA_HINT)
+        return ", and ".join(missing)
+
+    return Candidate(
+        f"up:{engine}", ENGINE_FEATURES[engine], installed, install, lambda _: UnifiedPlanningPlanner(engine)
+    )
+
+
+FAST_DOWNWARD = Candidate("fast-downward", f.CLASSICAL, lambda: True, str, lambda config: FastDownwardPlanner(config))
+LPG = Candidate("lpg", LPG_FEATURES, lambda: lpg_binary() is not None, lambda: LPG_HINT, lambda _: LpgPlanner())
+ARIES = _engine("aries", "up-aries")
+TAMER = _engine("tamer", "up-tamer")
+ENHSP = _engine("enhsp", "up-enhsp")
+
+# Each family's planners, in order of preference.
+CLASSICAL_ORDER = (FAST_DOWNWARD,)
+TEMPORAL_ORDER = (LPG, ARIES, TAMER)
+NUMERIC_ORDER = (ENHSP, LPG, TAMER)
+PDDL_PLUS_ORDER = (ENHSP,)
+EVERY = (FAST_DOWNWARD, LPG, ENHSP, ARIES, TAMER)
+
+
+@dataclass(frozen=True)
+class Choice:
+    planner: Planner
+    reason: str  # why it was chosen, for the progress line and the JSON
+
+
+def family(uses: frozenset[str]) -> tuple[str, Sequence[Candidate]]:
+    """The problem's family, and its planners in order of preference."""
+    if uses <= f.CLASSICAL:
+        return "classical", CLASSICAL_ORDER
+    if uses & f.TEMPORAL:
+        return "temporal", TEMPORAL_ORDER
+    if f.NUMERIC_FLUENTS in uses:
+        return "numeric", NUMERIC_ORDER
+    return "other", EVERY
+
+
+def choose(uses: frozenset[str], config: str, where: str | None = None) -> Choice:
+    """The first installed planner of the family that takes ``uses``; else the refusal naming what to install."""
+    kind, order = family(uses)
+    fitting = list(dict.fromkeys(c for c in (*order, *EVERY) if uses <= c.takes))
+    shown = ", ".join(sorted(uses - {f.STRIPS, f.TYPING})) or "strips"
+    beyond = ", ".join(sorted(uses - f.CLASSICAL))
+    for candidate in fitting:
+        if candidate.installed():
+            return Choice(candidate.make(config), f"a {kind} problem" + (f" ({beyond})" if beyond else ""))
+    if fitting:
+        raise UnsupportedFeatureError(
+            f"no installed planner takes what this problem uses ({shown}): {fitting[0].install()}", path=where
+        )
+    raise UnsupportedFeatureError(
+        f"no planner this tool knows takes what this problem uses ({shown});"
+        " give your own with --planner cmd:'PLANNER {domain} {problem}'",
+        path=where,
+    )
+
+
+def choose_unread(refused: UnsupportedFeatureError, config: str) -> Choice:
+    """For input our reader refuses: ENHSP for PDDL+; anything else only a planner the user names can take."""
+    if PDDL_PLUS in refused.message:
+        for candidate in PDDL_PLUS_ORDER:
+            if candidate.installed():
+                return Choice(candidate.make(config), "a PDDL+ problem")
+        raise UnsupportedFeatureError(
+            f"{refused.message}, and no installed planner takes it: {PDDL_PLUS_ORDER[0].install()}",
+            path=refused.path,
+            line=refused.line,
+        )
+    raise UnsupportedFeatureError(
+        f"{refused.message}; no planner this tool knows takes it: give your own with"
+        " --planner cmd:'PLANNER {domain} {problem}'",
+        path=refused.path,
+        line=refused.line,
+    )
+
+
+@dataclass(frozen=True)
+class AutoPlanner:
+    config: str = DEFAULT_CONFIG  # Fast Downward's, when it is the one chosen
+    name: str = NAME
+
+    @property
+    def features(self) -> frozenset[str]:
+        """What the installed planners take between them."""
+        return frozenset().union(*(c.takes for c in EVERY if c.installed()))
+
+    def check_installed(self) -> None:
+        """Fast Downward is always there; what else is needed depends on the problem (see ``check``)."""
+
+    def check(self, domain: Domain, problem: Problem) -> None:
+        self.choose(domain, problem).planner.check(domain, problem)
+
+    def choose(self, domain: Domain, problem: Problem) -> Choice:
+        uses = f.problem_features(domain, problem)
+        path = domain.path if f.domain_features(domain) == uses else problem.path
+        return choose(uses, self.config, path)
+
+    def choose_unread(self, refused: UnsupportedFeatureError) -> Choice:
+        return choose_unread(refused, self.config)
+
+    def version(self) -> str:
+        installed = [c.make(self.config) for c in EVERY if c.installed()]
+        return "auto: " + "; ".join(planner.version() for planner in installed)
+
+    def run(self, domain_path, problem_path, *, time_limit, memory_limit_mb) -> RunOutcome:
+        """Choose from the files, then run the chosen planner (front ends that read the problem choose first)."""
+        try:
+            domain = load_domain(domain_path)
+            problem = load_problem(problem_path, domain)
+        except UnsupportedFeatureError as refused:
+            choice = self.choose_unread(refused)
+        else:
+            choice = self.choose(domain, problem)
+        return choice.planner.run(domain_path, problem_path, time_limit=time_limit, memory_limit_mb=memory_limit_mb)
