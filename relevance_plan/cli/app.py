@@ -17,11 +17,13 @@ from relevance_plan.cli.batch import COMMANDS as BATCH_COMMANDS
 from relevance_plan.cli.common import (
     fail,
     handle_errors,
+    keep_work_option,
     method_option,
     planning_options,
     scoring_options,
     take_plan_options,
     take_scoring,
+    write_plan_files,
 )
 from relevance_plan.cli.watch import watch
 from relevance_plan.errors import UsageError
@@ -288,12 +290,14 @@ def prune(domain_path, problem_path, output, as_json, **values):
     type=click.Path(dir_okay=False),
     help="Where the plan goes ('-': standard output).",
 )
+@keep_work_option
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON object.")
 @click.option("--quiet", "-q", is_flag=True, help="No progress messages.")
 @handle_errors
-def plan(domain_path, problem_path, method, plan_file, as_json, quiet, **values):
+def plan(domain_path, problem_path, method, plan_file, keep_work, as_json, quiet, **values):
     """Prune, plan, validate on the original problem, widen until solved."""
-    from relevance_plan.io import STDOUT, write_output
+    from relevance_plan.io import STDOUT
+    from relevance_plan.planning.compile import check_keep_directory
     from relevance_plan.planning.planners import make_planner
 
     if plan_file == STDOUT and as_json:
@@ -301,13 +305,15 @@ def plan(domain_path, problem_path, method, plan_file, as_json, quiet, **values)
 
     options = take_plan_options(values, method)
     make_planner(options.planner, options.planner_config, check=True)
+    if keep_work is not None:
+        check_keep_directory(keep_work, (domain_path, problem_path, plan_file))
     say = None if (quiet or as_json) else (lambda event: click.echo(f"... {event.message}", err=True))
-    result = plan_task(domain_path, problem_path, options, progress=say)
-    if result.status is PlanStatus.SOLVED:
-        write_output(plan_file, result.plan_text())
+    result = plan_task(domain_path, problem_path, options, progress=say, keep_work=keep_work)
+    numbered = write_plan_files(result, plan_file) if result.status is PlanStatus.SOLVED else []
     if as_json:
         data = result.to_json()
         data["plan_file"] = str(plan_file) if result.status is PlanStatus.SOLVED else None
+        data["plan_files"] = numbered
         click.echo(json.dumps(data, indent=2))
     else:
         # With the plan on stdout, the summary goes to stderr.

@@ -14,6 +14,7 @@ VAL's ``Validate`` is the one other program the tool starts (:func:`run_val`).
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import os
 import shutil
@@ -56,6 +57,19 @@ def watchdog_deadline(time_limit: float | None, grace: float | None = None) -> f
     if time_limit is None:
         return None
     return time_limit + (grace if grace is not None else max(DEFAULT_WATCHDOG_GRACE, 0.1 * time_limit))
+
+
+@contextlib.contextmanager
+def work_directory(keep: str | None, prefix: str):
+    """Where one planner run works: ``keep`` (created if needed, left behind), else a temporary
+    directory removed afterwards."""
+    if keep is not None:
+        path = Path(keep)
+        path.mkdir(parents=True, exist_ok=True)
+        yield path
+        return
+    with tempfile.TemporaryDirectory(prefix=prefix) as tmp:
+        yield Path(tmp)
 
 
 def read_log(workdir: Path) -> str:

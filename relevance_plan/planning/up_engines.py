@@ -15,7 +15,6 @@ child's parent here and the ``relevance[...]`` meta-engine
 from __future__ import annotations
 
 import sys
-import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -24,7 +23,7 @@ from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.plans import Plan
 from relevance_plan.planning.features import STRIPS, TYPING, refuse_unsupported
 from relevance_plan.planning.outcome import PlannerStatus, RunOutcome, parse_ipc_plan, signal_reason
-from relevance_plan.planning.process import log_tail, read_log, run_process_group, watchdog_deadline
+from relevance_plan.planning.process import log_tail, read_log, run_process_group, watchdog_deadline, work_directory
 
 KIND = "up"
 PLANNERS_EXTRA_HINT = "pip install 'relevance-plan[planners]'"
@@ -121,7 +120,11 @@ def _read_verdict(workdir: Path) -> str | None:
 
 @dataclass(frozen=True)
 class UnifiedPlanningPlanner:
+    """An engine has no command line, so it takes no ``--planner-args``; ``--keep-work`` keeps
+    the child's plan, verdict and log."""
+
     engine: str
+    work_dir: str | None = None
 
     @property
     def name(self) -> str:
@@ -152,8 +155,7 @@ class UnifiedPlanningPlanner:
         return "; ".join(parts)
 
     def run(self, domain_path, problem_path, *, time_limit, memory_limit_mb) -> RunOutcome:
-        with tempfile.TemporaryDirectory(prefix="relevance-plan-up-") as tmp:
-            workdir = Path(tmp)
+        with work_directory(self.work_dir, prefix="relevance-plan-up-") as workdir:
             plan_path = workdir / PLAN_FILE
             command = [
                 sys.executable,
