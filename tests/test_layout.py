@@ -35,6 +35,7 @@ OTHER_VALUES = {
     "human": "alice",
     "seed": 3,
     "validators": ("up",),
+    "planner_args": ("--translate-options", "--keep-unimportant-variables"),
 }
 
 

@@ -365,15 +365,19 @@ def test_unified_planning_engine_in_a_child_process(request, files):
 
 
 @pytest.mark.planner
-def test_pyperplan_solves_a_classic_problem_and_refuses_features_it_lacks(gripper_files, coffee_files):
+def test_pyperplan_solves_a_classic_problem_and_refuses_features_it_lacks(gripper_files, tmp_path):
     pytest.importorskip("up_pyperplan")
     domain, problem = gripper_files
     result = plan_task(domain, problem, PlanOptions(planner="up:pyperplan", timeout=120))
     assert result.status is PlanStatus.SOLVED, result.message
-    assert result.valid
-    # the coffee domain has negative preconditions, which pyperplan cannot take: refused before any attempt
-    domain, problem = coffee_files
-    with pytest.raises(UnsupportedFeatureError, match="up:pyperplan does not take negative-preconditions") as refused:
+    assert result.valid and result.compilations == ()
+    # durative actions, which pyperplan cannot take and nothing compiles away: refused before any attempt
+    # (negative preconditions are compiled away: see test_planner_options.py)
+    (tmp_path / "timed").mkdir()
+    domain, problem = tmp_path / "timed" / "domain.pddl", tmp_path / "timed" / "problem.pddl"
+    domain.write_text(DURATIVE_DOMAIN)
+    problem.write_text(DURATIVE_PROBLEM)
+    with pytest.raises(UnsupportedFeatureError, match="up:pyperplan does not take durative-actions") as refused:
         plan_task(domain, problem, PlanOptions(planner="up:pyperplan", timeout=120))
     assert "\n" not in str(refused.value) and str(domain) in str(refused.value)
 

@@ -88,6 +88,7 @@ FINGERPRINT_RULES: dict[str, str] = {
     "method": "method",
     "planner": "always",
     "planner_config": "always",
+    "planner_args": "derived",  # when given (keys of runs without any stay as they were)
     "timeout": "always",
     "memory_limit_mb": "always",
     "validators": "derived",  # the validators that will actually run
@@ -129,6 +130,8 @@ def config_fingerprint(options: PlanOptions, domain_path: str | None, problem_pa
         if rule == "always" or (rule == "pruning" and pruning):
             config[name] = _plain(getattr(options, name))
     config["validators"] = list(options.validators) if options.validators else list(default_validators())
+    if options.planner_args:
+        config["planner_args"] = list(options.planner_args)
     if pruning:
         config["tau_class"] = float(options.thresholds.tau_class)
         config["tau_element"] = float(options.thresholds.tau_element)

@@ -17,11 +17,13 @@ from relevance_plan.cli.batch import COMMANDS as BATCH_COMMANDS
 from relevance_plan.cli.common import (
     fail,
     handle_errors,
+    keep_work_option,
     method_option,
     planning_options,
     scoring_options,
     take_plan_options,
     take_scoring,
+    write_plan_files,
 )
 from relevance_plan.cli.exits import ToolGroup
 from relevance_plan.cli.watch import watch
@@ -319,12 +321,14 @@ def prune(domain_path, problem_path, output, pass_through, as_json, **values):
     type=click.Path(dir_okay=False),
     help="Where the plan goes ('-': standard output).",
 )
+@keep_work_option
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON object.")
 @click.option("--quiet", "-q", is_flag=True, help="No progress messages.")
 @handle_errors
-def plan(domain_path, problem_path, method, plan_file, as_json, quiet, **values):
+def plan(domain_path, problem_path, method, plan_file, keep_work, as_json, quiet, **values):
     """Prune, plan, validate on the original problem, widen until solved."""
-    from relevance_plan.io import names_stdout, write_output
+    from relevance_plan.io import names_stdout
+    from relevance_plan.planning.compile import check_keep_directory
     from relevance_plan.planning.planners import make_planner
 
     to_stdout = names_stdout(plan_file)
@@ -333,12 +337,14 @@ def plan(domain_path, problem_path, method, plan_file, as_json, quiet, **values)
 
     options = take_plan_options(values, method)
     make_planner(options.planner, options.planner_config, check=True)
-    result = _plan_within_timeout(domain_path, problem_path, options, quiet or as_json)
-    if result.status is PlanStatus.SOLVED:
-        write_output(plan_file, result.plan_text())
+    if keep_work is not None:
+        check_keep_directory(keep_work, (domain_path, problem_path, plan_file))
+    result = _plan_within_timeout(domain_path, problem_path, options, quiet or as_json, keep_work)
+    numbered = write_plan_files(result, plan_file) if result.status is PlanStatus.SOLVED else []
     if as_json:
         data = result.to_json()
         data["plan_file"] = str(plan_file) if result.status is PlanStatus.SOLVED else None
+        data["plan_files"] = numbered
         click.echo(json.dumps(data, indent=2))
     else:
         # With the plan on stdout, the summary goes to stderr.
@@ -354,7 +360,7 @@ def plan(domain_path, problem_path, method, plan_file, as_json, quiet, **values)
 DEADLINE_SLACK = 0.8
 
 
-def _plan_within_timeout(domain_path, problem_path, options, quiet: bool) -> PlanResult:
+def _plan_within_timeout(domain_path, problem_path, options, quiet: bool, keep_work=None) -> PlanResult:
     """``plan_task`` stopped (exit 20) if it runs past ``--timeout``, naming the step it was in."""
     from relevance_plan.signals import DEADLINE_SIGNAL, Interrupted, deadline_alarm
 
@@ -368,7 +374,7 @@ def _plan_within_timeout(domain_path, problem_path, options, quiet: bool) -> Pla
     timeout = options.timeout
     try:
         with deadline_alarm(None if timeout is None else timeout + DEADLINE_SLACK):
-            return plan_task(domain_path, problem_path, options, progress=progress)
+            return plan_task(domain_path, problem_path, options, progress=progress, keep_work=keep_work)
     except Interrupted as error:
         if error.signum != DEADLINE_SIGNAL:
             raise

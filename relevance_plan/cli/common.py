@@ -11,13 +11,15 @@ from __future__ import annotations
 
 import errno
 import functools
+import shlex
 import sys
+from pathlib import Path
 
 import click
 
-from relevance_plan.errors import InputFileError, RelevancePlanError
+from relevance_plan.errors import InputFileError, RelevancePlanError, UsageError, ValidatorUnavailableError
 from relevance_plan.exitcodes import ExitCode, exit_code_for_error
-from relevance_plan.planning.loop import METHODS, PlanOptions
+from relevance_plan.planning.loop import METHODS, PlanOptions, PlanResult
 from relevance_plan.planning.planners import DEFAULT_PLANNER, DEFAULT_PLANNER_CONFIG
 from relevance_plan.planning.validate import VALIDATOR_CHOICES
 from relevance_plan.relevance.prune import DEFAULT_TAU, Thresholds
@@ -133,11 +135,11 @@ def take_scoring(values: dict) -> ScoringOptions:
 
 # --------------------------------------------------------------------------- planning
 
-PLANNING_KEYS = ("planner", "planner_config", "timeout", "memory_limit", "no_widen", "validators")
+PLANNING_KEYS = ("planner", "planner_config", "planner_args", "timeout", "memory_limit", "no_widen", "validators")
 
 
 def planning_options(per_job: bool = False):
-    """--planner --planner-config --timeout --memory-limit --no-widen --validator."""
+    """--planner --planner-config --planner-args --timeout --memory-limit --no-widen --validator."""
     per = "each job (relevance + planning)" if per_job else "the whole run"
 
     def group(command):
@@ -157,6 +159,15 @@ def planning_options(per_job: bool = False):
                     default=DEFAULT_PLANNER_CONFIG,
                     show_default=True,
                     help="Fast Downward alias, registered name, or search string.",
+                ),
+                click.option(
+                    "--planner-args",
+                    "planner_args",
+                    default=None,
+                    metavar="'ARGS'",
+                    help="Arguments appended to the planner's command line, split as a shell would (never run by "
+                    "one); Fast Downward: after the inputs, e.g. '--translate-options "
+                    "--invariant-generation-max-candidates 1000'.",
                 ),
                 click.option("--timeout", type=float, default=120.0, show_default=True, help=f"Seconds for {per}."),
                 click.option(
@@ -184,9 +195,14 @@ def planning_options(per_job: bool = False):
 
 
 def take_plan_options(values: dict, method: str = "relevance") -> PlanOptions:
-    """PlanOptions from a command's parsed values (scoring and planning keys are removed)."""
+    """PlanOptions from a command's parsed values (scoring and planning keys are removed).
+
+    What can be checked before planning is checked here: the pass-through
+    arguments split, and a validator asked for by name can run.
+    """
     scoring = take_scoring(values)
     taken = {key: values.pop(key) for key in PLANNING_KEYS}
+    check_validators(taken["validators"])
     return PlanOptions.from_scoring(
         scoring,
         method=method,
@@ -196,7 +212,53 @@ def take_plan_options(values: dict, method: str = "relevance") -> PlanOptions:
         memory_limit_mb=taken["memory_limit"],
         widen=not taken["no_widen"],
         validators=tuple(taken["validators"]) or None,
+        planner_args=split_planner_args(taken["planner_args"]),
     )
+
+
+def split_planner_args(text: str | None) -> tuple[str, ...]:
+    """``--planner-args`` as an argument list (shell quoting rules, no shell)."""
+    if not text:
+        return ()
+    try:
+        return tuple(shlex.split(text))
+    except ValueError as error:
+        raise UsageError(f"--planner-args cannot be split: {error}") from None
+
+
+def check_validators(names) -> None:
+    """A validator asked for by name must be able to run; found before planning, not after."""
+    from relevance_plan.planning.validate import val_available
+
+    if "val" in (names or ()) and not val_available():
+        raise ValidatorUnavailableError("--validator val: VAL's Validate is not on PATH (install VAL, or drop it)")
+
+
+keep_work_option = click.option(
+    "--keep-work",
+    "keep_work",
+    type=click.Path(file_okay=False),
+    default=None,
+    metavar="DIR",
+    help="Keep each attempt's planner files in DIR/attempt-N (Fast Downward's output.sas, sas_plan* and log; "
+    "a command's plan file and log; compiled PDDL); never overwrites.",
+)
+
+
+def write_plan_files(result: PlanResult, plan_file: str) -> list[str]:
+    """The plan in ``plan_file``; an anytime planner's plans also in ``plan_file.1``, ``.2``, ... in the
+    order found, like Fast Downward's driver (the last is the plan).  Returns the numbered files."""
+    from relevance_plan.io import names_stdout, write_output
+    from relevance_plan.pddl.plans import format_plan
+
+    write_output(plan_file, result.plan_text())
+    if names_stdout(plan_file):
+        return []
+    display = result.problem.display if result.problem is not None else None
+    written = []
+    for number, plan in enumerate(result.plans, start=1):
+        written.append(write_output(Path(f"{plan_file}.{number}"), format_plan(plan, display)))
+    return written
 
 
 method_option = click.option("--method", type=click.Choice(METHODS), default="relevance", show_default=True)

@@ -36,14 +36,17 @@ the inner planner unchanged.
 from __future__ import annotations
 
 import dataclasses
+import math
 import time
-from collections.abc import Callable, Set
+from collections.abc import Callable, Iterator, Set
 from dataclasses import dataclass
+from functools import cached_property
 from typing import IO
 
 import unified_planning as up
 from unified_planning.engines import Engine, MetaEngine, OptimalityGuarantee
-from unified_planning.engines.mixins import OneshotPlannerMixin
+from unified_planning.engines.mixins import AnytimePlannerMixin, OneshotPlannerMixin
+from unified_planning.engines.mixins.anytime_planner import AnytimeGuarantee
 from unified_planning.engines.plan_validator import SequentialPlanValidator
 from unified_planning.engines.results import (
     POSITIVE_OUTCOMES,
@@ -53,7 +56,7 @@ from unified_planning.engines.results import (
     PlanGenerationResultStatus,
     ValidationResultStatus,
 )
-from unified_planning.exceptions import UPValueError
+from unified_planning.exceptions import UPUsageError, UPValueError
 from unified_planning.io import PDDLWriter
 from unified_planning.model import Problem, ProblemKind
 from unified_planning.model.problem_kind_versioning import LATEST_PROBLEM_KIND_VERSION
@@ -66,8 +69,9 @@ from relevance_plan.pddl.plans import Plan, PlanStep
 from relevance_plan.planning.loop import Attempt, PlanOptions, PlanStatus, run_attempts, summarise
 from relevance_plan.planning.outcome import PlannerStatus, RunOutcome
 from relevance_plan.planning.up_engines import UP_STATUS, up_status_name
+from relevance_plan.planning.validate import validate_plan
 from relevance_plan.relevance.knowledge import KnowledgeModel, load_model
-from relevance_plan.relevance.prune import DEFAULT_TAU, Selection, Thresholds
+from relevance_plan.relevance.prune import DEFAULT_TAU, Selection, Thresholds, widen
 from relevance_plan.relevance.scorers import SCORERS, PlanningTask
 from relevance_plan.relevance.setup import Scoring, resolve_model, score_problem
 
@@ -107,12 +111,14 @@ def relevance_supported_kind() -> ProblemKind:
     return kind
 
 
-class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin):
+class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin, AnytimePlannerMixin):
     """Relevance-based object pruning in front of any oneshot planner.
 
     Instantiated by the factory as ``relevance[<planner>]``; keyword options
     are described in the module docstring.  The plan returned has always been
-    validated on the original problem.
+    validated on the original problem.  When the inner planner is also an
+    anytime planner, so is this engine (``AnytimePlanner(name=...)``): it
+    yields each better plan, validated on the original problem.
     """
 
     def __init__(
@@ -150,6 +156,7 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin):
         )
         MetaEngine.__init__(self, *args, **kwargs)
         OneshotPlannerMixin.__init__(self)
+        AnytimePlannerMixin.__init__(self)
 
     # ---------------------------------------------------------------- engine API
 
@@ -178,12 +185,16 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin):
     def _supports(problem_kind: ProblemKind, engine: type[Engine]) -> bool:
         return problem_kind <= RelevanceMetaEngine._supported_kind(engine)
 
+    @staticmethod
+    def ensures(anytime_guarantee: AnytimeGuarantee) -> bool:
+        # Each plan yielded is better than the last; pruning may hide the optimal plan.
+        return anytime_guarantee == AnytimeGuarantee.INCREASING_QUALITY
+
     @classmethod
     def get_credits(cls, **kwargs):
-        inner = getattr(cls, "_engine_class", None)
-        if inner is None:
-            return None
-        return inner.get_credits(**{key: value for key, value in kwargs.items() if key not in OWN_PARAMS})
+        """None: the factory prints no credits banner for this engine, whatever the environment (the
+        inner planner's credits are its own class's ``get_credits()``)."""
+        return None
 
     # ---------------------------------------------------------------- solving
 
@@ -196,6 +207,7 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin):
     ) -> PlanGenerationResult:
         assert isinstance(problem, Problem)
         assert isinstance(self.engine, OneshotPlannerMixin)
+        problem.environment.credits_stream = None
         started = time.perf_counter()
         options = dataclasses.replace(self._options, timeout=timeout)
         messages: list[str] = []
@@ -266,6 +278,34 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin):
             status, found if status in POSITIVE_OUTCOMES else None, self.name, metrics=metrics, log_messages=logs
         )
 
+    def _get_solutions(
+        self,
+        problem: up.model.AbstractProblem,
+        timeout: float | None = None,
+        output_stream: IO[str] | None = None,
+    ) -> Iterator[PlanGenerationResult]:
+        """Each better plan, validated on the original problem, then the final result.
+
+        The attempts are those of ``solve``: the first selection, widened while
+        an attempt yields no valid plan, the whole problem last.  The inner
+        planner's stream of plans for the first attempt that yields a valid one
+        is followed to its end; its improving plans are yielded as
+        ``INTERMEDIATE`` results.
+        """
+        assert isinstance(problem, Problem)
+        if not self.engine.is_anytime_planner():
+            raise UPUsageError(f"{self.engine.name} is not an anytime planner, so neither is {self.name}")
+        problem.environment.credits_stream = None
+        options = dataclasses.replace(self._options, timeout=timeout)
+        warning_lines: list[str] = []
+        try:
+            stage = _RelevanceStage.build(problem, self._choose_model, options, warning_lines)
+        except RelevancePlanError as error:
+            warning_lines.append(f"relevance stage skipped, planning on the whole problem: {error}")
+            stage = None
+        search = _AnytimeSearch(self, problem, stage, options, output_stream, warning_lines)
+        yield from search.run()
+
     def _choose_model(self, domain: Domain) -> KnowledgeModel | None:
         """The ``model`` param, else a shipped model for the ``domain`` param or the exported name."""
         if self._model is not None:
@@ -273,6 +313,17 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin):
         # The writer names the domain '<problem name>-domain'.
         names = [self._domain] if self._domain is not None else [domain.name.removesuffix("-domain")]
         return resolve_model(domain, None, None, names)
+
+
+def _anytime_when_inner_is(cls) -> bool:
+    """Anytime exactly when the inner planner is (``relevance[fast-downward]`` is, ``relevance[pyperplan]`` not)."""
+    inner = getattr(cls, "_engine_class", None)
+    return inner is not None and inner.is_anytime_planner()
+
+
+# unified-planning's engine metaclass marks every class built on AnytimePlannerMixin as anytime,
+# after the class body: this engine decides per inner planner, so its answer is set here.
+RelevanceMetaEngine.is_anytime_planner = classmethod(_anytime_when_inner_is)  # type: ignore[method-assign]
 
 
 # --------------------------------------------------------------------------- the relevance stage
@@ -318,6 +369,23 @@ class _RelevanceStage:
             return frozenset()
         return frozenset(self.up_names[name] for name in selection.removed)
 
+    @cached_property
+    def _reader_names(self) -> tuple[dict, dict]:
+        """UP names -> the names our reader gave the exported problem (objects, actions)."""
+        objects = {up: reader for reader, up in self.up_names.items()}
+        actions = {up: reader for reader, up in self.action_names.items()}
+        return objects, actions
+
+    def reader_plan(self, plan: SequentialPlan) -> Plan:
+        """A plan of the original UP problem in our reader's names (what the validators check)."""
+        objects, actions = self._reader_names
+        return Plan(
+            tuple(
+                PlanStep(actions[step.action.name], tuple(objects[p.object().name] for p in step.actual_parameters))
+                for step in plan.actions
+            )
+        )
+
 
 class _InnerPlanner:
     """The inner engine as the attempt loop's planner: restrict, solve, turn the result into a RunOutcome."""
@@ -331,9 +399,6 @@ class _InnerPlanner:
         self.last_result: PlanGenerationResult | None = None
         self.lifted: dict[int, SequentialPlan] = {}  # attempt number -> the plan on the original problem
         self.calls = 0
-        # UP names -> the names our reader gave the exported problem (what the validator checks)
-        self.reader_objects = {up: reader for reader, up in stage.up_names.items()} if stage else {}
-        self.reader_actions = {up: reader for reader, up in stage.action_names.items()} if stage else {}
 
     def __call__(self, selection: Selection | None, limit: float | None) -> RunOutcome:
         self.calls += 1
@@ -351,7 +416,8 @@ class _InnerPlanner:
                 status = PlannerStatus.PLANNER_CRASH  # a solution without a plan we can read
             else:
                 self.lifted[self.calls] = lifted
-                steps = Plan(tuple(self._reader_step(step) for step in lifted.actions))
+                # without our reader's view there is nothing to validate with: the caller uses UP's validator
+                steps = self.stage.reader_plan(lifted) if self.stage is not None else Plan()
         return RunOutcome(
             status=status,
             exit_code=None,
@@ -365,11 +431,113 @@ class _InnerPlanner:
             optimal=result.status is PlanGenerationResultStatus.SOLVED_OPTIMALLY,
         )
 
-    def _reader_step(self, step: ActionInstance) -> PlanStep:
+
+class _AnytimeSearch:
+    """The anytime engine's attempts: the inner planner's stream of plans on each object set,
+    each plan mapped back and validated on the original problem, only better ones passed on."""
+
+    def __init__(self, meta, problem: Problem, stage: _RelevanceStage | None, options: PlanOptions, output, warnings):
+        self.meta = meta
+        self.problem = problem
+        self.stage = stage
+        self.options = options
+        self.output = output
+        self.warnings = warnings
+        self.started = time.perf_counter()
+        self.best: SequentialPlan | None = None
+        self.best_measure = math.inf  # plan cost on the original problem (its length without costs)
+        self.attempts = 0
+        self.last_status: PlanGenerationResultStatus | None = None
+        self.last_full = False
+        self.kept = len(problem.all_objects)
+
+    def run(self) -> Iterator[PlanGenerationResult]:
+        total = len(self.problem.all_objects)
+        selection = self.stage.scoring.first_selection(self.options.narrows_first) if self.stage else None
+        extra: frozenset = frozenset()
+        while True:
+            full = selection is None or len(selection.kept) >= total
+            limit = self._limit(final=full or not self.options.widen)
+            if limit is not None and limit <= 0:
+                break
+            self.attempts += 1
+            self.last_full = full
+            self.kept = total if full else len(selection.kept)
+            found = yield from self._attempt(None if full else selection, limit)
+            if found or full or not self.options.widen:
+                break
+            assert self.stage is not None and selection is not None
+            goal_filter = self.options.goal_filter and self.options.narrows_first
+            selection, extra = widen(selection, self.options.widen_factor, extra, self.stage.scoring.model, goal_filter)
+        yield self._final()
+
+    def _limit(self, final: bool) -> float | None:
+        if self.options.timeout is None:
+            return None
+        remaining = self.options.timeout - (time.perf_counter() - self.started)
+        if final or remaining <= 0:
+            return remaining
+        return max(1.0, remaining * self.options.first_share)
+
+    def _attempt(self, selection: Selection | None, limit: float | None):
+        removed = self.stage.removed_objects(selection) if self.stage is not None else frozenset()
+        target = restrict_problem(self.problem, removed)
+        found = False
+        for result in self.meta.engine.get_solutions(target, timeout=limit, output_stream=self.output):
+            self.last_status = result.status
+            lifted = lift_plan(result.plan, self.problem) if result.plan is not None else None
+            measure = self._measure(lifted) if lifted is not None else None
+            if lifted is None or measure is None or measure >= self.best_measure:
+                continue
+            self.best, self.best_measure, found = lifted, measure, True
+            yield self._result(PlanGenerationResultStatus.INTERMEDIATE, f"plan of {len(lifted.actions)} steps")
+        return found
+
+    def _measure(self, plan: SequentialPlan) -> float | None:
+        """The plan's cost (else length) if it is valid on the original problem, else None."""
         if self.stage is None:
-            return PlanStep("")  # nothing to validate with: the caller uses UP's own validator
-        arguments = tuple(self.reader_objects[p.object().name] for p in step.actual_parameters)
-        return PlanStep(self.reader_actions[step.action.name], arguments)
+            validator = SequentialPlanValidator(environment=self.problem.environment)
+            valid = validator.validate(self.problem, plan).status is ValidationResultStatus.VALID
+            return float(len(plan.actions)) if valid else None
+        task = self.stage.scoring.task
+        deadline = None
+        if self.options.timeout is not None:
+            remaining = self.options.timeout - (time.perf_counter() - self.started)
+            deadline = time.monotonic() + max(remaining, 0.5)
+        validation = validate_plan(
+            task.domain, task.problem, self.stage.reader_plan(plan), self.options.validators, deadline
+        )
+        if not validation.valid:
+            return None
+        return validation.cost if validation.cost is not None else float(len(plan.actions))
+
+    def _final(self) -> PlanGenerationResult:
+        if self.best is not None:
+            proven = self.last_full and self.last_status is PlanGenerationResultStatus.SOLVED_OPTIMALLY
+            status = (
+                PlanGenerationResultStatus.SOLVED_OPTIMALLY if proven else PlanGenerationResultStatus.SOLVED_SATISFICING
+            )
+            return self._result(status, "best plan validated on the original problem")
+        if not self.last_full or self.last_status is None or self.last_status in POSITIVE_OUTCOMES:
+            # a pruned problem's failure says nothing about the user's problem
+            return self._result(PlanGenerationResultStatus.TIMEOUT, "out of time before a valid plan was found")
+        return self._result(
+            self.last_status, f"the inner planner reported {self.last_status.name} on the whole problem"
+        )
+
+    def _result(self, status: PlanGenerationResultStatus, summary: str) -> PlanGenerationResult:
+        total = len(self.problem.all_objects)
+        metrics = {
+            "objects_total": str(total),
+            "objects_kept": str(self.kept),
+            "attempts": str(self.attempts),
+            "scorer": self.stage.scoring.scorer if self.stage is not None else "none",
+            "engine_internal_time": f"{time.perf_counter() - self.started:.4f}",
+        }
+        logs = [LogMessage(LogLevel.WARNING, f"{ENGINE_NAME}: {text}") for text in self.warnings]
+        logs.append(LogMessage(LogLevel.INFO, f"{ENGINE_NAME}: {summary}; kept {self.kept} of {total} objects"))
+        plan = self.best if status in POSITIVE_OUTCOMES or status is PlanGenerationResultStatus.INTERMEDIATE else None
+        return PlanGenerationResult(status, plan, self.meta.name, metrics=metrics, log_messages=logs)
 
 
 def up_status(status: PlannerStatus) -> PlanGenerationResultStatus:
@@ -529,8 +697,12 @@ def register_relevance_engine(environment: up.environment.Environment | None = N
     Planners added to the factory later get their ``relevance[...]`` variant
     automatically.  Calling this again does nothing.  Equivalent ``up.ini``
     section: ``[meta-engine relevance]`` (see ``docs/up.ini.example``).
+    The environment's credits stream is set to None: unified-planning's
+    credits banner does not print.
     """
-    factory = up.environment.get_environment(environment).factory
+    environment = up.environment.get_environment(environment)
+    environment.credits_stream = None  # no credits banners where this engine is used
+    factory = environment.factory
     if any(name.startswith(f"{ENGINE_NAME}[") for name in factory.engines):
         return
     factory.add_meta_engine(ENGINE_NAME, __name__, RelevanceMetaEngine.__name__)

@@ -1,8 +1,9 @@
 """The ``cmd:TEMPLATE`` adapter: any external planner, from a command template.
 
 The template holds ``{domain}``, ``{problem}`` and optionally ``{plan}``; it
-is split into an argument list (never run by a shell).  With ``{plan}`` the
-planner writes its plan to that file, else the plan is read from its output.
+is split into an argument list (never run by a shell); ``--planner-args``
+come after the template's arguments.  With ``{plan}`` the planner writes its
+plan to that file, else the plan is read from its output.
 Nothing is known about the planner: it takes whatever PDDL it takes, and
 any exit code but 0 is a crash.
 """
@@ -13,7 +14,6 @@ import hashlib
 import re
 import shlex
 import shutil
-import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -29,6 +29,7 @@ from relevance_plan.planning.process import (
     read_plan_file,
     run_process_group,
     watchdog_deadline,
+    work_directory,
 )
 
 KIND = "cmd"
@@ -64,6 +65,8 @@ def exit_reason(program: str, run: ProcessRun, plan: Plan | None) -> str:
 @dataclass(frozen=True)
 class CommandPlanner:
     template: str
+    extra_arguments: tuple[str, ...] = ()  # --planner-args, after the template's arguments
+    work_dir: str | None = None  # --keep-work: run here and leave the plan file and the log
 
     @property
     def name(self) -> str:
@@ -119,8 +122,7 @@ class CommandPlanner:
 
     def run(self, domain_path, problem_path, *, time_limit, memory_limit_mb) -> RunOutcome:
         uses_plan_file = "{plan}" in self.template
-        with tempfile.TemporaryDirectory(prefix="relevance-plan-cmd-") as tmp:
-            workdir = Path(tmp)
+        with work_directory(self.work_dir, prefix="relevance-plan-cmd-") as workdir:
             plan_path = workdir / PLAN_FILE
             values = {
                 "domain": str(Path(domain_path).absolute()),
@@ -128,6 +130,7 @@ class CommandPlanner:
                 "plan": str(plan_path),
             }
             command = [_PLACEHOLDER_RE.sub(lambda m: values[m.group(1)], part) for part in self.arguments]
+            command += self.extra_arguments
             command[0] = self.executable()
             run = run_process_group(
                 command,

@@ -14,6 +14,8 @@ watchdog backs them up with wall-clock time.
 
 from __future__ import annotations
 
+import ast
+import difflib
 import functools
 import hashlib
 import importlib.util
@@ -22,7 +24,7 @@ import os
 import re
 import signal
 import sys
-import tempfile
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -32,7 +34,7 @@ from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.plans import Plan, read_plan
 from relevance_plan.planning.features import CLASSICAL, refuse_unsupported
 from relevance_plan.planning.outcome import PlannerStatus, RunOutcome, signal_reason
-from relevance_plan.planning.process import log_tail, read_log, run_process_group, watchdog_deadline
+from relevance_plan.planning.process import log_tail, read_log, run_process_group, watchdog_deadline, work_directory
 
 NAME = "fast-downward"
 FAST_DOWNWARD_ENV = "RELEVANCE_PLAN_FAST_DOWNWARD"
@@ -167,7 +169,8 @@ def fast_downward_version() -> str:
 def planner_arguments(config: str) -> tuple[str, ...]:
     """Driver arguments for a named config, a raw search string or an alias.
 
-    Unknown aliases are left to the driver, which rejects them (exit 36).
+    An alias is checked against the driver's list by :func:`check_config`;
+    a search string is left to the planner, which rejects a bad one (exit 33).
     """
     if config in PLANNER_CONFIGS:
         return PLANNER_CONFIGS[config]
@@ -176,6 +179,59 @@ def planner_arguments(config: str) -> tuple[str, ...]:
     if "(" in config:
         return ("--search", config)
     return ("--alias", config)
+
+
+@functools.cache
+def _driver_aliases(driver: Path) -> frozenset[str] | None:
+    """The aliases and portfolios the driver knows, read from its ``driver/aliases.py`` and
+    ``driver/portfolios/`` without running it (None: not there, or not in the usual shape)."""
+    package = driver.parent / "driver"
+    try:
+        tree = ast.parse((package / "aliases.py").read_text(encoding="utf-8"))
+    except (OSError, SyntaxError, ValueError):
+        return None
+    names = set()
+    for node in ast.walk(tree):
+        for target in node.targets if isinstance(node, ast.Assign) else ():
+            # ALIASES["name"] = [...]
+            if (
+                isinstance(target, ast.Subscript)
+                and isinstance(target.value, ast.Name)
+                and target.value.id == "ALIASES"
+                and isinstance(target.slice, ast.Constant)
+                and isinstance(target.slice.value, str)
+            ):
+                names.add(target.slice.value)
+    portfolios = package / "portfolios"
+    if portfolios.is_dir():
+        # the driver names a portfolio after its file, underscores as hyphens
+        names.update(path.stem.replace("_", "-") for path in portfolios.glob("*.py"))
+    return frozenset(names) or None
+
+
+def driver_aliases() -> frozenset[str] | None:
+    """The aliases the installed driver accepts; None when they cannot be read (the driver decides)."""
+    try:
+        driver = find_fast_downward()
+    except errors.PlannerError:
+        return None
+    return _driver_aliases(driver)
+
+
+def check_config(config: str) -> None:
+    """Refuse, before any planning, an alias the driver does not know (a search string is the driver's)."""
+    arguments = planner_arguments(config)
+    if config in PLANNER_CONFIGS or arguments[0] != "--alias":
+        return
+    known = driver_aliases()
+    if known is None or config in known:
+        return
+    close = difflib.get_close_matches(config, [*PLANNER_CONFIGS, *sorted(known)], n=1)
+    hint = f" (did you mean '{close[0]}'?)" if close else ""
+    raise errors.UsageError(
+        f"unknown --planner-config '{config}'{hint}: not one of {', '.join(PLANNER_CONFIGS)}, nor an alias of"
+        f" the {WHOSE} driver (see its --show-aliases); a search string has parentheses"
+    )
 
 
 def _split_driver_options(arguments: tuple[str, ...]) -> tuple[list[str], list[str]]:
@@ -196,14 +252,31 @@ def _build_command(
     config: str,
     time_limit: float | None,
     memory_limit_mb: int | None,
+    extra_arguments: Sequence[str] = (),
+    keep_sas_file: bool = False,
 ) -> list[str]:
+    """The driver's command line; ``extra_arguments`` (``--planner-args``) come last, after the inputs and
+    the configuration's component options (e.g. ``--translate-options --invariant-generation-max-candidates 0``)."""
     limits: list[str] = []
     if time_limit is not None:
         limits += ["--overall-time-limit", f"{math.ceil(time_limit)}s"]
     if memory_limit_mb is not None:
         limits += ["--overall-memory-limit", f"{memory_limit_mb}M"]
     before, after = _split_driver_options(planner_arguments(config))
-    return [python, str(driver), "--plan-file", PLAN_FILE, *limits, *before, str(domain), str(problem), *after]
+    if keep_sas_file:
+        before.append("--keep-sas-file")
+    return [
+        python,
+        str(driver),
+        "--plan-file",
+        PLAN_FILE,
+        *limits,
+        *before,
+        str(domain),
+        str(problem),
+        *after,
+        *extra_arguments,
+    ]
 
 
 # --------------------------------------------------------------------------- what it leaves behind
@@ -211,7 +284,7 @@ def _build_command(
 
 def _plan_paths(workdir: Path) -> list[Path]:
     """Plan files, best last: sas_plan, or sas_plan.1, .2, ... for anytime configs."""
-    numbered = []
+    numbered: list[tuple[int, Path]] = []
     for path in workdir.iterdir():
         match = _ANYTIME_PLAN_RE.fullmatch(path.name)
         if match:
@@ -222,17 +295,26 @@ def _plan_paths(workdir: Path) -> list[Path]:
     return [single] if single.is_file() else []
 
 
-def read_best_plan(workdir: Path) -> Plan | None:
-    """The last complete plan file (a cost line ends it), or None if there is none."""
-    for path in reversed(_plan_paths(workdir)):
+def read_plans(workdir: Path) -> tuple[tuple[Plan, ...], bool]:
+    """Every complete plan file (a cost line ends it) in the order written, best last, and whether
+    they were numbered (an anytime configuration's ``sas_plan.N``)."""
+    paths = _plan_paths(workdir)
+    plans = []
+    for path in paths:
         text = path.read_text(errors="replace")
         if _PLAN_COST_RE.search(text) is None:
             continue  # cut off mid-write by a kill; an earlier plan may be whole
         try:
-            return read_plan(text)
+            plans.append(read_plan(text))
         except PlanFormatError:
             continue
-    return None
+    return tuple(plans), any(path.name != PLAN_FILE for path in paths)
+
+
+def read_best_plan(workdir: Path) -> Plan | None:
+    """The last complete plan file, or None if there is none."""
+    plans, _ = read_plans(workdir)
+    return plans[-1] if plans else None
 
 
 def _last_float(pattern: re.Pattern[str], text: str) -> float | None:
@@ -341,6 +423,8 @@ def run_fast_downward(
     python: str = sys.executable,
     driver_limits: bool = True,
     watchdog_grace: float | None = None,
+    extra_arguments: Sequence[str] = (),
+    work_dir: str | None = None,
 ) -> RunOutcome:
     """Run Fast Downward on one task and classify the result.
 
@@ -348,6 +432,9 @@ def run_fast_downward(
     grace period (default max(5 s, 10 %)), to a wall-clock watchdog that
     kills the whole process group.  ``driver_limits=False`` withholds the
     limits from the driver so that only the watchdog applies (for tests).
+    ``extra_arguments`` end the command line; ``work_dir`` is the directory
+    the driver works in and leaves its files in (default: a temporary one).
+    An anytime configuration's plans are all in the outcome's ``plans``.
     """
     domain = Path(domain_path).absolute()
     problem = Path(problem_path).absolute()
@@ -361,14 +448,22 @@ def run_fast_downward(
     driver = find_fast_downward()
     driver_time_limit = time_limit if driver_limits else None
     command = _build_command(
-        python, driver, domain, problem, config, driver_time_limit, memory_limit_mb if driver_limits else None
+        python,
+        driver,
+        domain,
+        problem,
+        config,
+        driver_time_limit,
+        memory_limit_mb if driver_limits else None,
+        extra_arguments,
+        keep_sas_file=work_dir is not None,
     )
-    with tempfile.TemporaryDirectory(prefix="relevance-plan-fd-") as tmp:
-        workdir = Path(tmp)
+    with work_directory(work_dir, prefix="relevance-plan-fd-") as workdir:
         deadline = watchdog_deadline(time_limit, watchdog_grace)
         run = run_process_group(command, workdir, deadline, what=WHOSE, program=driver)
         log = read_log(workdir)
-        plan = read_best_plan(workdir)
+        plans, numbered = read_plans(workdir)
+    plan = plans[-1] if plans else None
     killed = run.killed_by_watchdog
     memory_limited = driver_limits and memory_limit_mb is not None
     status = classify(run.exit_code, plan is not None, killed, log, run.cpu_time, driver_time_limit, memory_limited)
@@ -389,6 +484,7 @@ def run_fast_downward(
         process_group=run.process_group,
         raw_status=EXIT_CODES.get(run.exit_code, ("", status))[0],
         reason=exit_reason(run.exit_code, killed),
+        plans=plans if numbered else (),
     )
 
 
@@ -425,6 +521,8 @@ def check_names(domain: Domain, problem: Problem) -> None:
 class FastDownwardPlanner:
     config: str = DEFAULT_CONFIG
     name: str = NAME
+    extra_arguments: tuple[str, ...] = ()  # --planner-args, after the inputs
+    work_dir: str | None = None  # --keep-work: run here and leave the files
 
     @property
     def features(self) -> frozenset[str]:
@@ -432,10 +530,12 @@ class FastDownwardPlanner:
         return CLASSICAL
 
     def check_installed(self) -> None:
-        """Nothing to check up front: up-fast-downward is a dependency of the tool, and a missing or
-        overridden driver is reported when the first run looks for it."""
+        """The configuration: an alias must be one the driver knows.  up-fast-downward is a dependency
+        of the tool, and a missing or overridden driver is reported when the first run looks for it."""
+        check_config(self.config)
 
     def check(self, domain: Domain, problem: Problem) -> None:
+        check_config(self.config)
         check_names(domain, problem)
         refuse_unsupported(WHOSE, self.features, domain, problem)
 
@@ -453,5 +553,11 @@ class FastDownwardPlanner:
 
     def run(self, domain_path, problem_path, *, time_limit, memory_limit_mb) -> RunOutcome:
         return run_fast_downward(
-            domain_path, problem_path, config=self.config, time_limit=time_limit, memory_limit_mb=memory_limit_mb
+            domain_path,
+            problem_path,
+            config=self.config,
+            time_limit=time_limit,
+            memory_limit_mb=memory_limit_mb,
+            extra_arguments=self.extra_arguments,
+            work_dir=self.work_dir,
         )

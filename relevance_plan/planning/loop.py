@@ -30,9 +30,10 @@ planner gets the full problem and the result says why it was not pruned.
 from __future__ import annotations
 
 import enum
+import os
 import time
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field, fields
+from dataclasses import dataclass, field, fields, replace
 from pathlib import Path
 from typing import Any
 
@@ -40,6 +41,7 @@ from relevance_plan.errors import OutOfTimeError, UnsupportedFeatureError, Usage
 from relevance_plan.io import load_domain, load_problem, scratch_directory, write_text_atomic
 from relevance_plan.pddl.model import Problem
 from relevance_plan.pddl.plans import Plan, format_plan
+from relevance_plan.planning.compile import prepare_planner, with_planner_args
 from relevance_plan.planning.outcome import PlannerStatus, RunOutcome
 from relevance_plan.planning.planners import (
     DEFAULT_PLANNER,
@@ -108,6 +110,7 @@ class PlanOptions:
     human: str | None = None
     seed: int = 0
     validators: tuple | None = None
+    planner_args: tuple[str, ...] = ()  # appended to the planner's command line (--planner-args)
 
     def __post_init__(self):
         if self.method not in METHODS:
@@ -222,6 +225,8 @@ class PlanResult:
     problem: Problem | None = field(default=None, repr=False)  # the original problem (for the user's spelling)
     unpruned_reason: str = ""  # why the input could not be pruned at all (reader or analysis refused it)
     planner_choice: str = ""  # why the default planner chose ``planner``
+    compilations: tuple[str, ...] = ()  # what was compiled away for the planner (planning.compile)
+    plans: tuple[Plan, ...] = ()  # an anytime planner's valid plans, in the order found (``plan`` is the last)
 
     def plan_text(self) -> str:
         """The plan in the IPC format, object names in the user's spelling."""
@@ -293,6 +298,8 @@ class PlanResult:
             ],
             "peak_memory_mb": round(self.peak_memory_mb, 1),
             "message": self.message,
+            "compilations": list(self.compilations),
+            "anytime_plans": [{"plan_length": len(plan), "plan_cost": plan.cost} for plan in self.plans],
             # one IPC line per step: a timed step keeps its start time and duration
             "plan": [format_plan((s,)).splitlines()[0] for s in self.plan.steps]
             if self.status is PlanStatus.SOLVED
@@ -368,7 +375,7 @@ def run_attempts(
             remaining = max(deadline - time.perf_counter(), 0.5)
             limit = remaining if final else max(1.0, remaining * options.first_share)
         outcome = call_planner(pruned, limit)
-        validation, validation_time = _validate(task, outcome, options, deadline)
+        outcome, validation, validation_time = _validate(task, outcome, options, deadline)
         attempts.append(
             Attempt(
                 number,
@@ -407,14 +414,27 @@ def _teller(progress: ProgressCallback | None) -> Callable[[str], None]:
 
 def _validate(
     task: PlanningTask, outcome: RunOutcome, options: PlanOptions, deadline: float | None
-) -> tuple[ValidationResult | None, float]:
+) -> tuple[RunOutcome, ValidationResult | None, float]:
+    """The outcome (an anytime run's: its valid plans only, the last valid one as its plan), and
+    the validation of its plan on the original problem."""
     if outcome.status is not PlannerStatus.SOLVED:
-        return None, 0.0
+        return outcome, None, 0.0
     started = time.perf_counter()
     # the validator's clock is time.monotonic(); the loop's deadline is on perf_counter()
     until = None if deadline is None else time.monotonic() + max(deadline - started, 0.5)
-    validation = validate_plan(task.domain, task.problem, outcome.plan, options.validators, until)
-    return validation, time.perf_counter() - started
+    if not outcome.plans:
+        validation = validate_plan(task.domain, task.problem, outcome.plan, options.validators, until)
+        return outcome, validation, time.perf_counter() - started
+    checked = [
+        (plan, validate_plan(task.domain, task.problem, plan, options.validators, until)) for plan in outcome.plans
+    ]
+    valid = tuple(plan for plan, validation in checked if validation.accepted)
+    if valid:
+        validation = next(validation for plan, validation in reversed(checked) if validation.accepted)
+        outcome = replace(outcome, plan=valid[-1], plan_cost=valid[-1].cost, plans=valid)
+    else:
+        validation = checked[-1][1]
+    return outcome, validation, time.perf_counter() - started
 
 
 def plan_task(
@@ -422,8 +442,12 @@ def plan_task(
     problem_path: str | Path,
     options: PlanOptions = PlanOptions(),
     progress: ProgressCallback | None = None,
+    keep_work: str | os.PathLike[str] | None = None,
 ) -> PlanResult:
-    """Run one method on one problem; the plan returned is always validated on the original."""
+    """Run one method on one problem; the plan returned is always validated on the original.
+
+    With ``keep_work``, each attempt's planner files stay in ``keep_work/attempt-N``.
+    """
     say = _teller(progress)
     started = time.perf_counter()
     domain_path, problem_path = str(domain_path), str(problem_path)
@@ -442,7 +466,8 @@ def plan_task(
     planner, choice = planner_for(planner, task.domain, task.problem)
     if choice:
         say(f"planner: {planner.name} (auto: {choice})")
-    planner.check(task.domain, task.problem)
+    # the planner's check; what it lacks and can be compiled away is compiled away at each attempt
+    prepared = prepare_planner(planner, task.domain, task.problem, problem_path, options.planner_args, keep_work, say)
     overran = _overran("reading the domain and problem", started, options, total)
     if overran is not None:
         return overran
@@ -478,7 +503,7 @@ def plan_task(
             target = problem_path
             if objects is not None:
                 target = str(write_text_atomic(Path(scratch) / f"pruned-{len(objects.kept)}.pddl", objects.text))
-            return planner.run(domain_path, target, time_limit=limit, memory_limit_mb=options.memory_limit_mb)
+            return prepared.run(domain_path, target, time_limit=limit, memory_limit_mb=options.memory_limit_mb)
 
         attempts, widening_time = run_attempts(
             task,
@@ -500,6 +525,7 @@ def plan_task(
         scorer=scoring.scorer if scoring else None,
         unpruned_reason=unpruned,
         planner_choice=choice,
+        compilations=prepared.compilations,
     )
 
 
@@ -542,6 +568,7 @@ def _plan_unread(
     """Input our reader refuses (PDDL+, object fluents): the planner gets the full problem, unpruned;
     only validators that read the files themselves can check its plan."""
     planner, choice = planner_for_unread(planner, refused)
+    planner = with_planner_args(planner, options.planner_args)
     unpruned = f"our reader refuses the input: {refused}"
     say(
         f"pruned: no ({unpruned}); planning the full problem with {planner.name}"
@@ -590,6 +617,7 @@ def summarise(
     scorer: str | None = None,
     unpruned_reason: str = "",
     planner_choice: str = "",
+    compilations: tuple[str, ...] = (),
 ) -> PlanResult:
     """The result of a run of attempts: the plan of the last attempt if it validated, else why not.
 
@@ -610,6 +638,7 @@ def summarise(
         problem=task.problem if task is not None else None,
         unpruned_reason=unpruned_reason,
         planner_choice=planner_choice,
+        compilations=compilations,
     )
     if not attempts:
         return PlanResult(status=PlanStatus.OUT_OF_TIME, message="no time left for planning", **common)
@@ -631,6 +660,7 @@ def _validated(last: Attempt, common: dict) -> PlanResult:
             status=PlanStatus.SOLVED,
             plan=plan,
             plan_cost=last.outcome.plan_cost,
+            plans=last.outcome.plans,
             validation=validation,
             message=f"plan of {len(plan)} steps {checked if validation.valid else 'NOT validated (--validator none)'}",
             **common,

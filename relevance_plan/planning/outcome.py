@@ -45,6 +45,8 @@ class RunOutcome:
     ``cpu_time`` and ``peak_memory_mb`` cover the processes the run reaped;
     ``translate_time`` and ``search_time`` are a planner's own reports, None
     if it gives none.  ``process_group`` is the run's (now dead) group id.
+    An anytime planner (Fast Downward's ``lama``) lists every plan it wrote
+    in ``plans``, each better than the one before.
     """
 
     status: PlannerStatus
@@ -64,6 +66,7 @@ class RunOutcome:
     raw_status: str = ""
     reason: str = ""
     optimal: bool = False  # the planner proved the plan optimal
+    plans: tuple[Plan, ...] = ()  # an anytime run's plans in the order found (``plan`` is the last); else empty
 
     @property
     def solved(self) -> bool:

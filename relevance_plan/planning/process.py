@@ -29,6 +29,7 @@ VAL's ``Validate`` is the one other program the tool starts (:func:`run_val`).
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import itertools
 import os
@@ -120,6 +121,19 @@ def read_output(path: str | os.PathLike, limit: int = MAX_OUTPUT_BYTES) -> str:
     if size > limit:
         data = data[data.find(b"\n") + 1 :]
     return data.decode("utf-8", errors="replace")
+
+
+@contextlib.contextmanager
+def work_directory(keep: str | None, prefix: str):
+    """Where one planner run works: ``keep`` (created if needed, left behind), else a temporary
+    directory removed afterwards."""
+    if keep is not None:
+        path = Path(keep)
+        path.mkdir(parents=True, exist_ok=True)
+        yield path
+        return
+    with tempfile.TemporaryDirectory(prefix=prefix) as tmp:
+        yield Path(tmp)
 
 
 def read_log(workdir: Path) -> str:

@@ -17,7 +17,6 @@ from __future__ import annotations
 import os
 import shutil
 import sys
-import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -27,7 +26,7 @@ from relevance_plan.pddl.plans import Plan
 from relevance_plan.planning import features as f
 from relevance_plan.planning.features import refuse_unsupported
 from relevance_plan.planning.outcome import PlannerStatus, RunOutcome, parse_ipc_plan, signal_reason
-from relevance_plan.planning.process import log_tail, read_log, run_process_group, watchdog_deadline
+from relevance_plan.planning.process import log_tail, read_log, run_process_group, watchdog_deadline, work_directory
 
 KIND = "up"
 PLANNERS_EXTRA_HINT = "pip install 'relevance-plan[planners]'"
@@ -166,7 +165,11 @@ def _read_verdict(workdir: Path) -> str | None:
 
 @dataclass(frozen=True)
 class UnifiedPlanningPlanner:
+    """An engine has no command line, so it takes no ``--planner-args``; ``--keep-work`` keeps
+    the child's plan, verdict and log."""
+
     engine: str
+    work_dir: str | None = None
 
     @property
     def name(self) -> str:
@@ -200,8 +203,7 @@ class UnifiedPlanningPlanner:
 
     def run(self, domain_path, problem_path, *, time_limit, memory_limit_mb) -> RunOutcome:
         environment = java_environment(self.engine)
-        with tempfile.TemporaryDirectory(prefix="relevance-plan-up-") as tmp:
-            workdir = Path(tmp)
+        with work_directory(self.work_dir, prefix="relevance-plan-up-") as workdir:
             plan_path = workdir / PLAN_FILE
             command = [
                 sys.executable,
