@@ -158,12 +158,12 @@ def test_out_of_memory_is_reported(tmp_path):
 
 
 @pytest.mark.planner
-def test_bad_planner_configuration_is_not_a_pddl_error(coffee_files):
+def test_bad_planner_configuration_is_a_usage_error_before_planning(coffee_files):
+    from relevance_plan.errors import UsageError
+
     domain_path, problem_path = coffee_files
-    result = plan_task(
-        domain_path, problem_path, PlanOptions(method="pure", planner_config="no-such-alias", timeout=30)
-    )
-    assert result.status is PlanStatus.PLANNER_CONFIG_ERROR
+    with pytest.raises(UsageError, match="no-such-alias"):
+        plan_task(domain_path, problem_path, PlanOptions(method="pure", planner_config="no-such-alias", timeout=30))
 
 
 def test_a_planner_that_cannot_start_is_a_clear_error(coffee_files, monkeypatch, tmp_path):

@@ -27,7 +27,7 @@ from relevance_plan.errors import UnsupportedFeatureError
 from relevance_plan.io import load_domain, load_problem
 from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.planning import features as f
-from relevance_plan.planning.fast_downward import DEFAULT_CONFIG, FastDownwardPlanner
+from relevance_plan.planning.fast_downward import DEFAULT_CONFIG, FastDownwardPlanner, check_config
 from relevance_plan.planning.lpg import FEATURES as LPG_FEATURES
 from relevance_plan.planning.lpg import INSTALL_HINT as LPG_HINT
 from relevance_plan.planning.lpg import LpgPlanner, lpg_binary
@@ -153,7 +153,9 @@ class AutoPlanner:
         return frozenset().union(*(c.takes for c in EVERY if c.installed()))
 
     def check_installed(self) -> None:
-        """Fast Downward is always there; what else is needed depends on the problem (see ``check``)."""
+        """Fast Downward is always there and its configuration is checked now (a typo is found before
+        any work); what else is needed depends on the problem (see ``check``)."""
+        check_config(self.config)
 
     def check(self, domain: Domain, problem: Problem) -> None:
         self.choose(domain, problem).planner.check(domain, problem)
