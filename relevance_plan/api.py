@@ -64,8 +64,14 @@ def plan(domain: Source, problem: Source, *, progress: ProgressCallback | None =
     Options are the fields of :class:`PlanOptions` (``method``, ``planner``, ``planner_config``,
     ``timeout``, ``widen``, ``validators``, the scoring options...), plus ``tau_class`` and
     ``tau_element``.  Text is written to a private temporary folder for the planner, verbatim.
+    ``race`` defaults as in the CLI: on for relevance with two or more usable cores.
     """
-    plan_options = PlanOptions(**_thresholds(dict(options)))
+    from relevance_plan.planning.race import race_by_default
+
+    chosen = dict(options)
+    if chosen.get("race") is None:
+        chosen["race"] = race_by_default(chosen.get("method", "relevance"))
+    plan_options = PlanOptions(**_thresholds(chosen))
     with tempfile.TemporaryDirectory(prefix="relevance-plan-api-") as scratch:
         domain_path = _as_file(domain, Path(scratch) / "domain.pddl")
         problem_path = _as_file(problem, Path(scratch) / "problem.pddl")

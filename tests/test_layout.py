@@ -36,6 +36,7 @@ OTHER_VALUES = {
     "seed": 3,
     "validators": ("up",),
     "planner_args": ("--translate-options", "--keep-unimportant-variables"),
+    "race": True,
 }
 
 

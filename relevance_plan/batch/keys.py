@@ -89,6 +89,7 @@ FINGERPRINT_RULES: dict[str, str] = {
     "planner": "always",
     "planner_config": "always",
     "planner_args": "derived",  # when given (keys of runs without any stay as they were)
+    "race": "derived",  # when on: it changes times, not plans' validity
     "timeout": "always",
     "memory_limit_mb": "always",
     "validators": "derived",  # the validators that will actually run
@@ -132,6 +133,8 @@ def config_fingerprint(options: PlanOptions, domain_path: str | None, problem_pa
     config["validators"] = list(options.validators) if options.validators else list(default_validators())
     if options.planner_args:
         config["planner_args"] = list(options.planner_args)
+    if options.race:
+        config["race"] = True
     if pruning:
         config["tau_class"] = float(options.thresholds.tau_class)
         config["tau_element"] = float(options.thresholds.tau_element)

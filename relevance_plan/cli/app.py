@@ -322,10 +322,16 @@ def prune(domain_path, problem_path, output, pass_through, as_json, **values):
     help="Where the plan goes ('-': standard output).",
 )
 @keep_work_option
+@click.option(
+    "--race/--no-race",
+    default=None,
+    help="Plan the full problem beside the pruned attempts and take the first valid plan"
+    " (default: on for relevance with two or more usable cores).",
+)
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON object.")
 @click.option("--quiet", "-q", is_flag=True, help="No progress messages.")
 @handle_errors
-def plan(domain_path, problem_path, method, plan_file, keep_work, as_json, quiet, **values):
+def plan(domain_path, problem_path, method, plan_file, keep_work, race, as_json, quiet, **values):
     """Prune, plan, validate on the original problem, widen until solved."""
     from relevance_plan.io import names_stdout
     from relevance_plan.planning.compile import check_keep_directory
@@ -335,7 +341,12 @@ def plan(domain_path, problem_path, method, plan_file, keep_work, as_json, quiet
     if to_stdout and as_json:
         raise UsageError("--json and '--plan-file -' would both write to standard output; give a file name")
 
+    from dataclasses import replace
+
+    from relevance_plan.planning.race import race_by_default
+
     options = take_plan_options(values, method)
+    options = replace(options, race=race_by_default(method) if race is None else race)
     make_planner(options.planner, options.planner_config, check=True)
     if keep_work is not None:
         check_keep_directory(keep_work, (domain_path, problem_path, plan_file))

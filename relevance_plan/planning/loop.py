@@ -41,7 +41,7 @@ from relevance_plan.errors import OutOfTimeError, UnsupportedFeatureError, Usage
 from relevance_plan.io import load_domain, load_problem, scratch_directory, write_text_atomic
 from relevance_plan.pddl.model import Problem
 from relevance_plan.pddl.plans import Plan, format_plan
-from relevance_plan.planning.compile import prepare_planner, with_planner_args
+from relevance_plan.planning.compile import PreparedPlanner, prepare_planner, with_planner_args
 from relevance_plan.planning.outcome import PlannerStatus, RunOutcome
 from relevance_plan.planning.planners import (
     DEFAULT_PLANNER,
@@ -51,6 +51,8 @@ from relevance_plan.planning.planners import (
     planner_for,
     planner_for_unread,
 )
+from relevance_plan.planning.process import CancelScope, cancel_scope
+from relevance_plan.planning.race import Race
 from relevance_plan.planning.validate import (
     ValidationResult,
     ValidationStatus,
@@ -111,6 +113,7 @@ class PlanOptions:
     seed: int = 0
     validators: tuple | None = None
     planner_args: tuple[str, ...] = ()  # appended to the planner's command line (--planner-args)
+    race: bool = False  # plan the full problem beside the pruned attempts (planning.race); takes a second core
 
     def __post_init__(self):
         if self.method not in METHODS:
@@ -227,6 +230,7 @@ class PlanResult:
     planner_choice: str = ""  # why the default planner chose ``planner``
     compilations: tuple[str, ...] = ()  # what was compiled away for the planner (planning.compile)
     plans: tuple[Plan, ...] = ()  # an anytime planner's valid plans, in the order found (``plan`` is the last)
+    raced: str = ""  # with a race: which side gave the result, "full" or "pruned" (planning.race)
 
     def plan_text(self) -> str:
         """The plan in the IPC format, object names in the user's spelling."""
@@ -299,6 +303,7 @@ class PlanResult:
             "peak_memory_mb": round(self.peak_memory_mb, 1),
             "message": self.message,
             "compilations": list(self.compilations),
+            "raced": self.raced or None,
             "anytime_plans": [{"plan_length": len(plan), "plan_cost": plan.cost} for plan in self.plans],
             # one IPC line per step: a timed step keeps its start time and duration
             "plan": [format_plan((s,)).splitlines()[0] for s in self.plan.steps]
@@ -348,11 +353,15 @@ def run_attempts(
     started: float,
     model: KnowledgeModel | None = None,
     progress: ProgressCallback | None = None,
+    race: Race[Attempt] | None = None,
 ) -> tuple[list[Attempt], float]:
     """Plan on ``selection`` (None: the full problem), widening after each failure.
 
     Returns the attempts and the seconds spent widening.  The deadline is
-    ``started + options.timeout``.
+    ``started + options.timeout``.  With ``race`` (the full problem planned
+    since the start, in a thread), the pruned attempts may use all the time
+    left; the full problem is never planned twice, and whichever side
+    decides first ends the other (the race's attempt is then the last).
     """
     say = _teller(progress)
     total = len(task.problem.objects)
@@ -363,9 +372,15 @@ def run_attempts(
     extra: frozenset = frozenset()
     current = selection
     while deadline is None or time.perf_counter() < deadline:
+        if race is not None and race.won:
+            break
         number = len(attempts) + 1
         pruned = current if current is not None and len(current.kept) < total else None
         full = pruned is None
+        if full and race is not None:
+            say(f"attempt {number}: the full problem, planned since the start")
+            attempts.append(replace(race.wait(), number=number))
+            return attempts, widening_time
         kept = total if pruned is None else len(pruned.kept)
         say(f"attempt {number}: the full problem" if full else f"attempt {number}: {kept} of {total} objects")
         final = full or not options.widen
@@ -373,8 +388,11 @@ def run_attempts(
             limit = None
         else:
             remaining = max(deadline - time.perf_counter(), 0.5)
-            limit = remaining if final else max(1.0, remaining * options.first_share)
+            limit = remaining if final or race is not None else max(1.0, remaining * options.first_share)
         outcome = call_planner(pruned, limit)
+        if race is not None and race.won and not outcome.solved:
+            say("the full problem, planned since the start, decided first: the pruned attempt was stopped")
+            break
         outcome, validation, validation_time = _validate(task, outcome, options, deadline)
         attempts.append(
             Attempt(
@@ -402,7 +420,14 @@ def run_attempts(
         widen_started = time.perf_counter()
         current, extra = widen(pruned, options.widen_factor, extra, model, goal_filter)
         widening_time += time.perf_counter() - widen_started
+    if race is not None and race.won and not (attempts and attempts[-1].status is AttemptStatus.SOLVED):
+        attempts.append(replace(race.wait(), number=len(attempts) + 1))
     return attempts, widening_time
+
+
+def _race_decides(attempt: Attempt) -> bool:
+    """A full-problem attempt ends the run: a valid plan, or proof that the problem has none."""
+    return attempt.status in (AttemptStatus.SOLVED, AttemptStatus.UNSOLVABLE)
 
 
 def _teller(progress: ProgressCallback | None) -> Callable[[str], None]:
@@ -472,6 +497,51 @@ def plan_task(
     if overran is not None:
         return overran
 
+    with scratch_directory() as scratch:
+
+        def call_planner(objects: Selection | None, limit: float | None) -> RunOutcome:
+            target = problem_path
+            if objects is not None:
+                target = str(write_text_atomic(Path(scratch) / f"pruned-{len(objects.kept)}.pddl", objects.text))
+            return prepared.run(domain_path, target, time_limit=limit, memory_limit_mb=options.memory_limit_mb)
+
+        def plan_full_problem() -> Attempt:
+            deadline = None if options.timeout is None else started + options.timeout
+            limit = None if deadline is None else max(deadline - time.perf_counter(), 0.5)
+            outcome = call_planner(None, limit)
+            outcome, validation, validation_time = _validate(task, outcome, options, deadline)
+            return Attempt(0, total, None, 0, outcome, validation, limit, validation_time)
+
+        own_runs = CancelScope()
+        race = None
+        if options.race and options.method != "pure":
+            say("racing: the full problem is planned beside the pruned attempts")
+            race = Race(plan_full_problem, _race_decides, own_runs).start()
+        try:
+            with cancel_scope(own_runs):
+                return _prune_and_plan(
+                    task, (domain_path, problem_path), options, prepared, call_planner, race, started, progress, choice
+                )
+        finally:
+            if race is not None:
+                race.stop()
+
+
+def _prune_and_plan(
+    task: PlanningTask,
+    paths: tuple[str, str],
+    options: PlanOptions,
+    prepared: PreparedPlanner,
+    call_planner: PlannerCall,
+    race: Race[Attempt] | None,
+    started: float,
+    progress: ProgressCallback | None,
+    choice: str,
+) -> PlanResult:
+    """Score, choose the first selection, and run the attempts (``plan_task``'s second half)."""
+    say = _teller(progress)
+    total = len(task.problem.objects)
+    domain_path, problem_path = paths
     selection = None
     scoring, unpruned = _score(task, options, domain_path, problem_path, say)
     if scoring is not None:
@@ -487,7 +557,7 @@ def plan_task(
                 relevance_time=elapsed,
                 objects_total=total,
                 message=scoring.scores.insufficiency,
-                planner=planner.name,
+                planner=prepared.name,
                 scorer=scoring.scorer,
             )
         selection = scoring.first_selection(options.narrows_first)
@@ -496,37 +566,32 @@ def plan_task(
             return overran
         _say_selection(say, selection, total)
     relevance_time = time.perf_counter() - started
-
-    with scratch_directory() as scratch:
-
-        def call_planner(objects: Selection | None, limit: float | None) -> RunOutcome:
-            target = problem_path
-            if objects is not None:
-                target = str(write_text_atomic(Path(scratch) / f"pruned-{len(objects.kept)}.pddl", objects.text))
-            return prepared.run(domain_path, target, time_limit=limit, memory_limit_mb=options.memory_limit_mb)
-
-        attempts, widening_time = run_attempts(
-            task,
-            selection,
-            call_planner,
-            options,
-            started=started,
-            model=scoring.model if scoring else None,
-            progress=progress,
-        )
-    return summarise(
+    attempts, widening_time = run_attempts(
+        task,
+        selection,
+        call_planner,
+        options,
+        started=started,
+        model=scoring.model if scoring else None,
+        progress=progress,
+        race=race,
+    )
+    result = summarise(
         task,
         options,
         attempts,
         started,
         relevance_time + widening_time,
         selection,
-        planner=planner.name,
+        planner=prepared.name,
         scorer=scoring.scorer if scoring else None,
         unpruned_reason=unpruned,
         planner_choice=choice,
         compilations=prepared.compilations,
     )
+    if race is None or not attempts:
+        return result
+    return replace(result, raced="full" if attempts[-1].full else "pruned")
 
 
 def _score(

@@ -30,6 +30,7 @@ VAL's ``Validate`` is the one other program the tool starts (:func:`run_val`).
 from __future__ import annotations
 
 import contextlib
+import contextvars
 import functools
 import itertools
 import os
@@ -247,6 +248,56 @@ def _remove_cgroup(cgroup: str, timeout: float = 2.0) -> None:
 # --------------------------------------------------------------------------- stopping a run
 
 
+class CancelScope:
+    """The runs one line of work starts; :meth:`cancel` stops them, and any started later, at once.
+
+    The attempt loop's race plans the full problem in a thread beside the
+    pruned attempts: whichever finds a valid plan first cancels the other.
+    """
+
+    def __init__(self) -> None:
+        self._lock = threading.Lock()
+        self._runs: set[_Run] = set()
+        self._cancelled = False
+
+    @property
+    def cancelled(self) -> bool:
+        return self._cancelled
+
+    def cancel(self) -> None:
+        with self._lock:
+            self._cancelled = True
+            runs = list(self._runs)
+        for run in runs:
+            _stop(run)
+
+    def _enter(self, run: _Run) -> bool:
+        """Register ``run``; False when the scope was cancelled already (the caller stops it)."""
+        with self._lock:
+            if self._cancelled:
+                return False
+            self._runs.add(run)
+            return True
+
+    def _leave(self, run: _Run) -> None:
+        with self._lock:
+            self._runs.discard(run)
+
+
+# A thread starts with no scope; run_process_group registers its runs in the current one.
+_SCOPE: contextvars.ContextVar[CancelScope | None] = contextvars.ContextVar("relevance_plan_scope", default=None)
+
+
+@contextlib.contextmanager
+def cancel_scope(scope: CancelScope):
+    """Runs started inside the block (in this thread) belong to ``scope``."""
+    token = _SCOPE.set(scope)
+    try:
+        yield scope
+    finally:
+        _SCOPE.reset(token)
+
+
 # The runs going on now, so a batch's Ctrl-C can stop them all.
 _ACTIVE_GROUPS: set[_Run] = set()
 _ACTIVE_LOCK = threading.Lock()
@@ -425,11 +476,16 @@ def run_process_group(
             run = _Run(process.pid, cgroup)
             with _ACTIVE_LOCK:
                 _ACTIVE_GROUPS.add(run)
+            scope = _SCOPE.get()
+            if scope is not None and not scope._enter(run):
+                _stop(run)  # cancelled before it started: it ends at once and is reaped below
             try:
                 wait_status, cpu_time, peak_mb, fired = _wait_for_run(run, deadline)
             finally:
                 with _ACTIVE_LOCK:
                     _ACTIVE_GROUPS.discard(run)
+                if scope is not None:
+                    scope._leave(run)
             _restore_workdir(workdir, log_file)
     finally:
         os.close(guard_write)

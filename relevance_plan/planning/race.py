@@ -1,0 +1,89 @@
+"""Planning the full problem beside the pruned attempts, so that a bad first guess costs nothing.
+
+On a machine with a spare core, the attempt loop can start the user's full
+problem at once, in a thread that waits on its planner process, while the
+main thread scores, prunes and plans pruned problems.  The first decisive
+answer wins and the other side's planner is stopped: a valid plan, or (from
+the full problem only) a proof that the problem has none.  The total time is
+then about the smaller of the two, whatever the first selection was.
+"""
+
+from __future__ import annotations
+
+import os
+import threading
+from collections.abc import Callable
+from typing import Generic, TypeVar
+
+from relevance_plan.planning.process import CancelScope, cancel_scope
+
+T = TypeVar("T")
+
+
+def usable_cores() -> int:
+    """The cores this process may run on (its affinity, not the machine's count)."""
+    try:
+        return len(os.sched_getaffinity(0))
+    except (AttributeError, OSError):
+        return os.cpu_count() or 1
+
+
+def race_by_default(method: str) -> bool:
+    """``plan``'s default: race when pruning may guess wrong and a second core is there to take it."""
+    return method == "relevance" and usable_cores() >= 2
+
+
+class Race(Generic[T]):
+    """``work`` run in its own thread; when ``decisive(result)``, ``loser`` is cancelled.
+
+    ``loser`` is the scope of the caller's own planner runs.  :meth:`stop`
+    cancels ``work``'s planner runs and waits for the thread.
+    """
+
+    def __init__(self, work: Callable[[], T], decisive: Callable[[T], bool], loser: CancelScope):
+        self._work = work
+        self._decisive = decisive
+        self._loser = loser
+        self._scope = CancelScope()
+        self._done = threading.Event()
+        self._result: T | None = None
+        self._error: BaseException | None = None
+        self._thread = threading.Thread(target=self._main, name="relevance-plan-race", daemon=True)
+
+    def start(self) -> Race[T]:
+        self._thread.start()
+        return self
+
+    def _main(self) -> None:
+        with cancel_scope(self._scope):
+            try:
+                self._result = self._work()
+            except BaseException as error:  # handed to the caller by wait()
+                self._error = error
+        self._done.set()
+        if self.won:
+            self._loser.cancel()
+
+    @property
+    def won(self) -> bool:
+        """Finished with a decisive result (and not stopped)."""
+        return (
+            self._done.is_set()
+            and not self._scope.cancelled
+            and self._result is not None
+            and self._decisive(self._result)
+        )
+
+    def wait(self) -> T:
+        """The result, once ``work`` has finished (its error re-raised here)."""
+        self._done.wait()
+        if self._error is not None:
+            raise self._error
+        assert self._result is not None
+        return self._result
+
+    def stop(self) -> None:
+        """Stop ``work``'s planner runs (if still going) and wait for the thread."""
+        if not self._done.is_set():
+            self._scope.cancel()
+        self._thread.join()
