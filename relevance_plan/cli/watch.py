@@ -21,20 +21,22 @@ import click
 from relevance_plan.cli.common import handle_errors, planning_options, scoring_options, take_plan_options
 from relevance_plan.errors import InputFileError
 from relevance_plan.exitcodes import ExitCode
-from relevance_plan.session import Session
-from relevance_plan.session.events import MAX_EVENT_BYTES
 
 SNAPSHOT_FILES = ("current.pddl", "pruned.pddl")
 
 
-def read_event_lines(stream: BinaryIO, limit: int = MAX_EVENT_BYTES) -> Iterator[str]:
+def read_event_lines(stream: BinaryIO, limit: int | None = None) -> Iterator[str]:
     """The lines of ``stream`` as they arrive, as text.
 
     Bytes that are not UTF-8 are kept as lone surrogates, so the event they
     belong to is refused by the event checks, not the whole stream.  A line
     longer than ``limit`` bytes comes back cut to ``limit + 1`` characters
-    (the session refuses it) and the rest of it is skipped.
+    (the session refuses it) and the rest of it is skipped.  ``limit`` defaults to the session's.
     """
+    if limit is None:
+        from relevance_plan.session.events import MAX_EVENT_BYTES
+
+        limit = MAX_EVENT_BYTES
     while True:
         line = stream.readline(limit + 1)
         if not line:
@@ -107,6 +109,7 @@ def watch(domain_path, problem_path, events_path, plan_in_loop, snapshot_dir, **
     """Keep relevance (and, with --plan, a validated plan) current over a stream of scene events."""
     from relevance_plan.io import load_task, write_text_atomic
     from relevance_plan.planning.planners import make_planner
+    from relevance_plan.session import Session  # imported here: other commands never need the session
 
     options = take_plan_options(values)
     targets = None

@@ -29,7 +29,6 @@ from relevance_plan.errors import SimulationTimeout, UsageError
 from relevance_plan.pddl.formulas import Modal, Node, Preference, children
 from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.plans import Plan, format_plan
-from relevance_plan.pddl.simulator import simulate
 
 
 class ValidationStatus(enum.Enum):
@@ -68,6 +67,8 @@ def validate_builtin(domain: Domain, problem: Problem, plan: Plan, deadline: flo
     if any(_hard(constraint) for constraint in (domain.constraints, problem.constraints) if constraint is not None):
         return ValidationResult(ValidationStatus.UNAVAILABLE, "builtin", "it does not check trajectory constraints")
     try:
+        from relevance_plan.pddl.simulator import simulate  # only when a plan is checked
+
         result = simulate(domain, problem, plan, deadline)
     except SimulationTimeout as error:
         return ValidationResult(ValidationStatus.OUT_OF_TIME, "builtin", error.message)

@@ -3,6 +3,7 @@
     {"event": "add", "object": NAME, "type": TYPE, "facts": [[PRED, ARG, ...], ...]}
     {"event": "remove", "object": NAME}
     {"event": "set", "fact": [PRED, ARG, ...]}      {"event": "unset", "fact": [...]}
+    {"event": "set", "fluent": [FUNCTION, ARG, ...], "value": NUMBER}   (a numeric fluent's new value)
     {"event": "goal", "goal": "(and ...)"}
     {"event": "human", "name": NAME, "preferences": PROFILE}   (PROFILE may be null: none recorded)
     {"event": "cue", "task": TASK}   or   {"event": "cue", "objective": NAME}
@@ -19,6 +20,7 @@ one balanced list.
 from __future__ import annotations
 
 import json
+import math
 import re
 from dataclasses import dataclass
 
@@ -35,6 +37,8 @@ MAX_EVENT_BYTES = 1 << 20
 # A PDDL name: a letter, then letters, digits, '-' and '_' (of any script).
 _PDDL_NAME = re.compile(r"[^\W\d_][\w-]*")
 MAX_NAME_LENGTH = 1000
+# A fluent's value beyond this is a typo, and planners read it as a float anyway.
+MAX_VALUE = 1e15
 
 
 class EventError(RelevancePlanError):
@@ -54,6 +58,8 @@ class Event:
     display: str | None = None  # the user's spelling of ``name``
     type: str | None = None
     facts: tuple = ()  # add: its facts; set/unset: one fact
+    fluent: tuple | None = None  # set of a numeric value: (function, args...)
+    value: float | None = None  # ... and its new value
     goal: Formula | None = None
     profile: str | None = None  # human: the model's profile
     task: str | None = None  # cue
@@ -100,9 +106,12 @@ def check_event(data: dict, scene: LiveScene, model: KnowledgeModel | None) -> E
         if name in _goal_names(scene.goal):
             raise EventError(f"object '{display}' is named in the goal: change the goal first")
         return Event("remove", name=name, display=display)
+    if kind == "set" and "fluent" in data:
+        return Event("set", fluent=_fluent(data["fluent"], scene), value=_number(data.get("value")))
     if kind in ("set", "unset"):
         if "fact" not in data:
-            raise EventError(f"'{kind}' needs a 'fact'")
+            hint = " (a numeric fluent is set, never unset)" if "fluent" in data else ""
+            raise EventError(f"'{kind}' needs a 'fact'{hint}")
         return Event(kind, facts=(_fact(data["fact"], scene),))
     if kind == "goal":
         return Event("goal", goal=parse_goal(_text(data, "goal"), scene))
@@ -168,6 +177,31 @@ def _fact(item, scene: LiveScene, extra: set = frozenset()) -> tuple:
         if arg not in scene.objects and arg not in scene.domain.constants and arg not in extra:
             raise EventError(f"unknown object '{shown}' in ({' '.join(item)})")
     return (predicate,) + args
+
+
+def _fluent(item, scene: LiveScene) -> tuple:
+    if not isinstance(item, list) or not item or not all(isinstance(part, str) for part in item):
+        raise EventError(f"a fluent is a list of names [FUNCTION, ARG, ...], got {json.dumps(item)}")
+    function = item[0].lower()
+    parameters = scene.domain.functions.get(function)
+    if parameters is None:
+        raise EventError(f"unknown function '{item[0]}'")
+    if len(parameters) != len(item) - 1:
+        raise EventError(f"function '{item[0]}' takes {len(parameters)} arguments, got {len(item) - 1}")
+    args = tuple(arg.lower() for arg in item[1:])
+    for arg, shown in zip(args, item[1:]):
+        if arg not in scene.objects and arg not in scene.domain.constants:
+            raise EventError(f"unknown object '{shown}' in ({' '.join(item)})")
+    return (function,) + args
+
+
+def _number(value) -> float:
+    """A fluent's value: a finite JSON number (not a boolean, not a string)."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+        raise EventError(f"'value' must be a finite number, got {json.dumps(value)[:80]}")
+    if abs(value) > MAX_VALUE:
+        raise EventError(f"'value' must be at most {MAX_VALUE:g} in size, got {json.dumps(value)[:80]}")
+    return float(value)
 
 
 _SYMBOL = re.compile(r"[^\s()]+")

@@ -300,6 +300,8 @@ class Session:
         names = {event.name} if event.kind in ("add", "remove") else set()
         for fact in event.facts:
             names.update(fact[1:])
+        if event.fluent is not None:
+            names.update(event.fluent[1:])
         return frozenset(names)
 
     def _apply(self, event: Event) -> tuple[bool, object]:
@@ -321,6 +323,12 @@ class Session:
                 self.served = None
                 self._set_options(replace(self.options, human=None, model_task=None))
                 return True, ALL
+            return True, scores.refresh(names)
+        if event.fluent is not None:
+            if not scene.set_value(event.fluent, event.value):
+                return False, set()
+            names = {n for n in event.fluent[1:] if n in scene.objects}
+            scores.describe(names)
             return True, scores.refresh(names)
         if event.kind in ("set", "unset"):
             fact = event.facts[0]
@@ -384,7 +392,7 @@ class Session:
 
     def _linked(self, event: Event, kept: frozenset) -> frozenset:
         """Kept objects from which closure follows the event's fact (a plate put on the kept cup)."""
-        if event.kind not in ("set", "unset") or not kept:
+        if event.kind not in ("set", "unset") or not kept or not event.facts:
             return frozenset()
         functional = self.scene.index.functional
         if self._rules is None or self._rules[0] != functional:

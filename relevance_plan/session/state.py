@@ -89,6 +89,11 @@ class LiveScene:
         self.facts: set = set(problem.init)
         self.index = LiveIndex(self.facts)
         self.goal: Formula = problem.goal
+        self.values: dict[tuple, float] = dict(problem.numeric_init)  # (function, args...) -> value
+        # carried into every written problem unchanged, minus what mentions a removed object
+        self.timed_literals = problem.timed_literals
+        self.constraints = problem.constraints
+        self.metric = problem.metric
 
     # ------------------------------------------------------------------ changes
 
@@ -104,7 +109,20 @@ class LiveScene:
         del self.objects[name]
         del self.display[name]
         self.index.by_object.pop(name, None)
+        self.values = {fluent: value for fluent, value in self.values.items() if name not in fluent[1:]}
+        self.timed_literals = tuple(
+            timed
+            for timed in self.timed_literals
+            if name not in (timed.atom or ())[1:] and name not in (timed.fluent or ())[1:]
+        )
         return gone
+
+    def set_value(self, fluent: tuple, value: float) -> bool:
+        """A numeric fluent takes ``value``; False when it had it already."""
+        if self.values.get(fluent) == value:
+            return False
+        self.values[fluent] = value
+        return True
 
     def set(self, fact: tuple) -> bool:
         if fact in self.facts:
@@ -144,6 +162,10 @@ class LiveScene:
             goal=self.goal,
             text="",
             display_names=MappingProxyType(dict(self.display)),
+            numeric_init=MappingProxyType(dict(self.values)),
+            timed_literals=self.timed_literals,
+            constraints=self.constraints,
+            metric=self.metric,
         )
 
     def problem_text(self) -> str:

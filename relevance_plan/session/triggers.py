@@ -78,9 +78,11 @@ def kept_touched(change: Change) -> str | None:
     kept table is neither: closure does not follow a table to what stands on it."""
     event = change.event
     if event.kind in ("set", "unset") and change.changed and not change.idle:
-        fact = event.facts[0]
+        fact = event.facts[0] if event.facts else event.fluent
+        assert fact is not None  # a set event carries a fact or a fluent
         if len(fact) > 1 and fact[1] in change.kept:
-            return f"fact {event.kind} on kept {change.show(fact[1])}"
+            what = "value" if event.fluent is not None else "fact"
+            return f"{what} {event.kind} on kept {change.show(fact[1])}"
         if change.linked:
             return f"closure link {event.kind} from kept {_names(change, change.linked)}"
     return None
