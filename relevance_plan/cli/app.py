@@ -422,6 +422,26 @@ def _print_plan_summary(result: PlanResult, plan_file, err: bool = False) -> Non
         echo(f"plan file:   {plan_file}")
 
 
+# --------------------------------------------------------------------------- examples
+
+
+@main.command()
+@click.argument("folder", metavar="DIR", type=click.Path(file_okay=False))
+@handle_errors
+def examples(folder):
+    """Copy the shipped worlds into DIR (DIR/domains, DIR/problems), as in a clone's root.
+
+    After a regular install, `relevance-plan examples kitchen && cd kitchen`
+    makes the README's first-look commands work as written.  A file that
+    already exists is never replaced: the copy is refused before anything
+    is written.
+    """
+    from relevance_plan.generators.examples import write_examples
+
+    written = write_examples(folder)
+    click.echo(f"wrote {len(written)} files to {folder} (domains/, problems/)")
+
+
 # --------------------------------------------------------------------------- exit codes
 
 
