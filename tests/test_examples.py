@@ -34,3 +34,11 @@ def test_examples_into_an_existing_folder_keeps_the_users_other_files(tmp_path):
     assert code == 0, err
     assert (tmp_path / "notes.txt").read_text() == "mine"
     assert (tmp_path / "domains/cereal/domain.pddl").is_file()
+
+
+def test_examples_refuses_an_empty_path_and_a_missing_parent_in_one_line(tmp_path):
+    code, _, err = run("examples", "")
+    assert code == ExitCode.USAGE and len(err.splitlines()) == 1
+    code, _, err = run("examples", tmp_path / "absent" / "kitchen")
+    assert code == ExitCode.INPUT_FILE and "absent is not a folder" in err and len(err.splitlines()) == 1
+    assert not (tmp_path / "absent").exists()

@@ -403,6 +403,11 @@ def instance_sidecar(
 def check_classic_arguments(world: str, count: int, seed: int, size: int | None) -> None:
     """Raise ``UsageError`` for a bad world, count, seed or size (before anything is written)."""
     _split(world)
+    check_suite_numbers(count, seed, size)
+
+
+def check_suite_numbers(count: int, seed: int, size: int | None) -> None:
+    """Raise ``UsageError`` for a bad count, seed or size of any sized world's suite."""
     check_int("count", count, 1)
     check_int("seed", seed, -(1 << 62))
     if size is not None:

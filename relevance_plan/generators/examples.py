@@ -13,7 +13,7 @@ import tempfile
 from pathlib import Path
 
 from relevance_plan.data import DATA_DIR, DOMAINS_DIR, PROBLEMS_DIR
-from relevance_plan.errors import UsageError
+from relevance_plan.errors import InputFileError, UsageError
 from relevance_plan.io import write_bytes_atomic
 
 
@@ -30,16 +30,19 @@ def write_examples(target: str | os.PathLike[str]) -> list[Path]:
     the paths refuses the whole copy before anything is written.  A new
     folder appears complete or not at all (built beside it, then renamed).
     """
+    if not str(target).strip():
+        raise UsageError("the examples folder is an empty path; give a folder name")
     target = Path(target)
     files = example_files()
+    if not target.parent.is_dir():
+        raise InputFileError(f"{target.parent} is not a folder: cannot create {target}")
     if target.exists() and not target.is_dir():
         raise UsageError(f"{target} exists and is not a folder")
     clashes = [relative for relative in files if (target / relative).exists() or (target / relative).is_symlink()]
     if clashes:
         raise UsageError(f"{target / clashes[0]} exists: choose an empty or new folder (nothing was written)")
     if not target.exists():
-        parent = target.parent if str(target.parent) else Path(".")
-        staging = Path(tempfile.mkdtemp(prefix=".relevance-plan-examples-", dir=parent))
+        staging = Path(tempfile.mkdtemp(prefix=".relevance-plan-examples-", dir=target.parent))
         try:
             for relative in files:
                 (staging / relative).parent.mkdir(parents=True, exist_ok=True)

@@ -34,6 +34,7 @@ from relevance_plan.generators.classic import (
     Instance,
     check_classic_arguments,
     check_int,
+    check_suite_numbers,
     classic_problem_name,
     format_instance,
     generate_classic_problem,
@@ -134,10 +135,7 @@ def check_sized_arguments(world: str, count: int, seed: int, size: int | None) -
         check_classic_arguments(world, count, seed, size)
         return
     _world(world)
-    check_int("count", count, 1)
-    check_int("seed", seed, -(1 << 62))
-    if size is not None:
-        check_int("size", size, 10)
+    check_suite_numbers(count, seed, size)
 
 
 def generate_sized_suite(

@@ -149,18 +149,12 @@ class CommandPlanner:
         parsed = None if text is None else parse_ipc_plan(text)
         tail = log_tail(log)
         status = classify(run, parsed, uses_plan_file, tail)
-        return RunOutcome(
-            status=status,
-            exit_code=run.exit_code,
-            plan=parsed if parsed is not None and status is PlannerStatus.SOLVED else Plan(),
-            plan_cost=parsed.cost if parsed is not None else None,
-            wall_time=run.wall_time,
+        return RunOutcome.of_process(
+            run,
+            status,
+            parsed,
             planner=self.name,
-            cpu_time=run.cpu_time,
-            peak_memory_mb=run.peak_memory_mb,
             config=self.template,
             log_tail=tail,
-            killed_by_watchdog=run.watchdog_fired,
-            process_group=run.process_group,
             reason=refused or exit_reason(Path(command[0]).name, run, parsed),
         )

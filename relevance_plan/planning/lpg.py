@@ -189,17 +189,12 @@ class LpgPlanner:
         plan = None if text is None or run.exit_code != 0 else read_lpg_plan(text, log)
         tail = log_tail(log)
         status = classify(run, plan, log)
-        return RunOutcome(
-            status=status,
-            exit_code=run.exit_code,
-            plan=plan if plan is not None and status is PlannerStatus.SOLVED else Plan(),
+        return RunOutcome.of_process(
+            run,
+            status,
+            plan,
             plan_cost=None,
-            wall_time=run.wall_time,
             planner=self.name,
-            cpu_time=run.cpu_time,
-            peak_memory_mb=run.peak_memory_mb,
             log_tail=tail,
-            killed_by_watchdog=run.watchdog_fired,
-            process_group=run.process_group,
             reason=exit_reason(run, status, log),
         )

@@ -13,9 +13,13 @@ from __future__ import annotations
 import enum
 import signal
 from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
 
 from relevance_plan.errors import PlanFormatError
 from relevance_plan.pddl.plans import Plan, read_plan
+
+if TYPE_CHECKING:
+    from relevance_plan.planning.process import ProcessRun
 
 
 class PlannerStatus(enum.Enum):
@@ -67,6 +71,24 @@ class RunOutcome:
     reason: str = ""
     optimal: bool = False  # the planner proved the plan optimal
     plans: tuple[Plan, ...] = ()  # an anytime run's plans in the order found (``plan`` is the last); else empty
+
+    @classmethod
+    def of_process(cls, run: ProcessRun, status: PlannerStatus, plan: Plan | None, **details: Any) -> RunOutcome:
+        """The outcome of a finished planner process: exit code, times, memory, watchdog and group
+        from ``run``; ``plan`` kept only when solved, its cost as the plan's; ``details`` add or override."""
+        fields: dict[str, Any] = dict(
+            status=status,
+            exit_code=run.exit_code,
+            plan=plan if plan is not None and status is PlannerStatus.SOLVED else Plan(),
+            plan_cost=plan.cost if plan is not None else None,
+            wall_time=run.wall_time,
+            cpu_time=run.cpu_time,
+            peak_memory_mb=run.peak_memory_mb,
+            killed_by_watchdog=run.watchdog_fired,
+            process_group=run.process_group,
+        )
+        fields.update(details)
+        return cls(**fields)
 
     @property
     def solved(self) -> bool:

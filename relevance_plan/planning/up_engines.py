@@ -22,7 +22,6 @@ from pathlib import Path
 
 from relevance_plan import errors
 from relevance_plan.pddl.model import Domain, Problem
-from relevance_plan.pddl.plans import Plan
 from relevance_plan.planning import features as f
 from relevance_plan.planning.features import refuse_unsupported
 from relevance_plan.planning.outcome import PlannerStatus, RunOutcome, parse_ipc_plan, signal_reason
@@ -229,19 +228,13 @@ class UnifiedPlanningPlanner:
             verdict = _read_verdict(workdir)
             log = log_tail(read_log(workdir))
         status = classify(run.exit_code, verdict, parsed is not None, run.watchdog_fired, log)
-        return RunOutcome(
-            status=status,
-            exit_code=run.exit_code,
-            plan=parsed if parsed is not None and status is PlannerStatus.SOLVED else Plan(),
-            plan_cost=parsed.cost if parsed is not None else None,
-            wall_time=run.wall_time,
+        return RunOutcome.of_process(
+            run,
+            status,
+            parsed,
             planner=self.name,
-            cpu_time=run.cpu_time,
-            peak_memory_mb=run.peak_memory_mb,
             config=self.engine,
             log_tail=log,
-            killed_by_watchdog=run.watchdog_fired,
-            process_group=run.process_group,
             raw_status=verdict or "",
             reason=exit_reason(self.name, run.exit_code, verdict, run.watchdog_fired),
             optimal=verdict == SOLVED_OPTIMALLY and status is PlannerStatus.SOLVED,
