@@ -60,7 +60,7 @@ def is_pddl_text(source: object) -> bool:
 def load_sources(domain: Domain | Source, problem: Problem | Source) -> tuple[Domain, Problem]:
     """The domain and the problem from paths, PDDL text, or values already read."""
     if not isinstance(domain, Domain):
-        domain = read_domain(domain, "<domain text>") if is_pddl_text(domain) else load_domain(domain)
+        domain = read_domain(str(domain), "<domain text>") if is_pddl_text(domain) else load_domain(domain)
     if not isinstance(problem, Problem):
         text = is_pddl_text(problem)
         problem = read_problem(str(problem), domain, "<problem text>") if text else load_problem(problem, domain)

@@ -130,6 +130,8 @@ def compare(
     """
     started = time.perf_counter()
     check_compare_options(jobs=jobs, scheduler=scheduler, scheduler_timeout=scheduler_timeout)
+    if options.timeout is None:
+        raise UsageError("compare needs a time limit per job: the timeout of every method's row")
     check_store_writable(store_path)
     for planner in planners or (options.planner,):
         make_planner(planner, options.planner_config, check=True)

@@ -134,13 +134,14 @@ def run_dask(pending: Sequence[Job], client, address: str, record: Record, stop:
 
 
 def _dask_row(future, address: str) -> dict[str, Any]:
-    try:
+    killed: tuple[type[BaseException], ...] = ()
+    with contextlib.suppress(ImportError):  # part of distributed, which ran the future
         from distributed import KilledWorker
-    except ImportError:  # pragma: no cover - part of distributed
-        KilledWorker = ()  # type: ignore[assignment]
+
+        killed = (KilledWorker,)
     try:
         return future.result()
-    except KilledWorker as error:
+    except killed as error:
         raise SchedulerError(f"a Dask worker died running a job 3 times: {error}") from None
     except concurrent.futures.CancelledError:
         raise SchedulerError(f"lost the Dask scheduler at {address}; rerun to resume") from None

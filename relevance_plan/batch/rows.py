@@ -37,7 +37,7 @@ def _base_row(job: Job) -> dict[str, Any]:
         "world": world,
         "difficulty": difficulty,
         "seed": job.seed,
-        "timeout": float(job.options.timeout),
+        "timeout": float(job.options.timeout or 0.0),  # compare refuses jobs without one
         "config_json": canonical_json(job.config),
     }
 

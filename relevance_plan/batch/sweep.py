@@ -142,6 +142,7 @@ def sweep_suite(suite_dir: Path, taus: Sequence[float], options: ScoringOptions 
         _sweep_problem(entry, *domains[entry.domain], options, tally)
     if not tally.totals:
         raise UsageError(f"no problem in {suite_dir} could be scored (insufficient cues on all {tally.insufficient})")
+    assert tally.scorer is not None  # set by the first problem scored
     return SweepResult(
         suite=str(suite_dir),
         scorer=tally.scorer,

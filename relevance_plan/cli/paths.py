@@ -67,6 +67,7 @@ def _check(command_name: str, values: dict) -> None:
 
 def _checked(command: click.Command):
     callback = command.callback
+    assert callback is not None  # every command of the CLI has one
 
     @functools.wraps(callback)
     def wrapper(*args, **kwargs):

@@ -120,8 +120,8 @@ def _blocksworld(rng: random.Random, size: int, dense: bool = False) -> Instance
     needed = set(goal_blocks)
     for block in goal_blocks:
         needed.update(above[block])
-        if below[block] is not None:
-            needed.add(below[block])
+        if (support := below[block]) is not None:
+            needed.add(support)
     inst.necessary = sorted(needed)
     return inst
 

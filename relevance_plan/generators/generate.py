@@ -87,19 +87,19 @@ def _check_world(world: object, difficulty: object) -> None:
         raise UsageError(f"unknown difficulty {difficulty!r}: choose one of {', '.join(DIFFICULTIES)}")
 
 
-def _check_int(label: str, value: object, minimum: int | None = None) -> None:
+def _check_int(label: str, value: object, minimum: int | None = None) -> int:
     if isinstance(value, bool) or not isinstance(value, int):
         raise UsageError(f"{label} must be an integer, not {value!r}")
     if minimum is not None and value < minimum:
         raise UsageError(f"{label} must be at least {minimum}, not {value}")
+    return value
 
 
 def _check_arguments(world: object, difficulty: object, seed: object, distractors: object) -> None:
     _check_world(world, difficulty)
     _check_int("seed", seed)
     if distractors is not None:
-        _check_int("distractors", distractors, 0)
-        if distractors > MAX_DISTRACTORS:
+        if _check_int("distractors", distractors, 0) > MAX_DISTRACTORS:
             raise UsageError(f"distractors must be at most {MAX_DISTRACTORS}, not {distractors}")
 
 
@@ -207,8 +207,8 @@ def _add_constraints(
     above = {item.on: item.name for item in items if item.on is not None}
 
     def pile(name: str) -> list[str]:
-        while below[name] is not None:
-            name = below[name]
+        while (lower := below[name]) is not None:
+            name = lower
         result = [name]
         while result[-1] in above:
             result.append(above[result[-1]])
@@ -297,7 +297,7 @@ def _own_files(directory: Path) -> set[str] | None:
     entries = manifest.get("problems")
     for entry in entries if isinstance(entries, list) else ():
         if isinstance(entry, dict):
-            names.update(entry.get(key) for key in ("problem", "sidecar") if isinstance(entry.get(key), str))
+            names.update(value for key in ("problem", "sidecar") if isinstance(value := entry.get(key), str))
     return {name for name in names if name and name == Path(name).name and name not in (".", "..")}
 
 

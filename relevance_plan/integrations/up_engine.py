@@ -175,7 +175,7 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin, AnytimePlannerMixin):
             # relevance[oversubscription[...]] would only be a weaker copy of relevance[...].
             return False
         classical = ProblemKind({"ACTION_BASED"}, version=LATEST_PROBLEM_KIND_VERSION)
-        return engine.is_oneshot_planner() and engine.supports(classical)  # type: ignore[attr-defined]
+        return engine.is_oneshot_planner() and engine.supports(classical)
 
     @staticmethod
     def _supported_kind(engine: type[Engine]) -> ProblemKind:
@@ -323,7 +323,7 @@ def _anytime_when_inner_is(cls) -> bool:
 
 # unified-planning's engine metaclass marks every class built on AnytimePlannerMixin as anytime,
 # after the class body: this engine decides per inner planner, so its answer is set here.
-RelevanceMetaEngine.is_anytime_planner = classmethod(_anytime_when_inner_is)  # type: ignore[method-assign]
+RelevanceMetaEngine.is_anytime_planner = classmethod(_anytime_when_inner_is)
 
 
 # --------------------------------------------------------------------------- the relevance stage
@@ -456,14 +456,15 @@ class _AnytimeSearch:
         selection = self.stage.scoring.first_selection(self.options.narrows_first) if self.stage else None
         extra: frozenset = frozenset()
         while True:
-            full = selection is None or len(selection.kept) >= total
+            tried = None if selection is None or len(selection.kept) >= total else selection
+            full = tried is None
             limit = self._limit(final=full or not self.options.widen)
             if limit is not None and limit <= 0:
                 break
             self.attempts += 1
             self.last_full = full
-            self.kept = total if full else len(selection.kept)
-            found = yield from self._attempt(None if full else selection, limit)
+            self.kept = total if tried is None else len(tried.kept)
+            found = yield from self._attempt(tried, limit)
             if found or full or not self.options.widen:
                 break
             assert self.stage is not None and selection is not None
@@ -555,11 +556,12 @@ def up_verdict(status: PlanStatus) -> PlanGenerationResultStatus:
 
 
 def describe_attempt(attempt: Attempt, total: int) -> str:
+    thresholds = attempt.thresholds
     what = (
         f"the whole problem ({total} objects)"
-        if attempt.full
-        else f"{attempt.objects_kept} of {total} objects (tau_class={attempt.thresholds.tau_class:g},"
-        f" tau_element={attempt.thresholds.tau_element:g})"
+        if attempt.full or thresholds is None
+        else f"{attempt.objects_kept} of {total} objects (tau_class={thresholds.tau_class:g},"
+        f" tau_element={thresholds.tau_element:g})"
     )
     outcome = attempt.outcome.raw_status or attempt.outcome.status.name
     if attempt.validation is not None:

@@ -14,8 +14,9 @@ Nothing here grounds an action.  Two results feed the rest of the pipeline:
 from __future__ import annotations
 
 from collections import defaultdict
-from collections.abc import Iterable, Mapping
+from collections.abc import Collection, Iterable, Mapping
 from dataclasses import dataclass
+from typing import Protocol
 
 from relevance_plan.pddl.formulas import Atom, Formula, GroundAtom, effect_literals, literals, scoped_literals
 from relevance_plan.pddl.model import Action, Domain, Problem, numeric_facts
@@ -25,6 +26,26 @@ Term = tuple[str, str]
 Pattern = tuple[str, tuple[Term, ...]]
 
 # --------------------------------------------------------------------------- init-state facts
+
+
+class FactIndex(Protocol):
+    """What rule inference, closure and distances read of the true facts.
+
+    :class:`InitIndex` is the initial state's; the live session keeps one that
+    follows the scene as it changes.
+    """
+
+    @property
+    def by_predicate(self) -> Mapping[str, Collection[GroundAtom]]: ...
+
+    @property
+    def by_object(self) -> Mapping[str, Collection[GroundAtom]]: ...
+
+    @property
+    def functional(self) -> frozenset[tuple[str, int, int]]: ...
+
+    @property
+    def singletons(self) -> frozenset[str]: ...
 
 
 @dataclass(frozen=True)
@@ -71,19 +92,20 @@ def index_init(problem: Problem) -> InitIndex:
     )
 
 
-def fan_in(index: InitIndex) -> dict[tuple[str, int], float]:
+def fan_in(index: FactIndex) -> dict[tuple[str, int], float]:
     """(predicate, position) -> facts per distinct object at that position: high for class-like
     values (the shape of forty keys), about one for a place or an owner."""
     result = {}
     for predicate, atoms in index.by_predicate.items():
-        for position in range(len(atoms[0]) - 1):
+        arity = len(next(iter(atoms), ("",))) - 1
+        for position in range(arity):
             values = {atom[1 + position] for atom in atoms}
             result[(predicate, position)] = len(atoms) / max(1, len(values))
     return result
 
 
 def object_distances(
-    index: InitIndex, sources: Iterable[str], hub_degree: int | None = None, max_fan: float | None = None
+    index: FactIndex, sources: Iterable[str], hub_degree: int | None = None, max_fan: float | None = None
 ) -> dict[str, int]:
     """Breadth-first hops from ``sources`` through initial facts (two objects in one fact are one hop apart).
 
@@ -167,7 +189,7 @@ def blocking_predicates(domain: Domain) -> set[tuple[str, int, int]]:
     return found
 
 
-def infer_constraint_rules(domain: Domain, index: InitIndex) -> tuple[ConstraintRule, ...]:
+def infer_constraint_rules(domain: Domain, index: FactIndex) -> tuple[ConstraintRule, ...]:
     """Closure rules read off the action schemas and the initial state."""
     used = _precondition_predicates(domain)
     rules: list[ConstraintRule] = []
@@ -189,7 +211,7 @@ class GoalAnalysis:
     goal_variable_types: frozenset[str]  # types quantified in the goal
 
 
-def analyse_goal(domain: Domain, problem: Problem, index: InitIndex | None = None) -> GoalAnalysis:
+def analyse_goal(domain: Domain, problem: Problem, index: FactIndex | None = None) -> GoalAnalysis:
     """Regress the goal through the schemas on typed patterns (no grounding).
 
     A pattern is (predicate, args) where each arg is a goal object or a type.
@@ -210,7 +232,7 @@ _FAR = 1 << 30
 class _Regression:
     """The backward fixpoint of :func:`analyse_goal`: patterns with the fewest role steps from the goal."""
 
-    def __init__(self, domain: Domain, problem: Problem, index: InitIndex):
+    def __init__(self, domain: Domain, problem: Problem, index: FactIndex):
         self.domain = domain
         self.index = index
         self.objects = dict(domain.constants)
@@ -303,7 +325,7 @@ class _Regression:
         return found
 
 
-def single_valued_predicates(domain: Domain, index: InitIndex) -> frozenset[str]:
+def single_valued_predicates(domain: Domain, index: FactIndex) -> frozenset[str]:
     """Predicates with one initial fact that stay single-valued: every action adding one deletes one.
 
     The robot's position is the typical case: pruning the place it stands on
@@ -311,8 +333,8 @@ def single_valued_predicates(domain: Domain, index: InitIndex) -> frozenset[str]
     """
     result = set()
     for predicate in index.singletons:
-        atoms = index.by_predicate[predicate]
-        if len(atoms[0]) < 2:
+        (atom,) = index.by_predicate[predicate]
+        if len(atom) < 2:
             continue
         adders = [
             action
@@ -353,7 +375,7 @@ def _unify(
 
 
 def _roles(
-    action: Action, bound: Mapping[str, Term], pre_atoms: list[tuple[str, tuple[str, ...]]], index: InitIndex
+    action: Action, bound: Mapping[str, Term], pre_atoms: list[tuple[str, tuple[str, ...]]], index: FactIndex
 ) -> set[str]:
     """New parameters the initial state does not determine from known ones."""
     anchored = set(bound)

@@ -13,7 +13,7 @@ from collections import defaultdict
 from collections.abc import Iterable, Set
 from dataclasses import dataclass
 
-from relevance_plan.relevance.analysis import ConstraintRule, InitIndex
+from relevance_plan.relevance.analysis import ConstraintRule, FactIndex
 
 
 @dataclass(frozen=True)
@@ -45,7 +45,7 @@ class Restored:
 def close_over_constraints(
     kept: Set[str],
     rules: Iterable[ConstraintRule],
-    index: InitIndex,
+    index: FactIndex,
     candidates: Set[str],
     singleton_predicates: Set[str] = frozenset(),
 ) -> tuple[frozenset[str], tuple[Restored, ...]]:

@@ -7,8 +7,14 @@ from collections.abc import Sequence, Set
 from dataclasses import dataclass, field
 from typing import Any
 
+from relevance_plan.pddl.model import Domain
 from relevance_plan.pddl.writer import write_pruned_problem
-from relevance_plan.relevance.analysis import ConstraintRule, infer_constraint_rules, single_valued_predicates
+from relevance_plan.relevance.analysis import (
+    ConstraintRule,
+    FactIndex,
+    infer_constraint_rules,
+    single_valued_predicates,
+)
 from relevance_plan.relevance.closure import Restored, close_over_constraints
 from relevance_plan.relevance.knowledge import KnowledgeModel, check_threshold
 from relevance_plan.relevance.reachability import repair_selection
@@ -79,8 +85,8 @@ class Selection:
         }
 
 
-def constraint_rules(task: PlanningTask, model: KnowledgeModel | None) -> tuple[ConstraintRule, ...]:
-    rules = list(infer_constraint_rules(task.domain, task.init_index))
+def constraint_rules(domain: Domain, index: FactIndex, model: KnowledgeModel | None) -> tuple[ConstraintRule, ...]:
+    rules = list(infer_constraint_rules(domain, index))
     if model is not None:
         for dependency in model.dependencies:
             rules.append(
@@ -167,7 +173,7 @@ def prune_with_scores(
     it would save little and risk a second attempt.
     """
     selected = select_relevant(task, scores, thresholds, goal_filter) | (frozenset(extra) & task.problem.objects.keys())
-    rules = constraint_rules(task, model)
+    rules = constraint_rules(task.domain, task.init_index, model)
     singletons = single_valued_predicates(task.domain, task.init_index)
 
     sound = task.kept_for_soundness

@@ -22,30 +22,38 @@ past a work budget rather than cost more than the planner would.
 from __future__ import annotations
 
 from collections import defaultdict, deque
-from collections.abc import Callable, Mapping, Sequence, Set
+from collections.abc import Callable, Iterator, Mapping, Sequence, Set
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING
 
-from relevance_plan.pddl.formulas import Atom, conjuncts, effect_literals
+from relevance_plan.pddl.formulas import Atom, Formula, GroundAtom, conjuncts, effect_literals
+from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.relevance.analysis import object_distances
 from relevance_plan.relevance.closure import Restored
-from relevance_plan.relevance.types import InferredTypes, infer_types
+
+if TYPE_CHECKING:  # the scorers' package imports this module's users
+    from relevance_plan.relevance.scorers.base import PlanningTask
 
 DEFAULT_BUDGET = 400_000  # bindings tried before the check gives up
 BUDGET_PER_OBJECT = 2_000  # the budget grows with the problem, as the planner's own grounding does
 REPAIR_MAX_FAN = 4.0  # repair candidates are ranked by hops that do not pass from a class-like value to its members
+
+Args = tuple[str, ...]  # a condition's or an effect's arguments: variables (``?x``) and names
+Condition = tuple[str, Args]  # (predicate, args)
+Binding = dict[str, str]  # variable -> object
+Step = tuple[str, ...]  # a ground action: (name, *objects)
 
 
 @dataclass(frozen=True)
 class Reachability:
     reachable: bool
     complete: bool  # False: the budget ran out, nothing is known
-    unreached: tuple = ()  # goal atoms the relaxation does not reach
-    plan: tuple = ()  # ground relaxed-plan steps (action, *args)
+    unreached: tuple[GroundAtom, ...] = ()  # goal atoms the relaxation does not reach
+    plan: tuple[Step, ...] = ()  # ground relaxed-plan steps (action, *args)
     plan_objects: frozenset[str] = frozenset()
 
 
-def _required_atoms(formula):
+def _required_atoms(formula: Formula) -> Iterator[Condition]:
     """Positive atoms that must hold (top-level conjunction only; the rest is ignored: a relaxation)."""
     for part in conjuncts(formula):
         if isinstance(part, Atom):
@@ -55,13 +63,13 @@ def _required_atoms(formula):
 @dataclass(frozen=True)
 class _Schema:
     name: str
-    parameters: tuple  # variables
-    types: tuple
-    pre: tuple  # ((predicate, args), ...)
-    add: tuple  # ((predicate, args, ((quantified variable, type), ...)), ...)
+    parameters: tuple[str, ...]  # variables
+    types: tuple[str, ...]
+    pre: tuple[Condition, ...]
+    add: tuple[tuple[str, Args, tuple[tuple[str, str], ...]], ...]  # (predicate, args, quantified (variable, type)s)
 
 
-def _schemas(domain) -> list[_Schema]:
+def _schemas(domain: Domain) -> list[_Schema]:
     """The relaxed actions (derived rules included) as join schemas; effect conditions are ignored."""
     result = []
     for action in domain.relaxed_actions:
@@ -76,11 +84,20 @@ def _schemas(domain) -> list[_Schema]:
     return result
 
 
+@dataclass(frozen=True)
+class _Achiever:
+    """The ground step that first reached a fact, with its schema and binding (to walk back from)."""
+
+    step: Step
+    schema: _Schema
+    binding: Binding
+
+
 class _OutOfBudget(Exception):
     pass
 
 
-def relaxed_reachability(task, kept: Set[str], budget: int = DEFAULT_BUDGET) -> Reachability:
+def relaxed_reachability(task: PlanningTask, kept: Set[str], budget: int = DEFAULT_BUDGET) -> Reachability:
     """Whether the goal's positive atoms are reachable under the delete relaxation using ``kept`` objects only.
 
     Each fact is processed once, in the order it was reached; an action
@@ -88,7 +105,7 @@ def relaxed_reachability(task, kept: Set[str], budget: int = DEFAULT_BUDGET) -> 
     joining the others against the facts processed so far (semi-naive, as in
     Fast Downward's translator).
     """
-    typing = typing_of(task)
+    typing = task.typing
     exploration = _Exploration(typing.domain, typing.problem, kept, budget)
     try:
         exploration.run()
@@ -105,7 +122,7 @@ def relaxed_reachability(task, kept: Set[str], budget: int = DEFAULT_BUDGET) -> 
 class _Exploration:
     """The delete-relaxed exploration of :func:`relaxed_reachability` on one object set."""
 
-    def __init__(self, domain, problem, kept: Set[str], budget: int):
+    def __init__(self, domain: Domain, problem: Problem, kept: Set[str], budget: int):
         self.domain = domain
         self.budget = budget
         self.work = [0]
@@ -113,26 +130,26 @@ class _Exploration:
         self.types_of = dict(domain.constants)
         self.types_of.update(problem.objects)
         self.goal = [(p, *args) for p, args in _required_atoms(problem.goal) if not any(a[0] == "?" for a in args)]
-        self.facts: dict[tuple, tuple | None] = {}  # fact -> (step, schema, binding) that first reached it
-        self.queue: deque = deque()
+        self.facts: dict[GroundAtom, _Achiever | None] = {}  # the step that first reached each fact
+        self.queue: deque[GroundAtom] = deque()
         # sorted: the same objects give the same relaxed plan whatever order the set was built in;
         # timed initial literals that make a fact true count as reached: a plan may wait for them
         timed = {literal.atom for literal in problem.timed_literals if literal.atom is not None and not literal.negated}
         for atom in sorted(atom for atom in problem.init | timed if all(arg in self.allowed for arg in atom[1:])):
             self.facts[atom] = None
             self.queue.append(atom)
-        self.of_type: dict[str, list] = {}
-        self.fits: dict[str, frozenset] = {}
+        self.of_type: dict[str, list[str]] = {}
+        self.fits: dict[str, frozenset[str]] = {}
         self.schemas = _schemas(domain)
-        self.triggers: dict[str, list] = defaultdict(list)
+        self.triggers: dict[str, list[tuple[_Schema, int]]] = defaultdict(list)
         for schema in self.schemas:
             for i, (predicate, _) in enumerate(schema.pre):
                 self.triggers[predicate].append((schema, i))
         # (predicate, position, value) -> facts; (predicate,) -> facts
-        self.processed: dict[tuple, list] = defaultdict(list)
+        self.processed: dict[tuple[str | int, ...], list[GroundAtom]] = defaultdict(list)
         self.missing = set(self.goal) - set(self.facts)
 
-    def objects_of(self, type_name: str) -> list:
+    def objects_of(self, type_name: str) -> list[str]:
         if type_name not in self.of_type:
             self.of_type[type_name] = sorted(
                 o for o in self.allowed if self.domain.is_subtype(self.types_of.get(o, "object"), type_name)
@@ -156,7 +173,7 @@ class _Exploration:
                 for found in list(self.join(list(schema.pre[:i] + schema.pre[i + 1 :]), binding)):
                     self.apply(schema, found)
 
-    def apply(self, schema: _Schema, binding: dict) -> None:
+    def apply(self, schema: _Schema, binding: Binding) -> None:
         for variable, type_name in zip(schema.parameters, schema.types):
             if type_name == "object":
                 continue
@@ -172,11 +189,11 @@ class _Exploration:
                 for each in _fill(full, list(quantified), self.objects_of, self.work, self.budget):
                     fact = (predicate,) + tuple(each.get(a, a) for a in args)
                     if fact not in self.facts:
-                        self.facts[fact] = (step, schema, full)
+                        self.facts[fact] = _Achiever(step, schema, full)
                         self.queue.append(fact)
                         self.missing.discard(fact)
 
-    def join(self, pre: list, binding: dict):
+    def join(self, pre: list[Condition], binding: Binding) -> Iterator[Binding]:
         if not pre:
             yield binding
             return
@@ -191,11 +208,13 @@ class _Exploration:
             if new is not None:
                 yield from self.join(rest, new)
 
-    def smallest(self, pre: list, binding: dict) -> tuple[int, tuple]:
+    def smallest(self, pre: list[Condition], binding: Binding) -> tuple[int, tuple[str | int, ...]]:
         """The condition whose bound arguments leave the fewest processed facts, and that index key."""
-        best, best_key, best_size = 0, (pre[0][0],), None
+        best: int = 0
+        best_key: tuple[str | int, ...] = (pre[0][0],)
+        best_size: int | None = None
         for j, (predicate, args) in enumerate(pre):
-            key: tuple = (predicate,)
+            key: tuple[str | int, ...] = (predicate,)
             size = len(self.processed.get(key, ()))
             for position, arg in enumerate(args):
                 value = binding.get(arg, arg) if arg[0] == "?" else arg
@@ -211,7 +230,7 @@ class _Exploration:
         return best, best_key
 
 
-def _match(args: tuple, fact: tuple, binding: dict) -> dict | None:
+def _match(args: Args, fact: GroundAtom, binding: Binding) -> Binding | None:
     if len(args) != len(fact) - 1:
         return None
     new = binding
@@ -229,7 +248,9 @@ def _match(args: tuple, fact: tuple, binding: dict) -> dict | None:
     return new
 
 
-def _fill(binding: dict, free: list, objects_of, work, budget):
+def _fill(
+    binding: Binding, free: list[tuple[str, str]], objects_of: Callable[[str], list[str]], work: list[int], budget: int
+) -> Iterator[Binding]:
     if not free:
         yield binding
         return
@@ -243,12 +264,14 @@ def _fill(binding: dict, free: list, objects_of, work, budget):
         yield from _fill(new, free[1:], objects_of, work, budget)
 
 
-def _relaxed_plan(facts: dict, goal: Sequence[tuple]) -> tuple[list, set]:
-    plan: list = []
-    objects: set = set()
-    done: set = set()
+def _relaxed_plan(
+    facts: Mapping[GroundAtom, _Achiever | None], goal: Sequence[GroundAtom]
+) -> tuple[list[Step], set[str]]:
+    plan: list[Step] = []
+    objects: set[str] = set()
+    done: set[GroundAtom] = set()
     stack = list(goal)
-    seen_steps: set = set()
+    seen_steps: set[Step] = set()
     while stack:
         fact = stack.pop()
         if fact in done:
@@ -258,7 +281,7 @@ def _relaxed_plan(facts: dict, goal: Sequence[tuple]) -> tuple[list, set]:
         achiever = facts.get(fact)
         if achiever is None:
             continue
-        step, schema, binding = achiever
+        step, schema, binding = achiever.step, achiever.schema, achiever.binding
         if step in seen_steps:
             continue
         seen_steps.add(step)
@@ -270,17 +293,17 @@ def _relaxed_plan(facts: dict, goal: Sequence[tuple]) -> tuple[list, set]:
     return plan, objects
 
 
-CloseFn = Callable[[Set[str]], tuple]
+CloseFn = Callable[[Set[str]], tuple[frozenset[str], tuple[Restored, ...]]]
 
 
 def repair_selection(
-    task,
+    task: PlanningTask,
     kept: frozenset[str],
     scores: Mapping[str, float],
     close: CloseFn,
     budget: int | None = None,
     give_up_above: int | None = None,
-) -> tuple[frozenset[str], tuple, Reachability]:
+) -> tuple[frozenset[str], tuple[Restored, ...], Reachability]:
     """Add what the relaxed goal needs to ``kept``; returns (kept, what was put back and why, the last check).
 
     Candidates are tried best first: one member of every class the kept set
@@ -305,9 +328,9 @@ def repair_selection(
         key=lambda name: (-scores.get(name, 0.0), distance.get(name, far), name),
     )
     # A class with no member kept cannot fill any role (no airplane at all): its best-ranked member goes first.
-    classes = typing_of(task).problem.objects
+    classes = task.typing.problem.objects
     present = {classes[name] for name in kept if name in classes}
-    representatives = {}
+    representatives: dict[str, str] = {}
     for name in pool:
         representatives.setdefault(classes[name], name)
     first = [name for cls, name in representatives.items() if cls not in present]
@@ -332,7 +355,7 @@ def repair_selection(
         return frozenset(current), tuple(Restored(n, "", "reachability", ("goal",)) for n in sorted(added)), check
     used = {name for name in check.plan_objects if name in task.problem.objects and name not in kept}
     used, check = _economize(task, kept, used, classes, rank, check, close, budget)
-    step_of: dict[str, tuple] = {}
+    step_of: dict[str, Step] = {}
     for step in check.plan:
         for arg in step[1:]:
             step_of.setdefault(arg, step)
@@ -346,7 +369,7 @@ def repair_selection(
 
 
 def _economize(
-    task: Any,
+    task: PlanningTask,
     kept: frozenset[str],
     used: set[str],
     classes: Mapping[str, str],
@@ -386,7 +409,7 @@ def _by_use(members: list[str], check: Reachability, rank: Mapping[str, int]) ->
 
 
 def _without(
-    task: Any, kept: frozenset[str], used: set[str], dropped: list[str], close: CloseFn, budget: int
+    task: PlanningTask, kept: frozenset[str], used: set[str], dropped: list[str], close: CloseFn, budget: int
 ) -> tuple[set[str], Reachability | None]:
     """``used`` without ``dropped`` (and without what its relaxed plan then leaves unused), if the goal
     stays relaxed-reachable."""
@@ -400,13 +423,7 @@ def _without(
     return needed or trial, attempt
 
 
-def typing_of(task) -> InferredTypes:
-    """The task's types, inferred where the domain declares none (a duck-typed task gets them computed)."""
-    typing = getattr(task, "typing", None)
-    return typing if typing is not None else infer_types(task.domain, task.problem)
-
-
-def hub_degree(task) -> int:
+def hub_degree(task: PlanningTask) -> int:
     """Objects in more initial facts than this (a shape every key has, a floor above all others) link
     everything to everything: distances do not pass through them."""
     return max(16, int(2 * len(task.problem.objects) ** 0.5))

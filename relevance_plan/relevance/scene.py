@@ -9,10 +9,11 @@ whether that place is a closed container, what it stands on, what stands on it.
 from __future__ import annotations
 
 import re
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 
-from relevance_plan.pddl.model import Domain, Problem
+from relevance_plan.pddl.formulas import GroundAtom
+from relevance_plan.pddl.model import Domain
 
 _INDEX_SUFFIX = re.compile(r"[_\-]?\d+$")
 
@@ -51,13 +52,20 @@ class Scene:
     human_places: frozenset[str]
 
 
-def build_scene(domain: Domain, problem: Problem, predicates: ScenePredicates = ScenePredicates()) -> Scene:
+def build_scene(
+    domain: Domain,
+    objects: Mapping[str, str],
+    facts: Iterable[GroundAtom],
+    predicates: ScenePredicates = ScenePredicates(),
+) -> Scene:
+    """The elements among ``objects`` (name -> type), described by the true ``facts`` about them."""
     place_of: dict[str, str] = {}
     stands_on: dict[str, str] = {}
     covered: set[str] = set()
     accessible: set[str] = set()
     human_places: set[str] = set()
-    for atom in problem.init:
+    facts = tuple(facts)
+    for atom in facts:
         name = atom[0]
         if name == predicates.location and len(atom) == 3:
             place_of.setdefault(atom[1], atom[2])
@@ -70,9 +78,9 @@ def build_scene(domain: Domain, problem: Problem, predicates: ScenePredicates = 
             human_places.add(atom[2])
             place_of.setdefault(atom[1], atom[2])  # a place matters to whoever is there too
     places = set(place_of.values())
-    humans = {atom[1] for atom in problem.init if atom[0] == predicates.human_location and len(atom) == 3}
+    humans = {atom[1] for atom in facts if atom[0] == predicates.human_location and len(atom) == 3}
     elements = {}
-    for name, type_name in problem.objects.items():
+    for name, type_name in objects.items():
         place = place_of.get(name)
         conditions = set()
         if place is not None and name not in humans:

@@ -22,6 +22,7 @@ from __future__ import annotations
 import json
 import math
 import re
+from collections.abc import Set as AbstractSet
 from dataclasses import dataclass
 
 from relevance_plan.errors import MAX_MESSAGE, RelevancePlanError, printable
@@ -123,8 +124,8 @@ def check_event(data: dict, scene: LiveScene, model: KnowledgeModel | None) -> E
             if not isinstance(profile, str):
                 raise EventError("'preferences' must be a profile name or null")
             if model is None or profile not in model.humans:
-                known = ", ".join(model.humans) if model is not None and model.humans else "none"
-                raise EventError(f"unknown preference profile '{profile}' (the model has: {known})")
+                profiles = ", ".join(model.humans) if model is not None and model.humans else "none"
+                raise EventError(f"unknown preference profile '{profile}' (the model has: {profiles})")
         return Event("human", name=name, display=display, profile=profile)
     if kind == "cue":
         task, objective = data.get("task"), data.get("objective")
@@ -163,7 +164,7 @@ def _object(display: str, scene: LiveScene) -> str:
     return name
 
 
-def _fact(item, scene: LiveScene, extra: set = frozenset()) -> tuple:
+def _fact(item, scene: LiveScene, extra: AbstractSet[str] = frozenset()) -> tuple:
     if not isinstance(item, list) or not item or not all(isinstance(part, str) for part in item):
         raise EventError(f"a fact is a list of names [PRED, ARG, ...], got {json.dumps(item)}")
     predicate = item[0].lower()

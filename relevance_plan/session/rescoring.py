@@ -45,14 +45,6 @@ def request_for(options: ScoringOptions, model: KnowledgeModel | None) -> ScoreR
     )
 
 
-class _SceneView:
-    """Just enough of a Problem for ``build_scene``: some objects and the facts about them."""
-
-    def __init__(self, objects: dict, init: list):
-        self.objects = objects
-        self.init = init
-
-
 class LiveModelScores:
     def __init__(self, scene: LiveScene, model: KnowledgeModel, options: ScoringOptions):
         self.scene = scene
@@ -66,10 +58,10 @@ class LiveModelScores:
         self.contents: dict[str, dict[str, float]] = {}  # place -> item -> score
         self.place_of: dict[str, str] = {}  # scored item -> the place its score counts for
         self.class_scores: dict[str, float] = {}
-        self.context: ModelContext | None = None
+        self.context: ModelContext = model_context(scene.goal, request_for(options, model))
         self._dirty: set = set()  # places and classes that lost a member
         self.describe_all()
-        self.set_options(options)
+        self.rescore_all()
 
     # ------------------------------------------------------------------ context
 
@@ -85,7 +77,7 @@ class LiveModelScores:
     # ------------------------------------------------------------------ descriptions
 
     def describe_all(self) -> None:
-        scene = build_scene(self.scene.domain, _SceneView(self.scene.objects, list(self.scene.facts)), self.predicates)
+        scene = build_scene(self.scene.domain, self.scene.objects, self.scene.facts, self.predicates)
         for name, element in scene.elements.items():
             self._set_element(name, element)
 
@@ -108,8 +100,8 @@ class LiveModelScores:
                 if fact[0] in (p.location, p.human_location) and len(fact) == 3 and fact[1] == name:
                     facts.update(index.facts_of(fact[2], p.access))
                     facts.update(index.facts_of(fact[2], p.human_location))
-        view = _SceneView({name: self.scene.objects[name] for name in names}, list(facts))
-        for name, element in build_scene(self.scene.domain, view, p).elements.items():
+        described = {name: self.scene.objects[name] for name in names}
+        for name, element in build_scene(self.scene.domain, described, facts, p).elements.items():
             self._set_element(name, element)
 
     def _set_element(self, name: str, element: Element) -> None:

@@ -36,18 +36,18 @@ from typing import Any
 
 from relevance_plan.io import Source, is_pddl_text, load_sources, write_text_atomic
 from relevance_plan.pddl.formatter import format_domain
-from relevance_plan.pddl.model import Domain, Problem, goal_objects, pinned_objects
+from relevance_plan.pddl.formulas import Formula
+from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.plans import Plan
 from relevance_plan.pddl.writer import write_pruned_problem
 from relevance_plan.planning.loop import PlanOptions, PlanResult, PlanStatus, run_attempts, summarise
 from relevance_plan.planning.outcome import RunOutcome
 from relevance_plan.planning.validate import validate_plan
-from relevance_plan.relevance.analysis import single_valued_predicates
+from relevance_plan.relevance.analysis import ConstraintRule, FactIndex, single_valued_predicates
 from relevance_plan.relevance.knowledge import KnowledgeModel
 from relevance_plan.relevance.prune import Selection, constraint_rules, prune_with_scores
 from relevance_plan.relevance.scorers import PlanningTask, ScoreResult
 from relevance_plan.relevance.setup import Scoring, ScoringOptions, choose_scorer, resolve_model
-from relevance_plan.relevance.soundness import objects_to_keep, soundness_requirements
 from relevance_plan.session.events import Event, EventError, check_event, parse_event_line
 from relevance_plan.session.rescoring import ALL, FullScores, LiveModelScores, restrict
 from relevance_plan.session.state import LiveScene
@@ -171,6 +171,7 @@ class Session:
         self.model = model
         self.scene = LiveScene(domain, problem)
         scorer = choose_scorer("relevance", self.model, options.scorer)
+        self.scores: LiveModelScores | FullScores
         if scorer == "model" and self.model is not None:
             self.scores = LiveModelScores(self.scene, self.model, options)
         else:
@@ -183,12 +184,13 @@ class Session:
         self.seq = 0
         self.selection: Selection | None = None  # the last selection made with sufficient cues
         self.passing: set = set()
-        self._rules = None  # (functional positions, closure rules by predicate) for the trigger check
+        # (functional positions, closure rules by predicate) for the trigger check
+        self._rules: tuple[frozenset, dict[str, list[ConstraintRule]]] | None = None
         self._singletons = self.scene.index.singletons
         self._single_valued = single_valued_predicates(domain, _IndexView(self.scene))
         self.plan_steps: Plan | None = None
         self.planned_kept: frozenset | None = None
-        self.planned_goal = None
+        self.planned_goal: Formula | None = None
         self._recount_passing()
         if not self.idle:
             self._determine()
@@ -308,6 +310,8 @@ class Session:
         """Change the scene; returns (whether anything changed, the elements whose scores may differ)."""
         scene, scores = self.scene, self.scores
         if event.kind == "add":
+            # check_event fills what each kind needs; the asserts only tell the type checker
+            assert event.name is not None and event.type is not None and event.display is not None
             scene.add_object(event.name, event.type, event.display)
             for fact in event.facts:
                 scene.set(fact)
@@ -315,6 +319,7 @@ class Session:
             scores.describe(names)
             return True, scores.refresh(names)
         if event.kind == "remove":
+            assert event.name is not None
             gone = scene.remove_object(event.name)
             scores.forget(event.name)
             names = self._affected(gone) - {event.name}
@@ -325,6 +330,7 @@ class Session:
                 return True, ALL
             return True, scores.refresh(names)
         if event.fluent is not None:
+            assert event.value is not None
             if not scene.set_value(event.fluent, event.value):
                 return False, set()
             names = {n for n in event.fluent[1:] if n in scene.objects}
@@ -338,6 +344,7 @@ class Session:
             scores.describe(names)
             return True, scores.refresh(names)
         if event.kind == "goal":
+            assert event.goal is not None
             if event.goal == scene.goal:
                 return False, set()
             scene.goal = event.goal
@@ -396,10 +403,10 @@ class Session:
             return frozenset()
         functional = self.scene.index.functional
         if self._rules is None or self._rules[0] != functional:
-            rules: dict = {}
-            for rule in constraint_rules(_LiveTask.of(self.scene, with_problem=False), self.model):
-                rules.setdefault(rule.predicate, []).append(rule)
-            self._rules = (functional, rules)
+            by_predicate: dict[str, list[ConstraintRule]] = {}
+            for rule in constraint_rules(self.domain, _IndexView(self.scene), self.model):
+                by_predicate.setdefault(rule.predicate, []).append(rule)
+            self._rules = (functional, by_predicate)
         fact = event.facts[0]
         return frozenset(
             fact[1 + rule.when_kept] for rule in self._rules[1].get(fact[0], ()) if fact[1 + rule.when_kept] in kept
@@ -434,7 +441,7 @@ class Session:
         scores = self.scores.result()
         if not scores.sufficient:
             return  # the previous selection stays in force, stale
-        task = _LiveTask.of(self.scene)
+        task = _LiveTask(self.scene.domain, self.scene.snapshot_problem(), _IndexView(self.scene))
         self.selection = prune_with_scores(task, scores, self.options.thresholds, self.model)
 
     def _report(self, kind: str, reasons: tuple, previous: Selection | None, seconds: float) -> EventReport:
@@ -564,32 +571,15 @@ def planner_in_folder(owner: object, options: PlanOptions, domain_path: str | No
     return run
 
 
-@dataclass(frozen=True)
-class _LiveTask:
-    """The current state as the planning task ``prune_with_scores`` needs (duck-types PlanningTask)."""
+@dataclass(frozen=True, eq=False)
+class _LiveTask(PlanningTask):
+    """The current state as a planning task, its facts indexed by the live index rather than again."""
 
-    domain: Domain
-    problem: Problem
-    init_index: object
-    goal_objects: frozenset = field(default=frozenset())
-    pinned_objects: frozenset = field(default=frozenset())
-    kept_for_soundness: Mapping = field(default_factory=dict)
+    live_index: FactIndex
 
-    @classmethod
-    def of(cls, scene: LiveScene, with_problem: bool = True) -> _LiveTask:
-        """``with_problem=False``: only the domain and the index (enough for the closure rules)."""
-        if not with_problem:
-            return cls(scene.domain, None, _IndexView(scene))
-        problem = scene.snapshot_problem()
-        sound = objects_to_keep(scene.domain, problem, soundness_requirements(scene.domain, problem))
-        return cls(
-            scene.domain,
-            problem,
-            _IndexView(scene),
-            goal_objects(problem, scene.domain),
-            pinned_objects(problem, scene.domain),
-            sound,
-        )
+    @property
+    def init_index(self) -> FactIndex:
+        return self.live_index
 
 
 class _IndexView:

@@ -63,7 +63,7 @@ class LiveIndex:
 
     @property
     def functional(self) -> frozenset:
-        found = set()
+        found: set[tuple[str, int, int]] = set()
         for predicate, facts in self.by_predicate.items():
             if not facts:
                 continue

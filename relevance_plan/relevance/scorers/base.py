@@ -7,7 +7,7 @@ from dataclasses import dataclass, field
 from functools import cached_property
 
 from relevance_plan.pddl.model import Domain, Problem, goal_objects, pinned_objects
-from relevance_plan.relevance.analysis import GoalAnalysis, InitIndex, analyse_goal, index_init, object_distances
+from relevance_plan.relevance.analysis import FactIndex, GoalAnalysis, analyse_goal, index_init, object_distances
 from relevance_plan.relevance.knowledge import KnowledgeModel
 from relevance_plan.relevance.soundness import KeptForSoundness, objects_to_keep, soundness_requirements
 from relevance_plan.relevance.types import InferredTypes, infer_types
@@ -21,7 +21,7 @@ class PlanningTask:
     problem: Problem
 
     @cached_property
-    def init_index(self) -> InitIndex:
+    def init_index(self) -> FactIndex:
         return index_init(self.problem)
 
     @cached_property

@@ -212,7 +212,7 @@ def score_by_model(task: PlanningTask, request: ScoreRequest) -> ScoreResult:
     model = context.model
     if context.insufficiency:
         return insufficient_result(task.problem.objects, context, context.insufficiency)
-    scene = build_scene(task.domain, task.problem, model.scene)
+    scene = build_scene(task.domain, task.problem.objects, task.problem.init, model.scene)
 
     element_class: dict[str, str] = {name: class_of(element, model) for name, element in scene.elements.items()}
     unknown = tuple(sorted(name for name, c in element_class.items() if c == UNKNOWN_CLASS))
