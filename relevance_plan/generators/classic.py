@@ -23,7 +23,7 @@ from __future__ import annotations
 import hashlib
 import math
 import random
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, NamedTuple
@@ -206,12 +206,25 @@ def _gripper(rng: random.Random, size: int, dense: bool = False) -> Instance:
         where[ball] = rng.choice(rooms)
         inst.facts.append(("at", ball, where[ball]))
     needed = {robby, *grippers}
-    for ball in balls if dense else rng.sample(balls, rng.randint(2, 4)):
-        target = rng.choice([r for r in rooms if r != where[ball]])
-        inst.goal.append(("at", ball, target))
-        needed.update({ball, where[ball], target})
+    _goal_moves(rng, inst, balls if dense else rng.sample(balls, rng.randint(2, 4)), where, rooms, needed)
     inst.necessary = sorted(needed)
     return inst
+
+
+def _goal_moves(
+    rng: random.Random,
+    inst: Instance,
+    movables: list[str],
+    where: Mapping[str, str],
+    places: list[str],
+    needed: set[str],
+) -> None:
+    """A goal ``(at X target)`` for each of ``movables``, the target another of ``places``; the
+    object, its place and its target are needed."""
+    for thing in movables:
+        target = rng.choice([place for place in places if place != where[thing]])
+        inst.goal.append(("at", thing, target))
+        needed.update({thing, where[thing], target})
 
 
 def _ferry(rng: random.Random, size: int, dense: bool = False) -> Instance:
@@ -227,10 +240,7 @@ def _ferry(rng: random.Random, size: int, dense: bool = False) -> Instance:
         where[car] = rng.choice(locations)
         inst.facts.append(("at", car, where[car]))
     needed = {ferry_at}
-    for car in cars if dense else rng.sample(cars, rng.randint(2, 3)):
-        target = rng.choice([loc for loc in locations if loc != where[car]])
-        inst.goal.append(("at", car, target))
-        needed.update({car, where[car], target})
+    _goal_moves(rng, inst, cars if dense else rng.sample(cars, rng.randint(2, 3)), where, locations, needed)
     inst.necessary = sorted(needed)
     return inst
 
@@ -278,21 +288,31 @@ def _grid(rng: random.Random, size: int, dense: bool = False) -> Instance:
     return inst
 
 
-def _miconic(rng: random.Random, size: int, dense: bool = False) -> Instance:
-    """Many floors and passengers; 2-4 passengers must be served."""
+def miconic_building(
+    rng: random.Random, size: int, floor_every: int
+) -> tuple[Instance, str, dict[str, tuple[str, str]]]:
+    """A building of one floor per ``floor_every`` objects, the rest passengers, each with a trip between
+    two floors and not boarded; returns it with the lift's floor and the trips (no goal yet)."""
     inst = Instance()
-    floors = [inst.add("floor", f"f{i}") for i in range(1, max(4, size // 8) + 1)]
+    floors = [inst.add("floor", f"f{i}") for i in range(1, max(4, size // floor_every) + 1)]
     passengers = [inst.add("passenger", f"pass{i}") for i in range(1, max(4, size - len(inst.objects)) + 1)]
     for i, lower in enumerate(floors):
         for upper in floors[i + 1 :]:
             inst.facts.append(("above", lower, upper))
     lift = rng.choice(floors)
     inst.facts.append(("lift-at", lift))
-    trips = {}
+    trips: dict[str, tuple[str, str]] = {}
     for person in passengers:
         origin, destin = rng.sample(floors, 2)
         trips[person] = (origin, destin)
         inst.facts += [("origin", person, origin), ("destin", person, destin), ("not-boarded", person)]
+    return inst, lift, trips
+
+
+def _miconic(rng: random.Random, size: int, dense: bool = False) -> Instance:
+    """Many floors and passengers; 2-4 passengers must be served."""
+    inst, lift, trips = miconic_building(rng, size, 8)
+    passengers = list(trips)
     needed = {lift}
     for person in passengers if dense else rng.sample(passengers, rng.randint(2, 4)):
         inst.goal.append(("served", person))

@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import random
 
-from relevance_plan.generators.classic import Instance, logistics_map
+from relevance_plan.generators.classic import Instance, logistics_map, miconic_building
 
 
 def build_logistics_manygoals(rng: random.Random, size: int) -> Instance:
@@ -51,19 +51,8 @@ def build_logistics_manygoals(rng: random.Random, size: int) -> Instance:
 
 
 def build_miconic_manygoals(rng: random.Random, size: int) -> Instance:
-    inst = Instance()
-    floors = [inst.add("floor", f"f{i}") for i in range(1, max(4, size // 10) + 1)]
-    passengers = [inst.add("passenger", f"pass{i}") for i in range(1, max(4, size - len(inst.objects)) + 1)]
-    for i, lower in enumerate(floors):
-        for upper in floors[i + 1 :]:
-            inst.facts.append(("above", lower, upper))
-    lift = rng.choice(floors)
-    inst.facts.append(("lift-at", lift))
-    trips = {}
-    for person in passengers:
-        trips[person] = tuple(rng.sample(floors, 2))
-        inst.facts += [("origin", person, trips[person][0]), ("destin", person, trips[person][1])]
-        inst.facts.append(("not-boarded", person))
+    inst, lift, trips = miconic_building(rng, size, 10)
+    passengers = list(trips)
     needed = {lift}
     for person in rng.sample(passengers, max(2, len(passengers) // 10)):
         inst.goal.append(("served", person))

@@ -237,29 +237,36 @@ def walk(node: Node) -> Iterator[Node]:
         stack.extend(reversed(children(current)))
 
 
-def literals(formula: Formula, positive: bool = True) -> Iterator[tuple[Atom, bool]]:
-    """Every atom of a condition with its polarity (``imply`` negates its condition).
+def with_polarity(formula: Formula, positive: bool = True) -> Iterator[tuple[Formula, bool]]:
+    """Every sub-condition of a condition, itself first, with its polarity: ``not`` flips it,
+    ``imply`` flips its condition's, and a trajectory constraint that requires a part true at
+    some points and false at others gives that part both.  Numeric expressions are not entered.
 
     Timed parts, preferences and quantifiers are looked through: this is the
     relaxed view (a durative action is its conditions at both ends).
-    Numeric comparisons and object equality have no atoms.
     """
-    if isinstance(formula, Atom):
-        yield formula, positive
-    elif isinstance(formula, Not):
-        yield from literals(formula.body, not positive)
+    yield formula, positive
+    if isinstance(formula, Not):
+        yield from with_polarity(formula.body, not positive)
     elif isinstance(formula, Imply):
-        yield from literals(formula.condition, not positive)
-        yield from literals(formula.consequence, positive)
+        yield from with_polarity(formula.condition, not positive)
+        yield from with_polarity(formula.consequence, positive)
     elif isinstance(formula, Modal) and formula.operator in ("at-most-once", "sometime-before", "sometime-after"):
-        # these constrain both ways: each part is required true at some points and false at others
         for part in formula.parts:
-            yield from literals(part, positive)
-            yield from literals(part, not positive)
+            yield from with_polarity(part, positive)
+            yield from with_polarity(part, not positive)
     else:
         for child in children(formula):
             if not isinstance(child, (Number, Fluent, NumericVariable, Arithmetic)):
-                yield from literals(child, positive)
+                yield from with_polarity(child, positive)
+
+
+def literals(formula: Formula, positive: bool = True) -> Iterator[tuple[Atom, bool]]:
+    """Every atom of a condition with its polarity (:func:`with_polarity`).  Numeric comparisons
+    and object equality have no atoms."""
+    for node, polarity in with_polarity(formula, positive):
+        if isinstance(node, Atom):
+            yield node, polarity
 
 
 @dataclass(frozen=True, slots=True)
@@ -275,65 +282,45 @@ class EffectLiteral:
 
 def effect_literals(effect: Formula) -> Iterator[EffectLiteral]:
     """Every literal an effect can set (numeric effects are :func:`numeric_effects`)."""
-    yield from _effect_literals(effect, TRUE, (), None)
-
-
-def _effect_literals(
-    effect: Formula, condition: Formula, quantified: Parameters, when: str | None
-) -> Iterator[EffectLiteral]:
-    if isinstance(effect, Atom):
-        yield EffectLiteral(effect, True, condition, quantified, when)
-    elif isinstance(effect, Not) and isinstance(effect.body, Atom):
-        yield EffectLiteral(effect.body, False, condition, quantified, when)
-    elif isinstance(effect, And):
-        for part in effect.parts:
-            yield from _effect_literals(part, condition, quantified, when)
-    elif isinstance(effect, Forall):
-        yield from _effect_literals(effect.body, condition, quantified + effect.parameters, when)
-    elif isinstance(effect, When):
-        combined = effect.condition if condition == TRUE else And((condition, effect.condition))
-        yield from _effect_literals(effect.effect, combined, quantified, when)
-    elif isinstance(effect, Timed):
-        yield from _effect_literals(effect.body, condition, quantified, effect.when)
+    for node, condition, quantified, when in _primitive_effects(effect, TRUE, (), None):
+        if isinstance(node, Atom):
+            yield EffectLiteral(node, True, condition, quantified, when)
+        elif isinstance(node, Not) and isinstance(node.body, Atom):
+            yield EffectLiteral(node.body, False, condition, quantified, when)
 
 
 def numeric_effects(effect: Formula) -> Iterator[tuple[NumericEffect, Formula, Parameters, str | None]]:
     """(effect, condition, quantified variables, time) of every numeric effect."""
-    stack: list[tuple[Formula, Formula, Parameters, str | None]] = [(effect, TRUE, (), None)]
-    while stack:
-        node, condition, quantified, when = stack.pop()
+    for node, condition, quantified, when in _primitive_effects(effect, TRUE, (), None):
         if isinstance(node, NumericEffect):
             yield node, condition, quantified, when
-        elif isinstance(node, And):
-            stack.extend((part, condition, quantified, when) for part in reversed(node.parts))
-        elif isinstance(node, Forall):
-            stack.append((node.body, condition, quantified + node.parameters, when))
-        elif isinstance(node, When):
-            combined = node.condition if condition == TRUE else And((condition, node.condition))
-            stack.append((node.effect, combined, quantified, when))
-        elif isinstance(node, Timed):
-            stack.append((node.body, condition, quantified, node.when))
+
+
+def _primitive_effects(
+    effect: Formula, condition: Formula, quantified: Parameters, when: str | None
+) -> Iterator[tuple[Formula, Formula, Parameters, str | None]]:
+    """Each effect below ``and``, ``forall``, ``when`` and timing, in order, with the condition,
+    quantified variables and time it is under."""
+    if isinstance(effect, And):
+        for part in effect.parts:
+            yield from _primitive_effects(part, condition, quantified, when)
+    elif isinstance(effect, Forall):
+        yield from _primitive_effects(effect.body, condition, quantified + effect.parameters, when)
+    elif isinstance(effect, When):
+        combined = effect.condition if condition == TRUE else And((condition, effect.condition))
+        yield from _primitive_effects(effect.effect, combined, quantified, when)
+    elif isinstance(effect, Timed):
+        yield from _primitive_effects(effect.body, condition, quantified, effect.when)
+    else:
+        yield effect, condition, quantified, when
 
 
 def quantifiers(formula: Formula, positive: bool = True) -> Iterator[tuple[Exists | Forall, bool]]:
     """Every quantifier of a condition with its polarity (a universal is one under positive
     polarity, or an existential under negative polarity)."""
-    if isinstance(formula, (Exists, Forall)):
-        yield formula, positive
-        yield from quantifiers(formula.body, positive)
-    elif isinstance(formula, Not):
-        yield from quantifiers(formula.body, not positive)
-    elif isinstance(formula, Imply):
-        yield from quantifiers(formula.condition, not positive)
-        yield from quantifiers(formula.consequence, positive)
-    elif isinstance(formula, Modal) and formula.operator in ("at-most-once", "sometime-before", "sometime-after"):
-        for part in formula.parts:
-            yield from quantifiers(part, positive)
-            yield from quantifiers(part, not positive)
-    else:
-        for child in children(formula):
-            if not isinstance(child, (Number, Fluent, NumericVariable, Arithmetic)):
-                yield from quantifiers(child, positive)
+    for node, polarity in with_polarity(formula, positive):
+        if isinstance(node, (Exists, Forall)):
+            yield node, polarity
 
 
 def terms_of(node: Node) -> Iterator[str]:

@@ -529,12 +529,7 @@ def _read_domain_section(reader: _Reader, section: Item, parts: _DomainParts) ->
         for item in body:
             if not isinstance(item, Node) or not item.items:
                 reader.fail("expected '(predicate ?x - type ...)'", item)
-            predicate = reader.symbol(item.items[0], "a predicate name")
-            if predicate in parts.predicates:
-                reader.fail(f"predicate '{predicate}' is declared twice", item)
-            params = reader.parameters(Node(item.items[1:], item.start, item.end, item.line), None, unique=False)
-            for (_, type_name), element in zip(params, item.items[1:]):
-                _check_type(reader, type_name, parts.types, element, f"predicate '{predicate}'", PDDLParseError)
+            predicate, params = _read_signature(reader, item, "predicate", parts.predicates, parts.types)
             parts.predicates[predicate] = params
     elif key == ":functions":
         _read_functions(reader, body, parts)
@@ -550,6 +545,19 @@ def _read_domain_section(reader: _Reader, section: Item, parts: _DomainParts) ->
         reader.fail(f"'{key}' (PDDL+) is not supported", section, UnsupportedFeatureError)
     else:
         reader.fail(f"unknown domain section '{key}'", section)
+
+
+def _read_signature(
+    reader: _Reader, item: Node, what: str, declared: Mapping[str, f.Parameters], types: Mapping[str, str]
+) -> tuple[str, f.Parameters]:
+    """``(name ?x - type ...)`` of a predicate or a function: its name and typed parameters, checked."""
+    name = reader.symbol(item.items[0], f"a {what} name")
+    if name in declared:
+        reader.fail(f"{what} '{name}' is declared twice", item)
+    params = reader.parameters(Node(item.items[1:], item.start, item.end, item.line), None, unique=False)
+    for (_, type_name), element in zip(params, item.items[1:]):
+        _check_type(reader, type_name, types, element, f"{what} '{name}'", PDDLParseError)
+    return name, params
 
 
 def _check_type(
@@ -588,12 +596,7 @@ def _read_functions(reader: _Reader, body: list[Item], parts: _DomainParts) -> N
             continue
         if not isinstance(item, Node) or not item.items:
             reader.fail("expected '(function ?x - type ...)' in :functions", item)
-        name = reader.symbol(item.items[0], "a function name")
-        if name in parts.functions:
-            reader.fail(f"function '{name}' is declared twice", item)
-        params = reader.parameters(Node(item.items[1:], item.start, item.end, item.line), None, unique=False)
-        for (_, type_name), symbol in zip(params, item.items[1:]):
-            _check_type(reader, type_name, parts.types, symbol, f"function '{name}'", PDDLParseError)
+        name, params = _read_signature(reader, item, "function", parts.functions, parts.types)
         parts.functions[name] = params
         parts.function_types[name] = NUMBER
         index += 1

@@ -34,6 +34,7 @@ import subprocess
 import sys
 import threading
 import time
+from collections.abc import Iterator
 
 # Only a directory an adapter made for this run is removed (tempfile prefix "relevance-plan-").
 SCRATCH_PREFIX = "relevance-plan-"
@@ -48,9 +49,9 @@ _EXIT = threading.Lock()  # held by whoever ends the guard: the planner's end or
 # --------------------------------------------------------------------------- the sweep (also used by the tool)
 
 
-def _process_table() -> dict[int, list[tuple[int, bytes, bytes]]]:
-    """parent pid -> [(pid, state, start time)] for every process in /proc."""
-    children: dict[int, list[tuple[int, bytes, bytes]]] = {}
+def process_stats() -> Iterator[tuple[int, list[bytes]]]:
+    """(pid, fields) of every process in /proc; the fields follow the command name in its stat file:
+    state, ppid, pgrp, session, ... (the start time, field 22 of stat, is here 19)."""
     for entry in os.scandir("/proc"):
         if not entry.name.isdigit():
             continue
@@ -58,9 +59,15 @@ def _process_table() -> dict[int, list[tuple[int, bytes, bytes]]]:
             with open(f"/proc/{entry.name}/stat", "rb") as stream:
                 fields = stream.read().rsplit(b")", 1)[1].split()
         except (OSError, IndexError):
-            continue
-        # fields: state, ppid, pgrp, session, ...; the start time is field 22 of stat, here 19
-        children.setdefault(int(fields[1]), []).append((int(entry.name), fields[0], fields[19]))
+            continue  # gone meanwhile
+        yield int(entry.name), fields
+
+
+def _process_table() -> dict[int, list[tuple[int, bytes, bytes]]]:
+    """parent pid -> [(pid, state, start time)] for every process in /proc."""
+    children: dict[int, list[tuple[int, bytes, bytes]]] = {}
+    for pid, fields in process_stats():
+        children.setdefault(int(fields[1]), []).append((pid, fields[0], fields[19]))
     return children
 
 

@@ -396,18 +396,8 @@ def _await_run_death(run: _Run, timeout: float = 2.0) -> None:
 
 
 def _group_runs(pgid: int) -> bool:
-    for entry in os.scandir("/proc"):
-        if not entry.name.isdigit():
-            continue
-        try:
-            with open(f"/proc/{entry.name}/stat", "rb") as stream:
-                fields = stream.read().rsplit(b")", 1)[1].split()
-        except (OSError, IndexError):
-            continue
-        # fields: state, ppid, pgrp, ...; a zombie has exited already.
-        if int(fields[2]) == pgid and fields[0] != b"Z":
-            return True
-    return False
+    # a zombie has exited already
+    return any(int(fields[2]) == pgid and fields[0] != b"Z" for _, fields in guard.process_stats())
 
 
 def _limit_memory(megabytes: int) -> None:

@@ -22,6 +22,7 @@ from __future__ import annotations
 import json
 import math
 import re
+from collections.abc import Mapping
 from collections.abc import Set as AbstractSet
 from dataclasses import dataclass
 
@@ -165,35 +166,33 @@ def _object(display: str, scene: LiveScene) -> str:
 
 
 def _fact(item, scene: LiveScene, extra: AbstractSet[str] = frozenset()) -> tuple:
+    return _ground(item, scene, "fact", "predicate", scene.domain.predicates, extra)
+
+
+def _fluent(item, scene: LiveScene) -> tuple:
+    return _ground(item, scene, "fluent", "function", scene.domain.functions, frozenset())
+
+
+_SHOWN = {"predicate": "PRED", "function": "FUNCTION"}
+
+
+def _ground(
+    item, scene: LiveScene, what: str, head: str, declared: Mapping[str, tuple], extra: AbstractSet[str]
+) -> tuple:
+    """``[NAME, ARG, ...]`` of a fact or a fluent: a declared name with as many known objects as it takes."""
     if not isinstance(item, list) or not item or not all(isinstance(part, str) for part in item):
-        raise EventError(f"a fact is a list of names [PRED, ARG, ...], got {json.dumps(item)}")
-    predicate = item[0].lower()
-    parameters = scene.domain.predicates.get(predicate)
+        raise EventError(f"a {what} is a list of names [{_SHOWN[head]}, ARG, ...], got {json.dumps(item)}")
+    name = item[0].lower()
+    parameters = declared.get(name)
     if parameters is None:
-        raise EventError(f"unknown predicate '{item[0]}'")
+        raise EventError(f"unknown {head} '{item[0]}'")
     if len(parameters) != len(item) - 1:
-        raise EventError(f"predicate '{item[0]}' takes {len(parameters)} arguments, got {len(item) - 1}")
+        raise EventError(f"{head} '{item[0]}' takes {len(parameters)} arguments, got {len(item) - 1}")
     args = tuple(arg.lower() for arg in item[1:])
     for arg, shown in zip(args, item[1:]):
         if arg not in scene.objects and arg not in scene.domain.constants and arg not in extra:
             raise EventError(f"unknown object '{shown}' in ({' '.join(item)})")
-    return (predicate,) + args
-
-
-def _fluent(item, scene: LiveScene) -> tuple:
-    if not isinstance(item, list) or not item or not all(isinstance(part, str) for part in item):
-        raise EventError(f"a fluent is a list of names [FUNCTION, ARG, ...], got {json.dumps(item)}")
-    function = item[0].lower()
-    parameters = scene.domain.functions.get(function)
-    if parameters is None:
-        raise EventError(f"unknown function '{item[0]}'")
-    if len(parameters) != len(item) - 1:
-        raise EventError(f"function '{item[0]}' takes {len(parameters)} arguments, got {len(item) - 1}")
-    args = tuple(arg.lower() for arg in item[1:])
-    for arg, shown in zip(args, item[1:]):
-        if arg not in scene.objects and arg not in scene.domain.constants:
-            raise EventError(f"unknown object '{shown}' in ({' '.join(item)})")
-    return (function,) + args
+    return (name,) + args
 
 
 def _number(value) -> float:
