@@ -1,5 +1,5 @@
 """``python -m relevance_plan``: the ``relevance-plan`` command."""
 
-from relevance_plan.cli import main
+from relevance_plan.cli.launch import main
 
-main(prog_name="relevance-plan")
+main()

@@ -19,7 +19,7 @@ from relevance_plan.io import load_task
 from relevance_plan.pddl.plans import read_plan
 from relevance_plan.pddl.simulator import simulate
 from relevance_plan.pddl.writer import write_pruned_problem
-from relevance_plan.planning import fast_downward
+from relevance_plan.planning import fast_downward, fd_command
 from relevance_plan.planning.compile import COMPILED_FEATURES, compile_for, prepare_planner
 from relevance_plan.planning.features import STRIPS, TYPING, problem_features
 from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task
@@ -193,7 +193,7 @@ def test_validator_val_without_val_is_refused_before_planning(coffee_files, monk
 
 
 def test_fast_downward_arguments_come_after_the_inputs():
-    command = fast_downward._build_command(
+    command = fd_command.build_command(
         "python", Path("fd.py"), Path("d"), Path("p"), "astar-blind", None, None, ("--translate-options", "-x")
     )
     assert command[-5:] == ["p", "--search", "astar(blind())", "--translate-options", "-x"]

@@ -48,7 +48,7 @@ def test_the_two_set_up_commands_are_there_and_their_parts_exist(commands):
     assert "pip install -e . && relevance-plan demo\n" in text
     assert "pip install -e '.[test]' && python -m pytest -q\n" in text
     project = (REPO / "pyproject.toml").read_text()
-    assert 'relevance-plan = "relevance_plan.cli:main"' in project
+    assert 'relevance-plan = "relevance_plan.cli.launch:main"' in project
     assert re.search(r"^test = \[", project, flags=re.MULTILINE)
     assert '"slow:' in project and '"planner:' in project  # the markers the README names
     assert "--runslow" in (REPO / "tests" / "conftest.py").read_text()

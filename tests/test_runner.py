@@ -15,7 +15,7 @@ import pytest
 from support import write_file
 
 from relevance_plan import errors
-from relevance_plan.planning import fast_downward, process
+from relevance_plan.planning import fast_downward, fd_command, process
 from relevance_plan.planning.outcome import PlannerStatus
 
 GRIPPER_DOMAIN = """
@@ -118,7 +118,7 @@ def test_planner_arguments() -> None:
 
 def test_command_puts_driver_options_before_files_and_search_after(tmp_path: Path) -> None:
     domain, problem = tmp_path / "d.pddl", tmp_path / "p.pddl"
-    command = fast_downward._build_command("py", Path("fd.py"), domain, problem, "ff-gbfs", 9.2, 100)
+    command = fd_command.build_command("py", Path("fd.py"), domain, problem, "ff-gbfs", 9.2, 100)
     assert command[:8] == [
         "py",
         "fd.py",
@@ -131,7 +131,7 @@ def test_command_puts_driver_options_before_files_and_search_after(tmp_path: Pat
     ]
     assert command[8:10] == [str(domain), str(problem)]
     assert command[10:] == list(fast_downward.PLANNER_CONFIGS["ff-gbfs"])
-    command = fast_downward._build_command("py", Path("fd.py"), domain, problem, "lama", None, None)
+    command = fd_command.build_command("py", Path("fd.py"), domain, problem, "lama", None, None)
     assert command[2:] == ["--plan-file", "sas_plan", "--alias", "seq-sat-lama-2011", str(domain), str(problem)]
 
 

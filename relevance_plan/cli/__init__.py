@@ -1,5 +1,19 @@
-"""The ``relevance-plan`` command: the only place that prints for the user and exits."""
+"""The ``relevance-plan`` command: the only place that prints for the user and exits.
 
-from relevance_plan.cli.app import main
+``main`` (the click group) is imported on first use, so that the launcher
+(``launch.py``, the console script) can start work before the commands load.
+"""
+
+from __future__ import annotations
+
+from typing import Any
 
 __all__ = ["main"]
+
+
+def __getattr__(name: str) -> Any:
+    if name == "main":
+        from relevance_plan.cli.app import main
+
+        return main
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -18,10 +18,9 @@ import ast
 import difflib
 import functools
 import hashlib
-import importlib.util
-import math
 import os
 import re
+import shutil
 import signal
 import sys
 from collections.abc import Sequence
@@ -32,33 +31,22 @@ from relevance_plan import errors
 from relevance_plan.errors import PlanFormatError
 from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.plans import Plan, read_plan
+from relevance_plan.planning import head_start
+from relevance_plan.planning.fd_command import (
+    DEFAULT_CONFIG,
+    FAST_DOWNWARD_ENV,
+    PLAN_FILE,
+    PLANNER_CONFIGS,
+    build_command,
+    find_fast_downward,
+    planner_arguments,
+)
 from relevance_plan.planning.features import CLASSICAL, refuse_unsupported
 from relevance_plan.planning.outcome import PlannerStatus, RunOutcome, signal_reason
 from relevance_plan.planning.process import log_tail, read_log, run_process_group, watchdog_deadline, work_directory
 
 NAME = "fast-downward"
-FAST_DOWNWARD_ENV = "RELEVANCE_PLAN_FAST_DOWNWARD"
-DEFAULT_CONFIG = "lama-first"
 WHOSE = "Fast Downward"
-
-# Named configurations -> driver arguments.  Options the driver itself parses
-# (``--alias``) must precede the input files, while component options
-# (``--evaluator``, ``--search``) must follow them: ``--search`` before the
-# files would be read as the driver's "run search component" flag.
-# ``_split_driver_options`` puts each part in its place.
-PLANNER_CONFIGS: dict[str, tuple[str, ...]] = {
-    "lama-first": ("--alias", "lama-first"),
-    # Anytime: writes sas_plan.1, sas_plan.2, ... with decreasing cost.
-    "lama": ("--alias", "seq-sat-lama-2011"),
-    "ff-gbfs": ("--evaluator", "h=ff()", "--search", "lazy_greedy([h],preferred=[h])"),
-    "astar-lmcut": ("--search", "astar(lmcut())"),
-    "astar-blind": ("--search", "astar(blind())"),
-}
-
-# Driver options that take one value and belong before the input files.
-_DRIVER_OPTIONS = frozenset({"--alias", "--portfolio"})
-
-PLAN_FILE = "sas_plan"
 
 # Driver exit code -> (its name in the driver's ``returncodes.py``, our status).
 # Checked against the copy in up-fast-downward by the tests.  A negative code
@@ -128,33 +116,6 @@ _PYTHON_FINALIZE_FAILED = 120
 # --------------------------------------------------------------------------- the driver
 
 
-@functools.cache
-def _locate_driver(override: str | None) -> Path:
-    if override:
-        path = Path(override).expanduser()
-        if not path.is_file():
-            raise errors.PlannerError(f"Fast Downward driver not found at {path} (from ${FAST_DOWNWARD_ENV})")
-        return path.resolve()
-    # find_spec locates the package without importing it (its __init__
-    # pulls in unified_planning, which is slow).
-    spec = importlib.util.find_spec("up_fast_downward")
-    if spec is None or not spec.submodule_search_locations:
-        raise errors.PlannerError(f"up-fast-downward is not installed; install it or set ${FAST_DOWNWARD_ENV}")
-    for location in spec.submodule_search_locations:
-        path = Path(location) / "downward" / "fast-downward.py"
-        if path.is_file():
-            return path.resolve()
-    raise errors.PlannerError(
-        f"up-fast-downward has no downward/fast-downward.py; reinstall it or set ${FAST_DOWNWARD_ENV}"
-    )
-
-
-def find_fast_downward() -> Path:
-    """Path of ``fast-downward.py``; ``$RELEVANCE_PLAN_FAST_DOWNWARD`` overrides it."""
-    # Cached per override value, so changing the variable takes effect.
-    return _locate_driver(os.environ.get(FAST_DOWNWARD_ENV) or None)
-
-
 @functools.lru_cache(maxsize=1)
 def fast_downward_version() -> str:
     """Version of the installed up-fast-downward package (for result keys)."""
@@ -164,21 +125,6 @@ def fast_downward_version() -> str:
         return importlib.metadata.version("up-fast-downward")
     except importlib.metadata.PackageNotFoundError as error:
         raise errors.PlannerError("up-fast-downward is not installed") from error
-
-
-def planner_arguments(config: str) -> tuple[str, ...]:
-    """Driver arguments for a named config, a raw search string or an alias.
-
-    An alias is checked against the driver's list by :func:`check_config`;
-    a search string is left to the planner, which rejects a bad one (exit 33).
-    """
-    if config in PLANNER_CONFIGS:
-        return PLANNER_CONFIGS[config]
-    if not config.strip():
-        raise errors.UsageError("empty planner configuration")
-    if "(" in config:
-        return ("--search", config)
-    return ("--alias", config)
 
 
 @functools.cache
@@ -232,51 +178,6 @@ def check_config(config: str) -> None:
         f"unknown --planner-config '{config}'{hint}: not one of {', '.join(PLANNER_CONFIGS)}, nor an alias of"
         f" the {WHOSE} driver (see its --show-aliases); a search string has parentheses"
     )
-
-
-def _split_driver_options(arguments: tuple[str, ...]) -> tuple[list[str], list[str]]:
-    """(options before the input files, component options after them)."""
-    before: list[str] = []
-    index = 0
-    while index + 1 < len(arguments) and arguments[index] in _DRIVER_OPTIONS:
-        before.extend(arguments[index : index + 2])
-        index += 2
-    return before, list(arguments[index:])
-
-
-def _build_command(
-    python: str,
-    driver: Path,
-    domain: Path,
-    problem: Path,
-    config: str,
-    time_limit: float | None,
-    memory_limit_mb: int | None,
-    extra_arguments: Sequence[str] = (),
-    keep_sas_file: bool = False,
-) -> list[str]:
-    """The driver's command line; ``extra_arguments`` (``--planner-args``) come last, after the inputs and
-    the configuration's component options (e.g. ``--translate-options --invariant-generation-max-candidates 0``)."""
-    limits: list[str] = []
-    if time_limit is not None:
-        limits += ["--overall-time-limit", f"{math.ceil(time_limit)}s"]
-    if memory_limit_mb is not None:
-        limits += ["--overall-memory-limit", f"{memory_limit_mb}M"]
-    before, after = _split_driver_options(planner_arguments(config))
-    if keep_sas_file:
-        before.append("--keep-sas-file")
-    return [
-        python,
-        str(driver),
-        "--plan-file",
-        PLAN_FILE,
-        *limits,
-        *before,
-        str(domain),
-        str(problem),
-        *after,
-        *extra_arguments,
-    ]
 
 
 # --------------------------------------------------------------------------- what it leaves behind
@@ -447,7 +348,7 @@ def run_fast_downward(
         raise errors.UsageError(f"memory limit must be positive, got {memory_limit_mb}")
     driver = find_fast_downward()
     driver_time_limit = time_limit if driver_limits else None
-    command = _build_command(
+    command = build_command(
         python,
         driver,
         domain,
@@ -458,11 +359,24 @@ def run_fast_downward(
         extra_arguments,
         keep_sas_file=work_dir is not None,
     )
-    with work_directory(work_dir, prefix="relevance-plan-fd-") as workdir:
-        deadline = watchdog_deadline(time_limit, watchdog_grace)
-        run = run_process_group(command, workdir, deadline, what=WHOSE, program=driver)
-        log = read_log(workdir)
-        plans, numbered = read_plans(workdir)
+    early = None
+    if work_dir is None and python == sys.executable and driver_limits:
+        early = head_start.claim(head_start.run_key(domain, problem, config, memory_limit_mb, extra_arguments))
+    if early is not None:
+        # started by the launcher with the whole --timeout, before the tool was imported
+        driver_time_limit = early.time_limit
+        try:
+            run = early.group.finish(watchdog_deadline(early.time_limit, watchdog_grace))
+            log = read_log(early.workdir)
+            plans, numbered = read_plans(early.workdir)
+        finally:
+            shutil.rmtree(early.workdir, ignore_errors=True)
+    else:
+        with work_directory(work_dir, prefix="relevance-plan-fd-") as workdir:
+            deadline = watchdog_deadline(time_limit, watchdog_grace)
+            run = run_process_group(command, workdir, deadline, what=WHOSE, program=driver)
+            log = read_log(workdir)
+            plans, numbered = read_plans(workdir)
     plan = plans[-1] if plans else None
     killed = run.killed_by_watchdog
     memory_limited = driver_limits and memory_limit_mb is not None

@@ -44,6 +44,7 @@ import threading
 import time
 from dataclasses import dataclass
 from pathlib import Path
+from typing import BinaryIO
 
 from relevance_plan import errors
 from relevance_plan.planning import guard
@@ -429,6 +430,78 @@ def run_process_group(
     cannot start.  ``InputFileError`` when the run failed because the
     working folder's disk is full.
     """
+    started = start_process_group(
+        command, workdir, what=what, program=program, env=env, memory_limit_mb=memory_limit_mb
+    )
+    return started.finish(deadline)
+
+
+@dataclass
+class StartedGroup:
+    """A run started by :func:`start_process_group`; :meth:`finish` waits for it (or :meth:`stop` ends it)."""
+
+    process: subprocess.Popen
+    run: _Run
+    workdir: Path
+    log_file: BinaryIO
+    guard_write: int
+    started: float  # time.monotonic() at the start
+    _closed: bool = False
+
+    def finish(self, deadline: float | None) -> ProcessRun:
+        """Wait for the run, the watchdog firing ``deadline`` seconds after its start; reap it."""
+        try:
+            scope = _SCOPE.get()
+            if scope is not None and not scope._enter(self.run):
+                _stop(self.run)  # cancelled before it started: it ends at once and is reaped below
+            left = None if deadline is None else max(deadline - (time.monotonic() - self.started), 0.0)
+            try:
+                wait_status, cpu_time, peak_mb, fired = _wait_for_run(self.run, left)
+            finally:
+                if scope is not None:
+                    scope._leave(self.run)
+            _restore_workdir(self.workdir, self.log_file)
+        finally:
+            self._close()
+        exit_code = _exit_code(wait_status)
+        # We reaped it ourselves (for the rusage); tell Popen so it never waits.
+        self.process.returncode = exit_code
+        if exit_code != 0:
+            _refuse_full_disk(self.workdir)
+        wall = time.monotonic() - self.started
+        return ProcessRun(wait_status, exit_code, cpu_time, peak_mb, fired, wall, self.run.pgid)
+
+    def stop(self) -> None:
+        """End the run and reap it (its result is not wanted)."""
+        try:
+            _stop(self.run)
+            _wait_for_run(self.run, None)
+            self.process.returncode = -9
+        finally:
+            self._close()
+
+    def _close(self) -> None:
+        if self._closed:
+            return
+        self._closed = True
+        with _ACTIVE_LOCK:
+            _ACTIVE_GROUPS.discard(self.run)
+        self.log_file.close()
+        os.close(self.guard_write)
+        if self.run.cgroup is not None:
+            _remove_cgroup(self.run.cgroup)
+
+
+def start_process_group(
+    command: list[str],
+    workdir: Path,
+    *,
+    what: str,
+    program: Path | str,
+    env: dict | None = None,
+    memory_limit_mb: int | None = None,
+) -> StartedGroup:
+    """Start ``command`` under the guard as :func:`run_process_group` does, without waiting for it."""
     # The guard starts the command, so a missing program must be caught here.
     executable = command[0] if os.sep in command[0] else shutil.which(command[0])
     if executable is None or not os.access(executable, os.X_OK) or os.path.isdir(executable):
@@ -439,54 +512,40 @@ def run_process_group(
     # child holds the write end.
     guard_read, guard_write = os.pipe()
     cgroup = _new_cgroup()
+    log_file = None
     try:
         # A file, not a pipe: nobody has to drain it while we wait.
-        with open(workdir / LOG_FILE, "w+b") as log_file:
-            try:
-                process = subprocess.Popen(
-                    # -I -S: the guard needs the standard library only; skipping site saves start-up
-                    [sys.executable, "-I", "-S", str(_GUARD), str(guard_read), cgroup or guard.NO_CGROUP, *command],
-                    cwd=workdir,
-                    stdin=subprocess.DEVNULL,
-                    stdout=log_file,
-                    stderr=subprocess.STDOUT,
-                    start_new_session=True,
-                    close_fds=True,
-                    pass_fds=(guard_read,),
-                    env=env,
-                    preexec_fn=None if memory_limit_mb is None else functools.partial(_limit_memory, memory_limit_mb),
-                )
-            except OSError as error:
-                raise errors.PlannerError(
-                    f"cannot start {what}: {error.strerror or error}", path=str(program)
-                ) from None
-            finally:
-                os.close(guard_read)
-            # start_new_session: the guard leads its own group, pgid == pid.
-            run = _Run(process.pid, cgroup)
-            with _ACTIVE_LOCK:
-                _ACTIVE_GROUPS.add(run)
-            scope = _SCOPE.get()
-            if scope is not None and not scope._enter(run):
-                _stop(run)  # cancelled before it started: it ends at once and is reaped below
-            try:
-                wait_status, cpu_time, peak_mb, fired = _wait_for_run(run, deadline)
-            finally:
-                with _ACTIVE_LOCK:
-                    _ACTIVE_GROUPS.discard(run)
-                if scope is not None:
-                    scope._leave(run)
-            _restore_workdir(workdir, log_file)
-    finally:
+        log_file = open(workdir / LOG_FILE, "w+b")  # noqa: SIM115 - closed by the StartedGroup
+        try:
+            process = subprocess.Popen(
+                # -I -S: the guard needs the standard library only; skipping site saves start-up
+                [sys.executable, "-I", "-S", str(_GUARD), str(guard_read), cgroup or guard.NO_CGROUP, *command],
+                cwd=workdir,
+                stdin=subprocess.DEVNULL,
+                stdout=log_file,
+                stderr=subprocess.STDOUT,
+                start_new_session=True,
+                close_fds=True,
+                pass_fds=(guard_read,),
+                env=env,
+                preexec_fn=None if memory_limit_mb is None else functools.partial(_limit_memory, memory_limit_mb),
+            )
+        except OSError as error:
+            raise errors.PlannerError(f"cannot start {what}: {error.strerror or error}", path=str(program)) from None
+        finally:
+            os.close(guard_read)
+    except BaseException:
+        if log_file is not None:
+            log_file.close()
         os.close(guard_write)
         if cgroup is not None:
             _remove_cgroup(cgroup)
-    exit_code = _exit_code(wait_status)
-    # We reaped it ourselves (for the rusage); tell Popen so it never waits.
-    process.returncode = exit_code
-    if exit_code != 0:
-        _refuse_full_disk(workdir)
-    return ProcessRun(wait_status, exit_code, cpu_time, peak_mb, fired, time.monotonic() - started, run.pgid)
+        raise
+    # start_new_session: the guard leads its own group, pgid == pid.
+    run = _Run(process.pid, cgroup)
+    with _ACTIVE_LOCK:
+        _ACTIVE_GROUPS.add(run)
+    return StartedGroup(process, run, workdir, log_file, guard_write, started)
 
 
 def _restore_workdir(workdir: Path, log_file) -> None:

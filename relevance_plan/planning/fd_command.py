@@ -1,0 +1,126 @@
+"""Fast Downward's driver and its command line, with the standard library only.
+
+Separate from :mod:`fast_downward` (which reads what a run leaves behind) so
+that the command can be built, and the driver started, before the rest of
+the tool is imported (:mod:`head_start`).
+"""
+
+from __future__ import annotations
+
+import functools
+import importlib.util
+import math
+import os
+from collections.abc import Sequence
+from pathlib import Path
+
+from relevance_plan import errors
+
+FAST_DOWNWARD_ENV = "RELEVANCE_PLAN_FAST_DOWNWARD"
+DEFAULT_CONFIG = "lama-first"
+
+# Named configurations -> driver arguments.  Options the driver itself parses
+# (``--alias``) must precede the input files, while component options
+# (``--evaluator``, ``--search``) must follow them: ``--search`` before the
+# files would be read as the driver's "run search component" flag.
+# ``_split_driver_options`` puts each part in its place.
+PLANNER_CONFIGS: dict[str, tuple[str, ...]] = {
+    "lama-first": ("--alias", "lama-first"),
+    # Anytime: writes sas_plan.1, sas_plan.2, ... with decreasing cost.
+    "lama": ("--alias", "seq-sat-lama-2011"),
+    "ff-gbfs": ("--evaluator", "h=ff()", "--search", "lazy_greedy([h],preferred=[h])"),
+    "astar-lmcut": ("--search", "astar(lmcut())"),
+    "astar-blind": ("--search", "astar(blind())"),
+}
+
+# Driver options that take one value and belong before the input files.
+_DRIVER_OPTIONS = frozenset({"--alias", "--portfolio"})
+
+PLAN_FILE = "sas_plan"
+
+
+@functools.cache
+def _locate_driver(override: str | None) -> Path:
+    if override:
+        path = Path(override).expanduser()
+        if not path.is_file():
+            raise errors.PlannerError(f"Fast Downward driver not found at {path} (from ${FAST_DOWNWARD_ENV})")
+        return path.resolve()
+    # find_spec locates the package without importing it (its __init__
+    # pulls in unified_planning, which is slow).
+    spec = importlib.util.find_spec("up_fast_downward")
+    if spec is None or not spec.submodule_search_locations:
+        raise errors.PlannerError(f"up-fast-downward is not installed; install it or set ${FAST_DOWNWARD_ENV}")
+    for location in spec.submodule_search_locations:
+        path = Path(location) / "downward" / "fast-downward.py"
+        if path.is_file():
+            return path.resolve()
+    raise errors.PlannerError(
+        f"up-fast-downward has no downward/fast-downward.py; reinstall it or set ${FAST_DOWNWARD_ENV}"
+    )
+
+
+def find_fast_downward() -> Path:
+    """Path of ``fast-downward.py``; ``$RELEVANCE_PLAN_FAST_DOWNWARD`` overrides it."""
+    # Cached per override value, so changing the variable takes effect.
+    return _locate_driver(os.environ.get(FAST_DOWNWARD_ENV) or None)
+
+
+def planner_arguments(config: str) -> tuple[str, ...]:
+    """Driver arguments for a named config, a raw search string or an alias.
+
+    An alias is checked against the driver's list by :func:`check_config`;
+    a search string is left to the planner, which rejects a bad one (exit 33).
+    """
+    if config in PLANNER_CONFIGS:
+        return PLANNER_CONFIGS[config]
+    if not config.strip():
+        raise errors.UsageError("empty planner configuration")
+    if "(" in config:
+        return ("--search", config)
+    return ("--alias", config)
+
+
+def _split_driver_options(arguments: tuple[str, ...]) -> tuple[list[str], list[str]]:
+    """(options before the input files, component options after them)."""
+    before: list[str] = []
+    index = 0
+    while index + 1 < len(arguments) and arguments[index] in _DRIVER_OPTIONS:
+        before.extend(arguments[index : index + 2])
+        index += 2
+    return before, list(arguments[index:])
+
+
+def build_command(
+    python: str,
+    driver: Path,
+    domain: Path,
+    problem: Path,
+    config: str,
+    time_limit: float | None,
+    memory_limit_mb: int | None,
+    extra_arguments: Sequence[str] = (),
+    keep_sas_file: bool = False,
+) -> list[str]:
+    """The driver's command line; ``extra_arguments`` (``--planner-args``) come last, after the inputs and
+    the configuration's component options (e.g. ``--translate-options --invariant-generation-max-candidates 0``)."""
+    limits: list[str] = []
+    if time_limit is not None:
+        limits += ["--overall-time-limit", f"{math.ceil(time_limit)}s"]
+    if memory_limit_mb is not None:
+        limits += ["--overall-memory-limit", f"{memory_limit_mb}M"]
+    before, after = _split_driver_options(planner_arguments(config))
+    if keep_sas_file:
+        before.append("--keep-sas-file")
+    return [
+        python,
+        str(driver),
+        "--plan-file",
+        PLAN_FILE,
+        *limits,
+        *before,
+        str(domain),
+        str(problem),
+        *after,
+        *extra_arguments,
+    ]

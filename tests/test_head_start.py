@@ -1,0 +1,129 @@
+"""The launcher's head start: Fast Downward on the full problem before the tool is imported."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+
+import pytest
+from support import DOMAINS, REPO, TOOL, write_file
+
+from relevance_plan.planning import head_start
+from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task
+
+GRIPPER = DOMAINS / "gripper" / "domain.pddl"
+GRIPPER_PROBLEM = """(define (problem two-balls) (:domain gripper)
+  (:objects rooma roomb ball1 ball2 left right)
+  (:init (room rooma) (room roomb) (ball ball1) (ball ball2) (gripper left) (gripper right)
+         (at-robby rooma) (at ball1 rooma) (at ball2 rooma) (free left) (free right))
+  (:goal (and (at ball1 roomb) (at ball2 roomb))))
+"""
+HEAVY = ("click", "yaml", "unified_planning", "dask", "numpy", "matplotlib")
+
+
+@pytest.fixture
+def gripper_problem(tmp_path):
+    return write_file(tmp_path, "problem.pddl", GRIPPER_PROBLEM)
+
+
+@pytest.mark.planner
+def test_the_fast_path_imports_nothing_heavy(gripper_problem):
+    # a fresh interpreter: what the launcher has imported when the driver is running
+    script = (
+        "import sys\n"
+        "from relevance_plan.planning import head_start\n"
+        f"head_start.start_for_plan([{str(GRIPPER)!r}, {str(gripper_problem)!r}, '--method', 'pure'])\n"
+        "assert head_start._PENDING, 'no head start'\n"
+        "print(' '.join(sorted(sys.modules)))\n"
+        "head_start.discard_pending()\n"
+    )
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=60, cwd=REPO)
+    assert done.returncode == 0, done.stderr
+    modules = done.stdout.split()
+    assert not [m for m in modules if m.split(".")[0] in HEAVY]
+    ours = {m for m in modules if m.startswith("relevance_plan")}
+    assert not {
+        m for m in ours if m.startswith(("relevance_plan.pddl", "relevance_plan.relevance", "relevance_plan.cli"))
+    }
+    assert "relevance_plan.planning.loop" not in ours
+
+
+@pytest.mark.parametrize(
+    ("extra", "wanted"),
+    [
+        (["--method", "pure"], True),
+        (["--method=pure", "--timeout=30", "--memory-limit", "2000"], True),
+        (["--race"], True),
+        (["--no-race"], False),
+        (["--method", "random", "--race"], False),
+        (["--method", "pure", "--planner", "lpg"], False),
+        (["--method", "pure", "--keep-work", "w"], False),
+        (["--method", "pure", "--help"], False),
+        (["--method", "pure", "--timeout", "soon"], False),
+        (["--method", "pure", "--frobnicate"], False),
+    ],
+)
+def test_what_the_launcher_reads_from_the_command_line(gripper_problem, extra, wanted):
+    found = head_start._full_run_wanted([str(GRIPPER), str(gripper_problem), *extra])
+    assert (found is not None) is wanted
+    if "--timeout=30" in extra:
+        assert found is not None and found[3] == 30.0 and found[4] == 2000
+
+
+def test_a_temporal_domain_gets_no_head_start_under_auto(tmp_path):
+    domain = DOMAINS / "coffee-temporal" / "domain.pddl"
+    problem = write_file(tmp_path, "p.pddl", "(define (problem p) (:domain coffee-temporal))")
+    assert head_start._full_run_wanted([str(domain), str(problem), "--method", "pure"]) is None
+    # named explicitly, Fast Downward is what the user asked for
+    assert head_start._full_run_wanted([str(domain), str(problem), "--method", "pure", "--planner", "fast-downward"])
+
+
+@pytest.mark.planner
+def test_the_full_problem_run_takes_the_head_start_over(gripper_problem):
+    head_start.start_for_plan([str(GRIPPER), str(gripper_problem), "--method", "pure"])
+    head = head_start._PENDING[-1]
+    result = plan_task(GRIPPER, gripper_problem, PlanOptions(method="pure", timeout=60))
+    assert result.status is PlanStatus.SOLVED and result.valid
+    assert head.used and not head.workdir.exists()
+    assert head_start.take() is None
+
+
+@pytest.mark.planner
+def test_a_head_start_that_does_not_match_is_stopped(gripper_problem):
+    head_start.start_for_plan([str(GRIPPER), str(gripper_problem), "--method", "pure"])
+    head = head_start._PENDING[-1]
+    pgid = head.group.run.pgid
+    result = plan_task(GRIPPER, gripper_problem, PlanOptions(method="pure", timeout=60, planner_config="ff-gbfs"))
+    assert result.status is PlanStatus.SOLVED
+    assert head.claimed and not head.used and not head.workdir.exists()
+    with pytest.raises(ProcessLookupError):
+        os.killpg(pgid, 0)
+
+
+@pytest.mark.planner
+def test_plan_through_the_launcher_solves_and_leaves_nothing(gripper_problem, tmp_path):
+    plan_file = tmp_path / "plan.txt"
+    done = subprocess.run(
+        [*TOOL, "plan", GRIPPER, gripper_problem, "--race", "--json", "--plan-file", plan_file],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        cwd=tmp_path,
+    )
+    assert done.returncode == 0, done.stderr
+    report = json.loads(done.stdout)
+    assert report["status"] == "solved" and report["valid"] and plan_file.is_file()
+    # a problem the tool cannot prune: the race's full run, started by the launcher, wins
+    assert report["raced"] == "full"
+
+
+@pytest.mark.planner
+def test_a_bad_problem_still_gets_its_one_line_error(tmp_path):
+    problem = write_file(tmp_path, "bad.pddl", "(define (problem p) (:domain gripper) (:objects a - nosuchtype))")
+    done = subprocess.run(
+        [*TOOL, "plan", GRIPPER, problem, "--method", "pure"], capture_output=True, text=True, timeout=60, cwd=tmp_path
+    )
+    assert done.returncode != 0 and "Traceback" not in done.stderr
+    assert len(done.stderr.strip().splitlines()) == 1
