@@ -6,10 +6,17 @@ import pytest
 from kitchen import coffee_problem
 from padded_worlds import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
 
+from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.errors import ModelError, UsageError
+from relevance_plan.generators.sized import generate_sized_problem
 from relevance_plan.io import load_domain
 from relevance_plan.pddl.parser import read_domain, read_problem
-from relevance_plan.relevance.analysis import index_init, infer_constraint_rules, single_valued_predicates
+from relevance_plan.relevance.analysis import (
+    _Regression,
+    index_init,
+    infer_constraint_rules,
+    single_valued_predicates,
+)
 from relevance_plan.relevance.closure import close_over_constraints
 from relevance_plan.relevance.knowledge import parse_model
 from relevance_plan.relevance.prune import Thresholds, prune_with_scores, select_relevant
@@ -236,6 +243,40 @@ def test_goal_scorer_on_classic_domains():
     task = PlanningTask(domain, read_problem(blocksworld_problem(60, in_the_way=2), domain))
     result = prune_with_scores(task, SCORERS["goal"](task, ScoreRequest()))
     assert result.kept == {"a", "b", "c", "x1", "x2"}
+
+
+@pytest.mark.parametrize("world,size", [("miconic-manygoals", 200), ("logistics-manygoals-typed", 120)])
+def test_goal_regression_checks_the_initial_state_as_a_full_scan_would(world, size):
+    generated = generate_sized_problem(world, 1, 1, size)
+    domain = load_domain(DOMAINS_DIR / generated.sidecar["domain"] / "domain.pddl")
+    problem = read_problem(generated.pddl_text, domain)
+    regression = _Regression(domain, problem, index_init(problem))
+    regression.run()
+    objects = sorted(problem.objects)
+    patterns = set(regression.best)
+    # every object named at every position, the others left to any object: hits and misses
+    for predicate in {atom[0] for atom in problem.init}:
+        arity = len(next(atom for atom in problem.init if atom[0] == predicate)) - 1
+        for position in range(arity):
+            for name in objects[:: max(1, len(objects) // 40)]:
+                args = [("type", "object")] * arity
+                args[position] = ("obj", name)
+                patterns.add((predicate, tuple(args)))
+
+    def full_scan(pattern):
+        predicate, args = pattern
+        return any(
+            atom[0] == predicate
+            and all(
+                atom[1 + i] == value if kind == "obj" else domain.is_subtype(problem.objects[atom[1 + i]], value)
+                for i, (kind, value) in enumerate(args)
+            )
+            for atom in problem.init
+        )
+
+    checked = [(pattern, regression.initially_satisfiable(pattern)) for pattern in sorted(patterns)]
+    assert checked == [(pattern, full_scan(pattern)) for pattern, _ in checked]
+    assert {True, False} <= {answer for _, answer in checked}
 
 
 def test_random_scorer_is_seeded(task):

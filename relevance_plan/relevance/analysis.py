@@ -273,8 +273,14 @@ class _Regression:
         # the property (a cup that is clear, a free gripper), so the pattern
         # need not be regressed; closure handles the objects in the way.
         predicate, args = pattern
-        for atom in self.index.by_predicate.get(predicate, ()):
-            if all(
+        atoms = self.index.by_predicate.get(predicate, ())
+        # A named object's own facts are usually far fewer than the predicate's (one floor's
+        # against every (above f g) of a tall building): scan the shorter list.
+        for kind, name in args:
+            if kind == "obj" and len(self.index.by_object.get(name, ())) < len(atoms):
+                atoms = self.index.by_object.get(name, ())
+        for atom in atoms:
+            if atom[0] == predicate and all(
                 atom[1 + i] == a[1]
                 if a[0] == "obj"
                 else self.domain.is_subtype(self.objects.get(atom[1 + i], "object"), a[1])

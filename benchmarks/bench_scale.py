@@ -1,0 +1,360 @@
+"""The worlds built for many objects: pure vs relevance vs oracle, and pruning time, in one run.
+
+Planning: for each world and size, ``--count`` seeded problems (``relevance-plan
+generate <world> --size N``) are planned in this process by ``plan_task`` with
+Fast Downward ``lama-first``, three times: on the full problem (pure), with
+the relevance method (goal scorer: no knowledge model applies to these
+domains) and with the oracle (the generator's ``necessary`` set, read from
+the problem's sidecar).  The race is off, so every run uses one core.  Every
+plan is validated on the original problem.  A run that hits ``--timeout`` is
+shown as ``>T``; a median over such runs is a lower bound, and so is a ratio
+over it.
+
+Pruning time: for each world at 500 and 5,000 objects, what ``plan_task``
+does before the first planner call, in this process: read the domain and
+problem, score, select (thresholds, goal filter, closure, reachability
+repair), write the pruned problem.  Median of 3 per stage.
+
+Worlds and planning sizes (objects per problem; pure lama-first takes from
+about a second to tens of seconds at these):
+scenegraph 200, 500, 1000; logistics-manygoals 120, 200;
+miconic-manygoals 1000, 2000.  The ``-typed`` forms of the many-goal worlds
+can be named with ``--worlds``; they take the untyped form's sizes.
+
+Targets, printed next to the results:
+  * geometric mean of pure/relevance over the scene-graph cells >= 10x;
+  * relevance median <= 1.5x the oracle median, in every cell;
+  * every plan valid on the original problem, no relevance failure;
+  * pruning <= 0.3 s at 500 objects and <= 1 s at 5,000, in-process.
+
+Tables go to standard output, one row per problem or pruning cell as it
+finishes; a note per planner run and per timed pruning run goes to standard
+error.  ``kept`` is what the first attempt planned on (``a->b``: widening
+went on to b objects); kept = objects means relevance planned the full
+problem.
+
+With the defaults (one problem per cell) the run takes about 8 minutes on 2
+quiet cores: about 3 minutes of planning and 5 of pruning time, most of it
+the many-goal logistics world at 5,000 objects (about 85 s a run, nearly all
+in the reachability repair).  ``--quick`` (smallest size of each world,
+pruning at 500 only) takes under a minute.
+
+    python benchmarks/bench_scale.py                             # everything, default sizes
+    python benchmarks/bench_scale.py --quick                     # smoke check
+    python benchmarks/bench_scale.py --count 3 --seed 2 --json rows.json
+    python benchmarks/bench_scale.py --worlds scenegraph --sizes 300 600 --timeout 60
+    python benchmarks/bench_scale.py --prune-only                # no planner at all
+    python benchmarks/bench_scale.py --no-prune-timing
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import statistics
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(REPO))
+
+from relevance_plan.data import DOMAINS_DIR  # noqa: E402
+from relevance_plan.generators.sized import generate_sized_problem  # noqa: E402
+from relevance_plan.io import load_domain, load_problem, write_text_atomic  # noqa: E402
+from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task  # noqa: E402
+from relevance_plan.relevance.scorers import PlanningTask  # noqa: E402
+from relevance_plan.relevance.setup import ScoringOptions, score_problem  # noqa: E402
+
+SIZES = {
+    "scenegraph": (200, 500, 1000),
+    "logistics-manygoals": (120, 200),
+    "logistics-manygoals-typed": (120, 200),
+    "miconic-manygoals": (1000, 2000),
+    "miconic-manygoals-typed": (1000, 2000),
+}
+DEFAULT_WORLDS = ("scenegraph", "logistics-manygoals", "miconic-manygoals")
+PRUNE_TARGETS = {500: 0.3, 5000: 1.0}  # objects -> seconds, in-process
+SPEEDUP_TARGET = 10.0  # geometric mean of pure/relevance over the scene-graph cells
+ORACLE_TARGET = 1.5  # relevance / oracle
+METHODS = ("pure", "relevance", "oracle")
+STAGES = ("read", "score", "select", "write", "total")
+
+
+def write_problem(world: str, seed: int, index: int, size: int, folder: Path) -> tuple[Path, Path, dict]:
+    """One generated problem with its sidecar next to it (the oracle reads it); returns (domain, problem, sidecar)."""
+    problem = generate_sized_problem(world, seed, index, size)
+    path = folder / f"{problem.name}-{size}.pddl"
+    path.write_text(problem.pddl_text)
+    path.with_suffix(".json").write_text(json.dumps(problem.sidecar))
+    return DOMAINS_DIR / problem.sidecar["domain"] / "domain.pddl", path, problem.sidecar
+
+
+def run(domain_path: Path, problem_path: Path, method: str, timeout: float) -> dict:
+    result = plan_task(domain_path, problem_path, PlanOptions(method=method, timeout=timeout, race=False))
+    return {
+        "status": result.status.value,
+        "solved": result.status is PlanStatus.SOLVED,
+        "timed_out": result.status is PlanStatus.OUT_OF_TIME,
+        "valid": result.valid,
+        "time": result.wall_time,
+        "kept": result.objects_kept,
+        "first_kept": len(result.selection.kept) if result.selection is not None else result.objects_total,
+        "total": result.objects_total,
+        "attempts": len(result.attempts),
+        "relevance_time": result.relevance_time,
+    }
+
+
+def prune_stages(domain_path: Path, problem_path: Path, out: Path) -> dict:
+    """The steps of ``plan_task`` before its first planner call, timed one by one."""
+    times = {}
+    start = time.perf_counter()
+    domain = load_domain(domain_path)
+    task = PlanningTask(domain, load_problem(problem_path, domain))
+    times["read"] = time.perf_counter() - start
+    mark = time.perf_counter()
+    scoring = score_problem(task, ScoringOptions(), method="relevance", domain_path=domain_path)
+    times["score"] = time.perf_counter() - mark
+    mark = time.perf_counter()
+    selection = scoring.first_selection(narrow=True)
+    times["select"] = time.perf_counter() - mark
+    mark = time.perf_counter()
+    write_text_atomic(out, selection.text)
+    times["write"] = time.perf_counter() - mark
+    times["total"] = time.perf_counter() - start
+    times["kept"] = len(selection.kept)
+    times["objects"] = len(task.problem.objects)
+    return times
+
+
+def median(values):
+    values = [v for v in values if v is not None]
+    return statistics.median(values) if values else None
+
+
+def geomean(values):
+    return math.exp(sum(math.log(v) for v in values) / len(values)) if values else None
+
+
+def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument(
+        "--worlds",
+        nargs="+",
+        default=list(DEFAULT_WORLDS),
+        choices=list(SIZES),
+        metavar="WORLD",
+        help=f"worlds to run (default: {', '.join(DEFAULT_WORLDS)}; also: the -typed many-goal forms)",
+    )
+    parser.add_argument(
+        "--sizes", nargs="+", type=int, default=None, metavar="N", help="planning sizes for every world chosen"
+    )
+    parser.add_argument("--count", type=int, default=1, help="problems per world and size (default: 1)")
+    parser.add_argument("--seed", type=int, default=1, help="generator seed (default: 1)")
+    parser.add_argument("--timeout", type=float, default=120.0, help="seconds per planner run (default: 120)")
+    parser.add_argument("--quick", action="store_true", help="smallest size of each world, pruning at 500 only")
+    what = parser.add_mutually_exclusive_group()
+    what.add_argument("--no-prune-timing", action="store_true", help="planning only")
+    what.add_argument("--prune-only", action="store_true", help="pruning time only (no planner is started)")
+    parser.add_argument("--json", type=Path, default=None, help="also write the raw rows here")
+    args = parser.parse_args(argv)
+    if args.count < 1:
+        parser.error("--count must be at least 1")
+    if args.timeout <= 0:
+        parser.error("--timeout must be positive")
+    if args.sizes is not None and min(args.sizes) < 10:
+        parser.error("--sizes must be at least 10")
+    return args
+
+
+def planning_cells(args: argparse.Namespace) -> list[tuple[str, int]]:
+    cells = []
+    for world in args.worlds:
+        sizes = tuple(args.sizes) if args.sizes else SIZES[world]
+        cells += [(world, size) for size in (sizes[:1] if args.quick else sizes)]
+    return cells
+
+
+def plan_all(args: argparse.Namespace, scratch: Path) -> list[dict]:
+    """Plan every cell, one row per problem as it goes."""
+    rows = []
+    cells = planning_cells(args)
+    runs = len(cells) * args.count
+    print(
+        f"## Planning: lama-first, timeout {args.timeout:g} s per run, seed {args.seed},"
+        f" {args.count} problem(s) per cell, no race; relevance = goal scorer"
+    )
+    print(
+        "| # | problem | objects | pure (s) | relevance (s) | of which pruning (s) | kept | attempts |"
+        " oracle (s) | oracle kept | valid |"
+    )
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    done = 0
+    for world, size in cells:
+        for index in range(1, args.count + 1):
+            domain_path, problem_path, sidecar = write_problem(world, args.seed, index, size, scratch)
+            row = {"world": world, "size": size, "problem": problem_path.stem, "objects": sidecar["objects_total"]}
+            for method in METHODS:
+                row[method] = run(domain_path, problem_path, method, args.timeout)
+                _progress(f"{row['problem']}: {method} {row[method]['status']} in {row[method]['time']:.1f} s")
+            rows.append(row)
+            done += 1
+            rel, oracle = row["relevance"], row["oracle"]
+            valid = all(row[m]["valid"] for m in METHODS if row[m]["solved"])
+            print(
+                f"| {done}/{runs} | {row['problem']} | {row['objects']} | {_time(row['pure'], args.timeout)} |"
+                f" {_time(rel, args.timeout)} | {rel['relevance_time']:.2f} | {_kept(rel)} | {rel['attempts']} |"
+                f" {_time(oracle, args.timeout)} |"
+                f" {oracle['first_kept']} | {'yes' if valid else 'NO'} |",
+                flush=True,
+            )
+    return rows
+
+
+def summarise_planning(rows: list[dict]) -> None:
+    print()
+    print(
+        "| world | size | objects | problems | pure median (s) | relevance median (s) | pure/relevance |"
+        " oracle median (s) | relevance/oracle | kept median | oracle kept | attempts median | failures |"
+    )
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    scene_ratios, all_ratios, over_oracle = [], [], []
+    for world, size in dict.fromkeys((r["world"], r["size"]) for r in rows):
+        mine = [r for r in rows if (r["world"], r["size"]) == (world, size)]
+        pure_t, pure_low = _median_time(mine, "pure")
+        rel_t, rel_low = _median_time(mine, "relevance")
+        oracle_t, oracle_low = _median_time(mine, "oracle")
+        # a censored numerator gives a lower bound, a censored denominator an upper one; both: unknown
+        speedup = _ratio(pure_t, pure_low, rel_t, rel_low)
+        to_oracle = _ratio(rel_t, rel_low, oracle_t, oracle_low)
+        if speedup[0] is not None:
+            all_ratios.append(speedup[0])
+            if world == "scenegraph":
+                scene_ratios.append(speedup[0])
+        if to_oracle[0] is None or to_oracle[0] > ORACLE_TARGET:
+            over_oracle.append(f"{world} {size} ({_show_ratio(to_oracle)})")
+        failures = sum(not r["relevance"]["solved"] or not r["relevance"]["valid"] for r in mine)
+        print(
+            f"| {world} | {size} | {median([r['objects'] for r in mine]):.0f} | {len(mine)} |"
+            f" {'>' if pure_low else ''}{pure_t:.2f} | {'>' if rel_low else ''}{rel_t:.2f} |"
+            f" {_show_ratio(speedup)} | {'>' if oracle_low else ''}{oracle_t:.2f} | {_show_ratio(to_oracle)} |"
+            f" {median([r['relevance']['first_kept'] for r in mine]):.0f} |"
+            f" {median([r['oracle']['first_kept'] for r in mine]):.0f} |"
+            f" {median([r['relevance']['attempts'] for r in mine]):.0f} | {failures} |"
+        )
+    invalid = [f"{r['problem']} ({m})" for r in rows for m in METHODS if r[m]["solved"] and not r[m]["valid"]]
+    failed = [f"{r['problem']} ({r['relevance']['status']})" for r in rows if not r["relevance"]["solved"]]
+    slower = [
+        f"{r['problem']} ({r['relevance']['time']:.1f} s vs {r['pure']['time']:.1f} s)"
+        for r in rows
+        if r["pure"]["solved"] and r["relevance"]["time"] > r["pure"]["time"]
+    ]
+    print()
+    scene = geomean(scene_ratios)
+    bound = " (a lower bound: some pure run timed out)" if any(r["pure"]["timed_out"] for r in rows) else ""
+    print(
+        f"geometric mean pure/relevance over {len(scene_ratios)} scene-graph cell(s): {_times(scene)}{bound}"
+        f" (target >= {SPEEDUP_TARGET:g}x)"
+    )
+    print(f"geometric mean pure/relevance over all {len(all_ratios)} cell(s): {_times(geomean(all_ratios))}")
+    print(f"relevance <= {ORACLE_TARGET:g}x the oracle in every cell: {_missed(over_oracle)}")
+    print(f"every plan valid on the original: {_missed(invalid)}")
+    print(f"no relevance failure: {_missed(failed)}")
+    print(f"relevance slower than pure: {', '.join(slower) or 'none'}")
+
+
+def time_pruning(args: argparse.Namespace, scratch: Path) -> list[dict]:
+    sizes = list(PRUNE_TARGETS)[:1] if args.quick else list(PRUNE_TARGETS)
+    print("## Pruning time in-process: read + score + select (closure, repair) + write, median of 3, no planner")
+    print("| world | size | objects | read | score | select | write | total (s) | target (s) | kept | within |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    rows = []
+    out = scratch / "pruned.pddl"
+    for world in args.worlds:
+        for size in sizes:
+            domain_path, problem_path, _ = write_problem(world, args.seed, 1, size, scratch)
+            runs = []
+            for attempt in range(1, 4):
+                runs.append(prune_stages(domain_path, problem_path, out))
+                _progress(f"pruning {world} at {size}: run {attempt}/3 {runs[-1]['total']:.2f} s")
+            times = {stage: statistics.median(r[stage] for r in runs) for stage in STAGES}
+            target = PRUNE_TARGETS[size]
+            row = {"world": world, "size": size, "objects": runs[0]["objects"], "kept": runs[0]["kept"], **times}
+            rows.append(row)
+            print(
+                f"| {world} | {size} | {row['objects']} | {times['read']:.3f} | {times['score']:.3f} |"
+                f" {times['select']:.3f} | {times['write']:.3f} | {times['total']:.3f} | {target:g} | {row['kept']} |"
+                f" {'yes' if times['total'] <= target else 'NO'} |",
+                flush=True,
+            )
+    over = [f"{r['world']} {r['size']} ({r['total']:.2f} s)" for r in rows if r["total"] > PRUNE_TARGETS[r["size"]]]
+    print()
+    print(f"pruning <= 0.3 s at 500 objects and <= 1 s at 5,000, in-process: {_missed(over)}")
+    return rows
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = parse_args(argv)
+    started = time.perf_counter()
+    raw: dict = {}
+    with tempfile.TemporaryDirectory(prefix="bench-scale-") as folder:
+        scratch = Path(folder)
+        if not args.prune_only:
+            raw["planning"] = plan_all(args, scratch)
+            summarise_planning(raw["planning"])
+        if not args.no_prune_timing:
+            if not args.prune_only:
+                print()
+            raw["pruning"] = time_pruning(args, scratch)
+    print(f"\nwhole run: {time.perf_counter() - started:.0f} s")
+    if args.json:
+        args.json.write_text(json.dumps(raw, indent=2))
+    return 0
+
+
+def _median_time(rows: list[dict], method: str) -> tuple[float, bool]:
+    """The median wall time of ``method``, and whether it is a lower bound (some run hit the time limit)."""
+    return median([r[method]["time"] for r in rows]), any(r[method]["timed_out"] for r in rows)
+
+
+def _ratio(top: float, top_low: bool, bottom: float, bottom_low: bool) -> tuple[float | None, str]:
+    if top_low and bottom_low:
+        return None, ""
+    return (top / bottom if bottom else None), (">" if top_low else "<" if bottom_low else "")
+
+
+def _show_ratio(ratio: tuple[float | None, str]) -> str:
+    value, bound = ratio
+    return "–" if value is None else f"{bound}{value:.1f}x"
+
+
+def _progress(message: str) -> None:
+    """A note on standard error while a long cell runs (the tables stay on standard output)."""
+    print(f"  ... {message}", file=sys.stderr, flush=True)
+
+
+def _missed(misses: list[str]) -> str:
+    return f"missed by {', '.join(misses)}" if misses else "met"
+
+
+def _times(value: float | None) -> str:
+    return "–" if value is None else f"{value:.1f}x"
+
+
+def _kept(result: dict) -> str:
+    if result["first_kept"] == result["kept"]:
+        return f"{result['kept']}/{result['total']}"
+    return f"{result['first_kept']}->{result['kept']}/{result['total']}"
+
+
+def _time(result: dict, timeout: float) -> str:
+    if result["timed_out"]:
+        return f">{timeout:g}"
+    return f"{result['time']:.2f}" if result["solved"] else f"{result['status']} ({result['time']:.0f})"
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
