@@ -16,11 +16,13 @@ path), each with the plan step that needs it as its reason.
 The check over-approximates: negative, disjunctive and quantified conditions
 and effect conditions are ignored, and a universally quantified effect adds
 its atom for every kept object of the type, so "unreachable" is sound.  It gives up (and says so)
-past a work budget rather than cost more than the planner would.
+past a work budget, or a few seconds, rather than cost more than the planner would.
 """
 
 from __future__ import annotations
 
+import math
+import time
 from collections import defaultdict, deque
 from collections.abc import Callable, Iterator, Mapping, Sequence, Set
 from dataclasses import dataclass
@@ -35,7 +37,8 @@ if TYPE_CHECKING:  # the scorers' package imports this module's users
     from relevance_plan.relevance.scorers.base import PlanningTask
 
 DEFAULT_BUDGET = 400_000  # bindings tried before the check gives up
-BUDGET_PER_OBJECT = 2_000  # the budget grows with the problem, as the planner's own grounding does
+BUDGET_PER_OBJECT = 5_000  # the budget grows with the problem, as the planner's own grounding does
+REPAIR_SECONDS = 5.0  # and the repair's checks together stop after this long
 REPAIR_MAX_FAN = 4.0  # repair candidates are ranked by hops that do not pass from a class-like value to its members
 
 Args = tuple[str, ...]  # a condition's or an effect's arguments: variables (``?x``) and names
@@ -97,7 +100,24 @@ class _OutOfBudget(Exception):
     pass
 
 
-def relaxed_reachability(task: PlanningTask, kept: Set[str], budget: int = DEFAULT_BUDGET) -> Reachability:
+@dataclass
+class _Work:
+    """Bindings tried by one check, against its budget and its deadline (``time.monotonic()``)."""
+
+    limit: int
+    deadline: float = math.inf
+    done: int = 0
+
+    def spend(self) -> None:
+        self.done += 1
+        # the clock is read once every 4,096 bindings: cheap, and still within milliseconds
+        if self.done > self.limit or (not self.done & 4095 and time.monotonic() > self.deadline):
+            raise _OutOfBudget
+
+
+def relaxed_reachability(
+    task: PlanningTask, kept: Set[str], budget: int = DEFAULT_BUDGET, deadline: float = math.inf
+) -> Reachability:
     """Whether the goal's positive atoms are reachable under the delete relaxation using ``kept`` objects only.
 
     Each fact is processed once, in the order it was reached; an action
@@ -106,7 +126,7 @@ def relaxed_reachability(task: PlanningTask, kept: Set[str], budget: int = DEFAU
     Fast Downward's translator).
     """
     typing = task.typing
-    exploration = _Exploration(typing.domain, typing.problem, kept, budget)
+    exploration = _Exploration(typing.domain, typing.problem, kept, _Work(budget, deadline))
     try:
         exploration.run()
     except _OutOfBudget:
@@ -122,10 +142,9 @@ def relaxed_reachability(task: PlanningTask, kept: Set[str], budget: int = DEFAU
 class _Exploration:
     """The delete-relaxed exploration of :func:`relaxed_reachability` on one object set."""
 
-    def __init__(self, domain: Domain, problem: Problem, kept: Set[str], budget: int):
+    def __init__(self, domain: Domain, problem: Problem, kept: Set[str], work: _Work):
         self.domain = domain
-        self.budget = budget
-        self.work = [0]
+        self.work = work
         self.allowed = set(kept) | set(domain.constants)
         self.types_of = dict(domain.constants)
         self.types_of.update(problem.objects)
@@ -182,11 +201,11 @@ class _Exploration:
             if variable in binding and binding[variable] not in self.fits[type_name]:
                 return
         free = [(v, t) for v, t in zip(schema.parameters, schema.types) if v not in binding]
-        for full in _fill(binding, free, self.objects_of, self.work, self.budget):
+        for full in _fill(binding, free, self.objects_of, self.work):
             step = (schema.name,) + tuple(full[v] for v in schema.parameters)
             for predicate, args, quantified in schema.add:
                 # a universally quantified effect adds its atom for every kept object of the variable's type
-                for each in _fill(full, list(quantified), self.objects_of, self.work, self.budget):
+                for each in _fill(full, list(quantified), self.objects_of, self.work):
                     fact = (predicate,) + tuple(each.get(a, a) for a in args)
                     if fact not in self.facts:
                         self.facts[fact] = _Achiever(step, schema, full)
@@ -201,9 +220,7 @@ class _Exploration:
         predicate, args = pre[best]
         rest = pre[:best] + pre[best + 1 :]
         for fact in self.processed.get(best_key, ()):
-            self.work[0] += 1
-            if self.work[0] > self.budget:
-                raise _OutOfBudget
+            self.work.spend()
             new = _match(args, fact, binding)
             if new is not None:
                 yield from self.join(rest, new)
@@ -249,19 +266,17 @@ def _match(args: Args, fact: GroundAtom, binding: Binding) -> Binding | None:
 
 
 def _fill(
-    binding: Binding, free: list[tuple[str, str]], objects_of: Callable[[str], list[str]], work: list[int], budget: int
+    binding: Binding, free: list[tuple[str, str]], objects_of: Callable[[str], list[str]], work: _Work
 ) -> Iterator[Binding]:
     if not free:
         yield binding
         return
     variable, type_name = free[0]
     for value in objects_of(type_name):
-        work[0] += 1
-        if work[0] > budget:
-            raise _OutOfBudget
+        work.spend()
         new = dict(binding)
         new[variable] = value
-        yield from _fill(new, free[1:], objects_of, work, budget)
+        yield from _fill(new, free[1:], objects_of, work)
 
 
 def _relaxed_plan(
@@ -318,7 +333,8 @@ def repair_selection(
         budget = max(DEFAULT_BUDGET, BUDGET_PER_OBJECT * total)
     if give_up_above is None:
         give_up_above = total
-    check = relaxed_reachability(task, kept, budget)
+    deadline = time.monotonic() + REPAIR_SECONDS
+    check = relaxed_reachability(task, kept, budget, deadline)
     if check.reachable or not check.complete:
         return kept, (), check
     distance = object_distances(task.init_index, kept, hub_degree(task), max_fan=REPAIR_MAX_FAN)
@@ -345,7 +361,7 @@ def repair_selection(
         current, _ = close(current | frozenset(take))
         if len(current) > give_up_above:
             break  # it would keep most of the problem anyway: checking costs more than it saves
-        check = relaxed_reachability(task, current, budget)
+        check = relaxed_reachability(task, current, budget, deadline)
         if not check.complete:
             break
         batch = max(4, len(kept), 2 * batch)
@@ -354,7 +370,7 @@ def repair_selection(
         added = frozenset(current) - kept
         return frozenset(current), tuple(Restored(n, "", "reachability", ("goal",)) for n in sorted(added)), check
     used = {name for name in check.plan_objects if name in task.problem.objects and name not in kept}
-    used, check = _economize(task, kept, used, classes, rank, check, close, budget)
+    used, check = _economize(task, kept, used, classes, rank, check, close, budget, deadline)
     step_of: dict[str, Step] = {}
     for step in check.plan:
         for arg in step[1:]:
@@ -377,6 +393,7 @@ def _economize(
     check: Reachability,
     close: CloseFn,
     budget: int,
+    deadline: float,
 ) -> tuple[set[str], Reachability]:
     """Fewer added objects of one class where fewer do: a relaxed plan takes the first airplane it
     meets for each package, when one airplane carries them all.  Class by class (most members
@@ -391,9 +408,9 @@ def _economize(
             members = _by_use([m for m in by_class[cls] if m in used], check, rank)
             if len(members) < 2:
                 break
-            trial_used, trial = _without(task, kept, used, members[1:], close, budget)
+            trial_used, trial = _without(task, kept, used, members[1:], close, budget, deadline)
             if trial is None and len(members) > 3:
-                trial_used, trial = _without(task, kept, used, members[len(members) // 2 :], close, budget)
+                trial_used, trial = _without(task, kept, used, members[len(members) // 2 :], close, budget, deadline)
             if trial is None or len(trial_used) >= len(used):
                 break  # no smaller set reaches the goal (closure may bring the dropped ones back)
             used, check = trial_used, trial
@@ -409,13 +426,19 @@ def _by_use(members: list[str], check: Reachability, rank: Mapping[str, int]) ->
 
 
 def _without(
-    task: PlanningTask, kept: frozenset[str], used: set[str], dropped: list[str], close: CloseFn, budget: int
+    task: PlanningTask,
+    kept: frozenset[str],
+    used: set[str],
+    dropped: list[str],
+    close: CloseFn,
+    budget: int,
+    deadline: float,
 ) -> tuple[set[str], Reachability | None]:
     """``used`` without ``dropped`` (and without what its relaxed plan then leaves unused), if the goal
     stays relaxed-reachable."""
     trial = used - set(dropped)
     closed, _ = close(kept | frozenset(trial))
-    attempt = relaxed_reachability(task, closed, budget)
+    attempt = relaxed_reachability(task, closed, budget, deadline)
     if not attempt.reachable:
         return used, None
     # what the relaxed plan uses, closure's additions included (they stay only through their cause)
