@@ -514,8 +514,8 @@ def plan_task(
 
     # the launcher's head start (planning.head_start), offered to the first call on the full problem
     offers = [head for head in (head_start.take(),) if head is not None]
-    with scratch_directory() as scratch, contextlib.ExitStack() as cleanup:
-        cleanup.callback(_discard_all, offers)
+    with scratch_directory() as scratch, contextlib.ExitStack() as leftovers:
+        leftovers.callback(_discard_all, offers)
 
         def call_planner(objects: Selection | None, limit: float | None) -> RunOutcome:
             if objects is None:
