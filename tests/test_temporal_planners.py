@@ -28,8 +28,8 @@ from relevance_plan.planning.validate import ValidationStatus, validate_builtin,
 
 JAVA_MISSING = "Java runtime not found: apt-get install default-jre-headless"
 
-# Flat types, constant durations: every temporal planner here takes it (Tamer rejects a
-# type below another, Aries real-valued functions).
+# Flat types, constant durations: every temporal planner here takes it as read (Tamer takes
+# a type hierarchy and Aries functions only as the up child rewrites them: test_up_fit.py).
 HAUL_DOMAIN = """
 (define (domain haul)
   (:requirements :typing :durative-actions)

@@ -32,7 +32,13 @@ from relevance_plan.planning.lpg import FEATURES as LPG_FEATURES
 from relevance_plan.planning.lpg import INSTALL_HINT as LPG_HINT
 from relevance_plan.planning.lpg import LpgPlanner, lpg_binary
 from relevance_plan.planning.outcome import RunOutcome
-from relevance_plan.planning.up_engines import ENGINE_FEATURES, JAVA_ENGINES, JAVA_HINT, UnifiedPlanningPlanner
+from relevance_plan.planning.up_engines import (
+    ENGINE_FEATURES,
+    FITTED_ONLY,
+    JAVA_ENGINES,
+    JAVA_HINT,
+    UnifiedPlanningPlanner,
+)
 from relevance_plan.planning.up_engines import java_runtime as find_java
 
 if TYPE_CHECKING:
@@ -67,9 +73,8 @@ def _engine(engine: str, package: str) -> Candidate:
             missing.append(JAVA_HINT)
         return ", and ".join(missing)
 
-    return Candidate(
-        f"up:{engine}", ENGINE_FEATURES[engine], installed, install, lambda _: UnifiedPlanningPlanner(engine)
-    )
+    takes = ENGINE_FEATURES[engine] - FITTED_ONLY.get(engine, frozenset())  # only what it surely takes
+    return Candidate(f"up:{engine}", takes, installed, install, lambda _: UnifiedPlanningPlanner(engine))
 
 
 FAST_DOWNWARD = Candidate("fast-downward", f.CLASSICAL, lambda: True, str, lambda config: FastDownwardPlanner(config))

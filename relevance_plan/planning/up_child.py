@@ -8,8 +8,10 @@ files (a time-triggered plan as timed lines ``t: (action args) [d]``, the
 duration left out for an instantaneous action); the engine's verdict, the name of its ``PlanGenerationResultStatus``,
 to VERDICT (the parent maps it through ``up_engines.UP_STATUS``).  When
 unified-planning cannot read the files there is no verdict and the exit code
-is ``up_engines.CHILD_CANNOT_READ``.  A quality metric the engine does not
-take is dropped before solving: it ranks plans, and any plan is still one.
+is ``up_engines.CHILD_CANNOT_READ``.  A problem whose kind the engine does
+not take is first rewritten into an equivalent one it takes when
+``up_fit`` can (integer fluents for whole values, flat types, guarded
+undefined values, no quality metric), saying so on stderr.
 """
 
 from __future__ import annotations
@@ -20,6 +22,7 @@ from relevance_plan.planning.up_engines import CHILD_CANNOT_READ
 
 # An engine that raises instead of answering cannot take the problem's features.
 _REFUSED = "UNSUPPORTED_PROBLEM"
+_CRASHED = "INTERNAL_ERROR"
 
 
 def main(arguments: list[str]) -> int:
@@ -35,16 +38,24 @@ def main(arguments: list[str]) -> int:
         print(f"unified-planning cannot read the problem: {error}", file=sys.stderr)
         return CHILD_CANNOT_READ
     timeout = None if timeout_text == "none" else float(timeout_text)
-    _drop_metric_it_cannot_take(shortcuts.get_environment(), engine, problem)
+    fitted = _fit(shortcuts.get_environment(), engine, problem)
+    if fitted is not None:
+        problem = fitted.problem
+    lacking = () if fitted is None else fitted.lacking
     try:
         with shortcuts.OneshotPlanner(name=engine, problem_kind=problem.kind) as planner:
             result = planner.solve(problem, timeout=timeout)
     except Exception as error:
-        print(f"{engine}: {type(error).__name__}: {error}", file=sys.stderr)
+        print(f"{engine}: {type(error).__name__}: {error}{_undeclared(lacking)}", file=sys.stderr)
         verdict = _REFUSED
     else:
         verdict = result.status.name
         print(f"{engine}: {verdict}")
+        if verdict == _CRASHED and lacking:
+            # An engine that fails on a kind it does not declare is refusing it: no wider or
+            # full problem would do better.
+            print(f"{engine}: {verdict}{_undeclared(lacking)}: taken as {_REFUSED}", file=sys.stderr)
+            verdict = _REFUSED
         if result.status in POSITIVE_OUTCOMES and result.plan is not None:
             with open(plan_path, "w", encoding="utf-8") as stream:
                 stream.write("".join(line + "\n" for line in _plan_lines(result.plan)))
@@ -53,15 +64,22 @@ def main(arguments: list[str]) -> int:
     return 0
 
 
-def _drop_metric_it_cannot_take(environment, engine: str, problem) -> None:
+def _fit(environment, engine: str, problem):
+    """The problem rewritten for an engine that does not take its kind as read (``up_fit``)."""
     try:
-        takes = environment.factory.engine(engine).supports(problem.kind)
-    except Exception:  # an unknown engine is reported by the solve below
-        return
-    if problem.quality_metrics and not takes:
-        problem.clear_quality_metrics()
-        if environment.factory.engine(engine).supports(problem.kind):
-            print(f"{engine}: solving without the metric, which it does not take", file=sys.stderr)
+        from relevance_plan.planning.up_fit import fit_problem
+
+        fitted = fit_problem(environment, engine, problem)
+    except Exception as error:  # a rewrite that fails leaves the engine the problem as read
+        print(f"{engine}: could not fit the problem to it ({type(error).__name__}: {error})", file=sys.stderr)
+        return None
+    for note in fitted.notes:
+        print(f"{engine}: {note}", file=sys.stderr)
+    return fitted
+
+
+def _undeclared(lacking) -> str:
+    return f" (on a problem of a kind it does not declare: {', '.join(lacking)})" if lacking else ""
 
 
 def _plan_lines(plan) -> list[str]:

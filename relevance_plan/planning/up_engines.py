@@ -62,6 +62,10 @@ CHILD_CANNOT_READ = 3  # unified-planning cannot read the PDDL files: an input e
 # unified-planning's PDDL reader takes no derived predicates, either types,
 # preferences or constraints, and turns every function into a real-valued
 # fluent; the engines' limits below were found by trying (docs/planners.md).
+# The child rewrites what an engine refuses when it can (``up_fit``): real
+# fluents with whole values as integers, the type hierarchy flat; whether it
+# can depends on the values, so a feature admitted for that may still end in
+# UNSUPPORTED_PROBLEM from the child.
 _UP_READ = frozenset(
     {f.STRIPS, f.TYPING, f.HIERARCHICAL_TYPING, f.NEGATIVE_PRECONDITIONS, f.DISJUNCTIVE_PRECONDITIONS, f.EQUALITY}
 )
@@ -70,13 +74,20 @@ _QUANTIFIED = frozenset({f.EXISTENTIAL_PRECONDITIONS, f.UNIVERSAL_PRECONDITIONS,
 ENGINE_FEATURES: dict[str, frozenset[str]] = {
     # "Pyperplan supports the following PDDL fragment: STRIPS without action costs" (its credits).
     "pyperplan": frozenset({f.STRIPS, f.TYPING, f.HIERARCHICAL_TYPING}),
-    # Aries: temporal and action costs; no real-valued fluents (so no other numbers from PDDL), no quantifiers.
-    "aries": _UP_READ | _TEMPORAL | {f.ACTION_COSTS},
-    # Tamer: temporal and numeric; its type checker rejects a type below another declared type.
-    "tamer": (_UP_READ - {f.HIERARCHICAL_TYPING}) | _TEMPORAL | {f.NUMERIC_FLUENTS, f.ACTION_COSTS},
+    # Aries: temporal and action costs; integer fluents but no real-valued ones, so PDDL's numbers only
+    # when the child can read them as integers (whole values); no quantifiers.
+    "aries": _UP_READ | _TEMPORAL | {f.NUMERIC_FLUENTS, f.ACTION_COSTS},
+    # Tamer: temporal and numeric; its type checker rejects a type below another declared type, which the
+    # child flattens.
+    "tamer": _UP_READ | _TEMPORAL | {f.NUMERIC_FLUENTS, f.ACTION_COSTS},
     # ENHSP: numeric planning with ADL; no durative actions.
     "enhsp": _UP_READ | _QUANTIFIED | {f.NUMERIC_FLUENTS, f.ACTION_COSTS},
 }
+
+# Features an engine takes only when the child can rewrite the problem for it, which depends on
+# values that features do not show (Aries: PDDL's numbers only when they are whole); ``auto`` does
+# not choose an engine for them.
+FITTED_ONLY: dict[str, frozenset[str]] = {"aries": frozenset({f.NUMERIC_FLUENTS})}
 
 # Engines that start a Java virtual machine (``java`` from PATH).
 JAVA_ENGINES = frozenset({"enhsp", "enhsp-any", "enhsp-opt"})
