@@ -35,8 +35,9 @@ def score_by_goal(task: PlanningTask, request: ScoreRequest) -> ScoreResult:
     analysis = task.goal_analysis
     goal_objects = task.goal_objects
     neighbours: dict[str, str] = {}
-    for name in goal_objects:
-        for atom in task.init_index.by_object.get(name, ()):
+    # sorted: the same fact explains a neighbour whatever order the sets were built in
+    for name in sorted(goal_objects):
+        for atom in sorted(task.init_index.by_object.get(name, ())):
             if atom[0] in analysis.relevant_predicates:
                 for other in atom[1:]:
                     if other != name:
