@@ -20,7 +20,6 @@ import functools
 import hashlib
 import os
 import re
-import shutil
 import signal
 import sys
 from collections.abc import Sequence
@@ -362,21 +361,16 @@ def run_fast_downward(
     early = None
     if work_dir is None and python == sys.executable and driver_limits:
         early = head_start.claim(head_start.run_key(domain, problem, config, memory_limit_mb, extra_arguments))
-    if early is not None:
-        # started by the launcher with the whole --timeout, before the tool was imported
-        driver_time_limit = early.time_limit
-        try:
+    with early.folder() if early is not None else work_directory(work_dir, prefix="relevance-plan-fd-") as workdir:
+        if early is not None:
+            # started by the launcher with the whole --timeout, before the tool was imported
+            driver_time_limit = early.time_limit
             run = early.group.finish(watchdog_deadline(early.time_limit, watchdog_grace))
-            log = read_log(early.workdir)
-            plans, numbered = read_plans(early.workdir)
-        finally:
-            shutil.rmtree(early.workdir, ignore_errors=True)
-    else:
-        with work_directory(work_dir, prefix="relevance-plan-fd-") as workdir:
+        else:
             deadline = watchdog_deadline(time_limit, watchdog_grace)
             run = run_process_group(command, workdir, deadline, what=WHOSE, program=driver)
-            log = read_log(workdir)
-            plans, numbered = read_plans(workdir)
+        log = read_log(workdir)
+        plans, numbered = read_plans(workdir)
     plan = plans[-1] if plans else None
     killed = run.killed_by_watchdog
     memory_limited = driver_limits and memory_limit_mb is not None

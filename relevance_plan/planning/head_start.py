@@ -74,6 +74,14 @@ class HeadStart:
             self.claimed = self.used = True
             return True
 
+    @contextlib.contextmanager
+    def folder(self) -> Iterator[Path]:
+        """The run's folder, removed after the block (the caller took the run over)."""
+        try:
+            yield self.workdir
+        finally:
+            shutil.rmtree(self.workdir, ignore_errors=True)
+
     def discard(self) -> None:
         """Stop the run and remove its folder, unless somebody took it over."""
         with self._lock:

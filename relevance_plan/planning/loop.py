@@ -29,7 +29,6 @@ planner gets the full problem and the result says why it was not pruned.
 
 from __future__ import annotations
 
-import contextlib
 import enum
 import os
 import time
@@ -44,7 +43,6 @@ from relevance_plan.pddl.model import Problem
 from relevance_plan.pddl.plans import Plan, format_plan
 from relevance_plan.planning import head_start
 from relevance_plan.planning.compile import PreparedPlanner, prepare_planner, with_planner_args
-from relevance_plan.planning.head_start import HeadStart
 from relevance_plan.planning.outcome import PlannerStatus, RunOutcome
 from relevance_plan.planning.planners import (
     DEFAULT_PLANNER,
@@ -428,18 +426,6 @@ def run_attempts(
     return attempts, widening_time
 
 
-def _discard_all(offers: list[HeadStart]) -> None:
-    for head in offers:
-        head.discard()
-
-
-def _pop(offers: list[HeadStart]) -> HeadStart | None:
-    try:
-        return offers.pop()
-    except IndexError:  # taken by the other thread of a race
-        return None
-
-
 def _race_decides(attempt: Attempt) -> bool:
     """A full-problem attempt ends the run: a valid plan, or proof that the problem has none."""
     return attempt.status in (AttemptStatus.SOLVED, AttemptStatus.UNSOLVABLE)
@@ -512,14 +498,14 @@ def plan_task(
     if overran is not None:
         return overran
 
-    # the launcher's head start (planning.head_start), offered to the first call on the full problem
-    offers = [head for head in (head_start.take(),) if head is not None]
-    with scratch_directory() as scratch, contextlib.ExitStack() as leftovers:
-        leftovers.callback(_discard_all, offers)
+    # the launcher's head start (planning.head_start): the first call on the full problem may take it
+    # over; offered() stops it after that call, and the end of the run in every case
+    early = head_start.take()
+    with scratch_directory() as scratch, head_start.offered(early):
 
         def call_planner(objects: Selection | None, limit: float | None) -> RunOutcome:
             if objects is None:
-                with head_start.offered(_pop(offers)):
+                with head_start.offered(early):
                     return prepared.run(
                         domain_path, problem_path, time_limit=limit, memory_limit_mb=options.memory_limit_mb
                     )
