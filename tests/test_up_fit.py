@@ -234,6 +234,16 @@ def test_flat_types_and_defined_values_give_a_problem_tamer_takes(tmp_path):
     assert read.user_type("room").father is not None  # the problem as read is not changed
 
 
+def test_a_parameter_of_type_object_makes_one_flat_type(tmp_path):
+    engine_installed("tamer")
+    # Naming `object` makes unified-planning put every type below it: one hierarchy, one flat type.
+    domain = ERRAND_DOMAIN.replace("(lit ?r - room))", "(lit ?r - room) (seen ?o - object))")
+    domain = domain.replace("(at end (free)))))", "(at end (free)) (at end (seen ?t)))))")
+    fitted, tamer = fitted_for("tamer", *write_errand(tmp_path, domain))
+    assert [t.name for t in fitted.problem.user_types] == ["object"] and tamer.supports(fitted.problem.kind)
+    assert fitted.notes[0] == "flattened the type hierarchy (5 types) to run"
+
+
 def test_timed_initial_literals_are_flattened_with_the_rest(tmp_path):
     engine_installed("tamer")
     problem = ERRAND_PROBLEM.replace("(free)", "(free) (at 20 (lit kitchen))")
