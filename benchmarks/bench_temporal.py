@@ -18,7 +18,7 @@ type hierarchy flattened and undefined distances guarded for Tamer); Aries
 takes no numeric effect by a function, so not zenotravel-numeric.
 
     python benchmarks/bench_temporal.py                  # the default grid: takes about 30 minutes
-    python benchmarks/bench_temporal.py --quick          # the smallest sizes only: takes about 5 minutes
+    python benchmarks/bench_temporal.py --quick          # the smallest sizes only: takes about 4 minutes
     python benchmarks/bench_temporal.py --timeout 120 --seed 3
 """
 
@@ -78,7 +78,7 @@ def run(domain: Path, problem: Path, method: str, planner: str, timeout: float):
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(
         description=__doc__.split("\n\n")[0],
-        epilog="The default grid takes about 30 minutes on 2 cores; --quick about 5 minutes.",
+        epilog="The default grid takes about 30 minutes on 2 cores; --quick about 4 minutes.",
     )
     parser.add_argument("--timeout", type=float, default=60.0)
     parser.add_argument("--seed", type=int, default=1)

@@ -11,14 +11,17 @@ from __future__ import annotations
 
 import json
 import warnings
+from fractions import Fraction
 
 import pytest
 from support import run
 
 pytest.importorskip("unified_planning")
 
+from unified_planning.engines.results import ValidationResultStatus  # noqa: E402
 from unified_planning.io import PDDLReader  # noqa: E402
-from unified_planning.shortcuts import OneshotPlanner, get_environment  # noqa: E402
+from unified_planning.plans import ActionInstance, TimeTriggeredPlan  # noqa: E402
+from unified_planning.shortcuts import OneshotPlanner, PlanValidator, get_environment  # noqa: E402
 
 from relevance_plan.io import load_task  # noqa: E402
 from relevance_plan.pddl.plans import read_plan  # noqa: E402
@@ -109,12 +112,6 @@ def valid_on_the_original(domain_path, problem_path, plan_text: str) -> bool:
 
 def up_validates(problem, plan_text: str) -> bool:
     """unified-planning's verdict on a timed plan of ``problem`` (actions and objects by name)."""
-    from fractions import Fraction
-
-    from unified_planning.engines.results import ValidationResultStatus
-    from unified_planning.plans import ActionInstance, TimeTriggeredPlan
-    from unified_planning.shortcuts import PlanValidator
-
     steps = []
     for step in read_plan(plan_text):
         action = problem.action(step.action)
@@ -234,6 +231,16 @@ def test_flat_types_and_defined_values_give_a_problem_tamer_takes(tmp_path):
     assert read.user_type("room").father is not None  # the problem as read is not changed
 
 
+def test_a_parameter_of_type_object_makes_one_flat_type(tmp_path):
+    engine_installed("tamer")
+    # Naming `object` makes unified-planning put every type below it: one hierarchy, one flat type.
+    domain = ERRAND_DOMAIN.replace("(lit ?r - room))", "(lit ?r - room) (seen ?o - object))")
+    domain = domain.replace("(at end (free)))))", "(at end (free)) (at end (seen ?t)))))")
+    fitted, tamer = fitted_for("tamer", *write_errand(tmp_path, domain))
+    assert [t.name for t in fitted.problem.user_types] == ["object"] and tamer.supports(fitted.problem.kind)
+    assert fitted.notes[0] == "flattened the type hierarchy (5 types) to run"
+
+
 def test_timed_initial_literals_are_flattened_with_the_rest(tmp_path):
     engine_installed("tamer")
     problem = ERRAND_PROBLEM.replace("(free)", "(free) (at 20 (lit kitchen))")
@@ -342,9 +349,18 @@ def test_plan_with_aries_solves_a_temporal_problem_with_a_static_distance(tmp_pa
     engine_installed("aries")
     domain, problem = write_errand(tmp_path)
     code, stdout, stderr = run(
-        "plan", domain, problem, "--planner", "up:aries", "--timeout", "60", "--no-race", "--json",
-        "--plan-file", tmp_path / "plan.txt",
-    )  # fmt: skip
+        "plan",
+        domain,
+        problem,
+        "--planner",
+        "up:aries",
+        "--timeout",
+        "60",
+        "--no-race",
+        "--json",
+        "--plan-file",
+        tmp_path / "plan.txt",
+    )
     assert code == 0, stderr
     data = json.loads(stdout)
     assert data["status"] == "solved" and data["valid"] and data["planner"] == "up:aries"

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import sys
 
-from relevance_plan.planning.up_engines import CHILD_CANNOT_READ
+from relevance_plan.planning.up_engines import CHILD_CANNOT_READ, ENGINE_FEATURES
 
 # An engine that raises instead of answering cannot take the problem's features.
 _REFUSED = "UNSUPPORTED_PROBLEM"
@@ -51,9 +51,9 @@ def main(arguments: list[str]) -> int:
     else:
         verdict = result.status.name
         print(f"{engine}: {verdict}")
-        if verdict == _CRASHED and lacking:
-            # An engine that fails on a kind it does not declare is refusing it: no wider or
-            # full problem would do better.
+        if verdict == _CRASHED and lacking and engine in ENGINE_FEATURES:
+            # An engine whose limits were found by trying, failing on a kind it does not declare,
+            # is refusing it: no wider or full problem would do better.
             print(f"{engine}: {verdict}{_undeclared(lacking)}: taken as {_REFUSED}", file=sys.stderr)
             verdict = _REFUSED
         if result.status in POSITIVE_OUTCOMES and result.plan is not None:
