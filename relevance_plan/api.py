@@ -47,7 +47,7 @@ def prune(domain: Source, problem: Source, **options: Any) -> Selection:
     """The objects ``plan`` tries first, and the pruned problem (``Selection.text``).
 
     Options: ``scorer``, ``model_path``, ``objective``, ``model_task``, ``human``,
-    ``tau_class``, ``tau_element``, ``seed``, ``goal_filter``, ``prefer_free``.
+    ``tau_class``, ``tau_element``, ``seed``, ``goal_filter``, ``prefer_free``, ``economical``.
     """
     parsed_domain, parsed_problem = load_sources(domain, problem)
     scoring_options = ScoringOptions(**_thresholds(dict(options)))

@@ -45,3 +45,23 @@ def test_the_repair_picks_one_airplane_where_one_suffices():
         assert len(airplanes) == 1, (seed, sorted(airplanes))
         reasons = {r.name: r for r in selection.restored}
         assert reasons[next(iter(airplanes))].rule == "reachability"
+
+
+def test_the_first_selection_keeps_one_of_many_nearby_airplanes():
+    # generated many-goal logistics: every airport is near a goal object, so the goal scorer selects
+    # nearly every airplane; the first selection keeps the one a relaxed plan needs
+    from relevance_plan.generators.sized import generate_sized_problem
+
+    for world in ("logistics-manygoals", "logistics-manygoals-typed"):
+        generated = generate_sized_problem(world, 2, 1, 120)
+        domain = load_domain(DOMAINS_DIR / generated.sidecar["domain"] / "domain.pddl")
+        problem = read_problem(generated.pddl_text, domain)
+        scoring = score_problem(PlanningTask(domain, problem), ScoringOptions())
+        airplanes = {n for n in problem.objects if n.startswith("plane")}
+        assert len(scoring.scores.alternatives & airplanes) > 10  # the scorer alone would keep them all
+        selection = scoring.first_selection()
+        assert len(selection.kept & airplanes) == 1, sorted(selection.kept & airplanes)
+        assert len(selection.kept) <= len(generated.sidecar["necessary"]) + 5
+        assert selection.set_aside  # what widening brings back first
+        # the relevance method's later attempts and the other methods do not set alternatives aside
+        assert len(scoring.first_selection(narrow=False).kept & airplanes) > 10

@@ -101,6 +101,7 @@ FINGERPRINT_RULES: dict[str, str] = {
     "scorer": "pruning",
     "goal_filter": "pruning",
     "prefer_free": "pruning",
+    "economical": "pruning",
     "model_path": "derived",  # as the sha256 of the model file the run would use
     "objective": "pruning",
     "model_task": "pruning",

@@ -107,6 +107,7 @@ class PlanOptions:
     scorer: str | None = None  # overrides the method's scorer
     goal_filter: bool = True  # for 'relevance': drop relevant objects no goal-directed action can use
     prefer_free: bool = True  # for 'relevance' with a model: first try without blocked alternatives
+    economical: bool = True  # for 'relevance': first try, of many candidates for a role, those a relaxed plan needs
     model_path: str | None = None
     objective: str | None = None
     model_task: str | None = None

@@ -105,16 +105,22 @@ def fan_in(index: FactIndex) -> dict[tuple[str, int], float]:
 
 
 def object_distances(
-    index: FactIndex, sources: Iterable[str], hub_degree: int | None = None, max_fan: float | None = None
+    index: FactIndex,
+    sources: Iterable[str],
+    hub_degree: int | None = None,
+    max_fan: float | None = None,
+    fans: Mapping[tuple[str, int], float] | None = None,
 ) -> dict[str, int]:
     """Breadth-first hops from ``sources`` through initial facts (two objects in one fact are one hop apart).
 
     Objects in more than ``hub_degree`` facts get a distance but are not passed
     through; with ``max_fan``, a fact is not followed from an object at a
     position shared by more than ``max_fan`` facts on average (from a shape to
-    every key of that shape), only toward it.
+    every key of that shape), only toward it (``fans``: :func:`fan_in` of the index, when the
+    caller has it).
     """
-    fans = fan_in(index) if max_fan is not None else {}
+    if fans is None:
+        fans = fan_in(index) if max_fan is not None else {}
     distance = {name: 0 for name in sources}
     frontier = list(distance)
     seen_facts: set[GroundAtom] = set()

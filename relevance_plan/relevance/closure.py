@@ -48,10 +48,14 @@ def close_over_constraints(
     index: FactIndex,
     candidates: Set[str],
     singleton_predicates: Set[str] = frozenset(),
+    already: Set[str] = frozenset(),
 ) -> tuple[frozenset[str], tuple[Restored, ...]]:
     """Return (closed kept set, what was put back and why); inputs are not changed.
 
     ``candidates`` are the prunable objects; domain constants never need restoring.
+    ``already``: a part of ``kept`` that is closed already (with the singleton
+    facts), so only what the rest needs is walked: growing a set one object
+    at a time costs one walk in all.
     """
     rules_by_predicate: dict[str, list[ConstraintRule]] = defaultdict(list)
     for rule in rules:
@@ -65,8 +69,8 @@ def close_over_constraints(
             restored.append(Restored(name, because_of, rule, fact))
             worklist.append(name)
 
-    worklist: list[str] = sorted(result)
-    for predicate in sorted(singleton_predicates):
+    worklist: list[str] = sorted(result - set(already))
+    for predicate in sorted(singleton_predicates) if not already else ():
         for fact in index.by_predicate.get(predicate, ()):
             for arg in fact[1:]:
                 keep(arg, "", "singleton", fact, worklist)

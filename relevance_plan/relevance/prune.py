@@ -20,6 +20,7 @@ from relevance_plan.relevance.knowledge import KnowledgeModel, check_threshold
 from relevance_plan.relevance.reachability import repair_selection
 from relevance_plan.relevance.scorers import PlanningTask, ScoreResult
 from relevance_plan.relevance.soundness import KeptForSoundness
+from relevance_plan.relevance.types import static_predicates
 
 DEFAULT_TAU = 0.2
 FULL_ABOVE = 0.8  # a selection keeping more than this share of the objects plans on the full problem
@@ -160,6 +161,7 @@ def prune_with_scores(
     *,
     repair: bool | None = None,
     full_above: float | None = None,
+    economical: bool = False,
 ) -> Selection:
     """Threshold the scores, add ``extra`` objects, close over constraints, check, write the text.
 
@@ -170,7 +172,11 @@ def prune_with_scores(
     A selection that keeps more than ``full_above`` of the objects (default:
     ``FULL_ABOVE`` for the scorers repaired by default, never for the others,
     whose first selection is kept as chosen) becomes the full problem: pruning
-    it would save little and risk a second attempt.
+    it would save little and risk a second attempt.  With ``economical`` (and
+    ``repair``), the selected alternatives of a populous role
+    (``ScoreResult.alternatives``: fifty airplanes near the goal's objects)
+    are set aside and the repair brings back, best ranked first, only those
+    a relaxed plan needs: one airplane carries every package.
     """
     selected = select_relevant(task, scores, thresholds, goal_filter) | (frozenset(extra) & task.problem.objects.keys())
     rules = constraint_rules(task.domain, task.init_index, model)
@@ -178,7 +184,7 @@ def prune_with_scores(
 
     sound = task.kept_for_soundness
 
-    def close(names: Set[str]) -> tuple[frozenset[str], tuple[Restored, ...]]:
+    def close(names: Set[str], already: Set[str] = frozenset()) -> tuple[frozenset[str], tuple[Restored, ...]]:
         # what a quantifier ranges over stays, so that a plan of the pruned problem is one of the original
         missing = sorted(sound.keys() - set(names))
         closed, found = close_over_constraints(
@@ -187,6 +193,7 @@ def prune_with_scores(
             task.init_index,
             candidates=task.problem.objects.keys(),
             singleton_predicates=singletons,
+            already=already,
         )
         return closed, tuple(soundness_reason(name, sound[name]) for name in missing) + found
 
@@ -204,9 +211,16 @@ def prune_with_scores(
     if full_above is None:
         full_above = FULL_ABOVE if scores.scorer in REPAIR_SCORERS else 1.0
     total = len(task.problem.objects)
+    if repair and economical:
+        spare = _spare_alternatives(task, scores, selected - frozenset(extra))
+        if spare:
+            set_aside |= spare
+            selected = selected - spare
+            kept, restored = close(selected)
     if repair and len(kept) <= full_above * total:
         kept, repaired, _ = repair_selection(task, kept, scores.element_scores, close)
         restored = tuple(restored) + repaired
+        set_aside -= kept
     if len(kept) > full_above * total:
         why = f"the selection kept {len(kept)} of {total} objects (more than {full_above:.0%}): the full problem"
         return full_problem(task, scores, thresholds, selected, restored, why)
@@ -220,6 +234,25 @@ def prune_with_scores(
         text=write_pruned_problem(task.problem, kept),
         set_aside=set_aside,
         unpruned=_why_nothing_pruned(task, kept, restored),
+    )
+
+
+def _spare_alternatives(task: PlanningTask, scores: ScoreResult, selected: frozenset[str]) -> frozenset[str]:
+    """The selected alternatives the first selection may leave to the repair: not pinned, not
+    kept for soundness, and not of a class whose members a static fact links to each other (the
+    cells of a grid, the rooms of a map: a plan may need a way round that no relaxed plan takes)."""
+    if not scores.alternatives:
+        return frozenset()
+    classes = task.typing.problem.objects
+    static = static_predicates(task.typing.domain)
+    linked: set[str] = set()
+    for predicate in static:
+        for atom in task.init_index.by_predicate.get(predicate, ()):
+            seen = [classes.get(arg) for arg in atom[1:]]
+            linked.update(c for i, c in enumerate(seen) if c is not None and c in seen[i + 1 :])
+    keep = task.pinned_objects | task.kept_for_soundness.keys()
+    return frozenset(
+        name for name in scores.alternatives & selected if name not in keep and classes.get(name) not in linked
     )
 
 

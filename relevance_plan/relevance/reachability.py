@@ -21,17 +21,20 @@ past a work budget, or a few seconds, rather than cost more than the planner wou
 
 from __future__ import annotations
 
+import heapq
 import math
 import time
+import weakref
 from collections import defaultdict, deque
 from collections.abc import Callable, Iterator, Mapping, Sequence, Set
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
 from relevance_plan.pddl.formulas import Atom, Formula, GroundAtom, conjuncts, effect_literals
-from relevance_plan.pddl.model import Domain, Problem
-from relevance_plan.relevance.analysis import object_distances
+from relevance_plan.pddl.model import Domain
+from relevance_plan.relevance.analysis import fan_in, object_distances
 from relevance_plan.relevance.closure import Restored
+from relevance_plan.relevance.types import static_predicates
 
 if TYPE_CHECKING:  # the scorers' package imports this module's users
     from relevance_plan.relevance.scorers.base import PlanningTask
@@ -70,6 +73,8 @@ class _Schema:
     types: tuple[str, ...]
     pre: tuple[Condition, ...]
     add: tuple[tuple[str, Args, tuple[tuple[str, str], ...]], ...]  # (predicate, args, quantified (variable, type)s)
+    ranged: frozenset[str] = frozenset()  # the types a quantified effect ranges over
+    bound_by_pre: bool = False  # no quantified effect, and the conditions name every parameter
 
 
 def _schemas(domain: Domain) -> list[_Schema]:
@@ -83,8 +88,57 @@ def _schemas(domain: Domain) -> list[_Schema]:
             if item.is_add
         )
         variables = tuple(v for v, _ in action.parameters)
-        result.append(_Schema(action.name, variables, tuple(t for _, t in action.parameters), pre, add))
+        ranged = frozenset(t for _, _, quantified in add for _, t in quantified)
+        named = {a for _, args in pre for a in args}
+        bound = not ranged and all(v in named for v in variables)
+        result.append(_Schema(action.name, variables, tuple(t for _, t in action.parameters), pre, add, ranged, bound))
     return result
+
+
+def _compiled_schemas(task: PlanningTask) -> list[_Schema]:
+    """The task's join schemas without the static one-argument conditions its parameters' types
+    imply: in an untyped domain ``(truck ?t)`` is the type of ``?t`` and every candidate binding
+    passes it, so joining on it only repeats the type check (the bulk of the work on the IPC's
+    untyped STRIPS domains).  Cached per task: a repair runs several checks."""
+    cached = _SCHEMA_CACHE.get(task)
+    if cached is not None:
+        return cached
+    domain, problem = task.typing.domain, task.typing.problem
+    static = static_predicates(domain)
+    by_predicate = task.init_index.by_predicate
+    holders = {
+        p: {atom[1] for atom in by_predicate.get(p, ()) if len(atom) == 2} for p in static if domain.predicates.get(p)
+    }
+    typed = dict(domain.constants)
+    typed.update(problem.objects)
+    members: dict[str, list[str]] = {}
+
+    def implied(predicate: str, type_name: str) -> bool:
+        if type_name not in members:
+            members[type_name] = [o for o, t in typed.items() if domain.is_subtype(t, type_name)]
+        held = holders[predicate]
+        return all(o in held for o in members[type_name])
+
+    result = []
+    for schema in _schemas(domain):
+        type_of = dict(zip(schema.parameters, schema.types))
+        pre = tuple(
+            (predicate, args)
+            for predicate, args in schema.pre
+            if not (
+                predicate in holders
+                and len(args) == 1
+                and args[0] in type_of
+                and type_of[args[0]] != "object"
+                and implied(predicate, type_of[args[0]])
+            )
+        )
+        result.append(replace(schema, pre=pre))
+    _SCHEMA_CACHE[task] = result
+    return result
+
+
+_SCHEMA_CACHE: weakref.WeakKeyDictionary[PlanningTask, list[_Schema]] = weakref.WeakKeyDictionary()
 
 
 @dataclass(frozen=True)
@@ -125,24 +179,24 @@ def relaxed_reachability(
     joining the others against the facts processed so far (semi-naive, as in
     Fast Downward's translator).
     """
-    typing = task.typing
-    exploration = _Exploration(typing.domain, typing.problem, kept, _Work(budget, deadline))
     try:
+        exploration = _Exploration(task, kept, _Work(budget, deadline))
         exploration.run()
     except _OutOfBudget:
         return Reachability(False, False)
-    goal, facts = exploration.goal, exploration.facts
-    unreached = tuple(atom for atom in goal if atom not in facts)
-    if unreached:
-        return Reachability(False, True, unreached)
-    plan, objects = _relaxed_plan(facts, goal)
-    return Reachability(True, True, (), tuple(plan), frozenset(objects) - set(typing.domain.constants))
+    return exploration.outcome()
 
 
 class _Exploration:
-    """The delete-relaxed exploration of :func:`relaxed_reachability` on one object set."""
+    """The delete-relaxed exploration of :func:`relaxed_reachability`, on an object set that may grow.
 
-    def __init__(self, domain: Domain, problem: Problem, kept: Set[str], work: _Work):
+    :meth:`add` brings in more objects and :meth:`run` carries on from where
+    it stopped, so growing a selection one object at a time costs about one
+    exploration of the final set.
+    """
+
+    def __init__(self, task: PlanningTask, kept: Set[str], work: _Work):
+        domain, problem = task.typing.domain, task.typing.problem
         self.domain = domain
         self.work = work
         self.allowed = set(kept) | set(domain.constants)
@@ -151,22 +205,70 @@ class _Exploration:
         self.goal = [(p, *args) for p, args in _required_atoms(problem.goal) if not any(a[0] == "?" for a in args)]
         self.facts: dict[GroundAtom, _Achiever | None] = {}  # the step that first reached each fact
         self.queue: deque[GroundAtom] = deque()
-        # sorted: the same objects give the same relaxed plan whatever order the set was built in;
+        self.by_object = task.init_index.by_object
+        self.init = problem.init
         # timed initial literals that make a fact true count as reached: a plan may wait for them
-        timed = {literal.atom for literal in problem.timed_literals if literal.atom is not None and not literal.negated}
-        for atom in sorted(atom for atom in problem.init | timed if all(arg in self.allowed for arg in atom[1:])):
-            self.facts[atom] = None
-            self.queue.append(atom)
+        self.timed = {
+            literal.atom for literal in problem.timed_literals if literal.atom is not None and not literal.negated
+        }
         self.of_type: dict[str, list[str]] = {}
         self.fits: dict[str, frozenset[str]] = {}
-        self.schemas = _schemas(domain)
-        self.triggers: dict[str, list[tuple[_Schema, int]]] = defaultdict(list)
+        self.schemas = _compiled_schemas(task)
+        # predicate -> (schema, the condition it matches, the schema's other conditions)
+        self.triggers: dict[str, list[tuple[_Schema, int, list[Condition]]]] = defaultdict(list)
         for schema in self.schemas:
             for i, (predicate, _) in enumerate(schema.pre):
-                self.triggers[predicate].append((schema, i))
+                self.triggers[predicate].append((schema, i, list(schema.pre[:i] + schema.pre[i + 1 :])))
+        self.variable_fits: dict[int, dict[str, frozenset[str]]] = {}
         # (predicate, position, value) -> facts; (predicate,) -> facts
         self.processed: dict[tuple[str | int, ...], list[GroundAtom]] = defaultdict(list)
-        self.missing = set(self.goal) - set(self.facts)
+        # applications that ranged over every kept object of some types: run again when those grow
+        self.ranging: list[tuple[_Schema, Binding, frozenset[str]]] = []
+        self.missing = set(self.goal)
+        nullary = {atom for atom in self.init | self.timed if len(atom) == 1}
+        self._reach_initial(self.allowed, nullary)
+        for schema in self.schemas:
+            if not schema.pre:
+                self.apply(schema, {})
+
+    def _reach_initial(self, names: Set[str], also: Set[GroundAtom] = frozenset()) -> None:
+        """The initial (and timed) facts over allowed objects that mention one of ``names``."""
+        found = set(also)
+        for name in names:
+            for atom in self.by_object.get(name, ()):
+                if (atom in self.init or atom in self.timed) and all(arg in self.allowed for arg in atom[1:]):
+                    found.add(atom)
+        # sorted: the same objects give the same relaxed plan whatever order the sets were built in
+        for atom in sorted(found - self.facts.keys()):
+            self.facts[atom] = None
+            self.queue.append(atom)
+            self.missing.discard(atom)
+
+    def add(self, names: Set[str]) -> None:
+        """Bring ``names`` into the kept set; :meth:`run` then explores what they make reachable."""
+        new = {name for name in names if name not in self.allowed}
+        if not new:
+            return
+        self.allowed |= new
+        grown = set()
+        for type_name, members in self.of_type.items():
+            fitting = sorted(o for o in new if self.domain.is_subtype(self.types_of.get(o, "object"), type_name))
+            if fitting:
+                members.extend(fitting)
+                self.fits[type_name] = frozenset(members)
+                grown.add(type_name)
+        self.variable_fits.clear()
+        self._reach_initial(new)
+        for schema, binding, ranged in list(self.ranging):
+            if not grown.isdisjoint(ranged):
+                self.apply(schema, binding, again=True)
+
+    def outcome(self) -> Reachability:
+        unreached = tuple(atom for atom in self.goal if atom not in self.facts)
+        if unreached:
+            return Reachability(False, True, unreached)
+        plan, objects = _relaxed_plan(self.facts, self.goal)
+        return Reachability(True, True, (), tuple(plan), frozenset(objects) - set(self.domain.constants))
 
     def objects_of(self, type_name: str) -> list[str]:
         if type_name not in self.of_type:
@@ -176,43 +278,63 @@ class _Exploration:
             self.fits[type_name] = frozenset(self.of_type[type_name])
         return self.of_type[type_name]
 
+    def fits_of(self, schema: _Schema) -> dict[str, frozenset[str]]:
+        """Each typed parameter of ``schema`` -> the kept objects of its type (untyped: anything)."""
+        fits = self.variable_fits.get(id(schema))
+        if fits is None:
+            fits = {}
+            for variable, type_name in zip(schema.parameters, schema.types):
+                if type_name != "object":
+                    self.objects_of(type_name)
+                    fits[variable] = self.fits[type_name]
+            self.variable_fits[id(schema)] = fits
+        return fits
+
     def run(self) -> None:
-        for schema in self.schemas:
-            if not schema.pre:
-                self.apply(schema, {})
         while self.queue and self.missing:
             fact = self.queue.popleft()
             self.processed[(fact[0],)].append(fact)
             for position, value in enumerate(fact[1:]):
                 self.processed[(fact[0], position, value)].append(fact)
-            for schema, i in self.triggers.get(fact[0], ()):
-                binding = _match(schema.pre[i][1], fact, {})
+            for schema, i, rest in self.triggers.get(fact[0], ()):
+                fits = self.fits_of(schema)
+                binding = _match(schema.pre[i][1], fact, {}, fits)
                 if binding is None:
                     continue
-                for found in list(self.join(list(schema.pre[:i] + schema.pre[i + 1 :]), binding)):
+                # apply() adds facts but never processes them: the join's lists do not change under it
+                for found in self.join(rest, binding, fits):
                     self.apply(schema, found)
 
-    def apply(self, schema: _Schema, binding: Binding) -> None:
-        for variable, type_name in zip(schema.parameters, schema.types):
-            if type_name == "object":
-                continue
-            if type_name not in self.fits:
-                self.objects_of(type_name)
-            if variable in binding and binding[variable] not in self.fits[type_name]:
-                return
+    def apply(self, schema: _Schema, binding: Binding, again: bool = False) -> None:
+        """Every step of ``schema`` that extends ``binding`` (whose values fit their types) adds its atoms."""
+        if schema.bound_by_pre and len(binding) == len(schema.parameters):
+            # the common case, kept short: the conditions bound every parameter, no effect ranges over a type
+            facts, achiever = self.facts, None
+            for predicate, args, _ in schema.add:
+                fact = (predicate,) + tuple(binding.get(a, a) for a in args)
+                if fact not in facts:
+                    if achiever is None:
+                        step = (schema.name,) + tuple(binding[v] for v in schema.parameters)
+                        achiever = _Achiever(step, schema, binding)
+                    facts[fact] = achiever
+                    self.queue.append(fact)
+                    self.missing.discard(fact)
+            return
         free = [(v, t) for v, t in zip(schema.parameters, schema.types) if v not in binding]
+        if not again and (free or schema.ranged):
+            self.ranging.append((schema, binding, frozenset(t for _, t in free) | schema.ranged))
         for full in _fill(binding, free, self.objects_of, self.work):
             step = (schema.name,) + tuple(full[v] for v in schema.parameters)
             for predicate, args, quantified in schema.add:
                 # a universally quantified effect adds its atom for every kept object of the variable's type
-                for each in _fill(full, list(quantified), self.objects_of, self.work):
+                for each in _fill(full, list(quantified), self.objects_of, self.work) if quantified else (full,):
                     fact = (predicate,) + tuple(each.get(a, a) for a in args)
                     if fact not in self.facts:
                         self.facts[fact] = _Achiever(step, schema, full)
                         self.queue.append(fact)
                         self.missing.discard(fact)
 
-    def join(self, pre: list[Condition], binding: Binding) -> Iterator[Binding]:
+    def join(self, pre: list[Condition], binding: Binding, fits: Mapping[str, frozenset[str]]) -> Iterator[Binding]:
         if not pre:
             yield binding
             return
@@ -221,9 +343,9 @@ class _Exploration:
         rest = pre[:best] + pre[best + 1 :]
         for fact in self.processed.get(best_key, ()):
             self.work.spend()
-            new = _match(args, fact, binding)
+            new = _match(args, fact, binding, fits)
             if new is not None:
-                yield from self.join(rest, new)
+                yield from self.join(rest, new, fits)
 
     def smallest(self, pre: list[Condition], binding: Binding) -> tuple[int, tuple[str | int, ...]]:
         """The condition whose bound arguments leave the fewest processed facts, and that index key."""
@@ -247,14 +369,18 @@ class _Exploration:
         return best, best_key
 
 
-def _match(args: Args, fact: GroundAtom, binding: Binding) -> Binding | None:
+def _match(args: Args, fact: GroundAtom, binding: Binding, fits: Mapping[str, frozenset[str]]) -> Binding | None:
+    """``binding`` extended so that ``args`` match ``fact`` (a new value must fit its variable's type), or None."""
     if len(args) != len(fact) - 1:
         return None
     new = binding
     for arg, value in zip(args, fact[1:]):
-        if arg.startswith("?"):
+        if arg[0] == "?":
             bound = new.get(arg)
             if bound is None:
+                admitted = fits.get(arg)
+                if admitted is not None and value not in admitted:
+                    return None
                 if new is binding:
                     new = dict(binding)
                 new[arg] = value
@@ -308,7 +434,8 @@ def _relaxed_plan(
     return plan, objects
 
 
-CloseFn = Callable[[Set[str]], tuple[frozenset[str], tuple[Restored, ...]]]
+# closure over constraints: (names, a subset of them already closed) -> (closed set, what it put back and why)
+CloseFn = Callable[[Set[str], Set[str]], tuple[frozenset[str], tuple[Restored, ...]]]
 
 
 def repair_selection(
@@ -334,41 +461,47 @@ def repair_selection(
     if give_up_above is None:
         give_up_above = total
     deadline = time.monotonic() + REPAIR_SECONDS
-    check = relaxed_reachability(task, kept, budget, deadline)
-    if check.reachable or not check.complete:
+    try:
+        exploration = _Exploration(task, kept, _Work(budget, deadline))
+        exploration.run()
+    except _OutOfBudget:
+        return kept, (), Reachability(False, False)
+    check = exploration.outcome()
+    if check.reachable:
         return kept, (), check
-    distance = object_distances(task.init_index, kept, hub_degree(task), max_fan=REPAIR_MAX_FAN)
-    far = total + 1
-    pool = sorted(
-        (name for name in task.problem.objects if name not in kept),
-        key=lambda name: (-scores.get(name, 0.0), distance.get(name, far), name),
-    )
-    # A class with no member kept cannot fill any role (no airplane at all): its best-ranked member goes first.
-    classes = task.typing.problem.objects
-    present = {classes[name] for name in kept if name in classes}
-    representatives: dict[str, str] = {}
-    for name in pool:
-        representatives.setdefault(classes[name], name)
-    first = [name for cls, name in representatives.items() if cls not in present]
-    pool = first + [name for name in pool if name not in set(first)]
-    rank = {name: i for i, name in enumerate(pool)}
+    # One member of every class the kept set lacks first (no airplane at all), together; then, round by
+    # round, the objects nearest to the goal atoms still unreached: one at a time at first (one
+    # airplane may carry every package), then a quarter of what was added.  The exploration carries
+    # on from where it stopped, so the whole growth costs about one exploration of the final set.
+    toward = _Toward(task, scores)
+    take = toward.missing_classes(kept)
     current = kept
-    # The missing classes' representatives alone first (one airplane may carry every package),
-    # then doubling batches by rank.
-    batch = len(first) or max(4, len(kept))
-    while pool and not check.reachable:
-        take, pool = pool[:batch], pool[batch:]
-        current, _ = close(current | frozenset(take))
-        if len(current) > give_up_above:
-            break  # it would keep most of the problem anyway: checking costs more than it saves
-        check = relaxed_reachability(task, current, budget, deadline)
-        if not check.complete:
-            break
-        batch = max(4, len(kept), 2 * batch)
+    added: list[str] = []
+    try:
+        while exploration.missing:
+            if not take:
+                batch = max(1, (len(current) - len(kept)) // 4)
+                take = toward.nearest(current, {arg for atom in exploration.missing for arg in atom[1:]}, batch)
+                if not take:
+                    break
+            grown, _ = close(current | frozenset(take), current)
+            added += take + sorted(grown - current - set(take))
+            take = []
+            if len(grown) > give_up_above:
+                current = grown
+                break  # it would keep most of the problem anyway: checking costs more than it saves
+            exploration.add(grown - current)
+            current = grown
+            exploration.run()
+        check = exploration.outcome()
+    except _OutOfBudget:
+        check = Reachability(False, False)
+    rank = {name: i for i, name in enumerate(added)}
     if not check.reachable:
         # Nothing short of the whole problem reaches the goal (or the check gave up): let the planner decide.
-        added = frozenset(current) - kept
-        return frozenset(current), tuple(Restored(n, "", "reachability", ("goal",)) for n in sorted(added)), check
+        unchecked = frozenset(current) - kept
+        return frozenset(current), tuple(Restored(n, "", "reachability", ("goal",)) for n in sorted(unchecked)), check
+    classes = task.typing.problem.objects
     used = {name for name in check.plan_objects if name in task.problem.objects and name not in kept}
     used, check = _economize(task, kept, used, classes, rank, check, close, budget, deadline)
     step_of: dict[str, Step] = {}
@@ -379,9 +512,45 @@ def repair_selection(
         Restored(name, "", "reachability", step_of.get(name, ("goal",)))
         for name in sorted(used, key=lambda n: (rank.get(n, len(rank)), n))
     ]
-    closed, closure_reasons = close(kept | frozenset(used))
+    closed, closure_reasons = close(kept | frozenset(used), kept)
     reasons.extend(r for r in closure_reasons if r.name not in used and r.name not in kept)
     return closed, tuple(reasons), check
+
+
+class _Toward:
+    """The order in which the repair adds objects (see :func:`repair_selection`)."""
+
+    def __init__(self, task: PlanningTask, scores: Mapping[str, float]):
+        self.task = task
+        self.scores = scores
+        self.hub = hub_degree(task)
+        self.fans = fan_in(task.init_index)
+        self.classes = task.typing.problem.objects
+
+    def missing_classes(self, kept: Set[str]) -> list[str]:
+        """The best-ranked member (score, then hops from ``kept``) of every class ``kept`` has none of."""
+        present = {self.classes[name] for name in kept if name in self.classes}
+        distance = object_distances(self.task.init_index, kept, self.hub, REPAIR_MAX_FAN, self.fans)
+        best: dict[str, tuple[float, int, str]] = {}
+        far = len(self.classes) + 1
+        for name, cls in self.classes.items():
+            if cls in present or name in kept:
+                continue
+            key = (-self.scores.get(name, 0.0), distance.get(name, far), name)
+            if cls not in best or key < best[cls]:
+                best[cls] = key
+        return sorted(key[2] for key in best.values())
+
+    def nearest(self, current: Set[str], unreached: Set[str], count: int) -> list[str]:
+        """The ``count`` objects outside ``current`` nearest to ``unreached`` (objects of goal atoms not
+        reached yet) in the initial state, then best scored."""
+        distance = object_distances(self.task.init_index, unreached, self.hub, REPAIR_MAX_FAN, self.fans)
+        far = len(self.classes) + 1
+        return heapq.nsmallest(
+            count,
+            (name for name in self.classes if name not in current),
+            key=lambda name: (distance.get(name, far), -self.scores.get(name, 0.0), name),
+        )
 
 
 def _economize(
@@ -437,7 +606,7 @@ def _without(
     """``used`` without ``dropped`` (and without what its relaxed plan then leaves unused), if the goal
     stays relaxed-reachable."""
     trial = used - set(dropped)
-    closed, _ = close(kept | frozenset(trial))
+    closed, _ = close(kept | frozenset(trial), kept)
     attempt = relaxed_reachability(task, closed, budget, deadline)
     if not attempt.reachable:
         return used, None

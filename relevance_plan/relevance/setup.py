@@ -33,6 +33,7 @@ class ScoringOptions:
     seed: int = 0
     goal_filter: bool = True  # the first selection leaves out relevant objects no goal-directed action can use
     prefer_free: bool = True  # ... and, with a model, alternatives something stands on when a free one exists
+    economical: bool = True  # ... and, of many candidates for one role, only those a relaxed plan needs
 
     def __post_init__(self) -> None:
         if self.scorer is not None and self.scorer not in SCORERS:
@@ -57,12 +58,14 @@ class Scoring:
 
     def first_selection(self, narrow: bool = True) -> Selection:
         """The objects ``prune`` writes and ``plan`` tries first: thresholds and closure, and when
-        ``narrow`` (the relevance method) the goal filter and the set-aside of blocked alternatives
-        (a bet on the first attempt only: widening never sets aside, so it brings them back)."""
+        ``narrow`` (the relevance method) the goal filter, the set-aside of blocked alternatives and of
+        the alternatives no relaxed plan needs (a bet on the first attempt only: widening never sets
+        aside, so it brings them back)."""
         return self.prune(
             self.options.thresholds,
             goal_filter=self.options.goal_filter and narrow,
             prefer_free=self.options.prefer_free and narrow,
+            economical=self.options.economical and narrow,
         )
 
 

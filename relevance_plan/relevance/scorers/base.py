@@ -78,6 +78,8 @@ class ScoreResult:
     sufficient: bool = True
     insufficiency: str = ""
     unknown: tuple[str, ...] = ()  # elements whose class the model does not know
+    # one of many candidates for a role (fifty airplanes): a few may do, the first selection keeps those it needs
+    alternatives: frozenset[str] = frozenset()
     objective: str | None = None
     task_distribution: Mapping[str, float] = field(default_factory=dict)
     task_entropy: float | None = None

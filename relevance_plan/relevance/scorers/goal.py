@@ -15,8 +15,10 @@ hundred rooms), one or a few of them will do, and the likely ones are those
 near the goal's objects in the initial state: a candidate's role score halves
 with every hop beyond the first (``DISTANCE_DECAY``), and candidates the
 initial state does not connect to the goal at all count as ``FAR`` hops.  The
-first attempt then keeps the nearby candidates; the reachability check and
-widening bring the others back in this order when needed.
+first attempt then keeps, of the nearby candidates, those a relaxed plan
+needs (``ScoreResult.alternatives``; ``prune.prune_with_scores``); the
+reachability check and widening bring the others back in this order when
+needed.
 """
 
 from __future__ import annotations
@@ -50,31 +52,36 @@ def score_by_goal(task: PlanningTask, request: ScoreRequest) -> ScoreResult:
     distance = task.goal_distance
     scores: dict[str, float] = {}
     explanations: dict[str, str] = {}
+    alternatives: set[str] = set()
     for name, type_name in problem.objects.items():
         if name in goal_objects:
             scores[name], explanations[name] = 1.0, "named in the goal"
             continue
-        best, why = 0.0, "no role in reaching the goal"
+        best, why, populous = 0.0, "no role in reaching the goal", False
         for ancestor in domain.ancestors(type_name):
             depth = analysis.role_depth.get(ancestor)
             if depth is None:
                 continue
             value = ROLE_DECAY ** max(depth, 1)
             role = f"can serve as {ancestor} (role {depth} step(s) from the goal)"
-            if candidates.get(ancestor, 0) > POPULOUS:
+            many = candidates.get(ancestor, 0) > POPULOUS
+            if many:
                 hops = distance.get(name, FAR)
                 value *= DISTANCE_DECAY ** max(hops - 1, 0)
                 role += f", one of {candidates[ancestor]}, " + (
                     f"{hops} hop(s) from the goal's objects" if name in distance else "not linked to the goal's objects"
                 )
             if value > best:
-                best, why = value, role
+                best, why, populous = value, role, many
         if name in neighbours and NEIGHBOUR_SCORE > best:
-            best, why = NEIGHBOUR_SCORE, f"shares {neighbours[name]} with a goal object"
+            best, why, populous = NEIGHBOUR_SCORE, f"shares {neighbours[name]} with a goal object", False
         scores[name], explanations[name] = best, why
+        if populous:
+            alternatives.add(name)
     return ScoreResult(
         "goal",
         scores,
         element_class={name: problem.objects[name] for name in scores},
         explanations=explanations,
+        alternatives=frozenset(alternatives),
     )
