@@ -30,6 +30,7 @@ OTHER_VALUES = {
     "scorer": "goal",
     "goal_filter": False,
     "prefer_free": False,
+    "economical": False,
     "objective": "drink",
     "model_task": "hot",
     "human": "alice",

@@ -265,3 +265,31 @@ def test_plan_json_spells_every_status_one_way(tmp_path, coffee_domain_path):
     message = outputs["out of time"]["message"]
     assert message.startswith("planner: out-of-time (") and "Fast Downward" in message, message
     assert re.search(r"\(exit code -?\d+\)", message) is None
+
+
+def test_a_failed_first_attempt_costs_no_more_than_its_share(coffee_files):
+    # every pruned attempt fails: each may use only its share of the time left, the full problem the rest
+    from relevance_plan.planning.loop import run_attempts
+    from relevance_plan.planning.outcome import PlannerStatus, RunOutcome
+    from relevance_plan.relevance.scorers import PlanningTask
+    from relevance_plan.relevance.setup import ScoringOptions, score_problem
+
+    domain_path, problem_path = coffee_files
+    task = PlanningTask(*load_task(domain_path, problem_path))
+    selection = score_problem(task, ScoringOptions(), domain_path=domain_path).first_selection()
+    assert len(selection.kept) < len(task.problem.objects)
+    calls = []
+
+    def call_planner(objects, limit):
+        calls.append((objects is None, limit))
+        status = PlannerStatus.OUT_OF_TIME if objects is None else PlannerStatus.UNSOLVABLE
+        return RunOutcome(status, 12, (), None, 0.01, "fake")
+
+    options = PlanOptions(timeout=60, first_share=0.25)
+    attempts, _ = run_attempts(task, selection, call_planner, options, started=time.perf_counter())
+    assert len(attempts) >= 2 and calls[-1][0]  # widened until the full problem was planned
+    assert not calls[0][0] and calls[0][1] <= 60 * 0.25 + 0.01
+    for full, limit in calls:
+        if not full:
+            assert limit <= 60 * 0.25 + 0.01
+    assert calls[-1][1] > 60 * (1 - 0.25) - 1  # what is left for the full problem

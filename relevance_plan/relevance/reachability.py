@@ -47,6 +47,7 @@ REPAIR_MAX_FAN = 4.0  # repair candidates are ranked by hops that do not pass fr
 Args = tuple[str, ...]  # a condition's or an effect's arguments: variables (``?x``) and names
 Condition = tuple[str, Args]  # (predicate, args)
 Binding = dict[str, str]  # variable -> object
+_Typed = tuple[str, Args, tuple[str | None, ...]]  # a condition with its arguments' types (None: a name)
 Step = tuple[str, ...]  # a ground action: (name, *objects)
 
 
@@ -214,14 +215,23 @@ class _Exploration:
         self.of_type: dict[str, list[str]] = {}
         self.fits: dict[str, frozenset[str]] = {}
         self.schemas = _compiled_schemas(task)
-        # predicate -> (schema, the condition it matches, the schema's other conditions)
-        self.triggers: dict[str, list[tuple[_Schema, int, list[Condition]]]] = defaultdict(list)
+        # predicate -> (schema, the condition it matches, the schema's other conditions with their types)
+        self.triggers: dict[str, list[tuple[_Schema, int, list[_Typed]]]] = defaultdict(list)
         for schema in self.schemas:
+            type_of = dict(zip(schema.parameters, schema.types))
+            typed = [
+                (predicate, args, tuple(type_of.get(a) if a[0] == "?" else None for a in args))
+                for predicate, args in schema.pre
+            ]
             for i, (predicate, _) in enumerate(schema.pre):
-                self.triggers[predicate].append((schema, i, list(schema.pre[:i] + schema.pre[i + 1 :])))
+                self.triggers[predicate].append((schema, i, typed[:i] + typed[i + 1 :]))
         self.variable_fits: dict[int, dict[str, frozenset[str]]] = {}
-        # (predicate, position, value) -> facts; (predicate,) -> facts
-        self.processed: dict[tuple[str | int, ...], list[GroundAtom]] = defaultdict(list)
+        # Processed facts by (predicate, signature) and (predicate, position, value, signature), where
+        # the signature is the classes of the fact's objects: a condition on a truck's place looks only
+        # at the facts that place a truck, not at the hundred packages that may be there too.
+        self.processed: dict[tuple[str | int | tuple[str, ...], ...], list[GroundAtom]] = defaultdict(list)
+        self.signatures: dict[str, list[tuple[str, ...]]] = defaultdict(list)
+        self.compatible_cache: dict[tuple[str, tuple[str | None, ...]], tuple[int, list[tuple[str, ...]]]] = {}
         # applications that ranged over every kept object of some types: run again when those grow
         self.ranging: list[tuple[_Schema, Binding, frozenset[str]]] = []
         self.missing = set(self.goal)
@@ -291,12 +301,17 @@ class _Exploration:
         return fits
 
     def run(self) -> None:
+        processed, signatures, types_of = self.processed, self.signatures, self.types_of
         while self.queue and self.missing:
             fact = self.queue.popleft()
-            self.processed[(fact[0],)].append(fact)
+            predicate = fact[0]
+            signature = tuple(types_of.get(arg, "object") for arg in fact[1:])
+            if signature not in signatures[predicate]:
+                signatures[predicate].append(signature)
+            processed[(predicate, signature)].append(fact)
             for position, value in enumerate(fact[1:]):
-                self.processed[(fact[0], position, value)].append(fact)
-            for schema, i, rest in self.triggers.get(fact[0], ()):
+                processed[(predicate, position, value, signature)].append(fact)
+            for schema, i, rest in self.triggers.get(predicate, ()):
                 fits = self.fits_of(schema)
                 binding = _match(schema.pre[i][1], fact, {}, fits)
                 if binding is None:
@@ -304,6 +319,20 @@ class _Exploration:
                 # apply() adds facts but never processes them: the join's lists do not change under it
                 for found in self.join(rest, binding, fits):
                     self.apply(schema, found)
+
+    def compatible(self, predicate: str, types: tuple[str | None, ...]) -> list[tuple[str, ...]]:
+        """The signatures of processed ``predicate`` facts whose objects fit ``types`` (None: any)."""
+        seen = self.signatures.get(predicate, ())
+        cached = self.compatible_cache.get((predicate, types))
+        if cached is not None and cached[0] == len(seen):
+            return cached[1]
+        fitting = [
+            signature
+            for signature in seen
+            if all(t is None or t == "object" or self.domain.is_subtype(c, t) for c, t in zip(signature, types))
+        ]
+        self.compatible_cache[(predicate, types)] = (len(seen), fitting)
+        return fitting
 
     def apply(self, schema: _Schema, binding: Binding, again: bool = False) -> None:
         """Every step of ``schema`` that extends ``binding`` (whose values fit their types) adds its atoms."""
@@ -334,39 +363,42 @@ class _Exploration:
                         self.queue.append(fact)
                         self.missing.discard(fact)
 
-    def join(self, pre: list[Condition], binding: Binding, fits: Mapping[str, frozenset[str]]) -> Iterator[Binding]:
+    def join(self, pre: list[_Typed], binding: Binding, fits: Mapping[str, frozenset[str]]) -> Iterator[Binding]:
         if not pre:
             yield binding
             return
-        best, best_key = self.smallest(pre, binding)
-        predicate, args = pre[best]
+        best, buckets = self.smallest(pre, binding)
+        args = pre[best][1]
         rest = pre[:best] + pre[best + 1 :]
-        for fact in self.processed.get(best_key, ()):
-            self.work.spend()
-            new = _match(args, fact, binding, fits)
-            if new is not None:
-                yield from self.join(rest, new, fits)
+        for bucket in buckets:
+            for fact in bucket:
+                self.work.spend()
+                new = _match(args, fact, binding, fits)
+                if new is not None:
+                    yield from self.join(rest, new, fits)
 
-    def smallest(self, pre: list[Condition], binding: Binding) -> tuple[int, tuple[str | int, ...]]:
-        """The condition whose bound arguments leave the fewest processed facts, and that index key."""
-        best: int = 0
-        best_key: tuple[str | int, ...] = (pre[0][0],)
+    def smallest(self, pre: list[_Typed], binding: Binding) -> tuple[int, list[list[GroundAtom]]]:
+        """The condition whose bound arguments leave the fewest processed facts, and those facts."""
+        processed = self.processed
+        best = 0
+        best_buckets: list[list[GroundAtom]] = []
         best_size: int | None = None
-        for j, (predicate, args) in enumerate(pre):
-            key: tuple[str | int, ...] = (predicate,)
-            size = len(self.processed.get(key, ()))
+        for j, (predicate, args, types) in enumerate(pre):
+            signatures = self.compatible(predicate, types)
+            buckets = [processed.get((predicate, signature), []) for signature in signatures]
+            size = sum(len(bucket) for bucket in buckets)
             for position, arg in enumerate(args):
                 value = binding.get(arg, arg) if arg[0] == "?" else arg
-                if value[0] != "?":
-                    candidate = (predicate, position, value)
-                    candidate_size = len(self.processed.get(candidate, ()))
-                    if candidate_size < size:
-                        key, size = candidate, candidate_size
+                if value[0] != "?" and size:
+                    narrower = [processed.get((predicate, position, value, signature), []) for signature in signatures]
+                    narrower_size = sum(len(bucket) for bucket in narrower)
+                    if narrower_size < size:
+                        buckets, size = narrower, narrower_size
             if best_size is None or size < best_size:
-                best, best_key, best_size = j, key, size
-                if size == 0:
+                best, best_buckets, best_size = j, buckets, size
+                if size == 0 or len(pre) == 1:
                     break
-        return best, best_key
+        return best, best_buckets
 
 
 def _match(args: Args, fact: GroundAtom, binding: Binding, fits: Mapping[str, frozenset[str]]) -> Binding | None:
