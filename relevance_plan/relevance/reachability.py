@@ -217,12 +217,14 @@ class _Exploration:
         self.schemas = _compiled_schemas(task)
         # predicate -> (schema, the condition it matches, the schema's other conditions with their types)
         self.triggers: dict[str, list[tuple[_Schema, int, list[_Typed]]]] = defaultdict(list)
+        self.conditions: dict[int, list[_Typed]] = {}
         for schema in self.schemas:
             type_of = dict(zip(schema.parameters, schema.types))
             typed = [
                 (predicate, args, tuple(type_of.get(a) if a[0] == "?" else None for a in args))
                 for predicate, args in schema.pre
             ]
+            self.conditions[id(schema)] = typed
             for i, (predicate, _) in enumerate(schema.pre):
                 self.triggers[predicate].append((schema, i, typed[:i] + typed[i + 1 :]))
         self.variable_fits: dict[int, dict[str, frozenset[str]]] = {}
@@ -236,23 +238,47 @@ class _Exploration:
         self.ranging: list[tuple[_Schema, Binding, frozenset[str]]] = []
         self.missing = set(self.goal)
         nullary = {atom for atom in self.init | self.timed if len(atom) == 1}
-        self._reach_initial(self.allowed, nullary)
+        # The initial static facts (a map, the floors above each other) are indexed at once and trigger
+        # nothing: every dynamic fact is processed after them, and its joins find them.  Only the
+        # schemas whose conditions are all static need a join of their own.
+        static = static_predicates(domain) - {literal.atom[0] for literal in problem.timed_literals if literal.atom}
+        self._reach_initial(self.allowed, nullary, static)
         for schema in self.schemas:
             if not schema.pre:
                 self.apply(schema, {})
+            elif all(predicate in static for predicate, _ in schema.pre):
+                for binding in self.join(self.conditions[id(schema)], {}, self.fits_of(schema)):
+                    self.apply(schema, binding)
 
-    def _reach_initial(self, names: Set[str], also: Set[GroundAtom] = frozenset()) -> None:
-        """The initial (and timed) facts over allowed objects that mention one of ``names``."""
+    def _reach_initial(
+        self, names: Set[str], also: Set[GroundAtom] = frozenset(), static: Set[str] = frozenset()
+    ) -> None:
+        """The initial (and timed) facts over allowed objects that mention one of ``names``; those of a
+        ``static`` predicate are processed at once (they trigger nothing), the others queued."""
         found = set(also)
+        allowed = self.allowed
         for name in names:
             for atom in self.by_object.get(name, ()):
-                if (atom in self.init or atom in self.timed) and all(arg in self.allowed for arg in atom[1:]):
+                if allowed.issuperset(atom[1:]) and (atom in self.init or atom in self.timed):
                     found.add(atom)
         # sorted: the same objects give the same relaxed plan whatever order the sets were built in
         for atom in sorted(found - self.facts.keys()):
             self.facts[atom] = None
-            self.queue.append(atom)
             self.missing.discard(atom)
+            if atom[0] in static:
+                self._index(atom)
+            else:
+                self.queue.append(atom)
+
+    def _index(self, fact: GroundAtom) -> None:
+        """Make ``fact`` visible to the joins."""
+        predicate = fact[0]
+        signature = tuple(self.types_of.get(arg, "object") for arg in fact[1:])
+        if signature not in self.signatures[predicate]:
+            self.signatures[predicate].append(signature)
+        self.processed[(predicate, signature)].append(fact)
+        for position, value in enumerate(fact[1:]):
+            self.processed[(predicate, position, value, signature)].append(fact)
 
     def add(self, names: Set[str]) -> None:
         """Bring ``names`` into the kept set; :meth:`run` then explores what they make reachable."""
@@ -301,17 +327,10 @@ class _Exploration:
         return fits
 
     def run(self) -> None:
-        processed, signatures, types_of = self.processed, self.signatures, self.types_of
         while self.queue and self.missing:
             fact = self.queue.popleft()
-            predicate = fact[0]
-            signature = tuple(types_of.get(arg, "object") for arg in fact[1:])
-            if signature not in signatures[predicate]:
-                signatures[predicate].append(signature)
-            processed[(predicate, signature)].append(fact)
-            for position, value in enumerate(fact[1:]):
-                processed[(predicate, position, value, signature)].append(fact)
-            for schema, i, rest in self.triggers.get(predicate, ()):
+            self._index(fact)
+            for schema, i, rest in self.triggers.get(fact[0], ()):
                 fits = self.fits_of(schema)
                 binding = _match(schema.pre[i][1], fact, {}, fits)
                 if binding is None:
