@@ -25,6 +25,9 @@ SIGTERM, and (by the guard) when the tool itself is killed.  How much
 * Elsewhere (macOS): the guard's process group.
 
 VAL's ``Validate`` is the one other program the tool starts (:func:`run_val`).
+
+The launcher's head start imports this module before it starts Fast
+Downward, so it stays light: no dataclasses (their import costs ~10 ms).
 """
 
 from __future__ import annotations
@@ -42,9 +45,8 @@ import sys
 import tempfile
 import threading
 import time
-from dataclasses import dataclass
 from pathlib import Path
-from typing import BinaryIO
+from typing import BinaryIO, NamedTuple
 
 from relevance_plan import errors
 from relevance_plan.planning import guard
@@ -61,8 +63,7 @@ _LOW_SPACE_BYTES = 64 * 1024
 _NO_SPACE_MARKERS = ("No space left on device", "[Errno 28]", "ENOSPC")
 
 
-@dataclass(frozen=True)
-class ProcessRun:
+class ProcessRun(NamedTuple):
     wait_status: int
     exit_code: int  # -N: killed by signal N (or a program that passed its child's death on as exit -N)
     cpu_time: float
@@ -77,8 +78,7 @@ class ProcessRun:
         return self.watchdog_fired and os.WIFSIGNALED(self.wait_status)
 
 
-@dataclass(frozen=True)
-class _Run:
+class _Run(NamedTuple):
     """A run going on: the guard's pid (= its process group and session) and its cgroup, if any."""
 
     pgid: int
@@ -436,17 +436,19 @@ def run_process_group(
     return started.finish(deadline)
 
 
-@dataclass
 class StartedGroup:
     """A run started by :func:`start_process_group`; :meth:`finish` waits for it (or :meth:`stop` ends it)."""
 
-    process: subprocess.Popen
-    run: _Run
-    workdir: Path
-    log_file: BinaryIO
-    guard_write: int
-    started: float  # time.monotonic() at the start
-    _closed: bool = False
+    def __init__(
+        self, process: subprocess.Popen, run: _Run, workdir: Path, log_file: BinaryIO, guard_write: int, started: float
+    ):
+        self.process = process
+        self.run = run
+        self.workdir = workdir
+        self.log_file = log_file
+        self.guard_write = guard_write
+        self.started = started  # time.monotonic() at the start
+        self._closed = False
 
     def finish(self, deadline: float | None) -> ProcessRun:
         """Wait for the run, the watchdog firing ``deadline`` seconds after its start; reap it."""
