@@ -325,12 +325,17 @@ def _kill_group(pgid: int) -> None:
         pass
 
 
-def _stop(run: _Run) -> None:
-    """Kill every process of the run: its cgroup, the guard's descendants, the guard's group."""
+def _stop(run: _Run, guard_exited: bool = False) -> None:
+    """Kill every process of the run: its cgroup, the guard's descendants, the guard's group.
+
+    Once the guard has exited it has no descendants (its orphans went to init), so ``guard_exited``
+    spares the walk through /proc that looks for them.
+    """
     if run.cgroup is not None:
         _kill_cgroup(run.cgroup)
-    # The guard, our unreaped child, anchors its descendants: kill them before it.
-    guard.kill_descendants(run.pgid)
+    if not guard_exited:
+        # The guard, our unreaped child, anchors its descendants: kill them before it.
+        guard.kill_descendants(run.pgid)
     _kill_group(run.pgid)
 
 
@@ -360,11 +365,13 @@ def _wait_for_run(run: _Run, deadline: float | None) -> tuple[int, float, float,
         timer = threading.Timer(deadline, watchdog)
         timer.daemon = True
         timer.start()
+    exited = False
     try:
         if hasattr(os, "waitid"):
             os.waitid(os.P_PID, run.pgid, os.WEXITED | os.WNOWAIT)
         else:  # macOS: no waitid; reap first and accept a tiny pid-reuse window
             _, status, usage = os.wait4(run.pgid, 0)
+        exited = True
     finally:
         # Runs on KeyboardInterrupt too: the planner lives in its own session,
         # so the terminal's Ctrl-C never reached it.
@@ -372,7 +379,7 @@ def _wait_for_run(run: _Run, deadline: float | None) -> tuple[int, float, float,
             timer.cancel()
             timer.join()  # a kill in flight must land before the pid is freed
         # Killing only the guard would leave a running translator orphaned.
-        _stop(run)
+        _stop(run, guard_exited=exited)
         if hasattr(os, "waitid"):
             _await_run_death(run)
             _, status, usage = os.wait4(run.pgid, 0)
