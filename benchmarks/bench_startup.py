@@ -20,8 +20,8 @@ compiled first (``compileall``), as an installed wheel has it: where
 ``PYTHONDONTWRITEBYTECODE`` is set, an uncompiled checkout would recompile
 every module on every run (~0.1 s that no installed copy pays).
 
-Takes about 2 minutes on 2 cores with the defaults.  Run it alone: it
-measures wall time.
+Takes under a minute on 2 cores with the defaults (40 s with
+``--repeat 5``).  Run it alone: it measures wall time.
 
     python benchmarks/bench_startup.py
     python benchmarks/bench_startup.py --repeat 5 --worlds gripper miconic
