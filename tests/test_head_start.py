@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
 import time
@@ -21,6 +22,11 @@ GRIPPER_PROBLEM = """(define (problem two-balls) (:domain gripper)
   (:goal (and (at ball1 roomb) (at ball2 roomb))))
 """
 HEAVY = ("click", "yaml", "unified_planning", "dask", "numpy", "matplotlib")
+# What `plan` itself need not import: the heavy packages, and our modules for other commands.
+NOT_FOR_PLAN = (
+    "yaml", "unified_planning", "dask", "numpy", "matplotlib", "importlib.metadata",
+    "relevance_plan.cli.batch", "relevance_plan.cli.watch",
+)  # fmt: skip
 
 
 @pytest.fixture
@@ -48,6 +54,28 @@ def test_the_fast_path_imports_nothing_heavy(gripper_problem):
         m for m in ours if m.startswith(("relevance_plan.pddl", "relevance_plan.relevance", "relevance_plan.cli"))
     }
     assert "relevance_plan.planning.loop" not in ours
+    assert "dataclasses" not in modules  # its import (inspect, ast, ...) alone would delay the driver ~10 ms
+
+
+@pytest.mark.planner
+def test_plan_imports_only_what_it_uses_and_leaves_no_temporary_folder(gripper_problem, tmp_path):
+    temporary = tmp_path / "tmp"
+    temporary.mkdir()
+    done = subprocess.run(
+        [sys.executable, "-X", "importtime", *TOOL[1:], "plan", GRIPPER, gripper_problem, "--method", "pure", "-q"],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        cwd=tmp_path,
+        env={**os.environ, "TMPDIR": str(temporary)},
+    )
+    assert done.returncode == 0, done.stderr
+    # -X importtime: one line on stderr per module imported, "import time: self | cumulative | name"
+    modules = {line.rsplit("|", 1)[1].strip() for line in done.stderr.splitlines() if line.startswith("import time:")}
+    assert "relevance_plan.planning.loop" in modules  # the lines were read
+    assert not [m for m in modules if m.startswith(NOT_FOR_PLAN)]
+    # plan ends without the interpreter's teardown: its folders are gone all the same
+    assert (tmp_path / "sas_plan").is_file() and not list(temporary.iterdir())
 
 
 @pytest.mark.parametrize(

@@ -6,6 +6,7 @@ the only part of the package that exits.
 from __future__ import annotations
 
 import functools
+import importlib
 import json
 import sys
 from pathlib import Path
@@ -13,7 +14,6 @@ from pathlib import Path
 import click
 
 from relevance_plan import __version__
-from relevance_plan.cli.batch import COMMANDS as BATCH_COMMANDS
 from relevance_plan.cli.common import (
     fail,
     handle_errors,
@@ -26,7 +26,6 @@ from relevance_plan.cli.common import (
     write_plan_files,
 )
 from relevance_plan.cli.exits import ToolGroup
-from relevance_plan.cli.watch import watch
 from relevance_plan.errors import UnsupportedFeatureError, UsageError
 from relevance_plan.exitcodes import EXIT_CODE_DESCRIPTIONS, ExitCode, exit_code_for_status
 from relevance_plan.planning.loop import PlanResult, PlanStatus, plan_task
@@ -67,7 +66,41 @@ def _prune_json(result: Selection) -> dict:
     }
 
 
-@click.group(cls=ToolGroup, context_settings={"help_option_names": ["-h", "--help"]})
+# Commands in modules of their own, imported when one of them is asked for: ``plan`` does without them.
+LAZY_COMMANDS = {
+    "compare": "relevance_plan.cli.batch",
+    "report": "relevance_plan.cli.batch",
+    "sweep": "relevance_plan.cli.batch",
+    "demo": "relevance_plan.cli.batch",
+    "watch": "relevance_plan.cli.watch",
+}
+
+
+class _Commands(ToolGroup):
+    """The tool's command group; the commands of ``LAZY_COMMANDS`` join it on first use."""
+
+    def list_commands(self, ctx: click.Context) -> list[str]:
+        return sorted({*self.commands, *LAZY_COMMANDS})
+
+    def get_command(self, ctx: click.Context, cmd_name: str) -> click.Command | None:
+        if cmd_name not in self.commands and cmd_name in LAZY_COMMANDS:
+            from relevance_plan.cli.paths import own_command_path_checks
+
+            command = getattr(importlib.import_module(LAZY_COMMANDS[cmd_name]), cmd_name)
+            own_command_path_checks(command)
+            self.add_command(command)
+        return super().get_command(ctx, cmd_name)
+
+    def resolve_command(self, ctx: click.Context, args: list[str]):
+        try:
+            return super().resolve_command(ctx, args)
+        except click.exceptions.NoSuchCommand:
+            for name in LAZY_COMMANDS:  # click suggests a command from those it holds
+                self.get_command(ctx, name)
+            return super().resolve_command(ctx, args)
+
+
+@click.group(cls=_Commands, context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, prog_name="relevance-plan")
 def main():
     """Relevance-based pruning for PDDL planning: score, prune, plan, validate."""
@@ -452,10 +485,6 @@ def exit_codes():
     for code in ExitCode:
         click.echo(f"{int(code):>4}  {code.name:<18} {EXIT_CODE_DESCRIPTIONS[code]}")
 
-
-for _command in BATCH_COMMANDS:
-    main.add_command(_command)
-main.add_command(watch)
 
 from relevance_plan.cli.paths import own_path_checks  # noqa: E402
 

@@ -82,13 +82,18 @@ def _checked(command: click.Command):
 def own_path_checks(group: click.Group) -> None:
     """Take the path checks of every command of ``group`` away from click."""
     for command in group.commands.values():
-        changed = False
-        for param in command.params:
-            if isinstance(param.type, click.Path) and not isinstance(param.type, _UncheckedPath):
-                original = param.type
-                param.type = _UncheckedPath(
-                    file_okay=original.file_okay, dir_okay=original.dir_okay, allow_dash=original.allow_dash
-                )
-                changed = True
-        if changed and command.callback is not None:
-            command.callback = _checked(command)
+        own_command_path_checks(command)
+
+
+def own_command_path_checks(command: click.Command) -> None:
+    """Take the path checks of ``command`` away from click (once: a second call changes nothing)."""
+    changed = False
+    for param in command.params:
+        if isinstance(param.type, click.Path) and not isinstance(param.type, _UncheckedPath):
+            original = param.type
+            param.type = _UncheckedPath(
+                file_okay=original.file_okay, dir_okay=original.dir_okay, allow_dash=original.allow_dash
+            )
+            changed = True
+    if changed and command.callback is not None:
+        command.callback = _checked(command)

@@ -10,7 +10,6 @@ any exit code but 0 is a crash.
 
 from __future__ import annotations
 
-import hashlib
 import re
 import shlex
 import shutil
@@ -114,6 +113,8 @@ class CommandPlanner:
         return found
 
     def version(self) -> str:
+        import hashlib  # only batch keys need it
+
         try:
             digest = hashlib.sha256(Path(self.executable()).read_bytes()).hexdigest()[:12]
         except OSError:

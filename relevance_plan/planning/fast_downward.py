@@ -15,9 +15,7 @@ watchdog backs them up with wall-clock time.
 from __future__ import annotations
 
 import ast
-import difflib
 import functools
-import hashlib
 import os
 import re
 import signal
@@ -171,6 +169,8 @@ def check_config(config: str) -> None:
     known = driver_aliases()
     if known is None or config in known:
         return
+    import difflib  # only for this message
+
     close = difflib.get_close_matches(config, [*PLANNER_CONFIGS, *sorted(known)], n=1)
     hint = f" (did you mean '{close[0]}'?)" if close else ""
     raise errors.UsageError(
@@ -452,6 +452,8 @@ class FastDownwardPlanner:
         version = fast_downward_version()
         override = os.environ.get(FAST_DOWNWARD_ENV)
         if override:
+            import hashlib  # only batch keys need it
+
             try:
                 digest = hashlib.sha256(Path(override).expanduser().read_bytes()).hexdigest()
             except OSError:

@@ -23,14 +23,14 @@ The guard exits as the planner did (a death by signal N as 256 - N, which
 ``process`` reads back as -N, as it does for the driver's own codes).
 
 The module is imported too: :func:`kill_descendants` is the one sweep, used
-by the guard and by the tool.  It needs the standard library only.
+by the guard and by the tool.  It needs the standard library only, and
+imports little: the guard's start-up delays the planner's (``posix_spawn``
+rather than ``subprocess``, ``shutil`` only to remove a scratch directory).
 """
 
 import os
 import select
-import shutil
 import signal
-import subprocess
 import sys
 import threading
 import time
@@ -192,6 +192,8 @@ def _kill_cgroup_members(cgroup: str) -> None:
 
 def _remove_scratch(workdir: str) -> None:
     if os.path.basename(workdir).startswith(SCRATCH_PREFIX):
+        import shutil
+
         shutil.rmtree(workdir, ignore_errors=True)
 
 
@@ -253,18 +255,29 @@ def _shield() -> None:
         signal.signal(getattr(signal, name), lambda signum, frame: None)
 
 
+def _run(command: list[str], fd: int) -> int:
+    """Run ``command`` to its end; its exit code (-N: killed by signal N)."""
+    os.set_inheritable(fd, False)  # the planner must not hold the tool's pipe
+    try:
+        # as subprocess would: the signals Python ignores are the default again in the planner
+        pid = os.posix_spawnp(command[0], command, os.environ, setsigdef=(signal.SIGPIPE, signal.SIGXFSZ))
+    except OSError as error:
+        print(f"guard: cannot start {command[0]}: {error.strerror or error}", file=sys.stderr)
+        os._exit(127)
+    try:
+        _, status = os.waitpid(pid, 0)
+    except ChildProcessError:  # reaped by the watcher, which ends the guard itself
+        return 0
+    return os.waitstatus_to_exitcode(status)
+
+
 def main() -> None:
     fd, cgroup, command = int(sys.argv[1]), sys.argv[2], sys.argv[3:]
     join_cgroup(cgroup)
     subreaper = _become_subreaper()
     _shield()
     threading.Thread(target=_watch, args=(fd, subreaper, cgroup), daemon=True).start()
-    try:
-        process = subprocess.Popen(command, close_fds=True)
-    except OSError as error:
-        print(f"guard: cannot start {command[0]}: {error.strerror or error}", file=sys.stderr)
-        os._exit(127)
-    code = process.wait()
+    code = _run(command, fd)
     with _EXIT:
         if subreaper:
             kill_descendants(os.getpid(), reap=True)  # whatever the planner left behind

@@ -14,8 +14,9 @@ same, and otherwise the run is stopped and its folder removed.  Nothing is
 decided here: every argument is checked again by the CLI, and a head start
 that does not match is simply not used.
 
-Standard library only (besides ``fd_command`` and ``process``): this runs
-before anything else is imported.
+Standard library only (besides ``fd_command`` and ``process``), and no
+dataclasses (their import costs ~10 ms): this runs before anything else is
+imported, and whatever it imports delays the driver.
 """
 
 from __future__ import annotations
@@ -29,7 +30,6 @@ import sys
 import tempfile
 import threading
 from collections.abc import Iterator, Sequence
-from dataclasses import dataclass, field
 from pathlib import Path
 
 from relevance_plan.planning import fd_command
@@ -54,17 +54,17 @@ _NOT_CLASSICAL = re.compile(r":durative-action|:process\b|:event\b|:numeric-flue
 _ONLY_TOTAL_COST = re.compile(r"\(:functions\s*\(total-cost\)\s*(-\s*number\s*)?\)")
 
 
-@dataclass(eq=False)
 class HeadStart:
     """A driver run started early on the user's files, in its own scratch folder."""
 
-    key: RunKey
-    group: StartedGroup
-    workdir: Path
-    time_limit: float
-    claimed: bool = False  # taken over or discarded: nobody else may have it
-    used: bool = False  # taken over by the full-problem run
-    _lock: threading.Lock = field(default_factory=threading.Lock, repr=False)
+    def __init__(self, key: RunKey, group: StartedGroup, workdir: Path, time_limit: float):
+        self.key = key
+        self.group = group
+        self.workdir = workdir
+        self.time_limit = time_limit
+        self.claimed = False  # taken over or discarded: nobody else may have it
+        self.used = False  # taken over by the full-problem run
+        self._lock = threading.Lock()
 
     def take_over(self, key: RunKey) -> bool:
         """Whether the caller, about to start the run ``key``, takes this one instead (once)."""

@@ -499,6 +499,10 @@ def plan_task(
     if overran is not None:
         return overran
 
+    if not options.validators or "builtin" in options.validators:
+        # the plan is checked once the planner has ended: import the checker now, while it runs
+        import relevance_plan.pddl.simulator  # noqa: F401
+
     # the launcher's head start (planning.head_start): the first call on the full problem may take it
     # over; offered() stops it after that call, and the end of the run in every case
     early = head_start.take()

@@ -30,7 +30,6 @@ names, so its fixed-size path buffers never see a long path.
 
 from __future__ import annotations
 
-import importlib.metadata
 import importlib.util
 import math
 import os
@@ -160,6 +159,8 @@ class LpgPlanner:
         f.refuse_unsupported(self.name, self.features, domain, problem)
 
     def version(self) -> str:
+        import importlib.metadata  # slow to import; only batch keys need it
+
         try:
             return f"LPG-td 1.4 ({PACKAGE} {importlib.metadata.version(PACKAGE)})"
         except importlib.metadata.PackageNotFoundError:

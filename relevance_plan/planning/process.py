@@ -25,6 +25,9 @@ SIGTERM, and (by the guard) when the tool itself is killed.  How much
 * Elsewhere (macOS): the guard's process group.
 
 VAL's ``Validate`` is the one other program the tool starts (:func:`run_val`).
+
+The launcher's head start imports this module before it starts Fast
+Downward, so it stays light: no dataclasses (their import costs ~10 ms).
 """
 
 from __future__ import annotations
@@ -42,9 +45,8 @@ import sys
 import tempfile
 import threading
 import time
-from dataclasses import dataclass
 from pathlib import Path
-from typing import BinaryIO
+from typing import BinaryIO, NamedTuple
 
 from relevance_plan import errors
 from relevance_plan.planning import guard
@@ -61,8 +63,7 @@ _LOW_SPACE_BYTES = 64 * 1024
 _NO_SPACE_MARKERS = ("No space left on device", "[Errno 28]", "ENOSPC")
 
 
-@dataclass(frozen=True)
-class ProcessRun:
+class ProcessRun(NamedTuple):
     wait_status: int
     exit_code: int  # -N: killed by signal N (or a program that passed its child's death on as exit -N)
     cpu_time: float
@@ -77,8 +78,7 @@ class ProcessRun:
         return self.watchdog_fired and os.WIFSIGNALED(self.wait_status)
 
 
-@dataclass(frozen=True)
-class _Run:
+class _Run(NamedTuple):
     """A run going on: the guard's pid (= its process group and session) and its cgroup, if any."""
 
     pgid: int
@@ -325,12 +325,17 @@ def _kill_group(pgid: int) -> None:
         pass
 
 
-def _stop(run: _Run) -> None:
-    """Kill every process of the run: its cgroup, the guard's descendants, the guard's group."""
+def _stop(run: _Run, guard_exited: bool = False) -> None:
+    """Kill every process of the run: its cgroup, the guard's descendants, the guard's group.
+
+    Once the guard has exited it has no descendants (its orphans went to init), so ``guard_exited``
+    spares the walk through /proc that looks for them.
+    """
     if run.cgroup is not None:
         _kill_cgroup(run.cgroup)
-    # The guard, our unreaped child, anchors its descendants: kill them before it.
-    guard.kill_descendants(run.pgid)
+    if not guard_exited:
+        # The guard, our unreaped child, anchors its descendants: kill them before it.
+        guard.kill_descendants(run.pgid)
     _kill_group(run.pgid)
 
 
@@ -360,11 +365,13 @@ def _wait_for_run(run: _Run, deadline: float | None) -> tuple[int, float, float,
         timer = threading.Timer(deadline, watchdog)
         timer.daemon = True
         timer.start()
+    exited = False
     try:
         if hasattr(os, "waitid"):
             os.waitid(os.P_PID, run.pgid, os.WEXITED | os.WNOWAIT)
         else:  # macOS: no waitid; reap first and accept a tiny pid-reuse window
             _, status, usage = os.wait4(run.pgid, 0)
+        exited = True
     finally:
         # Runs on KeyboardInterrupt too: the planner lives in its own session,
         # so the terminal's Ctrl-C never reached it.
@@ -372,7 +379,7 @@ def _wait_for_run(run: _Run, deadline: float | None) -> tuple[int, float, float,
             timer.cancel()
             timer.join()  # a kill in flight must land before the pid is freed
         # Killing only the guard would leave a running translator orphaned.
-        _stop(run)
+        _stop(run, guard_exited=exited)
         if hasattr(os, "waitid"):
             _await_run_death(run)
             _, status, usage = os.wait4(run.pgid, 0)
@@ -436,17 +443,19 @@ def run_process_group(
     return started.finish(deadline)
 
 
-@dataclass
 class StartedGroup:
     """A run started by :func:`start_process_group`; :meth:`finish` waits for it (or :meth:`stop` ends it)."""
 
-    process: subprocess.Popen
-    run: _Run
-    workdir: Path
-    log_file: BinaryIO
-    guard_write: int
-    started: float  # time.monotonic() at the start
-    _closed: bool = False
+    def __init__(
+        self, process: subprocess.Popen, run: _Run, workdir: Path, log_file: BinaryIO, guard_write: int, started: float
+    ):
+        self.process = process
+        self.run = run
+        self.workdir = workdir
+        self.log_file = log_file
+        self.guard_write = guard_write
+        self.started = started  # time.monotonic() at the start
+        self._closed = False
 
     def finish(self, deadline: float | None) -> ProcessRun:
         """Wait for the run, the watchdog firing ``deadline`` seconds after its start; reap it."""

@@ -14,14 +14,15 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from types import MappingProxyType
-from typing import Any, NoReturn
-
-import yaml
+from typing import TYPE_CHECKING, Any, NoReturn
 
 from relevance_plan.data import DOMAINS_DIR as REPOSITORY_DOMAINS
 from relevance_plan.errors import ModelError, UsageError, printable
 from relevance_plan.pddl.model import Domain
 from relevance_plan.relevance.scene import PLACEMENT_CONDITIONS, ScenePredicates
+
+if TYPE_CHECKING:
+    import yaml
 
 SCHEMA_VERSION = 1
 
@@ -38,32 +39,41 @@ class _LineDict(dict[str, Any]):
 MAX_YAML_NESTING = 32
 
 
-class _Loader(yaml.SafeLoader):
-    """SafeLoader without aliases and with a nesting limit.
+@functools.cache
+def _yaml_loader() -> type[yaml.SafeLoader]:
+    """The loader of knowledge models, made on first use: importing yaml costs ~15 ms that
+    commands which read no model (``plan --method pure``) do not pay."""
+    import yaml
 
-    An alias (``*name``) lets a 1.5 KB file expand into gigabytes (the
-    "billion laughs"); a model never needs one, so any alias is refused.
-    """
+    class _Loader(yaml.SafeLoader):
+        """SafeLoader without aliases and with a nesting limit.
 
-    _depth = 0
+        An alias (``*name``) lets a 1.5 KB file expand into gigabytes (the
+        "billion laughs"); a model never needs one, so any alias is refused.
+        """
 
-    def compose_node(self, parent: yaml.Node | None, index: int) -> yaml.Node | None:
-        if self.check_event(yaml.AliasEvent):
-            event = self.peek_event()  # type: ignore[no-untyped-call]
-            raise ModelError(
-                "YAML aliases ('*name') are not allowed in a knowledge model", line=event.start_mark.line + 1
-            )
-        self._depth += 1
-        try:
-            if self._depth > MAX_YAML_NESTING:
-                mark = self.peek_event().start_mark  # type: ignore[no-untyped-call]
-                raise ModelError(f"YAML nested more than {MAX_YAML_NESTING} levels deep", line=mark.line + 1)
-            return super().compose_node(parent, index)
-        finally:
-            self._depth -= 1
+        _depth = 0
+
+        def compose_node(self, parent: yaml.Node | None, index: int) -> yaml.Node | None:
+            if self.check_event(yaml.AliasEvent):
+                event = self.peek_event()  # type: ignore[no-untyped-call]
+                raise ModelError(
+                    "YAML aliases ('*name') are not allowed in a knowledge model", line=event.start_mark.line + 1
+                )
+            self._depth += 1
+            try:
+                if self._depth > MAX_YAML_NESTING:
+                    mark = self.peek_event().start_mark  # type: ignore[no-untyped-call]
+                    raise ModelError(f"YAML nested more than {MAX_YAML_NESTING} levels deep", line=mark.line + 1)
+                return super().compose_node(parent, index)
+            finally:
+                self._depth -= 1
+
+    _Loader.add_constructor(yaml.resolver.BaseResolver.DEFAULT_MAPPING_TAG, _construct_mapping)
+    return _Loader
 
 
-def _construct_mapping(loader: _Loader, node: yaml.MappingNode) -> _LineDict:
+def _construct_mapping(loader: yaml.SafeLoader, node: yaml.MappingNode) -> _LineDict:
     mapping = _LineDict()
     mapping.lines = {}
     mapping.line = node.start_mark.line + 1
@@ -77,9 +87,6 @@ def _construct_mapping(loader: _Loader, node: yaml.MappingNode) -> _LineDict:
         mapping[key] = loader.construct_object(value_node, deep=True)
         mapping.lines[key] = key_node.start_mark.line + 1
     return mapping
-
-
-_Loader.add_constructor(yaml.resolver.BaseResolver.DEFAULT_MAPPING_TAG, _construct_mapping)
 
 
 @dataclass(frozen=True)
@@ -267,8 +274,10 @@ def _finite_number(value: Any) -> bool:
 
 
 def _load_yaml(text: str, path: str) -> Any:
+    import yaml
+
     try:
-        return yaml.load(text, Loader=_Loader)  # noqa: S506 - a SafeLoader subclass
+        return yaml.load(text, Loader=_yaml_loader())  # noqa: S506 - a SafeLoader subclass
     except ModelError as error:
         raise ModelError(error.message, path=path, line=error.line) from None
     except yaml.YAMLError as error:

@@ -7,13 +7,14 @@ is repeatable.
 
 from __future__ import annotations
 
-import hashlib
 import random as _random
 
 from relevance_plan.relevance.scorers.base import PlanningTask, ScoreRequest, ScoreResult
 
 
 def _rng(seed: int, problem_name: str) -> _random.Random:
+    import hashlib  # here: ~4 ms that every other command would pay at import
+
     digest = hashlib.sha256(f"{seed}:{problem_name}".encode()).digest()
     return _random.Random(int.from_bytes(digest[:8], "big"))
 
