@@ -252,6 +252,14 @@ def _speed_summary(rows: list) -> int:
     gmean = math.exp(statistics.fmean(math.log(r) for r in ratios)) if ratios else 0.0
     slow = [(p, pure, rel) for p, pure, rel in rows if rel > pure * 1.25 + 0.5]
     print(f"\n{len(rows)} problems; geometric mean pure/relevance {gmean:.2f} (target >= 0.95)")
+    longer = [pure / rel for _, pure, rel in rows if pure >= 1.0 and rel not in (None, math.inf)]
+    if longer:
+        print(
+            f"where pure takes >= 1 s: {len(longer)} problems, geometric mean"
+            f" {math.exp(statistics.fmean(math.log(r) for r in longer)):.2f}"
+        )
+    extra = sorted(rel - pure for _, pure, rel in rows if rel not in (None, math.inf))
+    print(f"median extra time of relevance over pure: {statistics.median(extra):+.2f} s")
     print(f"slower than pure x 1.25 + 0.5 s: {len(slow)} (target 0)")
     for problem, pure, rel in slow:
         print(f"  {problem}: pure {pure:.2f} s, relevance {rel:.2f} s")
