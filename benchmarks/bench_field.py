@@ -196,17 +196,24 @@ def speed(roots: list[str], per_folder: int, timeout: float, in_process: bool) -
                 if pure_code != 0:
                     continue  # the benchmark compares problems the planner alone solves
                 kept, attempts, relevance = _relevance(entry, timeout, scratch, in_process)
+                label = f"{_domain_name(entry.problem)}/{entry.problem.name}"
                 if relevance is None:
-                    print(f"| {entry.problem.name} | {total} | {pure:.2f} | FAILED | - | - | - |")
+                    print(f"| {label} | {total} | {pure:.2f} | FAILED | - | - | - |")
                     rows.append((entry.problem, pure, math.inf))
                     continue
                 rows.append((entry.problem, pure, relevance))
                 print(
-                    f"| {entry.problem.parent.name}/{entry.problem.name} | {total} | {pure:.2f} | {relevance:.2f}"
+                    f"| {label} | {total} | {pure:.2f} | {relevance:.2f}"
                     f" | {pure / relevance:.2f} | {kept}/{total} | {attempts} |",
                     flush=True,
                 )
     return _speed_summary(rows)
+
+
+def _domain_name(problem: Path) -> str:
+    """The folder that names a problem's domain (``tetris/instances/instance-1.pddl``: tetris)."""
+    folder = problem.parent
+    return folder.parent.name if folder.name in ("instances", "problems") else folder.name
 
 
 def _relevance(entry: SuiteProblem, timeout: float, scratch: Path, in_process: bool):
