@@ -54,6 +54,7 @@ REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))
 
 from relevance_plan.exitcodes import ExitCode  # noqa: E402
+from relevance_plan.planning.guard import reap_children  # noqa: E402
 
 TOOL = [sys.executable, "-m", "relevance_plan"]
 DOCUMENTED = {int(code) for code in ExitCode} | {141}
@@ -193,7 +194,7 @@ def leftovers(work: Path) -> list[str]:
         return []
     deadline = time.monotonic() + LEFTOVER_GRACE
     while True:
-        _reap()
+        reap_children()
         alive = sorted(set(_descendants(os.getpid())) | set(_marked(str(work))))
         if not alive or time.monotonic() > deadline:
             break
@@ -206,18 +207,8 @@ def leftovers(work: Path) -> list[str]:
             os.kill(pid, signal.SIGKILL)
         except OSError:
             pass
-    _reap()
+    reap_children()
     return described
-
-
-def _reap() -> None:
-    while True:
-        try:
-            pid, _ = os.waitpid(-1, os.WNOHANG)
-        except ChildProcessError:
-            return
-        if pid == 0:
-            return
 
 
 # --------------------------------------------------------------------------- one run

@@ -104,7 +104,7 @@ def _kill(pid: int, started: bytes) -> None:
             os.close(handle)
 
 
-def _reap_children() -> None:
+def reap_children() -> None:
     """Reap whatever has died among our own children (orphans re-parented to a subreaper)."""
     while True:
         try:
@@ -129,7 +129,7 @@ def kill_descendants(root: int, timeout: float = 2.0, reap: bool = False) -> boo
     while True:
         alive = [(pid, started) for pid, state, started in descendants(root) if state not in _GONE_STATES]
         if reap:
-            _reap_children()
+            reap_children()
         if not alive:
             return True
         if time.monotonic() > deadline:

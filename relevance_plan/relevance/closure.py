@@ -70,7 +70,8 @@ def close_over_constraints(
             worklist.append(name)
 
     worklist: list[str] = sorted(result - set(already))
-    for predicate in sorted(singleton_predicates) if not already else ():
+    singletons = () if already else sorted(singleton_predicates)  # a closed part holds them already
+    for predicate in singletons:
         for fact in index.by_predicate.get(predicate, ()):
             for arg in fact[1:]:
                 keep(arg, "", "singleton", fact, worklist)

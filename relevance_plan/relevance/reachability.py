@@ -96,14 +96,40 @@ def _schemas(domain: Domain) -> list[_Schema]:
     return result
 
 
+@dataclass(frozen=True)
+class _Compiled:
+    """What every check on one task shares (cached per task: a repair runs several checks)."""
+
+    schemas: list[_Schema]
+    static: frozenset[str]  # predicates no action and no timed literal changes
+    timed: frozenset[GroundAtom]  # atoms a timed initial literal makes true
+    nullary: frozenset[GroundAtom]  # initial and timed atoms without arguments
+
+
+def _compiled(task: PlanningTask) -> _Compiled:
+    cached = _COMPILED.get(task)
+    if cached is None:
+        problem = task.typing.problem
+        timed = frozenset(
+            literal.atom for literal in problem.timed_literals if literal.atom is not None and not literal.negated
+        )
+        static = static_predicates(task.typing.domain) - {
+            literal.atom[0] for literal in problem.timed_literals if literal.atom
+        }
+        nullary = frozenset(atom for atom in (*problem.init, *timed) if len(atom) == 1)
+        cached = _Compiled(_compiled_schemas(task), frozenset(static), timed, nullary)
+        _COMPILED[task] = cached
+    return cached
+
+
+_COMPILED: weakref.WeakKeyDictionary[PlanningTask, _Compiled] = weakref.WeakKeyDictionary()
+
+
 def _compiled_schemas(task: PlanningTask) -> list[_Schema]:
     """The task's join schemas without the static one-argument conditions its parameters' types
     imply: in an untyped domain ``(truck ?t)`` is the type of ``?t`` and every candidate binding
     passes it, so joining on it only repeats the type check (the bulk of the work on the IPC's
-    untyped STRIPS domains).  Cached per task: a repair runs several checks."""
-    cached = _SCHEMA_CACHE.get(task)
-    if cached is not None:
-        return cached
+    untyped STRIPS domains)."""
     domain, problem = task.typing.domain, task.typing.problem
     static = static_predicates(domain)
     by_predicate = task.init_index.by_predicate
@@ -135,11 +161,7 @@ def _compiled_schemas(task: PlanningTask) -> list[_Schema]:
             )
         )
         result.append(replace(schema, pre=pre))
-    _SCHEMA_CACHE[task] = result
     return result
-
-
-_SCHEMA_CACHE: weakref.WeakKeyDictionary[PlanningTask, list[_Schema]] = weakref.WeakKeyDictionary()
 
 
 @dataclass(frozen=True)
@@ -208,13 +230,12 @@ class _Exploration:
         self.queue: deque[GroundAtom] = deque()
         self.by_object = task.init_index.by_object
         self.init = problem.init
+        compiled = _compiled(task)
         # timed initial literals that make a fact true count as reached: a plan may wait for them
-        self.timed = {
-            literal.atom for literal in problem.timed_literals if literal.atom is not None and not literal.negated
-        }
+        self.timed = compiled.timed
         self.of_type: dict[str, list[str]] = {}
         self.fits: dict[str, frozenset[str]] = {}
-        self.schemas = _compiled_schemas(task)
+        self.schemas = compiled.schemas
         # predicate -> (schema, the condition it matches, the schema's other conditions with their types)
         self.triggers: dict[str, list[tuple[_Schema, int, list[_Typed]]]] = defaultdict(list)
         self.conditions: dict[int, list[_Typed]] = {}
@@ -237,12 +258,11 @@ class _Exploration:
         # applications that ranged over every kept object of some types: run again when those grow
         self.ranging: list[tuple[_Schema, Binding, frozenset[str]]] = []
         self.missing = set(self.goal)
-        nullary = {atom for atom in self.init | self.timed if len(atom) == 1}
         # The initial static facts (a map, the floors above each other) are indexed at once and trigger
         # nothing: every dynamic fact is processed after them, and its joins find them.  Only the
         # schemas whose conditions are all static need a join of their own.
-        static = static_predicates(domain) - {literal.atom[0] for literal in problem.timed_literals if literal.atom}
-        self._reach_initial(self.allowed, nullary, static)
+        static = compiled.static
+        self._reach_initial(self.allowed, compiled.nullary, static)
         for schema in self.schemas:
             if not schema.pre:
                 self.apply(schema, {})
