@@ -13,7 +13,10 @@ The names a library user needs, imported on first use (``import relevance_plan``
 from __future__ import annotations
 
 import importlib
-from typing import Any
+
+TYPE_CHECKING = False  # typing's own flag would import typing (the launcher's path stays light)
+if TYPE_CHECKING:
+    from typing import Any
 
 __version__ = "0.5.0"
 

@@ -114,7 +114,7 @@ def test_the_full_problem_run_takes_the_head_start_over(gripper_problem):
     head = head_start._PENDING[-1]
     result = plan_task(GRIPPER, gripper_problem, PlanOptions(method="pure", timeout=60))
     assert result.status is PlanStatus.SOLVED and result.valid
-    assert head.used and not head.workdir.exists()
+    assert head.used and not os.path.exists(head.workdir)
     assert head_start.take() is None
 
 
@@ -125,7 +125,7 @@ def test_a_head_start_that_does_not_match_is_stopped(gripper_problem):
     pgid = head.group.run.pgid
     result = plan_task(GRIPPER, gripper_problem, PlanOptions(method="pure", timeout=60, planner_config="ff-gbfs"))
     assert result.status is PlanStatus.SOLVED
-    assert head.claimed and not head.used and not head.workdir.exists()
+    assert head.claimed and not head.used and not os.path.exists(head.workdir)
     assert not _running_in_group(pgid)
 
 

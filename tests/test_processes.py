@@ -36,7 +36,7 @@ def _guards(marker: str) -> list[int]:
                 command = Path(f"/proc/{entry}/cmdline").read_bytes()
             except OSError:
                 continue
-            if b"guard.py" in command and marker.encode() in command:
+            if b"import guard" in command and marker.encode() in command:
                 guards.append(int(entry))
     return guards
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 import os
 import runpy
 import signal
-import subprocess
+import sys
 import threading
 import time
 from concurrent.futures import ThreadPoolExecutor
@@ -15,7 +15,7 @@ import pytest
 from support import write_file
 
 from relevance_plan import errors
-from relevance_plan.planning import fast_downward, fd_command, process
+from relevance_plan.planning import fast_downward, fd_command, process, spawn
 from relevance_plan.planning.outcome import PlannerStatus
 
 GRIPPER_DOMAIN = """
@@ -322,14 +322,15 @@ def test_watchdog_kills_whole_process_group(big40: tuple[Path, Path]) -> None:
 
 @pytest.mark.planner
 def test_keyboard_interrupt_kills_process_group(big40: tuple[Path, Path], monkeypatch: pytest.MonkeyPatch) -> None:
-    started: list[subprocess.Popen[bytes]] = []
+    started: list[int] = []
+    start_guarded = spawn.start_guarded
 
-    class RecordingPopen(subprocess.Popen):  # type: ignore[type-arg]
-        def __init__(self, *args, **kwargs) -> None:  # type: ignore[no-untyped-def]
-            super().__init__(*args, **kwargs)
-            started.append(self)
+    def recording(*args, **kwargs):  # type: ignore[no-untyped-def]
+        spawned = start_guarded(*args, **kwargs)
+        started.append(spawned.pid)
+        return spawned
 
-    monkeypatch.setattr(process.subprocess, "Popen", RecordingPopen)
+    monkeypatch.setattr(spawn, "start_guarded", recording)
     # A shell's background job inherits SIGINT ignored; install Python's default.
     previous = signal.signal(signal.SIGINT, signal.default_int_handler)
     interrupt = threading.Timer(0.7, os.kill, (os.getpid(), signal.SIGINT))
@@ -341,7 +342,7 @@ def test_keyboard_interrupt_kills_process_group(big40: tuple[Path, Path], monkey
         interrupt.cancel()
         signal.signal(signal.SIGINT, previous)
     assert len(started) == 1
-    assert_session_gone(started[0].pid)
+    assert_session_gone(started[0])
 
 
 @pytest.mark.planner
@@ -392,3 +393,36 @@ def test_terminate_all_runs_stops_every_running_planner(big40: tuple[Path, Path]
     assert not process._ACTIVE_GROUPS
     for outcome in outcomes:
         assert_session_gone(outcome.process_group)
+
+
+def test_the_planner_inherits_no_descriptor_of_ours_and_runs_where_it_was_told(tmp_path: Path) -> None:
+    # an inheritable descriptor the tool's own parent might have left open (a shell's fd 3, say)
+    inherited = os.open(os.devnull, os.O_RDONLY)
+    os.set_inheritable(inherited, True)
+    probe = (
+        "import os, sys\n"
+        f"fd = {inherited}\n"
+        "try:\n    os.fstat(fd)\n    print('open', fd)\nexcept OSError:\n    print('closed', fd)\n"
+        "print('cwd', os.getcwd())\n"
+        "print('stdin', os.read(0, 10))\n"
+    )
+    try:
+        run = process.run_process_group(
+            [sys.executable, "-c", probe], tmp_path, 30, what="a probe", program=sys.executable
+        )
+    finally:
+        os.close(inherited)
+    log = process.read_log(tmp_path)
+    assert run.exit_code == 0, log
+    assert f"closed {inherited}" in log
+    assert f"cwd {tmp_path}" in log
+    assert "stdin b''" in log  # /dev/null, not the tool's terminal
+
+
+def test_the_memory_limit_holds_in_the_planner(tmp_path: Path) -> None:
+    probe = "import resource; print('limit', resource.getrlimit(resource.RLIMIT_AS)[0] // 2**20)"
+    run = process.run_process_group(
+        [sys.executable, "-c", probe], tmp_path, 30, what="a probe", program=sys.executable, memory_limit_mb=900
+    )
+    assert run.exit_code == 0
+    assert "limit 900" in process.read_log(tmp_path)

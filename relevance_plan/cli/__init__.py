@@ -6,7 +6,9 @@
 
 from __future__ import annotations
 
-from typing import Any
+TYPE_CHECKING = False  # typing's own flag would import typing (the launcher's path stays light)
+if TYPE_CHECKING:
+    from typing import Any
 
 __all__ = ["main"]
 

@@ -13,18 +13,21 @@ interpreter's own teardown, which frees what the command built, costs it
 
 from __future__ import annotations
 
+import _signal as signal  # signal's names without its enums: this module delays the head start
 import atexit
 import os
-import signal
 import sys
-import threading
-from collections.abc import Callable
-from types import FrameType
-from typing import Any
+
+TYPE_CHECKING = False  # typing's own flag would import typing
+if TYPE_CHECKING:
+    from collections.abc import Callable
+    from types import FrameType
+    from typing import Any
+
+    _Handler = Callable[[int, FrameType | None], Any] | int | None
 
 # Until the command installs its own handlers, these end a started head start like Ctrl-C ends a command.
 _SIGNALS = ("SIGTERM", "SIGHUP", "SIGINT")
-_Handler = Callable[[int, FrameType | None], Any] | int | None
 
 
 def main() -> None:
@@ -58,6 +61,8 @@ def _end_now(end: SystemExit) -> None:
     """Exit as ``end`` would, skipping the interpreter's teardown, when that loses nothing: the
     exit handlers run here, no other thread is left to wait for, and the output is flushed.
     Otherwise return (the caller exits as usual)."""
+    import threading
+
     if not isinstance(end.code, int | None) or threading.active_count() > 1:
         return
     atexit._run_exitfuncs()  # e.g. the finalizers of temporary folders left open
@@ -85,7 +90,8 @@ def _stop_on_signals() -> dict[int, _Handler]:
         from relevance_plan.planning import head_start
 
         head_start.discard_pending()
-        print(f"relevance-plan: interrupted by {signal.Signals(number).name}", file=sys.stderr)
+        name = next((name for name in _SIGNALS if getattr(signal, name, None) == number), str(number))
+        print(f"relevance-plan: interrupted by {name}", file=sys.stderr)
         os._exit(int(ExitCode.INTERRUPTED))  # nothing else has started yet
 
     previous: dict[int, _Handler] = {}

@@ -1,16 +1,22 @@
 """Run a planner so that nothing it starts can outlive the tool.
 
-Run as a script: ``python guard.py FD CGROUP COMMAND...``.  FD is the read
-end of a pipe whose only write end the tool holds; CGROUP is a cgroup v2
-directory the tool made for this run, or ``-``.  ``process.run_process_group``
-starts the guard as the leader of a new session; the guard then
+Run as ``python -I -S -c "...import guard; guard.main()" FD CGROUP WORKDIR
+LIMIT COMMAND...`` (:data:`LAUNCH`: imported, not run as a script, so that
+its compiled bytecode is used).  FD is the read end of a pipe whose only
+write end the tool holds; CGROUP is a cgroup v2 directory the tool made for
+this run, or ``-``; WORKDIR is where the planner runs; LIMIT the planner's
+address-space limit in MB, or ``-``.  ``spawn.start_guarded`` starts the
+guard as the leader of a new session, moves it into CGROUP while its
+interpreter starts (moving a process costs the kernel 5-20 ms, better spent
+beside the start-up than before the planner's) and then writes one byte:
+``1`` in the cgroup, ``0`` not.  The guard then
 
-* joins CGROUP, so that everything it starts stays in that cgroup whatever
-  it does with sessions and process groups (the tool kills the cgroup);
 * becomes a child subreaper (Linux), so that a descendant whose parent dies
   (``setsid`` and a double fork, ``timeout``'s own process group, a daemon)
   is re-parented to the guard instead of to init: every process the planner
-  starts stays a descendant of the guard, found by walking ``/proc``;
+  starts stays a descendant of the guard, found by walking ``/proc``, and in
+  CGROUP whatever it does with sessions and process groups (the tool kills
+  the cgroup);
 * runs COMMAND, and when it ends kills whatever it left behind.
 
 When the tool dies, even by ``kill -9``, the kernel closes the write end;
@@ -22,34 +28,44 @@ leave them running.
 The guard exits as the planner did (a death by signal N as 256 - N, which
 ``process`` reads back as -N, as it does for the driver's own codes).
 
-The module is imported too: :func:`kill_descendants` is the one sweep, used
-by the guard and by the tool.  It needs the standard library only, and
-imports little: the guard's start-up delays the planner's (``posix_spawn``
-rather than ``subprocess``, ``shutil`` only to remove a scratch directory).
+The module is imported by the tool too: :func:`kill_descendants` is the one
+sweep, used by the guard and by the tool.  It needs the standard library
+only, and imports little, since the guard's start-up delays the planner's:
+``_signal`` rather than ``signal`` (whose enums cost ~7 ms), one thread
+(the planner's end and the tool's are both file descriptors to wait on),
+``posix_spawn`` rather than ``subprocess``, ``shutil`` only to remove a
+scratch directory.
 """
 
+import _signal as signal  # signal's own names without the enum module
 import os
 import select
-import signal
 import sys
-import threading
 import time
-from collections.abc import Iterator
+
+TYPE_CHECKING = False  # typing's own flag would import typing
+if TYPE_CHECKING:
+    from collections.abc import Iterator
+
+# The guard's command line (``sys.argv[1:]`` are FD CGROUP WORKDIR LIMIT COMMAND...): this module imported
+# from its folder, appended after the standard library's so that no name there is shadowed.
+LAUNCH = "import sys; sys.path.append({folder!r}); import guard; guard.main()"
 
 # Only a directory an adapter made for this run is removed (tempfile prefix "relevance-plan-").
 SCRATCH_PREFIX = "relevance-plan-"
 NO_CGROUP = "-"
+NO_LIMIT = "-"
 PR_SET_CHILD_SUBREAPER = 36  # linux/prctl.h
 # A planner's stray signals must not end the guard; these are reset to their default in the planner at exec.
 _SHIELDED_SIGNALS = ("SIGTERM", "SIGINT", "SIGHUP", "SIGQUIT", "SIGUSR1", "SIGUSR2", "SIGALRM")
 _GONE_STATES = (b"Z", b"X")  # a zombie has exited; X: dead
-_EXIT = threading.Lock()  # held by whoever ends the guard: the planner's end or the tool's
+_POLL = 0.01  # seconds between checks of the planner where no pidfd can wait for it
 
 
 # --------------------------------------------------------------------------- the sweep (also used by the tool)
 
 
-def process_stats() -> Iterator[tuple[int, list[bytes]]]:
+def process_stats() -> "Iterator[tuple[int, list[bytes]]]":
     """(pid, fields) of every process in /proc; the fields follow the command name in its stat file:
     state, ppid, pgrp, session, ... (the start time, field 22 of stat, is here 19)."""
     for entry in os.scandir("/proc"):
@@ -197,9 +213,19 @@ def _remove_scratch(workdir: str) -> None:
         shutil.rmtree(workdir, ignore_errors=True)
 
 
+def _alone_in(cgroup: str) -> bool:
+    """Whether this process is the only one left in ``cgroup`` (then there is nothing to sweep)."""
+    if cgroup == NO_CGROUP:
+        return False
+    try:
+        with open(os.path.join(cgroup, "cgroup.procs")) as stream:
+            return [line.strip() for line in stream if line.strip()] == [str(os.getpid())]
+    except OSError:
+        return False
+
+
 def _stop_everything(subreaper: bool, cgroup: str) -> None:
     """The tool is gone: kill every descendant, remove the run's scratch directory, leave."""
-    _EXIT.acquire()  # the planner's end must not exit the guard halfway through this
     workdir = os.getcwd()
     if not subreaper:
         _stop_by_group(workdir)
@@ -229,20 +255,8 @@ def _stop_by_group(workdir: str) -> None:
     os.killpg(0, signal.SIGKILL)
 
 
-def _watch(fd: int, subreaper: bool, cgroup: str) -> None:
-    while True:
-        try:
-            if not os.read(fd, 1):
-                break
-        except InterruptedError:
-            continue
-        except OSError:
-            break
-    _stop_everything(subreaper, cgroup)
-
-
 def _tool_gone(fd: int) -> bool:
-    """The tool never writes to the pipe: readable means end-of-file."""
+    """The tool writes nothing after its first byte: readable means end-of-file."""
     try:
         return bool(select.select([fd], [], [], 0)[0])
     except (OSError, ValueError):
@@ -255,37 +269,74 @@ def _shield() -> None:
         signal.signal(getattr(signal, name), lambda signum, frame: None)
 
 
-def _run(command: list[str], fd: int) -> int:
-    """Run ``command`` to its end; its exit code (-N: killed by signal N)."""
+def _spawn(command: list[str], fd: int) -> int:
+    """Start ``command``; its pid."""
     os.set_inheritable(fd, False)  # the planner must not hold the tool's pipe
     try:
         # as subprocess would: the signals Python ignores are the default again in the planner
-        pid = os.posix_spawnp(command[0], command, os.environ, setsigdef=(signal.SIGPIPE, signal.SIGXFSZ))
+        return os.posix_spawnp(command[0], command, os.environ, setsigdef=(signal.SIGPIPE, signal.SIGXFSZ))
     except OSError as error:
         print(f"guard: cannot start {command[0]}: {error.strerror or error}", file=sys.stderr)
         os._exit(127)
+
+
+def _wait(pid: int, fd: int) -> int | None:
+    """The exit code of ``pid`` once it ends (-N: killed by signal N), or None as soon as the tool is gone."""
     try:
-        _, status = os.waitpid(pid, 0)
-    except ChildProcessError:  # reaped by the watcher, which ends the guard itself
-        return 0
-    return os.waitstatus_to_exitcode(status)
+        handle: int | None = os.pidfd_open(pid)  # readable once the planner has ended
+    except (AttributeError, OSError):
+        handle = None  # no pidfd (old kernel, macOS): look every _POLL seconds
+    watched = [fd] if handle is None else [fd, handle]
+    while True:
+        ready = select.select(watched, [], [], None if handle is not None else _POLL)[0]
+        if fd in ready:
+            return None  # the tool never writes to the pipe (after its first byte): readable means end-of-file
+        ended, status = os.waitpid(pid, os.WNOHANG)
+        if ended:
+            return os.waitstatus_to_exitcode(status)
+
+
+def _await_go(fd: int, cgroup: str) -> str:
+    """Wait for the tool's byte; the cgroup the guard is in (``-``: none).  Leaves if the tool is gone."""
+    try:
+        said = os.read(fd, 1)
+    except OSError:
+        said = b""
+    if not said:  # the tool died before the planner started
+        _remove_scratch(os.getcwd())
+        if cgroup != NO_CGROUP:
+            _leave_cgroup(cgroup)
+        os._exit(1)
+    return cgroup if said == b"1" else NO_CGROUP
+
+
+def _limit_memory(megabytes: str) -> None:
+    """The planner's address-space limit, set on the guard (inherited by the planner)."""
+    if megabytes != NO_LIMIT:
+        import resource
+
+        limit = int(megabytes) * 1024 * 1024
+        resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
 
 
 def main() -> None:
-    fd, cgroup, command = int(sys.argv[1]), sys.argv[2], sys.argv[3:]
-    join_cgroup(cgroup)
+    fd, cgroup, workdir, limit, command = int(sys.argv[1]), sys.argv[2], sys.argv[3], sys.argv[4], sys.argv[5:]
+    os.chdir(workdir)
+    cgroup = _await_go(fd, cgroup)
+    _limit_memory(limit)
     subreaper = _become_subreaper()
     _shield()
-    threading.Thread(target=_watch, args=(fd, subreaper, cgroup), daemon=True).start()
-    code = _run(command, fd)
-    with _EXIT:
-        if subreaper:
-            kill_descendants(os.getpid(), reap=True)  # whatever the planner left behind
-        if _tool_gone(fd):  # died just now: nobody else will clean up
-            _remove_scratch(os.getcwd())
-            if cgroup != NO_CGROUP:
-                _leave_cgroup(cgroup)
-        os._exit(code & 0xFF if code >= 0 else (256 + code) & 0xFF)
+    code = _wait(_spawn(command, fd), fd)
+    if code is None:
+        _stop_everything(subreaper, cgroup)
+        return
+    if subreaper and not _alone_in(cgroup):
+        kill_descendants(os.getpid(), reap=True)  # whatever the planner left behind
+    if _tool_gone(fd):  # died just now: nobody else will clean up
+        _remove_scratch(os.getcwd())
+        if cgroup != NO_CGROUP:
+            _leave_cgroup(cgroup)
+    os._exit(code & 0xFF if code >= 0 else (256 + code) & 0xFF)
 
 
 if __name__ == "__main__":

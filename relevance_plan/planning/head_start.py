@@ -14,30 +14,31 @@ same, and otherwise the run is stopped and its folder removed.  Nothing is
 decided here: every argument is checked again by the CLI, and a head start
 that does not match is simply not used.
 
-Standard library only (besides ``fd_command`` and ``process``), and no
-dataclasses (their import costs ~10 ms): this runs before anything else is
-imported, and whatever it imports delays the driver.
+Everything this module imports at its top delays the driver, so that is
+``os``, ``sys``, ``fd_command`` and ``spawn`` (no ``re``, ``typing``,
+``pathlib``, ``subprocess``, ``contextlib`` or ``threading``): the
+command line and the domain are read with string methods, and what waits
+for the run (``process``) is imported once the tool needs it.
 """
 
 from __future__ import annotations
 
-import contextlib
+import _thread
 import contextvars
-import re
-import shlex
-import shutil
+import os
 import sys
-import tempfile
-import threading
-from collections.abc import Iterator, Sequence
-from pathlib import Path
 
-from relevance_plan.planning import fd_command
-from relevance_plan.planning.process import StartedGroup, start_process_group
-from relevance_plan.planning.race import usable_cores
+from relevance_plan.planning import fd_command, spawn
 
-# What identifies a driver run: (domain, problem, configuration, memory limit MB, extra arguments).
-RunKey = tuple[str, str, str, "int | None", tuple[str, ...]]
+TYPE_CHECKING = False  # typing's own flag would import typing
+if TYPE_CHECKING:
+    from collections.abc import Sequence
+    from pathlib import Path
+
+    from relevance_plan.planning.process import StartedGroup
+
+    # What identifies a driver run: (domain, problem, configuration, memory limit MB, extra arguments).
+    RunKey = tuple[str, str, str, int | None, tuple[str, ...]]
 
 # ``plan``'s options that take a value, and its flags (cli/app.py); anything else: no head start.
 _VALUE_OPTIONS = frozenset(
@@ -49,22 +50,38 @@ _VALUE_OPTIONS = frozenset(
 )  # fmt: skip
 _FLAGS = frozenset({"--no-widen", "--no-relax", "--race", "--no-race", "--json", "--quiet", "-q"})
 _DEFAULT_TIMEOUT = 120.0
-# Domains whose features may make ``auto`` choose another planner than Fast Downward.
-_NOT_CLASSICAL = re.compile(r":durative-action|:process\b|:event\b|:numeric-fluents|:fluents|:time\b|preference")
-_ONLY_TOTAL_COST = re.compile(r"\(:functions\s*\(total-cost\)\s*(-\s*number\s*)?\)")
+# Words of a domain that may make ``auto`` choose another planner than Fast Downward.
+_NOT_CLASSICAL = frozenset({":durative-action", ":process", ":event", ":numeric-fluents", ":fluents", ":time"})
+# The one function Fast Downward takes: (:functions (total-cost)), perhaps typed ``- number``.
+_ONLY_TOTAL_COST = (
+    ["(", ":functions", "(", "total-cost", ")", ")"],
+    ["(", ":functions", "(", "total-cost", ")", "-", "number", ")"],
+)
 
 
 class HeadStart:
     """A driver run started early on the user's files, in its own scratch folder."""
 
-    def __init__(self, key: RunKey, group: StartedGroup, workdir: Path, time_limit: float):
+    def __init__(self, key: RunKey, spawned: spawn.Spawned, workdir: str, time_limit: float):
         self.key = key
-        self.group = group
+        self.spawned = spawned
         self.workdir = workdir
         self.time_limit = time_limit
         self.claimed = False  # taken over or discarded: nobody else may have it
         self.used = False  # taken over by the full-problem run
-        self._lock = threading.Lock()
+        self._group: StartedGroup | None = None
+        self._lock = _thread.allocate_lock()
+
+    @property
+    def group(self) -> StartedGroup:
+        """The run as ``process`` waits for and stops it (imported only now)."""
+        if self._group is None:
+            from pathlib import Path
+
+            from relevance_plan.planning.process import StartedGroup
+
+            self._group = StartedGroup.adopt(self.spawned, Path(self.workdir))
+        return self._group
 
     def take_over(self, key: RunKey) -> bool:
         """Whether the caller, about to start the run ``key``, takes this one instead (once)."""
@@ -74,13 +91,9 @@ class HeadStart:
             self.claimed = self.used = True
             return True
 
-    @contextlib.contextmanager
-    def folder(self) -> Iterator[Path]:
-        """The run's folder, removed after the block (the caller took the run over)."""
-        try:
-            yield self.workdir
-        finally:
-            shutil.rmtree(self.workdir, ignore_errors=True)
+    def folder(self) -> _Folder:
+        """The run's folder, as a context: removed after the block (the caller took the run over)."""
+        return _Folder(self.workdir)
 
     def discard(self) -> None:
         """Stop the run and remove its folder, unless somebody took it over."""
@@ -91,7 +104,26 @@ class HeadStart:
         try:
             self.group.stop()
         finally:
-            shutil.rmtree(self.workdir, ignore_errors=True)
+            _remove(self.workdir)
+
+
+class _Folder:
+    def __init__(self, path: str):
+        self.path = path
+
+    def __enter__(self) -> Path:
+        from pathlib import Path
+
+        return Path(self.path)
+
+    def __exit__(self, *exception: object) -> None:
+        _remove(self.path)
+
+
+def _remove(folder: str) -> None:
+    import shutil
+
+    shutil.rmtree(folder, ignore_errors=True)
 
 
 _PENDING: list[HeadStart] = []
@@ -106,17 +138,20 @@ def take() -> HeadStart | None:
         return None
 
 
-@contextlib.contextmanager
-def offered(head: HeadStart | None) -> Iterator[None]:
+class offered:  # noqa: N801 - used as a context manager, like contextlib's
     """Within the block, Fast Downward's adapter may :func:`claim` ``head``; after it, an unclaimed
     head start is stopped (the full problem was planned otherwise)."""
-    token = _OFFER.set(head)
-    try:
-        yield
-    finally:
-        _OFFER.reset(token)
-        if head is not None:
-            head.discard()
+
+    def __init__(self, head: HeadStart | None):
+        self.head = head
+
+    def __enter__(self) -> None:
+        self._token = _OFFER.set(self.head)
+
+    def __exit__(self, *exception: object) -> None:
+        _OFFER.reset(self._token)
+        if self.head is not None:
+            self.head.discard()
 
 
 def claim(key: RunKey) -> HeadStart | None:
@@ -132,8 +167,11 @@ def discard_pending() -> None:
         head.discard()
 
 
-def run_key(domain: Path, problem: Path, config: str, memory_limit_mb: int | None, extra: Sequence[str]) -> RunKey:
-    return (str(domain), str(problem), config, memory_limit_mb, tuple(extra))
+def run_key(
+    domain: str | Path, problem: str | Path, config: str, memory_limit_mb: int | None, extra: Sequence[str]
+) -> RunKey:
+    # abspath on both sides: the adapter's paths and the launcher's are spelled alike
+    return (os.path.abspath(domain), os.path.abspath(problem), config, memory_limit_mb, tuple(extra))
 
 
 def start_for_plan(arguments: Sequence[str]) -> None:
@@ -148,20 +186,22 @@ def start_for_plan(arguments: Sequence[str]) -> None:
         return
     domain, problem, config, timeout, memory, extra = wanted
     command = fd_command.build_command(
-        sys.executable, fd_command.find_fast_downward(), domain, problem, config, timeout, memory, extra
+        sys.executable, fd_command.driver_location(), domain, problem, config, timeout, memory, extra
     )
-    workdir = Path(tempfile.mkdtemp(prefix="relevance-plan-fd-"))
+    workdir = spawn.scratch_folder("fd")
+    if workdir is None:
+        return
     try:
-        group = start_process_group(command, workdir, what="Fast Downward", program=command[1])
+        spawned = spawn.start_guarded(command, workdir, what="Fast Downward", program=command[1])
     except BaseException:
-        shutil.rmtree(workdir, ignore_errors=True)
+        _remove(workdir)
         raise
-    _PENDING.append(HeadStart(run_key(domain, problem, config, memory, extra), group, workdir, timeout))
+    _PENDING.append(HeadStart(run_key(domain, problem, config, memory, extra), spawned, workdir, timeout))
 
 
 def _full_run_wanted(
     arguments: Sequence[str],
-) -> tuple[Path, Path, str, float, int | None, tuple[str, ...]] | None:
+) -> tuple[str, str, str, float, int | None, tuple[str, ...]] | None:
     """(domain, problem, config, time limit, memory limit, extra arguments) of the full-problem run
     ``plan`` will start with Fast Downward, or None when it will not (or this cannot tell)."""
     values: dict[str, str] = {}
@@ -189,20 +229,20 @@ def _full_run_wanted(
     if len(positional) != 2 or "--keep-work" in values:
         return None
     method = values.get("--method", "relevance")
-    races = "--race" in flags or ("--no-race" not in flags and usable_cores() >= 2)
+    races = "--race" in flags or ("--no-race" not in flags and spawn.usable_cores() >= 2)
     if not (method == "pure" or (method == "relevance" and races)):
         return None
     if values.get("--planner", "auto") not in ("auto", "fast-downward"):
         return None
-    domain, problem = (Path(p).absolute() for p in positional)
-    if not (domain.is_file() and problem.is_file()):
+    domain, problem = (os.path.abspath(path) for path in positional)
+    if not (os.path.isfile(domain) and os.path.isfile(problem)):
         return None
     if values.get("--planner", "auto") == "auto" and not _plainly_classical(domain):
         return None
     try:
         timeout = float(values.get("--timeout", _DEFAULT_TIMEOUT))
         memory = int(values["--memory-limit"]) if "--memory-limit" in values else None
-        extra = tuple(shlex.split(values.get("--planner-args", "")))
+        extra = _split_like_a_shell(values.get("--planner-args", ""))
     except ValueError:
         return None
     if not 0 < timeout <= 1e6 or (memory is not None and memory <= 0):
@@ -210,13 +250,33 @@ def _full_run_wanted(
     return domain, problem, values.get("--planner-config", fd_command.DEFAULT_CONFIG), timeout, memory, extra
 
 
-def _plainly_classical(domain: Path) -> bool:
+def _split_like_a_shell(text: str) -> tuple[str, ...]:
+    if not text:
+        return ()
+    import shlex  # imports re: only for the rare --planner-args
+
+    return tuple(shlex.split(text))
+
+
+def _plainly_classical(domain: str) -> bool:
     """The domain file shows nothing that could make ``auto`` choose a temporal or numeric planner."""
     try:
-        text = domain.read_text(encoding="utf-8", errors="replace").lower()
+        with open(domain, encoding="utf-8", errors="replace") as stream:
+            lines = stream.read().lower().splitlines()
     except OSError:
         return False
-    text = re.sub(r";[^\n]*", "", text)
-    if _NOT_CLASSICAL.search(text):
+    text = "\n".join(line.partition(";")[0] for line in lines)
+    if "preference" in text:
         return False
-    return ":functions" not in text or bool(_ONLY_TOTAL_COST.search(text))
+    words = text.replace("(", " ( ").replace(")", " ) ").split()
+    if _NOT_CLASSICAL.intersection(words):
+        return False
+    if ":functions" not in words:
+        return True
+    return any(_contains(words, form) for form in _ONLY_TOTAL_COST)
+
+
+def _contains(words: list[str], run: list[str]) -> bool:
+    """Whether ``run`` occurs in ``words`` as consecutive items."""
+    first, size = run[0], len(run)
+    return any(words[index : index + size] == run for index, word in enumerate(words) if word == first)

@@ -506,6 +506,8 @@ def plan_task(
     # the launcher's head start (planning.head_start): the first call on the full problem may take it
     # over; offered() stops it after that call, and the end of the run in every case
     early = head_start.take()
+    if early is not None:  # the run began when the launcher started the driver: times and limits count from there
+        started = min(started, early.spawned.started + time.perf_counter() - time.monotonic())
     with scratch_directory() as scratch, head_start.offered(early):
 
         def call_planner(objects: Selection | None, limit: float | None) -> RunOutcome:

@@ -26,22 +26,20 @@ SIGTERM, and (by the guard) when the tool itself is killed.  How much
 
 VAL's ``Validate`` is the one other program the tool starts (:func:`run_val`).
 
-The launcher's head start imports this module before it starts Fast
-Downward, so it stays light: no dataclasses (their import costs ~10 ms).
+The start itself is :mod:`spawn`'s (the launcher's head start uses it before
+anything else is imported); this module waits for runs, stops them and
+reads what they leave.
 """
 
 from __future__ import annotations
 
 import contextlib
 import contextvars
-import functools
-import itertools
 import os
 import shutil
 import signal
 import stat
 import subprocess
-import sys
 import tempfile
 import threading
 import time
@@ -49,16 +47,14 @@ from pathlib import Path
 from typing import BinaryIO, NamedTuple
 
 from relevance_plan import errors
-from relevance_plan.planning import guard
+from relevance_plan.planning import guard, spawn
+from relevance_plan.planning.spawn import LOG_FILE
 
-LOG_FILE = "planner.log"
 LOG_TAIL_LINES = 40
 # Past the time limit, the planner's own limit may act first for this long before the watchdog kills it.
 DEFAULT_WATCHDOG_GRACE = 0.5
 # What is read of a planner's output or plan file: its memory and time stay bounded whatever it writes.
 MAX_OUTPUT_BYTES = 8 * 2**20
-NO_CGROUP_ENV = "RELEVANCE_PLAN_NO_CGROUP"
-_GUARD = Path(__file__).with_name("guard.py")
 _LOW_SPACE_BYTES = 64 * 1024
 _NO_SPACE_MARKERS = ("No space left on device", "[Errno 28]", "ENOSPC")
 
@@ -165,87 +161,6 @@ def read_plan_file(path: str | os.PathLike, limit: int = MAX_OUTPUT_BYTES) -> st
     return data.decode("utf-8", errors="replace")
 
 
-# --------------------------------------------------------------------------- cgroups
-
-
-@functools.lru_cache(maxsize=1)
-def _own_cgroup() -> str | None:
-    """This process's cgroup v2 directory, or None (no cgroup v2, or not mounted where we can see it)."""
-    try:
-        with open("/proc/self/cgroup") as stream:
-            own = next(line[3:].strip() for line in stream if line.startswith("0::"))
-        with open("/proc/self/mountinfo") as stream:
-            for line in stream:
-                fields = line.split()
-                if "-" in fields and fields[fields.index("-") + 1] == "cgroup2":
-                    root, mount_point = fields[3], fields[4].replace("\\040", " ")
-                    break
-            else:
-                return None
-    except (OSError, StopIteration, IndexError):
-        return None
-    if not own.startswith(root):
-        return None
-    return os.path.join(mount_point, own[len(root) :].lstrip("/"))
-
-
-_CGROUP_NUMBERS = itertools.count(1)
-_CGROUPS_REFUSED: set[str] = set()  # parents where creating a cgroup failed once: not tried again
-
-
-def _new_cgroup() -> str | None:
-    """A fresh cgroup below this process's own, or None where that is not available or not permitted."""
-    if os.environ.get(NO_CGROUP_ENV) or not sys.platform.startswith("linux"):
-        return None
-    parent = _own_cgroup()
-    if parent is None or parent in _CGROUPS_REFUSED:
-        return None
-    path = os.path.join(parent, f"relevance-plan-{os.getpid()}-{next(_CGROUP_NUMBERS)}")
-    try:
-        os.mkdir(path)
-    except OSError:
-        _CGROUPS_REFUSED.add(parent)
-        return None
-    return path
-
-
-def _cgroup_members(cgroup: str) -> list[int]:
-    try:
-        with open(os.path.join(cgroup, "cgroup.procs")) as stream:
-            return [int(line) for line in stream if line.strip()]
-    except (OSError, ValueError):
-        return []
-
-
-def _kill_cgroup(cgroup: str) -> None:
-    try:
-        with open(os.path.join(cgroup, "cgroup.kill"), "w") as stream:
-            stream.write("1")
-        return
-    except OSError:
-        pass  # before Linux 5.14: one by one
-    for pid in _cgroup_members(cgroup):
-        try:
-            os.kill(pid, signal.SIGKILL)
-        except OSError:
-            pass
-
-
-def _remove_cgroup(cgroup: str, timeout: float = 2.0) -> None:
-    deadline = time.monotonic() + timeout
-    while True:
-        try:
-            os.rmdir(cgroup)
-            return
-        except FileNotFoundError:
-            return
-        except OSError:
-            if time.monotonic() > deadline:
-                return  # left behind, empty or not: never block the tool on it
-            _kill_cgroup(cgroup)
-            time.sleep(0.01)
-
-
 # --------------------------------------------------------------------------- stopping a run
 
 
@@ -332,7 +247,7 @@ def _stop(run: _Run, guard_exited: bool = False) -> None:
     spares the walk through /proc that looks for them.
     """
     if run.cgroup is not None:
-        _kill_cgroup(run.cgroup)
+        spawn.kill_cgroup(run.cgroup)
     if not guard_exited:
         # The guard, our unreaped child, anchors its descendants: kill them before it.
         guard.kill_descendants(run.pgid)
@@ -397,7 +312,12 @@ def _await_run_death(run: _Run, timeout: float = 2.0) -> None:
     if not os.path.isdir("/proc"):
         return
     deadline = time.monotonic() + timeout
-    while _group_runs(run.pgid) or (run.cgroup is not None and _cgroup_members(run.cgroup)):
+
+    def running() -> bool:
+        # Every process of the run is in its cgroup, whatever its group: no walk through /proc needed.
+        return bool(spawn.cgroup_members(run.cgroup)) if run.cgroup is not None else _group_runs(run.pgid)
+
+    while running():
         if time.monotonic() > deadline:
             return
         time.sleep(0.005)
@@ -406,13 +326,6 @@ def _await_run_death(run: _Run, timeout: float = 2.0) -> None:
 def _group_runs(pgid: int) -> bool:
     # a zombie has exited already
     return any(int(fields[2]) == pgid and fields[0] != b"Z" for _, fields in guard.process_stats())
-
-
-def _limit_memory(megabytes: int) -> None:
-    import resource
-
-    limit = megabytes * 1024 * 1024
-    resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
 
 
 # --------------------------------------------------------------------------- one run
@@ -446,16 +359,23 @@ def run_process_group(
 class StartedGroup:
     """A run started by :func:`start_process_group`; :meth:`finish` waits for it (or :meth:`stop` ends it)."""
 
-    def __init__(
-        self, process: subprocess.Popen, run: _Run, workdir: Path, log_file: BinaryIO, guard_write: int, started: float
-    ):
-        self.process = process
+    def __init__(self, run: _Run, workdir: Path, log_file: BinaryIO, guard_write: int, started: float):
         self.run = run
         self.workdir = workdir
         self.log_file = log_file
         self.guard_write = guard_write
         self.started = started  # time.monotonic() at the start
         self._closed = False
+
+    @classmethod
+    def adopt(cls, spawned: spawn.Spawned, workdir: Path) -> StartedGroup:
+        """The run ``spawned`` in ``workdir``, registered as going on (a batch's Ctrl-C stops it)."""
+        run = _Run(spawned.pid, spawned.cgroup)
+        with _ACTIVE_LOCK:
+            _ACTIVE_GROUPS.add(run)
+        # A file, not a pipe: nobody has to drain it while we wait.
+        log_file = open(spawned.log_fd, "w+b", closefd=True)  # noqa: SIM115 - closed by _close
+        return cls(run, workdir, log_file, spawned.guard_write, spawned.started)
 
     def finish(self, deadline: float | None) -> ProcessRun:
         """Wait for the run, the watchdog firing ``deadline`` seconds after its start; reap it."""
@@ -473,8 +393,6 @@ class StartedGroup:
         finally:
             self._close()
         exit_code = _exit_code(wait_status)
-        # We reaped it ourselves (for the rusage); tell Popen so it never waits.
-        self.process.returncode = exit_code
         if exit_code != 0:
             _refuse_full_disk(self.workdir)
         wall = time.monotonic() - self.started
@@ -485,7 +403,6 @@ class StartedGroup:
         try:
             _stop(self.run)
             _wait_for_run(self.run, None)
-            self.process.returncode = -9
         finally:
             self._close()
 
@@ -498,7 +415,7 @@ class StartedGroup:
         self.log_file.close()
         os.close(self.guard_write)
         if self.run.cgroup is not None:
-            _remove_cgroup(self.run.cgroup)
+            spawn.remove_cgroup(self.run.cgroup)
 
 
 def start_process_group(
@@ -511,50 +428,10 @@ def start_process_group(
     memory_limit_mb: int | None = None,
 ) -> StartedGroup:
     """Start ``command`` under the guard as :func:`run_process_group` does, without waiting for it."""
-    # The guard starts the command, so a missing program must be caught here.
-    executable = command[0] if os.sep in command[0] else shutil.which(command[0])
-    if executable is None or not os.access(executable, os.X_OK) or os.path.isdir(executable):
-        raise errors.PlannerError(f"cannot start {what}: {command[0]} is not an executable program", path=str(program))
-    started = time.monotonic()
-    # The guard stops the run when this process dies (its pipe's write end
-    # closes, even on kill -9); os.pipe() fds are close-on-exec, so no other
-    # child holds the write end.
-    guard_read, guard_write = os.pipe()
-    cgroup = _new_cgroup()
-    log_file = None
-    try:
-        # A file, not a pipe: nobody has to drain it while we wait.
-        log_file = open(workdir / LOG_FILE, "w+b")  # noqa: SIM115 - closed by the StartedGroup
-        try:
-            process = subprocess.Popen(
-                # -I -S: the guard needs the standard library only; skipping site saves start-up
-                [sys.executable, "-I", "-S", str(_GUARD), str(guard_read), cgroup or guard.NO_CGROUP, *command],
-                cwd=workdir,
-                stdin=subprocess.DEVNULL,
-                stdout=log_file,
-                stderr=subprocess.STDOUT,
-                start_new_session=True,
-                close_fds=True,
-                pass_fds=(guard_read,),
-                env=env,
-                preexec_fn=None if memory_limit_mb is None else functools.partial(_limit_memory, memory_limit_mb),
-            )
-        except OSError as error:
-            raise errors.PlannerError(f"cannot start {what}: {error.strerror or error}", path=str(program)) from None
-        finally:
-            os.close(guard_read)
-    except BaseException:
-        if log_file is not None:
-            log_file.close()
-        os.close(guard_write)
-        if cgroup is not None:
-            _remove_cgroup(cgroup)
-        raise
-    # start_new_session: the guard leads its own group, pgid == pid.
-    run = _Run(process.pid, cgroup)
-    with _ACTIVE_LOCK:
-        _ACTIVE_GROUPS.add(run)
-    return StartedGroup(process, run, workdir, log_file, guard_write, started)
+    spawned = spawn.start_guarded(
+        command, str(workdir), what=what, program=str(program), env=env, memory_limit_mb=memory_limit_mb
+    )
+    return StartedGroup.adopt(spawned, workdir)
 
 
 def _restore_workdir(workdir: Path, log_file) -> None:

@@ -10,22 +10,14 @@ then about the smaller of the two, whatever the first selection was.
 
 from __future__ import annotations
 
-import os
 import threading
 from collections.abc import Callable
 from typing import Generic, TypeVar
 
 from relevance_plan.planning.process import CancelScope, cancel_scope
+from relevance_plan.planning.spawn import usable_cores
 
 T = TypeVar("T")
-
-
-def usable_cores() -> int:
-    """The cores this process may run on (its affinity, not the machine's count)."""
-    try:
-        return len(os.sched_getaffinity(0))
-    except (AttributeError, OSError):
-        return os.cpu_count() or 1
 
 
 def race_by_default(method: str) -> bool:
