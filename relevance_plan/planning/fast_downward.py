@@ -37,6 +37,7 @@ from relevance_plan.planning.fd_command import (
     build_command,
     find_fast_downward,
     planner_arguments,
+    through_lean_driver,
 )
 from relevance_plan.planning.features import CLASSICAL, refuse_unsupported
 from relevance_plan.planning.outcome import PlannerStatus, RunOutcome, signal_reason
@@ -368,7 +369,7 @@ def run_fast_downward(
             run = early.group.finish(watchdog_deadline(early.time_limit, watchdog_grace))
         else:
             deadline = watchdog_deadline(time_limit, watchdog_grace)
-            run = run_process_group(command, workdir, deadline, what=WHOSE, program=driver)
+            run = run_process_group(through_lean_driver(command), workdir, deadline, what=WHOSE, program=driver)
         log = read_log(workdir)
         plans, numbered = read_plans(workdir)
     plan = plans[-1] if plans else None

@@ -12,6 +12,7 @@ import os
 import sys
 
 from relevance_plan import errors
+from relevance_plan.planning import fd_driver
 
 TYPE_CHECKING = False  # typing's own flag would import typing
 if TYPE_CHECKING:
@@ -19,6 +20,8 @@ if TYPE_CHECKING:
     from pathlib import Path
 
 FAST_DOWNWARD_ENV = "RELEVANCE_PLAN_FAST_DOWNWARD"
+FULL_DRIVER_ENV = "RELEVANCE_PLAN_FULL_DRIVER"
+_LEAN_LAUNCH = fd_driver.LAUNCH.format(folder=os.path.dirname(os.path.abspath(__file__)))
 DEFAULT_CONFIG = "lama-first"
 
 # Named configurations -> driver arguments.  Options the driver itself parses
@@ -143,3 +146,12 @@ def build_command(
         *after,
         *extra_arguments,
     ]
+
+
+def through_lean_driver(command: list[str]) -> list[str]:
+    """The driver's ``command`` (from :func:`build_command`) run by the lean stand-in
+    (:mod:`fd_driver`), which hands anything but translate-then-search to the real driver;
+    ``command`` itself where ``$RELEVANCE_PLAN_FULL_DRIVER`` is set."""
+    if os.environ.get(FULL_DRIVER_ENV):
+        return command
+    return [command[0], "-I", "-S", "-c", _LEAN_LAUNCH, *command[1:]]

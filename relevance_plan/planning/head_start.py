@@ -185,14 +185,15 @@ def start_for_plan(arguments: Sequence[str]) -> None:
     if wanted is None:
         return
     domain, problem, config, timeout, memory, extra = wanted
-    command = fd_command.build_command(
-        sys.executable, fd_command.driver_location(), domain, problem, config, timeout, memory, extra
-    )
+    driver = fd_command.driver_location()
+    command = fd_command.build_command(sys.executable, driver, domain, problem, config, timeout, memory, extra)
     workdir = spawn.scratch_folder("fd")
     if workdir is None:
         return
     try:
-        spawned = spawn.start_guarded(command, workdir, what="Fast Downward", program=command[1])
+        spawned = spawn.start_guarded(
+            fd_command.through_lean_driver(command), workdir, what="Fast Downward", program=driver
+        )
     except BaseException:
         _remove(workdir)
         raise
