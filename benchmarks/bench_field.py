@@ -19,11 +19,17 @@ second per folder.
 original), one after the other in one run, and prints pure / relevance per
 problem, the geometric mean (target >= 0.95) and every problem slower than
 pure x 1.25 + 0.5 s (target: none).  Both count the whole process, start-up
-included (`--in-process` measures the library call instead).  Takes a few minutes
-per 50 problems on 2 cores.
+included (`--in-process` measures the library call instead): the tool runs
+from this checkout with its bytecode compiled, or with `--installed` as a
+user has it (a wheel of the checkout in a new virtual environment; see
+``installed.py``).  `--repeat N` times each problem N times, pure and
+relevance in turn, and takes the medians (a single run of a 0.2 s problem
+varies by a few hundredths on a shared machine).  Takes a few minutes per
+50 problems and repetition on 2 cores.
 
     python benchmarks/bench_field.py accept /path/to/corpus
     python benchmarks/bench_field.py speed /path/to/corpus --per-folder 2 --timeout 60
+    python benchmarks/bench_field.py speed /path/to/corpus --installed --repeat 3
 """
 
 from __future__ import annotations
@@ -40,6 +46,8 @@ from pathlib import Path
 
 REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))
+
+from installed import compiled_checkout, installed_tool  # noqa: E402
 
 from relevance_plan.errors import PDDLParseError, RelevancePlanError  # noqa: E402
 from relevance_plan.io import SuiteProblem, find_suite_problems, load_domain, load_problem  # noqa: E402
@@ -160,14 +168,20 @@ def timed(command: list[str], timeout: float) -> tuple[int, float]:
     return code, time.perf_counter() - started
 
 
-def speed(roots: list[str], per_folder: int, timeout: float, in_process: bool) -> int:
+def speed(roots: list[str], per_folder: int, timeout: float, in_process: bool, installed: bool, repeat: int) -> int:
     from relevance_plan.planning.fast_downward import find_fast_downward
 
     driver = str(find_fast_downward())
     rows = []
-    print("| problem | objects | pure (s) | relevance (s) | pure/relevance | kept | attempts |")
-    print("|---|---|---|---|---|---|---|")
     with _scratch() as scratch:
+        if installed:
+            tool, env = installed_tool(scratch), dict(os.environ)
+            print(f"relevance-plan as installed from a wheel of {REPO}; medians of {repeat} run(s)\n")
+        else:
+            tool, env = compiled_checkout()
+            print(f"relevance-plan from {REPO / 'relevance_plan'}, bytecode compiled; medians of {repeat} run(s)\n")
+        print("| problem | objects | pure (s) | relevance (s) | pure/relevance | kept | attempts |")
+        print("|---|---|---|---|---|---|---|")
         for folder in folders(roots):
             for entry in folder.entries[:per_folder]:
                 try:
@@ -178,24 +192,33 @@ def speed(roots: list[str], per_folder: int, timeout: float, in_process: bool) -
                 except RelevancePlanError:
                     continue
                 plan_file = scratch / "sas_plan"
-                pure_code, pure = timed(
-                    [
-                        sys.executable,
-                        driver,
-                        "--plan-file",
-                        str(plan_file),
-                        "--overall-time-limit",
-                        f"{int(timeout)}s",
-                        "--alias",
-                        "lama-first",
-                        str(entry.domain),
-                        str(entry.problem),
-                    ],
-                    timeout,
-                )
-                if pure_code != 0:
-                    continue  # the benchmark compares problems the planner alone solves
-                kept, attempts, relevance = _relevance(entry, timeout, scratch, in_process)
+                pure_command = [
+                    sys.executable,
+                    driver,
+                    "--plan-file",
+                    str(plan_file),
+                    "--overall-time-limit",
+                    f"{int(timeout)}s",
+                    "--alias",
+                    "lama-first",
+                    str(entry.domain),
+                    str(entry.problem),
+                ]
+                pure_times: list[float] = []
+                relevance_times: list[float] = []
+                for _ in range(repeat):
+                    pure_code, seconds = timed(pure_command, timeout)
+                    if pure_code != 0:
+                        break
+                    pure_times.append(seconds)
+                    kept, attempts, relevance = _relevance(entry, timeout, scratch, in_process, tool, env)
+                    if relevance is None:
+                        break
+                    relevance_times.append(relevance)
+                if len(pure_times) < repeat and len(pure_times) == len(relevance_times):
+                    continue  # pure failed: the benchmark compares problems the planner alone solves
+                pure = statistics.median(pure_times)
+                relevance = statistics.median(relevance_times) if len(relevance_times) == repeat else None
                 label = f"{_domain_name(entry.problem)}/{entry.problem.name}"
                 if relevance is None:
                     print(f"| {label} | {total} | {pure:.2f} | FAILED | - | - | - |")
@@ -216,7 +239,7 @@ def _domain_name(problem: Path) -> str:
     return folder.parent.name if folder.name in ("instances", "problems") else folder.name
 
 
-def _relevance(entry: SuiteProblem, timeout: float, scratch: Path, in_process: bool):
+def _relevance(entry: SuiteProblem, timeout: float, scratch: Path, in_process: bool, tool: list[str], env: dict):
     import json
 
     if in_process:
@@ -228,9 +251,7 @@ def _relevance(entry: SuiteProblem, timeout: float, scratch: Path, in_process: b
         solved = result.status is PlanStatus.SOLVED
         return result.objects_kept, len(result.attempts), elapsed if solved else None
     command = [
-        sys.executable,
-        "-m",
-        "relevance_plan",
+        *tool,
         "plan",
         str(entry.domain),
         str(entry.problem),
@@ -243,7 +264,7 @@ def _relevance(entry: SuiteProblem, timeout: float, scratch: Path, in_process: b
         str(scratch / "plan"),
     ]
     started = time.perf_counter()
-    completed = subprocess.run(command, capture_output=True, timeout=timeout + 60)
+    completed = subprocess.run(command, capture_output=True, timeout=timeout + 60, env=env)
     elapsed = time.perf_counter() - started
     if completed.returncode != 0:
         return None, None, None
@@ -298,13 +319,15 @@ def main() -> int:
     parser.add_argument("--per-folder", type=int, default=1, help="problems per folder in speed mode")
     parser.add_argument("--timeout", type=float, default=60.0)
     parser.add_argument("--in-process", action="store_true", help="time the library call, not the command")
+    parser.add_argument("--installed", action="store_true", help="run a wheel of the checkout in a new venv")
+    parser.add_argument("--repeat", type=int, default=1, help="runs of each command per problem (medians)")
     args = parser.parse_args()
     for root in args.roots:
         if not Path(root).is_dir():
             parser.error(f"not a folder: {root}")
     if args.mode == "accept":
         return accept(args.roots)
-    return speed(args.roots, args.per_folder, args.timeout, args.in_process)
+    return speed(args.roots, args.per_folder, args.timeout, args.in_process, args.installed, max(1, args.repeat))
 
 
 if __name__ == "__main__":

@@ -41,7 +41,6 @@ import os
 import statistics
 import subprocess
 import sys
-import sysconfig
 import tempfile
 import time
 from pathlib import Path
@@ -49,37 +48,19 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))
 
+from installed import compiled_checkout, installed_tool  # noqa: E402
+
 from relevance_plan.generators.classic import generate_classic_problem  # noqa: E402
 from relevance_plan.planning.fd_command import find_fast_downward  # noqa: E402
 
 # Sizes where the bare driver takes from a few tenths of a second to a few seconds.
 SIZES = {"blocksworld": 20, "logistics": 40, "gripper": 40, "ferry": 40, "grid": 40, "miconic": 40}
-TOOL = [sys.executable, "-m", "relevance_plan"]
 
 
 def timed(command: list[str], cwd: Path, env: dict[str, str]) -> tuple[float, int, str]:
     started = time.perf_counter()
     done = subprocess.run(command, cwd=cwd, env=env, capture_output=True, text=True, timeout=600)
     return time.perf_counter() - started, done.returncode, done.stdout
-
-
-def installed_tool(folder: Path) -> list[str]:
-    """The checkout as a user installs it: a wheel in a new virtual environment whose other
-    packages come from this one (a ``.pth`` line, which adds a folder but runs none of its hooks)."""
-    subprocess.run(
-        [sys.executable, "-m", "pip", "wheel", "-q", "--no-deps", "-w", str(folder / "wheel"), str(REPO)], check=True
-    )
-    venv = folder / "venv"
-    subprocess.run([sys.executable, "-m", "venv", str(venv)], check=True)
-    python = venv / "bin" / "python"
-    wheel = next((folder / "wheel").glob("*.whl"))
-    subprocess.run([str(python), "-m", "pip", "install", "-q", "--no-deps", str(wheel)], check=True)
-    site = subprocess.run(
-        [str(python), "-c", "import sysconfig; print(sysconfig.get_paths()['purelib'])"],
-        check=True, capture_output=True, text=True,
-    ).stdout.strip()  # fmt: skip
-    Path(site, "zz-dependencies.pth").write_text(sysconfig.get_paths()["purelib"] + "\n")
-    return [str(venv / "bin" / "relevance-plan")]
 
 
 def main() -> int:
@@ -98,11 +79,8 @@ def main() -> int:
             env = dict(os.environ)
             print(f"relevance-plan as installed from a wheel of {REPO}: {tool[0]}")
         else:
-            tool = TOOL
-            subprocess.run([sys.executable, "-m", "compileall", "-q", str(REPO / "relevance_plan")], check=True)
+            tool, env = compiled_checkout()
             print(f"relevance-plan from {REPO / 'relevance_plan'}, bytecode compiled beforehand (as installed)")
-            pythonpath = os.pathsep.join(filter(None, [str(REPO), os.environ.get("PYTHONPATH")]))
-            env = {**os.environ, "PYTHONPATH": pythonpath}
         print(f"{'problem':<24} {'bare':>7} {'pure':>7} {'relev.':>7} {'overhead':>9} {'target':>7}  rel<=pure*1.1+0.3")
         for world in args.worlds:
             problem = generate_classic_problem(world, args.seed, 1, SIZES[world], dense=True)
