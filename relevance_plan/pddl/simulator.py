@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import itertools
 import time
+from collections import defaultdict
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 
@@ -77,6 +78,7 @@ class Simulator:
         self.objects = all_objects(domain, problem)
         self.deadline = deadline
         self._by_type: dict[str, tuple[str, ...]] = {}
+        self._member_sets: dict[str, frozenset[str]] = {}
         self._work = 0
         self._strata = _strata(domain) if domain.derived else ()
 
@@ -231,12 +233,86 @@ class Simulator:
             changed = True
             while changed:
                 changed = False
+                # facts derived in this round are joined in the next (changed): the index is a snapshot
+                by_predicate: dict[str, list[f.GroundAtom]] = defaultdict(list)
+                for fact in state.facts:
+                    by_predicate[fact[0]].append(fact)
                 for rule in stratum:
-                    for binding in self.bindings(rule.parameters, {}):
+                    for binding in self._rule_bindings(rule, by_predicate):
                         fact = f.ground(rule.head, binding)
                         if fact not in state.facts and self.holds(rule.body, state, binding):
                             state.facts.add(fact)
                             changed = True
+
+    def _rule_bindings(
+        self, rule: DerivedPredicate, facts: Mapping[str, list[f.GroundAtom]]
+    ) -> Iterator[dict[str, str]]:
+        """Bindings of ``rule``'s parameters under which the positive atoms the body needs hold (those of
+        its top-level conjunction, and of the conjunctions under its top-level ``exists``, whose
+        variables join too), found by joining those atoms with ``facts`` rather than by trying every
+        object for every parameter; the caller checks the whole body."""
+        types = dict(rule.parameters)
+        needed = sorted(_needed_atoms(rule.body, types), key=lambda atom: len(facts.get(atom.predicate, ())))
+        names = tuple(v for v, _ in rule.parameters)
+        seen: set[tuple[str, ...]] = set()
+
+        def extend(index: int, binding: dict[str, str]) -> Iterator[dict[str, str]]:
+            if index == len(needed):
+                free = tuple((v, t) for v, t in rule.parameters if v not in binding)
+                for full in self.bindings(free, binding):
+                    key = tuple(full[v] for v in names)
+                    if key not in seen:  # several witnesses of an exists give one binding of the rule
+                        seen.add(key)
+                        yield {v: full[v] for v in names}
+                return
+            atom = needed[index]
+            for fact in facts.get(atom.predicate, ()):
+                self.tick()
+                found = self._match(atom.args, fact, binding, types)
+                if found is not None:
+                    yield from extend(index + 1, found)
+
+        return extend(0, {})
+
+    def _match(
+        self, args: tuple[str, ...], fact: f.GroundAtom, binding: dict[str, str], types: Mapping[str, str]
+    ) -> dict[str, str] | None:
+        """``binding`` extended so that ``args`` match ``fact``, each new value of its variable's type; or None."""
+        if len(args) != len(fact) - 1:
+            return None
+        found = binding
+        for arg, value in zip(args, fact[1:]):
+            if not arg.startswith("?"):
+                if arg != value:
+                    return None
+            elif arg in found:
+                if found[arg] != value:
+                    return None
+            elif value in self._members(types[arg]):
+                if found is binding:
+                    found = dict(binding)
+                found[arg] = value
+            else:
+                return None
+        return found
+
+    def _members(self, type_name: str) -> frozenset[str]:
+        cached = self._member_sets.get(type_name)
+        if cached is None:
+            cached = self._member_sets[type_name] = frozenset(self.objects_of(type_name))
+        return cached
+
+
+def _needed_atoms(formula: f.Formula, types: dict[str, str]) -> Iterator[f.Atom]:
+    """The positive atoms that must hold for ``formula`` to hold, through conjunctions and ``exists``
+    (whose variables are added to ``types``; one that shadows a name already there is not looked into)."""
+    for part in f.conjuncts(formula):
+        if isinstance(part, f.Atom):
+            if all(a in types for a in part.args if a.startswith("?")):
+                yield part
+        elif isinstance(part, f.Exists) and not any(v in types for v, _ in part.parameters):
+            types.update(part.parameters)
+            yield from _needed_atoms(part.body, types)
 
 
 ADDITIVE = frozenset({"increase", "decrease"})
