@@ -6,8 +6,8 @@ and ARGUMENTS are what that driver would get.  Fast Downward's own driver
 spends 50-90 ms of a run before the translator starts (its interpreter with
 ``site``, argparse, logging, its alias table) and ~10 ms after the search;
 on the small problems that are most of the field's benchmarks, that is a
-fifth of the planner's time.  This one starts the translator after ~15 ms
-and reads the alias table while the translator runs.
+fifth of the planner's time.  This one starts the translator 20-25 ms after
+its own start and reads the alias table while the translator runs.
 
 It takes the arguments ``fd_command.build_command`` writes: ``--plan-file``,
 ``--overall-time-limit``, ``--overall-memory-limit``, ``--keep-sas-file``,
