@@ -79,6 +79,8 @@ class Simulator:
         self.deadline = deadline
         self._by_type: dict[str, tuple[str, ...]] = {}
         self._member_sets: dict[str, frozenset[str]] = {}
+        # per derived rule (by id: self.domain keeps it alive): the atoms its body needs, the variables' types
+        self._needed: dict[int, tuple[tuple[f.Atom, ...], dict[str, str]]] = {}
         self._work = 0
         self._strata = _strata(domain) if domain.derived else ()
 
@@ -251,8 +253,12 @@ class Simulator:
         its top-level conjunction, and of the conjunctions under its top-level ``exists``, whose
         variables join too), found by joining those atoms with ``facts`` rather than by trying every
         object for every parameter; the caller checks the whole body."""
-        types = dict(rule.parameters)
-        needed = sorted(_needed_atoms(rule.body, types), key=lambda atom: len(facts.get(atom.predicate, ())))
+        found = self._needed.get(id(rule))
+        if found is None:  # the same for every state: found once per rule
+            types = dict(rule.parameters)
+            found = self._needed[id(rule)] = (tuple(_needed_atoms(rule.body, types)), types)
+        atoms, types = found
+        needed = sorted(atoms, key=lambda atom: len(facts.get(atom.predicate, ())))
         names = tuple(v for v, _ in rule.parameters)
         seen: set[tuple[str, ...]] = set()
 

@@ -31,7 +31,7 @@ The guard exits as the planner did (a death by signal N as 256 - N, which
 The module is imported by the tool too: :func:`kill_descendants` is the one
 sweep, used by the guard and by the tool.  It needs the standard library
 only, and imports little, since the guard's start-up delays the planner's:
-``_signal`` rather than ``signal`` (whose enums cost ~7 ms), one thread
+``_signal`` rather than ``signal`` (whose enums cost ~7 ms), no thread
 (the planner's end and the tool's are both file descriptors to wait on),
 ``posix_spawn`` rather than ``subprocess``, ``shutil`` only to remove a
 scratch directory.
@@ -191,14 +191,18 @@ def _leave_cgroup(cgroup: str) -> None:
             pass
 
 
-def _kill_cgroup_members(cgroup: str) -> None:
-    """SIGKILL every process of ``cgroup`` but this one (they were not our descendants)."""
+def cgroup_members(cgroup: str) -> list[int]:
+    """The pids in ``cgroup`` (none if it cannot be read)."""
     try:
         with open(os.path.join(cgroup, "cgroup.procs")) as stream:
-            members = [int(line) for line in stream if line.strip()]
+            return [int(line) for line in stream if line.strip()]
     except (OSError, ValueError):
-        return
-    for pid in members:
+        return []
+
+
+def kill_cgroup_members(cgroup: str) -> None:
+    """SIGKILL every process of ``cgroup`` but this one."""
+    for pid in cgroup_members(cgroup):
         if pid != os.getpid():
             try:
                 os.kill(pid, signal.SIGKILL)
@@ -215,13 +219,7 @@ def _remove_scratch(workdir: str) -> None:
 
 def _alone_in(cgroup: str) -> bool:
     """Whether this process is the only one left in ``cgroup`` (then there is nothing to sweep)."""
-    if cgroup == NO_CGROUP:
-        return False
-    try:
-        with open(os.path.join(cgroup, "cgroup.procs")) as stream:
-            return [line.strip() for line in stream if line.strip()] == [str(os.getpid())]
-    except OSError:
-        return False
+    return cgroup != NO_CGROUP and cgroup_members(cgroup) == [os.getpid()]
 
 
 def _stop_everything(subreaper: bool, cgroup: str) -> None:
@@ -232,7 +230,7 @@ def _stop_everything(subreaper: bool, cgroup: str) -> None:
         return
     kill_descendants(os.getpid(), timeout=5.0, reap=True)
     if cgroup != NO_CGROUP:
-        _kill_cgroup_members(cgroup)
+        kill_cgroup_members(cgroup)  # they were not our descendants
     _remove_scratch(workdir)
     if cgroup != NO_CGROUP:
         _leave_cgroup(cgroup)

@@ -315,7 +315,7 @@ def _await_run_death(run: _Run, timeout: float = 2.0) -> None:
 
     def running() -> bool:
         # Every process of the run is in its cgroup, whatever its group: no walk through /proc needed.
-        return bool(spawn.cgroup_members(run.cgroup)) if run.cgroup is not None else _group_runs(run.pgid)
+        return bool(guard.cgroup_members(run.cgroup)) if run.cgroup is not None else _group_runs(run.pgid)
 
     while running():
         if time.monotonic() > deadline:

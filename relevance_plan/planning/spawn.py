@@ -17,6 +17,7 @@ and remove it.
 from __future__ import annotations
 
 import _signal  # signal's names without its enums
+import itertools
 import os
 import sys
 import time
@@ -166,6 +167,7 @@ def _inheritable_descriptors() -> list[int]:
 
 
 def _which(name: str) -> str | None:
+    """``shutil.which`` for an executable file, without importing shutil (and its ``re``) on this path."""
     for folder in os.environ.get("PATH", os.defpath).split(os.pathsep):
         candidate = os.path.join(folder or ".", name)
         if os.path.isfile(candidate) and os.access(candidate, os.X_OK):
@@ -176,7 +178,7 @@ def _which(name: str) -> str | None:
 # --------------------------------------------------------------------------- cgroups
 
 _OWN_CGROUP: list[str | None] = []  # found once
-_CGROUP_NUMBER = [0]
+_CGROUP_NUMBERS = itertools.count(1)
 _CGROUPS_REFUSED: set[str] = set()  # parents where creating a cgroup failed once: not tried again
 
 
@@ -213,8 +215,7 @@ def new_cgroup() -> str | None:
     parent = _own_cgroup()
     if parent is None or parent in _CGROUPS_REFUSED:
         return None
-    _CGROUP_NUMBER[0] += 1
-    path = os.path.join(parent, f"relevance-plan-{os.getpid()}-{_CGROUP_NUMBER[0]}")
+    path = os.path.join(parent, f"relevance-plan-{os.getpid()}-{next(_CGROUP_NUMBERS)}")
     try:
         os.mkdir(path)
     except OSError:
@@ -223,26 +224,12 @@ def new_cgroup() -> str | None:
     return path
 
 
-def cgroup_members(cgroup: str) -> list[int]:
-    try:
-        with open(os.path.join(cgroup, "cgroup.procs")) as stream:
-            return [int(line) for line in stream if line.strip()]
-    except (OSError, ValueError):
-        return []
-
-
 def kill_cgroup(cgroup: str) -> None:
     try:
         with open(os.path.join(cgroup, "cgroup.kill"), "w") as stream:
             stream.write("1")
-        return
     except OSError:
-        pass  # before Linux 5.14: one by one
-    for pid in cgroup_members(cgroup):
-        try:
-            os.kill(pid, _signal.SIGKILL)
-        except OSError:
-            pass
+        guard.kill_cgroup_members(cgroup)  # before Linux 5.14: one by one
 
 
 def remove_cgroup(cgroup: str, timeout: float = 2.0) -> None:
