@@ -126,7 +126,8 @@ CORPUS = Path(os.environ.get("RELEVANCE_PLAN_CORPUS", "/work/corpus"))
 @pytest.mark.skipif(not CORPUS.is_dir(), reason="the field corpus is not on this machine")
 def test_the_field_corpus_round_trips():
     checked = 0
-    for domain_path in sorted(CORPUS.rglob("*domain*.pddl"))[:400]:
+    paths = sorted(CORPUS.rglob("*domain*.pddl"))[:400]
+    for domain_path in paths:
         try:
             text = domain_path.read_text(errors="replace")
             read_domain(text)
@@ -134,4 +135,4 @@ def test_the_field_corpus_round_trips():
             continue  # refused inputs are the sweep's business
         round_trip(text, None)
         checked += 1
-    assert checked > 20
+    assert paths and checked >= len(paths) // 2  # most of whatever corpus this machine has

@@ -106,8 +106,17 @@ class Domain:
     def is_subtype(self, type_name: str, of: str) -> bool:
         if of == "object":
             return True
-        targets = either_members(of)
-        return any(t in self.ancestors(member) for member in either_members(type_name) for t in targets)
+        # asked once per object and type by the analyses: remembered per pair (a domain has few types)
+        known = self.__dict__.get("_subtypes")
+        if known is None:
+            known = {}
+            object.__setattr__(self, "_subtypes", known)
+        answer = known.get((type_name, of))
+        if answer is None:
+            targets = either_members(of)
+            answer = any(t in self.ancestors(member) for member in either_members(type_name) for t in targets)
+            known[(type_name, of)] = answer
+        return answer
 
     def action(self, name: str) -> Action | None:
         return self._actions_by_name.get(name)

@@ -33,7 +33,7 @@ from relevance_plan.pddl.model import (
     TimedLiteral,
     frozen,
 )
-from relevance_plan.pddl.sexpr import Item, Node, Symbol, check_deadline, collection_paused, parse_sexpr
+from relevance_plan.pddl.sexpr import Item, LineIndex, Node, Symbol, check_deadline, collection_paused, parse_sexpr
 
 # Accepted as written; PDDL+ is refused (see UNSUPPORTED_REQUIREMENTS).
 KNOWN_REQUIREMENTS = frozenset(
@@ -690,8 +690,84 @@ def read_problem(text: str, domain: Domain, path: str | None = None, deadline: f
 
 
 def _read_problem(text: str, domain: Domain, path: str | None, deadline: float | None) -> Problem:
+    flat = _flat_init(text)
+    if flat is not None:
+        # A big :init of plain atoms (125,000 ``above`` facts) is read with string methods instead of
+        # one node per token; anything it does not expect, the full reading reads and reports.
+        blanked, atoms = flat
+        try:
+            return _read_problem_from(text, parse_sexpr(blanked, path, deadline), domain, path, deadline, atoms)
+        except RelevancePlanError:
+            pass
+    return _read_problem_from(text, parse_sexpr(text, path, deadline), domain, path, deadline, None)
+
+
+# The one ``(:init`` of a problem; a body of plain atoms (no nested list, no comment) up to its ``)``;
+# one such atom (group 1: its inside).
+_INIT_START = re.compile(r"\(\s*:init(?=[\s();])", re.IGNORECASE)
+_PLAIN_BODY = re.compile(r"(?:\s+|\([^();]*\))*")
+_PLAIN_ATOM = re.compile(r"\(([^();]*)\)")
+FLAT_INIT_FROM = 2000  # atoms in :init before the string-method reading pays
+
+
+def _flat_init(text: str) -> tuple[str, list[tuple[int, int, str]]] | None:
+    """``text`` with its :init body blanked out (line breaks kept, so every offset and line stays),
+    and the body's atoms (start, end, inside); None unless the body holds only plain atoms, enough
+    of them."""
+    found = list(_INIT_START.finditer(text))
+    if len(found) != 1:
+        return None
+    start = found[0].start()
+    line_start = max(text.rfind("\n", 0, start), text.rfind("\r", 0, start)) + 1
+    if ";" in text[line_start:start]:
+        return None  # in a comment
+    body = found[0].end()
+    plain = _PLAIN_BODY.match(text, body)
+    end = plain.end() if plain is not None else body
+    if text[end : end + 1] != ")":
+        return None
+    inside = text[body:end]
+    if inside.count("(") < FLAT_INIT_FROM or "\r" in inside:
+        return None
+    atoms = [(m.start() + body, m.end() + body, m.group(1)) for m in _PLAIN_ATOM.finditer(inside)]
+    blank = "\n".join(" " * len(line) for line in inside.split("\n"))
+    return text[:body] + blank + text[end:], atoms
+
+
+def _read_flat_init(
+    reader: _Reader, text: str, atoms: list[tuple[int, int, str]], scope: _Scope, objects: Mapping[str, str]
+) -> _InitParts:
+    """What :func:`_read_init` makes of plain atoms; a PDDLParseError at the first one it would
+    refuse (the caller then reads the file in full, for the full message)."""
+    parts = _InitParts(set(), {}, [], [], {})
+    predicates, known = scope.predicates, scope.objects or {}
+    line_of = LineIndex(text).line_of
+    facts, lines, spans, names = parts.facts, parts.lines, parts.spans, objects.keys()
+    is_known = known.__contains__
+    constants = known.keys() - names
+    for start, end, inside in atoms:
+        words = inside.lower().split()
+        declared = predicates.get(words[0]) if words else None
+        args = words[1:]
+        if declared is None or len(declared) != len(args) or not all(map(is_known, args)):
+            raise PDDLParseError("not a plain atom", line=line_of(start))
+        ground = tuple(words)
+        facts.add(ground)
+        if ground not in lines:
+            lines[ground] = line_of(start)
+        spans.append(((start, end), frozenset(names & args if constants else args)))
+    return parts
+
+
+def _read_problem_from(
+    text: str,
+    root: Node,
+    domain: Domain,
+    path: str | None,
+    deadline: float | None,
+    flat_atoms: list[tuple[int, int, str]] | None,
+) -> Problem:
     reader = _Reader(path)
-    root = parse_sexpr(text, path, deadline)
     name, sections = reader.header(root, "problem")
     found: dict[str, Any] = {"init": []}
     requirements: frozenset[str] = frozenset()
@@ -733,7 +809,11 @@ def _read_problem(text: str, domain: Domain, path: str | None, deadline: float |
     known = dict(domain.constants)
     known.update(objects)
     scope = _Scope(domain.types, domain.predicates, domain.functions, MappingProxyType(known), {}, in_problem=True)
-    init = _read_init(reader, found["init"], scope, objects, deadline)
+    if flat_atoms is None:
+        init = _read_init(reader, found["init"], scope, objects, deadline)
+    else:
+        check_deadline(deadline, "reading ':init'", path)
+        init = _read_flat_init(reader, text, flat_atoms, scope, objects)
     goal = _read_goal(reader, found.get(":goal"), replace(scope, preferences=True))
     constraints = None
     if ":constraints" in found:

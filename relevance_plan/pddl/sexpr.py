@@ -64,6 +64,10 @@ class LineIndex:
     def line_of(self, offset: int) -> int:
         return bisect.bisect_right(self._starts, offset)
 
+    def start_of(self, line: int) -> float:
+        """Where ``line`` starts (infinity past the last line)."""
+        return self._starts[line - 1] if line <= len(self._starts) else float("inf")
+
 
 def check_deadline(deadline: float | None, what: str, path: str | None = None, line: int | None = None) -> None:
     """``OutOfTimeError`` naming ``what`` when ``deadline`` (``time.monotonic()`` seconds) has passed."""
@@ -123,8 +127,8 @@ def _read_lists(text: str, path: str | None, deadline: float | None) -> Node | N
     root: Node | None = None
     for count, match in enumerate(_TOKEN.finditer(text)):
         start = match.start()
-        while start >= next_line:
-            line += 1
+        if start >= next_line:
+            line = bisect.bisect_right(starts, start) + 1
             next_line = starts[line - 1]
         if not count & (DEADLINE_STRIDE - 1):
             check_deadline(deadline, "reading the file", path, line)

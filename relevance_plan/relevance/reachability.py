@@ -21,7 +21,6 @@ past a work budget, or a few seconds, rather than cost more than the planner wou
 
 from __future__ import annotations
 
-import heapq
 import math
 import time
 import weakref
@@ -43,6 +42,9 @@ DEFAULT_BUDGET = 400_000  # bindings tried before the check gives up
 BUDGET_PER_OBJECT = 5_000  # the budget grows with the problem, as the planner's own grounding does
 REPAIR_SECONDS = 5.0  # and the repair's checks together stop after this long
 REPAIR_MAX_FAN = 4.0  # repair candidates are ranked by hops that do not pass from a class-like value to its members
+DOMINANCE_TRIES = 8  # kept objects of its class a repair candidate is compared with
+SHARED_FROM = 8  # goal objects of one interchangeable class before they share one exploration
+MEMBER = "#member"  # stands for every kept object of that class in the shared exploration (not a PDDL name)
 
 Args = tuple[str, ...]  # a condition's or an effect's arguments: variables (``?x``) and names
 Condition = tuple[str, Args]  # (predicate, args)
@@ -97,6 +99,15 @@ def _schemas(domain: Domain) -> list[_Schema]:
 
 
 @dataclass(frozen=True)
+class _Shared:
+    """A class whose objects the exploration may stand for by one placeholder (see :func:`_shared_class`)."""
+
+    name: str  # the class
+    members: frozenset[str]  # its objects
+    variable: Mapping[int, str]  # id(schema) -> the parameter that holds a member, for the schemas that have one
+
+
+@dataclass(frozen=True)
 class _Compiled:
     """What every check on one task shares (cached per task: a repair runs several checks)."""
 
@@ -104,6 +115,7 @@ class _Compiled:
     static: frozenset[str]  # predicates no action and no timed literal changes
     timed: frozenset[GroundAtom]  # atoms a timed initial literal makes true
     nullary: frozenset[GroundAtom]  # initial and timed atoms without arguments
+    shared: _Shared | None = None
 
 
 def _compiled(task: PlanningTask) -> _Compiled:
@@ -117,7 +129,9 @@ def _compiled(task: PlanningTask) -> _Compiled:
             literal.atom[0] for literal in problem.timed_literals if literal.atom
         }
         nullary = frozenset(atom for atom in (*problem.init, *timed) if len(atom) == 1)
-        cached = _Compiled(_compiled_schemas(task), frozenset(static), timed, nullary)
+        schemas = _compiled_schemas(task)
+        shared = None if problem.timed_literals else _shared_class(task, schemas)
+        cached = _Compiled(schemas, frozenset(static), timed, nullary, shared)
         _COMPILED[task] = cached
     return cached
 
@@ -162,6 +176,53 @@ def _compiled_schemas(task: PlanningTask) -> list[_Schema]:
         )
         result.append(replace(schema, pre=pre))
     return result
+
+
+def _shared_class(task: PlanningTask, schemas: Sequence[_Schema]) -> _Shared | None:
+    """The class of many goal objects that never meet: every action holds at most one of them, in a
+    parameter only they fit, and adds only facts about it; no fact names two.  Then what one member
+    can reach depends on the rest of the world and its own facts only, so the exploration runs once
+    with a placeholder for all of them and each goal member follows the actions found for the
+    placeholder from its own initial facts (packages in logistics, passengers in miconic: the bulk
+    of a many-goal exploration)."""
+    domain, problem = task.typing.domain, task.typing.problem
+    classes = problem.objects
+    goal = [(p, *args) for p, args in _required_atoms(problem.goal)]
+    in_goal: dict[str, set[str]] = defaultdict(set)
+    for atom in goal:
+        for arg in atom[1:]:
+            if arg in classes:
+                in_goal[classes[arg]].add(arg)
+    by_object = task.init_index.by_object
+    for name, found in sorted(in_goal.items(), key=lambda item: (-len(item[1]), item[0])):
+        if len(found) < SHARED_FROM:
+            break
+        members = frozenset(o for o, c in classes.items() if c == name)
+        others = {c for c in classes.values() if c != name} | set(domain.constants.values())
+        if name in domain.constants.values():
+            continue
+        variable: dict[int, str] = {}
+        for schema in schemas:
+            holding = [(v, t) for v, t in zip(schema.parameters, schema.types) if domain.is_subtype(name, t)]
+            if any(domain.is_subtype(name, t) for t in schema.ranged) or len(holding) > 1:
+                break
+            if not holding:
+                continue
+            v, t = holding[0]
+            if not schema.bound_by_pre or any(domain.is_subtype(o, t) for o in others):
+                break
+            if any(v not in args for _, args, _ in schema.add):
+                break
+            variable[id(schema)] = v
+        else:
+            two = (
+                atom
+                for atom in (*goal, *(a for m in members for a in by_object.get(m, ())))
+                if sum(arg in members for arg in atom[1:]) > 1
+            )
+            if variable and next(two, None) is None:
+                return _Shared(name, members, variable)
+    return None
 
 
 @dataclass(frozen=True)
@@ -220,17 +281,35 @@ class _Exploration:
 
     def __init__(self, task: PlanningTask, kept: Set[str], work: _Work):
         domain, problem = task.typing.domain, task.typing.problem
+        compiled = _compiled(task)
         self.domain = domain
         self.work = work
-        self.allowed = set(kept) | set(domain.constants)
+        self.shared = compiled.shared
+        # with a shared class, its kept members are not objects of the exploration: MEMBER stands for them
+        self.kept_members: set[str] = set(kept) & self.shared.members if self.shared else set()
+        self.allowed = set(kept) - self.kept_members | set(domain.constants)
         self.types_of = dict(domain.constants)
         self.types_of.update(problem.objects)
+        if self.shared is not None:
+            self.allowed.add(MEMBER)
+            self.types_of[MEMBER] = self.shared.name
+        # the placeholder's steps, each with its conditions on the placeholder (shared class only)
+        self.edges: list[tuple[tuple[GroundAtom, ...], tuple[GroundAtom, ...], Step, _Schema, Binding]] = []
+        self.edges_from: dict[GroundAtom, list[int]] = defaultdict(list)
+        self.edge_steps: set[Step] = set()
+        # Which members have reached each of the placeholder's facts, as one integer with a bit per
+        # member, and when each bit came (the step, None: initial): all members advance at once.
+        self.bit_of: dict[str, int] = {}
+        self.holders: dict[GroundAtom, int] = {}
+        self.arrivals: dict[GroundAtom, list[tuple[int, int | None]]] = defaultdict(list)
+        self.spreading: deque[GroundAtom] = deque()
+        self.seeds: list[tuple[GroundAtom, str]] = []  # (pattern, member): a member's initial fact not yet spread
+        self.edges_spread = 0  # the placeholder's steps fired at least once
         self.goal = [(p, *args) for p, args in _required_atoms(problem.goal) if not any(a[0] == "?" for a in args)]
         self.facts: dict[GroundAtom, _Achiever | None] = {}  # the step that first reached each fact
         self.queue: deque[GroundAtom] = deque()
         self.by_object = task.init_index.by_object
         self.init = problem.init
-        compiled = _compiled(task)
         # timed initial literals that make a fact true count as reached: a plan may wait for them
         self.timed = compiled.timed
         self.of_type: dict[str, list[str]] = {}
@@ -256,13 +335,14 @@ class _Exploration:
         self.signatures: dict[str, list[tuple[str, ...]]] = defaultdict(list)
         self.compatible_cache: dict[tuple[str, tuple[str | None, ...]], tuple[int, list[tuple[str, ...]]]] = {}
         # applications that ranged over every kept object of some types: run again when those grow
+        self.effects_added: set[tuple[object, ...]] = set()
         self.ranging: list[tuple[_Schema, Binding, frozenset[str]]] = []
         self.missing = set(self.goal)
         # The initial static facts (a map, the floors above each other) are indexed at once and trigger
         # nothing: every dynamic fact is processed after them, and its joins find them.  Only the
         # schemas whose conditions are all static need a join of their own.
         static = compiled.static
-        self._reach_initial(self.allowed, compiled.nullary, static)
+        self._reach_initial(self.allowed | self.kept_members, compiled.nullary, static)
         for schema in self.schemas:
             if not schema.pre:
                 self.apply(schema, {})
@@ -277,10 +357,17 @@ class _Exploration:
         ``static`` predicate are processed at once (they trigger nothing), the others queued."""
         found = set(also)
         allowed = self.allowed
+        members = self.shared.members if self.shared else frozenset()
         for name in names:
             for atom in self.by_object.get(name, ()):
-                if allowed.issuperset(atom[1:]) and (atom in self.init or atom in self.timed):
-                    found.add(atom)
+                if members.isdisjoint(atom[1:]):
+                    if allowed.issuperset(atom[1:]) and (atom in self.init or atom in self.timed):
+                        found.add(atom)
+                    continue
+                pattern = self._pattern(atom)
+                if pattern is not None and allowed.issuperset(pattern[1:]) and atom in self.init:
+                    found.add(pattern)
+                    self.seeds.append((pattern, next(arg for arg in atom[1:] if arg in members)))
         # sorted: the same objects give the same relaxed plan whatever order the sets were built in
         for atom in sorted(found - self.facts.keys()):
             self.facts[atom] = None
@@ -289,6 +376,18 @@ class _Exploration:
                 self._index(atom)
             else:
                 self.queue.append(atom)
+
+    def _pattern(self, atom: GroundAtom) -> GroundAtom | None:
+        """``atom`` with its member of the shared class as MEMBER (None: that member is not kept)."""
+        members = self.shared.members if self.shared else frozenset()
+        args = []
+        for arg in atom[1:]:
+            if arg in members:
+                if arg not in self.kept_members:
+                    return None
+                arg = MEMBER
+            args.append(arg)
+        return (atom[0], *args)
 
     def _index(self, fact: GroundAtom) -> None:
         """Make ``fact`` visible to the joins."""
@@ -302,13 +401,17 @@ class _Exploration:
 
     def add(self, names: Set[str]) -> None:
         """Bring ``names`` into the kept set; :meth:`run` then explores what they make reachable."""
-        new = {name for name in names if name not in self.allowed}
+        new = {name for name in names if name not in self.allowed and name not in self.kept_members}
         if not new:
             return
-        self.allowed |= new
+        if self.shared is not None:
+            self.kept_members |= new & self.shared.members
+        self.allowed |= new - self.kept_members
         grown = set()
         for type_name, members in self.of_type.items():
-            fitting = sorted(o for o in new if self.domain.is_subtype(self.types_of.get(o, "object"), type_name))
+            fitting = sorted(
+                o for o in new - self.kept_members if self.domain.is_subtype(self.types_of.get(o, "object"), type_name)
+            )
             if fitting:
                 members.extend(fitting)
                 self.fits[type_name] = frozenset(members)
@@ -317,7 +420,7 @@ class _Exploration:
         self._reach_initial(new)
         for schema, binding, ranged in list(self.ranging):
             if not grown.isdisjoint(ranged):
-                self.apply(schema, binding, again=True)
+                self.apply(schema, binding, again=new)
 
     def outcome(self) -> Reachability:
         unreached = tuple(atom for atom in self.goal if atom not in self.facts)
@@ -358,6 +461,110 @@ class _Exploration:
                 # apply() adds facts but never processes them: the join's lists do not change under it
                 for found in self.join(rest, binding, fits):
                     self.apply(schema, found)
+        if self.shared is not None and self.missing:
+            # the placeholder's facts are all found (the queue is empty): the members follow them
+            self._spread()
+            for atom in sorted(self.missing):
+                name = next((arg for arg in atom[1:] if arg in self.kept_members), None)
+                if name is not None:
+                    pattern = self._pattern(atom)
+                    if pattern is not None and self.holders.get(pattern, 0) & self._bit(name):
+                        self._record(name, pattern)
+
+    def _bit(self, name: str) -> int:
+        bit = self.bit_of.get(name)
+        if bit is None:
+            bit = self.bit_of[name] = 1 << len(self.bit_of)
+        return bit
+
+    def _spread(self) -> None:
+        """Carry the members' bits along the placeholder's steps to a fixpoint: a step passes on the
+        bits its conditions on the placeholder all hold (every member's bit when it has none)."""
+        holders, arrivals, spreading = self.holders, self.arrivals, self.spreading
+        everyone = 0
+        for name in self.kept_members:
+            everyone |= self._bit(name)
+        for pattern, name in self.seeds:
+            bit = self._bit(name)
+            if not holders.get(pattern, 0) & bit:
+                holders[pattern] = holders.get(pattern, 0) | bit
+                arrivals[pattern].append((bit, None))
+                spreading.append(pattern)
+        self.seeds.clear()
+        edges, work = self.edges, self.work
+
+        def fire(index: int) -> None:
+            needs, adds = edges[index][0], edges[index][1]
+            if needs:
+                bits = holders.get(needs[0], 0)
+                for need in needs[1:]:
+                    bits &= holders.get(need, 0)
+            else:
+                bits = everyone
+            if not bits:
+                return
+            for pattern in adds:
+                old = holders.get(pattern, 0)
+                new = bits & ~old
+                if new:
+                    holders[pattern] = old | new
+                    arrivals[pattern].append((new, index))
+                    spreading.append(pattern)
+
+        # steps found since the last spread, and those with no condition on the placeholder (new members)
+        for index in range(self.edges_spread, len(edges)):
+            fire(index)
+        for index in range(self.edges_spread):
+            if not edges[index][0]:
+                fire(index)
+        self.edges_spread = len(edges)
+        while spreading:
+            pattern = spreading.popleft()
+            work.spend()
+            for index in self.edges_from.get(pattern, ()):
+                fire(index)
+
+    def _record(self, name: str, pattern: GroundAtom) -> None:
+        """The fact ``pattern`` stands for with member ``name``, and the facts the steps that first
+        brought ``name`` there need, back to its initial ones, each with its step (what a relaxed
+        plan walks back through)."""
+        facts, edges, bit = self.facts, self.edges, self._bit(name)
+        stack = [pattern]
+        while stack:
+            pattern = stack.pop()
+            fact = tuple(name if arg == MEMBER else arg for arg in pattern)
+            if fact in facts:
+                continue
+            index = next(step for bits, step in self.arrivals[pattern] if bits & bit)
+            if index is None:
+                facts[fact] = None
+            else:
+                needs, _, step, schema, binding = edges[index]
+                own = {v: name if value == MEMBER else value for v, value in binding.items()}
+                facts[fact] = _Achiever(tuple(name if arg == MEMBER else arg for arg in step), schema, own)
+                stack.extend(needs)
+            self.missing.discard(fact)
+
+    def _edge(self, schema: _Schema, binding: Binding) -> None:
+        """Record a step of the placeholder with the conditions on it that a member must reach first."""
+        step = (schema.name,) + tuple(binding[v] for v in schema.parameters)
+        if step in self.edge_steps:
+            return
+        self.edge_steps.add(step)
+        needs = tuple(
+            sorted(
+                {
+                    fact
+                    for predicate, args in schema.pre
+                    if MEMBER in (fact := (predicate, *(binding.get(a, a) for a in args)))
+                }
+            )
+        )
+        adds = tuple((predicate,) + tuple(binding.get(a, a) for a in args) for predicate, args, _ in schema.add)
+        index = len(self.edges)
+        self.edges.append((needs, adds, step, schema, binding))
+        for fact in needs:
+            self.edges_from[fact].append(index)
 
     def compatible(self, predicate: str, types: tuple[str | None, ...]) -> list[tuple[str, ...]]:
         """The signatures of processed ``predicate`` facts whose objects fit ``types`` (None: any)."""
@@ -373,10 +580,14 @@ class _Exploration:
         self.compatible_cache[(predicate, types)] = (len(seen), fitting)
         return fitting
 
-    def apply(self, schema: _Schema, binding: Binding, again: bool = False) -> None:
-        """Every step of ``schema`` that extends ``binding`` (whose values fit their types) adds its atoms."""
+    def apply(self, schema: _Schema, binding: Binding, again: Set[str] | None = None) -> None:
+        """Every step of ``schema`` that extends ``binding`` (whose values fit their types) adds its
+        atoms; ``again``: the objects just added, when the application was made before them (then
+        only the steps with one of them are new, unless an effect ranges over a type)."""
         if schema.bound_by_pre and len(binding) == len(schema.parameters):
             # the common case, kept short: the conditions bound every parameter, no effect ranges over a type
+            if self.shared is not None and id(schema) in self.shared.variable:
+                self._edge(schema, binding)
             facts, achiever = self.facts, None
             for predicate, args, _ in schema.add:
                 fact = (predicate,) + tuple(binding.get(a, a) for a in args)
@@ -389,9 +600,21 @@ class _Exploration:
                     self.missing.discard(fact)
             return
         free = [(v, t) for v, t in zip(schema.parameters, schema.types) if v not in binding]
-        if not again and (free or schema.ranged):
+        if again is None and free and not schema.ranged:
+            # The effects name only some of the bound parameters (a flight adds where the airplane is,
+            # not where it came from): every binding that agrees on those adds the same atoms.
+            named = {a for _, args, _ in schema.add for a in args}
+            key = (id(schema), *(value for variable, value in sorted(binding.items()) if variable in named))
+            if key in self.effects_added:
+                return
+            self.effects_added.add(key)
+        if again is None and (free or schema.ranged):
             self.ranging.append((schema, binding, frozenset(t for _, t in free) | schema.ranged))
-        for full in _fill(binding, free, self.objects_of, self.work):
+        if again is not None and not schema.ranged:
+            fills = _fill_fresh(binding, free, self.objects_of, self.work, again)
+        else:
+            fills = _fill(binding, free, self.objects_of, self.work)
+        for full in fills:
             step = (schema.name,) + tuple(full[v] for v in schema.parameters)
             for predicate, args, quantified in schema.add:
                 # a universally quantified effect adds its atom for every kept object of the variable's type
@@ -476,6 +699,43 @@ def _fill(
         yield from _fill(new, free[1:], objects_of, work)
 
 
+def _fill_fresh(
+    binding: Binding,
+    free: list[tuple[str, str]],
+    objects_of: Callable[[str], list[str]],
+    work: _Work,
+    fresh: Set[str],
+) -> Iterator[Binding]:
+    """The bindings of :func:`_fill` with at least one value from ``fresh``: the ``i``-th free variable
+    takes the first fresh value, those before it older ones."""
+    for i, (_, fresh_type) in enumerate(free):
+        firsts = [o for o in objects_of(fresh_type) if o in fresh]
+        if not firsts:
+            continue
+        before = [[o for o in objects_of(t) if o not in fresh] for _, t in free[:i]]
+        yield from _fill_parts(binding, free, [*before, firsts], objects_of, work)
+
+
+def _fill_parts(
+    binding: Binding,
+    free: list[tuple[str, str]],
+    values: list[list[str]],
+    objects_of: Callable[[str], list[str]],
+    work: _Work,
+) -> Iterator[Binding]:
+    """Bindings of ``free`` taking the given ``values`` for the first variables, any object of its
+    type for the rest."""
+    if not free:
+        yield binding
+        return
+    variable, type_name = free[0]
+    for value in values[0] if values else objects_of(type_name):
+        work.spend()
+        new = dict(binding)
+        new[variable] = value
+        yield from _fill_parts(new, free[1:], values[1:], objects_of, work)
+
+
 def _relaxed_plan(
     facts: Mapping[GroundAtom, _Achiever | None], goal: Sequence[GroundAtom]
 ) -> tuple[list[Step], set[str]]:
@@ -552,18 +812,21 @@ def repair_selection(
         while exploration.missing:
             if not take:
                 batch = max(1, (len(current) - len(kept)) // 4)
-                take = toward.nearest(current, {arg for atom in exploration.missing for arg in atom[1:]}, batch)
+                unreached = {arg for atom in exploration.missing for arg in atom[1:]}
+                take = toward.nearest(current, unreached, batch, exploration.facts)
                 if not take:
                     break
             grown, _ = close(current | frozenset(take), current)
             added += take + sorted(grown - current - set(take))
-            take = []
             if len(grown) > give_up_above:
                 current = grown
                 break  # it would keep most of the problem anyway: checking costs more than it saves
+            before = len(exploration.missing)
             exploration.add(grown - current)
             current = grown
             exploration.run()
+            toward.learn(take, len(exploration.missing) < before)
+            take = []
         check = exploration.outcome()
     except _OutOfBudget:
         check = Reachability(False, False)
@@ -574,7 +837,8 @@ def repair_selection(
         return frozenset(current), tuple(Restored(n, "", "reachability", ("goal",)) for n in sorted(unchecked)), check
     classes = task.typing.problem.objects
     used = {name for name in check.plan_objects if name in task.problem.objects and name not in kept}
-    used, check = _economize(task, kept, used, classes, rank, check, close, budget, deadline)
+    interchangeable = toward.interchangeable(exploration.facts)
+    used, check = _economize(task, kept, used, classes, rank, check, close, budget, deadline, interchangeable)
     step_of: dict[str, Step] = {}
     for step in check.plan:
         for arg in step[1:]:
@@ -597,6 +861,15 @@ class _Toward:
         self.hub = hub_degree(task)
         self.fans = fan_in(task.init_index)
         self.classes = task.typing.problem.objects
+        self.timed = bool(task.typing.problem.timed_literals)
+        self.static = _compiled(task).static
+        # class -> rounds in a row its objects brought no goal atom nearer: a second airplane adds
+        # nothing to a relaxed plan that has one, a truck in another city does
+        self.fruitless: dict[str, int] = {}
+
+    def learn(self, taken: Sequence[str], progress: bool) -> None:
+        for cls in {self.classes.get(name, "object") for name in taken}:
+            self.fruitless[cls] = 0 if progress else self.fruitless.get(cls, 0) + 1
 
     def missing_classes(self, kept: Set[str]) -> list[str]:
         """The best-ranked member (score, then hops from ``kept``) of every class ``kept`` has none of."""
@@ -612,15 +885,82 @@ class _Toward:
                 best[cls] = key
         return sorted(key[2] for key in best.values())
 
-    def nearest(self, current: Set[str], unreached: Set[str], count: int) -> list[str]:
+    def nearest(
+        self, current: Set[str], unreached: Set[str], count: int, reached: Mapping[GroundAtom, object]
+    ) -> list[str]:
         """The ``count`` objects outside ``current`` nearest to ``unreached`` (objects of goal atoms not
-        reached yet) in the initial state, then best scored."""
+        reached yet) in the initial state, classes that helped before those that did not, then best
+        scored.  Passed over, as they add nothing: an object a kept one of its class can stand in
+        for (an airplane at an airport another kept airplane flies to), and one whose every link is
+        to objects not kept while a kept one has its properties (an airplane parked at an airport
+        not kept); when nothing else is left, the latter, then any."""
         distance = object_distances(self.task.init_index, unreached, self.hub, REPAIR_MAX_FAN, self.fans)
         far = len(self.classes) + 1
-        return heapq.nsmallest(
-            count,
-            (name for name in self.classes if name not in current),
-            key=lambda name: (distance.get(name, far), -self.scores.get(name, 0.0), name),
+        fruitless, classes = self.fruitless, self.classes
+        ranked = sorted(
+            (name for name in classes if name not in current),
+            key=lambda name: (
+                distance.get(name, far),
+                fruitless.get(classes[name], 0),
+                -self.scores.get(name, 0.0),
+                name,
+            ),
+        )
+        kept_of: dict[str, list[str]] = {}
+        chosen: list[str] = []
+        detached: list[str] = []
+        for name in ranked:
+            if len(chosen) == count:
+                break
+            cls = classes[name]
+            if cls not in kept_of:
+                kept_of[cls] = sorted(n for n in current if classes.get(n) == cls)[:DOMINANCE_TRIES]
+            if self._stood_in_for(name, kept_of[cls], reached):
+                continue
+            if self._detached(name, kept_of[cls], reached, current):
+                detached.append(name)
+            else:
+                chosen.append(name)
+        return chosen or detached[:count] or ranked[:count]
+
+    def _detached(self, name: str, others: Sequence[str], reached: Mapping[GroundAtom, object], kept: Set[str]) -> bool:
+        """Whether ``name``'s links to other objects are all where it is now (facts that change) and
+        name objects not ``kept``, and one of ``others`` has reached its facts about itself alone:
+        alone, it adds nothing."""
+        atoms = self.task.init_index.by_object.get(name, ())
+        classes = self.classes
+        linked = [atom for atom in atoms if len(atom) > 2]
+        if not linked or any(
+            atom[0] in self.static or all(a == name or a in kept or a not in classes for a in atom[1:])
+            for atom in linked
+        ):
+            return False  # a static link (a road, a door) is part of a way that may be needed
+        own = [atom for atom in atoms if len(atom) <= 2]
+        return not self.timed and any(
+            all(tuple(o if a == name else a for a in atom) in reached for atom in own) for o in others
+        )
+
+    def interchangeable(self, reached: Mapping[GroundAtom, object]) -> Callable[[Sequence[str]], bool]:
+        """A test of whether one of some objects of a class can stand in for another (``reached``:
+        what the exploration of them all reached)."""
+
+        def test(members: Sequence[str]) -> bool:
+            return any(
+                self._stood_in_for(name, [o for o in members if o != name][:DOMINANCE_TRIES], reached)
+                for name in members
+            )
+
+        return test
+
+    def _stood_in_for(self, name: str, others: Sequence[str], reached: Mapping[GroundAtom, object]) -> bool:
+        """Whether one of ``others`` (kept, of ``name``'s class) has reached every initial fact of
+        ``name`` with ``name`` renamed to it: then whatever ``name`` could do in the relaxation, it can
+        do too (an airplane parked at an airport another kept airplane can fly to)."""
+        if self.timed:
+            return False  # a timed fact of ``name`` is not among the initial ones
+        atoms = self.task.init_index.by_object.get(name, ())
+        return any(
+            all(tuple(other if arg == name else arg for arg in atom) in reached for atom in atoms) for other in others
         )
 
 
@@ -634,16 +974,20 @@ def _economize(
     close: CloseFn,
     budget: int,
     deadline: float,
+    interchangeable: Callable[[Sequence[str]], bool],
 ) -> tuple[set[str], Reachability]:
     """Fewer added objects of one class where fewer do: a relaxed plan takes the first airplane it
     meets for each package, when one airplane carries them all.  Class by class (most members
     first), keep the member the current relaxed plan uses most, alone, if the goal stays
     relaxed-reachable, else drop the less used half while it does; what the last relaxed plan no
-    longer uses goes too.  A few checks, each on the small kept set."""
+    longer uses goes too.  A few checks, each on the small kept set; a class none of whose members
+    can stand in for another (a truck in each city) is left as it is."""
     by_class: dict[str, list[str]] = {}
     for name in used:
         by_class.setdefault(classes.get(name, "object"), []).append(name)
     for cls in sorted((c for c in by_class if len(by_class[c]) > 1), key=lambda c: (-len(by_class[c]), c)):
+        if not interchangeable(sorted(by_class[cls])):
+            continue
         while True:
             members = _by_use([m for m in by_class[cls] if m in used], check, rank)
             if len(members) < 2:

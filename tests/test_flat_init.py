@@ -1,0 +1,92 @@
+"""A big :init of plain atoms is read with string methods: the same problem as the full reading
+(facts, lines, spans for the writer), and the same one-line error, naming the same line."""
+
+from __future__ import annotations
+
+import dataclasses
+
+import pytest
+
+from relevance_plan.data import DOMAINS_DIR
+from relevance_plan.errors import RelevancePlanError
+from relevance_plan.generators.sized import generate_sized_problem
+from relevance_plan.pddl import parser
+from relevance_plan.pddl.parser import read_domain, read_problem
+
+FIELDS = [f.name for f in dataclasses.fields(parser.Problem) if f.name not in ("text", "path")]
+
+
+def both(monkeypatch, text: str, domain) -> tuple[object, object]:
+    """(string-method reading, full reading) of ``text``; each an exception when it raises."""
+    results = []
+    for threshold in (1, 10**9):
+        monkeypatch.setattr(parser, "FLAT_INIT_FROM", threshold)
+        try:
+            results.append(read_problem(text, domain, path="p.pddl"))
+        except RelevancePlanError as error:
+            results.append(error)
+    return results[0], results[1]
+
+
+def same(fast, full) -> None:
+    if isinstance(full, Exception):
+        assert type(fast) is type(full) and str(fast) == str(full) and fast.line == full.line
+        return
+    for name in FIELDS:
+        assert getattr(fast, name) == getattr(full, name), name
+
+
+@pytest.mark.parametrize("world", ["miconic-manygoals", "logistics-manygoals-typed", "scenegraph"])
+def test_generated_problems_read_the_same(monkeypatch, world):
+    problem = generate_sized_problem(world, 3, 1, 300)
+    folder = problem.sidecar["domain"]
+    if problem.sidecar.get("form") == "typed" and (DOMAINS_DIR / f"{folder}-typed").exists():
+        folder += "-typed"
+    domain = read_domain((DOMAINS_DIR / folder / "domain.pddl").read_text())
+    fast, full = both(monkeypatch, problem.pddl_text, domain)
+    assert not isinstance(full, Exception)
+    same(fast, full)
+    monkeypatch.setattr(parser, "FLAT_INIT_FROM", 1)
+    assert parser._flat_init(problem.pddl_text) is not None  # the string-method reading was used
+
+
+DOMAIN = """(define (domain d) (:requirements :strips :typing) (:types thing)
+  (:constants home - thing)
+  (:predicates (at ?x - thing ?y - thing) (free ?x - thing) (ready))
+  (:action go :parameters (?x - thing ?y - thing) :precondition (free ?x) :effect (at ?x ?y)))"""
+
+
+def problem(init: str, line_break: str = "\n") -> str:
+    lines = ["(define (problem p) (:domain d)", "  (:objects a b c - thing)", "  (:init", init, "  )"]
+    return line_break.join([*lines, "  (:goal (at a b)))"])
+
+
+@pytest.mark.parametrize(
+    "init",
+    [
+        "    (at a b) (FREE C)\n    (at b home) (ready)\n    (at a b)",  # duplicates, case, a constant, no argument
+        "    (at a b)\n    ; a comment (with parentheses)\n    (free c)",  # a comment: read in full
+        "    (at a b)\n    (= (total-cost) 0)\n    (free c)",  # a nested list: read in full
+        "    (at a b)\n    (not (free c))",
+        "    (at a b)\n\n\n    (free d)",  # an unknown object, line 8
+        "    (at a b)\n    (free a b)",  # the wrong arity
+        "    (at a b)\n    (gone a)",  # an unknown predicate
+        "    (at a b)\n    (= a b)",  # an equality
+        "    (at a b)\n    ()",
+        "    (at a ?x)",
+        "    (at a b",  # no closing parenthesis
+    ],
+)
+def test_small_inits_read_the_same(monkeypatch, init):
+    domain = read_domain(DOMAIN)
+    for line_break in ("\n", "\r\n"):
+        fast, full = both(monkeypatch, problem(init.replace("\n", line_break), line_break), domain)
+        same(fast, full)
+
+
+def test_an_init_in_a_comment_is_not_taken(monkeypatch):
+    domain = read_domain(DOMAIN)
+    text = problem("    (at a b)").replace("(define", "; (:init (free a))\n(define")
+    fast, full = both(monkeypatch, text, domain)
+    same(fast, full)
+    assert ("free", "a") not in fast.init

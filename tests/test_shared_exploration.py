@@ -1,0 +1,110 @@
+"""The relaxed check with one placeholder for many interchangeable goal objects (packages, passengers)
+decides as the object-by-object exploration does, and its relaxed plans hold on the original problem."""
+
+from __future__ import annotations
+
+import random
+
+import pytest
+
+from relevance_plan.data import DOMAINS_DIR
+from relevance_plan.generators.sized import NEW_WORLDS, generate_sized_problem
+from relevance_plan.pddl.parser import read_domain, read_problem
+from relevance_plan.relevance import reachability
+from relevance_plan.relevance.reachability import relaxed_reachability
+from relevance_plan.relevance.scorers import PlanningTask
+from relevance_plan.relevance.setup import ScoringOptions, score_problem
+
+WORLDS = ("logistics-manygoals", "logistics-manygoals-typed", "miconic-manygoals", "miconic-manygoals-typed")
+
+
+def task_of(world: str, seed: int, size: int) -> tuple[PlanningTask, dict]:
+    problem = generate_sized_problem(world, seed, 1, size)
+    domain = read_domain((DOMAINS_DIR / NEW_WORLDS[world].domain / "domain.pddl").read_text())
+    return PlanningTask(domain, read_problem(problem.pddl_text, domain)), problem.sidecar
+
+
+def plain_check(monkeypatch, task: PlanningTask, kept: set[str]) -> reachability.Reachability:
+    """The same check with sharing off (a new task object: the compiled schemas are cached per task)."""
+    with monkeypatch.context() as patch:
+        patch.setattr(reachability, "SHARED_FROM", 10**9)
+        fresh = PlanningTask(task.domain, task.problem)
+        return relaxed_reachability(fresh, kept)
+
+
+def holds_relaxed(task: PlanningTask, check: reachability.Reachability) -> bool:
+    """The relaxed plan's steps, applied in any order their conditions allow (deletes ignored), all
+    apply, from the initial facts, and reach the goal's atoms."""
+    schemas = {schema.name: schema for schema in reachability._compiled(task).schemas}
+    facts = set(task.typing.problem.init)
+    waiting = list(check.plan)
+    while waiting:
+        ready = []
+        for step in waiting:
+            schema = schemas[step[0]]
+            binding = dict(zip(schema.parameters, step[1:]))
+            if all((p, *(binding.get(a, a) for a in args)) in facts for p, args in schema.pre):
+                ready.append((step, schema, binding))
+        if not ready:
+            return False
+        for step, schema, binding in ready:
+            facts.update((p, *(binding.get(a, a) for a in args)) for p, args, _ in schema.add)
+            waiting.remove(step)
+    goal = [(p, *args) for p, args in reachability._required_atoms(task.problem.goal)]
+    return all(atom in facts for atom in goal)
+
+
+@pytest.mark.parametrize("world", WORLDS)
+def test_the_shared_class_is_found_and_decides_as_the_plain_check(monkeypatch, world):
+    task, sidecar = task_of(world, 4, 240)
+    shared = reachability._compiled(task).shared
+    assert shared is not None and len(shared.members) >= reachability.SHARED_FROM
+    necessary = set(sidecar["necessary"])
+    rng = random.Random(world)
+    others = sorted(set(task.problem.objects) - necessary)
+    trials = [necessary, set(task.problem.objects)]
+    # without one needed object, and with some unneeded ones: both answers occur
+    for _ in range(6):
+        trials.append(necessary - {rng.choice(sorted(necessary))} | set(rng.sample(others, 10)))
+    answers = set()
+    for kept in trials:
+        shared_check = relaxed_reachability(task, kept)
+        plain = plain_check(monkeypatch, task, kept)
+        assert shared_check.complete and plain.complete
+        assert shared_check.reachable == plain.reachable, sorted(kept)
+        assert set(shared_check.unreached) == set(plain.unreached)
+        answers.add(shared_check.reachable)
+        if shared_check.reachable:
+            assert holds_relaxed(task, shared_check)
+            assert shared_check.plan_objects <= kept
+    assert answers == {True, False}
+
+
+def test_no_shared_class_where_goal_objects_meet():
+    # blocksworld: a stacking action holds two blocks; the check stays object by object
+    domain = read_domain((DOMAINS_DIR / "blocksworld" / "domain.pddl").read_text())
+    blocks = [f"b{i}" for i in range(12)]
+    text = (
+        "(define (problem tower) (:domain blocksworld) (:objects "
+        + " ".join(blocks)
+        + ") (:init (handempty) "
+        + " ".join(f"(ontable {b}) (clear {b})" for b in blocks)
+        + ") (:goal (and "
+        + " ".join(f"(on {a} {b})" for a, b in zip(blocks, blocks[1:]))
+        + ")))"
+    )
+    task = PlanningTask(domain, read_problem(text, domain))
+    assert reachability._compiled(task).shared is None
+    assert relaxed_reachability(task, set(blocks)).reachable
+
+
+def test_many_goal_repair_keeps_the_oracles_vehicles_at_500_objects():
+    task, sidecar = task_of("logistics-manygoals", 1, 500)
+    selection = score_problem(task, ScoringOptions(), method="relevance").first_selection(narrow=True)
+    classes = task.typing.problem.objects
+    kept_airplanes = {n for n in selection.kept if classes[n] == "airplane"}
+    assert len(kept_airplanes) == 1
+    necessary_trucks = {n for n in sidecar["necessary"] if classes[n] == "truck"}
+    kept_trucks = {n for n in selection.kept if classes[n] == "truck"}
+    assert len(kept_trucks) <= len(necessary_trucks)
+    assert relaxed_reachability(task, selection.kept).reachable
