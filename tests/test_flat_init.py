@@ -90,3 +90,18 @@ def test_an_init_in_a_comment_is_not_taken(monkeypatch):
     fast, full = both(monkeypatch, text, domain)
     same(fast, full)
     assert ("free", "a") not in fast.init
+
+
+def test_a_deadline_stops_the_string_method_reading(monkeypatch):
+    import time
+
+    from relevance_plan.errors import OutOfTimeError
+
+    domain = read_domain(DOMAIN)
+    atoms = "\n".join("    (at a b) (free c)" for _ in range(5000))
+    monkeypatch.setattr(parser, "FLAT_INIT_FROM", 1)
+    assert parser._flat_init(problem(atoms)) is not None
+    with pytest.raises(OutOfTimeError):  # while finding the atoms
+        parser._flat_init(problem(atoms), "p.pddl", time.monotonic() - 1)
+    with pytest.raises(OutOfTimeError):  # and through the whole reading: not read again in full
+        read_problem(problem(atoms), domain, path="p.pddl", deadline=time.monotonic() - 1)

@@ -108,3 +108,24 @@ def test_many_goal_repair_keeps_the_oracles_vehicles_at_500_objects():
     kept_trucks = {n for n in selection.kept if classes[n] == "truck"}
     assert len(kept_trucks) <= len(necessary_trucks)
     assert relaxed_reachability(task, selection.kept).reachable
+
+
+def test_a_second_airplane_is_passed_over_while_trucks_are_missing():
+    # one airplane kept, every airport and package kept, no truck: the repair's candidates are the
+    # trucks the relaxed plan lacks, not the airplanes parked at kept airports (the first flies there)
+    task, _ = task_of("logistics-manygoals", 2, 200)
+    classes = task.typing.problem.objects
+    airports = {n for n, c in classes.items() if "airport" in c.split("+")}
+    places = {n for n, c in classes.items() if c in ("location", "city")} | airports
+    packages = {n for n, c in classes.items() if c == "package"}
+    kept = places | packages | {"plane1"}
+    exploration = reachability._Exploration(task, kept, reachability._Work(10**7))
+    exploration.run()
+    assert exploration.missing  # the trucks are missing
+    unreached = {arg for atom in exploration.missing for arg in atom[1:]}
+    toward = reachability._Toward(task, {})
+    chosen = toward.nearest(kept, unreached, 10, exploration.facts)
+    assert chosen and all(classes[n] == "truck" for n in chosen), chosen
+    # and with the check off every airplane parked at an airport counts as near as a truck
+    parked = [n for n in classes if classes[n] == "airplane" and n != "plane1"]
+    assert any(toward._stood_in_for(n, ["plane1"], exploration.facts) for n in parked)

@@ -20,7 +20,13 @@ from dataclasses import dataclass, field, replace
 from types import MappingProxyType
 from typing import Any, NoReturn
 
-from relevance_plan.errors import DomainMismatchError, PDDLParseError, RelevancePlanError, UnsupportedFeatureError
+from relevance_plan.errors import (
+    DomainMismatchError,
+    OutOfTimeError,
+    PDDLParseError,
+    RelevancePlanError,
+    UnsupportedFeatureError,
+)
 from relevance_plan.pddl import formulas as f
 from relevance_plan.pddl.model import (
     NUMBER,
@@ -690,13 +696,15 @@ def read_problem(text: str, domain: Domain, path: str | None = None, deadline: f
 
 
 def _read_problem(text: str, domain: Domain, path: str | None, deadline: float | None) -> Problem:
-    flat = _flat_init(text)
+    flat = _flat_init(text, path, deadline)
     if flat is not None:
         # A big :init of plain atoms (125,000 ``above`` facts) is read with string methods instead of
         # one node per token; anything it does not expect, the full reading reads and reports.
         blanked, atoms = flat
         try:
             return _read_problem_from(text, parse_sexpr(blanked, path, deadline), domain, path, deadline, atoms)
+        except OutOfTimeError:
+            raise
         except RelevancePlanError:
             pass
     return _read_problem_from(text, parse_sexpr(text, path, deadline), domain, path, deadline, None)
@@ -710,7 +718,9 @@ _PLAIN_ATOM = re.compile(r"\(([^();]*)\)")
 FLAT_INIT_FROM = 2000  # atoms in :init before the string-method reading pays
 
 
-def _flat_init(text: str) -> tuple[str, list[tuple[int, int, str]]] | None:
+def _flat_init(
+    text: str, path: str | None = None, deadline: float | None = None
+) -> tuple[str, list[tuple[int, int, str]]] | None:
     """``text`` with its :init body blanked out (line breaks kept, so every offset and line stays),
     and the body's atoms (start, end, inside); None unless the body holds only plain atoms, enough
     of them."""
@@ -729,13 +739,22 @@ def _flat_init(text: str) -> tuple[str, list[tuple[int, int, str]]] | None:
     inside = text[body:end]
     if inside.count("(") < FLAT_INIT_FROM or "\r" in inside:
         return None
-    atoms = [(m.start() + body, m.end() + body, m.group(1)) for m in _PLAIN_ATOM.finditer(inside)]
+    atoms = []
+    for count, atom in enumerate(_PLAIN_ATOM.finditer(inside)):
+        if not count & 0xFFFF:
+            check_deadline(deadline, "reading ':init'", path)
+        atoms.append((atom.start() + body, atom.end() + body, atom.group(1)))
     blank = "\n".join(" " * len(line) for line in inside.split("\n"))
     return text[:body] + blank + text[end:], atoms
 
 
 def _read_flat_init(
-    reader: _Reader, text: str, atoms: list[tuple[int, int, str]], scope: _Scope, objects: Mapping[str, str]
+    text: str,
+    atoms: list[tuple[int, int, str]],
+    scope: _Scope,
+    objects: Mapping[str, str],
+    path: str | None = None,
+    deadline: float | None = None,
 ) -> _InitParts:
     """What :func:`_read_init` makes of plain atoms; a PDDLParseError at the first one it would
     refuse (the caller then reads the file in full, for the full message)."""
@@ -745,7 +764,9 @@ def _read_flat_init(
     facts, lines, spans, names = parts.facts, parts.lines, parts.spans, objects.keys()
     is_known = known.__contains__
     constants = known.keys() - names
-    for start, end, inside in atoms:
+    for count, (start, end, inside) in enumerate(atoms):
+        if not count & 0xFFF:
+            check_deadline(deadline, "reading ':init'", path, line_of(start))
         words = inside.lower().split()
         declared = predicates.get(words[0]) if words else None
         args = words[1:]
@@ -812,8 +833,7 @@ def _read_problem_from(
     if flat_atoms is None:
         init = _read_init(reader, found["init"], scope, objects, deadline)
     else:
-        check_deadline(deadline, "reading ':init'", path)
-        init = _read_flat_init(reader, text, flat_atoms, scope, objects)
+        init = _read_flat_init(text, flat_atoms, scope, objects, path, deadline)
     goal = _read_goal(reader, found.get(":goal"), replace(scope, preferences=True))
     constraints = None
     if ":constraints" in found:

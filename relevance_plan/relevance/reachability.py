@@ -13,6 +13,11 @@ doubling batches until the goal is relaxed-reachable, then keeps only the
 added objects some relaxed plan uses (a truck, an airplane, the cells of a
 path), each with the plan step that needs it as its reason.
 
+Many goal objects of one class that never meet in an action (packages,
+passengers) share one exploration through a placeholder and then advance
+together, one bit each (``_shared_class``); the answer and the kind of
+relaxed plan are those of the object-by-object exploration.
+
 The check over-approximates: negative, disjunctive and quantified conditions
 and effect conditions are ignored, and a universally quantified effect adds
 its atom for every kept object of the type, so "unreachable" is sound.  It gives up (and says so)
@@ -197,10 +202,10 @@ def _shared_class(task: PlanningTask, schemas: Sequence[_Schema]) -> _Shared | N
     for name, found in sorted(in_goal.items(), key=lambda item: (-len(item[1]), item[0])):
         if len(found) < SHARED_FROM:
             break
+        if name in domain.constants.values():
+            continue  # a constant of the class could meet a member in an action
         members = frozenset(o for o, c in classes.items() if c == name)
         others = {c for c in classes.values() if c != name} | set(domain.constants.values())
-        if name in domain.constants.values():
-            continue
         variable: dict[int, str] = {}
         for schema in schemas:
             holding = [(v, t) for v, t in zip(schema.parameters, schema.types) if domain.is_subtype(name, t)]
@@ -334,8 +339,9 @@ class _Exploration:
         self.processed: dict[tuple[str | int | tuple[str, ...], ...], list[GroundAtom]] = defaultdict(list)
         self.signatures: dict[str, list[tuple[str, ...]]] = defaultdict(list)
         self.compatible_cache: dict[tuple[str, tuple[str | None, ...]], tuple[int, list[tuple[str, ...]]]] = {}
-        # applications that ranged over every kept object of some types: run again when those grow
+        # (schema, the values of the bound parameters its effects name) of applications with free parameters
         self.effects_added: set[tuple[object, ...]] = set()
+        # applications that ranged over every kept object of some types: run again when those grow
         self.ranging: list[tuple[_Schema, Binding, frozenset[str]]] = []
         self.missing = set(self.goal)
         # The initial static facts (a map, the floors above each other) are indexed at once and trigger
