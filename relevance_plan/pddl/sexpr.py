@@ -64,10 +64,6 @@ class LineIndex:
     def line_of(self, offset: int) -> int:
         return bisect.bisect_right(self._starts, offset)
 
-    def start_of(self, line: int) -> float:
-        """Where ``line`` starts (infinity past the last line)."""
-        return self._starts[line - 1] if line <= len(self._starts) else float("inf")
-
 
 def check_deadline(deadline: float | None, what: str, path: str | None = None, line: int | None = None) -> None:
     """``OutOfTimeError`` naming ``what`` when ``deadline`` (``time.monotonic()`` seconds) has passed."""

@@ -30,7 +30,7 @@ import math
 import time
 import weakref
 from collections import defaultdict, deque
-from collections.abc import Callable, Iterator, Mapping, Sequence, Set
+from collections.abc import Callable, Collection, Iterator, Mapping, Sequence, Set
 from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
@@ -83,6 +83,7 @@ class _Schema:
     add: tuple[tuple[str, Args, tuple[tuple[str, str], ...]], ...]  # (predicate, args, quantified (variable, type)s)
     ranged: frozenset[str] = frozenset()  # the types a quantified effect ranges over
     bound_by_pre: bool = False  # no quantified effect, and the conditions name every parameter
+    in_effects: frozenset[str] = frozenset()  # the parameters the add effects name
 
 
 def _schemas(domain: Domain) -> list[_Schema]:
@@ -99,7 +100,9 @@ def _schemas(domain: Domain) -> list[_Schema]:
         ranged = frozenset(t for _, _, quantified in add for _, t in quantified)
         named = {a for _, args in pre for a in args}
         bound = not ranged and all(v in named for v in variables)
-        result.append(_Schema(action.name, variables, tuple(t for _, t in action.parameters), pre, add, ranged, bound))
+        in_effects = frozenset(a for _, args, _ in add for a in args if a in variables)
+        types = tuple(t for _, t in action.parameters)
+        result.append(_Schema(action.name, variables, types, pre, add, ranged, bound, in_effects))
     return result
 
 
@@ -290,8 +293,9 @@ class _Exploration:
         self.domain = domain
         self.work = work
         self.shared = compiled.shared
+        self.members = self.shared.members if self.shared else frozenset()  # of the shared class, kept or not
         # with a shared class, its kept members are not objects of the exploration: MEMBER stands for them
-        self.kept_members: set[str] = set(kept) & self.shared.members if self.shared else set()
+        self.kept_members: set[str] = set(kept) & self.members
         self.allowed = set(kept) - self.kept_members | set(domain.constants)
         self.types_of = dict(domain.constants)
         self.types_of.update(problem.objects)
@@ -362,8 +366,7 @@ class _Exploration:
         """The initial (and timed) facts over allowed objects that mention one of ``names``; those of a
         ``static`` predicate are processed at once (they trigger nothing), the others queued."""
         found = set(also)
-        allowed = self.allowed
-        members = self.shared.members if self.shared else frozenset()
+        allowed, members = self.allowed, self.members
         for name in names:
             for atom in self.by_object.get(name, ()):
                 if members.isdisjoint(atom[1:]):
@@ -385,10 +388,9 @@ class _Exploration:
 
     def _pattern(self, atom: GroundAtom) -> GroundAtom | None:
         """``atom`` with its member of the shared class as MEMBER (None: that member is not kept)."""
-        members = self.shared.members if self.shared else frozenset()
         args = []
         for arg in atom[1:]:
-            if arg in members:
+            if arg in self.members:
                 if arg not in self.kept_members:
                     return None
                 arg = MEMBER
@@ -410,8 +412,7 @@ class _Exploration:
         new = {name for name in names if name not in self.allowed and name not in self.kept_members}
         if not new:
             return
-        if self.shared is not None:
-            self.kept_members |= new & self.shared.members
+        self.kept_members |= new & self.members
         self.allowed |= new - self.kept_members
         grown = set()
         for type_name, members in self.of_type.items():
@@ -609,8 +610,7 @@ class _Exploration:
         if again is None and free and not schema.ranged:
             # The effects name only some of the bound parameters (a flight adds where the airplane is,
             # not where it came from): every binding that agrees on those adds the same atoms.
-            named = {a for _, args, _ in schema.add for a in args}
-            key = (id(schema), *(value for variable, value in sorted(binding.items()) if variable in named))
+            key = (id(schema), *(value for variable, value in sorted(binding.items()) if variable in schema.in_effects))
             if key in self.effects_added:
                 return
             self.effects_added.add(key)
@@ -843,8 +843,10 @@ def repair_selection(
         return frozenset(current), tuple(Restored(n, "", "reachability", ("goal",)) for n in sorted(unchecked)), check
     classes = task.typing.problem.objects
     used = {name for name in check.plan_objects if name in task.problem.objects and name not in kept}
-    interchangeable = toward.interchangeable(exploration.facts)
-    used, check = _economize(task, kept, used, classes, rank, check, close, budget, deadline, interchangeable)
+    reached = exploration.facts
+    used, check = _economize(
+        task, kept, used, classes, rank, check, close, budget, deadline, lambda m: toward.interchangeable(m, reached)
+    )
     step_of: dict[str, Step] = {}
     for step in check.plan:
         for arg in step[1:]:
@@ -941,32 +943,31 @@ class _Toward:
             for atom in linked
         ):
             return False  # a static link (a road, a door) is part of a way that may be needed
-        own = [atom for atom in atoms if len(atom) <= 2]
-        return not self.timed and any(
-            all(tuple(o if a == name else a for a in atom) in reached for atom in own) for o in others
+        return self._stood_in_for(name, others, reached, [atom for atom in atoms if len(atom) <= 2])
+
+    def interchangeable(self, members: Sequence[str], reached: Mapping[GroundAtom, object]) -> bool:
+        """Whether one of ``members`` (of one class) can stand in for another (``reached``: what the
+        exploration of them all reached)."""
+        return any(
+            self._stood_in_for(name, [o for o in members if o != name][:DOMINANCE_TRIES], reached) for name in members
         )
 
-    def interchangeable(self, reached: Mapping[GroundAtom, object]) -> Callable[[Sequence[str]], bool]:
-        """A test of whether one of some objects of a class can stand in for another (``reached``:
-        what the exploration of them all reached)."""
-
-        def test(members: Sequence[str]) -> bool:
-            return any(
-                self._stood_in_for(name, [o for o in members if o != name][:DOMINANCE_TRIES], reached)
-                for name in members
-            )
-
-        return test
-
-    def _stood_in_for(self, name: str, others: Sequence[str], reached: Mapping[GroundAtom, object]) -> bool:
+    def _stood_in_for(
+        self,
+        name: str,
+        others: Sequence[str],
+        reached: Mapping[GroundAtom, object],
+        atoms: Collection[GroundAtom] | None = None,
+    ) -> bool:
         """Whether one of ``others`` (kept, of ``name``'s class) has reached every initial fact of
-        ``name`` with ``name`` renamed to it: then whatever ``name`` could do in the relaxation, it can
-        do too (an airplane parked at an airport another kept airplane can fly to)."""
+        ``name`` (or every one of ``atoms``) with ``name`` renamed to it: then whatever ``name`` could
+        do in the relaxation, it can do too (an airplane parked at an airport another kept airplane
+        can fly to)."""
         if self.timed:
             return False  # a timed fact of ``name`` is not among the initial ones
-        atoms = self.task.init_index.by_object.get(name, ())
+        facts = self.task.init_index.by_object.get(name, ()) if atoms is None else atoms
         return any(
-            all(tuple(other if arg == name else arg for arg in atom) in reached for atom in atoms) for other in others
+            all(tuple(other if arg == name else arg for arg in atom) in reached for atom in facts) for other in others
         )
 
 
