@@ -13,7 +13,8 @@ over it.
 Pruning time: for each world at 500 and 5,000 objects, what ``plan_task``
 does before the first planner call, in this process: read the domain and
 problem, score, select (thresholds, goal filter, closure, reachability
-repair), write the pruned problem.  Median of 3 per stage.
+repair), write the pruned problem.  Median of 3 per stage.  ``--prune-worlds``
+times other worlds instead, our padded classic worlds included.
 
 Worlds and planning sizes (objects per problem; pure lama-first takes from
 about a second to tens of seconds at these):
@@ -45,6 +46,7 @@ minute.
     python benchmarks/bench_scale.py --count 3 --seed 2 --json rows.json
     python benchmarks/bench_scale.py --worlds scenegraph --sizes 300 600 --timeout 60
     python benchmarks/bench_scale.py --prune-only                # no planner at all
+    python benchmarks/bench_scale.py --prune-only --prune-worlds grid ferry miconic
     python benchmarks/bench_scale.py --no-prune-timing
 """
 
@@ -63,7 +65,7 @@ REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))
 
 from relevance_plan.data import DOMAINS_DIR  # noqa: E402
-from relevance_plan.generators.sized import generate_sized_problem  # noqa: E402
+from relevance_plan.generators.sized import CLASSIC_WORLDS, generate_sized_problem  # noqa: E402
 from relevance_plan.io import load_domain, load_problem, write_text_atomic  # noqa: E402
 from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task  # noqa: E402
 from relevance_plan.relevance.scorers import PlanningTask  # noqa: E402
@@ -77,6 +79,7 @@ SIZES = {
     "miconic-manygoals-typed": (1000, 2000),
 }
 DEFAULT_WORLDS = ("scenegraph", "logistics-manygoals", "miconic-manygoals")
+PRUNE_WORLDS = (*SIZES, *CLASSIC_WORLDS)  # the pruning table may take our padded classic worlds too
 PRUNE_TARGETS = {500: 0.3, 5000: 1.0}  # objects -> seconds, in-process
 SPEEDUP_TARGET = 10.0  # geometric mean of pure/relevance over the scene-graph cells
 ORACLE_TARGET = 1.5  # relevance / oracle
@@ -90,7 +93,10 @@ def write_problem(world: str, seed: int, index: int, size: int, folder: Path) ->
     path = folder / f"{problem.name}-{size}.pddl"
     path.write_text(problem.pddl_text)
     path.with_suffix(".json").write_text(json.dumps(problem.sidecar))
-    return DOMAINS_DIR / problem.sidecar["domain"] / "domain.pddl", path, problem.sidecar
+    domain = problem.sidecar["domain"]
+    if world in CLASSIC_WORLDS and problem.sidecar["form"] == "typed":
+        domain += "-typed"  # a classic world's sidecar names the domain and its form apart
+    return DOMAINS_DIR / domain / "domain.pddl", path, problem.sidecar
 
 
 def run(domain_path: Path, problem_path: Path, method: str, timeout: float) -> dict:
@@ -160,6 +166,14 @@ def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
     what = parser.add_mutually_exclusive_group()
     what.add_argument("--no-prune-timing", action="store_true", help="planning only")
     what.add_argument("--prune-only", action="store_true", help="pruning time only (no planner is started)")
+    parser.add_argument(
+        "--prune-worlds",
+        nargs="+",
+        default=None,
+        choices=list(PRUNE_WORLDS),
+        metavar="WORLD",
+        help="worlds of the pruning-time table (default: those of --worlds; also every classic world)",
+    )
     parser.add_argument("--json", type=Path, default=None, help="also write the raw rows here")
     args = parser.parse_args(argv)
     if args.count < 1:
@@ -274,7 +288,7 @@ def time_pruning(args: argparse.Namespace, scratch: Path) -> list[dict]:
     print("|---|---|---|---|---|---|---|---|---|---|---|")
     rows = []
     out = scratch / "pruned.pddl"
-    for world in args.worlds:
+    for world in args.prune_worlds or args.worlds:
         for size in sizes:
             domain_path, problem_path, _ = write_problem(world, args.seed, 1, size, scratch)
             runs = []

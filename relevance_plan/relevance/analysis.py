@@ -68,8 +68,13 @@ def index_init(problem: Problem) -> InitIndex:
     by_object: dict[str, list[GroundAtom]] = defaultdict(list)
     for atom in (*problem.init, *numeric_facts(problem)):
         by_predicate[atom[0]].append(atom)
-        for arg in set(atom[1:]):
-            by_object[arg].append(atom)
+        if len(atom) == 3:  # most facts link two objects: no set for them
+            by_object[atom[1]].append(atom)
+            if atom[2] != atom[1]:
+                by_object[atom[2]].append(atom)
+        else:
+            for arg in set(atom[1:]):
+                by_object[arg].append(atom)
     functional: set[tuple[str, int, int]] = set()
     for predicate, atoms in by_predicate.items():
         arity = len(atoms[0]) - 1
@@ -119,26 +124,54 @@ def object_distances(
     every key of that shape), only toward it (``fans``: :func:`fan_in` of the index, when the
     caller has it).
     """
-    if fans is None:
-        fans = fan_in(index) if max_fan is not None else {}
-    distance = {name: 0 for name in sources}
-    frontier = list(distance)
-    seen_facts: set[GroundAtom] = set()
-    while frontier:
-        following = []
-        for name in frontier:
-            if hub_degree is not None and distance[name] > 0 and len(index.by_object.get(name, ())) > hub_degree:
-                continue
-            for atom in index.by_object.get(name, ()):
-                if len(atom) < 3 or atom in seen_facts:
+    return graph_distances(index, ObjectGraph(index, max_fan, fans), sources, hub_degree)
+
+
+class ObjectGraph:
+    """The links :func:`object_distances` walks, each object's found once, when first walked from:
+    the repair ranks candidates by distance every round."""
+
+    def __init__(
+        self, index: FactIndex, max_fan: float | None = None, fans: Mapping[tuple[str, int], float] | None = None
+    ):
+        self.index = index
+        self.max_fan = max_fan
+        self.fans = fan_in(index) if fans is None and max_fan is not None else fans or {}
+        self.found: dict[str, list[str]] = {}
+
+    def neighbours(self, name: str) -> list[str]:
+        found = self.found.get(name)
+        if found is None:
+            found = self.found[name] = []
+            max_fan, fans = self.max_fan, self.fans
+            for atom in self.index.by_object.get(name, ()):
+                if len(atom) < 3:
                     continue
                 if max_fan is not None and fans.get((atom[0], atom.index(name) - 1), 0.0) > max_fan:
                     continue
-                seen_facts.add(atom)
-                for other in atom[1:]:
-                    if other not in distance:
-                        distance[other] = distance[name] + 1
-                        following.append(other)
+                found.extend(atom[1:])
+        return found
+
+
+def graph_distances(
+    index: FactIndex, graph: ObjectGraph, sources: Iterable[str], hub_degree: int | None = None
+) -> dict[str, int]:
+    """Breadth-first hops from ``sources`` over ``graph``; an object in more than ``hub_degree``
+    facts gets a distance but is not passed through."""
+    distance = {name: 0 for name in sources}
+    frontier = list(distance)
+    hops = 0
+    by_object = index.by_object
+    while frontier:
+        hops += 1
+        following = []
+        for name in frontier:
+            if hub_degree is not None and hops > 1 and len(by_object.get(name, ())) > hub_degree:
+                continue
+            for other in graph.neighbours(name):
+                if other not in distance:
+                    distance[other] = hops
+                    following.append(other)
         frontier = following
     return distance
 
@@ -251,6 +284,8 @@ class _Regression:
                     self.achievers[item.atom.predicate].append((action, item.atom, item.condition))
         self.best: dict[Pattern, int] = {}
         self.role_depth: dict[str, int] = {}
+        # (predicate, args with each object that is not a constant as its type) -> what regress found
+        self.shapes: dict[tuple[str, tuple[Term, ...]], tuple[list[tuple[str, tuple[Term, ...], int]], list[str]]] = {}
 
     def run(self) -> GoalAnalysis:
         goal_types: set[str] = set()
@@ -296,7 +331,47 @@ class _Regression:
         return False
 
     def regress(self, pattern: Pattern, depth: int) -> list[tuple[Pattern, int]]:
-        """The patterns the achievers of ``pattern`` need, with their depths; records new roles."""
+        """The patterns the achievers of ``pattern`` need, with their depths; records new roles.
+
+        Patterns that differ only in objects of the same types (two thousand packages' destinations)
+        regress alike: the first one's answer is kept with each object as its position in the
+        pattern, and the others' are filled in from it."""
+        predicate, args = pattern
+        constants = self.domain.constants
+        shape = (
+            predicate,
+            tuple(
+                ("of", self.objects.get(value, "")) if kind == "obj" and value not in constants else (kind, value)
+                for kind, value in args
+            ),
+        )
+        cached = self.shapes.get(shape)
+        if cached is None:
+            found, roles = self._regress(pattern)
+            position = {value: i for i, (kind, value) in reversed(list(enumerate(args))) if kind == "obj"}
+            cached = self.shapes[shape] = (
+                [
+                    (
+                        name,
+                        tuple(("at", str(position[v])) if k == "obj" and v in position else (k, v) for k, v in new),
+                        step,
+                    )
+                    for (name, new), step in found
+                ],
+                roles,
+            )
+        templates, roles = cached
+        for type_name in roles:
+            if self.role_depth.get(type_name, _FAR) > depth + 1:
+                self.role_depth[type_name] = depth + 1
+        return [
+            ((name, tuple(args[int(v)] if k == "at" else (k, v) for k, v in template)), depth + step)
+            for name, template, step in templates
+        ]
+
+    def _regress(self, pattern: Pattern) -> tuple[list[tuple[Pattern, int]], list[str]]:
+        """What :meth:`regress` finds for ``pattern``: the patterns with their depth from it, and the
+        types of the roles its achievers introduce."""
         options = []
         for action, added, condition in self.achievers.get(pattern[0], ()):
             bound = _unify(self.domain, self.objects, action, added, pattern[1])
@@ -309,22 +384,21 @@ class _Regression:
                 ]
                 options.append((action, bound, pre_atoms, _roles(action, bound, pre_atoms, self.index)))
         if not options:
-            return []
+            return [], []
         # Only the achievers that need the fewest new roles count: picking up a
         # cup needs nothing new, unstacking it from "some item" would make every
         # item look useful.
         fewest = min(len(option[3]) for option in options)
         found = []
+        roles: list[str] = []
         for action, bound, pre_atoms, roles_here in options:
             if len(roles_here) != fewest:
                 continue
             params = dict(action.parameters)
-            for var in roles_here:
-                if self.role_depth.get(params[var], _FAR) > depth + 1:
-                    self.role_depth[params[var]] = depth + 1
+            roles.extend(params[var] for var in sorted(roles_here))
             for predicate_name, args in pre_atoms:
                 # A condition on a newly introduced role is one step further away.
-                next_depth = depth + (1 if roles_here.intersection(args) else 0)
+                next_depth = 1 if roles_here.intersection(args) else 0
                 new_args = tuple(
                     bound[arg]
                     if arg in bound
@@ -334,7 +408,7 @@ class _Regression:
                     for arg in args
                 )
                 found.append(((predicate_name, new_args), next_depth))
-        return found
+        return found, roles
 
 
 def single_valued_predicates(domain: Domain, index: FactIndex) -> frozenset[str]:

@@ -31,12 +31,12 @@ import time
 import weakref
 from collections import defaultdict, deque
 from collections.abc import Callable, Collection, Iterator, Mapping, Sequence, Set
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
 
 from relevance_plan.pddl.formulas import Atom, Formula, GroundAtom, conjuncts, effect_literals
 from relevance_plan.pddl.model import Domain
-from relevance_plan.relevance.analysis import fan_in, object_distances
+from relevance_plan.relevance.analysis import ObjectGraph, fan_in, graph_distances
 from relevance_plan.relevance.closure import Restored
 from relevance_plan.relevance.types import static_predicates
 
@@ -84,6 +84,9 @@ class _Schema:
     ranged: frozenset[str] = frozenset()  # the types a quantified effect ranges over
     bound_by_pre: bool = False  # no quantified effect, and the conditions name every parameter
     in_effects: frozenset[str] = frozenset()  # the parameters the add effects name
+    # bound by its conditions, and each add effect names distinct parameters only: once every atom
+    # those effects could add over the kept objects is reached, the schema has nothing left to add
+    saturable: bool = False
 
 
 def _schemas(domain: Domain) -> list[_Schema]:
@@ -102,7 +105,10 @@ def _schemas(domain: Domain) -> list[_Schema]:
         bound = not ranged and all(v in named for v in variables)
         in_effects = frozenset(a for _, args, _ in add for a in args if a in variables)
         types = tuple(t for _, t in action.parameters)
-        result.append(_Schema(action.name, variables, types, pre, add, ranged, bound, in_effects))
+        saturable = bound and all(
+            len(set(args)) == len(args) and all(a in variables for a in args) for _, args, _ in add
+        )
+        result.append(_Schema(action.name, variables, types, pre, add, ranged, bound, in_effects, saturable))
     return result
 
 
@@ -124,6 +130,8 @@ class _Compiled:
     timed: frozenset[GroundAtom]  # atoms a timed initial literal makes true
     nullary: frozenset[GroundAtom]  # initial and timed atoms without arguments
     shared: _Shared | None = None
+    # id(schema) -> the atoms without arguments that, once reached, make it add nothing new (see _dominated)
+    dominated: Mapping[int, frozenset[GroundAtom]] = field(default_factory=dict)
 
 
 def _compiled(task: PlanningTask) -> _Compiled:
@@ -139,7 +147,8 @@ def _compiled(task: PlanningTask) -> _Compiled:
         nullary = frozenset(atom for atom in (*problem.init, *timed) if len(atom) == 1)
         schemas = _compiled_schemas(task)
         shared = None if problem.timed_literals else _shared_class(task, schemas)
-        cached = _Compiled(schemas, frozenset(static), timed, nullary, shared)
+        dominated = _dominated(task.typing.domain, schemas, shared.variable if shared else {})
+        cached = _Compiled(schemas, frozenset(static), timed, nullary, shared, dominated)
         _COMPILED[task] = cached
     return cached
 
@@ -184,6 +193,89 @@ def _compiled_schemas(task: PlanningTask) -> list[_Schema]:
         )
         result.append(replace(schema, pre=pre))
     return result
+
+
+DOMINANCE_SCHEMAS = 200  # past this many schemas the pairs are not compared
+DOMINANCE_FREE = 3  # parameters of a dominating schema its add effect leaves to be matched
+
+
+def _dominated(
+    domain: Domain, schemas: Sequence[_Schema], shared_steps: Mapping[int, str]
+) -> dict[int, frozenset[GroundAtom]]:
+    """The schemas the relaxation may pass over once some atoms without arguments are reached: for
+    each of the schema's add effects, another schema adds it with its parameters taken from this
+    one's and with no condition this one lacks but those atoms.  Picking up a key while holding
+    another (grid) adds what picking up with an empty arm and putting down add; once the arm has
+    been empty, the exploration need not join every place with every pair of keys.  Dominating
+    schemas have fewer conditions (or the same number and come first), so the relation has no
+    cycle and what is passed over is always added by a schema that is not."""
+    if len(schemas) > DOMINANCE_SCHEMAS:
+        return {}
+    simple = [(i, s) for i, s in enumerate(schemas) if s.bound_by_pre and not s.ranged and id(s) not in shared_steps]
+    order = {id(s): (sum(1 for _, args in s.pre if args), i) for i, s in simple}
+    result = {}
+    for _, schema in simple:
+        conditions = set(schema.pre)
+        needs: set[GroundAtom] = set()
+        for predicate, args, _ in schema.add:
+            best: frozenset[GroundAtom] | None = None
+            for _, other in simple:
+                if order[id(other)] >= order[id(schema)]:
+                    continue
+                for other_predicate, other_args, _ in other.add:
+                    if other_predicate == predicate and len(other_args) == len(args):
+                        found = _covering(domain, schema, conditions, args, other, other_args)
+                        if found is not None and (best is None or len(found) < len(best)):
+                            best = found
+            if best is None:
+                break
+            needs |= best
+        else:
+            if schema.add:
+                result[id(schema)] = frozenset(needs)
+    return result
+
+
+def _covering(
+    domain: Domain, schema: _Schema, conditions: Set[Condition], args: Args, other: _Schema, other_args: Args
+) -> frozenset[GroundAtom] | None:
+    """The atoms without arguments ``other`` needs besides ``schema``'s conditions to add ``args``
+    for every binding of ``schema`` (``other``'s parameters taken from ``schema``'s, types fitting);
+    None if it cannot."""
+    mapping: dict[str, str] = {}
+    for mine, theirs in zip(args, other_args):
+        if theirs[0] != "?":
+            if mine != theirs:
+                return None
+        elif mine[0] != "?" or mapping.setdefault(theirs, mine) != mine:
+            return None
+    free = [v for v in other.parameters if v not in mapping]
+    if len(free) > DOMINANCE_FREE:
+        return None
+    type_of = dict(zip(schema.parameters, schema.types))
+    other_type = dict(zip(other.parameters, other.types))
+
+    def assignments(i: int) -> Iterator[dict[str, str]]:
+        if i == len(free):
+            yield mapping
+            return
+        for value in schema.parameters:
+            mapping[free[i]] = value
+            yield from assignments(i + 1)
+        del mapping[free[i]]
+
+    for full in assignments(0):
+        if not all(domain.is_subtype(type_of[full[v]], other_type[v]) for v in other.parameters):
+            continue
+        needs = []
+        for predicate, pre_args in other.pre:
+            if not pre_args:
+                needs.append((predicate,))
+            elif (predicate, tuple(full.get(a, a) for a in pre_args)) not in conditions:
+                break
+        else:
+            return frozenset(needs)
+    return None
 
 
 def _shared_class(task: PlanningTask, schemas: Sequence[_Schema]) -> _Shared | None:
@@ -293,6 +385,7 @@ class _Exploration:
         self.domain = domain
         self.work = work
         self.shared = compiled.shared
+        self.dominated = compiled.dominated
         self.members = self.shared.members if self.shared else frozenset()  # of the shared class, kept or not
         # with a shared class, its kept members are not objects of the exploration: MEMBER stands for them
         self.kept_members: set[str] = set(kept) & self.members
@@ -348,6 +441,17 @@ class _Exploration:
         # applications that ranged over every kept object of some types: run again when those grow
         self.ranging: list[tuple[_Schema, Binding, frozenset[str]]] = []
         self.missing = set(self.goal)
+        # How many reached facts of each (predicate, signature) a saturable schema adds, to pass over
+        # the schemas that have nothing left to add (every floor reached: no more joins of ``up``).
+        # The placeholder's steps are never passed over: each member follows them.
+        shared_steps = self.shared.variable if self.shared else {}
+        self.saturable = {id(s): s for s in self.schemas if s.saturable and id(s) not in shared_steps}
+        self.counted = {predicate for s in self.saturable.values() for predicate, _, _ in s.add}
+        self.reached: dict[tuple[str, tuple[str, ...]], int] = {}
+        self.reached_signatures: dict[str, list[tuple[str, ...]]] = defaultdict(list)
+        self.reached_total: dict[str, int] = {}
+        self.saturated: set[int] = set()
+        self.saturation_needs: dict[int, list[tuple[str, tuple[str, ...], int]]] = {}  # until objects are added
         # The initial static facts (a map, the floors above each other) are indexed at once and trigger
         # nothing: every dynamic fact is processed after them, and its joins find them.  Only the
         # schemas whose conditions are all static need a join of their own.
@@ -380,6 +484,8 @@ class _Exploration:
         # sorted: the same objects give the same relaxed plan whatever order the sets were built in
         for atom in sorted(found - self.facts.keys()):
             self.facts[atom] = None
+            if atom[0] in self.counted:
+                self._count(atom)
             self.missing.discard(atom)
             if atom[0] in static:
                 self._index(atom)
@@ -407,6 +513,40 @@ class _Exploration:
         for position, value in enumerate(fact[1:]):
             self.processed[(predicate, position, value, signature)].append(fact)
 
+    def _count(self, fact: GroundAtom) -> None:
+        key = (fact[0], tuple(self.types_of.get(arg, "object") for arg in fact[1:]))
+        count = self.reached.get(key)
+        if count is None:
+            self.reached_signatures[fact[0]].append(key[1])
+        self.reached[key] = (count or 0) + 1
+        self.reached_total[fact[0]] = self.reached_total.get(fact[0], 0) + 1
+
+    def _saturated(self, schema: _Schema) -> bool:
+        """Whether every atom ``schema`` could add over the kept objects is reached (kept objects
+        are distinct facts, each of a signature that fits: counting them is enough)."""
+        if id(schema) in self.saturated:
+            return True
+        needs = self.saturation_needs.get(id(schema))
+        if needs is None:
+            type_of = dict(zip(schema.parameters, schema.types))
+            needs = self.saturation_needs[id(schema)] = [
+                (predicate, types, math.prod(len(self.objects_of(t)) for t in types))
+                for predicate, args, _ in schema.add
+                for types in [tuple(type_of[a] for a in args)]
+            ]
+        for predicate, types, need in needs:
+            if self.reached_total.get(predicate, 0) < need:
+                return False  # the common answer, found without looking at signatures
+            have = sum(
+                self.reached[(predicate, signature)]
+                for signature in self.reached_signatures.get(predicate, ())
+                if all(self.domain.is_subtype(c, t) for c, t in zip(signature, types))
+            )
+            if have < need:
+                return False
+        self.saturated.add(id(schema))
+        return True
+
     def add(self, names: Set[str]) -> None:
         """Bring ``names`` into the kept set; :meth:`run` then explores what they make reachable."""
         new = {name for name in names if name not in self.allowed and name not in self.kept_members}
@@ -424,6 +564,8 @@ class _Exploration:
                 self.fits[type_name] = frozenset(members)
                 grown.add(type_name)
         self.variable_fits.clear()
+        self.saturated.clear()
+        self.saturation_needs.clear()
         self._reach_initial(new)
         for schema, binding, ranged in list(self.ranging):
             if not grown.isdisjoint(ranged):
@@ -457,10 +599,16 @@ class _Exploration:
         return fits
 
     def run(self) -> None:
+        saturable, dominated, facts = self.saturable, self.dominated, self.facts
         while self.queue and self.missing:
             fact = self.queue.popleft()
             self._index(fact)
             for schema, i, rest in self.triggers.get(fact[0], ()):
+                if id(schema) in saturable and self._saturated(schema):
+                    continue
+                needs = dominated.get(id(schema))
+                if needs is not None and all(atom in facts for atom in needs):
+                    continue
                 fits = self.fits_of(schema)
                 binding = _match(schema.pre[i][1], fact, {}, fits)
                 if binding is None:
@@ -488,6 +636,9 @@ class _Exploration:
         """Carry the members' bits along the placeholder's steps to a fixpoint: a step passes on the
         bits its conditions on the placeholder all hold (every member's bit when it has none)."""
         holders, arrivals, spreading = self.holders, self.arrivals, self.spreading
+        # a pattern waits in the queue once however many times its bits grow meanwhile: its steps
+        # read its bits when they fire
+        queued = set(spreading)
         everyone = 0
         for name in self.kept_members:
             everyone |= self._bit(name)
@@ -496,7 +647,9 @@ class _Exploration:
             if not holders.get(pattern, 0) & bit:
                 holders[pattern] = holders.get(pattern, 0) | bit
                 arrivals[pattern].append((bit, None))
-                spreading.append(pattern)
+                if pattern not in queued:
+                    queued.add(pattern)
+                    spreading.append(pattern)
         self.seeds.clear()
         edges, work = self.edges, self.work
 
@@ -516,7 +669,9 @@ class _Exploration:
                 if new:
                     holders[pattern] = old | new
                     arrivals[pattern].append((new, index))
-                    spreading.append(pattern)
+                    if pattern not in queued:
+                        queued.add(pattern)
+                        spreading.append(pattern)
 
         # steps found since the last spread, and those with no condition on the placeholder (new members)
         for index in range(self.edges_spread, len(edges)):
@@ -527,6 +682,7 @@ class _Exploration:
         self.edges_spread = len(edges)
         while spreading:
             pattern = spreading.popleft()
+            queued.discard(pattern)
             work.spend()
             for index in self.edges_from.get(pattern, ()):
                 fire(index)
@@ -603,6 +759,8 @@ class _Exploration:
                         step = (schema.name,) + tuple(binding[v] for v in schema.parameters)
                         achiever = _Achiever(step, schema, binding)
                     facts[fact] = achiever
+                    if predicate in self.counted:
+                        self._count(fact)
                     self.queue.append(fact)
                     self.missing.discard(fact)
             return
@@ -628,6 +786,8 @@ class _Exploration:
                     fact = (predicate,) + tuple(each.get(a, a) for a in args)
                     if fact not in self.facts:
                         self.facts[fact] = _Achiever(step, schema, full)
+                        if predicate in self.counted:
+                            self._count(fact)
                         self.queue.append(fact)
                         self.missing.discard(fact)
 
@@ -807,17 +967,19 @@ def repair_selection(
     if check.reachable:
         return kept, (), check
     # One member of every class the kept set lacks first (no airplane at all), together; then, round by
-    # round, the objects nearest to the goal atoms still unreached: one at a time at first (one
-    # airplane may carry every package), then a quarter of what was added.  The exploration carries
-    # on from where it stopped, so the whole growth costs about one exploration of the final set.
+    # round, the objects between what is reached and the goal atoms still unreached: one at a time at
+    # first (one airplane may carry every package), then a quarter of what was added, or as many as
+    # the last round's rate of goal atoms says are needed.  The exploration carries on from where it
+    # stopped, so the whole growth costs about one exploration of the final set.
     toward = _Toward(task, scores)
     take = toward.missing_classes(kept)
     current = kept
     added: list[str] = []
+    estimate = 0  # objects still needed, judged by what the last round's objects reached
     try:
         while exploration.missing:
             if not take:
-                batch = max(1, (len(current) - len(kept)) // 4)
+                batch = max(1, (len(current) - len(kept)) // 4, min(estimate, 2 * (len(current) - len(kept))))
                 unreached = {arg for atom in exploration.missing for arg in atom[1:]}
                 take = toward.nearest(current, unreached, batch, exploration.facts)
                 if not take:
@@ -831,7 +993,10 @@ def repair_selection(
             exploration.add(grown - current)
             current = grown
             exploration.run()
-            toward.learn(take, len(exploration.missing) < before)
+            brought = before - len(exploration.missing)
+            toward.learn(take, brought > 0)
+            # one truck brought its city's packages home: about as many more as cities still waiting
+            estimate = -(-len(take) * len(exploration.missing) // brought) if brought > 0 else 0
             take = []
         check = exploration.outcome()
     except _OutOfBudget:
@@ -867,7 +1032,9 @@ class _Toward:
         self.task = task
         self.scores = scores
         self.hub = hub_degree(task)
-        self.fans = fan_in(task.init_index)
+        # the initial facts' links, walked once or twice a round
+        self.graph = ObjectGraph(task.init_index, REPAIR_MAX_FAN, fan_in(task.init_index))
+        self.toward_unreached: tuple[frozenset[str], dict[str, int]] = (frozenset(), {})
         self.classes = task.typing.problem.objects
         self.timed = bool(task.typing.problem.timed_literals)
         self.static = _compiled(task).static
@@ -882,7 +1049,7 @@ class _Toward:
     def missing_classes(self, kept: Set[str]) -> list[str]:
         """The best-ranked member (score, then hops from ``kept``) of every class ``kept`` has none of."""
         present = {self.classes[name] for name in kept if name in self.classes}
-        distance = object_distances(self.task.init_index, kept, self.hub, REPAIR_MAX_FAN, self.fans)
+        distance = graph_distances(self.task.init_index, self.graph, kept, self.hub)
         best: dict[str, tuple[float, int, str]] = {}
         far = len(self.classes) + 1
         for name, cls in self.classes.items():
@@ -896,18 +1063,27 @@ class _Toward:
     def nearest(
         self, current: Set[str], unreached: Set[str], count: int, reached: Mapping[GroundAtom, object]
     ) -> list[str]:
-        """The ``count`` objects outside ``current`` nearest to ``unreached`` (objects of goal atoms not
-        reached yet) in the initial state, classes that helped before those that did not, then best
-        scored.  Passed over, as they add nothing: an object a kept one of its class can stand in
-        for (an airplane at an airport another kept airplane flies to), and one whose every link is
-        to objects not kept while a kept one has its properties (an airplane parked at an airport
-        not kept); when nothing else is left, the latter, then any."""
-        distance = object_distances(self.task.init_index, unreached, self.hub, REPAIR_MAX_FAN, self.fans)
+        """The ``count`` objects outside ``current`` on the shortest ways in the initial state between
+        the objects of facts a step reached and ``unreached`` (objects of goal atoms not reached
+        yet): fewest hops from the one plus to the other, then nearest to ``unreached``, classes
+        that helped before those that did not, then best scored.  Passed over, as they add
+        nothing: an object a kept one of its class can stand in for (an airplane at an airport
+        another kept airplane flies to), and one whose every link is to objects not kept while a
+        kept one has its properties (an airplane parked at an airport not kept); when nothing else
+        is left, the latter, then any."""
+        index = self.task.init_index
+        if self.toward_unreached[0] != unreached:  # the same goal atoms stay unreached for many rounds
+            self.toward_unreached = (frozenset(unreached), graph_distances(index, self.graph, unreached, self.hub))
+        distance = self.toward_unreached[1]
         far = len(self.classes) + 1
+        sources = {arg for fact, achiever in reached.items() if achiever is not None for arg in fact[1:]}
+        sources.discard(MEMBER)
+        between = graph_distances(index, self.graph, sources, self.hub) if sources else {}
         fruitless, classes = self.fruitless, self.classes
         ranked = sorted(
             (name for name in classes if name not in current),
             key=lambda name: (
+                distance.get(name, far) + between.get(name, far if sources else 0),
                 distance.get(name, far),
                 fruitless.get(classes[name], 0),
                 -self.scores.get(name, 0.0),

@@ -25,7 +25,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from types import MappingProxyType
 
-from relevance_plan.pddl.formulas import effect_literals, literals
+from relevance_plan.pddl.formulas import GroundAtom, effect_literals, literals
 from relevance_plan.pddl.model import Domain, Problem
 
 
@@ -62,12 +62,18 @@ def infer_types(domain: Domain, problem: Problem) -> InferredTypes:
     names = list(domain.constants) + list(problem.objects)
     unary_of: dict[str, set[str]] = defaultdict(set)
     positions_of: dict[str, set[str]] = defaultdict(set)
+    grouped: dict[str, list[GroundAtom]] = defaultdict(list)
     for atom in problem.init:
-        if atom[0] in unary:
-            unary_of[atom[1]].add(atom[0])
-        elif atom[0] in static:
-            for position, arg in enumerate(atom[1:]):
-                positions_of[arg].add(f"{atom[0]}@{position}")
+        if atom[0] in static:
+            grouped[atom[0]].append(atom)
+    # each distinct object of a predicate's position once (a tall building's 125,000 ``above`` facts
+    # name its 500 floors)
+    for predicate, atoms in grouped.items():
+        for position in range(1, len(atoms[0])):
+            tag = predicate if predicate in unary else f"{predicate}@{position - 1}"
+            into = unary_of if predicate in unary else positions_of
+            for arg in {atom[position] for atom in atoms}:
+                into[arg].add(tag)
     signature = {name: frozenset(unary_of[name] or positions_of[name]) for name in names}
     classes = sorted({s for s in signature.values() if s}, key=lambda s: (len(s), sorted(s)))
     if not classes:

@@ -1,0 +1,142 @@
+"""The exploration's shortcuts change no answer: schemas with nothing left to add are passed over,
+and the repair's distances over a prebuilt object graph are plain breadth-first hops."""
+
+from __future__ import annotations
+
+import random
+from collections import deque
+
+import pytest
+
+from relevance_plan.data import DOMAINS_DIR
+from relevance_plan.generators.sized import NEW_WORLDS, generate_sized_problem
+from relevance_plan.pddl.parser import read_domain, read_problem
+from relevance_plan.relevance import reachability
+from relevance_plan.relevance.analysis import fan_in, object_distances
+from relevance_plan.relevance.reachability import relaxed_reachability
+from relevance_plan.relevance.scorers import PlanningTask
+
+
+def task_of(world: str, size: int, seed: int = 2) -> tuple[PlanningTask, dict]:
+    problem = generate_sized_problem(world, seed, 1, size)
+    sidecar = problem.sidecar
+    if world in NEW_WORLDS:
+        name = NEW_WORLDS[world].domain
+    else:  # a classic world's sidecar names the domain and its form apart
+        name = sidecar["domain"] + ("-typed" if sidecar["form"] == "typed" else "")
+    domain = read_domain((DOMAINS_DIR / name / "domain.pddl").read_text())
+    return PlanningTask(domain, read_problem(problem.pddl_text, domain)), sidecar
+
+
+def trials(task: PlanningTask, sidecar: dict, seed: str) -> list[set[str]]:
+    necessary = set(sidecar.get("necessary") or sidecar["goal_objects"])
+    everything = set(task.problem.objects)
+    rng = random.Random(seed)
+    others = sorted(everything - necessary)
+    found = [necessary, everything]
+    for _ in range(4):
+        found.append(necessary - {rng.choice(sorted(necessary))} | set(rng.sample(others, min(12, len(others)))))
+        found.append(necessary | set(rng.sample(others, min(30, len(others)))))
+    return found
+
+
+@pytest.mark.parametrize(
+    "world", ["miconic", "miconic-typed", "miconic-manygoals", "grid", "logistics", "gripper", "blocksworld", "ferry"]
+)
+def test_passing_over_saturated_schemas_changes_no_answer(monkeypatch, world):
+    task, sidecar = task_of(world, 150)
+    passed_over = []
+    saturated = reachability._Exploration._saturated
+
+    def counting(self, schema):
+        answer = saturated(self, schema)
+        passed_over.append(answer)
+        return answer
+
+    monkeypatch.setattr(reachability._Exploration, "_saturated", counting)
+    for kept in trials(task, sidecar, world):
+        with_cut = relaxed_reachability(task, kept)
+        with monkeypatch.context() as patch:
+            patch.setattr(reachability._Exploration, "_saturated", lambda self, schema: False)
+            without = relaxed_reachability(PlanningTask(task.domain, task.problem), kept)
+        assert with_cut.complete and without.complete
+        assert with_cut.reachable == without.reachable, sorted(kept)
+        assert set(with_cut.unreached) == set(without.unreached)
+        # the first step found for each fact is the same, so the relaxed plan is too
+        assert with_cut.plan == without.plan
+    if world.startswith("miconic"):
+        assert any(passed_over)  # the lift's moves: every floor is reached after the first one
+
+
+def test_a_schema_is_saturated_only_when_every_atom_it_adds_is_reached():
+    task, sidecar = task_of("miconic", 60)
+    exploration = reachability._Exploration(task, set(sidecar["necessary"]), reachability._Work(10**6))
+    up = next(s for s in exploration.schemas if s.name == "up")
+    floors = exploration.objects_of(dict(zip(up.parameters, up.types))["?f2"])
+    reached = {f for f in floors if ("lift-at", f) in exploration.facts}
+    # before the run only the lift's floor is reached: not saturated
+    assert len(reached) < len(floors) and not exploration._saturated(up)
+    exploration.run()
+    reached = {f for f in floors if ("lift-at", f) in exploration.facts}
+    assert exploration._saturated(up) == (reached == set(floors))
+
+
+def reference_hops(task: PlanningTask, sources, hub, max_fan) -> dict[str, int]:
+    """Plain breadth-first search over the initial facts with the same two rules."""
+    index = task.init_index
+    fans = fan_in(index)
+    distance = {s: 0 for s in sources}
+    queue = deque(distance)
+    while queue:
+        name = queue.popleft()
+        if hub is not None and distance[name] > 0 and len(index.by_object.get(name, ())) > hub:
+            continue
+        for atom in index.by_object.get(name, ()):
+            if len(atom) < 3:
+                continue
+            if max_fan is not None and fans.get((atom[0], atom.index(name) - 1), 0.0) > max_fan:
+                continue
+            for other in atom[1:]:
+                if other not in distance:
+                    distance[other] = distance[name] + 1
+                    queue.append(other)
+    return distance
+
+
+@pytest.mark.parametrize("world", ["grid", "logistics", "scenegraph", "ferry"])
+def test_object_distances_are_breadth_first_hops(world):
+    task, _ = task_of(world, 200)
+    rng = random.Random(world)
+    names = sorted(task.problem.objects)
+    for _ in range(10):
+        sources = rng.sample(names, rng.randint(1, 5))
+        for hub, max_fan in [(None, None), (reachability.hub_degree(task), None), (3, reachability.REPAIR_MAX_FAN)]:
+            assert object_distances(task.init_index, sources, hub, max_fan) == reference_hops(
+                task, sources, hub, max_fan
+            )
+
+
+def test_picking_up_while_holding_is_passed_over_once_the_arm_has_been_empty():
+    task, _ = task_of("grid", 150)
+    compiled = reachability._compiled(task)
+    dominated = {
+        schema.name: compiled.dominated[id(schema)] for schema in compiled.schemas if id(schema) in compiled.dominated
+    }
+    assert dominated == {"pickup-and-lose": frozenset({("arm-empty",)})}
+
+
+@pytest.mark.parametrize("world", ["grid", "grid-typed", "logistics", "scenegraph", "blocksworld"])
+def test_passing_over_dominated_schemas_changes_no_answer(monkeypatch, world):
+    from test_shared_exploration import holds_relaxed
+
+    task, sidecar = task_of(world, 150)
+    for kept in trials(task, sidecar, world):
+        with_cut = relaxed_reachability(task, kept)
+        with monkeypatch.context() as patch:
+            patch.setattr(reachability, "_dominated", lambda *args: {})
+            without = relaxed_reachability(PlanningTask(task.domain, task.problem), kept)
+        assert with_cut.complete and without.complete
+        assert with_cut.reachable == without.reachable, sorted(kept)
+        assert set(with_cut.unreached) == set(without.unreached)
+        if with_cut.reachable:
+            assert holds_relaxed(task, with_cut)  # the steps that stand in are real steps
