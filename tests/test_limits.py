@@ -126,3 +126,27 @@ def test_absurd_limits_are_exit_30(copied_coffee_files, tmp_path, option, value)
     assert code == ExitCode.USAGE
     one_line_error(stderr)
     assert not store.exists()
+
+
+def test_the_backstop_past_the_timeout_reports_like_any_result(monkeypatch, copied_coffee_files, tmp_path):
+    """When a step overruns --timeout by more than the slack, the alarm stops it and the run still
+    ends with an out-of-time result: one line, or with --json one JSON object."""
+    import json
+
+    import relevance_plan.cli.app as app
+
+    def overrunning(*args, **kwargs):
+        time.sleep(30)
+
+    monkeypatch.setattr(app, "plan_task", overrunning)
+    domain, problem = copied_coffee_files
+    started = time.monotonic()
+    code, stdout, stderr = run("plan", domain, problem, "--json", "--timeout", "0.1", "--plan-file", tmp_path / "p")
+    assert code == ExitCode.OUT_OF_TIME, stderr
+    data = json.loads(stdout)
+    assert data["status"] == "out-of-time" and "--timeout ran out" in data["message"]
+    code, _, stderr = run("plan", domain, problem, "-q", "--timeout", "0.1", "--plan-file", tmp_path / "p")
+    assert code == ExitCode.OUT_OF_TIME
+    assert "--timeout ran out" in one_line_error(stderr)
+    assert time.monotonic() - started < 10
+    assert not (tmp_path / "p").exists()

@@ -128,4 +128,4 @@ def test_a_second_airplane_is_passed_over_while_trucks_are_missing():
     assert chosen and all(classes[n] == "truck" for n in chosen), chosen
     # and with the check off every airplane parked at an airport counts as near as a truck
     parked = [n for n in classes if classes[n] == "airplane" and n != "plane1"]
-    assert any(toward._stood_in_for(n, ["plane1"], exploration.facts) for n in parked)
+    assert any(toward.stood_in_for(n, ["plane1"], exploration.facts) for n in parked)

@@ -9,6 +9,7 @@ import functools
 import importlib
 import json
 import sys
+import time
 from pathlib import Path
 
 import click
@@ -405,7 +406,8 @@ DEADLINE_SLACK = 0.8
 
 
 def _plan_within_timeout(domain_path, problem_path, options, quiet: bool, keep_work=None) -> PlanResult:
-    """``plan_task`` stopped (exit 20) if it runs past ``--timeout``, naming the step it was in."""
+    """``plan_task``, or, if it runs past ``--timeout``, an out-of-time result naming the step it
+    was in (reported as any other result: exit 20, and one JSON object with ``--json``)."""
     from relevance_plan.signals import DEADLINE_SIGNAL, Interrupted, deadline_alarm
 
     steps: list[str] = []  # the first report comes once scoring is done
@@ -416,6 +418,7 @@ def _plan_within_timeout(domain_path, problem_path, options, quiet: bool, keep_w
             click.echo(f"... {event.message}", err=True)
 
     timeout = options.timeout
+    started = time.monotonic()
     try:
         with deadline_alarm(None if timeout is None else timeout + DEADLINE_SLACK):
             return plan_task(domain_path, problem_path, options, progress=progress, keep_work=keep_work)
@@ -423,8 +426,13 @@ def _plan_within_timeout(domain_path, problem_path, options, quiet: bool, keep_w
         if error.signum != DEADLINE_SIGNAL:
             raise
         where = f"after '{steps[-1]}'" if steps else "while reading and scoring"
-        fail(f"out of time: the {timeout:g} s --timeout ran out {where}", ExitCode.OUT_OF_TIME)
-        raise  # not reached: fail exits
+        return PlanResult(
+            method=options.method,
+            status=PlanStatus.OUT_OF_TIME,
+            message=f"the {timeout:g} s --timeout ran out {where}",
+            wall_time=time.monotonic() - started,
+            planner=options.planner,
+        )
 
 
 def _print_plan_summary(result: PlanResult, plan_file, err: bool = False) -> None:

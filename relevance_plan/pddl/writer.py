@@ -11,7 +11,6 @@ problem.  Cost is linear in the file size, however the file is laid out
 
 from __future__ import annotations
 
-import bisect
 from collections.abc import Set
 
 from relevance_plan.pddl.model import Problem
@@ -39,22 +38,19 @@ def apply_cuts(text: str, cuts: list[tuple[int, int]]) -> str:
     """Remove the spans, the blanks after each (before it when it ends its line), and any line they leave empty."""
     if not cuts:
         return text
-    line_starts = [0]
-    position = text.find("\n")
-    while position >= 0:
-        line_starts.append(position + 1)
-        position = text.find("\n", position + 1)
     by_line: dict[int, list[tuple[int, int]]] = {}
     for start, end in cuts:
-        by_line.setdefault(bisect.bisect_right(line_starts, start) - 1, []).append((start, end))
+        by_line.setdefault(text.rfind("\n", 0, start) + 1, []).append((start, end))
     removed: list[tuple[int, int]] = []
-    for line, spans in by_line.items():
-        line_start = line_starts[line]
+    for line_start, spans in by_line.items():
         spans.sort()
         line_end = text.find("\n", spans[-1][1])
         if line_end < 0:
             line_end = len(text)
-        removed.extend(_cuts_on_line(text, line_start, line_end, spans))
+        if len(spans) == 1 and not text[line_start : spans[0][0]].strip() and not text[spans[0][1] : line_end].strip():
+            removed.append((line_start, min(line_end + 1, len(text))))  # one fact alone on its line: the line goes
+        else:
+            removed.extend(_cuts_on_line(text, line_start, line_end, spans))
     removed.sort()
     pieces: list[str] = []
     position = 0

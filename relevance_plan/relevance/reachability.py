@@ -48,6 +48,7 @@ BUDGET_PER_OBJECT = 5_000  # the budget grows with the problem, as the planner's
 REPAIR_SECONDS = 5.0  # and the repair's checks together stop after this long
 REPAIR_MAX_FAN = 4.0  # repair candidates are ranked by hops that do not pass from a class-like value to its members
 DOMINANCE_TRIES = 8  # kept objects of its class a repair candidate is compared with
+PAIRWISE_UP_TO = 64  # added objects of one class compared each with all others after the repair
 SHARED_FROM = 8  # goal objects of one interchangeable class before they share one exploration
 MEMBER = "#member"  # stands for every kept object of that class in the shared exploration (not a PDDL name)
 
@@ -1010,7 +1011,17 @@ def repair_selection(
     used = {name for name in check.plan_objects if name in task.problem.objects and name not in kept}
     reached = exploration.facts
     used, check = _economize(
-        task, kept, used, classes, rank, check, close, budget, deadline, lambda m: toward.interchangeable(m, reached)
+        task,
+        kept,
+        used,
+        classes,
+        rank,
+        check,
+        close,
+        budget,
+        deadline,
+        lambda members: toward.interchangeable(members, reached),
+        lambda name, others: toward.stood_in_for(name, others, reached),
     )
     step_of: dict[str, Step] = {}
     for step in check.plan:
@@ -1099,7 +1110,7 @@ class _Toward:
             cls = classes[name]
             if cls not in kept_of:
                 kept_of[cls] = sorted(n for n in current if classes.get(n) == cls)[:DOMINANCE_TRIES]
-            if self._stood_in_for(name, kept_of[cls], reached):
+            if self.stood_in_for(name, kept_of[cls], reached):
                 continue
             if self._detached(name, kept_of[cls], reached, current):
                 detached.append(name)
@@ -1119,16 +1130,16 @@ class _Toward:
             for atom in linked
         ):
             return False  # a static link (a road, a door) is part of a way that may be needed
-        return self._stood_in_for(name, others, reached, [atom for atom in atoms if len(atom) <= 2])
+        return self.stood_in_for(name, others, reached, [atom for atom in atoms if len(atom) <= 2])
 
     def interchangeable(self, members: Sequence[str], reached: Mapping[GroundAtom, object]) -> bool:
         """Whether one of ``members`` (of one class) can stand in for another (``reached``: what the
         exploration of them all reached)."""
         return any(
-            self._stood_in_for(name, [o for o in members if o != name][:DOMINANCE_TRIES], reached) for name in members
+            self.stood_in_for(name, [o for o in members if o != name][:DOMINANCE_TRIES], reached) for name in members
         )
 
-    def _stood_in_for(
+    def stood_in_for(
         self,
         name: str,
         others: Sequence[str],
@@ -1158,18 +1169,30 @@ def _economize(
     budget: int,
     deadline: float,
     interchangeable: Callable[[Sequence[str]], bool],
+    stood_in_for: Callable[[str, Sequence[str]], bool],
 ) -> tuple[set[str], Reachability]:
     """Fewer added objects of one class where fewer do: a relaxed plan takes the first airplane it
     meets for each package, when one airplane carries them all.  Class by class (most members
     first), keep the member the current relaxed plan uses most, alone, if the goal stays
     relaxed-reachable, else drop the less used half while it does; what the last relaxed plan no
-    longer uses goes too.  A few checks, each on the small kept set; a class none of whose members
-    can stand in for another (a truck in each city) is left as it is."""
+    longer uses goes too.  A few checks, each on the small kept set.  In a class none of whose
+    members can stand in for most others (a truck in each city), only those another member can
+    stand in for go (a second truck in one city, added in the same round as the first)."""
     by_class: dict[str, list[str]] = {}
     for name in used:
         by_class.setdefault(classes.get(name, "object"), []).append(name)
     for cls in sorted((c for c in by_class if len(by_class[c]) > 1), key=lambda c: (-len(by_class[c]), c)):
         if not interchangeable(sorted(by_class[cls])):
+            members = _by_use(by_class[cls], check, rank)
+            if len(members) <= PAIRWISE_UP_TO:
+                dropped: list[str] = []
+                for name in reversed(members):  # the least used first
+                    if stood_in_for(name, [m for m in members if m != name and m not in dropped]):
+                        dropped.append(name)
+                if dropped:
+                    trial_used, trial = _without(task, kept, used, dropped, close, budget, deadline)
+                    if trial is not None and len(trial_used) < len(used):
+                        used, check = trial_used, trial
             continue
         while True:
             members = _by_use([m for m in by_class[cls] if m in used], check, rank)
