@@ -54,6 +54,11 @@ def test_the_loaders_messages_are_out_of_memory():
     assert _classify(127, False, False, log, 0.0, 10.0, memory_limited=True) is PlannerStatus.OUT_OF_MEMORY
     assert _classify(120, False, False, "", 0.0, 10.0, memory_limited=True) is PlannerStatus.OUT_OF_MEMORY
     assert _classify(120, False, False, "", 0.0, 10.0, memory_limited=False) is PlannerStatus.PLANNER_CRASH
+    # the translator out of memory before it could even print why (seen at a 16-20 MB limit)
+    assert _classify(30, False, False, "lost sys.stderr", 0.0, 10.0, memory_limited=True) is PlannerStatus.OUT_OF_MEMORY
+    assert (
+        _classify(30, False, False, "lost sys.stderr", 0.0, 10.0, memory_limited=False) is PlannerStatus.PLANNER_CRASH
+    )
 
 
 # --------------------------------------------------------------------------- deep nesting

@@ -107,7 +107,14 @@ _ANYTIME_PLAN_RE = re.compile(re.escape(PLAN_FILE) + r"\.(\d+)")
 # How a component dies when its address-space limit is too small for it to
 # even start: the loader cannot map libc (exit 127), Python raises MemoryError
 # during start-up, or fails to flush at exit (exit 120).
-_OUT_OF_MEMORY_MARKERS = ("MemoryError", "failed to map segment", "Cannot allocate memory", "std::bad_alloc")
+# "lost sys.stderr": Python had no memory left to print its error (the translator under a tight limit)
+_OUT_OF_MEMORY_MARKERS = (
+    "MemoryError",
+    "failed to map segment",
+    "Cannot allocate memory",
+    "std::bad_alloc",
+    "lost sys.stderr",
+)
 _PYTHON_FINALIZE_FAILED = 120
 
 
