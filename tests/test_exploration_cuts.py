@@ -15,6 +15,7 @@ from relevance_plan.relevance import reachability
 from relevance_plan.relevance.analysis import fan_in, object_distances
 from relevance_plan.relevance.reachability import relaxed_reachability
 from relevance_plan.relevance.scorers import PlanningTask
+from relevance_plan.relevance.setup import ScoringOptions, score_problem
 
 
 def task_of(world: str, size: int, seed: int = 2) -> tuple[PlanningTask, dict]:
@@ -140,3 +141,22 @@ def test_passing_over_dominated_schemas_changes_no_answer(monkeypatch, world):
         assert set(with_cut.unreached) == set(without.unreached)
         if with_cut.reachable:
             assert holds_relaxed(task, with_cut)  # the steps that stand in are real steps
+
+
+def test_the_repair_grows_a_corridor_from_the_robot_not_discs_around_the_keys(monkeypatch):
+    """Before any step is found the robot's place is where reaching starts; the repair adds one
+    shortest way of cells from there toward the goal's key, which keeps fewer objects than ranking
+    every cell between them."""
+    task, _ = task_of("grid", 2000, seed=1)
+    toward = reachability._Toward(task, {})
+    (robot,) = [atom[1] for atom in task.init_index.by_predicate["at-robot"]]
+    assert robot in toward.agents
+
+    def first_kept() -> frozenset[str]:
+        fresh = PlanningTask(task.domain, task.problem)
+        return score_problem(fresh, ScoringOptions(), method="relevance").first_selection(narrow=True).kept
+
+    with_corridor = first_kept()
+    monkeypatch.setattr(reachability._Toward, "_path", lambda self, targets, sources, current: [])
+    without = first_kept()
+    assert len(with_corridor) < len(without)

@@ -1049,6 +1049,15 @@ class _Toward:
         self.classes = task.typing.problem.objects
         self.timed = bool(task.typing.problem.timed_literals)
         self.static = _compiled(task).static
+        # where the one agent is (the robot's place: the objects of a changing predicate's only
+        # initial fact): what it reaches grows from there before any step is found
+        self.agents = {
+            arg
+            for predicate in task.init_index.singletons
+            if predicate not in self.static
+            for atom in task.init_index.by_predicate[predicate]
+            for arg in atom[1:]
+        }
         # class -> rounds in a row its objects brought no goal atom nearer: a second airplane adds
         # nothing to a relaxed plan that has one, a truck in another city does
         self.fruitless: dict[str, int] = {}
@@ -1088,9 +1097,13 @@ class _Toward:
         distance = self.toward_unreached[1]
         far = len(self.classes) + 1
         sources = {arg for fact, achiever in reached.items() if achiever is not None for arg in fact[1:]}
+        sources.update(self.agents)
         sources.discard(MEMBER)
         between = graph_distances(index, self.graph, sources, self.hub) if sources else {}
         fruitless, classes = self.fruitless, self.classes
+        path = self._path(unreached - sources, sources - unreached, current)
+        if path:
+            return path
         ranked = sorted(
             (name for name in classes if name not in current),
             key=lambda name: (
@@ -1117,6 +1130,24 @@ class _Toward:
             else:
                 chosen.append(name)
         return chosen or detached[:count] or ranked[:count]
+
+    def _path(self, targets: Set[str], sources: Set[str], current: Set[str]) -> list[str]:
+        """The objects outside ``current`` on one shortest way in the initial state from the source
+        nearest to ``targets`` (goal objects no reached fact names yet) down to one of them: a
+        corridor of cells from where the robot can go to the goal's place, not every cell of the
+        rectangle between them."""
+        if not targets or not sources:
+            return []
+        distance = graph_distances(self.task.init_index, self.graph, targets, self.hub)
+        start = min((name for name in sources if name in distance), key=lambda n: (distance[n], n), default=None)
+        walk: list[str] = []
+        name = start
+        while name is not None and distance[name] > 0:
+            lower = distance[name] - 1
+            name = next((o for o in self.graph.neighbours(name) if distance.get(o) == lower), None)
+            if name is not None and name not in current and name in self.classes:
+                walk.append(name)
+        return walk
 
     def _detached(self, name: str, others: Sequence[str], reached: Mapping[GroundAtom, object], kept: Set[str]) -> bool:
         """Whether ``name``'s links to other objects are all where it is now (facts that change) and
