@@ -160,3 +160,36 @@ def test_the_repair_grows_a_corridor_from_the_robot_not_discs_around_the_keys(mo
     monkeypatch.setattr(reachability._Toward, "_path", lambda self, targets, sources, current: [])
     without = first_kept()
     assert len(with_corridor) < len(without)
+
+
+def test_the_repairs_selection_is_the_same_in_every_process():
+    """The initial facts' order (and so each object's neighbours') follows the hash seed; the
+    corridor and the ranking must not."""
+    import os
+    import subprocess
+    import sys
+
+    script = (
+        "from relevance_plan.data import DOMAINS_DIR\n"
+        "from relevance_plan.generators.sized import generate_sized_problem\n"
+        "from relevance_plan.pddl.parser import read_domain, read_problem\n"
+        "from relevance_plan.relevance.scorers import PlanningTask\n"
+        "from relevance_plan.relevance.setup import ScoringOptions, score_problem\n"
+        "for world, domain in (('grid', 'grid'), ('scenegraph', 'scenegraph')):\n"
+        "    problem = generate_sized_problem(world, 3, 1, 500)\n"
+        "    d = read_domain((DOMAINS_DIR / domain / 'domain.pddl').read_text())\n"
+        "    task = PlanningTask(d, read_problem(problem.pddl_text, d))\n"
+        "    kept = score_problem(task, ScoringOptions(), method='relevance').first_selection(narrow=True).kept\n"
+        "    print(world, sorted(kept))\n"
+    )
+    outputs = [
+        subprocess.run(
+            [sys.executable, "-c", script],
+            env=dict(os.environ, PYTHONHASHSEED=seed),
+            capture_output=True,
+            text=True,
+            check=True,
+        ).stdout
+        for seed in ("1", "2", "3")
+    ]
+    assert outputs[0] and outputs[0] == outputs[1] == outputs[2]

@@ -1144,7 +1144,8 @@ class _Toward:
         name = start
         while name is not None and distance[name] > 0:
             lower = distance[name] - 1
-            name = next((o for o in self.graph.neighbours(name) if distance.get(o) == lower), None)
+            # the first by name: the facts' order, and so the neighbours', changes from run to run
+            name = min((o for o in self.graph.neighbours(name) if distance.get(o) == lower), default=None)
             if name is not None and name not in current and name in self.classes:
                 walk.append(name)
         return walk
