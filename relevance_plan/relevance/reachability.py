@@ -1083,10 +1083,12 @@ class _Toward:
     def nearest(
         self, current: Set[str], unreached: Set[str], count: int, reached: Mapping[GroundAtom, object]
     ) -> list[str]:
-        """The ``count`` objects outside ``current`` on the shortest ways in the initial state between
-        the objects of facts a step reached and ``unreached`` (objects of goal atoms not reached
-        yet): fewest hops from the one plus to the other, then nearest to ``unreached``, classes
-        that helped before those that did not, then best scored.  Passed over, as they add
+        """While a goal object is named by no reached fact, the objects of one shortest way toward it
+        (:meth:`_path`).  Otherwise the ``count`` objects outside ``current`` on the shortest ways
+        in the initial state between the objects of facts a step reached (and the agent's place)
+        and ``unreached`` (objects of goal atoms not reached yet): fewest hops from the one plus
+        to the other, then nearest to ``unreached``, classes that helped before those that did
+        not, then best scored.  Passed over, as they add
         nothing: an object a kept one of its class can stand in for (an airplane at an airport
         another kept airplane flies to), and one whose every link is to objects not kept while a
         kept one has its properties (an airplane parked at an airport not kept); when nothing else
