@@ -8,6 +8,8 @@ on the path).  Nothing here imports the package at import time.
 from __future__ import annotations
 
 import json
+import os
+import subprocess
 import sys
 from pathlib import Path
 
@@ -139,3 +141,21 @@ def make_row(
         "finished_at": "2026-11-22T00:00:00.000+00:00",
         "result_json": "{}",
     }
+
+
+# --------------------------------------------------------------------------- other processes
+
+
+def outputs_under_hash_seeds(script: str, seeds: tuple[str, ...] = ("1", "2"), *args: str) -> list[str]:
+    """What ``python -c script args`` prints in a new process under each hash seed: sets and
+    dicts of strings iterate in another order in each."""
+    return [
+        subprocess.run(
+            [sys.executable, "-c", script, *args],
+            env=dict(os.environ, PYTHONHASHSEED=seed),
+            capture_output=True,
+            text=True,
+            check=True,
+        ).stdout
+        for seed in seeds
+    ]

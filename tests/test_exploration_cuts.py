@@ -165,9 +165,7 @@ def test_the_repair_grows_a_corridor_from_the_robot_not_discs_around_the_keys(mo
 def test_the_repairs_selection_is_the_same_in_every_process():
     """The initial facts' order (and so each object's neighbours') follows the hash seed; the
     corridor and the ranking must not."""
-    import os
-    import subprocess
-    import sys
+    from support import outputs_under_hash_seeds
 
     script = (
         "from relevance_plan.data import DOMAINS_DIR\n"
@@ -182,14 +180,5 @@ def test_the_repairs_selection_is_the_same_in_every_process():
         "    kept = score_problem(task, ScoringOptions(), method='relevance').first_selection(narrow=True).kept\n"
         "    print(world, sorted(kept))\n"
     )
-    outputs = [
-        subprocess.run(
-            [sys.executable, "-c", script],
-            env=dict(os.environ, PYTHONHASHSEED=seed),
-            capture_output=True,
-            text=True,
-            check=True,
-        ).stdout
-        for seed in ("1", "2", "3")
-    ]
+    outputs = outputs_under_hash_seeds(script, ("1", "2", "3"))
     assert outputs[0] and outputs[0] == outputs[1] == outputs[2]

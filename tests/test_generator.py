@@ -19,7 +19,7 @@ import time
 from pathlib import Path
 
 import pytest
-from support import DOMAINS, PROBLEMS, REPO
+from support import DOMAINS, PROBLEMS, REPO, outputs_under_hash_seeds
 
 if str(REPO) not in sys.path:  # the repository is not necessarily installed
     sys.path.insert(0, str(REPO))
@@ -325,14 +325,7 @@ def test_same_arguments_same_problem_across_processes():
         "p = generate_problem('coffee', 'hard', 5, 2);"
         "sys.stdout.write(p.pddl_text + p.sidecar_text)"
     )
-    outputs = []
-    for hash_seed in ("1", "2"):
-        env = dict(os.environ, PYTHONHASHSEED=hash_seed)
-        outputs.append(
-            subprocess.run(
-                [sys.executable, "-c", script, str(REPO)], env=env, capture_output=True, text=True, check=True
-            ).stdout
-        )
+    outputs = outputs_under_hash_seeds(script, ("1", "2"), str(REPO))
     problem = generate_problem("coffee", "hard", 5, 2)
     assert outputs[0] == outputs[1] == problem.pddl_text + problem.sidecar_text
 

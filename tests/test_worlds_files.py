@@ -5,12 +5,9 @@ and ``relevance-plan generate`` writes its suites with the usual layout and rule
 from __future__ import annotations
 
 import json
-import os
-import subprocess
-import sys
 
 import pytest
-from support import invoke, one_line_error
+from support import invoke, one_line_error, outputs_under_hash_seeds
 
 from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.generators.kitchen_variants import KITCHEN_VARIANTS, generate_variant_problem
@@ -131,16 +128,7 @@ ACROSS_PROCESSES = (
 
 
 def test_same_bytes_across_processes_and_hash_seeds():
-    outputs = [
-        subprocess.run(
-            [sys.executable, "-c", ACROSS_PROCESSES],
-            env=dict(os.environ, PYTHONHASHSEED=hash_seed),
-            capture_output=True,
-            text=True,
-            check=True,
-        ).stdout
-        for hash_seed in ("1", "2")
-    ]
+    outputs = outputs_under_hash_seeds(ACROSS_PROCESSES)
     here = "".join(
         generate_sized_problem(world, 3, 1, 120).pddl_text
         for world in ("scenegraph", "driverlog-temporal", "zenotravel-numeric", "logistics-manygoals")

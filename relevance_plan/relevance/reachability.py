@@ -1101,11 +1101,11 @@ class _Toward:
         sources = {arg for fact, achiever in reached.items() if achiever is not None for arg in fact[1:]}
         sources.update(self.agents)
         sources.discard(MEMBER)
-        between = graph_distances(index, self.graph, sources, self.hub) if sources else {}
-        fruitless, classes = self.fruitless, self.classes
         path = self._path(unreached - sources, sources - unreached, current)
         if path:
             return path
+        between = graph_distances(index, self.graph, sources, self.hub) if sources else {}
+        fruitless, classes = self.fruitless, self.classes
         ranked = sorted(
             (name for name in classes if name not in current),
             key=lambda name: (
