@@ -69,6 +69,7 @@ sys.path.insert(0, str(REPO))
 from relevance_plan.data import DOMAINS_DIR  # noqa: E402
 from relevance_plan.generators.sized import CLASSIC_WORLDS, generate_sized_problem  # noqa: E402
 from relevance_plan.io import load_domain, load_problem, write_text_atomic  # noqa: E402
+from relevance_plan.pddl.sexpr import collection_paused  # noqa: E402
 from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task  # noqa: E402
 from relevance_plan.relevance.scorers import PlanningTask  # noqa: E402
 from relevance_plan.relevance.setup import ScoringOptions, score_problem  # noqa: E402
@@ -118,7 +119,13 @@ def run(domain_path: Path, problem_path: Path, method: str, timeout: float) -> d
 
 
 def prune_stages(domain_path: Path, problem_path: Path, out: Path) -> dict:
-    """The steps of ``plan_task`` before its first planner call, timed one by one."""
+    """The steps of ``plan_task`` before its first planner call, timed one by one (with the garbage
+    collector paused, as ``plan_task`` runs them)."""
+    with collection_paused():
+        return _prune_stages(domain_path, problem_path, out)
+
+
+def _prune_stages(domain_path: Path, problem_path: Path, out: Path) -> dict:
     times = {}
     start = time.perf_counter()
     domain = load_domain(domain_path)

@@ -24,6 +24,7 @@ from pathlib import Path
 from typing import Any
 
 from relevance_plan.io import Source, is_pddl_text, load_sources
+from relevance_plan.pddl.sexpr import collection_paused
 from relevance_plan.planning.loop import PlanOptions, PlanResult, plan_task
 from relevance_plan.progress import ProgressCallback
 from relevance_plan.relevance.prune import Selection, Thresholds
@@ -49,13 +50,14 @@ def prune(domain: Source, problem: Source, **options: Any) -> Selection:
     Options: ``scorer``, ``model_path``, ``objective``, ``model_task``, ``human``,
     ``tau_class``, ``tau_element``, ``seed``, ``goal_filter``, ``prefer_free``, ``economical``.
     """
-    parsed_domain, parsed_problem = load_sources(domain, problem)
     scoring_options = ScoringOptions(**_thresholds(dict(options)))
-    domain_path = None if is_pddl_text(domain) else str(domain)
-    problem_path = None if is_pddl_text(problem) else str(problem)
-    task = PlanningTask(parsed_domain, parsed_problem)
-    scoring = score_problem(task, scoring_options, domain_path=domain_path, problem_path=problem_path)
-    return scoring.first_selection()
+    with collection_paused():  # one pass of the collector over the facts afterwards, not several during
+        parsed_domain, parsed_problem = load_sources(domain, problem)
+        domain_path = None if is_pddl_text(domain) else str(domain)
+        problem_path = None if is_pddl_text(problem) else str(problem)
+        task = PlanningTask(parsed_domain, parsed_problem)
+        scoring = score_problem(task, scoring_options, domain_path=domain_path, problem_path=problem_path)
+        return scoring.first_selection()
 
 
 def plan(domain: Source, problem: Source, *, progress: ProgressCallback | None = None, **options: Any) -> PlanResult:

@@ -163,8 +163,10 @@ def test_the_repair_grows_a_corridor_from_the_robot_not_discs_around_the_keys(mo
 
 
 def test_the_repairs_selection_is_the_same_in_every_process():
-    """The initial facts' order (and so each object's neighbours') follows the hash seed; the
-    corridor and the ranking must not."""
+    """A problem's facts are a set, iterated in the hash seed's order; the exploration (which takes
+    the static facts in the file's order, unsorted), the corridor and the ranking must not follow it.
+    Many-goal logistics failed it when the facts came in the index's order before that followed the
+    file."""
     from support import outputs_under_hash_seeds
 
     script = (
@@ -173,7 +175,7 @@ def test_the_repairs_selection_is_the_same_in_every_process():
         "from relevance_plan.pddl.parser import read_domain, read_problem\n"
         "from relevance_plan.relevance.scorers import PlanningTask\n"
         "from relevance_plan.relevance.setup import ScoringOptions, score_problem\n"
-        "for world, domain in (('grid', 'grid'), ('scenegraph', 'scenegraph')):\n"
+        "for world, domain in (('grid', 'grid'), ('scenegraph', 'scenegraph'), ('logistics-manygoals', 'logistics')):\n"
         "    problem = generate_sized_problem(world, 3, 1, 500)\n"
         "    d = read_domain((DOMAINS_DIR / domain / 'domain.pddl').read_text())\n"
         "    task = PlanningTask(d, read_problem(problem.pddl_text, d))\n"

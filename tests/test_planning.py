@@ -8,6 +8,7 @@ import pytest
 from kitchen import coffee_problem
 from padded_worlds import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
 
+from relevance_plan.errors import RelevancePlanError
 from relevance_plan.io import load_task
 from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task
 from relevance_plan.planning.validate import ValidationStatus, validate_with_up
@@ -293,3 +294,23 @@ def test_a_failed_first_attempt_costs_no_more_than_its_share(coffee_files):
         if not full:
             assert limit <= 60 * 0.25 + 0.01
     assert calls[-1][1] > 60 * (1 - 0.25) - 1  # what is left for the full problem
+
+
+@pytest.mark.planner
+def test_a_run_pauses_the_garbage_collector_and_resumes_it(coffee_files):
+    """The collector's passes over a big problem's facts cost a third of the pruning: a run pauses
+    it (its facts form no cycle) and gives it back, enabled, however the run ends."""
+    import gc
+
+    domain_path, problem_path = coffee_files
+    seen = []
+    assert gc.isenabled()
+    result = plan_task(
+        domain_path, problem_path, PlanOptions(timeout=60), progress=lambda _: seen.append(gc.isenabled())
+    )
+    assert result.status is PlanStatus.SOLVED
+    assert seen and not any(seen)
+    assert gc.isenabled()
+    with pytest.raises(RelevancePlanError):
+        plan_task(domain_path, problem_path.with_name("missing.pddl"), PlanOptions(timeout=60))
+    assert gc.isenabled()

@@ -37,10 +37,14 @@ from relevance_plan.relevance.setup import Scoring, ScoringOptions, score_proble
 
 def _score_and_prune(domain_path, problem_path, options: ScoringOptions) -> tuple[Scoring, Selection]:
     from relevance_plan.io import load_task
+    from relevance_plan.pddl.sexpr import collection_paused
 
-    domain, problem = load_task(domain_path, problem_path)
-    scoring = score_problem(PlanningTask(domain, problem), options, domain_path=domain_path, problem_path=problem_path)
-    return scoring, scoring.first_selection()
+    with collection_paused():  # one pass of the collector over the facts afterwards, not several during
+        domain, problem = load_task(domain_path, problem_path)
+        scoring = score_problem(
+            PlanningTask(domain, problem), options, domain_path=domain_path, problem_path=problem_path
+        )
+        return scoring, scoring.first_selection()
 
 
 def _prune_json(result: Selection) -> dict:

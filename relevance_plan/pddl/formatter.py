@@ -186,8 +186,8 @@ def format_problem_parts(
 
 def _init_order(problem: Problem) -> Iterable[f.GroundAtom]:
     # Facts in the order the problem's own text had them when it has one, else sorted.
-    if problem.init_line:
-        return sorted(problem.init, key=lambda atom: (problem.init_line.get(atom, 0), atom))
+    if problem.init_order:
+        return sorted(problem.init, key=lambda atom: (problem.init_order.get(atom, -1), atom))
     return sorted(problem.init)
 
 

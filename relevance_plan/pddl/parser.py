@@ -33,13 +33,14 @@ from relevance_plan.pddl.model import (
     Action,
     DerivedPredicate,
     Domain,
+    InitSpan,
     Metric,
     ObjectGroup,
     Problem,
     TimedLiteral,
     frozen,
 )
-from relevance_plan.pddl.sexpr import Item, LineIndex, Node, Symbol, check_deadline, collection_paused, parse_sexpr
+from relevance_plan.pddl.sexpr import Item, Node, Symbol, check_deadline, collection_paused, parse_sexpr
 
 # Accepted as written; PDDL+ is refused (see UNSUPPORTED_REQUIREMENTS).
 KNOWN_REQUIREMENTS = frozenset(
@@ -679,11 +680,10 @@ def _read_derived(reader: _Reader, node: Node, scope: _Scope) -> DerivedPredicat
 
 @dataclass
 class _InitParts:
-    facts: set[f.GroundAtom]
+    facts: dict[f.GroundAtom, None]  # in the order the file first states them
     numeric: dict[f.GroundAtom, float]
     timed: list[TimedLiteral]
-    spans: list[tuple[tuple[int, int], frozenset[str]]]
-    lines: dict[f.GroundAtom, int]
+    spans: list[InitSpan]
 
 
 def read_problem(text: str, domain: Domain, path: str | None = None, deadline: float | None = None) -> Problem:
@@ -696,13 +696,13 @@ def read_problem(text: str, domain: Domain, path: str | None = None, deadline: f
 
 
 def _read_problem(text: str, domain: Domain, path: str | None, deadline: float | None) -> Problem:
-    flat = _flat_init(text, path, deadline)
+    flat = _flat_init(text)
     if flat is not None:
         # A big :init of plain atoms (125,000 ``above`` facts) is read with string methods instead of
         # one node per token; anything it does not expect, the full reading reads and reports.
-        blanked, atoms = flat
         try:
-            return _read_problem_from(text, parse_sexpr(blanked, path, deadline), domain, path, deadline, atoms)
+            root = parse_sexpr(text, path, deadline, skip=flat)
+            return _read_problem_from(text, root, domain, path, deadline, flat)
         except OutOfTimeError:
             raise
         except RelevancePlanError:
@@ -713,17 +713,13 @@ def _read_problem(text: str, domain: Domain, path: str | None, deadline: float |
 # The one ``(:init`` of a problem; a body of plain atoms (no nested list, no comment) up to its ``)``;
 # one such atom (group 1: its inside).
 _INIT_START = re.compile(r"\(\s*:init(?=[\s();])", re.IGNORECASE)
-_PLAIN_BODY = re.compile(r"(?:\s+|\([^();]*\))*")
+_PLAIN_BODY = re.compile(r"(?:\s*\([^();]*\))*\s*")
 _PLAIN_ATOM = re.compile(r"\(([^();]*)\)")
 FLAT_INIT_FROM = 2000  # atoms in :init before the string-method reading pays
 
 
-def _flat_init(
-    text: str, path: str | None = None, deadline: float | None = None
-) -> tuple[str, list[tuple[int, int, str]]] | None:
-    """``text`` with its :init body blanked out (line breaks kept, so every offset and line stays),
-    and the body's atoms (start, end, inside); None unless the body holds only plain atoms, enough
-    of them."""
+def _flat_init(text: str) -> tuple[int, int] | None:
+    """Where the :init body starts and ends; None unless it holds only plain atoms, enough of them."""
     found = list(_INIT_START.finditer(text))
     if len(found) != 1:
         return None
@@ -736,47 +732,42 @@ def _flat_init(
     end = plain.end() if plain is not None else body
     if text[end : end + 1] != ")":
         return None
-    inside = text[body:end]
-    if inside.count("(") < FLAT_INIT_FROM or "\r" in inside:
+    if text.count("(", body, end) < FLAT_INIT_FROM or "\r" in text[body:end]:
         return None
-    atoms = []
-    for count, atom in enumerate(_PLAIN_ATOM.finditer(inside)):
-        if not count & 0xFFFF:
-            check_deadline(deadline, "reading ':init'", path)
-        atoms.append((atom.start() + body, atom.end() + body, atom.group(1)))
-    blank = "\n".join(" " * len(line) for line in inside.split("\n"))
-    return text[:body] + blank + text[end:], atoms
+    return body, end
 
 
 def _read_flat_init(
     text: str,
-    atoms: list[tuple[int, int, str]],
+    body: tuple[int, int],
     scope: _Scope,
     objects: Mapping[str, str],
     path: str | None = None,
     deadline: float | None = None,
 ) -> _InitParts:
-    """What :func:`_read_init` makes of plain atoms; a PDDLParseError at the first one it would
-    refuse (the caller then reads the file in full, for the full message)."""
-    parts = _InitParts(set(), {}, [], [], {})
+    """What :func:`_read_init` makes of the plain atoms between ``body``'s offsets; a PDDLParseError
+    at the first one it would refuse (the caller then reads the file in full, for the full message
+    and its line)."""
+    parts = _InitParts({}, {}, [], [])
     predicates, known = scope.predicates, scope.objects or {}
-    line_of = LineIndex(text).line_of
-    facts, lines, spans, names = parts.facts, parts.lines, parts.spans, objects.keys()
+    facts, spans, names = parts.facts, parts.spans, objects.keys()
     is_known = known.__contains__
     constants = known.keys() - names
-    for count, (start, end, inside) in enumerate(atoms):
-        if not count & 0xFFF:
-            check_deadline(deadline, "reading ':init'", path, line_of(start))
-        words = inside.lower().split()
-        declared = predicates.get(words[0]) if words else None
-        args = words[1:]
+    start, end = body
+    inside = text[start:end]
+    lowered = inside.isascii()  # else one atom at a time: a non-ASCII lower case may change the length
+    if lowered:
+        inside = inside.lower()
+    for count, atom in enumerate(_PLAIN_ATOM.finditer(inside)):
+        if not count & 0xFFFF:
+            check_deadline(deadline, "reading ':init'", path)
+        ground = tuple(atom.group(1).split() if lowered else atom.group(1).lower().split())
+        declared = predicates.get(ground[0]) if ground else None
+        args = ground[1:]
         if declared is None or len(declared) != len(args) or not all(map(is_known, args)):
-            raise PDDLParseError("not a plain atom", line=line_of(start))
-        ground = tuple(words)
-        facts.add(ground)
-        if ground not in lines:
-            lines[ground] = line_of(start)
-        spans.append(((start, end), frozenset(names & args if constants else args)))
+            raise PDDLParseError("not a plain atom")
+        facts[ground] = None
+        spans.append((atom.start() + start, atom.end() + start, tuple(sorted(names & args)) if constants else args))
     return parts
 
 
@@ -786,7 +777,7 @@ def _read_problem_from(
     domain: Domain,
     path: str | None,
     deadline: float | None,
-    flat_atoms: list[tuple[int, int, str]] | None,
+    flat_body: tuple[int, int] | None,
 ) -> Problem:
     reader = _Reader(path)
     name, sections = reader.header(root, "problem")
@@ -830,10 +821,10 @@ def _read_problem_from(
     known = dict(domain.constants)
     known.update(objects)
     scope = _Scope(domain.types, domain.predicates, domain.functions, MappingProxyType(known), {}, in_problem=True)
-    if flat_atoms is None:
+    if flat_body is None:
         init = _read_init(reader, found["init"], scope, objects, deadline)
     else:
-        init = _read_flat_init(text, flat_atoms, scope, objects, path, deadline)
+        init = _read_flat_init(text, flat_body, scope, objects, path, deadline)
     goal = _read_goal(reader, found.get(":goal"), replace(scope, preferences=True))
     constraints = None
     if ":constraints" in found:
@@ -854,7 +845,7 @@ def _read_problem_from(
         requirements=requirements,
         object_groups=groups,
         init_spans=tuple(init.spans),
-        init_line=frozen(init.lines),
+        init_order=MappingProxyType(dict(zip(init.facts, range(len(init.facts))))),
     )
 
 
@@ -894,7 +885,7 @@ def _read_objects(
 def _read_init(
     reader: _Reader, nodes: list[Item], scope: _Scope, objects: Mapping[str, str], deadline: float | None = None
 ) -> _InitParts:
-    parts = _InitParts(set(), {}, [], [], {})
+    parts = _InitParts({}, {}, [], [])
     for count, node in enumerate(nodes):
         if not count & 0xFFF:
             check_deadline(deadline, "reading ':init'", reader.path, node.line)
@@ -918,10 +909,9 @@ def _read_init(
             if not isinstance(atom, f.Atom):
                 reader.fail("an equality is not an initial fact", node)
             ground = (atom.predicate, *atom.args)
-            parts.facts.add(ground)
-            parts.lines.setdefault(ground, node.line)
+            parts.facts[ground] = None
             mentioned.update(atom.args)
-        parts.spans.append(((node.start, node.end), frozenset(mentioned) & objects.keys()))
+        parts.spans.append((node.start, node.end, tuple(sorted(mentioned & objects.keys()))))
     return parts
 
 

@@ -16,6 +16,7 @@ from __future__ import annotations
 import bisect
 import contextlib
 import gc
+import itertools
 import re
 import threading
 import time
@@ -77,11 +78,14 @@ _PAUSES_LOCK = threading.Lock()
 
 @contextlib.contextmanager
 def collection_paused() -> Iterator[None]:
-    """Pause the cyclic garbage collector while a big file becomes millions of small objects.
+    """Pause the cyclic garbage collector while a big file becomes millions of small objects, or
+    while a run (reading, scoring, pruning, planning) works on them.
 
-    Its passes over the growing heap would otherwise take most of the time
-    (they more than double it on big problems).  Nothing read here forms a
-    cycle; the collector resumes when the last reader, of any thread, is done.
+    Its passes over the growing heap would otherwise take a third of the
+    time (more than half while reading): each pass walks every fact again.
+    Nothing read here forms a cycle and a whole run leaves a handful of small
+    ones (17 objects after pruning a 5,000-object problem), reclaimed once the
+    collector resumes, when the last pause, of any thread, is over.
     """
     global _PAUSES
     with _PAUSES_LOCK:
@@ -99,14 +103,21 @@ def collection_paused() -> Iterator[None]:
                 gc.enable()
 
 
-def parse_sexpr(text: str, path: str | None = None, deadline: float | None = None) -> Node:
-    """Parse ``text`` holding exactly one top-level list (a PDDL domain or problem)."""
+def parse_sexpr(
+    text: str, path: str | None = None, deadline: float | None = None, skip: tuple[int, int] = (0, 0)
+) -> Node:
+    """Parse ``text`` holding exactly one top-level list (a PDDL domain or problem).
+
+    ``skip``: the offsets of a part read elsewhere (a big :init's atoms, see the parser), passed
+    over; it must start and end between tokens and not inside a CRLF.  Lines after it still count
+    its line breaks.
+    """
     if "\0" in text:
         raise PDDLParseError(
             "NUL byte in the file (a binary file?)", path=path, line=LineIndex(text).line_of(text.index("\0"))
         )
     with collection_paused():
-        root = _read_lists(text, path, deadline)
+        root = _read_lists(text, path, deadline, skip)
     if root is None:
         if text.strip():
             raise PDDLParseError("no PDDL definition found: the file holds only comments", path=path, line=1)
@@ -114,14 +125,20 @@ def parse_sexpr(text: str, path: str | None = None, deadline: float | None = Non
     return root
 
 
-def _read_lists(text: str, path: str | None, deadline: float | None) -> Node | None:
-    # Offsets where each line after the first starts; the sentinel is never reached.
-    starts = [m.end() for m in _LINE_BREAK.finditer(text)]
+def _read_lists(text: str, path: str | None, deadline: float | None, skip: tuple[int, int]) -> Node | None:
+    # Offsets where each line after the first starts; the sentinel is never reached.  Inside the
+    # skipped part no token asks for its line: its line breaks count, where they are does not.
+    gap_start, gap_end = skip
+    starts = [m.end() for m in _LINE_BREAK.finditer(text, 0, gap_start)]
+    breaks = text.count("\n", gap_start, gap_end) + text.count("\r", gap_start, gap_end)
+    starts.extend([gap_end] * (breaks - text.count("\r\n", gap_start, gap_end)))
+    starts.extend(m.end() for m in _LINE_BREAK.finditer(text, gap_end))
     starts.append(len(text) + 1)
     line, next_line = 1, starts[0]
     stack: list[Node] = []
     root: Node | None = None
-    for count, match in enumerate(_TOKEN.finditer(text)):
+    tokens = itertools.chain(_TOKEN.finditer(text, 0, gap_start), _TOKEN.finditer(text, gap_end))
+    for count, match in enumerate(tokens):
         start = match.start()
         if start >= next_line:
             line = bisect.bisect_right(starts, start) + 1

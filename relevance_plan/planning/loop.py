@@ -41,6 +41,7 @@ from relevance_plan.errors import OutOfTimeError, UnsupportedFeatureError, Usage
 from relevance_plan.io import load_domain, load_problem, scratch_directory, write_text_atomic
 from relevance_plan.pddl.model import Problem
 from relevance_plan.pddl.plans import Plan, format_plan
+from relevance_plan.pddl.sexpr import collection_paused
 from relevance_plan.planning import head_start
 from relevance_plan.planning.compile import PreparedPlanner, prepare_planner, with_planner_args
 from relevance_plan.planning.outcome import PlannerStatus, RunOutcome
@@ -475,6 +476,17 @@ def plan_task(
 
     With ``keep_work``, each attempt's planner files stay in ``keep_work/attempt-N``.
     """
+    with collection_paused():  # the run's facts die with it: no pass over them needed
+        return _plan_task(domain_path, problem_path, options, progress, keep_work)
+
+
+def _plan_task(
+    domain_path: str | Path,
+    problem_path: str | Path,
+    options: PlanOptions,
+    progress: ProgressCallback | None,
+    keep_work: str | os.PathLike[str] | None,
+) -> PlanResult:
     say = _teller(progress)
     started = time.perf_counter()
     domain_path, problem_path = str(domain_path), str(problem_path)

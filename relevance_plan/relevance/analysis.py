@@ -66,7 +66,10 @@ def index_init(problem: Problem) -> InitIndex:
     so the objects inside a function term are linked like those of a static fact."""
     by_predicate: dict[str, list[GroundAtom]] = defaultdict(list)
     by_object: dict[str, list[GroundAtom]] = defaultdict(list)
-    for atom in (*problem.init, *numeric_facts(problem)):
+    # The file's order when the problem has it, else sorted: never the hash seed's (the
+    # exploration takes static facts in this order)
+    ordered = problem.init_order.keys() if problem.init_order.keys() == problem.init else sorted(problem.init)
+    for atom in (*ordered, *numeric_facts(problem)):
         by_predicate[atom[0]].append(atom)
         if len(atom) == 3:  # most facts link two objects: no set for them
             by_object[atom[1]].append(atom)

@@ -75,10 +75,12 @@ def objects_to_keep(
     domain: Domain, problem: Problem, requirements: tuple[KeptForSoundness, ...]
 ) -> dict[str, KeptForSoundness]:
     """Object -> the requirement that keeps it (the first one that applies)."""
+    guards = {requirement.guard for requirement in requirements if requirement.guard}
     guarded: dict[str, set[str]] = {}
-    for atom in problem.init:
-        if len(atom) == 2:
-            guarded.setdefault(atom[0], set()).add(atom[1])
+    if guards:
+        for atom in problem.init:
+            if len(atom) == 2 and atom[0] in guards:
+                guarded.setdefault(atom[0], set()).add(atom[1])
     kept: dict[str, KeptForSoundness] = {}
     for requirement in requirements:
         admitted = guarded.get(requirement.guard, set()) if requirement.guard else None

@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import dataclasses
 from collections import defaultdict
-from collections.abc import Mapping
+from collections.abc import Collection, Mapping
 from dataclasses import dataclass
 from types import MappingProxyType
 
@@ -54,7 +54,12 @@ def _class_name(signature: frozenset[str]) -> str:
     return "+".join(sorted(signature)) if signature else "object"
 
 
-def infer_types(domain: Domain, problem: Problem) -> InferredTypes:
+def infer_types(
+    domain: Domain, problem: Problem, by_predicate: Mapping[str, Collection[GroundAtom]] | None = None
+) -> InferredTypes:
+    """Classes for the objects of an untyped problem from the static facts naming them (the problem
+    unchanged where types are declared); ``by_predicate``: the initial facts by predicate, when the
+    caller has them."""
     if declares_types(domain, problem):
         return InferredTypes(domain, problem, False)
     static = static_predicates(domain)
@@ -62,14 +67,16 @@ def infer_types(domain: Domain, problem: Problem) -> InferredTypes:
     names = list(domain.constants) + list(problem.objects)
     unary_of: dict[str, set[str]] = defaultdict(set)
     positions_of: dict[str, set[str]] = defaultdict(set)
-    grouped: dict[str, list[GroundAtom]] = defaultdict(list)
-    for atom in problem.init:
-        if atom[0] in static:
-            grouped[atom[0]].append(atom)
+    if by_predicate is None:
+        collected: dict[str, list[GroundAtom]] = defaultdict(list)
+        for atom in problem.init:
+            collected[atom[0]].append(atom)
+        by_predicate = collected
+    grouped = {p: atoms for p, atoms in by_predicate.items() if p in static and atoms}
     # each distinct object of a predicate's position once (a tall building's 125,000 ``above`` facts
     # name its 500 floors)
     for predicate, atoms in grouped.items():
-        for position in range(1, len(atoms[0])):
+        for position in range(1, len(next(iter(atoms)))):
             tag = predicate if predicate in unary else f"{predicate}@{position - 1}"
             into = unary_of if predicate in unary else positions_of
             for arg in {atom[position] for atom in atoms}:

@@ -27,7 +27,7 @@ class PlanningTask:
     @cached_property
     def typing(self) -> InferredTypes:
         """The domain and problem with types inferred where the domain declares none."""
-        return infer_types(self.domain, self.problem)
+        return infer_types(self.domain, self.problem, self.init_index.by_predicate)
 
     @cached_property
     def goal_analysis(self) -> GoalAnalysis:
