@@ -171,3 +171,16 @@ def test_cutting_most_of_a_big_init_keeps_the_rest_and_its_layout():
         "    (at o120 o7)",
         "    (free o199)",
     ]
+
+
+def test_a_run_of_cuts_that_starts_and_ends_on_kept_lines_takes_only_the_lines_it_fills():
+    """The first fact shares its line with '(:init', the last with the list's ')': those lines keep
+    what is not cut, the lines between go whole."""
+    from relevance_plan.pddl.writer import apply_cuts
+
+    facts = [f"(free o{i})" for i in range(6)]
+    text = "(:init " + facts[0] + "\n" + "\n".join("  " + f for f in facts[1:5]) + "\n  " + facts[5] + ")\n"
+    cuts = [(text.index(f), text.index(f) + len(f)) for f in facts]
+    assert apply_cuts(text, cuts) == "(:init\n  )\n"
+    keep_last = apply_cuts(text, cuts[:-1])
+    assert keep_last == "(:init\n  (free o5))\n"

@@ -155,3 +155,74 @@ def test_the_backstop_past_the_timeout_reports_like_any_result(monkeypatch, copi
     assert "--timeout ran out" in one_line_error(stderr)
     assert time.monotonic() - started < 10
     assert not (tmp_path / "p").exists()
+
+
+# --------------------------------------------------------------------------- the analyses' own deadline
+
+
+def test_a_task_past_its_deadline_stops_every_analysis_naming_the_step(copied_coffee_files):
+    """The reading is fast enough now that a big problem's scoring starts before --timeout runs out:
+    the task carries the deadline, and the index, the regression, the scene, the scorers and the
+    pruning each stop at it rather than run on until the CLI's last alarm."""
+    from relevance_plan.errors import OutOfTimeError
+    from relevance_plan.io import load_task
+    from relevance_plan.relevance.analysis import analyse_goal, index_init
+    from relevance_plan.relevance.scene import build_scene
+    from relevance_plan.relevance.scorers import PlanningTask
+    from relevance_plan.relevance.setup import ScoringOptions, score_problem
+
+    domain, problem = load_task(*copied_coffee_files)
+    past = time.monotonic() - 1
+    for step, call in [
+        ("indexing the initial facts", lambda: index_init(problem, past)),
+        ("regressing the goal", lambda: analyse_goal(domain, problem, None, past)),
+        ("describing the scene", lambda: build_scene(domain, problem.objects, problem.init, deadline=past)),
+        (
+            "scoring the objects",
+            lambda: score_problem(PlanningTask(domain, problem, deadline=past), ScoringOptions()),
+        ),
+    ]:
+        with pytest.raises(OutOfTimeError, match=step):
+            call()
+    scoring = score_problem(PlanningTask(domain, problem, deadline=time.monotonic() + 60), ScoringOptions())
+    assert scoring.first_selection().kept  # in time: the same analyses run to the end
+    late = score_problem(PlanningTask(domain, problem), ScoringOptions())
+    object.__setattr__(late.task, "deadline", past)  # the deadline passes between scoring and pruning
+    with pytest.raises(OutOfTimeError, match="out of time while"):
+        late.first_selection()
+
+
+@pytest.mark.planner
+@pytest.mark.parametrize("step", ["scoring", "pruning and closure", "widening"])
+def test_a_deadline_passing_inside_a_step_ends_the_run_as_out_of_time(monkeypatch, copied_coffee_files, step):
+    from relevance_plan.errors import OutOfTimeError
+    from relevance_plan.planning import loop
+    from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task
+    from relevance_plan.relevance.setup import Scoring
+
+    def out_of_time(*args, **kwargs):
+        raise OutOfTimeError("out of time while doing it (the --timeout ran out)")
+
+    if step == "scoring":
+        monkeypatch.setattr(loop, "score_problem", out_of_time)
+    elif step == "pruning and closure":
+        monkeypatch.setattr(Scoring, "first_selection", out_of_time)
+    else:
+        monkeypatch.setattr(loop, "widen", out_of_time)
+    strict = loop.Thresholds(0.2, 0.85)  # drops the whitener and the stirrer: the first attempt fails
+    options = PlanOptions(timeout=60, race=False, thresholds=strict) if step == "widening" else PlanOptions(timeout=60)
+    result = plan_task(*copied_coffee_files, options)
+    if step == "widening":  # the widening runs out after the failed first attempt: the run stops there
+        assert result.first_attempt_status == "unsolvable" and len(result.attempts) == 1
+        assert result.status is not PlanStatus.SOLVED
+    else:
+        assert result.status is PlanStatus.OUT_OF_TIME and f"out of time while {step}" in result.message
+
+
+def test_a_short_run_gets_a_short_grace():
+    from relevance_plan.planning.process import DEFAULT_WATCHDOG_GRACE, watchdog_deadline
+
+    assert watchdog_deadline(None) is None
+    assert watchdog_deadline(0.3) == pytest.approx(0.375)  # the last 0.3 s of a --timeout: done by 0.375 s
+    assert watchdog_deadline(10.0) == pytest.approx(10.0 + DEFAULT_WATCHDOG_GRACE)
+    assert watchdog_deadline(10.0, 2.0) == pytest.approx(12.0)

@@ -81,11 +81,12 @@ def collection_paused() -> Iterator[None]:
     """Pause the cyclic garbage collector while a big file becomes millions of small objects, or
     while a run (reading, scoring, pruning, planning) works on them.
 
-    Its passes over the growing heap would otherwise take a third of the
-    time (more than half while reading): each pass walks every fact again.
-    Nothing read here forms a cycle and a whole run leaves a handful of small
-    ones (17 objects after pruning a 5,000-object problem), reclaimed once the
-    collector resumes, when the last pause, of any thread, is over.
+    Its passes over the growing heap would otherwise take a quarter to a
+    third of the pruning time, and more than half of the reading: each pass
+    walks every fact again.  Nothing read here forms a cycle, and a whole run
+    leaves a handful of small ones (17 objects after pruning a 5,000-object
+    problem), reclaimed once the collector resumes, when the last pause, of
+    any thread, is over.
     """
     global _PAUSES
     with _PAUSES_LOCK:

@@ -42,19 +42,30 @@ def apply_cuts(text: str, cuts: list[tuple[int, int]]) -> str:
     removed: list[tuple[int, int]] = []
     by_line: dict[int, list[tuple[int, int]]] = {}
     for run in _runs(text, sorted(cuts)):
-        # A run of spans, each alone on its line or filling it with the others, on lines one after
-        # another: the lines go at once (199,000 of 200,000 facts cut at a few instants each).
-        first, last = run[0][0], run[-1][1]
-        line_start = text.rfind("\n", 0, first) + 1
-        line_end = text.find("\n", last)
+        # Spans with only blanks between them, on lines one after another: the lines they fill go at
+        # once (213,085 of 213,126 facts); only the first and the last line may keep something.
+        first_end = text.find("\n", run[0][0])
+        last_start = text.rfind("\n", 0, run[-1][1]) + 1
+        line_start = text.rfind("\n", 0, run[0][0]) + 1
+        head = 0
+        if text[line_start : run[0][0]].strip():  # the first line keeps what comes before the run
+            while head < len(run) and (first_end < 0 or run[head][0] < first_end):
+                by_line.setdefault(line_start, []).append(run[head])
+                head += 1
+            line_start = first_end + 1
+        tail = len(run)
+        line_end = text.find("\n", run[-1][1])
         if line_end < 0:
             line_end = len(text)
-        if not text[line_start:first].strip() and not text[last:line_end].strip():
+        if text[run[-1][1] : line_end].strip():  # the last line keeps what comes after it
+            while tail > head and run[tail - 1][0] >= last_start:
+                tail -= 1
+                by_line.setdefault(last_start, []).append(run[tail])
+            line_end = last_start - 1
+        if head < tail:
             removed.append((line_start, min(line_end + 1, len(text))))
-            continue
-        for start, end in run:
-            by_line.setdefault(text.rfind("\n", 0, start) + 1, []).append((start, end))
     for line_start, spans in by_line.items():
+        spans.sort()
         line_end = text.find("\n", spans[-1][1])
         if line_end < 0:
             line_end = len(text)

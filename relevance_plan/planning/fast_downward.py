@@ -337,7 +337,7 @@ def run_fast_downward(
     """Run Fast Downward on one task and classify the result.
 
     ``time_limit`` (seconds) goes to the driver as a CPU limit and, plus a
-    grace period (default max(5 s, 10 %)), to a wall-clock watchdog that
+    grace period (``process.watchdog_deadline``), to a wall-clock watchdog that
     kills the whole process group.  ``driver_limits=False`` withholds the
     limits from the driver so that only the watchdog applies (for tests).
     ``extra_arguments`` end the command line; ``work_dir`` is the directory

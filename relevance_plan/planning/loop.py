@@ -69,6 +69,9 @@ from relevance_plan.relevance.scorers import PlanningTask
 from relevance_plan.relevance.setup import Scoring, ScoringOptions, score_problem
 
 METHODS = ("relevance", "pure", "random", "oracle")
+# The least a planner is given when the --timeout is nearly out: a chance to finish, yet with the
+# watchdog's grace a run ends within about 0.7 s of the --timeout (0.5 s let it end a second late).
+LAST_SECONDS = 0.2
 # Limits beyond these are typos: the watchdog's timer cannot even hold much more.
 MAX_TIMEOUT = 1e6
 # Below 16 MB Python cannot start the planner at all; above 1 PB is absurd.
@@ -390,7 +393,7 @@ def run_attempts(
         if deadline is None:
             limit = None
         else:
-            remaining = max(deadline - time.perf_counter(), 0.5)
+            remaining = max(deadline - time.perf_counter(), LAST_SECONDS)
             limit = remaining if final or race is not None else max(1.0, remaining * options.first_share)
         outcome = call_planner(pruned, limit)
         if race is not None and race.won and not outcome.solved:
@@ -421,8 +424,12 @@ def run_attempts(
             current = None
             continue
         widen_started = time.perf_counter()
-        current, extra = widen(pruned, options.widen_factor, extra, model, goal_filter)
-        widening_time += time.perf_counter() - widen_started
+        try:
+            current, extra = widen(pruned, options.widen_factor, extra, model, goal_filter)
+        except OutOfTimeError:
+            break  # the --timeout ran out while widening: as when it runs out between attempts
+        finally:
+            widening_time += time.perf_counter() - widen_started
     if race is not None and race.won and not (attempts and attempts[-1].status is AttemptStatus.SOLVED):
         attempts.append(replace(race.wait(), number=len(attempts) + 1))
     return attempts, widening_time
@@ -494,11 +501,9 @@ def _plan_task(
     reading = None if options.timeout is None else time.monotonic() + options.timeout
     try:
         domain = load_domain(domain_path, deadline=reading)
-        task = PlanningTask(domain, load_problem(problem_path, domain, deadline=reading))
+        task = PlanningTask(domain, load_problem(problem_path, domain, deadline=reading), deadline=reading)
     except OutOfTimeError:
-        overran = _overran("reading the domain and problem", started, options, 0, ran_out=True)
-        assert overran is not None  # ran_out: always a result
-        return overran
+        return _ran_out("reading the domain and problem", started, options, 0)
     except UnsupportedFeatureError as refused:
         return _plan_unread(domain_path, problem_path, planner, refused, options, started, say)
     total = len(task.problem.objects)
@@ -533,7 +538,7 @@ def _plan_task(
 
         def plan_full_problem() -> Attempt:
             deadline = None if options.timeout is None else started + options.timeout
-            limit = None if deadline is None else max(deadline - time.perf_counter(), 0.5)
+            limit = None if deadline is None else max(deadline - time.perf_counter(), LAST_SECONDS)
             outcome = call_planner(None, limit)
             outcome, validation, validation_time = _validate(task, outcome, options, deadline)
             return Attempt(0, total, None, 0, outcome, validation, limit, validation_time)
@@ -569,7 +574,10 @@ def _prune_and_plan(
     total = len(task.problem.objects)
     domain_path, problem_path = paths
     selection = None
-    scoring, unpruned = _score(task, options, domain_path, problem_path, say)
+    try:
+        scoring, unpruned = _score(task, options, domain_path, problem_path, say)
+    except OutOfTimeError:
+        return _ran_out("scoring", started, options, total)
     if scoring is not None:
         overran = _overran("scoring", started, options, total)
         if overran is not None:
@@ -586,7 +594,10 @@ def _prune_and_plan(
                 planner=prepared.name,
                 scorer=scoring.scorer,
             )
-        selection = scoring.first_selection(options.narrows_first)
+        try:
+            selection = scoring.first_selection(options.narrows_first)
+        except OutOfTimeError:
+            return _ran_out("pruning and closure", started, options, total)
         overran = _overran("pruning and closure", started, options, total)
         if overran is not None:
             return overran
@@ -666,7 +677,7 @@ def _plan_unread(
         + (f" (auto: {choice})" if choice else "")
     )
     deadline = None if options.timeout is None else started + options.timeout
-    limit = None if deadline is None else max(deadline - time.perf_counter(), 0.5)
+    limit = None if deadline is None else max(deadline - time.perf_counter(), LAST_SECONDS)
     outcome = planner.run(domain_path, problem_path, time_limit=limit, memory_limit_mb=options.memory_limit_mb)
     validation, validation_time = None, 0.0
     if outcome.solved:
@@ -682,11 +693,16 @@ def _plan_unread(
     )
 
 
-def _overran(step: str, started: float, options: PlanOptions, total: int, ran_out: bool = False) -> PlanResult | None:
-    """An out-of-time result naming ``step`` when ``--timeout`` ran out during it (``ran_out``: it did)."""
-    elapsed = time.perf_counter() - started
-    if not ran_out and (options.timeout is None or elapsed < options.timeout):
+def _overran(step: str, started: float, options: PlanOptions, total: int) -> PlanResult | None:
+    """An out-of-time result naming ``step`` when ``--timeout`` ran out during it."""
+    if options.timeout is None or time.perf_counter() - started < options.timeout:
         return None
+    return _ran_out(step, started, options, total)
+
+
+def _ran_out(step: str, started: float, options: PlanOptions, total: int) -> PlanResult:
+    """The out-of-time result of a step that stopped because ``--timeout`` ran out."""
+    elapsed = time.perf_counter() - started
     return PlanResult(
         method=options.method,
         status=PlanStatus.OUT_OF_TIME,

@@ -83,10 +83,14 @@ class _Run(NamedTuple):
 
 def watchdog_deadline(time_limit: float | None, grace: float | None = None) -> float | None:
     """Seconds after the start at which the watchdog kills the run: the limit plus a short
-    grace period (default ``DEFAULT_WATCHDOG_GRACE``) for the planner's own limit to act first."""
+    grace period for the planner's own limit to act first (default ``DEFAULT_WATCHDOG_GRACE``, a
+    quarter of the limit when that is less: a run given the last 0.3 s of a --timeout ends then,
+    not half a second later)."""
     if time_limit is None:
         return None
-    return time_limit + (grace if grace is not None else DEFAULT_WATCHDOG_GRACE)
+    if grace is None:
+        grace = min(DEFAULT_WATCHDOG_GRACE, time_limit / 4)
+    return time_limit + grace
 
 
 # --------------------------------------------------------------------------- reading what a planner wrote

@@ -179,6 +179,7 @@ def prune_with_scores(
     a relaxed plan needs: one airplane carries every package.
     """
     selected = select_relevant(task, scores, thresholds, goal_filter) | (frozenset(extra) & task.problem.objects.keys())
+    task.check_time("choosing the objects")
     rules = constraint_rules(task.domain, task.init_index, model)
     singletons = single_valued_predicates(task.domain, task.init_index)
 
@@ -198,6 +199,7 @@ def prune_with_scores(
         return closed, tuple(soundness_reason(name, sound[name]) for name in missing) + found
 
     kept, restored = close(selected)
+    task.check_time("closing the selection over constraints")
     set_aside: frozenset[str] = frozenset()
     if prefer_free:
         narrowed = free_alternatives(task, scores, selected, restored)
@@ -224,6 +226,7 @@ def prune_with_scores(
     if len(kept) > full_above * total:
         why = f"the selection kept {len(kept)} of {total} objects (more than {full_above:.0%}): the full problem"
         return full_problem(task, scores, thresholds, selected, restored, why)
+    task.check_time("checking the selection")
     return Selection(
         task=task,
         scores=scores,

@@ -985,11 +985,12 @@ def repair_selection(
         budget = max(DEFAULT_BUDGET, BUDGET_PER_OBJECT * total)
     if give_up_above is None:
         give_up_above = total
-    deadline = time.monotonic() + REPAIR_SECONDS
+    deadline = min(time.monotonic() + REPAIR_SECONDS, math.inf if task.deadline is None else task.deadline)
     try:
         exploration = _Exploration(task, kept, _Work(budget, deadline))
         exploration.run()
     except _OutOfBudget:
+        task.check_time("checking the selection")  # the --timeout, not the repair's own bound
         return kept, (), Reachability(False, False)
     check = exploration.outcome()
     if check.reachable:
@@ -1028,6 +1029,7 @@ def repair_selection(
             take = []
         check = exploration.outcome()
     except _OutOfBudget:
+        task.check_time("checking the selection")
         check = Reachability(False, False)
     rank = {name: i for i, name in enumerate(added)}
     if not check.reachable:

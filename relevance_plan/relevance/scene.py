@@ -14,6 +14,7 @@ from dataclasses import dataclass
 
 from relevance_plan.pddl.formulas import GroundAtom
 from relevance_plan.pddl.model import Domain
+from relevance_plan.pddl.sexpr import check_deadline
 
 _INDEX_SUFFIX = re.compile(r"[_\-]?\d+$")
 
@@ -57,16 +58,22 @@ def build_scene(
     objects: Mapping[str, str],
     facts: Iterable[GroundAtom],
     predicates: ScenePredicates = ScenePredicates(),
+    deadline: float | None = None,
 ) -> Scene:
-    """The elements among ``objects`` (name -> type), described by the true ``facts`` about them."""
+    """The elements among ``objects`` (name -> type), described by the true ``facts`` about them;
+    past ``deadline`` (``time.monotonic()``), OutOfTimeError."""
     place_of: dict[str, str] = {}
     stands_on: dict[str, str] = {}
     covered: set[str] = set()
     accessible: set[str] = set()
     human_places: set[str] = set()
-    facts = tuple(facts)
-    for atom in facts:
+    humans: set[str] = set()
+    for count, atom in enumerate(facts):
+        if not count & 0xFFFF:
+            check_deadline(deadline, "describing the scene")
         name = atom[0]
+        if name == predicates.human_location and len(atom) == 3:
+            humans.add(atom[1])
         if name == predicates.location and len(atom) == 3:
             place_of.setdefault(atom[1], atom[2])
         elif name == predicates.support and len(atom) == 3:
@@ -78,9 +85,10 @@ def build_scene(
             human_places.add(atom[2])
             place_of.setdefault(atom[1], atom[2])  # a place matters to whoever is there too
     places = set(place_of.values())
-    humans = {atom[1] for atom in facts if atom[0] == predicates.human_location and len(atom) == 3}
     elements = {}
-    for name, type_name in objects.items():
+    for count, (name, type_name) in enumerate(objects.items()):
+        if not count & 0xFFFF:
+            check_deadline(deadline, "describing the scene")
         place = place_of.get(name)
         conditions = set()
         if place is not None and name not in humans:

@@ -129,7 +129,10 @@ def score_problem(
         seed=options.seed,
         necessary=necessary,
     )
-    return Scoring(task, model, SCORERS[scorer](task, request), options)
+    task.check_time("scoring the objects")
+    scores = SCORERS[scorer](task, request)
+    task.check_time("scoring the objects")
+    return Scoring(task, model, scores, options)
 
 
 __all__ = ["Scoring", "ScoringOptions", "choose_scorer", "resolve_model", "score_problem"]

@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 from functools import cached_property
 
 from relevance_plan.pddl.model import Domain, Problem, goal_objects, pinned_objects
+from relevance_plan.pddl.sexpr import check_deadline
 from relevance_plan.relevance.analysis import FactIndex, GoalAnalysis, analyse_goal, index_init, object_distances
 from relevance_plan.relevance.knowledge import KnowledgeModel
 from relevance_plan.relevance.soundness import KeptForSoundness, objects_to_keep, soundness_requirements
@@ -19,19 +20,28 @@ class PlanningTask:
 
     domain: Domain
     problem: Problem
+    # time.monotonic() by which scoring and pruning end (``plan``'s --timeout): past it, the
+    # analyses stop with OutOfTimeError instead of running on until the CLI's last alarm
+    deadline: float | None = field(default=None, kw_only=True)
+
+    def check_time(self, what: str) -> None:
+        """OutOfTimeError naming ``what`` when the task's deadline has passed."""
+        check_deadline(self.deadline, what, self.problem.path)
 
     @cached_property
     def init_index(self) -> FactIndex:
-        return index_init(self.problem)
+        return index_init(self.problem, self.deadline)
 
     @cached_property
     def typing(self) -> InferredTypes:
         """The domain and problem with types inferred where the domain declares none."""
-        return infer_types(self.domain, self.problem, self.init_index.by_predicate)
+        typing = infer_types(self.domain, self.problem, self.init_index.by_predicate)
+        self.check_time("inferring the objects' classes")
+        return typing
 
     @cached_property
     def goal_analysis(self) -> GoalAnalysis:
-        return analyse_goal(self.typing.domain, self.typing.problem, self.init_index)
+        return analyse_goal(self.typing.domain, self.typing.problem, self.init_index, self.deadline)
 
     @cached_property
     def goal_distance(self) -> dict[str, int]:

@@ -212,9 +212,10 @@ def score_by_model(task: PlanningTask, request: ScoreRequest) -> ScoreResult:
     model = context.model
     if context.insufficiency:
         return insufficient_result(task.problem.objects, context, context.insufficiency)
-    scene = build_scene(task.domain, task.problem.objects, task.problem.init, model.scene)
-
+    scene = build_scene(task.domain, task.problem.objects, task.problem.init, model.scene, task.deadline)
+    task.check_time("describing the scene")
     element_class: dict[str, str] = {name: class_of(element, model) for name, element in scene.elements.items()}
+    task.check_time("classifying the objects")
     unknown = tuple(sorted(name for name, c in element_class.items() if c == UNKNOWN_CLASS))
     problem = unknown_share_problem(len(scene.elements) - len(unknown), len(scene.elements))
     if problem:
@@ -227,7 +228,9 @@ def score_by_model(task: PlanningTask, request: ScoreRequest) -> ScoreResult:
 
     scores: dict[str, float] = {}
     explanations: dict[str, str] = {}
-    for name, element in scene.elements.items():
+    for count, (name, element) in enumerate(scene.elements.items()):
+        if not count & 0xFFF:
+            task.check_time("scoring the objects")
         class_name = element_class[name]
         if not scored_by_contents(class_name, model):
             scores[name], explanations[name] = score_element(context, element, class_name)
