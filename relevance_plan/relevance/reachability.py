@@ -420,6 +420,8 @@ class _Exploration:
         self.queue: deque[GroundAtom] = deque()
         self.by_object = task.init_index.by_object
         self.init = problem.init
+        # the index also holds numeric terms, (distance a b), which are not facts
+        self.numeric_terms = bool(problem.numeric_init)
         # timed initial literals that make a fact true count as reached: a plan may wait for them
         self.timed = compiled.timed
         self.of_type: dict[str, list[str]] = {}
@@ -482,11 +484,12 @@ class _Exploration:
         found = dict.fromkeys(sorted(also))
         allowed, members, init, timed = self.allowed, self.members, self.init, self.timed
         fits, shares = allowed.issuperset, members.isdisjoint
+        all_facts = not self.numeric_terms
         for name in sorted(names):
             for atom in self.by_object.get(name, ()):
                 args = atom[1:]
                 if not members or shares(args):
-                    if fits(args) and (atom in init or atom in timed):
+                    if fits(args) and (all_facts or atom in init or atom in timed):
                         found[atom] = None
                     continue
                 pattern = self._pattern(atom)
