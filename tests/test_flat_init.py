@@ -184,3 +184,14 @@ def test_a_run_of_cuts_that_starts_and_ends_on_kept_lines_takes_only_the_lines_i
     assert apply_cuts(text, cuts) == "(:init\n  )\n"
     keep_last = apply_cuts(text, cuts[:-1])
     assert keep_last == "(:init\n  (free o5))\n"
+
+
+def test_the_facts_come_in_the_files_order_or_sorted_once_changed(monkeypatch):
+    """What the fact index, the scene and the exploration iterate: never a set's order."""
+    domain = read_domain(DOMAIN)
+    for threshold in (1, 10**9):  # the string-method reading and the full one
+        monkeypatch.setattr(parser, "FLAT_INIT_FROM", threshold)
+        read = read_problem(problem("    (free c) (at b a)\n    (at a b) (free c) (ready)"), domain)
+        assert list(read.facts_in_order()) == [("free", "c"), ("at", "b", "a"), ("at", "a", "b"), ("ready",)]
+    changed = dataclasses.replace(read, init=read.init | {("free", "a")})
+    assert list(changed.facts_in_order()) == sorted(changed.init)

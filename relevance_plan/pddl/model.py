@@ -183,6 +183,11 @@ class Problem:
     def display(self, name: str) -> str:
         return self.display_names.get(name, name)
 
+    def facts_in_order(self) -> Iterable[GroundAtom]:
+        """The initial facts in the order the file first states them (sorted when ``init`` was
+        changed since): never in the order a set happens to iterate, which follows the hash seed."""
+        return self.init_order.keys() if self.init_order.keys() == self.init else sorted(self.init)
+
     def object_line(self, name: str) -> int | None:
         """The line that declares object ``name``, if the problem came from text."""
         for symbols, _ in self.object_groups:

@@ -68,10 +68,8 @@ def index_init(problem: Problem, deadline: float | None = None) -> InitIndex:
     so the objects inside a function term are linked like those of a static fact."""
     by_predicate: dict[str, list[GroundAtom]] = defaultdict(list)
     by_object: dict[str, list[GroundAtom]] = defaultdict(list)
-    # The file's order when the problem has it, else sorted: never the hash seed's (the
-    # exploration takes static facts in this order)
-    ordered = problem.init_order.keys() if problem.init_order.keys() == problem.init else sorted(problem.init)
-    for count, atom in enumerate((*ordered, *numeric_facts(problem))):
+    # the exploration takes static facts in this order
+    for count, atom in enumerate((*problem.facts_in_order(), *numeric_facts(problem))):
         if not count & 0xFFFF:
             check_deadline(deadline, "indexing the initial facts", problem.path)
         by_predicate[atom[0]].append(atom)

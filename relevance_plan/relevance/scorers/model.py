@@ -212,7 +212,8 @@ def score_by_model(task: PlanningTask, request: ScoreRequest) -> ScoreResult:
     model = context.model
     if context.insufficiency:
         return insufficient_result(task.problem.objects, context, context.insufficiency)
-    scene = build_scene(task.domain, task.problem.objects, task.problem.init, model.scene, task.deadline)
+    facts = task.problem.facts_in_order()  # an object's first place is the file's first
+    scene = build_scene(task.domain, task.problem.objects, facts, model.scene, task.deadline)
     task.check_time("describing the scene")
     element_class: dict[str, str] = {name: class_of(element, model) for name, element in scene.elements.items()}
     task.check_time("classifying the objects")
