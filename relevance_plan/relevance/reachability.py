@@ -507,7 +507,7 @@ class _Exploration:
                 self._count(atom)
             missing.discard(atom)
             (indexed if atom[0] in static else queued).append(atom)
-        self._index_all(indexed)
+        self._index(indexed)
         # sorted: the same objects give the same relaxed plan whatever order they came in
         self.queue.extend(sorted(queued))
 
@@ -522,11 +522,7 @@ class _Exploration:
             args.append(arg)
         return (atom[0], *args)
 
-    def _index(self, fact: GroundAtom) -> None:
-        """Make ``fact`` visible to the joins."""
-        self._index_all((fact,))
-
-    def _index_all(self, facts: Iterable[GroundAtom]) -> None:
+    def _index(self, facts: Iterable[GroundAtom]) -> None:
         """Make ``facts`` visible to the joins, in their order (a floor's 600 ``above`` facts at once)."""
         processed, signatures, types = self.processed, self.signatures, self.types_of
         for fact in facts:
@@ -633,7 +629,7 @@ class _Exploration:
         saturable, dominated, facts = self.saturable, self.dominated, self.facts
         while self.queue and self.missing:
             fact = self.queue.popleft()
-            self._index(fact)
+            self._index((fact,))
             for schema, i, rest in self.triggers.get(fact[0], ()):
                 if id(schema) in saturable and self._saturated(schema):
                     continue

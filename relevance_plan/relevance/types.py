@@ -54,12 +54,10 @@ def _class_name(signature: frozenset[str]) -> str:
     return "+".join(sorted(signature)) if signature else "object"
 
 
-def infer_types(
-    domain: Domain, problem: Problem, by_predicate: Mapping[str, Collection[GroundAtom]] | None = None
-) -> InferredTypes:
+def infer_types(domain: Domain, problem: Problem, by_predicate: Mapping[str, Collection[GroundAtom]]) -> InferredTypes:
     """Classes for the objects of an untyped problem from the static facts naming them (the problem
-    unchanged where types are declared); ``by_predicate``: the initial facts by predicate, when the
-    caller has them."""
+    unchanged where types are declared); ``by_predicate``: its initial facts by predicate (the fact
+    index's)."""
     if declares_types(domain, problem):
         return InferredTypes(domain, problem, False)
     static = static_predicates(domain)
@@ -67,11 +65,6 @@ def infer_types(
     names = list(domain.constants) + list(problem.objects)
     unary_of: dict[str, set[str]] = defaultdict(set)
     positions_of: dict[str, set[str]] = defaultdict(set)
-    if by_predicate is None:
-        collected: dict[str, list[GroundAtom]] = defaultdict(list)
-        for atom in problem.init:
-            collected[atom[0]].append(atom)
-        by_predicate = collected
     grouped = {p: atoms for p, atoms in by_predicate.items() if p in static and atoms}
     # each distinct object of a predicate's position once (a tall building's 125,000 ``above`` facts
     # name its 500 floors)
