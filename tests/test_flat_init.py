@@ -76,6 +76,9 @@ def problem(init: str, line_break: str = "\n") -> str:
         "    (at a b)\n    (gone a)",  # an unknown predicate
         "    (at a b)\n    (= a b)",  # an equality
         "    (at a b)\n    ()",
+        "    (at a b) stray (free c)",  # a symbol between atoms
+        "    (at a b) (free (c))\n    (ready)",  # a list inside an atom
+        "    (at a b) (free c)\n    (ready) (= (cost a) 1)",  # a nested list after plain atoms
         "    (at a ?x)",
         "    (at a b",  # no closing parenthesis
     ],
