@@ -46,6 +46,29 @@ def test_too_little_memory_for_the_planner_is_out_of_memory(copied_coffee_files,
         one_line_error(stderr)
 
 
+def test_memory_running_out_again_on_the_way_out_is_still_one_line(monkeypatch, copied_coffee_files, capfd):
+    from relevance_plan.cli import exits
+    from relevance_plan.pddl import parser
+
+    def no_memory(*args, **kwargs):
+        raise MemoryError
+
+    leaving = []
+
+    def drop_stdout_once_out_of_memory():
+        leaving.append(True)
+        if len(leaving) == 1:  # the command's own handler said the line; memory runs out again after
+            raise MemoryError
+
+    monkeypatch.setattr(parser, "_read_problem", no_memory)
+    monkeypatch.setattr(exits, "_drop_stdout", drop_stdout_once_out_of_memory)
+    monkeypatch.setattr(exits, "_said_out_of_memory", False)
+    code, _, _ = run("score", *copied_coffee_files)
+    assert code == ExitCode.OUT_OF_MEMORY
+    assert "out of memory" in one_line_error(capfd.readouterr().err)  # said straight to the descriptor
+    assert len(leaving) == 2  # the outer handler ran too, and kept quiet
+
+
 def test_the_loaders_messages_are_out_of_memory():
     from relevance_plan.planning.fast_downward import classify as _classify
     from relevance_plan.planning.outcome import PlannerStatus

@@ -58,7 +58,8 @@ def handle_errors(command):
             # long, a full disk) is still a file problem: one line, exit 31.
             where = InputFileError(error.strerror or str(error), path=error.filename)
             fail(str(where), ExitCode.INPUT_FILE)
-        except MemoryError:
+        except MemoryError as error:
+            error.__traceback__ = None  # its frames hold what filled the memory: free it before saying anything
             quit_out_of_memory()
         except KeyboardInterrupt as error:
             if getattr(error, "signum", None) == DEADLINE_SIGNAL:

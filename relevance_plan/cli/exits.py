@@ -50,8 +50,15 @@ def quit_on_broken_pipe() -> NoReturn:
     sys.exit(OUTPUT_CLOSED)
 
 
+_said_out_of_memory = False
+
+
 def quit_out_of_memory() -> NoReturn:
-    _say("out of memory (raise the memory limit, or give the tool a smaller problem)")
+    """One line, exit 21; the line said once, though memory may run out again on the way out."""
+    global _said_out_of_memory
+    if not _said_out_of_memory:
+        _say("out of memory (raise the memory limit, or give the tool a smaller problem)")
+        _said_out_of_memory = True
     _drop_stdout()
     sys.exit(int(ExitCode.OUT_OF_MEMORY))
 
@@ -92,7 +99,8 @@ class ToolGroup(click.Group):
         except SystemExit:
             _flush_stdout()
             raise
-        except MemoryError:
+        except MemoryError as error:
+            error.__traceback__ = None  # its frames hold what filled the memory: free it before saying anything
             quit_out_of_memory()
         except OSError as error:  # outside any command's own handling (click's help, its usage lines)
             if error.filename is None:
