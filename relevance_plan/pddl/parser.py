@@ -753,20 +753,7 @@ def _read_flat_init(
     """What :func:`_read_init` makes of the plain atoms between ``body``'s offsets; a PDDLParseError
     at the first one it would refuse (the caller then reads the file in full, for the full message
     and its line)."""
-    start, end = body
-    inside = text[start:end]
-    # Whole-body steps, each one pass in C (a loop over 1.5 million atoms took 3 µs an atom): the body
-    # alternates blanks and atoms, so splitting it at the brackets leaves each atom's inside at an odd
-    # place, and the pieces' lengths give each bracket's offset.
-    pieces = _BRACKET.split(inside.lower() if inside.isascii() else inside)
-    if "".join(pieces[0::2]).strip():  # something between atoms, or a list inside one
-        raise PDDLParseError("not a plain atom")
-    check_deadline(deadline, "reading ':init'", path)
-    brackets = list(map(operator.add, itertools.accumulate(map(len, pieces)), itertools.count(start)))
-    insides = pieces[1::2]
-    if not inside.isascii():  # atom by atom: a non-ASCII lower case may change a length
-        insides = list(map(str.lower, insides))
-    grounds = list(map(tuple, map(str.split, insides)))
+    grounds, opens, closes = _plain_atoms(text, *body)
     check_deadline(deadline, "reading ':init'", path)
     if not all(grounds):
         raise PDDLParseError("not a plain atom")
@@ -782,11 +769,35 @@ def _read_flat_init(
     names = objects.keys()
     if known.keys() - names:  # a domain constant is no object of the problem: never cut for it
         args = [tuple(sorted(names & atom_args)) for atom_args in args]
-    closes = map(operator.add, brackets[1::2], itertools.repeat(1))
     facts = dict(zip(grounds, itertools.count()))
     if len(facts) < len(grounds):  # stated twice: the rank above is the last statement's
         facts = dict(zip(facts, itertools.count()))
-    return _InitParts(facts, {}, [], list(zip(brackets[0::2], closes, args)))
+    return _InitParts(facts, {}, [], list(zip(opens, closes, args)))
+
+
+def _plain_atoms(text: str, start: int, end: int) -> tuple[list[tuple[str, ...]], list[int], list[int]]:
+    """The atoms between the offsets, lower-cased and split into words, and where each opens and
+    closes; a PDDLParseError if anything else is there.
+
+    Whole-body steps, each one pass in C (a loop over 1.5 million atoms took 3 µs an atom): the body
+    alternates blanks and atoms, so splitting it at the brackets leaves each atom's inside at an odd
+    place, and the pieces' lengths give each bracket's offset.  Each step's input is dropped once
+    used: at 1.5 million atoms, each is about 100 MB.
+    """
+    inside = text[start:end]
+    ascii_only = inside.isascii()  # else atom by atom: a non-ASCII lower case may change a length
+    pieces = _BRACKET.split(inside.lower() if ascii_only else inside)
+    del inside
+    if "".join(pieces[0::2]).strip():  # something between atoms, or a list inside one
+        raise PDDLParseError("not a plain atom")
+    brackets = list(map(operator.add, itertools.accumulate(map(len, pieces)), itertools.count(start)))
+    opens, closes = brackets[0:-1:2], list(map(operator.add, brackets[1::2], itertools.repeat(1)))
+    del brackets
+    insides = pieces[1::2]
+    del pieces
+    if not ascii_only:
+        insides = list(map(str.lower, insides))
+    return list(map(tuple, map(str.split, insides))), opens, closes
 
 
 def _read_problem_from(
