@@ -50,7 +50,8 @@ def test_generated_problems_read_the_same(monkeypatch, world):
     assert not isinstance(full, Exception)
     same(fast, full)
     monkeypatch.setattr(parser, "FLAT_INIT_FROM", 1)
-    assert parser._flat_init(problem.pddl_text) is not None  # the string-method reading was used
+    text = problem.pddl_text
+    assert parser._one_stretch(text, parser._init_body(text)) is not None  # the string-method reading was used
 
 
 DOMAIN = """(define (domain d) (:requirements :strips :typing) (:types thing)
@@ -107,12 +108,13 @@ def test_a_deadline_stops_the_string_method_reading(monkeypatch):
     atoms = "\n".join("    (at a b) (free c)" for _ in range(5000))
     monkeypatch.setattr(parser, "FLAT_INIT_FROM", 1)
     text = problem(atoms)
-    flat = parser._flat_init(text)
-    assert flat is not None
+    stretches = parser._one_stretch(text, parser._init_body(text))
+    assert stretches is not None
     known = {"home": "thing", "a": "thing", "b": "thing", "c": "thing"}
     scope = parser._Scope(domain.types, domain.predicates, domain.functions, known, {}, in_problem=True)
     with pytest.raises(OutOfTimeError):  # while reading the atoms
-        parser._read_flat_init(text, flat, scope, {"a": "thing", "b": "thing", "c": "thing"}, "p.pddl", 0.0)
+        plain = parser._plain_atoms(text, stretches)
+        parser._read_flat_init(plain, scope, {"a": "thing", "b": "thing", "c": "thing"}, "p.pddl", 0.0)
     with pytest.raises(OutOfTimeError):  # and through the whole reading: not read again in full
         read_problem(problem(atoms), domain, path="p.pddl", deadline=time.monotonic() - 1)
 
@@ -138,11 +140,13 @@ def test_a_skipped_part_leaves_the_offsets_and_lines_after_it(monkeypatch):
         ]
         text = line_break.join(lines)
         start, end = text.index("(at"), text.index("(free c)") + len("(free c)")
-        full, skipped = parse_sexpr(text), parse_sexpr(text, skip=(start, end))
+        full, skipped = parse_sexpr(text), parse_sexpr(text, skip=[(start, end)])
         init = skipped.items[2]
         assert isinstance(init, Node) and [getattr(i, "text", None) for i in init.items] == [":init"]
         assert list(walk(skipped.items[3])) == list(walk(full.items[3]))  # the goal, on line 7
         assert skipped.items[3].line == 7
+        two = [(start, start + len("(at a b)")), (text.index("(free c)"), end)]  # two parts, a blank line kept
+        assert list(walk(parse_sexpr(text, skip=two).items[3])) == list(walk(full.items[3]))
 
 
 def test_cutting_most_of_a_big_init_keeps_the_rest_and_its_layout():
@@ -198,3 +202,47 @@ def test_the_facts_come_in_the_files_order_or_sorted_once_changed(monkeypatch):
         assert list(read.facts_in_order()) == [("free", "c"), ("at", "b", "a"), ("at", "a", "b"), ("ready",)]
     changed = dataclasses.replace(read, init=read.init | {("free", "a")})
     assert list(changed.facts_in_order()) == sorted(changed.init)
+
+
+COST_DOMAIN = """(define (domain d) (:requirements :strips :typing :action-costs :timed-initial-literals)
+  (:types thing)
+  (:predicates (at ?x - thing ?y - thing) (free ?x - thing))
+  (:functions (total-cost) - number (cost ?x - thing) - number)
+  (:action go :parameters (?x - thing ?y - thing) :precondition (free ?x)
+    :effect (and (at ?x ?y) (increase (total-cost) (cost ?x)))))"""
+
+
+@pytest.mark.parametrize(
+    "entries",
+    [
+        ["(= (total-cost) 0)", "", ""],  # the usual action-cost start
+        ["", "(not (free c))", ""],
+        ["(= (cost a) 2)", "(= (cost b) 3) (not (at a a))", "(at 10 (free b))\n(= (cost c) 1)"],
+        ["", "", "(not (free a))"],  # an entry ends the body
+        ["", "(= (cost a) 2) (gone a)", ""],  # an unknown predicate: the full reading's error
+        ["", "(= (cost a) two)", ""],
+        ["", "(not (free a)", ""],  # never closed
+    ],
+)
+def test_entries_between_plain_atoms_read_the_same(monkeypatch, entries):
+    """A big :init with numeric values, negative and timed literals among its plain atoms: the atoms
+    between them are read as stretches, to the same problem (or the same error) as the full reading."""
+    domain = read_domain(COST_DOMAIN)
+    atoms = "\n".join(f"    (at a b) (free c)\n    (at b {name})" for name in ("a", "b", "c") * 400)
+    init = "\n".join([f"    {entries[0]}", atoms, f"    {entries[1]}", atoms, f"    {entries[2]}"])
+    text = problem(init)
+    fast, full = both(monkeypatch, text, domain)
+    same(fast, full)
+    if isinstance(full, Exception):
+        return
+    from relevance_plan.pddl.sexpr import parse_sexpr
+
+    read: list[list[tuple[int, int]]] = []
+    plain_atoms = parser._plain_atoms
+    monkeypatch.setattr(
+        parser, "_plain_atoms", lambda text, stretches: read.append(stretches) or plain_atoms(text, stretches)
+    )
+    monkeypatch.setattr(parser, "FLAT_INIT_FROM", 2000)
+    same(read_problem(text, domain, path="p.pddl"), full)
+    between = len(parse_sexpr("(" + " ".join(entries) + ")").items)  # the entries holding a list
+    assert len(read[-1]) == 1 + between  # read as the stretches between them

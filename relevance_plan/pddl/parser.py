@@ -698,33 +698,47 @@ def read_problem(text: str, domain: Domain, path: str | None = None, deadline: f
 
 
 def _read_problem(text: str, domain: Domain, path: str | None, deadline: float | None) -> Problem:
-    flat = _flat_init(text)
-    if flat is not None:
-        # A big :init of plain atoms (125,000 ``above`` facts) is read with string methods instead of
-        # one node per token; anything it does not expect, the full reading reads and reports.
+    body = _init_body(text)
+    # A big :init of plain atoms (125,000 ``above`` facts) is read with string methods instead of
+    # one node per token: first as one stretch, up to its first '))'; where something else stands in
+    # it (a numeric value, a negative or timed literal), as the stretches between such entries, which
+    # the list reader reads.  Anything else it does not expect, the full reading reads and reports.
+    for find_stretches in (_one_stretch, _stretches_between_entries):
+        stretches = find_stretches(text, body) if body is not None else None
+        if stretches is None:
+            break
         try:
-            root = parse_sexpr(text, path, deadline, skip=flat)
-            return _read_problem_from(text, root, domain, path, deadline, flat)
+            atoms = _plain_atoms(text, stretches)
+            root = parse_sexpr(text, path, deadline, skip=stretches)
+            return _read_problem_from(text, root, domain, path, deadline, atoms)
         except OutOfTimeError:
             raise
+        except _NotPlain:
+            continue
         except RelevancePlanError:
-            pass
+            break
     return _read_problem_from(text, parse_sexpr(text, path, deadline), domain, path, deadline, None)
 
 
+class _NotPlain(PDDLParseError):
+    """Something other than blanks and plain atoms in a stretch of :init."""
+
+
 # The one ``(:init`` of a problem; the end of a body of plain atoms (no nested list, no comment);
-# what splits such a body into blanks and atoms' insides; an atom's predicate; its arguments.
+# blanks up to a ')'; an entry holding a list; what splits a stretch of plain atoms into blanks and
+# atoms' insides; an atom's predicate; its arguments.
 _INIT_START = re.compile(r"\(\s*:init(?=[\s();])", re.IGNORECASE)
 _LAST_ATOM = re.compile(r"\)\s*\)")
+_CLOSING = re.compile(r"\s*\)")
+_HOLDS_A_LIST = re.compile(r"\([^()]*\(")
 _BRACKET = re.compile(r"[()]")
 _HEAD = operator.itemgetter(0)
 _ARGUMENTS = operator.itemgetter(slice(1, None))
 FLAT_INIT_FROM = 2000  # atoms in :init before the string-method reading pays
 
 
-def _flat_init(text: str) -> tuple[int, int] | None:
-    """Where the :init body starts and where it ends if it holds only plain atoms, enough of them and
-    no comment; None where it cannot.  :func:`_read_flat_init` checks that it does."""
+def _init_body(text: str) -> int | None:
+    """Where the body of the one :init starts; None if there are several, or it is in a comment."""
     found = list(_INIT_START.finditer(text))
     if len(found) != 1:
         return None
@@ -732,29 +746,69 @@ def _flat_init(text: str) -> tuple[int, int] | None:
     line_start = max(text.rfind("\n", 0, start), text.rfind("\r", 0, start)) + 1
     if ";" in text[line_start:start]:
         return None  # in a comment
-    body = found[0].end()
-    last = _LAST_ATOM.search(text, body)  # plain atoms hold no bracket: the first '))' closes the last
-    if last is None:
+    return found[0].end()
+
+
+def _one_stretch(text: str, body: int) -> list[tuple[int, int]] | None:
+    """The :init body up to its first '))', where a body of plain atoms ends (they hold no bracket)."""
+    last = _LAST_ATOM.search(text, body)
+    return _worth_reading(text, body, [(body, last.end() - 1)]) if last is not None else None
+
+
+def _stretches_between_entries(text: str, body: int) -> list[tuple[int, int]] | None:
+    """The stretches of the :init body between its entries holding a list, to its closing ')'."""
+    stretches = []
+    start = body
+    last = _LAST_ATOM.search(text, start)
+    while last is not None:
+        closing = _CLOSING.match(text, start)  # the body ends right after an entry (or is empty)
+        if closing is not None:
+            stretches.append((start, closing.end() - 1))
+            return _worth_reading(text, body, stretches)
+        entry = _HOLDS_A_LIST.search(text, start, last.start())
+        if entry is None:
+            stretches.append((start, last.end() - 1))
+            return _worth_reading(text, body, stretches)
+        entry_end = _list_end(text, entry.start())
+        if entry_end is None:
+            return None
+        stretches.append((start, entry.start()))
+        start = entry_end
+        if last.start() < start:  # that '))' closed the entry
+            last = _LAST_ATOM.search(text, start)
+    return None
+
+
+def _list_end(text: str, start: int) -> int | None:
+    """The offset after the ')' closing the list that opens at ``start``."""
+    depth = 0
+    for bracket in _BRACKET.finditer(text, start):
+        depth += 1 if bracket.group() == "(" else -1
+        if not depth:
+            return bracket.end()
+    return None
+
+
+def _worth_reading(text: str, body: int, stretches: list[tuple[int, int]]) -> list[tuple[int, int]] | None:
+    """``stretches`` if they hold enough atoms, and the body no comment and no CR."""
+    end = stretches[-1][1]
+    if sum(text.count("(", start, stop) for start, stop in stretches) < FLAT_INIT_FROM:
         return None
-    end = last.end() - 1
-    if text.count("(", body, end) < FLAT_INIT_FROM or text.find(";", body, end) >= 0 or "\r" in text[body:end]:
+    if text.find(";", body, end) >= 0 or text.find("\r", body, end) >= 0:
         return None
-    return body, end
+    return stretches
 
 
 def _read_flat_init(
-    text: str,
-    body: tuple[int, int],
+    atoms: _PlainAtoms,
     scope: _Scope,
     objects: Mapping[str, str],
     path: str | None = None,
     deadline: float | None = None,
 ) -> _InitParts:
-    """What :func:`_read_init` makes of the plain atoms between ``body``'s offsets; a PDDLParseError
-    at the first one it would refuse (the caller then reads the file in full, for the full message
-    and its line)."""
-    grounds, opens, closes = _plain_atoms(text, *body)
-    check_deadline(deadline, "reading ':init'", path)
+    """What :func:`_read_init` makes of ``atoms``; a PDDLParseError at the first one it would refuse
+    (the caller then reads the file in full, for the full message and its line)."""
+    grounds, opens, closes = atoms
     if not all(grounds):
         raise PDDLParseError("not a plain atom")
     args = list(map(_ARGUMENTS, grounds))
@@ -775,29 +829,39 @@ def _read_flat_init(
     return _InitParts(facts, {}, [], list(zip(opens, closes, args)))
 
 
-def _plain_atoms(text: str, start: int, end: int) -> tuple[list[tuple[str, ...]], list[int], list[int]]:
-    """The atoms between the offsets, lower-cased and split into words, and where each opens and
-    closes; a PDDLParseError if anything else is there.
+# The atoms of :init's stretches of plain atoms, lower-cased and split into words; where each opens;
+# where each closes.
+_PlainAtoms = tuple[list[tuple[str, ...]], list[int], list[int]]
 
-    Whole-body steps, each one pass in C (a loop over 1.5 million atoms took 3 µs an atom): the body
-    alternates blanks and atoms, so splitting it at the brackets leaves each atom's inside at an odd
-    place, and the pieces' lengths give each bracket's offset.  Each step's input is dropped once
-    used: at 1.5 million atoms, each is about 100 MB.
+
+def _plain_atoms(text: str, stretches: list[tuple[int, int]]) -> _PlainAtoms:
+    """The atoms of the stretches; _NotPlain if anything else is there.
+
+    Whole-stretch steps, each one pass in C (a loop over 1.5 million atoms took 3 µs an atom): a
+    stretch alternates blanks and atoms, so splitting it at the brackets leaves each atom's inside at
+    an odd place, and the pieces' lengths give each bracket's offset.  Each step's input is dropped
+    once used: at 1.5 million atoms, each is about 100 MB.
     """
-    inside = text[start:end]
-    ascii_only = inside.isascii()  # else atom by atom: a non-ASCII lower case may change a length
-    pieces = _BRACKET.split(inside.lower() if ascii_only else inside)
-    del inside
-    if "".join(pieces[0::2]).strip():  # something between atoms, or a list inside one
-        raise PDDLParseError("not a plain atom")
-    brackets = list(map(operator.add, itertools.accumulate(map(len, pieces)), itertools.count(start)))
-    opens, closes = brackets[0:-1:2], list(map(operator.add, brackets[1::2], itertools.repeat(1)))
-    del brackets
-    insides = pieces[1::2]
-    del pieces
-    if not ascii_only:
-        insides = list(map(str.lower, insides))
-    return list(map(tuple, map(str.split, insides))), opens, closes
+    grounds: list[tuple[str, ...]] = []
+    opens: list[int] = []
+    closes: list[int] = []
+    for start, end in stretches:
+        inside = text[start:end]
+        ascii_only = inside.isascii()  # else atom by atom: a non-ASCII lower case may change a length
+        pieces = _BRACKET.split(inside.lower() if ascii_only else inside)
+        del inside
+        if "".join(pieces[0::2]).strip():  # something between atoms, or a list inside one
+            raise _NotPlain("not a plain atom")
+        brackets = list(map(operator.add, itertools.accumulate(map(len, pieces)), itertools.count(start)))
+        opens += brackets[0:-1:2]
+        closes += map(operator.add, brackets[1::2], itertools.repeat(1))
+        del brackets
+        insides = pieces[1::2]
+        del pieces
+        if not ascii_only:
+            insides = list(map(str.lower, insides))
+        grounds += map(tuple, map(str.split, insides))
+    return grounds, opens, closes
 
 
 def _read_problem_from(
@@ -806,7 +870,7 @@ def _read_problem_from(
     domain: Domain,
     path: str | None,
     deadline: float | None,
-    flat_body: tuple[int, int] | None,
+    atoms: _PlainAtoms | None,
 ) -> Problem:
     reader = _Reader(path)
     name, sections = reader.header(root, "problem")
@@ -850,10 +914,15 @@ def _read_problem_from(
     known = dict(domain.constants)
     known.update(objects)
     scope = _Scope(domain.types, domain.predicates, domain.functions, MappingProxyType(known), {}, in_problem=True)
-    if flat_body is None:
+    if atoms is None:
         init = _read_init(reader, found["init"], scope, objects, deadline)
     else:
-        init = _read_flat_init(text, flat_body, scope, objects, path, deadline)
+        init = _read_flat_init(atoms, scope, objects, path, deadline)
+        if found["init"]:  # the entries between the stretches: numeric values, negative and timed literals
+            entries = _read_init(reader, found["init"], scope, objects, deadline)
+            if entries.facts:
+                raise PDDLParseError("a fact among the entries")  # none holds one: read in full if it did
+            init = _InitParts(init.facts, entries.numeric, entries.timed, sorted(init.spans + entries.spans))
     goal = _read_goal(reader, found.get(":goal"), replace(scope, preferences=True))
     constraints = None
     if ":constraints" in found:

@@ -20,7 +20,7 @@ import itertools
 import re
 import threading
 import time
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 
 from relevance_plan.errors import OutOfTimeError, PDDLParseError
@@ -105,13 +105,13 @@ def collection_paused() -> Iterator[None]:
 
 
 def parse_sexpr(
-    text: str, path: str | None = None, deadline: float | None = None, skip: tuple[int, int] = (0, 0)
+    text: str, path: str | None = None, deadline: float | None = None, skip: Sequence[tuple[int, int]] = ()
 ) -> Node:
     """Parse ``text`` holding exactly one top-level list (a PDDL domain or problem).
 
-    ``skip``: the offsets of a part read elsewhere (a big :init's atoms, see the parser), passed
-    over; it must start and end between tokens and not inside a CRLF.  Lines after it still count
-    its line breaks.
+    ``skip``: the offsets of parts read elsewhere (a big :init's plain atoms, see the parser), in
+    order, passed over; each must start and end between tokens and not inside a CRLF.  Lines after
+    a part still count its line breaks.
     """
     if "\0" in text:
         raise PDDLParseError(
@@ -126,19 +126,24 @@ def parse_sexpr(
     return root
 
 
-def _read_lists(text: str, path: str | None, deadline: float | None, skip: tuple[int, int]) -> Node | None:
-    # Offsets where each line after the first starts; the sentinel is never reached.  Inside the
+def _read_lists(text: str, path: str | None, deadline: float | None, skip: Sequence[tuple[int, int]]) -> Node | None:
+    # Offsets where each line after the first starts; the sentinel is never reached.  Inside a
     # skipped part no token asks for its line: its line breaks count, where they are does not.
-    gap_start, gap_end = skip
-    starts = [m.end() for m in _LINE_BREAK.finditer(text, 0, gap_start)]
-    breaks = text.count("\n", gap_start, gap_end) + text.count("\r", gap_start, gap_end)
-    starts.extend([gap_end] * (breaks - text.count("\r\n", gap_start, gap_end)))
-    starts.extend(m.end() for m in _LINE_BREAK.finditer(text, gap_end))
+    read = [0, *itertools.chain.from_iterable(skip), len(text)]  # the parts read: from, to, from, ...
+    starts: list[int] = []
+    for index in range(0, len(read), 2):
+        starts.extend(m.end() for m in _LINE_BREAK.finditer(text, read[index], read[index + 1]))
+        if index + 2 < len(read):
+            gap_start, gap_end = read[index + 1], read[index + 2]
+            breaks = text.count("\n", gap_start, gap_end) + text.count("\r", gap_start, gap_end)
+            starts.extend([gap_end] * (breaks - text.count("\r\n", gap_start, gap_end)))
     starts.append(len(text) + 1)
     line, next_line = 1, starts[0]
     stack: list[Node] = []
     root: Node | None = None
-    tokens = itertools.chain(_TOKEN.finditer(text, 0, gap_start), _TOKEN.finditer(text, gap_end))
+    tokens = itertools.chain.from_iterable(
+        _TOKEN.finditer(text, read[index], read[index + 1]) for index in range(0, len(read), 2)
+    )
     for count, match in enumerate(tokens):
         start = match.start()
         if start >= next_line:
