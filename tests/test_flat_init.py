@@ -219,6 +219,7 @@ COST_DOMAIN = """(define (domain d) (:requirements :strips :typing :action-costs
         ["", "(not (free c))", ""],
         ["(= (cost a) 2)", "(= (cost b) 3) (not (at a a))", "(at 10 (free b))\n(= (cost c) 1)"],
         ["", "", "(not (free a))"],  # an entry ends the body
+        ["(not (free c))", "", ""],  # its '))' before any atom
         ["", "(= (cost a) 2) (gone a)", ""],  # an unknown predicate: the full reading's error
         ["", "(= (cost a) two)", ""],
         ["", "(not (free a)", ""],  # never closed

@@ -705,8 +705,8 @@ def _read_problem(text: str, domain: Domain, path: str | None, deadline: float |
     # the list reader reads.  Anything else it does not expect, the full reading reads and reports.
     for find_stretches in (_one_stretch, _stretches_between_entries):
         stretches = find_stretches(text, body) if body is not None else None
-        if stretches is None:
-            break
+        if stretches is None:  # too few atoms before the first '))' may still be enough between entries
+            continue
         try:
             atoms = _plain_atoms(text, stretches)
             root = parse_sexpr(text, path, deadline, skip=stretches)
