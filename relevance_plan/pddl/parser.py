@@ -736,6 +736,10 @@ _HEAD = operator.itemgetter(0)
 _ARGUMENTS = operator.itemgetter(slice(1, None))
 FLAT_INIT_FROM = 2000  # atoms in :init before the string-method reading pays
 
+# The atoms of :init's stretches of plain atoms, lower-cased and split into words; where each opens;
+# where each closes.
+_PlainAtoms = tuple[list[tuple[str, ...]], list[int], list[int]]
+
 
 def _init_body(text: str) -> int | None:
     """Where the body of the one :init starts; None if there are several, or it is in a comment."""
@@ -827,11 +831,6 @@ def _read_flat_init(
     if len(facts) < len(grounds):  # stated twice: the rank above is the last statement's
         facts = dict(zip(facts, itertools.count()))
     return _InitParts(facts, {}, [], list(zip(opens, closes, args)))
-
-
-# The atoms of :init's stretches of plain atoms, lower-cased and split into words; where each opens;
-# where each closes.
-_PlainAtoms = tuple[list[tuple[str, ...]], list[int], list[int]]
 
 
 def _plain_atoms(text: str, stretches: list[tuple[int, int]]) -> _PlainAtoms:
