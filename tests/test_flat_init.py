@@ -247,3 +247,15 @@ def test_entries_between_plain_atoms_read_the_same(monkeypatch, entries):
     same(read_problem(text, domain, path="p.pddl"), full)
     between = len(parse_sexpr("(" + " ".join(entries) + ")").items)  # the entries holding a list
     assert len(read[-1]) == 1 + between  # read as the stretches between them
+
+
+@pytest.mark.parametrize("atoms, entries, by_stretches", [(6000, 2500, True), (2500, 6000, False)])
+def test_entries_outnumbering_the_atoms_are_read_in_full(atoms, entries, by_stretches):
+    """Finding and reading an entry between stretches costs more than in the full reading, an atom
+    less: with more than one entry for two atoms, the whole :init goes to the full reading."""
+    init = "\n".join(["    (at a b)"] * atoms + ["    (not (free c))"] * entries)
+    text = problem(init)
+    stretches = parser._stretches_between_entries(text, parser._init_body(text))
+    assert (stretches is not None) is by_stretches
+    domain = read_domain(COST_DOMAIN)
+    assert read_problem(text, domain, path="p.pddl").init == {("at", "a", "b")}

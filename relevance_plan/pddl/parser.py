@@ -760,11 +760,16 @@ def _one_stretch(text: str, body: int) -> list[tuple[int, int]] | None:
 
 
 def _stretches_between_entries(text: str, body: int) -> list[tuple[int, int]] | None:
-    """The stretches of the :init body between its entries holding a list, to its closing ')'."""
+    """The stretches of the :init body between its entries holding a list, to its closing ')'; None
+    once the entries are more than half as many as the atoms (each entry costs more to find and read
+    this way than in the full reading, each atom less)."""
     stretches = []
     start = body
+    atoms = 0
     last = _LAST_ATOM.search(text, start)
     while last is not None:
+        if len(stretches) > FLAT_INIT_FROM and 2 * len(stretches) > atoms:
+            return None
         closing = _CLOSING.match(text, start)  # the body ends right after an entry (or is empty)
         if closing is not None:
             stretches.append((start, closing.end() - 1))
@@ -777,6 +782,7 @@ def _stretches_between_entries(text: str, body: int) -> list[tuple[int, int]] | 
         if entry_end is None:
             return None
         stretches.append((start, entry.start()))
+        atoms += text.count("(", start, entry.start())
         start = entry_end
         if last.start() < start:  # that '))' closed the entry
             last = _LAST_ATOM.search(text, start)
