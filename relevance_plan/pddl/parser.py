@@ -763,7 +763,7 @@ def _stretches_between_entries(text: str, body: int) -> list[tuple[int, int]] | 
     """The stretches of the :init body between its entries holding a list, to its closing ')'; None
     once the entries are more than half as many as the atoms (each entry costs more to find and read
     this way than in the full reading, each atom less)."""
-    stretches = []
+    stretches: list[tuple[int, int]] = []
     start = body
     atoms = 0
     last = _LAST_ATOM.search(text, start)
