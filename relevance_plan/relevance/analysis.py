@@ -359,9 +359,7 @@ class _Regression:
             check_deadline(self.deadline, "regressing the goal", self.problem.path)
             kind = self.objects.get
             rows = self.rows[predicate] = frozenset(
-                tuple([kind(arg, "object") for arg in atom[1:]])
-                for atom in self.index.by_predicate.get(predicate, ())
-                if atom[0] == predicate
+                tuple([kind(arg, "object") for arg in atom[1:]]) for atom in self.index.by_predicate.get(predicate, ())
             )
         return rows
 
