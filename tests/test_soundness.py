@@ -77,6 +77,29 @@ ALARM = """(define (domain alarm)
     :effect (took ?t)))
 """
 
+SCENE = """(define (domain scene)
+  (:requirements :adl)
+  (:types agent place receptacle item)
+  (:predicates (at ?a - agent ?p - place) (link ?p ?q - place) (item-at ?i - item ?p - place)
+               (rec-at ?r - receptacle ?p - place) (inside ?i - item ?r - receptacle)
+               (opened ?r - receptacle) (holding ?a - agent ?i - item) (free ?a - agent))
+  (:action go :parameters (?a - agent ?p ?q - place)
+    :precondition (and (at ?a ?p) (link ?p ?q))
+    :effect (and (not (at ?a ?p)) (at ?a ?q)))
+  (:action open :parameters (?a - agent ?r - receptacle ?p - place)
+    :precondition (and (at ?a ?p) (rec-at ?r ?p))
+    :effect (opened ?r))
+  (:action pick-loose :parameters (?a - agent ?i - item ?p - place)
+    :precondition (and (at ?a ?p) (item-at ?i ?p) (free ?a) (forall (?r - receptacle) (not (inside ?i ?r))))
+    :effect (and (holding ?a ?i) (not (free ?a)) (not (item-at ?i ?p))))
+  (:action pick-from :parameters (?a - agent ?i - item ?r - receptacle ?p - place)
+    :precondition (and (at ?a ?p) (rec-at ?r ?p) (inside ?i ?r) (opened ?r) (free ?a))
+    :effect (and (holding ?a ?i) (not (free ?a)) (not (inside ?i ?r)) (not (item-at ?i ?p))))
+  (:action put :parameters (?a - agent ?i - item ?r - receptacle ?p - place)
+    :precondition (and (at ?a ?p) (rec-at ?r ?p) (holding ?a ?i))
+    :effect (and (inside ?i ?r) (item-at ?i ?p) (free ?a) (not (holding ?a ?i)))))
+"""
+
 
 def lift_problem(seed: int, untyped: bool = False) -> str:
     rng = random.Random(seed)
@@ -113,6 +136,27 @@ def rooms_problem(seed: int) -> str:
     )
 
 
+def scene_problem(seed: int, timed: str = "") -> str:
+    """Items in receptacles and loose; the goal holds an item that sits in a receptacle, which a
+    pruned problem without that receptacle would let the agent pick up loose."""
+    rng = random.Random(seed)
+    places = [f"p{i}" for i in range(10)]
+    links = [f"(link p{i} p{i + 1}) (link p{i + 1} p{i})" for i in range(9)]
+    where = {f"r{k}": rng.randrange(10) for k in range(12)}
+    init = ["(at bot p0)", "(free bot)", *links, *(f"(rec-at {r} p{p})" for r, p in where.items())]
+    for k in range(8):
+        if k % 2 == 0:
+            holder = f"r{rng.randrange(12)}"
+            init += [f"(inside i{k} {holder})", f"(item-at i{k} p{where[holder]})"]
+        else:
+            init.append(f"(item-at i{k} p{rng.randrange(10)})")
+    objects = f"bot - agent {' '.join(places)} - place {' '.join(where)} - receptacle"
+    objects += " " + " ".join(f"i{k}" for k in range(8)) + " - item"
+    return (
+        f"(define (problem scene-{seed}) (:domain scene) (:objects {objects})"
+        f" (:init {' '.join(init)} {timed}) (:goal (holding bot i{2 * rng.randrange(4)})))"
+    )
+
 def guarded_problem(seed: int) -> str:
     rng = random.Random(seed)
     cells = [f"c{i}" for i in range(20)]
@@ -144,6 +188,7 @@ WORLDS = {
     "rooms": (ROOMS, rooms_problem),
     "guarded": (GUARDED, guarded_problem),
     "alarm": (ALARM, alarm_problem),
+    "scene": (SCENE, scene_problem),
 }
 
 
@@ -171,6 +216,43 @@ def test_quantifiers_in_preconditions_derived_predicates_and_effect_conditions_k
         domain_text, make = WORLDS[world]
         task, kept, _ = first_kept(domain_text, make(2))
         assert {n for n, k in task.problem.objects.items() if k == kind} <= kept, world
+
+
+def _receptacles(task: PlanningTask) -> tuple[set[str], set[str]]:
+    """(every receptacle, those holding an item in the initial state)."""
+    every = {name for name, kind in task.problem.objects.items() if kind == "receptacle"}
+    return every, {atom[2] for atom in task.problem.init if atom[0] == "inside"}
+
+
+def test_a_universal_over_a_negated_atom_keeps_only_the_objects_its_facts_name():
+    for seed in range(3):
+        task, kept, restored = first_kept(SCENE, scene_problem(seed))
+        every, holding = _receptacles(task)
+        assert holding <= kept  # each could make (forall (?r) (not (inside ?i ?r))) false
+        empty = every - holding
+        assert empty and len(empty & kept) < len(empty), seed  # an empty one can never: not all stay
+        reasons = {item.name: item.reason for item in restored if item.rule == "soundness"}
+        assert all("with (inside ...)" in reasons[name] for name in holding & reasons.keys())
+
+
+def test_an_effect_over_every_object_or_a_timed_fact_widens_what_the_negated_atom_keeps():
+    # an effect that puts an item in every receptacle: any receptacle may come to hold it
+    scatter = SCENE.replace(
+        "  (:action put",
+        "  (:action scatter :parameters (?a - agent ?i - item)\n    :precondition (holding ?a ?i)"
+        "\n    :effect (forall (?r - receptacle) (inside ?i ?r)))\n  (:action put",
+    )
+    task, kept, _ = first_kept(scatter, scene_problem(1))
+    every, _ = _receptacles(task)
+    assert every <= kept
+    # a timed fact that puts an item in a receptacle later names that receptacle too
+    task, kept_plain, _ = first_kept(SCENE, scene_problem(1))
+    every, holding = _receptacles(task)
+    dropped = sorted(every - holding - kept_plain)
+    assert dropped
+    timed_domain = SCENE.replace("(:requirements :adl)", "(:requirements :adl :timed-initial-literals)")
+    _, kept_timed, _ = first_kept(timed_domain, scene_problem(1, timed=f"(at 5 (inside i1 {dropped[0]}))"))
+    assert dropped[0] in kept_timed
 
 
 def _prune_plan_validate(tmp_path: Path, world: str, seed: int) -> bool:

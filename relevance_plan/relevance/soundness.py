@@ -19,17 +19,24 @@ objects is a witness in the original), and so are universally quantified
 effects on their own (they change facts of pruned objects that nothing
 reads except through a quantifier already covered above).
 
-One refinement keeps its meaning: in ``forall (?x - t) (imply (g ?x) φ)``
-(or ``(or (not (g ?x)) φ)``) with ``g`` a static predicate, an object for
-which ``g`` is false in the initial state satisfies the formula whatever
-happens, so only the objects the guard admits must stay.  That is how an
-untyped domain says "every passenger": ``(forall (?p) (imply (passenger ?p) (served ?p)))``.
+One refinement keeps its meaning: where the body holds whenever an atom on
+the variable is false (``(forall (?x - t) (imply (g ?x) φ))``, ``(or (not (g
+?x)) φ)``, ``(not (p ?o ?x))``; for an existential, whenever it is true: a
+conjunct), and no effect makes that atom true of an object no action
+parameter names, an object never named at that place in the atom's initial
+or timed facts leaves the atom false in every state a plan of the pruned
+problem reaches; only the objects so named must stay.  That is how an
+untyped domain says "every passenger", ``(forall (?p) (imply (passenger ?p)
+(served ?p)))``, and how a scene graph says "in no receptacle", ``(forall (?r
+- receptacle) (not (inreceptacle ?o ?r)))``: only the receptacles holding
+something stay.
 """
 
 from __future__ import annotations
 
 import functools
-from collections.abc import Iterable, Iterator, Mapping
+import itertools
+from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass
 
 from relevance_plan.pddl import formulas as f
@@ -44,30 +51,32 @@ class KeptForSoundness:
     type_name: str
     where: str  # "the goal", "action 'stop'", ...
     formula: str  # the quantifier, as text (shortened)
-    guard: str | None = None  # a static unary predicate that admits the objects that matter
+    guard: str | None = None  # a predicate whose facts name the objects that matter ...
+    guard_position: int = 0  # ... at this place among its arguments
 
 
 def soundness_requirements(domain: Domain, problem: Problem) -> tuple[KeptForSoundness, ...]:
     """Every quantifier whose range must stay whole, with where it is (the goal's first)."""
-    return _requirements(_problem_formulas(problem), _static_unary(domain)) + _domain_requirements(domain)
+    return _requirements(_problem_formulas(problem), _never_gained(domain)) + _domain_requirements(domain)
 
 
 @functools.lru_cache(maxsize=16)
 def _domain_requirements(domain: Domain) -> tuple[KeptForSoundness, ...]:
-    return _requirements(_domain_formulas(domain), _static_unary(domain))
+    return _requirements(_domain_formulas(domain), _never_gained(domain))
 
 
 def _requirements(
-    formulas: Iterable[tuple[str, f.Formula, str]], static: frozenset[str]
+    formulas: Iterable[tuple[str, f.Formula, str]], never_gained: Callable[[str, int], bool]
 ) -> tuple[KeptForSoundness, ...]:
-    found: dict[tuple[str, str | None, str], KeptForSoundness] = {}
+    found: dict[tuple[str, str | None, int, str], KeptForSoundness] = {}
     for where, formula, mode in formulas:
         for quantifier, _ in _risky(formula, mode):
-            guards = _guards(quantifier, static)
+            guards = _guards(quantifier, never_gained)
             text = _short(format_formula(quantifier))
             for variable, type_name in quantifier.parameters:
-                item = KeptForSoundness(type_name, where, text, guards.get(variable))
-                found.setdefault((type_name, item.guard, where), item)
+                guard, position = guards.get(variable, (None, 0))
+                item = KeptForSoundness(type_name, where, text, guard, position)
+                found.setdefault((type_name, guard, position, where), item)
     return tuple(found.values())
 
 
@@ -75,15 +84,19 @@ def objects_to_keep(
     domain: Domain, problem: Problem, requirements: tuple[KeptForSoundness, ...]
 ) -> dict[str, KeptForSoundness]:
     """Object -> the requirement that keeps it (the first one that applies)."""
-    guards = {requirement.guard for requirement in requirements if requirement.guard}
-    guarded: dict[str, set[str]] = {}
+    guards = {(r.guard, r.guard_position) for r in requirements if r.guard}
+    guarded: dict[tuple[str, int], set[str]] = {}
     if guards:
-        for atom in problem.init:
-            if len(atom) == 2 and atom[0] in guards:
-                guarded.setdefault(atom[0], set()).add(atom[1])
+        timed = (item.atom for item in problem.timed_literals if item.atom is not None and not item.negated)
+        for atom in itertools.chain(problem.init, timed):
+            for predicate, position in guards:
+                if atom[0] == predicate and len(atom) > position + 1:
+                    guarded.setdefault((predicate, position), set()).add(atom[position + 1])
     kept: dict[str, KeptForSoundness] = {}
     for requirement in requirements:
-        admitted = guarded.get(requirement.guard, set()) if requirement.guard else None
+        admitted = None
+        if requirement.guard:
+            admitted = guarded.get((requirement.guard, requirement.guard_position), set())
         for name, type_name in problem.objects.items():
             if name in kept or not domain.is_subtype(type_name, requirement.type_name):
                 continue
@@ -130,30 +143,44 @@ def _inside_preference(formula: f.Formula, target: f.Node) -> bool:
     return any(isinstance(node, f.Preference) and any(n is target for n in f.walk(node)) for node in f.walk(formula))
 
 
-def _static_unary(domain: Domain) -> frozenset[str]:
-    changed = {item.atom.predicate for action in domain.actions for item in f.effect_literals(action.effect)}
-    changed |= domain.derived_predicates
-    return frozenset(p for p, params in domain.predicates.items() if len(params) == 1 and p not in changed)
+def _never_gained(domain: Domain) -> Callable[[str, int], bool]:
+    """Whether no effect can make the predicate true of an object, at that place, that no action
+    parameter names: such an object keeps the atom false if its initial and timed facts do."""
+    derived = domain.derived_predicates
+    gained = {
+        (item.atom.predicate, position)
+        for action in domain.actions
+        for item in f.effect_literals(action.effect)
+        if item.is_add and item.quantified
+        for position, term in enumerate(item.atom.args)
+        if term in {variable for variable, _ in item.quantified}
+    }
+    return lambda predicate, position: (
+        predicate in domain.predicates and predicate not in derived and (predicate, position) not in gained
+    )
 
 
-def _guards(quantifier: f.Exists | f.Forall, static: frozenset[str]) -> Mapping[str, str]:
-    """Variable -> a static unary predicate that must hold of it for the body to matter."""
+def _guards(quantifier: f.Exists | f.Forall, never_gained: Callable[[str, int], bool]) -> Mapping[str, tuple[str, int]]:
+    """Variable -> (predicate, place) of an atom on it whose falsity settles the body the way that
+    makes the object not count (true for a universal, false for an existential)."""
     body = quantifier.body
     if isinstance(quantifier, f.Exists):
-        # under negation an existential is a universal: (not (exists (?x) (and (g ?x) φ)))
         parts = list(f.conjuncts(body)) if isinstance(body, f.And) else [body]
-        positive = [p for p in parts if isinstance(p, f.Atom)]
+        settling = [p for p in parts if isinstance(p, f.Atom)]
+    elif isinstance(body, f.Not) and isinstance(body.body, f.Atom):
+        settling = [body.body]
     elif isinstance(body, f.Imply):
-        positive = [p for p in f.conjuncts(body.condition) if isinstance(p, f.Atom)]
+        settling = [p for p in f.conjuncts(body.condition) if isinstance(p, f.Atom)]
     elif isinstance(body, f.Or):
-        positive = [p.body for p in body.parts if isinstance(p, f.Not) and isinstance(p.body, f.Atom)]
+        settling = [p.body for p in body.parts if isinstance(p, f.Not) and isinstance(p.body, f.Atom)]
     else:
         return {}
     variables = {variable for variable, _ in quantifier.parameters}
-    guards: dict[str, str] = {}
-    for atom in positive:
-        if atom.predicate in static and len(atom.args) == 1 and atom.args[0] in variables:
-            guards.setdefault(atom.args[0], atom.predicate)
+    guards: dict[str, tuple[str, int]] = {}
+    for atom in settling:
+        for position, term in enumerate(atom.args):
+            if term in variables and never_gained(atom.predicate, position):
+                guards.setdefault(term, (atom.predicate, position))
     return guards
 
 
