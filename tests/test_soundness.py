@@ -1,6 +1,7 @@
 """A plan of the pruned problem is a plan of the original: ADL quantifiers, conditional effects,
-derived predicates.  Each world below is one where dropping an object a quantifier ranges over
-changes the verdict; the last test shows that without the soundness rule some of them break."""
+quantified effects on other facts, derived predicates.  Each world below is one where dropping an
+object a quantifier ranges over changes the verdict; the last test shows that without the soundness
+rule some of them break."""
 
 from __future__ import annotations
 
@@ -100,6 +101,15 @@ SCENE = """(define (domain scene)
     :effect (and (inside ?i ?r) (item-at ?i ?p) (free ?a) (not (holding ?a ?i)))))
 """
 
+NOISE = """(define (domain noise)
+  (:requirements :adl)
+  (:types agent cell sleeper)
+  (:predicates (at ?a - agent ?c - cell) (adj ?c ?d - cell) (near ?s - sleeper ?c - cell) (woken))
+  (:action step :parameters (?a - agent ?c ?d - cell)
+    :precondition (and (at ?a ?c) (adj ?c ?d))
+    :effect (and (not (at ?a ?c)) (at ?a ?d) (forall (?s - sleeper) (when (near ?s ?d) (woken))))))
+"""
+
 
 def lift_problem(seed: int, untyped: bool = False) -> str:
     rng = random.Random(seed)
@@ -157,6 +167,21 @@ def scene_problem(seed: int, timed: str = "") -> str:
         f" (:init {' '.join(init)} {timed}) (:goal (holding bot i{2 * rng.randrange(4)})))"
     )
 
+def noise_problem(seed: int) -> str:
+    """A short way past sleepers and a long way round; the goal wakes no one.  The sleepers are
+    named nowhere but in the quantified effect's condition; z0 sleeps near no cell."""
+    rng = random.Random(seed)
+    cells = [f"c{i}" for i in range(10)] + [f"d{i}" for i in range(1, 12)]
+    way = ["c0", *(f"d{i}" for i in range(1, 12)), "c9"]
+    links = [(f"c{i}", f"c{i + 1}") for i in range(9)] + list(zip(way, way[1:]))
+    adj = " ".join(f"(adj {a} {b}) (adj {b} {a})" for a, b in links)
+    near = " ".join(f"(near s{k} c{rng.randrange(2, 8)})" for k in range(3))
+    objects = f"a - agent {' '.join(cells)} - cell s0 s1 s2 z0 - sleeper"
+    return (
+        f"(define (problem noise-{seed}) (:domain noise) (:objects {objects})"
+        f" (:init (at a c0) {adj} {near}) (:goal (and (at a c9) (not (woken)))))"
+    )
+
 def guarded_problem(seed: int) -> str:
     rng = random.Random(seed)
     cells = [f"c{i}" for i in range(20)]
@@ -189,6 +214,7 @@ WORLDS = {
     "guarded": (GUARDED, guarded_problem),
     "alarm": (ALARM, alarm_problem),
     "scene": (SCENE, scene_problem),
+    "noise": (NOISE, noise_problem),
 }
 
 
@@ -253,6 +279,14 @@ def test_an_effect_over_every_object_or_a_timed_fact_widens_what_the_negated_ato
     timed_domain = SCENE.replace("(:requirements :adl)", "(:requirements :adl :timed-initial-literals)")
     _, kept_timed, _ = first_kept(timed_domain, scene_problem(1, timed=f"(at 5 (inside i1 {dropped[0]}))"))
     assert dropped[0] in kept_timed
+
+
+def test_an_effect_over_every_object_that_sets_a_kept_fact_keeps_the_objects_its_condition_admits():
+    task, kept, restored = first_kept(NOISE, noise_problem(1))
+    assert {"s0", "s1", "s2"} <= kept  # each can wake the house once the agent steps near it
+    assert "z0" not in kept  # near no cell: it can never set (woken)
+    reasons = [item.reason for item in restored if item.rule == "soundness"]
+    assert reasons and all("action 'step'" in reason and "(woken)" in reason for reason in reasons)
 
 
 def _prune_plan_validate(tmp_path: Path, world: str, seed: int) -> bool:

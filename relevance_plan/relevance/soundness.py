@@ -12,12 +12,14 @@ the type stay:
 * any quantifier in the condition of a conditional effect: an effect could
   fire in the original and not in the pruned problem, or the other way round;
 * any quantifier in a derived predicate's body or a trajectory constraint
-  (conservative: their polarity of use is not tracked).
+  (conservative: their polarity of use is not tracked);
+* a universally quantified effect whose atom or fluent does not name the
+  variable: it sets a kept fact (or adds to a number) once per object.
 
 Existentials under positive polarity are safe (a witness among the kept
 objects is a witness in the original), and so are universally quantified
-effects on their own (they change facts of pruned objects that nothing
-reads except through a quantifier already covered above).
+effects on the variable's own facts (they change facts of pruned objects
+that nothing reads except through a quantifier already covered above).
 
 One refinement keeps its meaning: where the body holds whenever an atom on
 the variable is false (``(forall (?x - t) (imply (g ?x) φ))``, ``(or (not (g
@@ -36,7 +38,7 @@ from __future__ import annotations
 
 import functools
 import itertools
-from collections.abc import Callable, Iterable, Iterator, Mapping
+from collections.abc import Callable, Iterable, Iterator, Mapping, Set
 from dataclasses import dataclass
 
 from relevance_plan.pddl import formulas as f
@@ -62,7 +64,42 @@ def soundness_requirements(domain: Domain, problem: Problem) -> tuple[KeptForSou
 
 @functools.lru_cache(maxsize=16)
 def _domain_requirements(domain: Domain) -> tuple[KeptForSoundness, ...]:
-    return _requirements(_domain_formulas(domain), _never_gained(domain))
+    never_gained = _never_gained(domain)
+    return _requirements(_domain_formulas(domain), never_gained) + _effects_over_others(domain, never_gained)
+
+
+def _effects_over_others(domain: Domain, never_gained: Callable[[str, int], bool]) -> tuple[KeptForSoundness, ...]:
+    """A universally quantified effect whose atom or fluent does not name its variable (``(forall (?p)
+    (when (boarded ?p) (overloaded)))``, ``(forall (?p) (increase (load) (weight ?p)))``) sets a kept
+    fact once for every object, pruned ones too: each object of the range stays, or only those the
+    condition's atoms can admit (see ``_guards``)."""
+    found: dict[tuple[str, str | None, int, str], KeptForSoundness] = {}
+    for action in domain.actions:
+        where = f"action '{action.name}'"
+        effects: list[tuple[f.Formula, tuple[str, ...], f.Formula, f.Parameters]] = [
+            (item.atom, item.atom.args, item.condition, item.quantified)
+            for item in f.effect_literals(action.effect)
+            if item.quantified
+        ]
+        effects += [
+            (effect, effect.fluent.args, condition, quantified)
+            for effect, condition, quantified, _ in f.numeric_effects(action.effect)
+            if quantified
+        ]
+        for effect, named, condition, quantified in effects:
+            others = [(variable, type_name) for variable, type_name in quantified if variable not in named]
+            if not others:
+                continue
+            settling = [part for part in f.conjuncts(condition) if isinstance(part, f.Atom)]
+            guards = _guarding_atoms(settling, {variable for variable, _ in others}, never_gained)
+            variables = " ".join(variable for variable, _ in others)
+            text = _short(f"(forall ({variables}) ... {format_formula(effect)})")
+            for variable, type_name in others:
+                guard, position = guards.get(variable, (None, 0))
+                found.setdefault(
+                    (type_name, guard, position, where), KeptForSoundness(type_name, where, text, guard, position)
+                )
+    return tuple(found.values())
 
 
 def _requirements(
@@ -175,7 +212,12 @@ def _guards(quantifier: f.Exists | f.Forall, never_gained: Callable[[str, int], 
         settling = [p.body for p in body.parts if isinstance(p, f.Not) and isinstance(p.body, f.Atom)]
     else:
         return {}
-    variables = {variable for variable, _ in quantifier.parameters}
+    return _guarding_atoms(settling, {variable for variable, _ in quantifier.parameters}, never_gained)
+
+
+def _guarding_atoms(
+    settling: Iterable[f.Atom], variables: Set[str], never_gained: Callable[[str, int], bool]
+) -> Mapping[str, tuple[str, int]]:
     guards: dict[str, tuple[str, int]] = {}
     for atom in settling:
         for position, term in enumerate(atom.args):
