@@ -167,6 +167,7 @@ def scene_problem(seed: int, timed: str = "") -> str:
         f" (:init {' '.join(init)} {timed}) (:goal (holding bot i{2 * rng.randrange(4)})))"
     )
 
+
 def noise_problem(seed: int) -> str:
     """A short way past sleepers and a long way round; the goal wakes no one.  The sleepers are
     named nowhere but in the quantified effect's condition; z0 sleeps near no cell."""
@@ -181,6 +182,7 @@ def noise_problem(seed: int) -> str:
         f"(define (problem noise-{seed}) (:domain noise) (:objects {objects})"
         f" (:init (at a c0) {adj} {near}) (:goal (and (at a c9) (not (woken)))))"
     )
+
 
 def guarded_problem(seed: int) -> str:
     rng = random.Random(seed)
