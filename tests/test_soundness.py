@@ -16,6 +16,7 @@ from relevance_plan.planning.loop import PlanOptions
 from relevance_plan.planning.validate import validate_plan
 from relevance_plan.relevance.scorers import PlanningTask
 from relevance_plan.relevance.setup import score_problem
+from relevance_plan.relevance.soundness import KeptObjects
 
 LIFT = """(define (domain lift-adl)
   (:requirements :adl)
@@ -155,9 +156,9 @@ def scene_problem(seed: int, timed: str = "") -> str:
     where = {f"r{k}": rng.randrange(10) for k in range(12)}
     init = ["(at bot p0)", "(free bot)", *links, *(f"(rec-at {r} p{p})" for r, p in where.items())]
     for k in range(8):
-        if k % 2 == 0:
-            holder = f"r{rng.randrange(12)}"
-            init += [f"(inside i{k} {holder})", f"(item-at i{k} p{where[holder]})"]
+        if k % 2 == 0:  # in a box in a cabinet: inside both
+            box, cabinet = rng.sample(sorted(where), 2)
+            init += [f"(inside i{k} {box})", f"(inside i{k} {cabinet})", f"(item-at i{k} p{where[box]})"]
         else:
             init.append(f"(item-at i{k} p{rng.randrange(10)})")
     objects = f"bot - agent {' '.join(places)} - place {' '.join(where)} - receptacle"
@@ -240,27 +241,33 @@ def test_every_object_a_universal_goal_ranges_over_stays_with_its_reason():
 
 
 def test_quantifiers_in_preconditions_derived_predicates_and_effect_conditions_keep_their_range():
-    for world, kind in (("rooms", "item"), ("guarded", "guard"), ("alarm", "alarm")):
-        domain_text, make = WORLDS[world]
-        task, kept, _ = first_kept(domain_text, make(2))
-        assert {n for n, k in task.problem.objects.items() if k == kind} <= kept, world
+    # (exists (?a - alarm) (and (armed ?a) (covers ?a ?u))) in an effect's condition: every armed alarm
+    task, kept, _ = first_kept(ALARM, alarm_problem(2))
+    assert {n for n, k in task.problem.objects.items() if k == "alarm"} <= kept
+    # (forall (?i - item) (not (in ?i ?x))) to seal a kept room ?x: the items in kept rooms
+    task, kept, _ = first_kept(ROOMS, rooms_problem(2))
+    assert {atom[1] for atom in task.problem.init if atom[0] == "in" and atom[2] in kept} <= kept
+    # (seen ?c) derived from (exists (?g - guard) (watch ?g ?c)): the guards watching kept cells
+    task, kept, _ = first_kept(GUARDED, guarded_problem(2))
+    watching = {atom[1] for atom in task.problem.init if atom[0] == "watch" and atom[2] in kept}
+    assert watching and watching <= kept
 
 
-def _receptacles(task: PlanningTask) -> tuple[set[str], set[str]]:
-    """(every receptacle, those holding an item in the initial state)."""
+def _holders(task: PlanningTask, kept: frozenset[str]) -> tuple[set[str], set[str]]:
+    """(the receptacles holding a kept item in the initial state, those holding none)."""
     every = {name for name, kind in task.problem.objects.items() if kind == "receptacle"}
-    return every, {atom[2] for atom in task.problem.init if atom[0] == "inside"}
+    holding = {atom[2] for atom in task.problem.init if atom[0] == "inside" and atom[1] in kept}
+    return holding, every - holding
 
 
-def test_a_universal_over_a_negated_atom_keeps_only_the_objects_its_facts_name():
+def test_a_universal_over_a_negated_atom_keeps_only_the_objects_its_facts_link_to_kept_ones():
     for seed in range(3):
         task, kept, restored = first_kept(SCENE, scene_problem(seed))
-        every, holding = _receptacles(task)
-        assert holding <= kept  # each could make (forall (?r) (not (inside ?i ?r))) false
-        empty = every - holding
-        assert empty and len(empty & kept) < len(empty), seed  # an empty one can never: not all stay
+        holding, others = _holders(task, kept)
+        assert holding and holding <= kept  # each could make (forall (?r) (not (inside ?i ?r))) false
+        assert not others & kept, seed  # empty, or holding pruned items only: can never
         reasons = {item.name: item.reason for item in restored if item.rule == "soundness"}
-        assert all("with (inside ...)" in reasons[name] for name in holding & reasons.keys())
+        assert holding <= reasons.keys() and all("with (inside ...)" in reasons[name] for name in holding)
 
 
 def test_an_effect_over_every_object_or_a_timed_fact_widens_what_the_negated_atom_keeps():
@@ -271,22 +278,23 @@ def test_an_effect_over_every_object_or_a_timed_fact_widens_what_the_negated_ato
         "\n    :effect (forall (?r - receptacle) (inside ?i ?r)))\n  (:action put",
     )
     task, kept, _ = first_kept(scatter, scene_problem(1))
-    every, _ = _receptacles(task)
-    assert every <= kept
-    # a timed fact that puts an item in a receptacle later names that receptacle too
+    assert {name for name, kind in task.problem.objects.items() if kind == "receptacle"} <= kept
+    # a timed fact that puts the goal's item in a receptacle later names that receptacle too
     task, kept_plain, _ = first_kept(SCENE, scene_problem(1))
-    every, holding = _receptacles(task)
-    dropped = sorted(every - holding - kept_plain)
-    assert dropped
+    _, others = _holders(task, kept_plain)
+    item = task.problem.goal.args[1]
+    dropped = sorted(others)[0]
     timed_domain = SCENE.replace("(:requirements :adl)", "(:requirements :adl :timed-initial-literals)")
-    _, kept_timed, _ = first_kept(timed_domain, scene_problem(1, timed=f"(at 5 (inside i1 {dropped[0]}))"))
-    assert dropped[0] in kept_timed
+    _, kept_timed, _ = first_kept(timed_domain, scene_problem(1, timed=f"(at 5 (inside {item} {dropped}))"))
+    assert dropped in kept_timed
 
 
 def test_an_effect_over_every_object_that_sets_a_kept_fact_keeps_the_objects_its_condition_admits():
-    task, kept, restored = first_kept(NOISE, noise_problem(1))
-    assert {"s0", "s1", "s2"} <= kept  # each can wake the house once the agent steps near it
-    assert "z0" not in kept  # near no cell: it can never set (woken)
+    for seed in range(3):
+        task, kept, restored = first_kept(NOISE, noise_problem(seed))
+        assert {"s0", "s1", "s2"} <= kept  # each can wake the house once the agent steps near it
+        assert "z0" not in kept  # near no cell: it can never set (woken)
+    task, kept, restored = first_kept(NOISE, noise_problem(0))
     reasons = [item.reason for item in restored if item.rule == "soundness"]
     assert reasons and all("action 'step'" in reason and "(woken)" in reason for reason in reasons)
 
@@ -322,7 +330,7 @@ def test_without_the_soundness_rule_pruning_breaks_plans(tmp_path, monkeypatch):
     """The worlds above are hard enough: switch the rule off and plans become invalid on the original."""
     from relevance_plan.relevance.scorers import base
 
-    monkeypatch.setattr(base.PlanningTask, "kept_for_soundness", property(lambda self: {}))
+    monkeypatch.setattr(base.PlanningTask, "kept_for_soundness", property(lambda self: KeptObjects({}, {})))
     broken = [
         (world, seed)
         for world in sorted(WORLDS)

@@ -187,7 +187,7 @@ def prune_with_scores(
 
     def close(names: Set[str], already: Set[str] = frozenset()) -> tuple[frozenset[str], tuple[Restored, ...]]:
         # what a quantifier ranges over stays, so that a plan of the pruned problem is one of the original
-        missing = sorted(sound.keys() - set(names))
+        missing = sorted(sound.always.keys() - set(names))
         closed, found = close_over_constraints(
             set(names) | set(missing),
             rules,
@@ -196,7 +196,24 @@ def prune_with_scores(
             singleton_predicates=singletons,
             already=already,
         )
-        return closed, tuple(soundness_reason(name, sound[name]) for name in missing) + found
+        reasons = [soundness_reason(name, sound.always[name]) for name in missing]
+        added = closed - already  # ``already`` was closed by this function: its links were followed
+        while sound.linked:
+            linked = sound.admitted(closed, added)
+            if not linked:
+                break
+            reasons += (soundness_reason(name, requirement) for name, requirement in sorted(linked.items()))
+            grown, more = close_over_constraints(
+                closed | linked.keys(),
+                rules,
+                task.init_index,
+                candidates=task.problem.objects.keys(),
+                singleton_predicates=singletons,
+                already=closed,
+            )
+            found += more
+            added, closed = grown - closed, grown
+        return closed, tuple(reasons) + found
 
     kept, restored = close(selected)
     task.check_time("closing the selection over constraints")
@@ -253,7 +270,7 @@ def _spare_alternatives(task: PlanningTask, scores: ScoreResult, selected: froze
         for atom in task.init_index.by_predicate.get(predicate, ()):
             seen = [classes.get(arg) for arg in atom[1:]]
             linked.update(c for i, c in enumerate(seen) if c is not None and c in seen[i + 1 :])
-    keep = task.pinned_objects | task.kept_for_soundness.keys()
+    keep = task.pinned_objects | task.kept_for_soundness.always.keys()
     return frozenset(
         name for name in scores.alternatives & selected if name not in keep and classes.get(name) not in linked
     )

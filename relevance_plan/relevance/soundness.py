@@ -54,7 +54,8 @@ class KeptForSoundness:
     where: str  # "the goal", "action 'stop'", ...
     formula: str  # the quantifier, as text (shortened)
     guard: str | None = None  # a predicate whose facts name the objects that matter ...
-    guard_position: int = 0  # ... at this place among its arguments
+    guard_position: int = 0  # ... at this place among its arguments ...
+    linked: bool = False  # ... in a fact whose other objects are kept (the atom's other terms name kept objects)
 
 
 def soundness_requirements(domain: Domain, problem: Problem) -> tuple[KeptForSoundness, ...]:
@@ -91,80 +92,133 @@ def _effects_over_others(domain: Domain, never_gained: Callable[[str, int], bool
             if not others:
                 continue
             settling = [part for part in f.conjuncts(condition) if isinstance(part, f.Atom)]
-            guards = _guarding_atoms(settling, {variable for variable, _ in others}, never_gained)
+            bound = _bound_variables(condition) | {variable for variable, _ in quantified}
+            guards = _guarding_atoms(settling, {variable for variable, _ in others}, never_gained, bound)
             variables = " ".join(variable for variable, _ in others)
             text = _short(f"(forall ({variables}) ... {format_formula(effect)})")
             for variable, type_name in others:
-                guard, position = guards.get(variable, (None, 0))
-                found.setdefault(
-                    (type_name, guard, position, where), KeptForSoundness(type_name, where, text, guard, position)
-                )
+                item = KeptForSoundness(type_name, where, text, *guards.get(variable, (None, 0, False)))
+                found.setdefault((type_name, item.guard, item.guard_position, where), item)
     return tuple(found.values())
 
 
 def _requirements(
-    formulas: Iterable[tuple[str, f.Formula, str]], never_gained: Callable[[str, int], bool]
+    formulas: Iterable[tuple[str, f.Formula, str, f.Parameters]], never_gained: Callable[[str, int], bool]
 ) -> tuple[KeptForSoundness, ...]:
     found: dict[tuple[str, str | None, int, str], KeptForSoundness] = {}
-    for where, formula, mode in formulas:
+    for where, formula, mode, effect_variables in formulas:
+        bound = _bound_variables(formula) | {variable for variable, _ in effect_variables}
         for quantifier, _ in _risky(formula, mode):
-            guards = _guards(quantifier, never_gained)
+            guards = _guards(quantifier, never_gained, bound)
             text = _short(format_formula(quantifier))
             for variable, type_name in quantifier.parameters:
-                guard, position = guards.get(variable, (None, 0))
-                item = KeptForSoundness(type_name, where, text, guard, position)
-                found.setdefault((type_name, guard, position, where), item)
+                item = KeptForSoundness(type_name, where, text, *guards.get(variable, (None, 0, False)))
+                found.setdefault((type_name, item.guard, item.guard_position, where), item)
     return tuple(found.values())
 
 
-def objects_to_keep(
-    domain: Domain, problem: Problem, requirements: tuple[KeptForSoundness, ...]
-) -> dict[str, KeptForSoundness]:
-    """Object -> the requirement that keeps it (the first one that applies)."""
-    guards = {(r.guard, r.guard_position) for r in requirements if r.guard}
-    guarded: dict[tuple[str, int], set[str]] = {}
-    if guards:
+def _bound_variables(formula: f.Formula) -> frozenset[str]:
+    """Every variable a quantifier of ``formula`` binds: unlike an action's parameters, one that
+    may stand for a pruned object in the original."""
+    return frozenset(
+        variable
+        for node in f.walk(formula)
+        if isinstance(node, (f.Exists, f.Forall))
+        for variable, _ in node.parameters
+    )
+
+
+@dataclass(frozen=True)
+class KeptObjects:
+    """What the soundness rule keeps: ``always`` whatever else is kept; each of ``linked`` once
+    all the other objects of one of its guard's facts are kept (the receptacle holding a kept item)."""
+
+    always: Mapping[str, KeptForSoundness]
+    linked: Mapping[str, tuple[KeptForSoundness, tuple[frozenset[str], ...]]]  # -> (requirement, facts' others)
+
+    @functools.cached_property
+    def _by_partner(self) -> Mapping[str, tuple[tuple[str, KeptForSoundness, frozenset[str]], ...]]:
+        index: dict[str, list[tuple[str, KeptForSoundness, frozenset[str]]]] = {}
+        for name, (requirement, partner_sets) in self.linked.items():
+            for partners in partner_sets:
+                for partner in partners:
+                    index.setdefault(partner, []).append((name, requirement, partners))
+        return {partner: tuple(entries) for partner, entries in index.items()}
+
+    def admitted(self, kept: Set[str], added: Iterable[str]) -> dict[str, KeptForSoundness]:
+        """The linked objects outside ``kept`` that a fact naming one of ``added`` (a part of ``kept``:
+        what is new since the last look) links to kept objects only."""
+        found: dict[str, KeptForSoundness] = {}
+        for partner in added:
+            for name, requirement, partners in self._by_partner.get(partner, ()):
+                if name not in kept and name not in found and partners <= kept:
+                    found[name] = requirement
+        return found
+
+
+def objects_to_keep(domain: Domain, problem: Problem, requirements: tuple[KeptForSoundness, ...]) -> KeptObjects:
+    """Each object a requirement keeps, with the first requirement that applies."""
+    places: dict[str, set[int]] = {}
+    for requirement in requirements:
+        if requirement.guard:
+            places.setdefault(requirement.guard, set()).add(requirement.guard_position)
+    # (predicate, place) -> object named there -> the other objects of each such fact
+    named: dict[tuple[str, int], dict[str, set[frozenset[str]]]] = {}
+    if places:
+        objects = problem.objects
         timed = (item.atom for item in problem.timed_literals if item.atom is not None and not item.negated)
         for atom in itertools.chain(problem.init, timed):
-            for predicate, position in guards:
-                if atom[0] == predicate and len(atom) > position + 1:
-                    guarded.setdefault((predicate, position), set()).add(atom[position + 1])
-    kept: dict[str, KeptForSoundness] = {}
+            for position in places.get(atom[0], ()):
+                if len(atom) > position + 1:
+                    others = frozenset(a for i, a in enumerate(atom[1:]) if i != position and a in objects)
+                    named.setdefault((atom[0], position), {}).setdefault(atom[position + 1], set()).add(others)
+    always: dict[str, KeptForSoundness] = {}
+    linked: dict[str, tuple[KeptForSoundness, set[frozenset[str]]]] = {}
     for requirement in requirements:
-        admitted = None
-        if requirement.guard:
-            admitted = guarded.get((requirement.guard, requirement.guard_position), set())
+        facts = named.get((requirement.guard, requirement.guard_position), {}) if requirement.guard else None
         for name, type_name in problem.objects.items():
-            if name in kept or not domain.is_subtype(type_name, requirement.type_name):
+            if name in always or not domain.is_subtype(type_name, requirement.type_name):
                 continue
-            if admitted is None or name in admitted:
-                kept[name] = requirement
-    return kept
+            if facts is None:
+                always[name] = requirement
+                continue
+            partner_sets = facts.get(name)
+            if partner_sets is None:
+                continue  # never named there: the atom stays false of it
+            if not requirement.linked or frozenset() in partner_sets:
+                always[name] = requirement
+            else:
+                linked.setdefault(name, (requirement, set()))[1].update(partner_sets)
+    return KeptObjects(
+        always,
+        {name: (req, tuple(sorted(sets, key=sorted))) for name, (req, sets) in linked.items() if name not in always},
+    )
 
 
-def _problem_formulas(problem: Problem) -> Iterator[tuple[str, f.Formula, str]]:
-    """(where, formula, mode): mode "condition" checks universal polarity, "any" every quantifier."""
-    yield "the goal", problem.goal, "condition"
+def _problem_formulas(problem: Problem) -> Iterator[tuple[str, f.Formula, str, f.Parameters]]:
+    """(where, formula, mode, the variables of the quantified effect it conditions): mode
+    "condition" checks universal polarity, "any" every quantifier."""
+    yield "the goal", problem.goal, "condition", ()
     if problem.constraints is not None:
-        yield "the problem's constraints", problem.constraints, "any"
+        yield "the problem's constraints", problem.constraints, "any", ()
 
 
-def _domain_formulas(domain: Domain) -> Iterator[tuple[str, f.Formula, str]]:
+def _domain_formulas(domain: Domain) -> Iterator[tuple[str, f.Formula, str, f.Parameters]]:
     if domain.constraints is not None:
-        yield "the domain's constraints", domain.constraints, "any"
+        yield "the domain's constraints", domain.constraints, "any", ()
     for action in domain.actions:
         where = f"action '{action.name}'"
-        yield where, action.precondition, "condition"
+        yield where, action.precondition, "condition", ()
         if action.duration is not None:
-            yield where, action.duration, "condition"
+            yield where, action.duration, "condition", ()
         for item in f.effect_literals(action.effect):
             if item.condition != f.TRUE:
-                yield where, item.condition, "any"
-        for _, condition, _, _ in f.numeric_effects(action.effect):
+                yield where, item.condition, "any", item.quantified
+        for _, condition, quantified, _ in f.numeric_effects(action.effect):
             if condition != f.TRUE:
-                yield where, condition, "any"
+                yield where, condition, "any", quantified
     for rule in domain.derived:
-        yield f"derived predicate '{rule.head.predicate}'", rule.body, "any"
+        yield f"derived predicate '{rule.head.predicate}'", rule.body, "any", ()
 
 
 def _risky(formula: f.Formula, mode: str) -> Iterator[tuple[f.Exists | f.Forall, bool]]:
@@ -197,7 +251,9 @@ def _never_gained(domain: Domain) -> Callable[[str, int], bool]:
     )
 
 
-def _guards(quantifier: f.Exists | f.Forall, never_gained: Callable[[str, int], bool]) -> Mapping[str, tuple[str, int]]:
+def _guards(
+    quantifier: f.Exists | f.Forall, never_gained: Callable[[str, int], bool], bound: Set[str]
+) -> Mapping[str, tuple[str, int, bool]]:
     """Variable -> (predicate, place) of an atom on it whose falsity settles the body the way that
     makes the object not count (true for a universal, false for an existential)."""
     body = quantifier.body
@@ -212,17 +268,21 @@ def _guards(quantifier: f.Exists | f.Forall, never_gained: Callable[[str, int], 
         settling = [p.body for p in body.parts if isinstance(p, f.Not) and isinstance(p.body, f.Atom)]
     else:
         return {}
-    return _guarding_atoms(settling, {variable for variable, _ in quantifier.parameters}, never_gained)
+    return _guarding_atoms(settling, {variable for variable, _ in quantifier.parameters}, never_gained, bound)
 
 
 def _guarding_atoms(
-    settling: Iterable[f.Atom], variables: Set[str], never_gained: Callable[[str, int], bool]
-) -> Mapping[str, tuple[str, int]]:
-    guards: dict[str, tuple[str, int]] = {}
+    settling: Iterable[f.Atom], variables: Set[str], never_gained: Callable[[str, int], bool], bound: Set[str]
+) -> Mapping[str, tuple[str, int, bool]]:
+    """Variable -> (predicate, place, linked): ``linked`` when no other term of the atom is a
+    quantified variable, so in a plan of the pruned problem each names a kept object (an action's
+    parameter, a goal object) or a constant, and only facts whose other objects are kept can match."""
+    guards: dict[str, tuple[str, int, bool]] = {}
     for atom in settling:
         for position, term in enumerate(atom.args):
             if term in variables and never_gained(atom.predicate, position):
-                guards.setdefault(term, (atom.predicate, position))
+                others = atom.args[:position] + atom.args[position + 1 :]
+                guards.setdefault(term, (atom.predicate, position, not any(other in bound for other in others)))
     return guards
 
 

@@ -10,7 +10,7 @@ from relevance_plan.pddl.model import Domain, Problem, goal_objects, pinned_obje
 from relevance_plan.pddl.sexpr import check_deadline
 from relevance_plan.relevance.analysis import FactIndex, GoalAnalysis, analyse_goal, index_init, object_distances
 from relevance_plan.relevance.knowledge import KnowledgeModel
-from relevance_plan.relevance.soundness import KeptForSoundness, objects_to_keep, soundness_requirements
+from relevance_plan.relevance.soundness import KeptObjects, objects_to_keep, soundness_requirements
 from relevance_plan.relevance.types import InferredTypes, infer_types
 
 
@@ -63,7 +63,7 @@ class PlanningTask:
         return pinned_objects(self.problem, self.domain)
 
     @cached_property
-    def kept_for_soundness(self) -> Mapping[str, KeptForSoundness]:
+    def kept_for_soundness(self) -> KeptObjects:
         """Objects a quantifier ranges over where pruning them could change a verdict (``soundness``)."""
         return objects_to_keep(self.domain, self.problem, soundness_requirements(self.domain, self.problem))
 
