@@ -27,11 +27,13 @@ the variable is false (``(forall (?x - t) (imply (g ?x) φ))``, ``(or (not (g
 conjunct), and no effect makes that atom true of an object no action
 parameter names, an object never named at that place in the atom's initial
 or timed facts leaves the atom false in every state a plan of the pruned
-problem reaches; only the objects so named must stay.  That is how an
-untyped domain says "every passenger", ``(forall (?p) (imply (passenger ?p)
-(served ?p)))``, and how a scene graph says "in no receptacle", ``(forall (?r
-- receptacle) (not (inreceptacle ?o ?r)))``: only the receptacles holding
-something stay.
+problem reaches; only the objects so named must stay.  Where the atom's
+other terms are no quantified variable, they name kept objects there, so
+only a fact whose other objects are kept can match (``KeptObjects.linked``).
+That is how an untyped domain says "every passenger", ``(forall (?p) (imply
+(passenger ?p) (served ?p)))``, and how a scene graph says "in no
+receptacle", ``(forall (?r - receptacle) (not (inreceptacle ?o ?r)))``: only
+the receptacles holding a kept item stay.
 """
 
 from __future__ import annotations
