@@ -52,6 +52,7 @@ from installed import compiled_checkout, installed_tool  # noqa: E402
 from relevance_plan.errors import PDDLParseError, RelevancePlanError  # noqa: E402
 from relevance_plan.io import SuiteProblem, find_suite_problems, load_domain, load_problem  # noqa: E402
 from relevance_plan.pddl.model import Domain  # noqa: E402
+from relevance_plan.planning.features import NUMERIC_FLUENTS, domain_features  # noqa: E402
 
 DEFAULT_CORPUS = "/work/corpus"
 
@@ -87,12 +88,14 @@ def folders(roots: list[str]) -> list[Folder]:
 
 
 def track(domain: Domain) -> str:
+    """The competition track a domain belongs to; action costs, even from a cost function such as
+    ``(road-length ?a ?b)``, are classical planning since 2008."""
     requirements = domain.requirements
     if {":processes", ":events", ":time"} & requirements:
         return "pddl+"
     if domain.temporal or ":durative-actions" in requirements:
         return "temporal"
-    if domain.numeric or {":fluents", ":numeric-fluents"} & requirements:
+    if NUMERIC_FLUENTS in domain_features(domain) or {":fluents", ":numeric-fluents"} & requirements:
         return "numeric"
     if domain.constraints is not None or {":preferences", ":constraints"} & requirements:
         return "pddl3"

@@ -18,14 +18,17 @@ passengers) share one exploration through a placeholder and then advance
 together, one bit each (``_shared_class``); the answer and the kind of
 relaxed plan are those of the object-by-object exploration.
 
-The check over-approximates: negative, disjunctive and quantified conditions
-and effect conditions are ignored, and a universally quantified effect adds
+The check over-approximates: negative and quantified conditions and effect
+conditions are ignored, an action with a disjunctive condition becomes one
+schema per way through it (or ignores the disjunction where a way requires
+no atom), and a universally quantified effect adds
 its atom for every kept object of the type, so "unreachable" is sound.  It gives up (and says so)
 past a work budget, or a few seconds, rather than cost more than the planner would.
 """
 
 from __future__ import annotations
 
+import itertools
 import math
 import time
 import weakref
@@ -34,7 +37,7 @@ from collections.abc import Callable, Collection, Iterable, Iterator, Mapping, S
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
 
-from relevance_plan.pddl.formulas import Atom, Formula, GroundAtom, conjuncts, effect_literals
+from relevance_plan.pddl.formulas import Atom, Formula, GroundAtom, Or, conjuncts, effect_literals
 from relevance_plan.pddl.model import Domain
 from relevance_plan.relevance.analysis import ObjectGraph, fan_in, graph_distances
 from relevance_plan.relevance.closure import Restored
@@ -44,6 +47,7 @@ if TYPE_CHECKING:  # the scorers' package imports this module's users
     from relevance_plan.relevance.scorers.base import PlanningTask
 
 DEFAULT_BUDGET = 400_000  # bindings tried before the check gives up
+DISJUNCTIVE_WAYS = 16  # ways through an action's disjunctive conditions the check splits it into
 BUDGET_PER_OBJECT = 5_000  # the budget grows with the problem, as the planner's own grounding does
 REPAIR_SECONDS = 5.0  # and the repair's checks together stop after this long
 REPAIR_MAX_FAN = 4.0  # repair candidates are ranked by hops that do not pass from a class-like value to its members
@@ -75,6 +79,26 @@ def _required_atoms(formula: Formula) -> Iterator[Condition]:
             yield part.predicate, part.args
 
 
+def _ways_through(formula: Formula) -> list[tuple[Condition, ...]]:
+    """The positive atoms that must hold, one tuple per way through the top-level disjunctions
+    (``(or (connected ?a ?b) (connected ?b ?a))``), as the translator splits an action; a disjunction
+    with a branch that requires no atom, or one past ``DISJUNCTIVE_WAYS``, is ignored, like every
+    other condition that is not a top-level atom: a relaxation."""
+    base: list[Condition] = []
+    choices: list[list[tuple[Condition, ...]]] = []
+    for part in conjuncts(formula):
+        if isinstance(part, Atom):
+            base.append((part.predicate, part.args))
+        elif isinstance(part, Or):
+            branches = [
+                tuple((atom.predicate, atom.args) for atom in conjuncts(branch) if isinstance(atom, Atom))
+                for branch in part.parts
+            ]
+            if all(branches) and math.prod(map(len, choices)) * len(branches) <= DISJUNCTIVE_WAYS:
+                choices.append(branches)
+    return [tuple(base) + tuple(itertools.chain.from_iterable(way)) for way in itertools.product(*choices)]
+
+
 @dataclass(frozen=True)
 class _Schema:
     name: str
@@ -94,7 +118,6 @@ def _schemas(domain: Domain) -> list[_Schema]:
     """The relaxed actions (derived rules included) as join schemas; effect conditions are ignored."""
     result = []
     for action in domain.relaxed_actions:
-        pre = tuple(_required_atoms(action.precondition))
         add = tuple(
             (item.atom.predicate, item.atom.args, tuple((v, t) for v, t in item.quantified if v in item.atom.args))
             for item in effect_literals(action.effect)
@@ -102,14 +125,15 @@ def _schemas(domain: Domain) -> list[_Schema]:
         )
         variables = tuple(v for v, _ in action.parameters)
         ranged = frozenset(t for _, _, quantified in add for _, t in quantified)
-        named = {a for _, args in pre for a in args}
-        bound = not ranged and all(v in named for v in variables)
         in_effects = frozenset(a for _, args, _ in add for a in args if a in variables)
         types = tuple(t for _, t in action.parameters)
-        saturable = bound and all(
-            len(set(args)) == len(args) and all(a in variables for a in args) for _, args, _ in add
-        )
-        result.append(_Schema(action.name, variables, types, pre, add, ranged, bound, in_effects, saturable))
+        for pre in _ways_through(action.precondition):
+            named = {a for _, args in pre for a in args}
+            bound = not ranged and all(v in named for v in variables)
+            saturable = bound and all(
+                len(set(args)) == len(args) and all(a in variables for a in args) for _, args, _ in add
+            )
+            result.append(_Schema(action.name, variables, types, pre, add, ranged, bound, in_effects, saturable))
     return result
 
 
