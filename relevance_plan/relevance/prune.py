@@ -185,17 +185,14 @@ def prune_with_scores(
 
     sound = task.kept_for_soundness
 
+    def over_constraints(names: Set[str], already: Set[str]) -> tuple[frozenset[str], tuple[Restored, ...]]:
+        candidates = task.problem.objects.keys()
+        return close_over_constraints(names, rules, task.init_index, candidates, singletons, already)
+
     def close(names: Set[str], already: Set[str] = frozenset()) -> tuple[frozenset[str], tuple[Restored, ...]]:
         # what a quantifier ranges over stays, so that a plan of the pruned problem is one of the original
         missing = sorted(sound.always.keys() - set(names))
-        closed, found = close_over_constraints(
-            set(names) | set(missing),
-            rules,
-            task.init_index,
-            candidates=task.problem.objects.keys(),
-            singleton_predicates=singletons,
-            already=already,
-        )
+        closed, found = over_constraints(set(names) | set(missing), already)
         reasons = [soundness_reason(name, sound.always[name]) for name in missing]
         added = closed - already  # ``already`` was closed by this function: its links were followed
         while sound.linked:
@@ -203,14 +200,7 @@ def prune_with_scores(
             if not linked:
                 break
             reasons += (soundness_reason(name, requirement) for name, requirement in sorted(linked.items()))
-            grown, more = close_over_constraints(
-                closed | linked.keys(),
-                rules,
-                task.init_index,
-                candidates=task.problem.objects.keys(),
-                singleton_predicates=singletons,
-                already=closed,
-            )
+            grown, more = over_constraints(closed | linked.keys(), closed)
             found += more
             added, closed = grown - closed, grown
         return closed, tuple(reasons) + found
