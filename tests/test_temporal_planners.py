@@ -385,6 +385,36 @@ def test_simultaneous_happenings_follow_pddl21_mutex(tmp_path):
     assert not clash.valid and "interfere" in clash.message
 
 
+CHARGE_DOMAIN = """
+(define (domain charge) (:requirements :typing :durative-actions :numeric-fluents)
+  (:types bot)
+  (:predicates (ran ?b - bot) (full ?b - bot))
+  (:functions (energy ?b - bot))
+  (:durative-action run :parameters (?b - bot) :duration (= ?duration 1)
+    :condition (at start (>= (energy ?b) 5)) :effect (and (at end (decrease (energy ?b) 5)) (at end (ran ?b))))
+  (:durative-action charge :parameters (?b - bot) :duration (= ?duration (/ (- 10 (energy ?b)) 2))
+    :condition (at start (< (energy ?b) 10)) :effect (and (at end (assign (energy ?b) 10)) (at end (full ?b)))))
+"""
+CHARGE_PROBLEM = """
+(define (problem charge-1) (:domain charge) (:objects b - bot)
+  (:init (= (energy b) 8)) (:goal (and (ran b) (full b))))
+"""
+
+
+def test_a_given_duration_is_checked_in_the_values_the_step_starts_with(tmp_path):
+    """A recharge lasts as long as the energy when it starts says (as in the IPC's rovers with
+    time), not the initial energy: energy 8, a run takes 5, so the charge after it lasts 3.5."""
+    (tmp_path / "d.pddl").write_text(CHARGE_DOMAIN)
+    (tmp_path / "p.pddl").write_text(CHARGE_PROBLEM)
+    domain, problem = load_task(tmp_path / "d.pddl", tmp_path / "p.pddl")
+    right = validate_builtin(domain, problem, read_plan("0.0: (run b) [1]\n1.01: (charge b) [3.5]\n"))
+    assert right.valid, right.message
+    initial = validate_builtin(domain, problem, read_plan("0.0: (run b) [1]\n1.01: (charge b) [1]\n"))
+    assert not initial.valid and "duration 1 violates its constraint" in initial.message
+    before = validate_builtin(domain, problem, read_plan("0.0: (charge b) [1]\n1.01: (run b) [1]\n"))
+    assert before.valid, before.message  # charged first, from 8: one time unit
+
+
 @pytest.mark.planner
 def test_broken_timed_plans_are_invalid_for_both_validators(haul_files):
     domain, problem = load_task(*haul_files)

@@ -472,6 +472,7 @@ class _Happening:
     action: Action | None = None
     binding: Mapping[str, str] | None = None
     literal: TimedLiteral | None = None
+    duration: float | None = None  # a start whose given duration is checked in the state it starts in
 
 
 def _run_timed(simulator: Simulator, steps: Sequence[PlanStep]) -> tuple[State, float]:
@@ -507,7 +508,8 @@ def _happenings(simulator: Simulator, steps: Sequence[PlanStep], state: State) -
         duration = _duration(simulator, action, step, binding, state, number)
         timed = dict(binding)
         timed["?duration"] = repr(duration)
-        happenings.append(_Happening(start, len(happenings), "start", number, step, action, timed))
+        given = duration if step.duration is not None else None
+        happenings.append(_Happening(start, len(happenings), "start", number, step, action, timed, duration=given))
         happenings.append(_Happening(start + duration, len(happenings), "end", number, step, action, timed))
     for literal in simulator.problem.timed_literals:
         happenings.append(_Happening(literal.time, len(happenings), "til", 0, literal=literal))
@@ -517,8 +519,11 @@ def _happenings(simulator: Simulator, steps: Sequence[PlanStep], state: State) -
 def _duration(
     simulator: Simulator, action: Action, step: PlanStep, binding: Mapping[str, str], state: State, number: int
 ) -> float:
-    """The step's duration, checked against the action's constraint (evaluated in the initial
-    state's values for its fluents: durations in the IPC domains depend on static functions)."""
+    """The step's duration.  One the plan gives is checked against the action's constraint when the
+    step starts, in the values its fluents have then (a rover's recharge lasts as long as its
+    energy at that time says); one it leaves out is taken from the constraint in the initial
+    values, before the plan runs, since the end must be placed in time (durations in the IPC
+    domains that omit them depend on static functions)."""
     assert action.duration is not None
     duration = step.duration
     if duration is None:
@@ -527,12 +532,25 @@ def _duration(
             raise StepFailure(f"step {number} {step}: no duration given", number)
         other = exact[0].right if exact[0].left == f.NumericVariable("?duration") else exact[0].left
         duration = simulator.value(other, state, binding)
+        _check_duration(simulator, action, step, binding, state, number, duration)
     if duration <= 0:
         raise StepFailure(f"step {number} {step}: duration {duration:g} is not positive", number)
+    return duration
+
+
+def _check_duration(
+    simulator: Simulator,
+    action: Action,
+    step: PlanStep | None,
+    binding: Mapping[str, str],
+    state: State,
+    number: int,
+    duration: float,
+) -> None:
+    assert action.duration is not None
     for part in f.conjuncts(action.duration):
         if isinstance(part, f.Comparison) and not _duration_fits(simulator, part, duration, state, binding):
             raise StepFailure(f"step {number} {step}: duration {duration:g} violates its constraint", number)
-    return duration
 
 
 def _duration_fits(
@@ -583,6 +601,8 @@ def _happening_effects(
         return effects, set()
     action, binding, number = happening.action, happening.binding, happening.number
     assert action is not None and binding is not None
+    if happening.duration is not None:
+        _check_duration(simulator, action, happening.step, binding, state, number, happening.duration)
     when = None if happening.kind == "instant" else happening.kind
     condition = action.precondition if when is None else _at(action.precondition, when)
     try:
