@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+import dataclasses
 import stat
 import sys
 import textwrap
 import time
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import pytest
@@ -16,10 +18,12 @@ from support import running
 from relevance_plan.cli import main
 from relevance_plan.errors import PlannerError, UnsupportedFeatureError, UsageError
 from relevance_plan.exitcodes import ExitCode
-from relevance_plan.planning import up_engines
+from relevance_plan.pddl.plans import Plan
+from relevance_plan.planning import auto, up_engines
+from relevance_plan.planning.auto import FallbackPlanner
 from relevance_plan.planning.command import CommandPlanner
 from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task
-from relevance_plan.planning.outcome import PlannerStatus, parse_ipc_plan
+from relevance_plan.planning.outcome import PlannerStatus, RunOutcome, parse_ipc_plan
 from relevance_plan.planning.planners import make_planner, split_planner_names
 
 
@@ -433,3 +437,55 @@ def test_compare_with_two_planners_resumes_and_reports_per_planner(tmp_path):
     assert "coffee-simple [fast-downward]" in report.output and "coffee-simple [up:lpg]" in report.output
     bad = runner.invoke(main, ["compare", str(suite), "--planners", "fast-downward,nope", "--store", str(store)])
     assert bad.exit_code == ExitCode.USAGE and "unknown planner 'nope'" in bad.output
+
+
+@dataclass(frozen=True)
+class _Scripted:
+    """A planner that ends as told, after ``seconds``, and records the time limit it was given."""
+
+    name: str
+    status: PlannerStatus
+    seconds: float = 0.0
+    limits: list = field(default_factory=list)
+    features: frozenset | None = None
+
+    def check_installed(self) -> None: ...
+
+    def check(self, domain, problem) -> None: ...
+
+    def version(self) -> str:
+        return self.name
+
+    def run(self, domain_path, problem_path, *, time_limit, memory_limit_mb) -> RunOutcome:
+        self.limits.append(time_limit)
+        time.sleep(self.seconds)
+        return RunOutcome(self.status, 0, Plan(()), None, self.seconds, self.name, reason=f"{self.name} said so")
+
+
+def test_auto_runs_the_next_planner_when_the_first_gives_up_without_an_answer():
+    crashing, solving = _Scripted("lpg", PlannerStatus.PLANNER_CRASH, 0.2), _Scripted("up:aries", PlannerStatus.SOLVED)
+    outcome = FallbackPlanner(crashing, (solving,)).run("d", "p", time_limit=10.0, memory_limit_mb=None)
+    assert outcome.status is PlannerStatus.SOLVED and outcome.planner == "up:aries"
+    assert "lpg gave up (lpg said so)" in outcome.reason
+    assert 9.0 < solving.limits[0] < 9.9  # the time the first one left
+    # a proof, or too little time left, ends it: the next planner never starts
+    proof = _Scripted("lpg", PlannerStatus.UNSOLVABLE)
+    late = _Scripted("lpg", PlannerStatus.SEARCH_INCOMPLETE, 0.2)
+    for first, limit in ((proof, 10.0), (late, 1.1)):
+        unused = _Scripted("up:aries", PlannerStatus.SOLVED)
+        outcome = FallbackPlanner(first, (unused,)).run("d", "p", time_limit=limit, memory_limit_mb=None)
+        assert outcome.status is first.status and not unused.limits
+
+
+def test_auto_chains_the_installed_planners_of_a_family_and_one_alone_runs_as_itself(monkeypatch):
+    uses = frozenset({"strips", "durative-actions"})
+    lpg, aries = (dataclasses.replace(c, installed=lambda: True) for c in (auto.LPG, auto.ARIES))
+    monkeypatch.setattr(auto, "TEMPORAL_ORDER", (lpg, aries))
+    monkeypatch.setattr(auto, "EVERY", (auto.FAST_DOWNWARD, lpg, aries))
+    choice = auto.choose(uses, "lama-first")
+    assert isinstance(choice.planner, FallbackPlanner) and choice.planner.name == "lpg"
+    assert [p.name for p in choice.planner.then] == ["up:aries"] and "then up:aries" in choice.reason
+    alone = dataclasses.replace(aries, installed=lambda: False)
+    monkeypatch.setattr(auto, "TEMPORAL_ORDER", (lpg, alone))
+    monkeypatch.setattr(auto, "EVERY", (auto.FAST_DOWNWARD, lpg, alone))
+    assert not isinstance(auto.choose(uses, "lama-first").planner, FallbackPlanner)

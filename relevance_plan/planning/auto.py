@@ -13,12 +13,18 @@ order of planners; the first one installed that takes every feature runs:
 
 When none installed takes the problem, the refusal is one line naming what
 to install.  Whether a planner is installed is decided without importing
-it (unified-planning takes seconds to import).
+it (unified-planning takes seconds to import).  When the first gives up
+without an answer (it crashed, its search ended incomplete, it could not
+read the problem), the next installed one that takes the problem runs in
+the time left (``FallbackPlanner``): LPG crashes on some IPC temporal
+domains that Aries and Tamer solve.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import importlib.util
+import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
@@ -31,7 +37,7 @@ from relevance_plan.planning.fast_downward import DEFAULT_CONFIG, FastDownwardPl
 from relevance_plan.planning.lpg import FEATURES as LPG_FEATURES
 from relevance_plan.planning.lpg import INSTALL_HINT as LPG_HINT
 from relevance_plan.planning.lpg import LpgPlanner, lpg_binary
-from relevance_plan.planning.outcome import RunOutcome
+from relevance_plan.planning.outcome import PlannerStatus, RunOutcome
 from relevance_plan.planning.up_engines import (
     ENGINE_FEATURES,
     FITTED_ONLY,
@@ -114,9 +120,15 @@ def choose(uses: frozenset[str], config: str, where: str | None = None) -> Choic
     fitting = list(dict.fromkeys(c for c in (*order, *EVERY) if uses <= c.takes))
     shown = ", ".join(sorted(uses - {f.STRIPS, f.TYPING})) or "strips"
     beyond = ", ".join(sorted(uses - f.CLASSICAL))
-    for candidate in fitting:
-        if candidate.installed():
-            return Choice(candidate.make(config), f"a {kind} problem" + (f" ({beyond})" if beyond else ""))
+    installed = [candidate for candidate in fitting if candidate.installed()]
+    if installed:
+        reason = f"a {kind} problem" + (f" ({beyond})" if beyond else "")
+        # the family's other planners stand by (Fast Downward alone is the classical family's)
+        then = tuple(c.make(config) for c in installed[1:] if c in order) if kind in FALLBACK_FAMILIES else ()
+        if not then:
+            return Choice(installed[0].make(config), reason)
+        first = installed[0].make(config)
+        return Choice(FallbackPlanner(first, then), f"{reason}; then {', '.join(p.name for p in then)}")
     if fitting:
         raise UnsupportedFeatureError(
             f"no installed planner takes what this problem uses ({shown}): {fitting[0].install()}", path=where
@@ -145,6 +157,54 @@ def choose_unread(refused: UnsupportedFeatureError, config: str) -> Choice:
         path=refused.path,
         line=refused.line,
     )
+
+
+# A run that ended without an answer another planner might give (not a proof, not the time running out).
+GAVE_UP = frozenset({PlannerStatus.PLANNER_CRASH, PlannerStatus.SEARCH_INCOMPLETE, PlannerStatus.INPUT_ERROR})
+FALLBACK_FROM = 1.0  # seconds left below which the next planner is not started
+FALLBACK_FAMILIES = ("temporal", "numeric")
+
+
+@dataclass(frozen=True)
+class FallbackPlanner:
+    """``first``; when it gives up without an answer, each of ``then`` in turn, in the time left.
+    It is ``first`` to the user (name, features, check): the others take what it takes."""
+
+    first: Planner
+    then: tuple[Planner, ...]
+
+    @property
+    def name(self) -> str:
+        return self.first.name
+
+    @property
+    def features(self) -> frozenset[str] | None:
+        return self.first.features
+
+    def check_installed(self) -> None:
+        self.first.check_installed()
+
+    def check(self, domain: Domain, problem: Problem) -> None:
+        self.first.check(domain, problem)
+
+    def version(self) -> str:
+        return self.first.version()
+
+    def run(self, domain_path, problem_path, *, time_limit, memory_limit_mb) -> RunOutcome:
+        started = time.monotonic()
+        outcome = self.first.run(domain_path, problem_path, time_limit=time_limit, memory_limit_mb=memory_limit_mb)
+        for planner in self.then:
+            left = None if time_limit is None else time_limit - (time.monotonic() - started)
+            if outcome.status not in GAVE_UP or (left is not None and left < FALLBACK_FROM):
+                break
+            earlier = outcome
+            outcome = planner.run(domain_path, problem_path, time_limit=left, memory_limit_mb=memory_limit_mb)
+            outcome = dataclasses.replace(
+                outcome,
+                wall_time=earlier.wall_time + outcome.wall_time,
+                reason=f"{earlier.planner} gave up ({earlier.reason}); {outcome.planner}: {outcome.reason}",
+            )
+        return outcome
 
 
 @dataclass(frozen=True)

@@ -33,6 +33,7 @@ from relevance_plan.pddl.compile import COMPILATIONS, Compilation
 from relevance_plan.pddl.formatter import format_domain, format_problem
 from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.plans import Plan
+from relevance_plan.planning.auto import FallbackPlanner
 from relevance_plan.planning.features import (
     CONDITIONAL_EFFECTS,
     DISJUNCTIVE_PRECONDITIONS,
@@ -236,6 +237,8 @@ def prepare_planner(
     otherwise the planner's own ``check`` refuses the problem as it is.
     ``say`` hears which compilations will run.
     """
+    if isinstance(planner, FallbackPlanner) and (planner_args or keep_work is not None):
+        planner = planner.first  # options for one planner's own command line: it runs alone
     planner = with_planner_args(planner, planner_args)
     keep = None
     if keep_work is not None:

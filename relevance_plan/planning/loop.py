@@ -43,6 +43,7 @@ from relevance_plan.pddl.model import Problem
 from relevance_plan.pddl.plans import Plan, format_plan
 from relevance_plan.pddl.sexpr import collection_paused
 from relevance_plan.planning import head_start
+from relevance_plan.planning.auto import FallbackPlanner
 from relevance_plan.planning.compile import PreparedPlanner, prepare_planner, with_planner_args
 from relevance_plan.planning.outcome import PlannerStatus, RunOutcome
 from relevance_plan.planning.planners import (
@@ -435,6 +436,12 @@ def run_attempts(
     return attempts, widening_time
 
 
+def _answering(prepared: PreparedPlanner, attempts: Sequence[Attempt]) -> str:
+    """The planner that gave the last answer: auto's next one when its first gave up."""
+    last = attempts[-1].outcome.planner if attempts else ""
+    return last if isinstance(prepared.planner, FallbackPlanner) and last else prepared.name
+
+
 def _race_decides(attempt: Attempt) -> bool:
     """A full-problem attempt ends the run: a valid plan, or proof that the problem has none."""
     return attempt.status in (AttemptStatus.SOLVED, AttemptStatus.UNSOLVABLE)
@@ -620,7 +627,7 @@ def _prune_and_plan(
         started,
         relevance_time + widening_time,
         selection,
-        planner=prepared.name,
+        planner=_answering(prepared, attempts),
         scorer=scoring.scorer if scoring else None,
         unpruned_reason=unpruned,
         planner_choice=choice,
