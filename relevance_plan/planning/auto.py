@@ -124,10 +124,10 @@ def choose(uses: frozenset[str], config: str, where: str | None = None) -> Choic
     if installed:
         reason = f"a {kind} problem" + (f" ({beyond})" if beyond else "")
         # the family's other planners stand by (Fast Downward alone is the classical family's)
+        first = installed[0].make(config)
         then = tuple(c.make(config) for c in installed[1:] if c in order) if kind in FALLBACK_FAMILIES else ()
         if not then:
-            return Choice(installed[0].make(config), reason)
-        first = installed[0].make(config)
+            return Choice(first, reason)
         return Choice(FallbackPlanner(first, then), f"{reason}; then {', '.join(p.name for p in then)}")
     if fitting:
         raise UnsupportedFeatureError(
