@@ -52,7 +52,7 @@ from installed import compiled_checkout, installed_tool  # noqa: E402
 from relevance_plan.errors import PDDLParseError, RelevancePlanError  # noqa: E402
 from relevance_plan.io import SuiteProblem, find_suite_problems, load_domain, load_problem  # noqa: E402
 from relevance_plan.pddl.model import Domain  # noqa: E402
-from relevance_plan.planning.features import NUMERIC_FLUENTS, domain_features  # noqa: E402
+from relevance_plan.planning.planners.features import NUMERIC_FLUENTS, domain_features  # noqa: E402
 
 DEFAULT_CORPUS = "/work/corpus"
 
@@ -172,7 +172,7 @@ def timed(command: list[str], timeout: float) -> tuple[int, float]:
 
 
 def speed(roots: list[str], per_folder: int, timeout: float, in_process: bool, installed: bool, repeat: int) -> int:
-    from relevance_plan.planning.fast_downward import find_fast_downward
+    from relevance_plan.planning.planners.fast_downward.adapter import find_fast_downward
 
     driver = str(find_fast_downward())
     rows = []

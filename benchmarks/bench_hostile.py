@@ -54,7 +54,7 @@ REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))
 
 from relevance_plan.exitcodes import ExitCode  # noqa: E402
-from relevance_plan.planning.guard import reap_children  # noqa: E402
+from relevance_plan.supervision.guard import reap_children  # noqa: E402
 
 TOOL = [sys.executable, "-m", "relevance_plan"]
 DOCUMENTED = {int(code) for code in ExitCode} | {141}

@@ -31,7 +31,7 @@ sys.path.insert(0, str(REPO))
 
 from relevance_plan.generators.generate import generate_suite  # noqa: E402
 from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task  # noqa: E402
-from relevance_plan.planning.planners import make_planner, split_planner_names  # noqa: E402
+from relevance_plan.planning.planners.registry import make_planner, split_planner_names  # noqa: E402
 
 
 def problems(scratch: Path) -> list[tuple[str, Path, Path]]:

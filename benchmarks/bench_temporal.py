@@ -61,7 +61,7 @@ def planner_available(name: str) -> str | None:
     if name == "up:enhsp" and shutil.which("java") is None:
         return "no Java runtime"
     try:
-        from relevance_plan.planning.planners import make_planner
+        from relevance_plan.planning.planners.registry import make_planner
 
         make_planner(name, check=True)
     except Exception as error:  # a missing engine: the row says why

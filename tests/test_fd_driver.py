@@ -9,8 +9,10 @@ import pytest
 from support import write_file
 from test_runner import GRIPPER_DOMAIN, gripper_problem
 
-from relevance_plan.planning import fast_downward, fd_command, process
-from relevance_plan.planning.outcome import PlannerStatus
+from relevance_plan.planning.planners.base import PlannerStatus
+from relevance_plan.planning.planners.fast_downward import adapter as fast_downward
+from relevance_plan.planning.planners.fast_downward import command as fd_command
+from relevance_plan.supervision import process
 
 LEAN_MARK = "translate command line: "  # the lean driver's own line; the driver logs "INFO     Running translator."
 DRIVER_MARK = "INFO     Running translator."

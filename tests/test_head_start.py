@@ -11,8 +11,8 @@ import time
 import pytest
 from support import DOMAINS, REPO, TOOL, write_file
 
-from relevance_plan.planning import head_start
 from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task
+from relevance_plan.planning.planners.fast_downward import head_start
 
 GRIPPER = DOMAINS / "gripper" / "domain.pddl"
 GRIPPER_PROBLEM = """(define (problem two-balls) (:domain gripper)
@@ -131,7 +131,7 @@ def test_a_head_start_that_does_not_match_is_stopped(gripper_problem):
 
 def _running_in_group(pgid: int) -> list[int]:
     """Processes of the group still running (an exited one may wait a moment to be reaped by init)."""
-    from relevance_plan.planning.guard import process_stats
+    from relevance_plan.supervision.guard import process_stats
 
     deadline = time.monotonic() + 3
     while True:

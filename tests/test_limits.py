@@ -70,8 +70,8 @@ def test_memory_running_out_again_on_the_way_out_is_still_one_line(monkeypatch, 
 
 
 def test_the_loaders_messages_are_out_of_memory():
-    from relevance_plan.planning.fast_downward import classify as _classify
-    from relevance_plan.planning.outcome import PlannerStatus
+    from relevance_plan.planning.planners.base import PlannerStatus
+    from relevance_plan.planning.planners.fast_downward.adapter import classify as _classify
 
     log = "error while loading shared libraries: libc.so.6: failed to map segment from shared object"
     assert _classify(127, False, False, log, 0.0, 10.0, memory_limited=True) is PlannerStatus.OUT_OF_MEMORY
@@ -243,7 +243,7 @@ def test_a_deadline_passing_inside_a_step_ends_the_run_as_out_of_time(monkeypatc
 
 
 def test_a_short_run_gets_a_short_grace():
-    from relevance_plan.planning.process import DEFAULT_WATCHDOG_GRACE, watchdog_deadline
+    from relevance_plan.supervision.process import DEFAULT_WATCHDOG_GRACE, watchdog_deadline
 
     assert watchdog_deadline(None) is None
     assert watchdog_deadline(0.3) == pytest.approx(0.375)  # the last 0.3 s of a --timeout: done by 0.375 s

@@ -19,12 +19,13 @@ from relevance_plan.cli import main
 from relevance_plan.errors import PlannerError, UnsupportedFeatureError, UsageError
 from relevance_plan.exitcodes import ExitCode
 from relevance_plan.pddl.plans import Plan
-from relevance_plan.planning import auto, up_engines
-from relevance_plan.planning.auto import FallbackPlanner
-from relevance_plan.planning.command import CommandPlanner
 from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task
-from relevance_plan.planning.outcome import PlannerStatus, RunOutcome, parse_ipc_plan
-from relevance_plan.planning.planners import make_planner, split_planner_names
+from relevance_plan.planning.planners import auto
+from relevance_plan.planning.planners.auto import FallbackPlanner
+from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome, parse_ipc_plan
+from relevance_plan.planning.planners.command import CommandPlanner
+from relevance_plan.planning.planners.registry import make_planner, split_planner_names
+from relevance_plan.planning.planners.up import adapter as up_engines
 
 
 @pytest.fixture
@@ -53,7 +54,7 @@ def script(tmp_path: Path, name: str, body: str) -> str:
 # A planner that asks Fast Downward and prints its plan on stdout: a real plan from a foreign binary.
 FD_ON_STDOUT = """
     import subprocess, sys, tempfile, os
-    from relevance_plan.planning.fast_downward import run_fast_downward
+    from relevance_plan.planning.planners.fast_downward.adapter import run_fast_downward
     outcome = run_fast_downward(sys.argv[1], sys.argv[2], time_limit=60)
     for step in outcome.plan:
         print(step)
@@ -63,7 +64,7 @@ FD_ON_STDOUT = """
 
 FD_TO_FILE = """
     import sys
-    from relevance_plan.planning.fast_downward import run_fast_downward
+    from relevance_plan.planning.planners.fast_downward.adapter import run_fast_downward
     outcome = run_fast_downward(sys.argv[1], sys.argv[2], time_limit=60)
     with open(sys.argv[3], "w") as out:
         out.write("; found by a planner writing to its plan file\\n")
@@ -205,7 +206,7 @@ FEATURE_CASES = [
 
 @pytest.mark.parametrize("body, expected", FEATURE_CASES)
 def test_problem_features_come_from_what_the_files_use(tmp_path, body, expected):
-    from relevance_plan.planning.features import problem_features
+    from relevance_plan.planning.planners.features import problem_features
 
     types = "(:types t)" if " - t" in body else ""
     domain_text = (
@@ -217,7 +218,7 @@ def test_problem_features_come_from_what_the_files_use(tmp_path, body, expected)
 
 
 def test_problem_features_of_durative_and_timed_problems(tmp_path):
-    from relevance_plan.planning.features import problem_features
+    from relevance_plan.planning.planners.features import problem_features
 
     timed = DURATIVE_PROBLEM.replace("(:init (ready a))", "(:init (at 5 (ready a)))")
     domain, problem = _task(tmp_path, DURATIVE_DOMAIN.replace(":typing", ":typing :timed-initial-literals"), timed)
@@ -257,8 +258,8 @@ def test_the_unified_planning_child_is_classified_by_its_verdict():
 
 def test_an_external_command_is_classified_by_its_exit_and_output():
     from relevance_plan.pddl.plans import Plan, PlanStep
-    from relevance_plan.planning.command import classify, exit_reason
-    from relevance_plan.planning.process import ProcessRun
+    from relevance_plan.planning.planners.command import classify, exit_reason
+    from relevance_plan.supervision.process import ProcessRun
 
     def run(code, fired=False):
         return ProcessRun(0, code, 0.0, 0.0, fired, 1.0, 1)

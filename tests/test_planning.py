@@ -169,7 +169,7 @@ def test_bad_planner_configuration_is_a_usage_error_before_planning(coffee_files
 
 def test_a_planner_that_cannot_start_is_a_clear_error(coffee_files, monkeypatch, tmp_path):
     from relevance_plan.errors import PlannerError
-    from relevance_plan.planning import fast_downward
+    from relevance_plan.planning.planners.fast_downward import adapter as fast_downward
 
     monkeypatch.setenv("RELEVANCE_PLAN_FAST_DOWNWARD", str(tmp_path / "absent" / "fast-downward.py"))
     fast_downward.find_fast_downward.cache_clear() if hasattr(fast_downward.find_fast_downward, "cache_clear") else None
@@ -211,7 +211,7 @@ def _spelling(value: str) -> str:
 def test_every_status_enum_spells_its_values_one_way():
     from relevance_plan.exitcodes import PLAN_STATUS_EXIT
     from relevance_plan.planning.loop import AttemptStatus
-    from relevance_plan.planning.outcome import PlannerStatus
+    from relevance_plan.planning.planners.base import PlannerStatus
     from relevance_plan.planning.validate import ValidationStatus
 
     values = [status.value for enum in (PlanStatus, AttemptStatus, PlannerStatus, ValidationStatus) for status in enum]
@@ -228,7 +228,7 @@ def test_plan_json_spells_every_status_one_way(tmp_path, coffee_domain_path):
     from support import invoke
 
     from relevance_plan.planning.loop import AttemptStatus
-    from relevance_plan.planning.outcome import PlannerStatus
+    from relevance_plan.planning.planners.base import PlannerStatus
     from relevance_plan.planning.validate import ValidationStatus
 
     coffee = tmp_path / "coffee.pddl"
@@ -271,7 +271,7 @@ def test_plan_json_spells_every_status_one_way(tmp_path, coffee_domain_path):
 def test_a_failed_first_attempt_costs_no_more_than_its_share(coffee_files):
     # every pruned attempt fails: each may use only its share of the time left, the full problem the rest
     from relevance_plan.planning.loop import run_attempts
-    from relevance_plan.planning.outcome import PlannerStatus, RunOutcome
+    from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome
     from relevance_plan.relevance.scorers import PlanningTask
     from relevance_plan.relevance.setup import ScoringOptions, score_problem
 

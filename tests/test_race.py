@@ -10,13 +10,13 @@ from support import process_gone
 from test_planners import script
 
 from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task
-from relevance_plan.planning.process import CancelScope, cancel_scope
 from relevance_plan.planning.race import Race, race_by_default, usable_cores
+from relevance_plan.supervision.process import CancelScope, cancel_scope
 
 # A planner that hangs (after noting its pid) on one kind of input and asks Fast Downward on the other.
 SPLIT_PLANNER = """
     import os, sys, time
-    from relevance_plan.planning.fast_downward import run_fast_downward
+    from relevance_plan.planning.planners.fast_downward.adapter import run_fast_downward
     pruned = os.path.basename(sys.argv[2]).startswith("pruned-")
     if pruned == {hang_on_pruned}:
         with open({marker!r}, "a") as out:
@@ -78,7 +78,7 @@ def test_without_a_race_the_json_says_so_and_with_one_it_names_the_winner(coffee
 
 
 def test_a_cancelled_scope_stops_runs_started_later_at_once(tmp_path):
-    from relevance_plan.planning.process import run_process_group
+    from relevance_plan.supervision.process import run_process_group
 
     scope = CancelScope()
     scope.cancel()

@@ -15,8 +15,10 @@ import pytest
 from support import write_file
 
 from relevance_plan import errors
-from relevance_plan.planning import fast_downward, fd_command, process, spawn
-from relevance_plan.planning.outcome import PlannerStatus
+from relevance_plan.planning.planners.base import PlannerStatus
+from relevance_plan.planning.planners.fast_downward import adapter as fast_downward
+from relevance_plan.planning.planners.fast_downward import command as fd_command
+from relevance_plan.supervision import process, spawn
 
 GRIPPER_DOMAIN = """
 (define (domain gripper)

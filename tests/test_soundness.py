@@ -302,7 +302,7 @@ def test_an_effect_over_every_object_that_sets_a_kept_fact_keeps_the_objects_its
 def _prune_plan_validate(tmp_path: Path, world: str, seed: int) -> bool:
     from support import run
 
-    from relevance_plan.planning.fast_downward import run_fast_downward
+    from relevance_plan.planning.planners.fast_downward.adapter import run_fast_downward
 
     domain_text, make = WORLDS[world]
     domain_path, problem_path = tmp_path / f"{world}.pddl", tmp_path / f"{world}-{seed}.pddl"

@@ -16,7 +16,7 @@ from support import REPO, TOOL, make_row
 
 from relevance_plan.batch.store import ResultStore
 from relevance_plan.exitcodes import ExitCode
-from relevance_plan.planning import fast_downward
+from relevance_plan.planning.planners.fast_downward import adapter as fast_downward
 
 GRIPPER = REPO / "relevance_plan" / "data" / "domains" / "gripper" / "domain.pddl"
 BROKEN_PROBLEM = "(define (problem p{}) (:domain gripper) (:objects a - "

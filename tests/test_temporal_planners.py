@@ -17,14 +17,14 @@ from support import run
 from relevance_plan.errors import UnsupportedFeatureError
 from relevance_plan.io import load_task
 from relevance_plan.pddl.plans import PlanStep, format_plan, read_plan
-from relevance_plan.planning import auto
-from relevance_plan.planning import features as f
 from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task
-from relevance_plan.planning.lpg import classify, lpg_binary, read_lpg_plan
-from relevance_plan.planning.outcome import PlannerStatus
-from relevance_plan.planning.planners import make_planner
-from relevance_plan.planning.process import ProcessRun
+from relevance_plan.planning.planners import auto
+from relevance_plan.planning.planners import features as f
+from relevance_plan.planning.planners.base import PlannerStatus
+from relevance_plan.planning.planners.lpg import classify, lpg_binary, read_lpg_plan
+from relevance_plan.planning.planners.registry import make_planner
 from relevance_plan.planning.validate import ValidationStatus, validate_builtin, validate_with_up
+from relevance_plan.supervision.process import ProcessRun
 
 JAVA_MISSING = "Java runtime not found: apt-get install default-jre-headless"
 
@@ -235,7 +235,7 @@ def test_auto_names_what_to_install_in_one_line(monkeypatch):
 
 
 def test_auto_is_the_default_and_stays_fast_downward_on_classical_problems(coffee_files):
-    from relevance_plan.planning.planners import DEFAULT_PLANNER, planner_for
+    from relevance_plan.planning.planners.registry import DEFAULT_PLANNER, planner_for
 
     assert DEFAULT_PLANNER == "auto" and PlanOptions().planner == "auto"
     domain, problem = load_task(*coffee_files)

@@ -46,7 +46,7 @@ def lpg_plan(domain: Path, problem: Path, workdir: Path, timeout: float = 120) -
 
 
 def fast_downward_plan(domain: Path, problem: Path) -> Plan | None:
-    from relevance_plan.planning.fast_downward import run_fast_downward
+    from relevance_plan.planning.planners.fast_downward.adapter import run_fast_downward
 
     outcome = run_fast_downward(domain, problem, time_limit=120)
     return outcome.plan if outcome.solved else None

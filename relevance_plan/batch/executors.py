@@ -27,7 +27,7 @@ from typing import Any
 
 from relevance_plan.batch.jobs import Job, run_job
 from relevance_plan.errors import SchedulerError
-from relevance_plan.planning.process import terminate_all_runs
+from relevance_plan.supervision.process import terminate_all_runs
 
 DASK_INSTALL_HINT = "pip install 'relevance-plan[dask]'"
 DEFAULT_SCHEDULER_TIMEOUT = 10.0

@@ -21,7 +21,7 @@ from relevance_plan.batch.store import ResultKey
 from relevance_plan.errors import InputFileError, RelevancePlanError
 from relevance_plan.io import load_domain, read_bytes
 from relevance_plan.planning.loop import PLAN_OPTION_FIELDS, PlanOptions
-from relevance_plan.planning.planners import DEFAULT_PLANNER_CONFIG, make_planner
+from relevance_plan.planning.planners.registry import DEFAULT_PLANNER_CONFIG, make_planner
 from relevance_plan.relevance.knowledge import find_model
 from relevance_plan.relevance.sidecar import sidecar_path
 

@@ -372,8 +372,8 @@ def prune(domain_path, problem_path, output, pass_through, as_json, **values):
 def plan(domain_path, problem_path, method, plan_file, keep_work, race, as_json, quiet, **values):
     """Prune, plan, validate on the original problem, widen until solved."""
     from relevance_plan.io import names_stdout
-    from relevance_plan.planning.compile import check_keep_directory
-    from relevance_plan.planning.planners import make_planner
+    from relevance_plan.planning.planners.preparation import check_keep_directory
+    from relevance_plan.planning.planners.registry import make_planner
 
     to_stdout = names_stdout(plan_file)
     if to_stdout and as_json:

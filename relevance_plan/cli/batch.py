@@ -62,7 +62,7 @@ def compare(suite_dirs, methods, planners, jobs, store_path, scheduler, schedule
     Rerunning the same command resumes: stored jobs are not run again.
     """
     from relevance_plan.batch.compare import compare as run_compare
-    from relevance_plan.planning.planners import split_planner_names
+    from relevance_plan.planning.planners.registry import split_planner_names
 
     options = take_plan_options(values)
     with progress_bar("compare", live=None if not quiet else False) as bar:

@@ -3,7 +3,7 @@
 ``plan`` gets a head start: when the command line says the full problem will
 be planned with Fast Downward (a race, or ``--method pure``), the driver is
 started on the user's files before the commands, the reader and the scorers
-are imported (``planning/head_start.py``).  Everything else goes straight to
+are imported (``planning/planners/fast_downward/head_start.py``).  Everything else goes straight to
 the click commands of ``app.py``.
 
 ``plan`` also ends at once when it is done (:func:`_end_now`): the
@@ -52,7 +52,7 @@ def _commands(started: bool) -> None:
         commands(prog_name="relevance-plan")
     finally:
         if started:
-            from relevance_plan.planning import head_start
+            from relevance_plan.planning.planners.fast_downward import head_start
 
             head_start.discard_pending()  # the command ended before it planned the full problem
 
@@ -76,7 +76,7 @@ def _end_now(end: SystemExit) -> None:
 
 def _head_start(arguments: list[str]) -> bool:
     try:
-        from relevance_plan.planning import head_start
+        from relevance_plan.planning.planners.fast_downward import head_start
 
         head_start.start_for_plan(arguments)
     except Exception:  # an optimisation only: the command itself reports what is wrong
@@ -87,7 +87,7 @@ def _head_start(arguments: list[str]) -> bool:
 def _stop_on_signals() -> dict[int, _Handler]:
     def stop(number: int, frame: FrameType | None) -> None:
         from relevance_plan.exitcodes import ExitCode
-        from relevance_plan.planning import head_start
+        from relevance_plan.planning.planners.fast_downward import head_start
 
         head_start.discard_pending()
         name = next((name for name in _SIGNALS if getattr(signal, name, None) == number), str(number))

@@ -108,7 +108,7 @@ def _check_snapshot_targets(snapshot_dir: str, inputs: list) -> list[Path]:
 def watch(domain_path, problem_path, events_path, plan_in_loop, snapshot_dir, **values):
     """Keep relevance (and, with --plan, a validated plan) current over a stream of scene events."""
     from relevance_plan.io import load_task, write_text_atomic
-    from relevance_plan.planning.planners import make_planner
+    from relevance_plan.planning.planners.registry import make_planner
     from relevance_plan.session import Session  # imported here: other commands never need the session
 
     options = take_plan_options(values)

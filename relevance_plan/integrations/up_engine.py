@@ -67,8 +67,8 @@ from relevance_plan.pddl.model import Domain
 from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.pddl.plans import Plan, PlanStep
 from relevance_plan.planning.loop import Attempt, PlanOptions, PlanStatus, run_attempts, summarise
-from relevance_plan.planning.outcome import PlannerStatus, RunOutcome
-from relevance_plan.planning.up_engines import UP_STATUS, up_status_name
+from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome
+from relevance_plan.planning.planners.up.adapter import UP_STATUS, up_status_name
 from relevance_plan.planning.validate import validate_plan
 from relevance_plan.relevance.knowledge import KnowledgeModel, load_model
 from relevance_plan.relevance.prune import DEFAULT_TAU, Selection, Thresholds, widen

@@ -42,19 +42,19 @@ from relevance_plan.io import load_domain, load_problem, scratch_directory, writ
 from relevance_plan.pddl.model import Problem
 from relevance_plan.pddl.plans import Plan, format_plan
 from relevance_plan.pddl.sexpr import collection_paused
-from relevance_plan.planning import head_start
-from relevance_plan.planning.auto import FallbackPlanner
-from relevance_plan.planning.compile import PreparedPlanner, prepare_planner, with_planner_args
-from relevance_plan.planning.outcome import PlannerStatus, RunOutcome
-from relevance_plan.planning.planners import (
+from relevance_plan.planning.planners.auto import FallbackPlanner
+from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome
+from relevance_plan.planning.planners.preparation import PreparedPlanner, prepare_planner, with_planner_args
+from relevance_plan.planning.planners.registry import (
     DEFAULT_PLANNER,
     DEFAULT_PLANNER_CONFIG,
     Planner,
     make_planner,
+    offer_early_run,
     planner_for,
     planner_for_unread,
+    take_early_run,
 )
-from relevance_plan.planning.process import CancelScope, cancel_scope
 from relevance_plan.planning.race import Race
 from relevance_plan.planning.validate import (
     ValidationResult,
@@ -68,6 +68,7 @@ from relevance_plan.relevance.knowledge import KnowledgeModel
 from relevance_plan.relevance.prune import Selection, Thresholds, widen
 from relevance_plan.relevance.scorers import PlanningTask
 from relevance_plan.relevance.setup import Scoring, ScoringOptions, score_problem
+from relevance_plan.supervision.process import CancelScope, cancel_scope
 
 METHODS = ("relevance", "pure", "random", "oracle")
 # The least a planner is given when the --timeout is nearly out: a chance to finish, yet with the
@@ -527,16 +528,16 @@ def _plan_task(
         # the plan is checked once the planner has ended: import the checker now, while it runs
         import relevance_plan.pddl.simulator  # noqa: F401
 
-    # the launcher's head start (planning.head_start): the first call on the full problem may take it
+    # the launcher's early run of the full problem: the first call on the full problem may take it
     # over; offered() stops it after that call, and the end of the run in every case
-    early = head_start.take()
+    early = take_early_run()
     if early is not None:  # the run began when the launcher started the driver: times and limits count from there
         started = min(started, early.spawned.started + time.perf_counter() - time.monotonic())
-    with scratch_directory() as scratch, head_start.offered(early):
+    with scratch_directory() as scratch, offer_early_run(early):
 
         def call_planner(objects: Selection | None, limit: float | None) -> RunOutcome:
             if objects is None:
-                with head_start.offered(early):
+                with offer_early_run(early):
                     return prepared.run(
                         domain_path, problem_path, time_limit=limit, memory_limit_mb=options.memory_limit_mb
                     )

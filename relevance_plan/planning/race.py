@@ -14,8 +14,8 @@ import threading
 from collections.abc import Callable
 from typing import Generic, TypeVar
 
-from relevance_plan.planning.process import CancelScope, cancel_scope
-from relevance_plan.planning.spawn import usable_cores
+from relevance_plan.supervision.process import CancelScope, cancel_scope
+from relevance_plan.supervision.spawn import usable_cores
 
 T = TypeVar("T")
 

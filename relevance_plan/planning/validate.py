@@ -165,7 +165,7 @@ def validate_with_val(domain: Domain, problem: Problem, plan: Plan, deadline: fl
 def validate_files_with_val(
     domain_path: str, problem_path: str, plan: Plan, deadline: float | None
 ) -> ValidationResult:
-    from relevance_plan.planning.process import run_val  # subprocess access lives in the process module
+    from relevance_plan.supervision.process import run_val  # subprocess access lives in the process module
 
     if not val_available():
         return ValidationResult(ValidationStatus.UNAVAILABLE, "val", "VAL's Validate is not on PATH")

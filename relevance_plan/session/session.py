@@ -41,7 +41,7 @@ from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.plans import Plan
 from relevance_plan.pddl.writer import write_pruned_problem
 from relevance_plan.planning.loop import PlanOptions, PlanResult, PlanStatus, run_attempts, summarise
-from relevance_plan.planning.outcome import RunOutcome
+from relevance_plan.planning.planners.base import RunOutcome
 from relevance_plan.planning.validate import validate_plan
 from relevance_plan.relevance.analysis import ConstraintRule, FactIndex, single_valued_predicates
 from relevance_plan.relevance.knowledge import KnowledgeModel
@@ -551,7 +551,7 @@ class Session:
 def planner_in_folder(owner: object, options: PlanOptions, domain_path: str | None, domain: str | Domain) -> RunPlanner:
     """A planner call that writes each problem into a private folder, removed with ``owner``
     (the domain too, from its text, when it has no file)."""
-    from relevance_plan.planning.planners import make_planner
+    from relevance_plan.planning.planners.registry import make_planner
 
     folder = tempfile.TemporaryDirectory(prefix="relevance-plan-session-")
     weakref.finalize(owner, folder.cleanup)

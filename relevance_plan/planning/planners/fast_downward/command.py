@@ -12,7 +12,7 @@ import os
 import sys
 
 from relevance_plan import errors
-from relevance_plan.planning import fd_driver
+from relevance_plan.planning.planners.fast_downward import fd_driver
 
 TYPE_CHECKING = False  # typing's own flag would import typing
 if TYPE_CHECKING:

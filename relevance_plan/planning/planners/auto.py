@@ -27,28 +27,24 @@ import importlib.util
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
 from relevance_plan.errors import UnsupportedFeatureError
 from relevance_plan.io import load_domain, load_problem
 from relevance_plan.pddl.model import Domain, Problem
-from relevance_plan.planning import features as f
-from relevance_plan.planning.fast_downward import DEFAULT_CONFIG, FastDownwardPlanner, check_config
-from relevance_plan.planning.lpg import FEATURES as LPG_FEATURES
-from relevance_plan.planning.lpg import INSTALL_HINT as LPG_HINT
-from relevance_plan.planning.lpg import LpgPlanner, lpg_binary
-from relevance_plan.planning.outcome import PlannerStatus, RunOutcome
-from relevance_plan.planning.up_engines import (
+from relevance_plan.planning.planners import features as f
+from relevance_plan.planning.planners.base import Planner, PlannerStatus, RunOutcome
+from relevance_plan.planning.planners.fast_downward.adapter import DEFAULT_CONFIG, FastDownwardPlanner, check_config
+from relevance_plan.planning.planners.lpg import FEATURES as LPG_FEATURES
+from relevance_plan.planning.planners.lpg import INSTALL_HINT as LPG_HINT
+from relevance_plan.planning.planners.lpg import LpgPlanner, lpg_binary
+from relevance_plan.planning.planners.up.adapter import (
     ENGINE_FEATURES,
     FITTED_ONLY,
     JAVA_ENGINES,
     JAVA_HINT,
     UnifiedPlanningPlanner,
 )
-from relevance_plan.planning.up_engines import java_runtime as find_java
-
-if TYPE_CHECKING:
-    from relevance_plan.planning.planners import Planner
+from relevance_plan.planning.planners.up.adapter import java_runtime as find_java
 
 NAME = "auto"
 PDDL_PLUS = "PDDL+"  # how the reader's refusals of processes, events and continuous effects name them

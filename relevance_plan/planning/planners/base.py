@@ -1,6 +1,8 @@
-"""What one planner run ends in, whatever the planner: a status, the plan, the costs, the planner's own words.
+"""The contract every planner adapter keeps, and what one planner run ends in.
 
-Every planner adapter (``fast_downward``, ``up_engines``, ``command``)
+:class:`Planner` is the protocol the attempt loop calls; :class:`RunOutcome`
+is one run's status, plan, costs and the planner's own words.  Every
+adapter (``fast_downward``, ``lpg``, ``up``, ``command``)
 classifies its own exit codes into :class:`PlannerStatus` and says in
 ``reason`` what the planner reported in the planner's own terms, naming
 whose terms they are ("Fast Downward exit code 23: search out of time"), so
@@ -13,13 +15,12 @@ from __future__ import annotations
 import enum
 import signal
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import Any, Protocol
 
 from relevance_plan.errors import PlanFormatError
+from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.plans import Plan, read_plan
-
-if TYPE_CHECKING:
-    from relevance_plan.planning.process import ProcessRun
+from relevance_plan.supervision.process import ProcessRun
 
 
 class PlannerStatus(enum.Enum):
@@ -109,3 +110,27 @@ def signal_reason(exit_code: int) -> str:
         return f"killed by {signal.Signals(-exit_code).name}"
     except ValueError:
         return f"killed by signal {-exit_code}"
+
+
+class Planner(Protocol):
+    @property
+    def name(self) -> str: ...
+
+    @property
+    def features(self) -> frozenset[str] | None:
+        """The PDDL features it takes (names from ``features.py``); None: unknown, it decides."""
+        ...
+
+    def check_installed(self) -> None:
+        """Raise when it cannot run at all (engine not installed, executable not found, template incomplete)."""
+        ...
+
+    def check(self, domain: Domain, problem: Problem) -> None:
+        """Raise UnsupportedFeatureError naming what the problem needs and it does not take."""
+        ...
+
+    def version(self) -> str: ...
+
+    def run(
+        self, domain_path: str, problem_path: str, *, time_limit: float | None, memory_limit_mb: int | None
+    ) -> RunOutcome: ...

@@ -23,7 +23,7 @@ import sys
 import time
 
 from relevance_plan import errors
-from relevance_plan.planning import guard
+from relevance_plan.supervision import guard
 
 LOG_FILE = "planner.log"
 NO_CGROUP_ENV = "RELEVANCE_PLAN_NO_CGROUP"

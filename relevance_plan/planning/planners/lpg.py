@@ -41,9 +41,9 @@ from pathlib import Path
 from relevance_plan import errors
 from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.plans import Plan
-from relevance_plan.planning import features as f
-from relevance_plan.planning.outcome import PlannerStatus, RunOutcome, parse_ipc_plan, signal_reason
-from relevance_plan.planning.process import ProcessRun, log_tail, read_log, run_process_group, watchdog_deadline
+from relevance_plan.planning.planners import features as f
+from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome, parse_ipc_plan, signal_reason
+from relevance_plan.supervision.process import ProcessRun, log_tail, read_log, run_process_group, watchdog_deadline
 
 NAME = "lpg"
 WHOSE = "LPG-td"

@@ -28,14 +28,15 @@ import contextvars
 import os
 import sys
 
-from relevance_plan.planning import fd_command, spawn
+from relevance_plan.planning.planners.fast_downward import command as fd_command
+from relevance_plan.supervision import spawn
 
 TYPE_CHECKING = False  # typing's own flag would import typing
 if TYPE_CHECKING:
     from collections.abc import Sequence
     from pathlib import Path
 
-    from relevance_plan.planning.process import StartedGroup
+    from relevance_plan.supervision.process import StartedGroup
 
     # What identifies a driver run: (domain, problem, configuration, memory limit MB, extra arguments).
     RunKey = tuple[str, str, str, int | None, tuple[str, ...]]
@@ -78,7 +79,7 @@ class HeadStart:
         if self._group is None:
             from pathlib import Path
 
-            from relevance_plan.planning.process import StartedGroup
+            from relevance_plan.supervision.process import StartedGroup
 
             self._group = StartedGroup.adopt(self.spawned, Path(self.workdir))
         return self._group

@@ -1,6 +1,6 @@
 """Child process of the ``up:NAME`` planners: read PDDL with unified-planning, solve, write the plan.
 
-Run as ``python -m relevance_plan.planning.up_child ENGINE DOMAIN PROBLEM PLAN VERDICT TIMEOUT``
+Run as ``python -m relevance_plan.planning.planners.up.child ENGINE DOMAIN PROBLEM PLAN VERDICT TIMEOUT``
 by ``up_engines.UnifiedPlanningPlanner``, inside its own session so that the
 parent's watchdog can kill it (and whatever the engine started) at once.
 The plan is written to PLAN in the IPC format with the names of the PDDL
@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import sys
 
-from relevance_plan.planning.up_engines import CHILD_CANNOT_READ, ENGINE_FEATURES
+from relevance_plan.planning.planners.up.adapter import CHILD_CANNOT_READ, ENGINE_FEATURES
 
 # An engine that raises instead of answering cannot take the problem's features.
 _REFUSED = "UNSUPPORTED_PROBLEM"
@@ -67,7 +67,7 @@ def main(arguments: list[str]) -> int:
 def _fit(environment, engine: str, problem):
     """The problem rewritten for an engine that does not take its kind as read (``up_fit``)."""
     try:
-        from relevance_plan.planning.up_fit import fit_problem
+        from relevance_plan.planning.planners.up.fitting import fit_problem
 
         fitted = fit_problem(environment, engine, problem)
     except Exception as error:  # a rewrite that fails leaves the engine the problem as read

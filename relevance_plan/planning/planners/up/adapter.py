@@ -22,10 +22,10 @@ from pathlib import Path
 
 from relevance_plan import errors
 from relevance_plan.pddl.model import Domain, Problem
-from relevance_plan.planning import features as f
-from relevance_plan.planning.features import refuse_unsupported
-from relevance_plan.planning.outcome import PlannerStatus, RunOutcome, parse_ipc_plan, signal_reason
-from relevance_plan.planning.process import log_tail, read_log, run_process_group, watchdog_deadline, work_directory
+from relevance_plan.planning.planners import features as f
+from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome, parse_ipc_plan, signal_reason
+from relevance_plan.planning.planners.features import refuse_unsupported
+from relevance_plan.supervision.process import log_tail, read_log, run_process_group, watchdog_deadline, work_directory
 
 KIND = "up"
 PLANNERS_EXTRA_HINT = "pip install 'relevance-plan[planners]'"
@@ -218,7 +218,7 @@ class UnifiedPlanningPlanner:
             command = [
                 sys.executable,
                 "-m",
-                "relevance_plan.planning.up_child",
+                "relevance_plan.planning.planners.up.child",
                 self.engine,
                 str(Path(domain_path).absolute()),
                 str(Path(problem_path).absolute()),

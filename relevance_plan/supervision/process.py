@@ -47,8 +47,8 @@ from pathlib import Path
 from typing import BinaryIO, NamedTuple
 
 from relevance_plan import errors
-from relevance_plan.planning import guard, spawn
-from relevance_plan.planning.spawn import LOG_FILE
+from relevance_plan.supervision import guard, spawn
+from relevance_plan.supervision.spawn import LOG_FILE
 
 LOG_TAIL_LINES = 40
 # Past the time limit, the planner's own limit may act first for this long before the watchdog kills it.

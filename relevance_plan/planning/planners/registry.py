@@ -2,7 +2,7 @@
 
 A planner says which PDDL features it takes, refuses a problem that needs
 more (``check``), and runs one domain/problem pair under a time and memory
-limit, returning a :class:`~relevance_plan.planning.outcome.RunOutcome` whose
+limit, returning a :class:`~relevance_plan.planning.planners.base.RunOutcome` whose
 status it classified itself (solved with plan and cost, unsolvable, out of
 time, out of memory, input error, configuration error, crash — with its
 exit code explained in its own terms and the log tail).  ``PLANNERS`` maps a
@@ -27,44 +27,26 @@ watchdog of ``process.run_process_group``.
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import Protocol
 
 from relevance_plan import errors
 from relevance_plan.pddl.model import Domain, Problem
-from relevance_plan.planning import auto, fast_downward, lpg
-from relevance_plan.planning.auto import AutoPlanner
-from relevance_plan.planning.command import CommandPlanner
-from relevance_plan.planning.fast_downward import FastDownwardPlanner
-from relevance_plan.planning.lpg import LpgPlanner
-from relevance_plan.planning.outcome import RunOutcome
-from relevance_plan.planning.up_engines import UnifiedPlanningPlanner
+from relevance_plan.planning.planners import auto, lpg
+from relevance_plan.planning.planners.auto import AutoPlanner
+from relevance_plan.planning.planners.base import Planner
+from relevance_plan.planning.planners.command import CommandPlanner
+from relevance_plan.planning.planners.fast_downward import adapter as fast_downward
+from relevance_plan.planning.planners.fast_downward import head_start
+from relevance_plan.planning.planners.fast_downward.adapter import FastDownwardPlanner
+from relevance_plan.planning.planners.lpg import LpgPlanner
+from relevance_plan.planning.planners.up.adapter import UnifiedPlanningPlanner
 
 DEFAULT_PLANNER = auto.NAME
 DEFAULT_PLANNER_CONFIG = fast_downward.DEFAULT_CONFIG
 
-
-class Planner(Protocol):
-    @property
-    def name(self) -> str: ...
-
-    @property
-    def features(self) -> frozenset[str] | None:
-        """The PDDL features it takes (names from ``features.py``); None: unknown, it decides."""
-        ...
-
-    def check_installed(self) -> None:
-        """Raise when it cannot run at all (engine not installed, executable not found, template incomplete)."""
-        ...
-
-    def check(self, domain: Domain, problem: Problem) -> None:
-        """Raise UnsupportedFeatureError naming what the problem needs and it does not take."""
-        ...
-
-    def version(self) -> str: ...
-
-    def run(
-        self, domain_path: str, problem_path: str, *, time_limit: float | None, memory_limit_mb: int | None
-    ) -> RunOutcome: ...
+# A run of the full problem the launcher started before the tool was imported (Fast Downward's, today):
+# the loop takes it, offers it to its first call on the full problem, and stops it if not taken over.
+take_early_run = head_start.take
+offer_early_run = head_start.offered
 
 
 PLANNERS: dict[str, Callable[[str, str], Planner]] = {

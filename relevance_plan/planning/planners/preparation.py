@@ -33,8 +33,9 @@ from relevance_plan.pddl.compile import COMPILATIONS, Compilation
 from relevance_plan.pddl.formatter import format_domain, format_problem
 from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.plans import Plan
-from relevance_plan.planning.auto import FallbackPlanner
-from relevance_plan.planning.features import (
+from relevance_plan.planning.planners.auto import FallbackPlanner
+from relevance_plan.planning.planners.base import Planner, RunOutcome
+from relevance_plan.planning.planners.features import (
     CONDITIONAL_EFFECTS,
     DISJUNCTIVE_PRECONDITIONS,
     EQUALITY,
@@ -43,8 +44,6 @@ from relevance_plan.planning.features import (
     UNIVERSAL_PRECONDITIONS,
     problem_features,
 )
-from relevance_plan.planning.outcome import RunOutcome
-from relevance_plan.planning.planners import Planner
 
 # The features each compilation of ``pddl.compile`` removes.
 COMPILED_FEATURES: dict[str, frozenset[str]] = {

@@ -19,9 +19,9 @@ from pathlib import Path
 from relevance_plan import errors
 from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.plans import Plan
-from relevance_plan.planning.features import refuse_unsupported
-from relevance_plan.planning.outcome import PlannerStatus, RunOutcome, parse_ipc_plan, signal_reason
-from relevance_plan.planning.process import (
+from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome, parse_ipc_plan, signal_reason
+from relevance_plan.planning.planners.features import refuse_unsupported
+from relevance_plan.supervision.process import (
     ProcessRun,
     log_tail,
     read_log,
