@@ -183,18 +183,16 @@ def test_classify_splits_translator_critical_error_by_log() -> None:
     assert classify(99) is PlannerStatus.PLANNER_CRASH
 
 
-def test_read_plan_takes_last_complete_anytime_plan(tmp_path: Path) -> None:
+def test_read_plans_skips_an_anytime_plan_cut_off_mid_write(tmp_path: Path) -> None:
     write_file(tmp_path, "sas_plan.2", "(A X)\n(B Y)\n; cost = 2 (unit cost)\n")
     write_file(tmp_path, "sas_plan.10", "(c z)\n; cost = 1 (unit cost)\n")
     write_file(tmp_path, "sas_plan.11", "(d z)\n")  # cut off by a kill mid-write
-    found = fast_downward.read_best_plan(tmp_path)
-    assert [str(step) for step in found] == ["(c z)"] and found.cost == 1
-    (tmp_path / "sas_plan.10").unlink()
-    found = fast_downward.read_best_plan(tmp_path)
-    assert [str(step) for step in found] == ["(a x)", "(b y)"] and found.cost == 2
+    plans, numbered = fast_downward.read_plans(tmp_path)
+    assert numbered and [[str(step) for step in plan] for plan in plans] == [["(a x)", "(b y)"], ["(c z)"]]
+    assert plans[-1].cost == 1
     empty = tmp_path / "empty"
     empty.mkdir()
-    assert fast_downward.read_best_plan(empty) is None
+    assert fast_downward.read_plans(empty) == ((), False)
 
 
 def test_driver_override_and_missing_driver(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:

@@ -199,6 +199,3 @@ def demo(workdir, count, timeout, jobs, distractors, tiny, quiet):
     click.echo(f"suites: {', '.join(str(s) for s in run.suites)}")
     click.echo(f"results: {run.store_path} ({run.summary.ran} run now, {run.summary.already_stored} reused)")
     click.echo(f"more: relevance-plan report {run.store_path} --format latex --plots {run.workdir / 'plots'}")
-
-
-COMMANDS = (compare, report, sweep, demo)

@@ -203,7 +203,7 @@ def take_plan_options(values: dict, method: str = "relevance") -> PlanOptions:
     """
     scoring = take_scoring(values)
     taken = {key: values.pop(key) for key in PLANNING_KEYS}
-    check_validators(taken["validators"])
+    require_installed_validators(taken["validators"])
     return PlanOptions.from_scoring(
         scoring,
         method=method,
@@ -227,7 +227,7 @@ def split_planner_args(text: str | None) -> tuple[str, ...]:
         raise UsageError(f"--planner-args cannot be split: {error}") from None
 
 
-def check_validators(names) -> None:
+def require_installed_validators(names) -> None:
     """A validator asked for by name must be able to run; found before planning, not after."""
     from relevance_plan.planning.validate import val_available
 

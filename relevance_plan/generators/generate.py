@@ -354,9 +354,9 @@ def generate_suite(
         "distractors": distractors,
     }
 
-    def make(index: int) -> SuiteProblem:
+    def make(index: int) -> SuiteEntry:
         problem = generate_problem(world, difficulty, seed, index, distractors)
-        return SuiteProblem(
+        return SuiteEntry(
             problem.name,
             problem.pddl_text,
             problem.sidecar_text,
@@ -368,7 +368,7 @@ def generate_suite(
 
 
 @dataclass(frozen=True)
-class SuiteProblem:
+class SuiteEntry:
     """One problem as a suite stores it: its files' texts and its manifest entry's extra fields."""
 
     name: str
@@ -381,7 +381,7 @@ def write_suite(
     out_dir: Path,
     domain_path: Path,
     names: list[str],
-    make: Callable[[int], SuiteProblem],
+    make: Callable[[int], SuiteEntry],
     manifest: dict,
     progress: ProgressCallback | None = None,
     force: bool = False,

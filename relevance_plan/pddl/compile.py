@@ -239,7 +239,7 @@ def _map_effect(
     return change(effect)
 
 
-def _same(node: Formula) -> Formula:
+def _unchanged(node: Formula) -> Formula:
     return node
 
 
@@ -322,7 +322,7 @@ def compile_quantified_preconditions(domain: Domain, problem: Problem) -> Compil
             action,
             parameters=parameters,
             precondition=ground(precondition),
-            effect=_map_effect(action.effect, _same, ground),
+            effect=_map_effect(action.effect, _unchanged, ground),
         )
         lifted = len(parameters) > len(action.parameters)
         actions.append((changed, Origin(action.name, tuple(range(len(action.parameters)))) if lifted else None))
@@ -574,7 +574,9 @@ def compile_equality(domain: Domain, problem: Problem) -> Compilation:
     actions: list[tuple[Action, Origin | None]] = [
         (
             dataclasses.replace(
-                action, precondition=condition(action.precondition), effect=_map_effect(action.effect, _same, condition)
+                action,
+                precondition=condition(action.precondition),
+                effect=_map_effect(action.effect, _unchanged, condition),
             ),
             None,
         )

@@ -18,7 +18,7 @@ Display = Callable[[str], str]
 NAMES_PER_LINE = 12
 
 
-def _same(name: str) -> str:
+def _as_written(name: str) -> str:
     return name
 
 
@@ -26,7 +26,7 @@ def format_number(value: float) -> str:
     return str(int(value)) if float(value).is_integer() and abs(value) < 1e15 else repr(float(value))
 
 
-def format_atom(atom: Sequence[str], display: Display = _same) -> str:
+def format_atom(atom: Sequence[str], display: Display = _as_written) -> str:
     """``(predicate arg ...)`` of a ground atom tuple."""
     return "(" + " ".join([atom[0], *(display(arg) for arg in atom[1:])]) + ")"
 
@@ -45,7 +45,7 @@ def format_parameters(parameters: f.Parameters) -> str:
     return " ".join(pieces)
 
 
-def format_formula(node: f.Node, display: Display = _same) -> str:
+def format_formula(node: f.Node, display: Display = _as_written) -> str:
     """PDDL text of any formula node on one line."""
 
     def term(name: str) -> str:

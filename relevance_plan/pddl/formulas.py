@@ -342,10 +342,6 @@ def predicates_in(node: Node) -> set[str]:
     return {current.predicate for current in walk(node) if isinstance(current, Atom)}
 
 
-def functions_in(node: Node) -> set[str]:
-    return {current.function for current in walk(node) if isinstance(current, Fluent)}
-
-
 def substitute(node: Node, binding: Mapping[str, str]) -> Node:
     """``node`` with its free variables replaced by ``binding``'s names (bound variables stay)."""
     return _rebuild(node, lambda term: binding.get(term, term), binding)
@@ -405,10 +401,6 @@ def conjuncts(formula: Formula) -> Iterator[Formula]:
 
 def ground(atom: Atom, binding: Mapping[str, str]) -> GroundAtom:
     return (atom.predicate, *(binding.get(a, a) for a in atom.args))
-
-
-def is_durative_part(formula: Formula) -> bool:
-    return any(isinstance(node, Timed) for node in walk(formula))
 
 
 def conjuncts_timed(formula: Formula) -> Iterator[Timed]:

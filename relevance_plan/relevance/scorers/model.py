@@ -100,7 +100,7 @@ class ModelContext:
         return model_class.kind_relevance.get(kind, model_class.default_kind_relevance)
 
     def class_relevance(self, class_name: str) -> float:
-        """R(C) of a class not scored by its contents (places are; see :func:`contents_scores`)."""
+        """R(C) of a class not scored by its contents (places are scored by what they hold)."""
         value = self._class_values.get(class_name)
         if value is None:
             if class_name == UNKNOWN_CLASS:

@@ -219,12 +219,6 @@ def read_plans(workdir: Path) -> tuple[tuple[Plan, ...], bool]:
     return tuple(plans), any(path.name != PLAN_FILE for path in paths)
 
 
-def read_best_plan(workdir: Path) -> Plan | None:
-    """The last complete plan file, or None if there is none."""
-    plans, _ = read_plans(workdir)
-    return plans[-1] if plans else None
-
-
 def _last_float(pattern: re.Pattern[str], text: str) -> float | None:
     matches = pattern.findall(text)
     return float(matches[-1]) if matches else None

@@ -419,7 +419,7 @@ class _Names:
         return name
 
 
-def _same(value):
+def _unchanged(value):
     return value
 
 
@@ -427,9 +427,9 @@ def _same(value):
 class _Rewrite:
     """What a step changes; everything else is copied as it is."""
 
-    expression: Callable[[Any], Any] = _same
-    fluent: Callable[[Any], Any] = _same
-    retype: Callable[[Any], Any] = _same
+    expression: Callable[[Any], Any] = _unchanged
+    fluent: Callable[[Any], Any] = _unchanged
+    retype: Callable[[Any], Any] = _unchanged
     # Conditions the rebuilt action needs before the old ones (at start for a durative action).
     guards: Callable[[Any, Any], list] = field(default=lambda old, new: [])
     # The guard of a variable of an effect's forall (None: none needed).
