@@ -35,7 +35,8 @@ REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))
 
 from relevance_plan.generators.classic import BUILDERS, generate_classic_problem  # noqa: E402
-from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task  # noqa: E402
+from relevance_plan.planning.loop import PlanOptions, plan_task  # noqa: E402
+from relevance_plan.planning.results import PlanStatus  # noqa: E402
 
 UNPADDED_SIZES = {"blocksworld": 40, "logistics": 60, "gripper": 60, "ferry": 60, "grid": 60, "miconic": 80}
 

@@ -26,7 +26,8 @@ from padded_worlds import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_proble
 REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))
 
-from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task  # noqa: E402
+from relevance_plan.planning.loop import PlanOptions, plan_task  # noqa: E402
+from relevance_plan.planning.results import PlanStatus  # noqa: E402
 
 CASES = [
     ("blocksworld", BLOCKSWORLD_DOMAIN, lambda n: blocksworld_problem(n, seed=1, in_the_way=3), (100, 200, 300)),

@@ -246,7 +246,8 @@ def _relevance(entry: SuiteProblem, timeout: float, scratch: Path, in_process: b
     import json
 
     if in_process:
-        from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task
+        from relevance_plan.planning.loop import PlanOptions, plan_task
+        from relevance_plan.planning.results import PlanStatus
 
         started = time.perf_counter()
         result = plan_task(entry.domain, entry.problem, PlanOptions(timeout=timeout, scorer="goal"))

@@ -30,8 +30,9 @@ REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))
 
 from relevance_plan.generators.generate import generate_suite  # noqa: E402
-from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task  # noqa: E402
+from relevance_plan.planning.loop import PlanOptions, plan_task  # noqa: E402
 from relevance_plan.planning.planners.registry import make_planner, split_planner_names  # noqa: E402
+from relevance_plan.planning.results import PlanStatus  # noqa: E402
 
 
 def problems(scratch: Path) -> list[tuple[str, Path, Path]]:

@@ -70,7 +70,8 @@ from relevance_plan.data import DOMAINS_DIR  # noqa: E402
 from relevance_plan.generators.sized import CLASSIC_WORLDS, generate_sized_problem  # noqa: E402
 from relevance_plan.io import load_domain, load_problem, write_text_atomic  # noqa: E402
 from relevance_plan.pddl.sexpr import collection_paused  # noqa: E402
-from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task  # noqa: E402
+from relevance_plan.planning.loop import PlanOptions, plan_task  # noqa: E402
+from relevance_plan.planning.results import PlanStatus  # noqa: E402
 from relevance_plan.relevance.scorers import PlanningTask  # noqa: E402
 from relevance_plan.relevance.setup import ScoringOptions, score_problem  # noqa: E402
 

@@ -34,7 +34,10 @@ import time
 from pathlib import Path
 
 from relevance_plan.errors import RelevancePlanError
-from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task
+from relevance_plan.planning.loop import PlanOptions, plan_task
+
+# (world, how its size is given, sizes, planners)
+from relevance_plan.planning.results import PlanStatus
 
 # (world, how its size is given, sizes, planners)
 GRID = (

@@ -25,7 +25,8 @@ from typing import Any
 
 from relevance_plan.io import Source, is_pddl_text, load_sources
 from relevance_plan.pddl.sexpr import collection_paused
-from relevance_plan.planning.loop import PlanOptions, PlanResult, plan_task
+from relevance_plan.planning.loop import PlanOptions, plan_task
+from relevance_plan.planning.results import PlanResult
 from relevance_plan.progress import ProgressCallback
 from relevance_plan.relevance.prune import Selection, Thresholds
 from relevance_plan.relevance.scorers import PlanningTask

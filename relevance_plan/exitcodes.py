@@ -85,7 +85,7 @@ def exit_code_for_error(error: errors.RelevancePlanError) -> ExitCode:
     return ExitCode.USAGE
 
 
-# A ``plan`` verdict (a ``planning.loop.PlanStatus`` value; this module sits below
+# A ``plan`` verdict (a ``planning.results.PlanStatus`` value; this module sits below
 # the planning layer, so the table is keyed by the one spelling of each status).
 PLAN_STATUS_EXIT: dict[str, ExitCode] = {
     "solved": ExitCode.SUCCESS,

@@ -10,7 +10,8 @@ from relevance_plan.cli import main
 from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.generators.classic import CLASSIC_WORLDS, generate_classic_problem
 from relevance_plan.pddl.parser import read_domain, read_problem
-from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task
+from relevance_plan.planning.loop import PlanOptions, plan_task
+from relevance_plan.planning.results import PlanStatus
 from relevance_plan.planning.validate import ValidationStatus, validate_plan
 from relevance_plan.relevance.prune import prune_with_scores, widen
 from relevance_plan.relevance.reachability import relaxed_reachability

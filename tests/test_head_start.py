@@ -11,8 +11,9 @@ import time
 import pytest
 from support import DOMAINS, REPO, TOOL, write_file
 
-from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task
+from relevance_plan.planning.loop import PlanOptions, plan_task
 from relevance_plan.planning.planners.fast_downward import head_start
+from relevance_plan.planning.results import PlanStatus
 
 GRIPPER = DOMAINS / "gripper" / "domain.pddl"
 GRIPPER_PROBLEM = """(define (problem two-balls) (:domain gripper)

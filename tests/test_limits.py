@@ -220,7 +220,8 @@ def test_a_task_past_its_deadline_stops_every_analysis_naming_the_step(copied_co
 def test_a_deadline_passing_inside_a_step_ends_the_run_as_out_of_time(monkeypatch, copied_coffee_files, step):
     from relevance_plan.errors import OutOfTimeError
     from relevance_plan.planning import loop
-    from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task
+    from relevance_plan.planning.loop import PlanOptions, plan_task
+    from relevance_plan.planning.results import PlanStatus
     from relevance_plan.relevance.setup import Scoring
 
     def out_of_time(*args, **kwargs):

@@ -18,9 +18,10 @@ from support import one_line_error, run
 
 from relevance_plan.errors import PlannerError, UnsupportedFeatureError
 from relevance_plan.exitcodes import ExitCode
-from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task
+from relevance_plan.planning.loop import PlanOptions, plan_task
 from relevance_plan.planning.planners import auto
 from relevance_plan.planning.planners.up import adapter as up_engines
+from relevance_plan.planning.results import PlanStatus
 
 JAVA_MISSING = "Java runtime not found: apt-get install default-jre-headless"
 

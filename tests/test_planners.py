@@ -19,13 +19,14 @@ from relevance_plan.cli import main
 from relevance_plan.errors import PlannerError, UnsupportedFeatureError, UsageError
 from relevance_plan.exitcodes import ExitCode
 from relevance_plan.pddl.plans import Plan
-from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task
+from relevance_plan.planning.loop import PlanOptions, plan_task
 from relevance_plan.planning.planners import auto
 from relevance_plan.planning.planners.auto import FallbackPlanner
 from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome, parse_ipc_plan
 from relevance_plan.planning.planners.command import CommandPlanner
 from relevance_plan.planning.planners.registry import make_planner, split_planner_names
 from relevance_plan.planning.planners.up import adapter as up_engines
+from relevance_plan.planning.results import PlanStatus
 
 
 @pytest.fixture

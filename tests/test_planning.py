@@ -10,7 +10,8 @@ from padded_worlds import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_proble
 
 from relevance_plan.errors import RelevancePlanError
 from relevance_plan.io import load_task
-from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task
+from relevance_plan.planning.loop import PlanOptions, plan_task
+from relevance_plan.planning.results import PlanStatus
 from relevance_plan.planning.validate import ValidationStatus, validate_with_up
 from relevance_plan.relevance.prune import Thresholds
 
@@ -210,8 +211,8 @@ def _spelling(value: str) -> str:
 
 def test_every_status_enum_spells_its_values_one_way():
     from relevance_plan.exitcodes import PLAN_STATUS_EXIT
-    from relevance_plan.planning.loop import AttemptStatus
     from relevance_plan.planning.planners.base import PlannerStatus
+    from relevance_plan.planning.results import AttemptStatus
     from relevance_plan.planning.validate import ValidationStatus
 
     values = [status.value for enum in (PlanStatus, AttemptStatus, PlannerStatus, ValidationStatus) for status in enum]
@@ -227,8 +228,8 @@ def test_plan_json_spells_every_status_one_way(tmp_path, coffee_domain_path):
     """Several outcomes of `plan --json`; every status string in them is an enum value, spelled one way."""
     from support import invoke
 
-    from relevance_plan.planning.loop import AttemptStatus
     from relevance_plan.planning.planners.base import PlannerStatus
+    from relevance_plan.planning.results import AttemptStatus
     from relevance_plan.planning.validate import ValidationStatus
 
     coffee = tmp_path / "coffee.pddl"

@@ -9,8 +9,9 @@ import pytest
 from support import process_gone
 from test_planners import script
 
-from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task
+from relevance_plan.planning.loop import PlanOptions, plan_task
 from relevance_plan.planning.race import Race, race_by_default, usable_cores
+from relevance_plan.planning.results import PlanStatus
 from relevance_plan.supervision.process import CancelScope, cancel_scope
 
 # A planner that hangs (after noting its pid) on one kind of input and asks Fast Downward on the other.

@@ -15,8 +15,9 @@ from relevance_plan.data import DOMAINS_DIR, PROBLEMS_DIR
 from relevance_plan.io import load_domain, load_task
 from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.pddl.plans import read_plan
-from relevance_plan.planning.loop import PlanOptions, PlanStatus
+from relevance_plan.planning.loop import PlanOptions
 from relevance_plan.planning.planners.registry import make_planner
+from relevance_plan.planning.results import PlanStatus
 from relevance_plan.planning.validate import validate_plan
 from relevance_plan.relevance.scorers import PlanningTask
 from relevance_plan.relevance.setup import ScoringOptions, score_problem

@@ -455,8 +455,8 @@ def test_up_ini_example_registers_the_meta_engine(tmp_path):
 
 def test_the_engine_derives_its_status_mappings_from_the_one_table():
     from relevance_plan.integrations.up_engine import up_status, up_verdict
-    from relevance_plan.planning.loop import PlanStatus
     from relevance_plan.planning.planners.base import PlannerStatus
+    from relevance_plan.planning.results import PlanStatus
 
     assert up_status(PlannerStatus.SOLVED) is Status.SOLVED_SATISFICING
     assert up_status(PlannerStatus.SEARCH_INCOMPLETE) is Status.UNSOLVABLE_INCOMPLETELY

@@ -28,8 +28,9 @@ from relevance_plan.batch.executors import (
 from relevance_plan.batch.jobs import Job, build_jobs
 from relevance_plan.batch.store import ResultKey, ResultStore, check_store_writable
 from relevance_plan.errors import UsageError
-from relevance_plan.planning.loop import MAX_TIMEOUT, PlanOptions, PlanStatus
+from relevance_plan.planning.loop import MAX_TIMEOUT, PlanOptions
 from relevance_plan.planning.planners.registry import make_planner
+from relevance_plan.planning.results import PlanStatus
 from relevance_plan.progress import ProgressCallback, ProgressEvent, ignore
 from relevance_plan.signals import stop_event_on_signals
 

@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING, Any
 
 from relevance_plan.batch.keys import canonical_json
 from relevance_plan.errors import InputFileError, RelevancePlanError, UnsupportedFeatureError
-from relevance_plan.planning.loop import PlanResult, PlanStatus
+from relevance_plan.planning.results import PlanResult, PlanStatus
 from relevance_plan.relevance.sidecar import read_sidecar_for
 
 if TYPE_CHECKING:

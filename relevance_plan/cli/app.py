@@ -29,7 +29,8 @@ from relevance_plan.cli.common import (
 from relevance_plan.cli.exits import ToolGroup
 from relevance_plan.errors import UnsupportedFeatureError, UsageError
 from relevance_plan.exitcodes import EXIT_CODE_DESCRIPTIONS, ExitCode, exit_code_for_status
-from relevance_plan.planning.loop import PlanResult, PlanStatus, plan_task
+from relevance_plan.planning.loop import plan_task
+from relevance_plan.planning.results import PlanResult, PlanStatus
 from relevance_plan.relevance.prune import Selection
 from relevance_plan.relevance.scorers import PlanningTask
 from relevance_plan.relevance.setup import Scoring, ScoringOptions, score_problem

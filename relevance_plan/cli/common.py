@@ -19,8 +19,9 @@ import click
 
 from relevance_plan.errors import InputFileError, RelevancePlanError, UsageError, ValidatorUnavailableError
 from relevance_plan.exitcodes import ExitCode, exit_code_for_error
-from relevance_plan.planning.loop import METHODS, PlanOptions, PlanResult
+from relevance_plan.planning.loop import METHODS, PlanOptions
 from relevance_plan.planning.planners.registry import DEFAULT_PLANNER, DEFAULT_PLANNER_CONFIG
+from relevance_plan.planning.results import PlanResult
 from relevance_plan.planning.validate import VALIDATOR_CHOICES
 from relevance_plan.relevance.prune import DEFAULT_TAU, Thresholds
 from relevance_plan.relevance.scorers import SCORERS

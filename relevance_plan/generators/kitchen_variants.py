@@ -31,7 +31,7 @@ from relevance_plan.errors import UsageError
 from relevance_plan.generators.generate import (
     GENERATOR,
     GeneratedProblem,
-    SuiteProblem,
+    SuiteEntry,
     check_suite_arguments,
     generate_problem,
     problem_name,
@@ -157,10 +157,10 @@ def generate_variant_suite(
         "distractors": distractors,
     }
 
-    def make(index: int) -> SuiteProblem:
+    def make(index: int) -> SuiteEntry:
         problem = generate_variant_problem(world, difficulty, seed, index, distractors)
         entry = {"distractor_count": problem.sidecar["distractor_count"]}
-        return SuiteProblem(problem.name, problem.pddl_text, sidecar_json(problem.sidecar), entry)
+        return SuiteEntry(problem.name, problem.pddl_text, sidecar_json(problem.sidecar), entry)
 
     names = [problem_name(world, difficulty, index) for index in range(1, count + 1)]
     return write_suite(out_dir, DOMAINS_DIR / world / "domain.pddl", names, make, manifest, progress, force)

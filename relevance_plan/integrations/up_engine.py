@@ -66,9 +66,10 @@ from relevance_plan.errors import RelevancePlanError, UsageError
 from relevance_plan.pddl.model import Domain
 from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.pddl.plans import Plan, PlanStep
-from relevance_plan.planning.loop import Attempt, PlanOptions, PlanStatus, run_attempts, summarise
+from relevance_plan.planning.loop import PlanOptions, run_attempts, summarise
 from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome
 from relevance_plan.planning.planners.up.adapter import UP_STATUS, up_status_name
+from relevance_plan.planning.results import Attempt, PlanStatus
 from relevance_plan.planning.validate import validate_plan
 from relevance_plan.relevance.knowledge import KnowledgeModel, load_model
 from relevance_plan.relevance.prune import DEFAULT_TAU, Selection, Thresholds, widen
@@ -580,7 +581,17 @@ def _solve_whole(inner: _InnerPlanner, options: PlanOptions, started: float) -> 
     if limit is not None and limit <= 0:
         return []
     outcome = inner(None, limit)
-    return [Attempt(1, len(inner.problem.all_objects), None, 0, outcome, None, limit)]
+    return [
+        Attempt(
+            number=1,
+            objects_kept=len(inner.problem.all_objects),
+            thresholds=None,
+            added_back=0,
+            outcome=outcome,
+            validation=None,
+            time_limit=limit,
+        )
+    ]
 
 
 def _final_status(result, found, attempts) -> tuple[PlanGenerationResultStatus, str]:

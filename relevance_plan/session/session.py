@@ -40,8 +40,9 @@ from relevance_plan.pddl.formulas import Formula
 from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.plans import Plan
 from relevance_plan.pddl.writer import write_pruned_problem
-from relevance_plan.planning.loop import PlanOptions, PlanResult, PlanStatus, run_attempts, summarise
+from relevance_plan.planning.loop import PlanOptions, run_attempts, summarise
 from relevance_plan.planning.planners.base import RunOutcome
+from relevance_plan.planning.results import PlanResult, PlanStatus
 from relevance_plan.planning.validate import validate_plan
 from relevance_plan.relevance.analysis import ConstraintRule, FactIndex, single_valued_predicates
 from relevance_plan.relevance.knowledge import KnowledgeModel

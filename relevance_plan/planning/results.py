@@ -1,0 +1,218 @@
+"""The records of a planning run, and the one chain of statuses from a planner's run to the exit code.
+
+A planner run ends in a :class:`~relevance_plan.planning.planners.base.PlannerStatus`;
+an :class:`Attempt` (one run on one object set) in an :class:`AttemptStatus`,
+which is the planner's status unless a plan was found, and then what its
+validation on the original problem said; a problem's :class:`PlanResult` in a
+:class:`PlanStatus`, taken from the last attempt (``PLANNER_TO_PLAN_STATUS``
+and ``loop.summarise``); the CLI's exit code from the :class:`PlanStatus`
+(``exitcodes.PLAN_STATUS_EXIT``).  docs/how-it-works.md has the whole table.
+"""
+
+from __future__ import annotations
+
+import enum
+from dataclasses import dataclass, field
+from typing import Any
+
+from relevance_plan.pddl.model import Problem
+from relevance_plan.pddl.plans import Plan, format_plan
+from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome
+from relevance_plan.planning.planners.registry import DEFAULT_PLANNER
+from relevance_plan.planning.validate import ValidationResult, ValidationStatus
+from relevance_plan.relevance.prune import Selection, Thresholds
+
+
+class PlanStatus(enum.Enum):
+    """A problem's verdict.  These values are stored in results stores: never respell them."""
+
+    SOLVED = "solved"
+    UNSOLVABLE = "unsolvable"
+    NO_VALID_PLAN = "no-valid-plan"
+    OUT_OF_TIME = "out-of-time"
+    OUT_OF_MEMORY = "out-of-memory"
+    INSUFFICIENT_CUES = "insufficient-cues"
+    INPUT_ERROR = "input-error"
+    UNSUPPORTED = "unsupported"  # the planner cannot take the problem's features
+    PLANNER_CONFIG_ERROR = "planner-config-error"
+    PLANNER_ERROR = "planner-error"
+    VALIDATOR_UNAVAILABLE = "validator-unavailable"
+
+
+class AttemptStatus(enum.Enum):
+    """How one attempt ended: the planner's status, or for a found plan what validation said.
+
+    The planner's statuses are spelled as :class:`PlannerStatus` spells them (a test checks it).
+    """
+
+    SOLVED = "solved"  # a plan, valid on the original problem (or not validated: --validator none)
+    PLAN_INVALID = "plan-invalid"
+    PLAN_UNAVAILABLE = "plan-unavailable"  # a plan, but no validator could run
+    PLAN_OUT_OF_TIME = "plan-out-of-time"  # a plan, but validating it ran out of time
+    UNSOLVABLE = "unsolvable"
+    SEARCH_INCOMPLETE = "search-incomplete"
+    OUT_OF_TIME = "out-of-time"
+    OUT_OF_MEMORY = "out-of-memory"
+    INPUT_ERROR = "input-error"
+    PLANNER_CONFIG_ERROR = "planner-config-error"
+    UNSUPPORTED = "unsupported"
+    PLANNER_CRASH = "planner-crash"
+
+
+_VALIDATION_FAILURE = {
+    ValidationStatus.INVALID: AttemptStatus.PLAN_INVALID,
+    ValidationStatus.UNAVAILABLE: AttemptStatus.PLAN_UNAVAILABLE,
+    ValidationStatus.OUT_OF_TIME: AttemptStatus.PLAN_OUT_OF_TIME,
+}
+
+
+@dataclass(frozen=True, kw_only=True)
+class Attempt:
+    """One planner run on one object set; a found plan was validated on the original problem."""
+
+    number: int
+    objects_kept: int
+    thresholds: Thresholds | None  # None for the full problem
+    added_back: int  # removed objects put back by rank at this widening
+    outcome: RunOutcome
+    validation: ValidationResult | None
+    time_limit: float | None
+    validation_time: float = 0.0
+    selection: Selection | None = None  # the objects it planned on (None: the user's full problem)
+
+    @property
+    def full(self) -> bool:
+        return self.thresholds is None
+
+    @property
+    def status(self) -> AttemptStatus:
+        if self.outcome.status is PlannerStatus.SOLVED and self.validation is not None:
+            return AttemptStatus.SOLVED if self.validation.accepted else _VALIDATION_FAILURE[self.validation.status]
+        return AttemptStatus(self.outcome.status.value)
+
+
+@dataclass(frozen=True)
+class PlanResult:
+    method: str
+    status: PlanStatus
+    plan: Plan = Plan()
+    plan_cost: float | None = None
+    validation: ValidationResult | None = None
+    attempts: tuple = ()
+    wall_time: float = 0.0
+    relevance_time: float = 0.0
+    planner_time: float = 0.0
+    validation_time: float = 0.0
+    objects_total: int = 0
+    objects_kept: int = 0
+    selection: Selection | None = None  # the first attempt's objects (None: pure planning)
+    message: str = ""
+    peak_memory_mb: float = 0.0
+    planner: str = DEFAULT_PLANNER
+    scorer: str | None = None
+    log_tail: str = ""  # the last planner's log tail when it failed
+    problem: Problem | None = field(default=None, repr=False)  # the original problem (for the user's spelling)
+    unpruned_reason: str = ""  # why the input could not be pruned at all (reader or analysis refused it)
+    planner_choice: str = ""  # why the default planner chose ``planner``
+    compilations: tuple[str, ...] = ()  # what was compiled away for the planner (planning.compile)
+    plans: tuple[Plan, ...] = ()  # an anytime planner's valid plans, in the order found (``plan`` is the last)
+    raced: str = ""  # with a race: which side gave the result, "full" or "pruned" (planning.race)
+
+    def plan_text(self) -> str:
+        """The plan in the IPC format, object names in the user's spelling."""
+        return format_plan(self.plan, self.problem.display if self.problem is not None else None)
+
+    @property
+    def valid(self) -> bool:
+        return self.validation is not None and self.validation.valid
+
+    @property
+    def pruned(self) -> bool:
+        """Whether the first attempt planned on fewer objects than the problem has."""
+        return self.selection is not None and bool(self.selection.removed)
+
+    @property
+    def why_unpruned(self) -> str | None:
+        """Why every object was kept (None when the problem was pruned)."""
+        if self.pruned:
+            return None
+        if self.unpruned_reason:
+            return self.unpruned_reason
+        if self.selection is not None:
+            return self.selection.unpruned or None
+        return "method 'pure' plans the full problem" if self.method == "pure" else None
+
+    @property
+    def first_attempt_status(self) -> str:
+        """The first attempt's status value; without attempts, the result's own."""
+        if self.attempts:
+            return self.attempts[0].status.value
+        return self.status.value
+
+    def to_json(self) -> dict:
+        return {
+            "method": self.method,
+            "planner": self.planner,
+            "planner_choice": self.planner_choice or None,
+            "status": self.status.value,
+            "valid": self.valid,
+            "validation": self.validation.status.value if self.validation else None,
+            "validator": self.validation.validator if self.validation else None,
+            "pruned": self.pruned,
+            "unpruned_reason": self.why_unpruned,
+            "plan_length": len(self.plan) if self.status is PlanStatus.SOLVED else None,
+            "plan_cost": self.plan_cost,
+            "wall_time": round(self.wall_time, 4),
+            "relevance_time": round(self.relevance_time, 4),
+            "planner_time": round(self.planner_time, 4),
+            "validation_time": round(self.validation_time, 4),
+            "objects_total": self.objects_total,
+            "objects_kept": self.objects_kept,
+            "attempts": len(self.attempts),
+            "first_attempt_status": self.first_attempt_status,
+            "attempt_log": [
+                {
+                    "attempt": a.number,
+                    "objects_kept": a.objects_kept,
+                    "tau_class": a.thresholds.tau_class if a.thresholds else None,
+                    "tau_element": a.thresholds.tau_element if a.thresholds else None,
+                    "added_back": a.added_back,
+                    "time_limit": None if a.time_limit is None else round(a.time_limit, 3),
+                    "planner_status": a.outcome.status.value,
+                    "planner_exit_code": a.outcome.exit_code,
+                    "status": a.status.value,
+                    "wall_time": round(a.outcome.wall_time, 4),
+                    **_objects_of(a),
+                }
+                for a in self.attempts
+            ],
+            "peak_memory_mb": round(self.peak_memory_mb, 1),
+            "message": self.message,
+            "compilations": list(self.compilations),
+            "raced": self.raced or None,
+            "anytime_plans": [{"plan_length": len(plan), "plan_cost": plan.cost} for plan in self.plans],
+            # one IPC line per step: a timed step keeps its start time and duration
+            "plan": [format_plan((s,)).splitlines()[0] for s in self.plan.steps]
+            if self.status is PlanStatus.SOLVED
+            else [],
+        }
+
+
+def _objects_of(attempt: Attempt) -> dict[str, Any]:
+    """The attempt's kept, removed and restored objects (with reasons); the full problem keeps all."""
+    if attempt.selection is None:
+        return {"pruned": False, "kept": "all", "removed": [], "restored": []}
+    described = attempt.selection.describe()
+    return {key: described[key] for key in ("pruned", "unpruned_reason", "kept", "removed", "restored", "set_aside")}
+
+
+PLANNER_TO_PLAN_STATUS = {
+    PlannerStatus.UNSOLVABLE: PlanStatus.UNSOLVABLE,
+    PlannerStatus.SEARCH_INCOMPLETE: PlanStatus.NO_VALID_PLAN,
+    PlannerStatus.OUT_OF_TIME: PlanStatus.OUT_OF_TIME,
+    PlannerStatus.OUT_OF_MEMORY: PlanStatus.OUT_OF_MEMORY,
+    PlannerStatus.INPUT_ERROR: PlanStatus.INPUT_ERROR,
+    PlannerStatus.PLANNER_CONFIG_ERROR: PlanStatus.PLANNER_CONFIG_ERROR,
+    PlannerStatus.UNSUPPORTED: PlanStatus.UNSUPPORTED,
+    PlannerStatus.PLANNER_CRASH: PlanStatus.PLANNER_ERROR,
+}
