@@ -1,0 +1,87 @@
+"""The benchmark corpus in ``benchmarks/corpus``: whole against its manifest, and readable by the project.
+
+No planner runs; reading every folder's domain and first problem takes a few seconds.
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import pytest
+from corpus import corpus_root, folders, known_unreadable, manifest, mismatches
+from support import REPO
+
+from relevance_plan.errors import RelevancePlanError
+from relevance_plan.io import find_suite_problems, load_domain, load_problem
+
+SCRIPT = REPO / "benchmarks" / "corpus.py"
+
+
+def test_verify_finds_the_corpus_whole_and_covers_the_tracks():
+    result = subprocess.run(
+        [sys.executable, str(SCRIPT), "verify", "--json"], capture_output=True, text=True, timeout=60
+    )
+    assert result.returncode == 0, result.stderr
+    counts = json.loads(result.stdout)
+    assert counts["domains"] >= 150
+    assert counts["tracks"].get("temporal", 0) >= 10
+    assert counts["tracks"].get("numeric", 0) >= 10
+    assert counts["tracks"].get("scene-graph", 0) >= 1
+    assert counts["files"] == len(manifest()["files"])
+
+
+def test_verify_names_each_mismatch_on_its_own_line(tmp_path):
+    root = tmp_path / "corpus"
+    (root / "a").mkdir(parents=True)
+    (root / "a" / "domain.pddl").write_text("(define (domain a))\n")
+    (root / "a" / "p1.pddl").write_text("(define (problem p) (:domain a))\n")
+    (root / "stray.pddl").write_text("\n")
+    files = [
+        {"path": "a/domain.pddl", "folder": "a", "role": "domain", "sha256": "0" * 64, "size": 1},
+        {"path": "a/p1.pddl", "folder": "a", "role": "problem", "sha256": "0" * 64, "size": 1},
+        {"path": "a/p3.pddl", "folder": "a", "role": "problem", "sha256": "0" * 64, "size": 1},
+    ]
+    (root / "MANIFEST.json").write_text(json.dumps({"folders": [{"path": "a", "track": "classical"}], "files": files}))
+    lines = mismatches(root)
+    assert lines == [
+        "a/domain.pddl: sha256 differs from the manifest (size 20, manifest says 1)",
+        "a/p1.pddl: sha256 differs from the manifest (size 33, manifest says 1)",
+        "a/p3.pddl: missing",
+        "stray.pddl: not in the manifest",
+    ]
+
+
+def test_every_folder_pairs_each_problem_with_a_domain():
+    data = manifest()
+    expected = {entry["path"]: entry["problems"] for entry in data["folders"]}
+    for folder in folders():
+        entries = find_suite_problems(folder)
+        relative = folder.relative_to(corpus_root()).as_posix()
+        assert len(entries) == expected[relative], relative
+        for entry in entries:
+            assert entry.error is None and entry.domain is not None, (relative, entry)
+
+
+@pytest.mark.parametrize("track", ["temporal", "numeric", "classical", "scene-graph"])
+def test_folders_filters_by_track(track):
+    chosen = folders(track)
+    assert chosen
+    tracks = {entry["path"]: entry["track"] for entry in manifest()["folders"]}
+    assert all(tracks[folder.relative_to(corpus_root()).as_posix()] == track for folder in chosen)
+
+
+def test_each_domain_and_first_problem_reads_or_is_a_known_unreadable_one():
+    unreadable = known_unreadable()
+    refused = {}
+    for folder in folders():
+        relative = folder.relative_to(corpus_root()).as_posix()
+        first = find_suite_problems(folder)[0]
+        try:
+            load_problem(first.problem, load_domain(first.domain))
+        except RelevancePlanError as error:
+            refused[relative] = str(error).splitlines()[0]
+    surprises = sorted(set(refused) - set(unreadable))
+    assert not surprises, "\n".join(f"{name}: {refused[name]}" for name in surprises)
+    assert set(unreadable) <= {entry["path"] for entry in manifest()["folders"]}
