@@ -24,7 +24,7 @@ import sys
 import tempfile
 from pathlib import Path
 
-from padded_worlds import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
+from relevance_plan.generators.padded import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
 
 REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))

@@ -117,19 +117,19 @@ def summary(root: Path | None = None) -> dict:
 
 
 def _verify(args: argparse.Namespace) -> int:
-    problems = mismatches()
+    problems = mismatches(args.root)
     for line in problems:
         print(line, file=sys.stderr)
     if args.json:
-        print(json.dumps(summary()))
+        print(json.dumps(summary(args.root)))
     elif not problems:
-        counts = summary()
+        counts = summary(args.root)
         print(f"corpus ok: {counts['files']} files, {counts['domains']} domain folders")
     return 1 if problems else 0
 
 
 def _list(args: argparse.Namespace) -> int:
-    data = manifest()
+    data = manifest(args.root)
     tracks = sorted({entry["track"] for entry in data["folders"]})
     if args.track is not None and args.track not in tracks:
         print(f"error: no track {args.track!r} in the corpus (tracks: {', '.join(tracks)})", file=sys.stderr)
@@ -156,6 +156,8 @@ def main(argv: list[str] | None = None) -> int:
     verify.add_argument("--json", action="store_true", help="print the counts of files, domains and tracks as JSON")
     listing = commands.add_parser("list", help="the domain folders by track, with their number of problems")
     listing.add_argument("--track", help="only this track (classical, adl, numeric, temporal, ...)")
+    for command in (verify, listing):
+        command.add_argument("--root", type=Path, default=None, help="the corpus folder (default: benchmarks/corpus)")
     args = parser.parse_args(argv)
     try:
         return _verify(args) if args.command == "verify" else _list(args)

@@ -1,13 +1,9 @@
 """Fixtures shared by the test modules; plain helpers are in ``support.py``."""
 
 import os
-import sys
 
 import pytest
-from support import COFFEE_DOMAIN, DOMAINS, REPO
-
-# The padded classic worlds belong to the benchmarks; the tests use the same module.
-sys.path.insert(0, str(REPO / "benchmarks"))
+from support import COFFEE_DOMAIN, DOMAINS
 
 
 def pytest_addoption(parser):
@@ -42,7 +38,7 @@ def coffee_extra_plates():
 @pytest.fixture
 def coffee_files(tmp_path, coffee_domain_path, coffee_extra_plates):
     """The shipped coffee domain and a tiny coffee problem in ``tmp_path / "coffee.pddl"``."""
-    from kitchen import coffee_problem
+    from support import coffee_problem
 
     problem = tmp_path / "coffee.pddl"
     problem.write_text(coffee_problem(extra_plates=coffee_extra_plates))
@@ -52,7 +48,7 @@ def coffee_files(tmp_path, coffee_domain_path, coffee_extra_plates):
 @pytest.fixture
 def copied_coffee_files(tmp_path):
     """A copy of the coffee domain (a test may change it) and a problem with two extra plates, in ``tmp_path``."""
-    from kitchen import coffee_problem
+    from support import coffee_problem
 
     domain = tmp_path / "domain.pddl"
     domain.write_bytes(COFFEE_DOMAIN.read_bytes())

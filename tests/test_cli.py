@@ -5,8 +5,7 @@ import subprocess
 
 import pytest
 from click.testing import CliRunner
-from kitchen import coffee_problem
-from support import COFFEE_DOMAIN, COFFEE_MODEL, TOOL, invoke, write_file
+from support import COFFEE_DOMAIN, COFFEE_MODEL, TOOL, coffee_problem, invoke, write_file
 
 from relevance_plan.cli import main
 from relevance_plan.exitcodes import ExitCode

@@ -1,6 +1,7 @@
 """The benchmark corpus in ``benchmarks/corpus``: whole against its manifest, and readable by the project.
 
-No planner runs; reading every folder's domain and first problem takes a few seconds.
+No planner runs; reading every folder's domain and first problem takes a few seconds.  The
+script is run as a user runs it; the folders are read from its manifest.
 """
 
 from __future__ import annotations
@@ -10,19 +11,29 @@ import subprocess
 import sys
 
 import pytest
-from corpus import corpus_root, folders, known_unreadable, manifest, mismatches
 from support import REPO
 
 from relevance_plan.errors import RelevancePlanError
 from relevance_plan.io import find_suite_problems, load_domain, load_problem
 
 SCRIPT = REPO / "benchmarks" / "corpus.py"
+CORPUS = REPO / "benchmarks" / "corpus"
+
+
+def manifest() -> dict:
+    return json.loads((CORPUS / "MANIFEST.json").read_text(encoding="utf-8"))
+
+
+def folders(track: str | None = None):
+    return [CORPUS / entry["path"] for entry in manifest()["folders"] if track is None or entry["track"] == track]
+
+
+def corpus_script(*arguments: str) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, str(SCRIPT), *arguments], capture_output=True, text=True, timeout=60)
 
 
 def test_verify_finds_the_corpus_whole_and_covers_the_tracks():
-    result = subprocess.run(
-        [sys.executable, str(SCRIPT), "verify", "--json"], capture_output=True, text=True, timeout=60
-    )
+    result = corpus_script("verify", "--json")
     assert result.returncode == 0, result.stderr
     counts = json.loads(result.stdout)
     assert counts["domains"] >= 150
@@ -44,8 +55,9 @@ def test_verify_names_each_mismatch_on_its_own_line(tmp_path):
         {"path": "a/p3.pddl", "folder": "a", "role": "problem", "sha256": "0" * 64, "size": 1},
     ]
     (root / "MANIFEST.json").write_text(json.dumps({"folders": [{"path": "a", "track": "classical"}], "files": files}))
-    lines = mismatches(root)
-    assert lines == [
+    result = corpus_script("verify", "--root", str(root))
+    assert result.returncode == 1
+    assert result.stderr.splitlines() == [
         "a/domain.pddl: sha256 differs from the manifest (size 20, manifest says 1)",
         "a/p1.pddl: sha256 differs from the manifest (size 33, manifest says 1)",
         "a/p3.pddl: missing",
@@ -58,25 +70,25 @@ def test_every_folder_pairs_each_problem_with_a_domain():
     expected = {entry["path"]: entry["problems"] for entry in data["folders"]}
     for folder in folders():
         entries = find_suite_problems(folder)
-        relative = folder.relative_to(corpus_root()).as_posix()
+        relative = folder.relative_to(CORPUS).as_posix()
         assert len(entries) == expected[relative], relative
         for entry in entries:
             assert entry.error is None and entry.domain is not None, (relative, entry)
 
 
 @pytest.mark.parametrize("track", ["temporal", "numeric", "classical", "scene-graph"])
-def test_folders_filters_by_track(track):
-    chosen = folders(track)
-    assert chosen
-    tracks = {entry["path"]: entry["track"] for entry in manifest()["folders"]}
-    assert all(tracks[folder.relative_to(corpus_root()).as_posix()] == track for folder in chosen)
+def test_list_shows_a_track_s_folders_and_only_them(track):
+    result = corpus_script("list", "--track", track)
+    assert result.returncode == 0, result.stderr
+    listed = {line.split()[0] for line in result.stdout.splitlines()[1:]}
+    assert listed == {entry["path"] for entry in manifest()["folders"] if entry["track"] == track}
 
 
 def test_each_domain_and_first_problem_reads_or_is_a_known_unreadable_one():
-    unreadable = known_unreadable()
+    unreadable = {entry["folder"]: entry["error"] for entry in manifest().get("known_unreadable", [])}
     refused = {}
     for folder in folders():
-        relative = folder.relative_to(corpus_root()).as_posix()
+        relative = folder.relative_to(CORPUS).as_posix()
         first = find_suite_problems(folder)[0]
         try:
             load_problem(first.problem, load_domain(first.domain))

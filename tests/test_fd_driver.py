@@ -6,8 +6,7 @@ import sys
 from pathlib import Path
 
 import pytest
-from support import write_file
-from test_runner import GRIPPER_DOMAIN, gripper_problem
+from support import SMALL_GRIPPER_DOMAIN, small_gripper_problem, write_file
 
 from relevance_plan.planning.planners.base import PlannerStatus
 from relevance_plan.planning.planners.fast_downward import adapter as fast_downward
@@ -34,15 +33,15 @@ def _run(domain: Path, problem: Path, monkeypatch: pytest.MonkeyPatch, full: boo
 @pytest.mark.parametrize(
     ("problem_text", "config", "status", "code"),
     [
-        (gripper_problem(), "lama-first", PlannerStatus.SOLVED, 0),
-        (gripper_problem(), "astar(blind())", PlannerStatus.SOLVED, 0),
-        (gripper_problem(free_gripper=False), "lama-first", PlannerStatus.UNSOLVABLE, 11),
-        (gripper_problem().replace("(free left))", "(free left)"), "lama-first", PlannerStatus.INPUT_ERROR, 31),
-        (gripper_problem(), "astar(no_such_heuristic())", PlannerStatus.PLANNER_CONFIG_ERROR, 33),
+        (small_gripper_problem(), "lama-first", PlannerStatus.SOLVED, 0),
+        (small_gripper_problem(), "astar(blind())", PlannerStatus.SOLVED, 0),
+        (small_gripper_problem(free_gripper=False), "lama-first", PlannerStatus.UNSOLVABLE, 11),
+        (small_gripper_problem().replace("(free left))", "(free left)"), "lama-first", PlannerStatus.INPUT_ERROR, 31),
+        (small_gripper_problem(), "astar(no_such_heuristic())", PlannerStatus.PLANNER_CONFIG_ERROR, 33),
     ],
 )
 def test_the_lean_driver_ends_as_the_driver_does(tmp_path, monkeypatch, problem_text, config, status, code):
-    domain = write_file(tmp_path, "domain.pddl", GRIPPER_DOMAIN)
+    domain = write_file(tmp_path, "domain.pddl", SMALL_GRIPPER_DOMAIN)
     problem = write_file(tmp_path, "p.pddl", problem_text)
     lean, lean_log = _run(domain, problem, monkeypatch, full=False, config=config)
     full, full_log = _run(domain, problem, monkeypatch, full=True, config=config)
@@ -56,8 +55,8 @@ def test_the_lean_driver_ends_as_the_driver_does(tmp_path, monkeypatch, problem_
 @pytest.mark.parametrize("config", ["lama", "no-such-alias"])
 def test_an_alias_only_the_driver_reads_goes_to_the_driver(tmp_path, monkeypatch, config):
     # seq-sat-lama-2011 (``lama``) needs the driver's --if-unit-cost; an unknown alias gets the driver's own error
-    domain = write_file(tmp_path, "domain.pddl", GRIPPER_DOMAIN)
-    problem = write_file(tmp_path, "p.pddl", gripper_problem())
+    domain = write_file(tmp_path, "domain.pddl", SMALL_GRIPPER_DOMAIN)
+    problem = write_file(tmp_path, "p.pddl", small_gripper_problem())
     outcome, log = _run(domain, problem, monkeypatch, full=False, config=config)
     if config == "lama":
         assert outcome.status is PlannerStatus.SOLVED and outcome.plan_cost == 3
@@ -68,8 +67,8 @@ def test_an_alias_only_the_driver_reads_goes_to_the_driver(tmp_path, monkeypatch
 
 @pytest.mark.planner
 def test_driver_options_after_the_inputs_go_to_the_driver(tmp_path, monkeypatch):
-    domain = write_file(tmp_path, "domain.pddl", GRIPPER_DOMAIN)
-    problem = write_file(tmp_path, "p.pddl", gripper_problem())
+    domain = write_file(tmp_path, "domain.pddl", SMALL_GRIPPER_DOMAIN)
+    problem = write_file(tmp_path, "p.pddl", small_gripper_problem())
     extra = ("--translate-options", "--invariant-generation-max-candidates", "0")
     outcome, log = _run(domain, problem, monkeypatch, full=False, extra_arguments=extra)
     assert outcome.status is PlannerStatus.SOLVED
@@ -78,8 +77,8 @@ def test_driver_options_after_the_inputs_go_to_the_driver(tmp_path, monkeypatch)
 
 @pytest.mark.planner
 def test_the_intermediate_file_is_removed_unless_kept(tmp_path, monkeypatch):
-    domain = write_file(tmp_path, "domain.pddl", GRIPPER_DOMAIN)
-    problem = write_file(tmp_path, "p.pddl", gripper_problem())
+    domain = write_file(tmp_path, "domain.pddl", SMALL_GRIPPER_DOMAIN)
+    problem = write_file(tmp_path, "p.pddl", small_gripper_problem())
     outcome, log = _run(domain, problem, monkeypatch, full=False)  # a work folder: --keep-sas-file
     assert outcome.status is PlannerStatus.SOLVED and LEAN_MARK in log
     assert list(tmp_path.glob("work-*/output.sas"))

@@ -14,8 +14,7 @@ from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
-from kitchen import coffee_problem, goal_of, replace_goal
-from support import COFFEE_DOMAIN, COFFEE_MODEL, alias_bomb, write_file
+from support import COFFEE_DOMAIN, COFFEE_MODEL, alias_bomb, coffee_problem, goal_of, replace_goal, write_file
 
 from relevance_plan.cli import main
 from relevance_plan.exitcodes import ExitCode

@@ -6,8 +6,7 @@ from __future__ import annotations
 import time
 
 import pytest
-from kitchen import coffee_problem, nested_goal
-from support import COFFEE_DOMAIN, alias_bomb, one_line_error, run
+from support import COFFEE_DOMAIN, alias_bomb, coffee_problem, nested_goal, one_line_error, run
 
 from relevance_plan.exitcodes import ExitCode
 

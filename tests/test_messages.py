@@ -6,8 +6,7 @@ from __future__ import annotations
 import os
 
 import pytest
-from kitchen import coffee_problem
-from support import COFFEE_DOMAIN, COFFEE_MODEL, one_line_error, run
+from support import COFFEE_DOMAIN, COFFEE_MODEL, coffee_problem, one_line_error, run
 
 from relevance_plan.exitcodes import ExitCode
 

@@ -1,7 +1,7 @@
 """Reading PDDL, error lines, and writing pruned problems that keep the user's text."""
 
 import pytest
-from kitchen import coffee_problem
+from support import coffee_problem
 
 from relevance_plan.errors import DomainMismatchError, PDDLParseError, UnsupportedFeatureError
 from relevance_plan.io import load_domain

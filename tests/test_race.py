@@ -6,8 +6,7 @@ import sys
 import time
 
 import pytest
-from support import process_gone
-from test_planners import script
+from support import planner_script, process_gone
 
 from relevance_plan.planning.loop import PlanOptions, plan_task
 from relevance_plan.planning.race import Race, race_by_default, usable_cores
@@ -31,7 +30,7 @@ SPLIT_PLANNER = """
 def split_planner(tmp_path, hang_on_pruned: bool) -> tuple[str, object]:
     marker = tmp_path / "hanging.pids"
     body = SPLIT_PLANNER.format(hang_on_pruned=hang_on_pruned, marker=str(marker))
-    return "cmd:" + script(tmp_path, "split", body) + " {domain} {problem}", marker
+    return "cmd:" + planner_script(tmp_path, "split", body) + " {domain} {problem}", marker
 
 
 def hung_pids(marker) -> list[int]:

@@ -3,11 +3,11 @@
 import math
 
 import pytest
-from kitchen import coffee_problem
-from padded_worlds import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
+from support import coffee_problem
 
 from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.errors import ModelError, UsageError
+from relevance_plan.generators.padded import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
 from relevance_plan.generators.sized import generate_sized_problem
 from relevance_plan.io import load_domain
 from relevance_plan.pddl.parser import read_domain, read_problem

@@ -7,12 +7,11 @@ import os
 from pathlib import Path
 
 import pytest
-from kitchen import coffee_problem
-from padded_worlds import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
-from test_soundness import WORLDS
+from support import WORLDS, coffee_problem
 
 from relevance_plan.data import DOMAINS_DIR, PROBLEMS_DIR
 from relevance_plan.errors import RelevancePlanError
+from relevance_plan.generators.padded import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
 from relevance_plan.pddl.formatter import format_domain, format_problem
 from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.parser import read_domain, read_problem

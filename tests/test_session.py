@@ -7,11 +7,11 @@ import random
 
 import pytest
 from click.testing import CliRunner
-from kitchen import coffee_problem
-from padded_worlds import BLOCKSWORLD_DOMAIN, blocksworld_problem
+from support import coffee_problem
 
 from relevance_plan.cli import main
 from relevance_plan.data import DOMAINS_DIR, PROBLEMS_DIR
+from relevance_plan.generators.padded import BLOCKSWORLD_DOMAIN, blocksworld_problem
 from relevance_plan.io import load_domain, load_task
 from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.pddl.plans import read_plan

@@ -5,10 +5,25 @@ rule some of them break."""
 
 from __future__ import annotations
 
-import random
 from pathlib import Path
 
 import pytest
+from support import (
+    ALARM,
+    GUARDED,
+    LIFT,
+    NOISE,
+    ROOMS,
+    SCENE,
+    UNTYPED_LIFT,
+    WORLDS,
+    alarm_problem,
+    guarded_problem,
+    lift_problem,
+    noise_problem,
+    rooms_problem,
+    scene_problem,
+)
 
 from relevance_plan.io import load_task
 from relevance_plan.pddl.parser import read_domain, read_problem
@@ -17,208 +32,6 @@ from relevance_plan.planning.validate import validate_plan
 from relevance_plan.relevance.scorers import PlanningTask
 from relevance_plan.relevance.setup import score_problem
 from relevance_plan.relevance.soundness import KeptObjects
-
-LIFT = """(define (domain lift-adl)
-  (:requirements :adl)
-  (:types passenger floor)
-  (:predicates (origin ?p - passenger ?f - floor) (destin ?p - passenger ?f - floor)
-               (boarded ?p - passenger) (served ?p - passenger) (lift-at ?f - floor))
-  (:action move :parameters (?f1 ?f2 - floor)
-    :precondition (lift-at ?f1)
-    :effect (and (not (lift-at ?f1)) (lift-at ?f2)))
-  (:action stop :parameters (?f - floor)
-    :precondition (lift-at ?f)
-    :effect (and (forall (?p - passenger) (when (and (boarded ?p) (destin ?p ?f))
-                                                (and (not (boarded ?p)) (served ?p))))
-                 (forall (?p - passenger) (when (and (origin ?p ?f) (not (served ?p))) (boarded ?p))))))
-"""
-
-UNTYPED_LIFT = LIFT.replace("(:types passenger floor)", "").replace(" - passenger", "").replace(" - floor", "")
-UNTYPED_LIFT = UNTYPED_LIFT.replace("(lift-at ?f))", "(lift-at ?f) (passenger ?p) (floor ?f) (junk ?j))", 1)
-UNTYPED_LIFT = UNTYPED_LIFT.replace(
-    "(forall (?p) (when (and (boarded ?p)", "(forall (?p) (when (and (passenger ?p) (boarded ?p)"
-)
-
-ROOMS = """(define (domain rooms)
-  (:requirements :adl)
-  (:types robot room item)
-  (:predicates (at ?r - robot ?x - room) (in ?i - item ?x - room) (door ?a - room ?b - room)
-               (sealed ?x - room))
-  (:action go :parameters (?r - robot ?a - room ?b - room)
-    :precondition (and (at ?r ?a) (door ?a ?b))
-    :effect (and (not (at ?r ?a)) (at ?r ?b)))
-  (:action seal :parameters (?r - robot ?x - room)
-    :precondition (and (at ?r ?x) (forall (?i - item) (not (in ?i ?x))))
-    :effect (sealed ?x))
-  (:action carry :parameters (?r - robot ?i - item ?a - room ?b - room)
-    :precondition (and (at ?r ?a) (in ?i ?a) (door ?a ?b))
-    :effect (and (not (in ?i ?a)) (in ?i ?b) (not (at ?r ?a)) (at ?r ?b))))
-"""
-
-GUARDED = """(define (domain guarded)
-  (:requirements :adl :derived-predicates)
-  (:types agent cell guard)
-  (:predicates (at ?a - agent ?c - cell) (adj ?c ?d - cell) (watch ?g - guard ?c - cell) (seen ?c - cell))
-  (:derived (seen ?c - cell) (exists (?g - guard) (watch ?g ?c)))
-  (:action step :parameters (?a - agent ?c ?d - cell)
-    :precondition (and (at ?a ?c) (adj ?c ?d) (not (seen ?d)))
-    :effect (and (not (at ?a ?c)) (at ?a ?d))))
-"""
-
-ALARM = """(define (domain alarm)
-  (:requirements :adl)
-  (:types thief spot alarm)
-  (:predicates (at ?t - thief ?s - spot) (link ?s ?u - spot) (armed ?a - alarm) (covers ?a - alarm ?s - spot)
-               (caught ?t - thief) (took ?t - thief))
-  (:action go :parameters (?t - thief ?s ?u - spot)
-    :precondition (and (at ?t ?s) (link ?s ?u))
-    :effect (and (not (at ?t ?s)) (at ?t ?u)
-                 (when (exists (?a - alarm) (and (armed ?a) (covers ?a ?u))) (caught ?t))))
-  (:action grab :parameters (?t - thief ?s - spot)
-    :precondition (and (at ?t ?s) (not (caught ?t)))
-    :effect (took ?t)))
-"""
-
-SCENE = """(define (domain scene)
-  (:requirements :adl)
-  (:types agent place receptacle item)
-  (:predicates (at ?a - agent ?p - place) (link ?p ?q - place) (item-at ?i - item ?p - place)
-               (rec-at ?r - receptacle ?p - place) (inside ?i - item ?r - receptacle)
-               (opened ?r - receptacle) (holding ?a - agent ?i - item) (free ?a - agent))
-  (:action go :parameters (?a - agent ?p ?q - place)
-    :precondition (and (at ?a ?p) (link ?p ?q))
-    :effect (and (not (at ?a ?p)) (at ?a ?q)))
-  (:action open :parameters (?a - agent ?r - receptacle ?p - place)
-    :precondition (and (at ?a ?p) (rec-at ?r ?p))
-    :effect (opened ?r))
-  (:action pick-loose :parameters (?a - agent ?i - item ?p - place)
-    :precondition (and (at ?a ?p) (item-at ?i ?p) (free ?a) (forall (?r - receptacle) (not (inside ?i ?r))))
-    :effect (and (holding ?a ?i) (not (free ?a)) (not (item-at ?i ?p))))
-  (:action pick-from :parameters (?a - agent ?i - item ?r - receptacle ?p - place)
-    :precondition (and (at ?a ?p) (rec-at ?r ?p) (inside ?i ?r) (opened ?r) (free ?a))
-    :effect (and (holding ?a ?i) (not (free ?a)) (not (inside ?i ?r)) (not (item-at ?i ?p))))
-  (:action put :parameters (?a - agent ?i - item ?r - receptacle ?p - place)
-    :precondition (and (at ?a ?p) (rec-at ?r ?p) (holding ?a ?i))
-    :effect (and (inside ?i ?r) (item-at ?i ?p) (free ?a) (not (holding ?a ?i)))))
-"""
-
-NOISE = """(define (domain noise)
-  (:requirements :adl)
-  (:types agent cell sleeper)
-  (:predicates (at ?a - agent ?c - cell) (adj ?c ?d - cell) (near ?s - sleeper ?c - cell) (woken))
-  (:action step :parameters (?a - agent ?c ?d - cell)
-    :precondition (and (at ?a ?c) (adj ?c ?d))
-    :effect (and (not (at ?a ?c)) (at ?a ?d) (forall (?s - sleeper) (when (near ?s ?d) (woken))))))
-"""
-
-
-def lift_problem(seed: int, untyped: bool = False) -> str:
-    rng = random.Random(seed)
-    passengers, floors = 12, 24
-    init = ["(lift-at f0)"]
-    for i in range(passengers):
-        a, b = rng.sample(range(floors), 2)
-        init += [f"(origin p{i} f{a})", f"(destin p{i} f{b})"]
-        if rng.random() < 0.5:
-            init.append(f"(served p{i})")
-    if untyped:
-        init += [f"(passenger p{i})" for i in range(passengers)] + [f"(floor f{i})" for i in range(floors)]
-        init += [f"(junk j{i})" for i in range(30)]
-        objects = " ".join([f"p{i}" for i in range(passengers)] + [f"f{i}" for i in range(floors)])
-        objects += " " + " ".join(f"j{i}" for i in range(30))
-        goal = "(forall (?p) (imply (passenger ?p) (served ?p)))"
-    else:
-        objects = " ".join(f"p{i}" for i in range(passengers)) + " - passenger "
-        objects += " ".join(f"f{i}" for i in range(floors)) + " - floor"
-        goal = "(forall (?p - passenger) (served ?p))"
-    header = f"(define (problem lift-{seed}) (:domain lift-adl)"
-    return f"{header} (:objects {objects}) (:init {' '.join(init)}) (:goal {goal}))"
-
-
-def rooms_problem(seed: int) -> str:
-    rng = random.Random(seed)
-    rooms = [f"r{i}" for i in range(8)]
-    doors = [f"(door r{i} r{i + 1}) (door r{i + 1} r{i})" for i in range(7)]
-    items = [f"(in i{k} r{rng.randrange(8)})" for k in range(6)]
-    objects = f"bot - robot {' '.join(rooms)} - room {' '.join(f'i{k}' for k in range(6))} - item"
-    return (
-        f"(define (problem rooms-{seed}) (:domain rooms) (:objects {objects})"
-        f" (:init (at bot r0) {' '.join(doors)} {' '.join(items)}) (:goal (sealed r{rng.randrange(2, 8)})))"
-    )
-
-
-def scene_problem(seed: int, timed: str = "") -> str:
-    """Items in receptacles and loose; the goal holds an item that sits in a receptacle, which a
-    pruned problem without that receptacle would let the agent pick up loose."""
-    rng = random.Random(seed)
-    places = [f"p{i}" for i in range(10)]
-    links = [f"(link p{i} p{i + 1}) (link p{i + 1} p{i})" for i in range(9)]
-    where = {f"r{k}": rng.randrange(10) for k in range(12)}
-    init = ["(at bot p0)", "(free bot)", *links, *(f"(rec-at {r} p{p})" for r, p in where.items())]
-    for k in range(8):
-        if k % 2 == 0:  # in a box in a cabinet: inside both
-            box, cabinet = rng.sample(sorted(where), 2)
-            init += [f"(inside i{k} {box})", f"(inside i{k} {cabinet})", f"(item-at i{k} p{where[box]})"]
-        else:
-            init.append(f"(item-at i{k} p{rng.randrange(10)})")
-    objects = f"bot - agent {' '.join(places)} - place {' '.join(where)} - receptacle"
-    objects += " " + " ".join(f"i{k}" for k in range(8)) + " - item"
-    return (
-        f"(define (problem scene-{seed}) (:domain scene) (:objects {objects})"
-        f" (:init {' '.join(init)} {timed}) (:goal (holding bot i{2 * rng.randrange(4)})))"
-    )
-
-
-def noise_problem(seed: int) -> str:
-    """A short way past sleepers and a long way round; the goal wakes no one.  The sleepers are
-    named nowhere but in the quantified effect's condition; z0 sleeps near no cell."""
-    rng = random.Random(seed)
-    cells = [f"c{i}" for i in range(10)] + [f"d{i}" for i in range(1, 12)]
-    way = ["c0", *(f"d{i}" for i in range(1, 12)), "c9"]
-    links = [(f"c{i}", f"c{i + 1}") for i in range(9)] + list(zip(way, way[1:]))
-    adj = " ".join(f"(adj {a} {b}) (adj {b} {a})" for a, b in links)
-    near = " ".join(f"(near s{k} c{rng.randrange(2, 8)})" for k in range(3))
-    objects = f"a - agent {' '.join(cells)} - cell s0 s1 s2 z0 - sleeper"
-    return (
-        f"(define (problem noise-{seed}) (:domain noise) (:objects {objects})"
-        f" (:init (at a c0) {adj} {near}) (:goal (and (at a c9) (not (woken)))))"
-    )
-
-
-def guarded_problem(seed: int) -> str:
-    rng = random.Random(seed)
-    cells = [f"c{i}" for i in range(20)]
-    adj = [f"(adj c{i} c{j})" for i in range(20) for j in (i + 1, i + 5) if j < 20]
-    adj += [f"(adj c{j} c{i})" for i in range(20) for j in (i + 1, i + 5) if j < 20]
-    guards = [f"(watch g{k} c{rng.randrange(1, 19)})" for k in range(6)]
-    objects = f"a - agent {' '.join(cells)} - cell {' '.join(f'g{k}' for k in range(6))} - guard"
-    return (
-        f"(define (problem guarded-{seed}) (:domain guarded) (:objects {objects})"
-        f" (:init (at a c0) {' '.join(adj)} {' '.join(guards)}) (:goal (at a c19)))"
-    )
-
-
-def alarm_problem(seed: int) -> str:
-    rng = random.Random(seed)
-    spots = [f"s{i}" for i in range(10)]
-    links = [f"(link s{i} s{i + 1})" for i in range(9)] + ["(link s0 s9)"]
-    alarms = [f"(armed a{k}) (covers a{k} s{rng.randrange(1, 9)})" for k in range(5)]
-    objects = f"t - thief {' '.join(spots)} - spot {' '.join(f'a{k}' for k in range(5))} - alarm"
-    return (
-        f"(define (problem alarm-{seed}) (:domain alarm) (:objects {objects})"
-        f" (:init (at t s0) {' '.join(links)} {' '.join(alarms)}) (:goal (and (took t) (at t s9))))"
-    )
-
-
-WORLDS = {
-    "lift": (LIFT, lift_problem),
-    "untyped-lift": (UNTYPED_LIFT, lambda seed: lift_problem(seed, untyped=True)),
-    "rooms": (ROOMS, rooms_problem),
-    "guarded": (GUARDED, guarded_problem),
-    "alarm": (ALARM, alarm_problem),
-    "scene": (SCENE, scene_problem),
-    "noise": (NOISE, noise_problem),
-}
 
 
 def first_kept(domain_text: str, problem_text: str) -> tuple[PlanningTask, frozenset, tuple]:

@@ -1,8 +1,9 @@
 """The shipped worlds copied out of the package, so that a regular install can follow the README.
 
 ``relevance-plan examples DIR`` writes ``DIR/domains/<world>/`` (domain and
-knowledge model) and ``DIR/problems/`` (the paper-sized scenes and their
-sidecars): the same relative paths as a clone's root.
+knowledge model), ``DIR/problems/`` (the paper-sized scenes and their
+sidecars) and ``DIR/examples/`` (the live-session demonstration: its scene,
+events and script): the same relative paths as a clone's root.
 """
 
 from __future__ import annotations
@@ -12,15 +13,22 @@ import shutil
 import tempfile
 from pathlib import Path
 
-from relevance_plan.data import DATA_DIR, DOMAINS_DIR, PROBLEMS_DIR
+from relevance_plan.data import DATA_DIR, DOMAINS_DIR, EXAMPLES_DIR, PROBLEMS_DIR
 from relevance_plan.errors import InputFileError, UsageError
 from relevance_plan.io import write_bytes_atomic
 
 
 def example_files() -> list[Path]:
     """The package's world files, relative to the data folder, in a stable order."""
-    found = [*DOMAINS_DIR.glob("*/*.pddl"), *DOMAINS_DIR.glob("*/*.yaml"), *PROBLEMS_DIR.glob("*.*")]
-    return sorted(path.relative_to(DATA_DIR) for path in found if path.suffix in (".pddl", ".yaml", ".json"))
+    found = [
+        *DOMAINS_DIR.glob("*/*.pddl"),
+        *DOMAINS_DIR.glob("*/*.yaml"),
+        *PROBLEMS_DIR.glob("*.*"),
+        *EXAMPLES_DIR.glob("*.py"),
+        *EXAMPLES_DIR.glob("*/*.*"),
+    ]
+    shipped = (".pddl", ".yaml", ".json", ".jsonl", ".py")
+    return sorted(path.relative_to(DATA_DIR) for path in found if path.suffix in shipped)
 
 
 def write_examples(target: str | os.PathLike[str]) -> list[Path]:

@@ -4,7 +4,7 @@
 
 The same run from the command line, one JSON line per event:
 
-    relevance-plan watch relevance_plan/data/domains/coffee/domain.pddl examples/coffee-break/scene.pddl \\
+    relevance-plan watch domains/coffee/domain.pddl examples/coffee-break/scene.pddl \\
         --events examples/coffee-break/events.jsonl --objective drink-at-break --plan
 """
 
@@ -81,7 +81,7 @@ def main() -> None:
                 source = "still valid, planner not called" if plan.source == "previous" else "planned"
                 print(f"{'':34}plan: {plan.status.value}, {len(plan.steps)} steps ({source})")
                 for step in plan.steps if plan.source == "planner" else ():
-                    print(f"{'':36}(" + " ".join([step[0]] + [show(a, a) for a in step[1:]]) + ")")
+                    print(f"{'':36}(" + " ".join([step.action] + [show(a, a) for a in step.args]) + ")")
 
 
 if __name__ == "__main__":

@@ -5,10 +5,10 @@ import re
 import time
 
 import pytest
-from kitchen import coffee_problem
-from padded_worlds import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
+from support import coffee_problem
 
 from relevance_plan.errors import RelevancePlanError
+from relevance_plan.generators.padded import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
 from relevance_plan.io import load_task
 from relevance_plan.planning.loop import PlanOptions, plan_task
 from relevance_plan.planning.results import PlanStatus

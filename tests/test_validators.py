@@ -1,7 +1,7 @@
 """The builtin validator agrees with unified-planning's on valid and broken plans."""
 
 import pytest
-from kitchen import coffee_problem
+from support import coffee_problem
 
 from relevance_plan.io import load_domain
 from relevance_plan.pddl.parser import read_domain, read_problem

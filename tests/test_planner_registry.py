@@ -3,21 +3,18 @@
 from __future__ import annotations
 
 import dataclasses
-import stat
-import sys
-import textwrap
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
-from padded_worlds import GRIPPER_DOMAIN, gripper_problem
-from support import running
+from support import planner_script, running
 
 from relevance_plan.cli import main
 from relevance_plan.errors import PlannerError, UnsupportedFeatureError, UsageError
 from relevance_plan.exitcodes import ExitCode
+from relevance_plan.generators.padded import GRIPPER_DOMAIN, gripper_problem
 from relevance_plan.pddl.plans import Plan
 from relevance_plan.planning.loop import PlanOptions, plan_task
 from relevance_plan.planning.planners import auto
@@ -42,14 +39,6 @@ def gripper_files(tmp_path):
     problem = tmp_path / "gripper-p.pddl"
     problem.write_text(gripper_problem(extra=6, rooms=3))
     return domain, problem
-
-
-def script(tmp_path: Path, name: str, body: str) -> str:
-    """An executable Python script standing in for an external planner."""
-    path = tmp_path / name
-    path.write_text(f"#!{sys.executable}\n" + textwrap.dedent(body))
-    path.chmod(path.stat().st_mode | stat.S_IXUSR)
-    return str(path)
 
 
 # A planner that asks Fast Downward and prints its plan on stdout: a real plan from a foreign binary.
@@ -283,7 +272,7 @@ def test_an_external_command_is_classified_by_its_exit_and_output():
 @pytest.mark.planner
 def test_external_command_plan_is_validated_on_the_original(tmp_path, coffee_files):
     domain, problem = coffee_files
-    planner = "cmd:" + script(tmp_path, "fd-stdout", FD_ON_STDOUT) + " {domain} {problem}"
+    planner = "cmd:" + planner_script(tmp_path, "fd-stdout", FD_ON_STDOUT) + " {domain} {problem}"
     result = plan_task(domain, problem, PlanOptions(planner=planner, timeout=60))
     assert result.status is PlanStatus.SOLVED, result.message
     assert result.valid and result.planner == planner
@@ -293,7 +282,7 @@ def test_external_command_plan_is_validated_on_the_original(tmp_path, coffee_fil
 @pytest.mark.planner
 def test_external_command_on_a_classic_problem_with_a_plan_file(tmp_path, gripper_files):
     domain, problem = gripper_files
-    planner = "cmd:" + script(tmp_path, "fd-file", FD_TO_FILE) + " {domain} {problem} {plan}"
+    planner = "cmd:" + planner_script(tmp_path, "fd-file", FD_TO_FILE) + " {domain} {problem} {plan}"
     result = plan_task(domain, problem, PlanOptions(planner=planner, timeout=60))
     assert result.status is PlanStatus.SOLVED, result.message
     assert result.valid and result.objects_kept < result.objects_total
@@ -312,7 +301,7 @@ def test_misbehaving_commands_get_the_right_outcome_and_the_loop_carries_on(
     tmp_path, coffee_files, body, planner_status, plan_status
 ):
     domain, problem = coffee_files
-    planner = "cmd:" + script(tmp_path, "bad", body) + " {domain} {problem}"
+    planner = "cmd:" + planner_script(tmp_path, "bad", body) + " {domain} {problem}"
     result = plan_task(domain, problem, PlanOptions(planner=planner, timeout=30))
     assert result.status is plan_status
     statuses = [a.outcome.status for a in result.attempts]
@@ -333,7 +322,7 @@ def test_a_hanging_command_is_killed_with_its_children(tmp_path, coffee_files):
     open({str(marker)!r}, "w").write(str(child.pid))
     time.sleep(300)
     """
-    planner = CommandPlanner(script(tmp_path, "hang", body) + " {domain} {problem}")
+    planner = CommandPlanner(planner_script(tmp_path, "hang", body) + " {domain} {problem}")
     outcome = planner.run(str(domain), str(problem), time_limit=2.0, memory_limit_mb=None)
     assert outcome.status is PlannerStatus.OUT_OF_TIME and outcome.killed_by_watchdog, outcome
     assert outcome.wall_time < 30

@@ -1,110 +1,39 @@
-"""The Fast Downward adapter (fast_downward.py) and the process supervisor (process.py): real runs, tiny files."""
+"""The Fast Downward adapter: its command line, exit codes, plan files and limits; real runs on tiny files."""
 
 from __future__ import annotations
 
 import os
 import runpy
 import signal
-import sys
-import threading
-import time
-from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 import pytest
-from support import write_file
+from support import (
+    BIG_DOMAIN,
+    SMALL_GRIPPER_DOMAIN,
+    assert_session_gone,
+    big_problem,
+    small_gripper_problem,
+    write_file,
+)
 
 from relevance_plan import errors
 from relevance_plan.planning.planners.base import PlannerStatus
 from relevance_plan.planning.planners.fast_downward import adapter as fast_downward
 from relevance_plan.planning.planners.fast_downward import command as fd_command
-from relevance_plan.supervision import process, spawn
-
-GRIPPER_DOMAIN = """
-(define (domain gripper)
-  (:requirements :strips :typing)
-  (:types room ball gripper)
-  (:predicates (at-robby ?r - room) (at ?b - ball ?r - room)
-               (free ?g - gripper) (carry ?b - ball ?g - gripper))
-  (:action move :parameters (?from ?to - room)
-    :precondition (at-robby ?from)
-    :effect (and (at-robby ?to) (not (at-robby ?from))))
-  (:action pick :parameters (?b - ball ?r - room ?g - gripper)
-    :precondition (and (at ?b ?r) (at-robby ?r) (free ?g))
-    :effect (and (carry ?b ?g) (not (at ?b ?r)) (not (free ?g))))
-  (:action drop :parameters (?b - ball ?r - room ?g - gripper)
-    :precondition (and (carry ?b ?g) (at-robby ?r))
-    :effect (and (at ?b ?r) (free ?g) (not (carry ?b ?g)))))
-"""
-
-
-def gripper_problem(target: str = "roomb", free_gripper: bool = True) -> str:
-    free = "(free left)" if free_gripper else ""
-    return f"""
-(define (problem g) (:domain gripper)
-  (:objects rooma roomb roomc - room ball1 - ball left - gripper)
-  (:init (at-robby rooma) (at ball1 rooma) {free})
-  (:goal (at ball1 {target})))
-"""
-
-
-# n objects give n^3 ground actions: n=30 needs ~125 MB, n=40 ~5.5 s of
-# translation (measured), while the search itself is trivial.
-BIG_DOMAIN = """
-(define (domain big)
-  (:requirements :strips)
-  (:predicates (p ?x) (q ?x ?y ?z) (done))
-  (:action a :parameters (?x ?y ?z)
-    :precondition (and (p ?x) (p ?y) (p ?z))
-    :effect (q ?x ?y ?z))
-  (:action fin :parameters (?x)
-    :precondition (q ?x ?x ?x)
-    :effect (done)))
-"""
-
-
-def big_problem(n: int) -> str:
-    objects = " ".join(f"o{i}" for i in range(n))
-    init = " ".join(f"(p o{i})" for i in range(n))
-    return f"(define (problem big{n}) (:domain big) (:objects {objects}) (:init {init}) (:goal (done)))"
+from relevance_plan.supervision import process
 
 
 @pytest.fixture
 def gripper(tmp_path: Path) -> tuple[Path, Path]:
-    return write_file(tmp_path, "domain.pddl", GRIPPER_DOMAIN), write_file(tmp_path, "p.pddl", gripper_problem())
+    return write_file(tmp_path, "domain.pddl", SMALL_GRIPPER_DOMAIN), write_file(
+        tmp_path, "p.pddl", small_gripper_problem()
+    )
 
 
 @pytest.fixture
 def big40(tmp_path: Path) -> tuple[Path, Path]:
     return write_file(tmp_path, "big.pddl", BIG_DOMAIN), write_file(tmp_path, "big40.pddl", big_problem(40))
-
-
-def live_session_members(session: int) -> list[int]:
-    """Pids of processes in this session that are not zombies (from /proc)."""
-    members = []
-    for entry in Path("/proc").iterdir():
-        if not entry.name.isdigit():
-            continue
-        try:
-            stat = (entry / "stat").read_text()
-        except OSError:
-            continue
-        # Fields after "(comm)": state ppid pgrp session ...
-        fields = stat[stat.rindex(")") + 2 :].split()
-        if int(fields[3]) == session and fields[0] != "Z":
-            members.append(int(entry.name))
-    return members
-
-
-def assert_session_gone(session: int) -> None:
-    # SIGKILL is delivered at once, but exiting (freeing memory) takes a moment.
-    deadline = time.monotonic() + 3.0
-    while live_session_members(session) and time.monotonic() < deadline:
-        time.sleep(0.05)
-    assert live_session_members(session) == []
-
-
-# --- without running the planner ---------------------------------------------
 
 
 def test_planner_arguments() -> None:
@@ -261,8 +190,8 @@ def test_other_configs(gripper: tuple[Path, Path], config: str) -> None:
 
 @pytest.mark.planner
 def test_unsolvable(tmp_path: Path) -> None:
-    domain = write_file(tmp_path, "domain.pddl", GRIPPER_DOMAIN)
-    problem = write_file(tmp_path, "p.pddl", gripper_problem(free_gripper=False))
+    domain = write_file(tmp_path, "domain.pddl", SMALL_GRIPPER_DOMAIN)
+    problem = write_file(tmp_path, "p.pddl", small_gripper_problem(free_gripper=False))
     outcome = fast_downward.run_fast_downward(domain, problem, time_limit=30)
     assert outcome.status is PlannerStatus.UNSOLVABLE
     assert outcome.exit_code == 11 and not outcome.plan.steps and outcome.plan_cost is None
@@ -270,8 +199,8 @@ def test_unsolvable(tmp_path: Path) -> None:
 
 @pytest.mark.planner
 def test_syntax_error_is_input_error(tmp_path: Path) -> None:
-    domain = write_file(tmp_path, "domain.pddl", GRIPPER_DOMAIN)
-    problem = write_file(tmp_path, "p.pddl", gripper_problem().replace("(free left))", "(free left)"))
+    domain = write_file(tmp_path, "domain.pddl", SMALL_GRIPPER_DOMAIN)
+    problem = write_file(tmp_path, "p.pddl", small_gripper_problem().replace("(free left))", "(free left)"))
     outcome = fast_downward.run_fast_downward(domain, problem, time_limit=30)
     assert outcome.status is PlannerStatus.INPUT_ERROR
     assert outcome.exit_code == 31
@@ -308,121 +237,3 @@ def test_out_of_memory(tmp_path: Path) -> None:
     outcome = fast_downward.run_fast_downward(domain, problem, time_limit=20, memory_limit_mb=80)
     assert outcome.status is PlannerStatus.OUT_OF_MEMORY, outcome.log_tail
     assert outcome.exit_code == 20
-
-
-@pytest.mark.planner
-def test_watchdog_kills_whole_process_group(big40: tuple[Path, Path]) -> None:
-    outcome = fast_downward.run_fast_downward(*big40, time_limit=1, driver_limits=False, watchdog_grace=0.5)
-    assert outcome.killed_by_watchdog
-    assert outcome.status is PlannerStatus.OUT_OF_TIME
-    assert outcome.exit_code == -signal.SIGKILL
-    assert 1.4 < outcome.wall_time < 4.0
-    assert_session_gone(outcome.process_group)
-
-
-@pytest.mark.planner
-def test_keyboard_interrupt_kills_process_group(big40: tuple[Path, Path], monkeypatch: pytest.MonkeyPatch) -> None:
-    started: list[int] = []
-    start_guarded = spawn.start_guarded
-
-    def recording(*args, **kwargs):  # type: ignore[no-untyped-def]
-        spawned = start_guarded(*args, **kwargs)
-        started.append(spawned.pid)
-        return spawned
-
-    monkeypatch.setattr(spawn, "start_guarded", recording)
-    # A shell's background job inherits SIGINT ignored; install Python's default.
-    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
-    interrupt = threading.Timer(0.7, os.kill, (os.getpid(), signal.SIGINT))
-    interrupt.start()
-    try:
-        with pytest.raises(KeyboardInterrupt):
-            fast_downward.run_fast_downward(*big40, time_limit=30)
-    finally:
-        interrupt.cancel()
-        signal.signal(signal.SIGINT, previous)
-    assert len(started) == 1
-    assert_session_gone(started[0])
-
-
-@pytest.mark.planner
-def test_parallel_runs_from_threads(tmp_path: Path) -> None:
-    domain = write_file(tmp_path, "domain.pddl", GRIPPER_DOMAIN)
-    problems = {
-        "to_b": write_file(tmp_path, "b.pddl", gripper_problem("roomb")),
-        "to_c": write_file(tmp_path, "c.pddl", gripper_problem("roomc")),
-        "stuck1": write_file(tmp_path, "s1.pddl", gripper_problem("roomb", free_gripper=False)),
-        "stuck2": write_file(tmp_path, "s2.pddl", gripper_problem("roomc", free_gripper=False)),
-    }
-    with ThreadPoolExecutor(max_workers=4) as pool:
-        futures = {
-            name: pool.submit(fast_downward.run_fast_downward, domain, problem, time_limit=30)
-            for name, problem in problems.items()
-        }
-        outcomes = {name: future.result() for name, future in futures.items()}
-    assert str(outcomes["to_b"].plan.steps[-1]) == "(drop ball1 roomb left)"
-    assert str(outcomes["to_c"].plan.steps[-1]) == "(drop ball1 roomc left)"
-    assert outcomes["stuck1"].status is PlannerStatus.UNSOLVABLE
-    assert outcomes["stuck2"].status is PlannerStatus.UNSOLVABLE
-    assert len({outcome.process_group for outcome in outcomes.values()}) == 4
-
-
-@pytest.mark.planner
-def test_terminate_all_runs_stops_every_running_planner(big40: tuple[Path, Path]) -> None:
-    """Batch Ctrl-C: every planner started from threads is killed, none survives."""
-    import threading
-
-    domain, problem = big40
-    outcomes = []
-    threads = [
-        threading.Thread(
-            target=lambda: outcomes.append(fast_downward.run_fast_downward(domain, problem, time_limit=60))
-        )
-        for _ in range(2)
-    ]
-    for thread in threads:
-        thread.start()
-    deadline = time.monotonic() + 20
-    while time.monotonic() < deadline and len(process._ACTIVE_GROUPS) < 2:
-        time.sleep(0.05)
-    assert process.terminate_all_runs() == 2
-    for thread in threads:
-        thread.join(30)
-    assert len(outcomes) == 2
-    assert all(not o.solved for o in outcomes)
-    assert not process._ACTIVE_GROUPS
-    for outcome in outcomes:
-        assert_session_gone(outcome.process_group)
-
-
-def test_the_planner_inherits_no_descriptor_of_ours_and_runs_where_it_was_told(tmp_path: Path) -> None:
-    # an inheritable descriptor the tool's own parent might have left open (a shell's fd 3, say)
-    inherited = os.open(os.devnull, os.O_RDONLY)
-    os.set_inheritable(inherited, True)
-    probe = (
-        "import os, sys\n"
-        f"fd = {inherited}\n"
-        "try:\n    os.fstat(fd)\n    print('open', fd)\nexcept OSError:\n    print('closed', fd)\n"
-        "print('cwd', os.getcwd())\n"
-        "print('stdin', os.read(0, 10))\n"
-    )
-    try:
-        run = process.run_process_group(
-            [sys.executable, "-c", probe], tmp_path, 30, what="a probe", program=sys.executable
-        )
-    finally:
-        os.close(inherited)
-    log = process.read_log(tmp_path)
-    assert run.exit_code == 0, log
-    assert f"closed {inherited}" in log
-    assert f"cwd {tmp_path}" in log
-    assert "stdin b''" in log  # /dev/null, not the tool's terminal
-
-
-def test_the_memory_limit_holds_in_the_planner(tmp_path: Path) -> None:
-    probe = "import resource; print('limit', resource.getrlimit(resource.RLIMIT_AS)[0] // 2**20)"
-    run = process.run_process_group(
-        [sys.executable, "-c", probe], tmp_path, 30, what="a probe", program=sys.executable, memory_limit_mb=900
-    )
-    assert run.exit_code == 0
-    assert "limit 900" in process.read_log(tmp_path)

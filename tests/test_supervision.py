@@ -1,0 +1,149 @@
+"""Process supervision (relevance_plan/supervision/): the watchdog, interrupts, parallel runs, terminating every
+run, what the planner inherits and its memory limit; real Fast Downward runs on tiny files."""
+
+from __future__ import annotations
+
+import os
+import signal
+import sys
+import threading
+import time
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+
+import pytest
+from support import (
+    BIG_DOMAIN,
+    SMALL_GRIPPER_DOMAIN,
+    assert_session_gone,
+    big_problem,
+    small_gripper_problem,
+    write_file,
+)
+
+from relevance_plan.planning.planners.base import PlannerStatus
+from relevance_plan.planning.planners.fast_downward import adapter as fast_downward
+from relevance_plan.supervision import process, spawn
+
+
+@pytest.fixture
+def big40(tmp_path: Path) -> tuple[Path, Path]:
+    return write_file(tmp_path, "big.pddl", BIG_DOMAIN), write_file(tmp_path, "big40.pddl", big_problem(40))
+
+
+@pytest.mark.planner
+def test_watchdog_kills_whole_process_group(big40: tuple[Path, Path]) -> None:
+    outcome = fast_downward.run_fast_downward(*big40, time_limit=1, driver_limits=False, watchdog_grace=0.5)
+    assert outcome.killed_by_watchdog
+    assert outcome.status is PlannerStatus.OUT_OF_TIME
+    assert outcome.exit_code == -signal.SIGKILL
+    assert 1.4 < outcome.wall_time < 4.0
+    assert_session_gone(outcome.process_group)
+
+
+@pytest.mark.planner
+def test_keyboard_interrupt_kills_process_group(big40: tuple[Path, Path], monkeypatch: pytest.MonkeyPatch) -> None:
+    started: list[int] = []
+    start_guarded = spawn.start_guarded
+
+    def recording(*args, **kwargs):  # type: ignore[no-untyped-def]
+        spawned = start_guarded(*args, **kwargs)
+        started.append(spawned.pid)
+        return spawned
+
+    monkeypatch.setattr(spawn, "start_guarded", recording)
+    # A shell's background job inherits SIGINT ignored; install Python's default.
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
+    interrupt = threading.Timer(0.7, os.kill, (os.getpid(), signal.SIGINT))
+    interrupt.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            fast_downward.run_fast_downward(*big40, time_limit=30)
+    finally:
+        interrupt.cancel()
+        signal.signal(signal.SIGINT, previous)
+    assert len(started) == 1
+    assert_session_gone(started[0])
+
+
+@pytest.mark.planner
+def test_parallel_runs_from_threads(tmp_path: Path) -> None:
+    domain = write_file(tmp_path, "domain.pddl", SMALL_GRIPPER_DOMAIN)
+    problems = {
+        "to_b": write_file(tmp_path, "b.pddl", small_gripper_problem("roomb")),
+        "to_c": write_file(tmp_path, "c.pddl", small_gripper_problem("roomc")),
+        "stuck1": write_file(tmp_path, "s1.pddl", small_gripper_problem("roomb", free_gripper=False)),
+        "stuck2": write_file(tmp_path, "s2.pddl", small_gripper_problem("roomc", free_gripper=False)),
+    }
+    with ThreadPoolExecutor(max_workers=4) as pool:
+        futures = {
+            name: pool.submit(fast_downward.run_fast_downward, domain, problem, time_limit=30)
+            for name, problem in problems.items()
+        }
+        outcomes = {name: future.result() for name, future in futures.items()}
+    assert str(outcomes["to_b"].plan.steps[-1]) == "(drop ball1 roomb left)"
+    assert str(outcomes["to_c"].plan.steps[-1]) == "(drop ball1 roomc left)"
+    assert outcomes["stuck1"].status is PlannerStatus.UNSOLVABLE
+    assert outcomes["stuck2"].status is PlannerStatus.UNSOLVABLE
+    assert len({outcome.process_group for outcome in outcomes.values()}) == 4
+
+
+@pytest.mark.planner
+def test_terminate_all_runs_stops_every_running_planner(big40: tuple[Path, Path]) -> None:
+    """Batch Ctrl-C: every planner started from threads is killed, none survives."""
+    import threading
+
+    domain, problem = big40
+    outcomes = []
+    threads = [
+        threading.Thread(
+            target=lambda: outcomes.append(fast_downward.run_fast_downward(domain, problem, time_limit=60))
+        )
+        for _ in range(2)
+    ]
+    for thread in threads:
+        thread.start()
+    deadline = time.monotonic() + 20
+    while time.monotonic() < deadline and len(process._ACTIVE_GROUPS) < 2:
+        time.sleep(0.05)
+    assert process.terminate_all_runs() == 2
+    for thread in threads:
+        thread.join(30)
+    assert len(outcomes) == 2
+    assert all(not o.solved for o in outcomes)
+    assert not process._ACTIVE_GROUPS
+    for outcome in outcomes:
+        assert_session_gone(outcome.process_group)
+
+
+def test_the_planner_inherits_no_descriptor_of_ours_and_runs_where_it_was_told(tmp_path: Path) -> None:
+    # an inheritable descriptor the tool's own parent might have left open (a shell's fd 3, say)
+    inherited = os.open(os.devnull, os.O_RDONLY)
+    os.set_inheritable(inherited, True)
+    probe = (
+        "import os, sys\n"
+        f"fd = {inherited}\n"
+        "try:\n    os.fstat(fd)\n    print('open', fd)\nexcept OSError:\n    print('closed', fd)\n"
+        "print('cwd', os.getcwd())\n"
+        "print('stdin', os.read(0, 10))\n"
+    )
+    try:
+        run = process.run_process_group(
+            [sys.executable, "-c", probe], tmp_path, 30, what="a probe", program=sys.executable
+        )
+    finally:
+        os.close(inherited)
+    log = process.read_log(tmp_path)
+    assert run.exit_code == 0, log
+    assert f"closed {inherited}" in log
+    assert f"cwd {tmp_path}" in log
+    assert "stdin b''" in log  # /dev/null, not the tool's terminal
+
+
+def test_the_memory_limit_holds_in_the_planner(tmp_path: Path) -> None:
+    probe = "import resource; print('limit', resource.getrlimit(resource.RLIMIT_AS)[0] // 2**20)"
+    run = process.run_process_group(
+        [sys.executable, "-c", probe], tmp_path, 30, what="a probe", program=sys.executable, memory_limit_mb=900
+    )
+    assert run.exit_code == 0
+    assert "limit 900" in process.read_log(tmp_path)
