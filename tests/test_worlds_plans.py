@@ -33,7 +33,7 @@ def lpg_binary() -> Path:
     return Path(os.path.dirname(up_lpg.__file__)) / "lpg"
 
 
-def lpg_plan(domain: Path, problem: Path, workdir: Path, timeout: float = 120) -> Plan | None:
+def lpg_plan(domain: Path, problem: Path, workdir: Path, timeout: float = 600) -> Plan | None:
     """LPG-td's first plan (seed 1), or None when it finds none."""
     workdir.mkdir(parents=True, exist_ok=True)
     command = [str(lpg_binary()), "-o", str(domain), "-f", str(problem), "-n", "1", "-out", "plan", "-seed", "1"]
