@@ -40,12 +40,11 @@ from relevance_plan.errors import OutOfTimeError, UnsupportedFeatureError, Usage
 from relevance_plan.io import load_domain, load_problem, scratch_directory, write_text_atomic
 from relevance_plan.pddl.sexpr import collection_paused
 from relevance_plan.planning.planners.auto import FallbackPlanner
-from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome
+from relevance_plan.planning.planners.base import Planner, PlannerStatus, RunOutcome
 from relevance_plan.planning.planners.preparation import PreparedPlanner, prepare_planner, with_planner_args
 from relevance_plan.planning.planners.registry import (
     DEFAULT_PLANNER,
     DEFAULT_PLANNER_CONFIG,
-    Planner,
     make_planner,
     offer_early_run,
     planner_for,
@@ -107,11 +106,11 @@ class PlanOptions:
     model_task: str | None = None
     human: str | None = None
     seed: int = 0
-    validators: tuple | None = None
+    validators: tuple[str, ...] | None = None
     planner_args: tuple[str, ...] = ()  # appended to the planner's command line (--planner-args)
     race: bool = False  # plan the full problem beside the pruned attempts (planning.race); takes a second core
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         if self.method not in METHODS:
             raise UsageError(f"unknown method '{self.method}' (choose from: {', '.join(METHODS)})")
         if self.timeout is not None and not 0 < self.timeout < float("inf"):
@@ -135,7 +134,7 @@ class PlanOptions:
         return ScoringOptions(**{name: getattr(self, name) for name in SCORING_FIELDS})
 
     @classmethod
-    def from_scoring(cls, scoring: ScoringOptions, **planning) -> PlanOptions:
+    def from_scoring(cls, scoring: ScoringOptions, **planning: Any) -> PlanOptions:
         return cls(**{name: getattr(scoring, name) for name in SCORING_FIELDS}, **planning)
 
     @property
@@ -187,7 +186,7 @@ def run_attempts(
     goal_filter = options.goal_filter and options.narrows_first
     attempts: list[Attempt] = []
     widening_time = 0.0
-    extra: frozenset = frozenset()
+    extra: frozenset[str] = frozenset()
     current = selection
     while deadline is None or time.perf_counter() < deadline:
         if race is not None and race.won:
@@ -593,7 +592,7 @@ def summarise(
     return PlanResult(status=status, message=message, log_tail=last.outcome.log_tail, **common)
 
 
-def _validated(last: Attempt, common: dict) -> PlanResult:
+def _validated(last: Attempt, common: dict[str, Any]) -> PlanResult:
     """The result when the last attempt found a plan: what its validation on the original said."""
     validation = last.validation
     if validation is not None and validation.accepted:

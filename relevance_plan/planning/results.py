@@ -98,7 +98,7 @@ class PlanResult:
     plan: Plan = Plan()
     plan_cost: float | None = None
     validation: ValidationResult | None = None
-    attempts: tuple = ()
+    attempts: tuple[Attempt, ...] = ()
     wall_time: float = 0.0
     relevance_time: float = 0.0
     planner_time: float = 0.0
@@ -149,7 +149,7 @@ class PlanResult:
             return self.attempts[0].status.value
         return self.status.value
 
-    def to_json(self) -> dict:
+    def to_json(self) -> dict[str, Any]:
         return {
             "method": self.method,
             "planner": self.planner,

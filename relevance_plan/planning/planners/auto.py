@@ -33,7 +33,8 @@ from relevance_plan.io import load_domain, load_problem
 from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.planning.planners import features as f
 from relevance_plan.planning.planners.base import Planner, PlannerStatus, RunOutcome
-from relevance_plan.planning.planners.fast_downward.adapter import DEFAULT_CONFIG, FastDownwardPlanner, check_config
+from relevance_plan.planning.planners.fast_downward.adapter import FastDownwardPlanner, check_config
+from relevance_plan.planning.planners.fast_downward.command import DEFAULT_CONFIG
 from relevance_plan.planning.planners.lpg import FEATURES as LPG_FEATURES
 from relevance_plan.planning.planners.lpg import INSTALL_HINT as LPG_HINT
 from relevance_plan.planning.planners.lpg import LpgPlanner, lpg_binary
@@ -186,7 +187,9 @@ class FallbackPlanner:
     def version(self) -> str:
         return self.first.version()
 
-    def run(self, domain_path, problem_path, *, time_limit, memory_limit_mb) -> RunOutcome:
+    def run(
+        self, domain_path: str, problem_path: str, *, time_limit: float | None, memory_limit_mb: int | None
+    ) -> RunOutcome:
         started = time.monotonic()
         outcome = self.first.run(domain_path, problem_path, time_limit=time_limit, memory_limit_mb=memory_limit_mb)
         for planner in self.then:
@@ -233,7 +236,9 @@ class AutoPlanner:
         installed = [c.make(self.config) for c in EVERY if c.installed()]
         return "auto: " + "; ".join(planner.version() for planner in installed)
 
-    def run(self, domain_path, problem_path, *, time_limit, memory_limit_mb) -> RunOutcome:
+    def run(
+        self, domain_path: str, problem_path: str, *, time_limit: float | None, memory_limit_mb: int | None
+    ) -> RunOutcome:
         """Choose from the files, then run the chosen planner (front ends that read the problem choose first)."""
         try:
             domain = load_domain(domain_path)

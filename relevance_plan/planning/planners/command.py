@@ -121,7 +121,9 @@ class CommandPlanner:
             digest = "unreadable"
         return f"cmd sha256:{digest}"
 
-    def run(self, domain_path, problem_path, *, time_limit, memory_limit_mb) -> RunOutcome:
+    def run(
+        self, domain_path: str, problem_path: str, *, time_limit: float | None, memory_limit_mb: int | None
+    ) -> RunOutcome:
         uses_plan_file = "{plan}" in self.template
         with work_directory(self.work_dir, prefix="relevance-plan-cmd-") as workdir:
             plan_path = workdir / PLAN_FILE

@@ -166,7 +166,9 @@ class LpgPlanner:
         except importlib.metadata.PackageNotFoundError:
             return "LPG-td 1.4"
 
-    def run(self, domain_path, problem_path, *, time_limit, memory_limit_mb) -> RunOutcome:
+    def run(
+        self, domain_path: str, problem_path: str, *, time_limit: float | None, memory_limit_mb: int | None
+    ) -> RunOutcome:
         binary = self.executable()
         with tempfile.TemporaryDirectory(prefix="relevance-plan-lpg-") as tmp:
             workdir = Path(tmp)

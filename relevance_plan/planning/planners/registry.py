@@ -35,13 +35,14 @@ from relevance_plan.planning.planners.auto import AutoPlanner
 from relevance_plan.planning.planners.base import Planner
 from relevance_plan.planning.planners.command import CommandPlanner
 from relevance_plan.planning.planners.fast_downward import adapter as fast_downward
+from relevance_plan.planning.planners.fast_downward import command as fd_command
 from relevance_plan.planning.planners.fast_downward import head_start
 from relevance_plan.planning.planners.fast_downward.adapter import FastDownwardPlanner
 from relevance_plan.planning.planners.lpg import LpgPlanner
 from relevance_plan.planning.planners.up.adapter import UnifiedPlanningPlanner
 
 DEFAULT_PLANNER = auto.NAME
-DEFAULT_PLANNER_CONFIG = fast_downward.DEFAULT_CONFIG
+DEFAULT_PLANNER_CONFIG = fd_command.DEFAULT_CONFIG
 
 # A run of the full problem the launcher started before the tool was imported (Fast Downward's, today):
 # the loop takes it, offers it to its first call on the full problem, and stops it if not taken over.

@@ -463,7 +463,9 @@ class FastDownwardPlanner:
             version += f"+custom-{digest[:12]}"
         return version
 
-    def run(self, domain_path, problem_path, *, time_limit, memory_limit_mb) -> RunOutcome:
+    def run(
+        self, domain_path: str, problem_path: str, *, time_limit: float | None, memory_limit_mb: int | None
+    ) -> RunOutcome:
         return run_fast_downward(
             domain_path,
             problem_path,

@@ -31,6 +31,20 @@ from __future__ import annotations
 import os
 import sys
 
+TYPE_CHECKING = False  # typing's own flag would import typing
+if TYPE_CHECKING:
+    from typing import TypedDict
+
+    class _Run(TypedDict):
+        inputs: list[str]
+        search: list[str]
+        alias: str | None
+        plan_file: str
+        time_limit: int | None
+        memory_limit: int | None
+        keep_sas_file: bool
+
+
 LAUNCH = "import sys; sys.path.append({folder!r}); import fd_driver; fd_driver.main()"
 SAS_FILE = "output.sas"
 TRANSLATE_CRITICAL_ERROR = 30  # the driver's code for a translator that crashed with exit code 1
@@ -46,7 +60,7 @@ class _NotPlain(Exception):
     """The arguments ask for something only the real driver does."""
 
 
-def _read(arguments: list[str]) -> dict:
+def _read(arguments: list[str]) -> _Run:
     """The run the arguments describe; ``_NotPlain`` when this driver does not do it."""
     options: dict[str, str] = {}
     flags: set[str] = set()
@@ -116,7 +130,9 @@ def _remaining_cpu(limit: int | None) -> int | None:
     return int(max(0.0, limit - used) + 0.001)
 
 
-def _start(nick: str, command: list[str], *, env: dict, stdin: str | None, time_limit: int | None, memory: int | None):
+def _start(
+    nick: str, command: list[str], *, env: dict[str, str], stdin: str | None, time_limit: int | None, memory: int | None
+) -> int:
     """Start one component with its limits; its pid."""
     print(f"{nick} command line: {' '.join(command)}{' < ' + stdin if stdin else ''}", flush=True)
     pid = os.fork()
@@ -148,7 +164,7 @@ def _wait(pid: int) -> int:
     return os.waitstatus_to_exitcode(status)
 
 
-def _plan(driver: str, run: dict) -> int:
+def _plan(driver: str, run: _Run) -> int:
     """Translate, then search: the driver's exit code.  ``_NotPlain`` (before anything is left
     behind) when the alias turns out to be one only the driver reads."""
     root = os.path.dirname(os.path.abspath(driver))
@@ -169,7 +185,10 @@ def _plan(driver: str, run: dict) -> int:
     )
     # the alias is read while the translator runs: only the search needs it
     try:
-        search = run["search"] or _search_options(driver, run["alias"])
+        search = run["search"]
+        if not search:
+            assert run["alias"] is not None  # _read takes an alias when no search options are given
+            search = _search_options(driver, run["alias"])
     except _NotPlain:
         os.kill(translator, 9)  # SIGKILL: the real driver translates again
         _wait(translator)

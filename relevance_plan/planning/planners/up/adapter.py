@@ -211,7 +211,9 @@ class UnifiedPlanningPlanner:
             pass
         return "; ".join(parts)
 
-    def run(self, domain_path, problem_path, *, time_limit, memory_limit_mb) -> RunOutcome:
+    def run(
+        self, domain_path: str, problem_path: str, *, time_limit: float | None, memory_limit_mb: int | None
+    ) -> RunOutcome:
         environment = java_environment(self.engine)
         with work_directory(self.work_dir, prefix="relevance-plan-up-") as workdir:
             plan_path = workdir / PLAN_FILE

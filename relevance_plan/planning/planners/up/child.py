@@ -17,8 +17,12 @@ undefined values, no quality metric), saying so on stderr.
 from __future__ import annotations
 
 import sys
+from typing import TYPE_CHECKING, Any
 
 from relevance_plan.planning.planners.up.adapter import CHILD_CANNOT_READ, ENGINE_FEATURES
+
+if TYPE_CHECKING:
+    from relevance_plan.planning.planners.up.fitting import Fitted
 
 # An engine that raises instead of answering cannot take the problem's features.
 _REFUSED = "UNSUPPORTED_PROBLEM"
@@ -64,7 +68,7 @@ def main(arguments: list[str]) -> int:
     return 0
 
 
-def _fit(environment, engine: str, problem):
+def _fit(environment: Any, engine: str, problem: Any) -> Fitted | None:
     """The problem rewritten for an engine that does not take its kind as read (``up_fit``)."""
     try:
         from relevance_plan.planning.planners.up.fitting import fit_problem
@@ -78,20 +82,20 @@ def _fit(environment, engine: str, problem):
     return fitted
 
 
-def _undeclared(lacking) -> str:
+def _undeclared(lacking: tuple[str, ...]) -> str:
     return f" (on a problem of a kind it does not declare: {', '.join(lacking)})" if lacking else ""
 
 
-def _plan_lines(plan) -> list[str]:
+def _plan_lines(plan: Any) -> list[str]:
     """The plan in the IPC format: timed lines for a time-triggered plan, else one action per line."""
 
-    def step(instance) -> str:
+    def step(instance: Any) -> str:
         return "(" + " ".join([instance.action.name, *(str(p) for p in instance.actual_parameters)]) + ")"
 
     timed = getattr(plan, "timed_actions", None)
     if timed is None:
         return [step(instance) for instance in plan.actions]
-    lines = []
+    lines: list[str] = []
     for start, instance, duration in timed:
         lines.append(f"{float(start)!r}: {step(instance)}" + ("" if duration is None else f" [{float(duration)!r}]"))
     return lines

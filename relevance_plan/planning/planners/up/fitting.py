@@ -85,7 +85,7 @@ class Fitted:
     lacking: tuple[str, ...] = ()
 
 
-def fit_problem(environment, engine: str, problem) -> Fitted:
+def fit_problem(environment: Any, engine: str, problem: Any) -> Fitted:
     """``problem`` rewritten, as far as the steps go, into one whose kind ``engine`` takes.
 
     A step runs only when it would replace a feature the engine lacks; each gives an
@@ -127,7 +127,7 @@ def fit_problem(environment, engine: str, problem) -> Fitted:
 # -- whole numbers ---------------------------------------------------------------------------------
 
 
-def _whole_numbers(problem) -> tuple[Any, str]:
+def _whole_numbers(problem: Any) -> tuple[Any, str]:
     """Every real-valued fluent as an integer fluent, when all its values are whole numbers."""
     env = problem.environment
     real = [fluent for fluent in problem.fluents if fluent.type.is_real_type()]
@@ -143,7 +143,7 @@ def _whole_numbers(problem) -> tuple[Any, str]:
             _whole(problem.fluents_defaults[fluent])
     substituter = FluentsSubstituter(renamed, env)
 
-    def value(expression):
+    def value(expression: Any) -> Any:
         # A whole real constant (from a default or an initial value) becomes an integer.
         if expression.is_real_constant():
             return env.expression_manager.Int(_whole(expression))
@@ -160,7 +160,7 @@ def _whole_numbers(problem) -> tuple[Any, str]:
     )
 
 
-def _whole(constant) -> int:
+def _whole(constant: Any) -> int:
     """The integer a constant numeric expression stands for; _CannotFit for anything else."""
     if constant.is_int_constant():
         return int(constant.int_constant_value())
@@ -174,7 +174,7 @@ def _whole(constant) -> int:
 # -- flat types ------------------------------------------------------------------------------------
 
 
-def _flat_types(problem) -> tuple[Any, str]:
+def _flat_types(problem: Any) -> tuple[Any, str]:
     """Every type below another as the top of its hierarchy, guarded by a static predicate."""
     below = [t for t in problem.user_types if t.father is not None]
     if not below:
@@ -184,12 +184,12 @@ def _flat_types(problem) -> tuple[Any, str]:
     names = _Names(problem)
     guards: dict[Any, Any] = {}
 
-    def top(type_):
+    def top(type_: Any) -> Any:
         while type_.is_user_type() and type_.father is not None:
             type_ = type_.father
         return type_
 
-    def guard(type_, argument):
+    def guard(type_: Any, argument: Any) -> Any:
         """``is_T(argument)`` for a type below another; None for a type at the top."""
         if not type_.is_user_type() or type_.father is None:
             return None
@@ -198,7 +198,7 @@ def _flat_types(problem) -> tuple[Any, str]:
             guards[type_] = Fluent(names.fresh(f"is_{type_.name}"), env.type_manager.BoolType(), signature, env)
         return em.FluentExp(guards[type_], [argument])
 
-    def fluent(old):
+    def fluent(old: Any) -> Any:
         signature = [Parameter(p.name, top(p.type), env) for p in old.signature]
         if all(new.type == p.type for new, p in zip(signature, old.signature)) and top(old.type) == old.type:
             return old
@@ -207,7 +207,7 @@ def _flat_types(problem) -> tuple[Any, str]:
     fluents = {old: fluent(old) for old in problem.fluents}
     walker = _Flattener(env, fluents, top, guard)
 
-    def parameter_guards(old_action, new_action) -> list:
+    def parameter_guards(old_action: Any, new_action: Any) -> list[Any]:
         found = (guard(p.type, em.ParameterExp(new_action.parameter(p.name))) for p in old_action.parameters)
         return [g for g in found if g is not None]
 
@@ -229,7 +229,7 @@ def _flat_types(problem) -> tuple[Any, str]:
     return rebuilt, f"flattened the type hierarchy ({len(below)} type{'s' if len(below) != 1 else ''}) to run"
 
 
-def _define_widened(problem, rebuilt, fluents: Mapping[Any, Any]) -> None:
+def _define_widened(problem: Any, rebuilt: Any, fluents: Mapping[Any, Any]) -> None:
     """A numeric fluent whose arguments now take objects of other types gets a value for them too.
 
     Only guarded actions read a fluent, with arguments of the types it was
@@ -248,46 +248,52 @@ def _define_widened(problem, rebuilt, fluents: Mapping[Any, Any]) -> None:
             rebuilt.set_initial_value(em.FluentExp(new, [em.ObjectExp(obj) for obj in arguments]), zero)
 
 
-class _Flattener(IdentityDagWalker):
+class _Flattener(IdentityDagWalker):  # type: ignore[misc]  # unified-planning ships no type information
     """Rebuilds an expression over the flat types: fluents, objects, parameters and variables
     retyped (names unchanged), and each quantified variable of a type below another guarded."""
 
-    def __init__(self, environment, fluents: Mapping[Any, Any], top: Callable, guard: Callable):
+    def __init__(
+        self,
+        environment: Any,
+        fluents: Mapping[Any, Any],
+        top: Callable[[Any], Any],
+        guard: Callable[[Any, Any], Any],
+    ) -> None:
         IdentityDagWalker.__init__(self, environment, True)
         self._fluents = fluents
         self._top = top
         self._guard = guard
 
-    def rewrite(self, expression):
+    def rewrite(self, expression: Any) -> Any:
         return self.walk(expression)
 
-    def variable(self, variable):
+    def variable(self, variable: Any) -> Any:
         return Variable(variable.name, self._top(variable.type), self.environment)
 
-    def walk_fluent_exp(self, expression, args, **kwargs):
+    def walk_fluent_exp(self, expression: Any, args: list[Any], **kwargs: Any) -> Any:
         return self.manager.FluentExp(self._fluents[expression.fluent()], args)
 
-    def walk_object_exp(self, expression, args, **kwargs):
+    def walk_object_exp(self, expression: Any, args: list[Any], **kwargs: Any) -> Any:
         obj = expression.object()
         return self.manager.ObjectExp(Object(obj.name, self._top(obj.type), self.environment))
 
-    def walk_param_exp(self, expression, args, **kwargs):
+    def walk_param_exp(self, expression: Any, args: list[Any], **kwargs: Any) -> Any:
         parameter = expression.parameter()
         return self.manager.ParameterExp(Parameter(parameter.name, self._top(parameter.type), self.environment))
 
-    def walk_variable_exp(self, expression, args, **kwargs):
+    def walk_variable_exp(self, expression: Any, args: list[Any], **kwargs: Any) -> Any:
         return self.manager.VariableExp(self.variable(expression.variable()))
 
-    def walk_exists(self, expression, args, **kwargs):
+    def walk_exists(self, expression: Any, args: list[Any], **kwargs: Any) -> Any:
         variables, guards = self._quantified(expression.variables())
         return self.manager.Exists(self.manager.And(*guards, args[0]), *variables)
 
-    def walk_forall(self, expression, args, **kwargs):
+    def walk_forall(self, expression: Any, args: list[Any], **kwargs: Any) -> Any:
         variables, guards = self._quantified(expression.variables())
         body = self.manager.Implies(self.manager.And(*guards), args[0]) if guards else args[0]
         return self.manager.Forall(body, *variables)
 
-    def _quantified(self, variables) -> tuple[list, list]:
+    def _quantified(self, variables: Any) -> tuple[list[Any], list[Any]]:
         new = [self.variable(v) for v in variables]
         found = (self._guard(old.type, self.manager.VariableExp(v)) for old, v in zip(variables, new))
         return new, [g for g in found if g is not None]
@@ -296,12 +302,12 @@ class _Flattener(IdentityDagWalker):
 # -- defined values --------------------------------------------------------------------------------
 
 
-def _defined_values(problem) -> tuple[Any, str]:
+def _defined_values(problem: Any) -> tuple[Any, str]:
     """A static numeric fluent's undefined values replaced by a guard on the actions that read it."""
     env = problem.environment
     em = env.expression_manager
     static = problem.get_static_fluents()
-    defined: dict[Any, list] = {}
+    defined: dict[Any, list[Any]] = {}
     for fluent in problem.fluents:
         if not (fluent.type.is_int_type() or fluent.type.is_real_type()) or fluent in problem.fluents_defaults:
             continue
@@ -322,8 +328,8 @@ def _defined_values(problem) -> tuple[Any, str]:
         for fluent in defined
     }
 
-    def reads(old_action, new_action) -> list:
-        found = []
+    def reads(old_action: Any, new_action: Any) -> list[Any]:
+        found: list[Any] = []
         # An action's cost is counted only when it runs, so the action's guard covers it too.
         costs = (m.costs.get(old_action) for m in problem.quality_metrics if isinstance(m, MinimizeActionCosts))
         for expression in [*_action_expressions(old_action), *(cost for cost in costs if cost is not None)]:
@@ -336,7 +342,7 @@ def _defined_values(problem) -> tuple[Any, str]:
                         found.append(guard)
         return found
 
-    def default(fluent, value):
+    def default(fluent: Any, value: Any) -> Any:
         if fluent in helpers:
             return em.Int(0) if fluent.type.is_int_type() else em.Real(Fraction(0))
         return value
@@ -354,13 +360,13 @@ def _defined_values(problem) -> tuple[Any, str]:
     )
 
 
-def _groundings(problem, fluent) -> Iterator[list]:
+def _groundings(problem: Any, fluent: Any) -> Iterator[list[Any]]:
     em = problem.environment.expression_manager
     for objects in itertools.product(*(problem.objects(p.type) for p in fluent.signature)):
         yield [em.ObjectExp(obj) for obj in objects]
 
 
-def _action_expressions(action) -> Iterator:
+def _action_expressions(action: Any) -> Iterator[Any]:
     """Every expression an action reads: conditions, duration, effects (targets, values, conditions)."""
     if isinstance(action, InstantaneousAction):
         yield from action.preconditions
@@ -375,7 +381,7 @@ def _action_expressions(action) -> Iterator:
         yield from (effect.fluent, effect.value, effect.condition)
 
 
-def _outside_actions(problem) -> Iterator:
+def _outside_actions(problem: Any) -> Iterator[Any]:
     yield from problem.goals
     for goals in problem.timed_goals.values():
         yield from goals
@@ -387,7 +393,7 @@ def _outside_actions(problem) -> Iterator:
         yield from _metric_expressions(metric)
 
 
-def _metric_expressions(metric) -> Iterator:
+def _metric_expressions(metric: Any) -> Iterator[Any]:
     if isinstance(metric, MinimizeActionCosts):
         # Each action's own cost is read with the action (see _defined_values); the default is not.
         if metric.default is not None:
@@ -419,7 +425,7 @@ class _Names:
         return name
 
 
-def _unchanged(value):
+def _unchanged(value: Any) -> Any:
     return value
 
 
@@ -431,14 +437,14 @@ class _Rewrite:
     fluent: Callable[[Any], Any] = _unchanged
     retype: Callable[[Any], Any] = _unchanged
     # Conditions the rebuilt action needs before the old ones (at start for a durative action).
-    guards: Callable[[Any, Any], list] = field(default=lambda old, new: [])
+    guards: Callable[[Any, Any], list[Any]] = field(default=lambda old, new: [])
     # The guard of a variable of an effect's forall (None: none needed).
     forall_guard: Callable[[Any], Any] = field(default=lambda variable: None)
     # The new default value of a fluent, given its old one (None: no default).
     default: Callable[[Any, Any], Any] = field(default=lambda fluent, value: value)
 
 
-def _rebuild(problem, rewrite: _Rewrite):
+def _rebuild(problem: Any, rewrite: _Rewrite) -> Any:
     """A new problem with every expression, fluent and type passed through ``rewrite``."""
     if problem.processes or problem.events:
         raise _CannotFit  # PDDL+: none of the steps is written for it
@@ -473,7 +479,7 @@ def _rebuild(problem, rewrite: _Rewrite):
     return new
 
 
-def _rebuild_action(old, rewrite: _Rewrite):
+def _rebuild_action(old: Any, rewrite: _Rewrite) -> Any:
     env = old.environment
     expression = rewrite.expression
     parameters = OrderedDict((p.name, rewrite.retype(p.type)) for p in old.parameters)
@@ -511,7 +517,7 @@ def _rebuild_action(old, rewrite: _Rewrite):
     raise _CannotFit  # sensing actions and other kinds: not from PDDL
 
 
-def _add_effect(target, effect, rewrite: _Rewrite, timing=None) -> None:
+def _add_effect(target: Any, effect: Any, rewrite: _Rewrite, timing: Any = None) -> None:
     """``effect`` rewritten, added to an action or (with its timing) to the problem's timed effects."""
     expression = rewrite.expression
     em = effect.environment.expression_manager
@@ -530,7 +536,7 @@ def _add_effect(target, effect, rewrite: _Rewrite, timing=None) -> None:
     add(*((timing,) if timing is not None else ()), *arguments)
 
 
-def _rebuild_metric(metric, actions: Mapping[Any, Any], expression: Callable, env):
+def _rebuild_metric(metric: Any, actions: Mapping[Any, Any], expression: Callable[[Any], Any], env: Any) -> Any:
     if isinstance(metric, MinimizeActionCosts):
         costs = {actions[action]: expression(cost) for action, cost in metric.costs.items()}
         default = None if metric.default is None else expression(metric.default)
@@ -549,9 +555,9 @@ def _rebuild_metric(metric, actions: Mapping[Any, Any], expression: Callable, en
     raise _CannotFit
 
 
-def _merged(pairs: Iterable[tuple[Any, Any]]) -> dict:
+def _merged(pairs: Iterable[tuple[Any, Any]]) -> dict[Any, Any]:
     """Gains of goals that became one expression add up."""
-    merged: dict = {}
+    merged: dict[Any, Any] = {}
     for goal, gain in pairs:
         merged[goal] = merged.get(goal, 0) + gain
     return merged
