@@ -1,9 +1,11 @@
 """Fixtures shared by the test modules; plain helpers are in ``support.py``."""
 
 import os
+import subprocess
+import sys
 
 import pytest
-from support import COFFEE_DOMAIN, DOMAINS
+from support import COFFEE_DOMAIN, DOMAINS, REPO
 
 
 def pytest_addoption(parser):
@@ -55,3 +57,16 @@ def copied_coffee_files(tmp_path):
     problem = tmp_path / "problem.pddl"
     problem.write_text(coffee_problem(extra_plates=2))
     return domain, problem
+
+
+@pytest.fixture(scope="session")
+def wheel(tmp_path_factory):
+    """A wheel of the checkout, as ``pip wheel .`` makes it for a regular install."""
+    out = tmp_path_factory.mktemp("wheel")
+    subprocess.run(
+        [sys.executable, "-m", "pip", "wheel", "--no-deps", "-q", "-w", str(out), str(REPO)],
+        check=True,
+        capture_output=True,
+    )
+    (found,) = out.glob("relevance_plan-*.whl")
+    return found

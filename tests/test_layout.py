@@ -102,18 +102,6 @@ def test_plan_compare_and_the_up_engine_make_the_same_attempts(hard_gripper, tmp
 # --------------------------------------------------------------------------- a regular install
 
 
-@pytest.fixture(scope="module")
-def wheel(tmp_path_factory):
-    out = tmp_path_factory.mktemp("wheel")
-    subprocess.run(
-        [sys.executable, "-m", "pip", "wheel", "--no-deps", "-q", "-w", str(out), str(REPO)],
-        check=True,
-        capture_output=True,
-    )
-    (found,) = out.glob("relevance_plan-*.whl")
-    return found
-
-
 def test_the_wheel_ships_the_worlds_and_no_stray_top_level_packages(wheel):
     names = zipfile.ZipFile(wheel).namelist()
     top = {name.split("/")[0] for name in names}

@@ -1,8 +1,8 @@
 """A small end-to-end comparison: generate two suites, compare the four methods, report.
 
 With the defaults (3 problems per world, 30 distractors each) pure planning
-takes a few seconds per problem while the pruned methods take well under
-one (about 12 times faster), and the whole demo takes about 25 s on 2 cores.  A work
+takes seconds per problem where the pruned methods take a fraction of one
+(the README says how long the whole demo takes).  A work
 directory given by the caller keeps the suites, the results store and
 nothing else (running the demo again there reuses the stored results);
 without one, the demo runs in a temporary folder and removes it.

@@ -66,7 +66,7 @@ def main() -> None:
                 print("plan requested")
             if report.triggered and not report.sufficient:
                 print(f"{'':34}insufficient cues: {report.insufficiency.split(' — ')[0]}")
-            elif report.triggered:
+            elif report.triggered and report.selection is not None:
                 kept = sorted(show(n, n) for n in report.selection.kept)
                 print(f"{'':34}kept {len(kept)} of {len(session.scene.objects)}: {', '.join(kept)}")
                 if report.added or report.dropped:
