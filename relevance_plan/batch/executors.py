@@ -3,9 +3,9 @@
 Both take the pending jobs, a ``record`` callback that the main thread calls
 with each finished row, and a stop event (set by ``signals.stop_event_on_signals``):
 
-- locally, ``workers`` threads each drive one planner subprocess (measured
-  faster and more robust than a process pool: one killed planner affects
-  only its own job);
+- locally, ``workers`` threads each drive one planner subprocess (lighter
+  than a process pool, and more robust: one killed planner affects only its
+  own job, where a dead pool worker breaks every pending one);
 - on Dask (``scheduler='tcp://HOST:PORT'``), the same jobs go out with
   ``client.submit(run_job, job, pure=False, retries=2)``.  Workers must see
   the suite files under the same paths and have the same packages installed.

@@ -7,8 +7,8 @@ are imported (``planning/planners/fast_downward/head_start.py``).  Everything el
 the click commands of ``app.py``.
 
 ``plan`` also ends at once when it is done (:func:`_end_now`): the
-interpreter's own teardown, which frees what the command built, costs it
-~20 ms that nobody waits for.
+interpreter's own teardown, which frees what the command built, is time
+nobody waits for.
 """
 
 from __future__ import annotations

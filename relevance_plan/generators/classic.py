@@ -73,7 +73,7 @@ TYPE_FACTS: dict[str, dict[str, tuple[str, ...]]] = {
     "miconic": {"passenger": ("passenger",), "floor": ("floor",)},
 }
 
-# Object count of the default size: pure Fast Downward lama-first needs 5-120 s on 2 cores.
+# Object count of the default size: big enough that pure Fast Downward takes seconds to minutes.
 DEFAULT_SIZES: dict[str, int] = {
     "blocksworld": 300,
     "logistics": 400,

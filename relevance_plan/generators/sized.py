@@ -74,7 +74,7 @@ def _pair(builder: Callable[[random.Random, int], Instance], domain: str, size: 
 
 
 NEW_WORLDS: dict[str, SizedWorld] = {
-    # Default sizes: pure LPG-td (temporal, numeric) or Fast Downward lama-first needs 10-40 s on 2 cores.
+    # Default sizes: big enough that pure LPG-td (temporal, numeric) or Fast Downward takes tens of seconds.
     "driverlog-temporal": SizedWorld(build_driverlog_temporal, "driverlog-temporal", 120),
     "zenotravel-numeric": SizedWorld(build_zenotravel_numeric, "zenotravel-numeric", 120),
     "scenegraph": SizedWorld(build_scenegraph, "scenegraph", 1000),

@@ -41,8 +41,8 @@ MAX_YAML_NESTING = 32
 
 @functools.cache
 def _yaml_loader() -> type[yaml.SafeLoader]:
-    """The loader of knowledge models, made on first use: importing yaml costs ~15 ms that
-    commands which read no model (``plan --method pure``) do not pay."""
+    """The loader of knowledge models, made on first use: commands which read no model
+    (``plan --method pure``) do not pay for importing yaml."""
     import yaml
 
     class _Loader(yaml.SafeLoader):

@@ -13,7 +13,7 @@ from relevance_plan.relevance.scorers.base import PlanningTask, ScoreRequest, Sc
 
 
 def _rng(seed: int, problem_name: str) -> _random.Random:
-    import hashlib  # here: ~4 ms that every other command would pay at import
+    import hashlib  # here: every other command would pay for it at import
 
     digest = hashlib.sha256(f"{seed}:{problem_name}".encode()).digest()
     return _random.Random(int.from_bytes(digest[:8], "big"))

@@ -54,7 +54,7 @@ def _locate_driver(override: str | None) -> str:
             raise errors.PlannerError(f"Fast Downward driver not found at {path} (from ${FAST_DOWNWARD_ENV})")
         return os.path.realpath(path)
     # The package is located without importing it (its __init__ pulls in
-    # unified_planning, which is slow), and without importlib.util (~8 ms).
+    # unified_planning, which is slow), and without importlib.util (itself a costly import).
     spec = None
     for finder in sys.meta_path:
         find_spec = getattr(finder, "find_spec", None)

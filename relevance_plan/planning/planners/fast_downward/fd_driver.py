@@ -3,11 +3,11 @@
 Run under the guard as ``python -I -S -c "...import fd_driver; fd_driver.main()"
 DRIVER ARGUMENTS...`` (:data:`LAUNCH`), where DRIVER is ``fast-downward.py``
 and ARGUMENTS are what that driver would get.  Fast Downward's own driver
-spends 50-90 ms of a run before the translator starts (its interpreter with
-``site``, argparse, logging, its alias table) and ~10 ms after the search;
-on the small problems that are most of the field's benchmarks, that is a
-fifth of the planner's time.  This one starts the translator 20-25 ms after
-its own start and reads the alias table while the translator runs.
+imports its interpreter's ``site``, argparse, logging and its alias table
+before the translator starts; on the small problems that are most of the
+field's benchmarks, that is a noticeable share of the planner's time
+(docs/how-it-works.md has the figures).  This one starts the translator at
+once and reads the alias table while the translator runs.
 
 It takes the arguments ``fd_command.build_command`` writes: ``--plan-file``,
 ``--overall-time-limit``, ``--overall-memory-limit``, ``--keep-sas-file``,
