@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import random
 
-
 BLOCKSWORLD_DOMAIN = """(define (domain blocksworld)
   (:requirements :strips :typing)
   (:types block)

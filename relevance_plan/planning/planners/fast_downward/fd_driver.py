@@ -9,7 +9,7 @@ field's benchmarks, that is a noticeable share of the planner's time
 (docs/how-it-works.md has the figures).  This one starts the translator at
 once and reads the alias table while the translator runs.
 
-It takes the arguments ``fd_command.build_command`` writes: ``--plan-file``,
+It takes the arguments ``command.build_command`` writes: ``--plan-file``,
 ``--overall-time-limit``, ``--overall-memory-limit``, ``--keep-sas-file``,
 one ``--alias`` or the search's own options after the two input files.
 Anything else (a portfolio, an alias that the driver itself must read such
