@@ -131,3 +131,23 @@ def test_no_issue_numbers_in_the_documents_benchmarks_examples_or_their_file_nam
         assert "issue" not in path.name.lower(), path
         if path.is_file() and path.suffix in {".md", ".py", ".txt", ".csv", ".jsonl", ".pddl", ".example"}:
             assert not re.search(r"\bissues?\s*#?\d", path.read_text(), flags=re.IGNORECASE), path
+
+
+def test_the_status_table_of_how_it_works_is_the_code_s():
+    from relevance_plan.exitcodes import PLAN_STATUS_EXIT
+    from relevance_plan.planning.planners.base import PlannerStatus
+    from relevance_plan.planning.results import PLANNER_TO_PLAN_STATUS, AttemptStatus, PlanStatus
+
+    text = (REPO / "docs" / "how-it-works.md").read_text()
+    table = text.split("### Statuses, from the planner to the exit code")[1].split("\n\n")[2]
+    rows = [line for line in table.splitlines() if line.startswith("| `")]
+    assert len(rows) >= len(PlannerStatus)
+    for row in rows:
+        planner, attempt, problem, code = (cell.strip() for cell in row.strip("|").split("|"))
+        planner_status = PlannerStatus(re.findall(r"`([\w-]+)`", planner)[0])
+        AttemptStatus(re.findall(r"`([\w-]+)`", attempt)[0])
+        plan_status = PlanStatus(re.findall(r"`([\w-]+)`", problem)[0])
+        assert int(PLAN_STATUS_EXIT[plan_status.value]) == int(re.findall(r"\d+", code)[0]), row
+        if planner_status in PLANNER_TO_PLAN_STATUS:
+            assert PLANNER_TO_PLAN_STATUS[planner_status] is plan_status, row
+    assert {re.findall(r"`([\w-]+)`", row)[0] for row in rows} == {status.value for status in PlannerStatus}
