@@ -24,7 +24,7 @@ from relevance_plan.planning.planners.registry import DEFAULT_PLANNER, DEFAULT_P
 from relevance_plan.planning.validate import VALIDATOR_CHOICES
 from relevance_plan.relevance.prune import DEFAULT_TAU, Thresholds
 from relevance_plan.relevance.scorers import SCORERS
-from relevance_plan.relevance.setup import ScoringOptions
+from relevance_plan.relevance.setup import ScoringOptions, check_scorer
 
 
 def fail(message: str, code: ExitCode) -> None:
@@ -82,6 +82,19 @@ def _apply(command, decorators):
 SCORING_KEYS = ("scorer", "model_path", "objective", "model_task", "human", "tau_class", "tau_element", "seed")
 
 
+class ScorerType(click.ParamType):
+    """A registered scorer's name, or ``learned:MODEL``."""
+
+    name = "[" + "|".join(sorted(SCORERS)) + "|learned:MODEL]"
+
+    def convert(self, value, param, ctx):
+        try:
+            check_scorer(value)
+        except UsageError as error:
+            self.fail(error.message, param, ctx)
+        return value
+
+
 def scoring_options(command=None, *, with_seed: bool = True):
     """--scorer --model --objective --task --human --tau-class --tau-element [--seed]."""
     if command is None:
@@ -92,9 +105,10 @@ def scoring_options(command=None, *, with_seed: bool = True):
         [
             click.option(
                 "--scorer",
-                type=click.Choice(sorted(SCORERS)),
+                type=ScorerType(),
                 default=None,
-                help="Scorer; default: 'model' when a knowledge model applies, else 'goal'.",
+                help="Scorer: " + ", ".join(sorted(SCORERS)) + " or learned:MODEL (a model made by 'relevance-plan"
+                " learn'); default: 'model' when a knowledge model applies, else 'goal'.",
             ),
             click.option(
                 "--model",
