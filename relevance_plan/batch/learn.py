@@ -21,12 +21,13 @@ instead of planning again.
 
 from __future__ import annotations
 
+import json
 import os
 import random
 import tempfile
 import time
 from collections.abc import Callable, Iterable, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from relevance_plan.errors import DomainMismatchError, UsageError
@@ -36,7 +37,15 @@ from relevance_plan.pddl.plans import Plan
 from relevance_plan.planning.planners.base import PlannerStatus
 from relevance_plan.planning.planners.registry import DEFAULT_PLANNER_CONFIG, make_planner
 from relevance_plan.planning.validate import validate_plan
-from relevance_plan.relevance.learning.features import GOAL_NAMED, GOAL_ZERO, NAMED, NAMED_FEATURES, FeatureConfig, Features, object_features
+from relevance_plan.relevance.learning.features import (
+    GOAL_NAMED,
+    GOAL_ZERO,
+    NAMED,
+    NAMED_FEATURES,
+    FeatureConfig,
+    Features,
+    object_features,
+)
 from relevance_plan.relevance.learning.model import LearnedModel, domain_signature
 from relevance_plan.relevance.prune import prune_with_scores
 from relevance_plan.relevance.scorers import PlanningTask, ScoreResult
@@ -104,7 +113,11 @@ class Solver:
             from relevance_plan.pddl.writer import write_pruned_problem
 
             self.runs += 1
-            target = str(write_text_atomic(Path(self.scratch) / f"subset-{self.runs}.pddl", write_pruned_problem(task.problem, kept)))
+            target = str(
+                write_text_atomic(
+                    Path(self.scratch) / f"subset-{self.runs}.pddl", write_pruned_problem(task.problem, kept)
+                )
+            )
         outcome = self.planner.run(self.domain_path, target, time_limit=self.time_limit, memory_limit_mb=None)
         if outcome.status is not PlannerStatus.SOLVED:
             return None
@@ -112,7 +125,9 @@ class Solver:
         return outcome.plan if validation.accepted else None
 
 
-def minimal_objects(task: PlanningTask, problem_path: str, start: frozenset[str], solver: Solver, seed: int) -> frozenset[str]:
+def minimal_objects(
+    task: PlanningTask, problem_path: str, start: frozenset[str], solver: Solver, seed: int
+) -> frozenset[str]:
     """PLOI's greedy minimal sufficient set, from a sufficient ``start``: each object in turn
     (seeded order) is dropped when the rest, closed, still plans."""
     current = start
@@ -127,6 +142,26 @@ def minimal_objects(task: PlanningTask, problem_path: str, start: frozenset[str]
         if solver.solve(task, problem_path, trial) is not None:
             current = trial
     return current
+
+
+def _labelled(
+    task: PlanningTask,
+    positives: frozenset[str],
+    config: FeatureConfig,
+    started: float,
+    runs: int,
+) -> LabelledProblem:
+    features = object_features(task, config)
+    return LabelledProblem(
+        task.problem.path or "",
+        len(task.problem.objects),
+        positives,
+        dict(features.vectors),
+        time.perf_counter() - started,
+        runs,
+        frozenset(t for types in features.types.values() for t in types),
+        frozenset(p for predicates in features.predicates.values() for p in predicates),
+    )
 
 
 def label_problem(
@@ -147,17 +182,7 @@ def label_problem(
     positives = plan_objects(task, plan)
     if labels == "minimal":
         positives = minimal_objects(task, problem_path, positives, solver, seed)
-    features = object_features(task, config)
-    return LabelledProblem(
-        problem_path,
-        len(task.problem.objects),
-        positives,
-        dict(features.vectors),
-        time.perf_counter() - started,
-        1 + solver.runs - runs_before,
-        frozenset(t for types in features.types.values() for t in types),
-        frozenset(p for predicates in features.predicates.values() for p in predicates),
-    )
+    return _labelled(task, positives, config, started, 1 + solver.runs - runs_before)
 
 
 def learn(
@@ -179,13 +204,8 @@ def learn(
         raise UsageError("learn needs at least one training problem")
     started = time.perf_counter()
     domain = load_domain(domain_path)
-    # every problem is read before any planning: a problem of another domain stops the run at once
-    for path in problem_paths:
-        problem = load_problem(path, domain)
-        if problem.domain_name != domain.name:
-            raise DomainMismatchError(
-                f"problem is for domain '{problem.domain_name}', not '{domain.name}'", path=os.fspath(path)
-            )
+    for path in problem_paths:  # all read before any planning: another domain's problem stops the run at once
+        _check_domain(domain, path)
     labelled: list[LabelledProblem] = []
     skipped: list[tuple[str, str]] = []
     with tempfile.TemporaryDirectory(prefix="relevance-plan-learn-") as scratch:
@@ -201,14 +221,86 @@ def learn(
                 f"[{number}/{len(problem_paths)}] {path}: {len(result.positives)} of {result.objects} objects needed"
                 f" ({result.planner_runs} planner run(s), {result.solve_time:.1f} s)"
             )
+    return _report(domain, labelled, skipped, config, labels, seed, started)
+
+
+def _check_domain(domain: Domain, path: str | os.PathLike[str]) -> None:
+    problem = load_problem(path, domain)
+    if problem.domain_name != domain.name:
+        raise DomainMismatchError(
+            f"problem is for domain '{problem.domain_name}', not '{domain.name}'", path=os.fspath(path)
+        )
+
+
+def _report(
+    domain: Domain,
+    labelled: list[LabelledProblem],
+    skipped: list[tuple[str, str]],
+    config: FeatureConfig,
+    labels: str,
+    seed: int,
+    started: float,
+) -> LearnReport:
     if not labelled:
         raise UsageError("no training problem was solved: nothing to learn from (raise --time-limit?)")
     model = fit_model(domain, labelled, config, labels, seed)
     seconds = time.perf_counter() - started
     training = dict(model.training, seconds=round(seconds, 2))
-    from dataclasses import replace
-
     return LearnReport(replace(model, training=training), labelled, skipped, seconds)
+
+
+def learn_from_store(
+    domain_path: str | os.PathLike[str],
+    store_path: str | os.PathLike[str],
+    problem_paths: Sequence[str | os.PathLike[str]],
+    *,
+    labels: str = DEFAULT_LABELS,
+    seed: int = 0,
+    time_limit: float = 60.0,
+    config: FeatureConfig = FeatureConfig(),
+    say: Say = _quiet,
+) -> LearnReport:
+    """Learn from the solved, validated runs of a results store: a row's plan labels the problem file
+    among ``problem_paths`` of the same suite (folder name) and file name; ``minimal`` labels plan
+    again from there."""
+    from relevance_plan.batch.store import read_rows
+    from relevance_plan.pddl.plans import read_plan
+
+    if labels not in LABEL_KINDS:
+        raise UsageError(f"unknown label kind '{labels}' (choose from: {', '.join(LABEL_KINDS)})")
+    if not problem_paths:
+        raise UsageError("give the problem files the store's runs solved (PROBLEM...) with --store")
+    started = time.perf_counter()
+    domain = load_domain(domain_path)
+    by_name = {(Path(p).parent.name, Path(p).name): os.fspath(p) for p in problem_paths}
+    plans: dict[str, str] = {}
+    for row in read_rows(store_path):
+        path = by_name.get((row["suite"], row["problem"]))
+        if path is None or path in plans or row["status"] != "solved" or not row["valid"]:
+            continue
+        steps = json.loads(row["result_json"]).get("plan") or []
+        if steps:
+            plans[path] = "\n".join(steps)
+    for path in plans:
+        _check_domain(domain, path)
+    labelled: list[LabelledProblem] = []
+    skipped = [(os.fspath(p), "no solved run in the store") for p in problem_paths if os.fspath(p) not in plans]
+    with tempfile.TemporaryDirectory(prefix="relevance-plan-learn-") as scratch:
+        solver = Solver(os.fspath(domain_path), "fast-downward", DEFAULT_PLANNER_CONFIG, time_limit, scratch)
+        for number, (path, text) in enumerate(sorted(plans.items()), 1):
+            begun = time.perf_counter()
+            task = PlanningTask(domain, load_problem(path, domain))
+            plan = read_plan(text)
+            if not validate_plan(task.domain, task.problem, plan, None, time.monotonic() + time_limit).accepted:
+                skipped.append((path, "its stored plan is not valid on the problem"))
+                continue
+            positives = plan_objects(task, plan)
+            runs = solver.runs
+            if labels == "minimal":
+                positives = minimal_objects(task, path, positives, solver, seed)
+            labelled.append(_labelled(task, positives, config, begun, solver.runs - runs))
+            say(f"[{number}/{len(plans)}] {path}: {len(positives)} of {len(task.problem.objects)} objects needed")
+    return _report(domain, labelled, skipped, config, labels, seed, started)
 
 
 def fit_model(
@@ -249,8 +341,6 @@ def fit_model(
     )
     threshold = choose_threshold(model, problems)
     seen_types, seen_predicates = _seen(problems)
-    from dataclasses import replace
-
     return replace(
         model,
         threshold=threshold,
@@ -269,7 +359,7 @@ def fit_model(
     )
 
 
-def _newton(x, y, w, l2: float, iterations: int = 30):  # type: ignore[no-untyped-def]
+def _newton(x, y, w, l2: float, iterations: int = 30):
     """Weighted L2-regularised logistic regression by Newton's method (deterministic)."""
     import numpy as np
 

@@ -166,4 +166,12 @@ def score_problem(
     return Scoring(task, model, scores, options)
 
 
-__all__ = ["SCORER_CHOICES", "Scoring", "ScoringOptions", "check_scorer", "choose_scorer", "resolve_model", "score_problem"]
+__all__ = [
+    "SCORER_CHOICES",
+    "Scoring",
+    "ScoringOptions",
+    "check_scorer",
+    "choose_scorer",
+    "resolve_model",
+    "score_problem",
+]

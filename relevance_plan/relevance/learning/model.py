@@ -122,7 +122,7 @@ def load_learned_model(path: str | os.PathLike[str]) -> LearnedModel:
 
 def _from_json(data: Any, path: str) -> LearnedModel:
     if not isinstance(data, dict) or data.get("format") != FORMAT:
-        raise ModelError(f"not a learned model (no \"format\": \"{FORMAT}\")", path=path)
+        raise ModelError(f'not a learned model (no "format": "{FORMAT}")', path=path)
     if data.get("version") != VERSION:
         raise ModelError(
             f"learned model format version {data.get('version')!r}; this relevance-plan reads version {VERSION}",
