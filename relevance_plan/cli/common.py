@@ -145,7 +145,12 @@ def take_scoring(values: dict) -> ScoringOptions:
     """ScoringOptions from a command's parsed values (the scoring keys are removed from ``values``)."""
     taken = {key: values.pop(key, 0 if key == "seed" else None) for key in SCORING_KEYS}
     thresholds = Thresholds(taken.pop("tau_class"), taken.pop("tau_element"))
-    return ScoringOptions(thresholds=thresholds, **taken)
+    options = ScoringOptions(thresholds=thresholds, **taken)
+    if options.learned_model_path is not None:
+        from relevance_plan.relevance.learning.model import load_learned_model
+
+        load_learned_model(options.learned_model_path)  # a damaged file stops the command before any planning
+    return options
 
 
 # --------------------------------------------------------------------------- planning
