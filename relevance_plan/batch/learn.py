@@ -307,7 +307,10 @@ def fit_model(
     domain: Domain, problems: Sequence[LabelledProblem], config: FeatureConfig, labels: str, seed: int
 ) -> LearnedModel:
     """A logistic model of P(needed | features) fitted on ``problems``, with its keep threshold."""
-    import numpy as np
+    try:
+        import numpy as np
+    except ImportError:
+        raise UsageError("learn fits its model with numpy: pip install 'relevance-plan[learn]'") from None
 
     used = sorted({index for p in problems for v in p.vectors.values() for index in v if index >= NAMED})
     column = {index: NAMED + position for position, index in enumerate(used)}

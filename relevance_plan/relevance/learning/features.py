@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import hashlib
 import math
-from collections import defaultdict
+from collections import Counter, defaultdict
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 
@@ -79,10 +79,6 @@ def _bucket(text: str, config: FeatureConfig) -> int:
     return NAMED + stable_hash(text) % config.buckets
 
 
-def _colour(text: str) -> str:
-    return hashlib.blake2b(text.encode("utf-8"), digest_size=8).hexdigest()
-
-
 def goal_facts(task: PlanningTask) -> list[tuple[str, tuple[str, ...]]]:
     """(kind, atom) of each goal literal naming objects only: kind 'goal' or 'goal-not'."""
     known = task.problem.objects.keys() | task.domain.constants.keys()
@@ -107,8 +103,9 @@ def object_features(task: PlanningTask, config: FeatureConfig) -> ObjectFeatures
     objects = problem.objects
     nodes = set(objects) | set(domain.constants)
     unary: dict[str, set[str]] = defaultdict(set)
-    links: dict[str, set[tuple[str, str]]] = defaultdict(set)  # node -> {(label, neighbour)}
+    links: dict[str, set[tuple[int, str]]] = defaultdict(set)  # node -> {(label, neighbour)}
     predicates: dict[str, set[str]] = defaultdict(set)
+    labels: dict[tuple[str, str, int, int], int] = {}
     for kind, atom in _facts(task):
         args = atom[1:]
         for arg in args:
@@ -119,7 +116,11 @@ def object_features(task: PlanningTask, config: FeatureConfig) -> ObjectFeatures
         for i, here in enumerate(args):
             for j, there in enumerate(args):
                 if i != j and here in nodes and there in nodes:
-                    links[here].add((f"{kind}:{atom[0]}:{i}:{j}", there))
+                    key = (kind, atom[0], i, j)
+                    label = labels.get(key)
+                    if label is None:
+                        label = labels[key] = stable_hash(f"{kind}:{atom[0]}:{i}:{j}")
+                    links[here].add((label, there))
     task.check_time("describing the objects")
     goal_named = task.goal_objects
     types = {
@@ -128,7 +129,7 @@ def object_features(task: PlanningTask, config: FeatureConfig) -> ObjectFeatures
     }
     # a constant is the same object in every problem of the domain: its name is part of its colour
     colour = {
-        name: _colour(
+        name: stable_hash(
             f"{types[name][0]}|{','.join(sorted(unary[name]))}|{'goal' if name in goal_named else ''}"
             + (f"|{name}" if name in domain.constants else "")
         )
@@ -139,22 +140,25 @@ def object_features(task: PlanningTask, config: FeatureConfig) -> ObjectFeatures
         _add(vectors[name], _bucket(f"type:{types[name][0]}", config), 1.0)
         for ancestor in types[name][1:]:
             _add(vectors[name], _bucket(f"ancestor:{ancestor}", config), 1.0)
+    buckets: dict[tuple[int, int, int], int] = {}  # (round, label, colour) -> slot, each hashed once
     for round_number in range(config.iterations + 1):
+        last = round_number == config.iterations
+        seen: dict[str, Counter[tuple[int, int]]] = {}
+        for name in nodes if not last else objects:
+            seen[name] = Counter((label, colour[other]) for label, other in links[name])
         for name in objects:
             vector = vectors[name]
             _add(vector, _bucket(f"wl{round_number}:{colour[name]}", config), 1.0)
-            if round_number < config.iterations:
-                counts: dict[str, int] = defaultdict(int)
-                for label, other in links[name]:
-                    counts[f"nb{round_number}:{label}:{colour[other]}"] += 1
-                for text, count in counts.items():
-                    _add(vector, _bucket(text, config), math.log1p(count))
-        if round_number == config.iterations:
+            if last:
+                continue
+            for (label, shade), count in seen[name].items():
+                slot = buckets.get((round_number, label, shade))
+                if slot is None:
+                    slot = buckets[(round_number, label, shade)] = _bucket(f"nb{round_number}:{label}:{shade}", config)
+                _add(vector, slot, math.log1p(count))
+        if last:
             break
-        colour = {
-            name: _colour(colour[name] + "|" + ";".join(sorted({f"{label}={colour[o]}" for label, o in links[name]})))
-            for name in nodes
-        }
+        colour = {name: stable_hash(repr((colour[name], sorted(seen[name])))) for name in nodes}
         task.check_time("describing the objects")
     goal_result = score_by_goal(task, ScoreRequest())
     goal_scores = goal_result.element_scores
