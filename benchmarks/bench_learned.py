@@ -152,7 +152,7 @@ def summary(results: list[dict], limit: float) -> None:
 
 
 def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--domains", default=DOMAINS, help=f"Comma-separated pddlgym domains (default: {DOMAINS}).")
     parser.add_argument("--per-domain", type=int, default=10, help="Test problems per domain (default: all 10).")
     parser.add_argument("--train", type=int, default=40, help="Training problems per domain (default: 40).")
