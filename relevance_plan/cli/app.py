@@ -79,6 +79,7 @@ LAZY_COMMANDS = {
     "sweep": "relevance_plan.cli.batch",
     "demo": "relevance_plan.cli.batch",
     "watch": "relevance_plan.cli.watch",
+    "learn": "relevance_plan.cli.batch",
 }
 
 

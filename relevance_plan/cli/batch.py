@@ -1,4 +1,4 @@
-"""The batch commands of ``relevance-plan``: ``compare``, ``report``, ``sweep`` and ``demo``."""
+"""The batch commands of ``relevance-plan``: ``compare``, ``report``, ``sweep``, ``demo`` and ``learn``."""
 
 from __future__ import annotations
 
@@ -199,3 +199,63 @@ def demo(workdir, count, timeout, jobs, distractors, tiny, quiet):
     click.echo(f"suites: {', '.join(str(s) for s in run.suites)}")
     click.echo(f"results: {run.store_path} ({run.summary.ran} run now, {run.summary.already_stored} reused)")
     click.echo(f"more: relevance-plan report {run.store_path} --format latex --plots {run.workdir / 'plots'}")
+
+
+@click.command()
+@click.argument("domain_path", metavar="DOMAIN", type=click.Path(dir_okay=False))
+@click.argument("problem_paths", metavar="PROBLEM...", nargs=-1, type=click.Path(dir_okay=False))
+@click.option(
+    "-o", "--output", "output_path", required=True, type=click.Path(dir_okay=False), help="Model file (JSON)."
+)
+@click.option(
+    "--time-limit", type=float, default=60.0, show_default=True, help="Seconds for each planner run on a problem."
+)
+@click.option(
+    "--labels",
+    type=click.Choice(["plan", "minimal"]),
+    default="plan",
+    show_default=True,
+    help="plan: the objects the plan uses, with their closure (one run a problem); minimal: PLOI's greedy minimal"
+    " sufficient set (one run per object).",
+)
+@click.option("--seed", type=int, default=0, show_default=True, help="Seed of the order 'minimal' drops objects in.")
+@click.option(
+    "--store",
+    "store_path",
+    type=click.Path(dir_okay=False),
+    default=None,
+    help="Learn from the solved runs of this results store (their plans) instead of planning again.",
+)
+@click.option("--quiet", "-q", is_flag=True, help="No progress messages.")
+@handle_errors
+def learn(domain_path, problem_paths, output_path, time_limit, labels, seed, store_path, quiet):
+    """Learn which objects matter from solved PROBLEMs of DOMAIN; use the model with --scorer learned:MODEL."""
+    from relevance_plan.batch.learn import learn as learn_model
+    from relevance_plan.batch.learn import learn_from_store
+    from relevance_plan.io import check_input_file, check_output_file, write_output
+    from relevance_plan.relevance.learning.model import model_text
+
+    if time_limit <= 0:
+        raise UsageError(f"--time-limit must be a positive number of seconds, got {time_limit:g}")
+    check_input_file(domain_path, "domain file")
+    for path in problem_paths:
+        check_input_file(path, "problem file")
+    check_output_file(output_path, "model file", [domain_path, *problem_paths, store_path])
+
+    def say(message: str) -> None:
+        if not quiet:
+            click.echo(f"... {message}", err=True)
+
+    if store_path is not None:
+        report = learn_from_store(domain_path, store_path, problem_paths, labels=labels, seed=seed, say=say)
+    else:
+        if not problem_paths:
+            raise UsageError("give the training PROBLEMs (or --store STORE)")
+        report = learn_model(domain_path, problem_paths, time_limit=time_limit, labels=labels, seed=seed, say=say)
+    where = write_output(output_path, model_text(report.model))
+    model = report.model
+    click.echo(
+        f"learned from {len(report.problems)} problems ({len(report.skipped)} skipped) in {report.seconds:.1f} s:"
+        f" {model.training.get('needed')} of {model.training.get('objects')} objects needed ({labels} labels),"
+        f" keeps above P = {model.threshold:.3f}; model written to {where}"
+    )

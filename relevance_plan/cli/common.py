@@ -25,7 +25,7 @@ from relevance_plan.planning.results import PlanResult
 from relevance_plan.planning.validate import VALIDATOR_CHOICES
 from relevance_plan.relevance.prune import DEFAULT_TAU, Thresholds
 from relevance_plan.relevance.scorers import SCORERS
-from relevance_plan.relevance.setup import ScoringOptions
+from relevance_plan.relevance.setup import ScoringOptions, check_scorer
 
 
 def fail(message: str, code: ExitCode) -> None:
@@ -83,6 +83,19 @@ def _apply(command, decorators):
 SCORING_KEYS = ("scorer", "model_path", "objective", "model_task", "human", "tau_class", "tau_element", "seed")
 
 
+class ScorerType(click.ParamType):
+    """A registered scorer's name, or ``learned:MODEL``."""
+
+    name = "[" + "|".join(sorted(SCORERS)) + "|learned:MODEL]"
+
+    def convert(self, value, param, ctx):
+        try:
+            check_scorer(value)
+        except UsageError as error:
+            self.fail(error.message, param, ctx)
+        return value
+
+
 def scoring_options(command=None, *, with_seed: bool = True):
     """--scorer --model --objective --task --human --tau-class --tau-element [--seed]."""
     if command is None:
@@ -93,9 +106,10 @@ def scoring_options(command=None, *, with_seed: bool = True):
         [
             click.option(
                 "--scorer",
-                type=click.Choice(sorted(SCORERS)),
+                type=ScorerType(),
                 default=None,
-                help="Scorer; default: 'model' when a knowledge model applies, else 'goal'.",
+                help="Scorer: " + ", ".join(sorted(SCORERS)) + " or learned:MODEL (a model made by 'relevance-plan"
+                " learn'); default: 'model' when a knowledge model applies, else 'goal'.",
             ),
             click.option(
                 "--model",
@@ -132,7 +146,12 @@ def take_scoring(values: dict) -> ScoringOptions:
     """ScoringOptions from a command's parsed values (the scoring keys are removed from ``values``)."""
     taken = {key: values.pop(key, 0 if key == "seed" else None) for key in SCORING_KEYS}
     thresholds = Thresholds(taken.pop("tau_class"), taken.pop("tau_element"))
-    return ScoringOptions(thresholds=thresholds, **taken)
+    options = ScoringOptions(thresholds=thresholds, **taken)
+    if options.learned_model_path is not None:
+        from relevance_plan.relevance.learning.model import load_learned_model
+
+        load_learned_model(options.learned_model_path)  # a damaged file stops the command before any planning
+    return options
 
 
 # --------------------------------------------------------------------------- planning

@@ -25,7 +25,7 @@ from relevance_plan.relevance.types import static_predicates
 DEFAULT_TAU = 0.2
 FULL_ABOVE = 0.8  # a selection keeping more than this share of the objects plans on the full problem
 GROWTH = 2.0  # each widening at least doubles the kept set
-REPAIR_SCORERS = frozenset({"goal"})  # scorers whose selection the reachability check repairs by default
+REPAIR_SCORERS = frozenset({"goal", "learned"})  # scorers whose selection the reachability check repairs by default
 
 
 @dataclass(frozen=True)

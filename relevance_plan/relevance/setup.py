@@ -15,6 +15,8 @@ from typing import Any
 from relevance_plan.errors import UsageError
 from relevance_plan.pddl.model import Domain
 from relevance_plan.relevance.knowledge import KnowledgeModel, check_model_applies, find_model, load_model
+from relevance_plan.relevance.learning.model import load_learned_model
+from relevance_plan.relevance.learning.scorer import score_learned
 from relevance_plan.relevance.prune import Selection, Thresholds, prune_with_scores
 from relevance_plan.relevance.scorers import SCORERS, PlanningTask, ScoreRequest, ScoreResult
 from relevance_plan.relevance.sidecar import necessary_objects
@@ -36,8 +38,29 @@ class ScoringOptions:
     economical: bool = True  # ... and, of many candidates for one role, only those a relaxed plan needs
 
     def __post_init__(self) -> None:
-        if self.scorer is not None and self.scorer not in SCORERS:
-            raise UsageError(f"unknown scorer '{self.scorer}' (choose from: {', '.join(SCORERS)})")
+        if self.scorer is not None:
+            check_scorer(self.scorer)
+
+    @property
+    def learned_model_path(self) -> str | None:
+        """MODEL of ``--scorer learned:MODEL`` (None for the other scorers)."""
+        if self.scorer is None or not self.scorer.startswith(LEARNED_PREFIX):
+            return None
+        return self.scorer[len(LEARNED_PREFIX) :]
+
+
+LEARNED_PREFIX = "learned:"
+SCORER_CHOICES = (*SCORERS, LEARNED_PREFIX + "MODEL")  # what --scorer takes, as help and errors list it
+
+
+def check_scorer(scorer: str) -> None:
+    """UsageError unless ``scorer`` is a registered scorer or ``learned:MODEL``."""
+    if scorer.startswith(LEARNED_PREFIX) and scorer != LEARNED_PREFIX:
+        return
+    if scorer in (LEARNED_PREFIX, LEARNED_PREFIX[:-1]):
+        raise UsageError("the learned scorer needs its model: --scorer learned:MODEL (made by 'relevance-plan learn')")
+    if scorer not in SCORERS:
+        raise UsageError(f"unknown scorer '{scorer}' (choose from: {', '.join(SCORER_CHOICES)})")
 
 
 @dataclass(frozen=True)
@@ -115,6 +138,14 @@ def score_problem(
     if model is None and options.scorer in (None, "model"):
         # Only the model scorer reads a model: a broken file next to the domain must not stop the others.
         model = resolve_model(task.domain, None if domain_path is None else str(domain_path), options.model_path)
+    learned_path = options.learned_model_path
+    if learned_path is not None:
+        learned = load_learned_model(learned_path)
+        learned.check_applies(task.domain)
+        task.check_time("scoring the objects")
+        scores = score_learned(task, learned)
+        task.check_time("scoring the objects")
+        return Scoring(task, None, scores, options)
     scorer = choose_scorer(method, model, options.scorer)
     if scorer == "model" and model is None:
         raise UsageError(f"no knowledge model found for domain '{task.domain.name}': give --model or use --scorer goal")
@@ -135,4 +166,12 @@ def score_problem(
     return Scoring(task, model, scores, options)
 
 
-__all__ = ["Scoring", "ScoringOptions", "choose_scorer", "resolve_model", "score_problem"]
+__all__ = [
+    "SCORER_CHOICES",
+    "Scoring",
+    "ScoringOptions",
+    "check_scorer",
+    "choose_scorer",
+    "resolve_model",
+    "score_problem",
+]

@@ -1,0 +1,177 @@
+"""The learned scorer by PLOI's protocol: learn on pddlgym's small training problems, plan its large test ones.
+
+For each domain, ``relevance-plan learn``'s library call trains a model on the
+training problems (``manyX/problem0..39``), timed.  Then on each test problem
+(``manyX_test/``) four runs, one after the other, without the race (one core
+each): pure Fast Downward, ``plan --scorer goal`` (the default), ``plan
+--scorer learned:MODEL`` and ``--method random``.  Every plan is validated on
+the original problem by the attempt loop.  Times are in-process: the attempt
+loop's wall time (reading, scoring, pruning, planner processes, validation),
+without interpreter start-up.  An unsolved run counts at the time limit in
+the geometric means (so a speed-up over an unsolved pure run is a lower bound).
+
+Scoring cost: on each test problem, ``score_problem`` once with the goal and
+once with the learned scorer (in-process, median of 3); the difference is
+what applying the model adds.
+
+The problems come from the pddlgym wheel's files, without its dependencies:
+
+    pip install --no-deps pddlgym==0.0.7
+
+Takes 10-40 minutes on 2 cores with the defaults; for a short run:
+
+    python benchmarks/bench_learned.py --per-domain 2 --timeout 60 --domains manylogistics,manyferry
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib.util
+import math
+import statistics
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(REPO))
+
+from relevance_plan.batch.learn import learn  # noqa: E402
+from relevance_plan.io import load_domain, load_problem, write_text_atomic  # noqa: E402
+from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task  # noqa: E402
+from relevance_plan.relevance.learning.model import model_text  # noqa: E402
+from relevance_plan.relevance.scorers import PlanningTask  # noqa: E402
+from relevance_plan.relevance.setup import ScoringOptions, score_problem  # noqa: E402
+
+DOMAINS = "manylogistics,manymiconic,manyblockssmallpiles,manyferry"
+RUNS = ("pure", "goal", "learned", "random")
+
+
+def pddlgym_folder() -> Path:
+    spec = importlib.util.find_spec("pddlgym")  # finds the files without importing pddlgym (and gym)
+    if spec is None or spec.origin is None:
+        sys.exit("pddlgym's files are not installed: pip install --no-deps pddlgym==0.0.7")
+    return Path(spec.origin).parent / "pddl"
+
+
+def numbered(folder: Path) -> list[Path]:
+    return sorted(folder.glob("problem*.pddl"), key=lambda p: int(p.stem[len("problem") :]))
+
+
+def options_for(run: str, model: str, timeout: float) -> PlanOptions:
+    common = {"timeout": timeout, "race": False, "validators": ("builtin",)}
+    if run == "pure":
+        return PlanOptions(method="pure", **common)
+    if run == "random":
+        return PlanOptions(method="random", **common)
+    return PlanOptions(scorer="goal" if run == "goal" else f"learned:{model}", **common)
+
+
+def scoring_seconds(domain_path: Path, problem_path: Path, scorer: str) -> float:
+    times = []
+    for _ in range(3):
+        domain = load_domain(domain_path)
+        task = PlanningTask(domain, load_problem(problem_path, domain))
+        started = time.perf_counter()
+        score_problem(task, ScoringOptions(scorer=scorer))
+        times.append(time.perf_counter() - started)
+    return statistics.median(times)
+
+
+def geomean(values: list[float]) -> float:
+    return math.exp(sum(math.log(v) for v in values) / len(values)) if values else float("nan")
+
+
+def run_domain(folder: Path, name: str, args: argparse.Namespace, scratch: Path) -> dict:
+    domain_path = folder / f"{name}.pddl"
+    training = numbered(folder / name)[: args.train]
+    tests = numbered(folder / f"{name}_test")[: args.per_domain]
+    started = time.perf_counter()
+    report = learn(domain_path, training, time_limit=args.train_limit, labels=args.labels, seed=args.seed)
+    learning = time.perf_counter() - started
+    model = scratch / f"{name}.json"
+    write_text_atomic(model, model_text(report.model))
+    print(
+        f"\n{name}: learned from {len(report.problems)} of {len(training)} training problems in {learning:.1f} s"
+        f" ({args.labels} labels, threshold P > {report.model.threshold:.3f})",
+        flush=True,
+    )
+    print(f"{'problem':<16}{'objects':>8}  " + "  ".join(f"{run:>24}" for run in RUNS) + f"  {'+scoring':>9}")
+    rows = []
+    for problem in tests:
+        row: dict = {"problem": problem.name}
+        for run in RUNS:
+            result = plan_task(domain_path, problem, options_for(run, str(model), args.timeout))
+            solved = result.status is PlanStatus.SOLVED and result.valid
+            row[run] = (solved, result.wall_time, result.objects_kept, len(result.attempts))
+            row["objects"] = result.objects_total
+        goal_scoring = scoring_seconds(domain_path, problem, "goal")
+        learned_scoring = scoring_seconds(domain_path, problem, f"learned:{model}")
+        row["added"] = learned_scoring - goal_scoring
+        rows.append(row)
+        cells = []
+        for run in RUNS:
+            solved, seconds, kept, attempts = row[run]
+            cells.append(f"{'ok' if solved else 'FAIL':>4} {seconds:7.2f}s {kept:>5} kept {attempts}att")
+        print(
+            f"{problem.name:<16}{row['objects']:>8}  "
+            + "  ".join(f"{c:>24}" for c in cells)
+            + f"  {row['added']:+8.3f}s"
+        )
+    return {"name": name, "learning": learning, "rows": rows, "threshold": report.model.threshold}
+
+
+def seconds_of(row: dict, run: str, limit: float) -> float:
+    solved, seconds, _, _ = row[run]
+    return seconds if solved else max(seconds, limit)
+
+
+def summary(results: list[dict], limit: float) -> None:
+    print("\nper domain (geometric means; an unsolved run counts at the time limit):")
+    print(
+        f"{'domain':<24}{'learn s':>8}{'solved p/g/l/r':>16}{'l over pure':>12}{'l over goal':>12}{'g over pure':>12}"
+    )
+    over_pure, over_goal = [], []
+    for result in results:
+        rows = result["rows"]
+        solved = "/".join(str(sum(row[run][0] for row in rows)) for run in RUNS)
+        lp = [seconds_of(r, "pure", limit) / seconds_of(r, "learned", limit) for r in rows]
+        lg = [seconds_of(r, "goal", limit) / seconds_of(r, "learned", limit) for r in rows]
+        gp = [seconds_of(r, "pure", limit) / seconds_of(r, "goal", limit) for r in rows]
+        over_pure += lp
+        over_goal += lg
+        print(
+            f"{result['name']:<24}{result['learning']:>8.1f}{solved:>16}"
+            f"{geomean(lp):>12.2f}{geomean(lg):>12.2f}{geomean(gp):>12.2f}"
+        )
+    print(f"{'all':<24}{'':>8}{'':>16}{geomean(over_pure):>12.2f}{geomean(over_goal):>12.2f}")
+    added = [row["added"] for result in results for row in result["rows"]]
+    if added:
+        print(f"applying the model added {statistics.median(added):+.3f} s (median), {max(added):+.3f} s (most)")
+
+
+def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--domains", default=DOMAINS, help=f"Comma-separated pddlgym domains (default: {DOMAINS}).")
+    parser.add_argument("--per-domain", type=int, default=10, help="Test problems per domain (default: all 10).")
+    parser.add_argument("--train", type=int, default=40, help="Training problems per domain (default: 40).")
+    parser.add_argument("--timeout", type=float, default=120.0, help="Seconds for each test run (default: 120).")
+    parser.add_argument("--train-limit", type=float, default=30.0, help="Seconds for each training planner run.")
+    parser.add_argument("--labels", choices=("plan", "minimal"), default="plan")
+    parser.add_argument("--seed", type=int, default=0)
+    return parser.parse_args(argv)
+
+
+def main(argv: list[str] | None = None) -> None:
+    args = parse_args(argv)
+    folder = pddlgym_folder()
+    results = []
+    with tempfile.TemporaryDirectory(prefix="bench-learned-") as scratch:
+        for name in args.domains.split(","):
+            results.append(run_domain(folder, name, args, Path(scratch)))
+    summary(results, args.timeout)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,414 @@
+"""Learning per-object relevance from solved problems (``relevance-plan learn``).
+
+Each training problem is solved on the full problem (Fast Downward by default,
+within a per-problem limit), the plan validated on it, and its objects
+labelled:
+
+* ``plan``: the objects the plan names, the goal's, and what closure puts
+  back for them (as the pruner would).  One planner run per problem.
+* ``minimal``: PLOI's greedy minimal sufficient set, started from the plan's
+  set: drop one object (with what closure then no longer needs), plan on
+  what is left, and keep it dropped when a plan valid on the original problem
+  is still found.  One planner run per labelled object.
+
+Then a logistic model is fitted on the objects' features
+(``relevance.learning.features``), deterministically (Newton's method, L2,
+positives and negatives weighted equally per problem), and its threshold set
+so that the first attempt keeps every needed object on most training
+problems.  ``learn_from_store`` takes the solved runs of a results store
+instead of planning again.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import random
+import tempfile
+import time
+from collections.abc import Callable, Iterable, Sequence
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+
+from relevance_plan.errors import DomainMismatchError, UsageError
+from relevance_plan.io import load_domain, load_problem, write_text_atomic
+from relevance_plan.pddl.model import Domain
+from relevance_plan.pddl.plans import Plan
+from relevance_plan.planning.planners.base import PlannerStatus
+from relevance_plan.planning.planners.registry import DEFAULT_PLANNER_CONFIG, make_planner
+from relevance_plan.planning.validate import validate_plan
+from relevance_plan.relevance.learning.features import (
+    GOAL_NAMED,
+    GOAL_ZERO,
+    NAMED,
+    NAMED_FEATURES,
+    FeatureConfig,
+    Features,
+    object_features,
+)
+from relevance_plan.relevance.learning.model import LearnedModel, domain_signature
+from relevance_plan.relevance.prune import prune_with_scores
+from relevance_plan.relevance.scorers import PlanningTask, ScoreResult
+
+LABEL_KINDS = ("plan", "minimal")
+DEFAULT_LABELS = "plan"
+L2 = 1.0  # ridge penalty of the logistic fit (on the summed, per-problem-balanced loss)
+COVERAGE = 0.9  # the threshold keeps every needed object on this share of the training problems
+MIN_THRESHOLD, MAX_THRESHOLD = 0.02, 0.9
+
+
+@dataclass
+class LabelledProblem:
+    path: str
+    objects: int
+    positives: frozenset[str]
+    vectors: dict[str, Features] = field(repr=False)
+    solve_time: float = 0.0
+    planner_runs: int = 1
+    types: frozenset[str] = frozenset()  # the objects' types and their ancestors
+    predicates: frozenset[str] = frozenset()  # the predicates of the facts naming objects
+
+
+@dataclass
+class LearnReport:
+    model: LearnedModel
+    problems: list[LabelledProblem]
+    skipped: list[tuple[str, str]]  # (problem, why it was not used)
+    seconds: float
+
+
+Say = Callable[[str], None]
+
+
+def _quiet(message: str) -> None:
+    pass
+
+
+def plan_objects(task: PlanningTask, plan: Plan) -> frozenset[str]:
+    """The objects a plan names, the goal's, and what closure puts back for them (the ``plan`` labels)."""
+    named = {arg for step in plan for arg in step.args if arg in task.problem.objects} | task.pinned_objects
+    return closed(task, named)
+
+
+def closed(task: PlanningTask, names: Iterable[str]) -> frozenset[str]:
+    """``names`` with what the pruner's closure puts back for them."""
+    chosen = frozenset(names)
+    scores = ScoreResult("labels", {name: 1.0 if name in chosen else 0.0 for name in task.problem.objects})
+    return prune_with_scores(task, scores).kept
+
+
+class Solver:
+    """Solves a problem (or a subset of its objects) and validates the plan on the original problem."""
+
+    def __init__(self, domain_path: str, planner: str, config: str, time_limit: float, scratch: str):
+        self.domain_path = domain_path
+        self.planner = make_planner(planner, config)
+        self.time_limit = time_limit
+        self.scratch = scratch
+        self.runs = 0
+
+    def solve(self, task: PlanningTask, problem_path: str, kept: frozenset[str] | None = None) -> Plan | None:
+        target = problem_path
+        if kept is not None:
+            from relevance_plan.pddl.writer import write_pruned_problem
+
+            self.runs += 1
+            target = str(
+                write_text_atomic(
+                    Path(self.scratch) / f"subset-{self.runs}.pddl", write_pruned_problem(task.problem, kept)
+                )
+            )
+        outcome = self.planner.run(self.domain_path, target, time_limit=self.time_limit, memory_limit_mb=None)
+        if outcome.status is not PlannerStatus.SOLVED:
+            return None
+        validation = validate_plan(task.domain, task.problem, outcome.plan, None, time.monotonic() + self.time_limit)
+        return outcome.plan if validation.accepted else None
+
+
+def minimal_objects(
+    task: PlanningTask, problem_path: str, start: frozenset[str], solver: Solver, seed: int
+) -> frozenset[str]:
+    """PLOI's greedy minimal sufficient set, from a sufficient ``start``: each object in turn
+    (seeded order) is dropped when the rest, closed, still plans."""
+    current = start
+    order = sorted(start - task.pinned_objects)
+    random.Random(seed).shuffle(order)
+    for name in order:
+        if name not in current:
+            continue
+        trial = closed(task, current - {name})
+        if name in trial:
+            continue  # closure puts it back: the pruner could not drop it either
+        if solver.solve(task, problem_path, trial) is not None:
+            current = trial
+    return current
+
+
+def _labelled(
+    task: PlanningTask,
+    positives: frozenset[str],
+    config: FeatureConfig,
+    started: float,
+    runs: int,
+) -> LabelledProblem:
+    features = object_features(task, config)
+    return LabelledProblem(
+        task.problem.path or "",
+        len(task.problem.objects),
+        positives,
+        dict(features.vectors),
+        time.perf_counter() - started,
+        runs,
+        frozenset(t for types in features.types.values() for t in types),
+        frozenset(p for predicates in features.predicates.values() for p in predicates),
+    )
+
+
+def label_problem(
+    domain: Domain,
+    problem_path: str,
+    solver: Solver,
+    labels: str,
+    config: FeatureConfig,
+    seed: int,
+) -> LabelledProblem | str:
+    """The problem's labelled objects, or why it cannot be used."""
+    started = time.perf_counter()
+    task = PlanningTask(domain, load_problem(problem_path, domain))
+    runs_before = solver.runs
+    plan = solver.solve(task, problem_path)
+    if plan is None:
+        return f"not solved within {solver.time_limit:g} s"
+    positives = plan_objects(task, plan)
+    if labels == "minimal":
+        positives = minimal_objects(task, problem_path, positives, solver, seed)
+    return _labelled(task, positives, config, started, 1 + solver.runs - runs_before)
+
+
+def learn(
+    domain_path: str | os.PathLike[str],
+    problem_paths: Sequence[str | os.PathLike[str]],
+    *,
+    time_limit: float = 60.0,
+    labels: str = DEFAULT_LABELS,
+    seed: int = 0,
+    planner: str = "fast-downward",
+    planner_config: str = DEFAULT_PLANNER_CONFIG,
+    config: FeatureConfig = FeatureConfig(),
+    say: Say = _quiet,
+) -> LearnReport:
+    """Solve and label each training problem, then fit a model (see the module's docstring)."""
+    if labels not in LABEL_KINDS:
+        raise UsageError(f"unknown label kind '{labels}' (choose from: {', '.join(LABEL_KINDS)})")
+    if not problem_paths:
+        raise UsageError("learn needs at least one training problem")
+    started = time.perf_counter()
+    domain = load_domain(domain_path)
+    for path in problem_paths:  # all read before any planning: another domain's problem stops the run at once
+        _check_domain(domain, path)
+    labelled: list[LabelledProblem] = []
+    skipped: list[tuple[str, str]] = []
+    with tempfile.TemporaryDirectory(prefix="relevance-plan-learn-") as scratch:
+        solver = Solver(os.fspath(domain_path), planner, planner_config, time_limit, scratch)
+        for number, path in enumerate(problem_paths, 1):
+            result = label_problem(domain, os.fspath(path), solver, labels, config, seed)
+            if isinstance(result, str):
+                skipped.append((os.fspath(path), result))
+                say(f"[{number}/{len(problem_paths)}] {path}: skipped ({result})")
+                continue
+            labelled.append(result)
+            say(
+                f"[{number}/{len(problem_paths)}] {path}: {len(result.positives)} of {result.objects} objects needed"
+                f" ({result.planner_runs} planner run(s), {result.solve_time:.1f} s)"
+            )
+    return _report(domain, labelled, skipped, config, labels, seed, started)
+
+
+def _check_domain(domain: Domain, path: str | os.PathLike[str]) -> None:
+    problem = load_problem(path, domain)
+    if problem.domain_name != domain.name:
+        raise DomainMismatchError(
+            f"problem is for domain '{problem.domain_name}', not '{domain.name}'", path=os.fspath(path)
+        )
+
+
+def _report(
+    domain: Domain,
+    labelled: list[LabelledProblem],
+    skipped: list[tuple[str, str]],
+    config: FeatureConfig,
+    labels: str,
+    seed: int,
+    started: float,
+) -> LearnReport:
+    if not labelled:
+        raise UsageError("no training problem was solved: nothing to learn from (raise --time-limit?)")
+    model = fit_model(domain, labelled, config, labels, seed)
+    seconds = time.perf_counter() - started
+    training = dict(model.training, seconds=round(seconds, 2))
+    return LearnReport(replace(model, training=training), labelled, skipped, seconds)
+
+
+def learn_from_store(
+    domain_path: str | os.PathLike[str],
+    store_path: str | os.PathLike[str],
+    problem_paths: Sequence[str | os.PathLike[str]],
+    *,
+    labels: str = DEFAULT_LABELS,
+    seed: int = 0,
+    time_limit: float = 60.0,
+    config: FeatureConfig = FeatureConfig(),
+    say: Say = _quiet,
+) -> LearnReport:
+    """Learn from the solved, validated runs of a results store: a row's plan labels the problem file
+    among ``problem_paths`` of the same suite (folder name) and file name; ``minimal`` labels plan
+    again from there."""
+    from relevance_plan.batch.store import read_rows
+    from relevance_plan.pddl.plans import read_plan
+
+    if labels not in LABEL_KINDS:
+        raise UsageError(f"unknown label kind '{labels}' (choose from: {', '.join(LABEL_KINDS)})")
+    if not problem_paths:
+        raise UsageError("give the problem files the store's runs solved (PROBLEM...) with --store")
+    started = time.perf_counter()
+    domain = load_domain(domain_path)
+    by_name = {(Path(p).parent.name, Path(p).name): os.fspath(p) for p in problem_paths}
+    plans: dict[str, str] = {}
+    for row in read_rows(store_path):
+        path = by_name.get((row["suite"], row["problem"]))
+        if path is None or path in plans or row["status"] != "solved" or not row["valid"]:
+            continue
+        steps = json.loads(row["result_json"]).get("plan") or []
+        if steps:
+            plans[path] = "\n".join(steps)
+    for path in plans:
+        _check_domain(domain, path)
+    labelled: list[LabelledProblem] = []
+    skipped = [(os.fspath(p), "no solved run in the store") for p in problem_paths if os.fspath(p) not in plans]
+    with tempfile.TemporaryDirectory(prefix="relevance-plan-learn-") as scratch:
+        solver = Solver(os.fspath(domain_path), "fast-downward", DEFAULT_PLANNER_CONFIG, time_limit, scratch)
+        for number, (path, text) in enumerate(sorted(plans.items()), 1):
+            begun = time.perf_counter()
+            task = PlanningTask(domain, load_problem(path, domain))
+            plan = read_plan(text)
+            if not validate_plan(task.domain, task.problem, plan, None, time.monotonic() + time_limit).accepted:
+                skipped.append((path, "its stored plan is not valid on the problem"))
+                continue
+            positives = plan_objects(task, plan)
+            runs = solver.runs
+            if labels == "minimal":
+                positives = minimal_objects(task, path, positives, solver, seed)
+            labelled.append(_labelled(task, positives, config, begun, solver.runs - runs))
+            say(f"[{number}/{len(plans)}] {path}: {len(positives)} of {len(task.problem.objects)} objects needed")
+    return _report(domain, labelled, skipped, config, labels, seed, started)
+
+
+def fit_model(
+    domain: Domain, problems: Sequence[LabelledProblem], config: FeatureConfig, labels: str, seed: int
+) -> LearnedModel:
+    """A logistic model of P(needed | features) fitted on ``problems``, with its keep threshold."""
+    try:
+        import numpy as np
+    except ImportError:
+        raise UsageError("learn fits its model with numpy: pip install 'relevance-plan[learn]'") from None
+
+    used = sorted({index for p in problems for v in p.vectors.values() for index in v if index >= NAMED})
+    column = {index: NAMED + position for position, index in enumerate(used)}
+    width = NAMED + len(used)
+    rows, targets, weights = [], [], []
+    for problem in problems:
+        positives = len(problem.positives)
+        negatives = problem.objects - positives
+        for name in sorted(problem.vectors):
+            row = np.zeros(width)
+            for index, value in problem.vectors[name].items():
+                row[index if index < NAMED else column[index]] = value
+            rows.append(row)
+            needed = name in problem.positives
+            targets.append(1.0 if needed else 0.0)
+            # each problem weighs the same, and within it the needed objects as much as the others
+            weights.append(0.5 / max(positives if needed else negatives, 1))
+    x, y, w = np.array(rows), np.array(targets), np.array(weights)
+    theta = _newton(x, y, w, L2)
+    named = tuple(float(v) for v in theta[:NAMED])
+    hashed = {index: float(theta[column[index]]) for index in used if abs(theta[column[index]]) > 1e-9}
+    model = LearnedModel(
+        domain=domain_signature(domain),
+        config=config,
+        named_weights=named,
+        hashed_weights=hashed,
+        threshold=0.5,
+        seen_types=frozenset(),
+        seen_predicates=frozenset(),
+        labels=labels,
+    )
+    threshold = choose_threshold(model, problems)
+    seen_types, seen_predicates = _seen(problems)
+    return replace(
+        model,
+        threshold=threshold,
+        seen_types=seen_types,
+        seen_predicates=seen_predicates,
+        training={
+            "problems": len(problems),
+            "objects": sum(p.objects for p in problems),
+            "needed": sum(len(p.positives) for p in problems),
+            "planner_runs": sum(p.planner_runs for p in problems),
+            "seed": seed,
+            "l2": L2,
+            "features_used": len(used),
+            "named_features": list(NAMED_FEATURES),
+        },
+    )
+
+
+def _newton(x, y, w, l2: float, iterations: int = 30):
+    """Weighted L2-regularised logistic regression by Newton's method (deterministic)."""
+    import numpy as np
+
+    theta = np.zeros(x.shape[1])
+    penalty = np.full(x.shape[1], l2)
+    penalty[0] = 1e-6  # the bias is not shrunk
+    for _ in range(iterations):
+        z = np.clip(x @ theta, -30, 30)
+        p = 1.0 / (1.0 + np.exp(-z))
+        gradient = x.T @ (w * (p - y)) + penalty * theta
+        hessian = (x * (w * p * (1 - p))[:, None]).T @ x + np.diag(penalty)
+        step = np.linalg.solve(hessian, gradient)
+        theta = theta - step
+        if float(np.max(np.abs(step))) < 1e-7:
+            break
+    return theta
+
+
+def choose_threshold(model: LearnedModel, problems: Sequence[LabelledProblem]) -> float:
+    """The probability the first attempt keeps from: each training problem's lowest probability of a
+    needed object; the threshold keeps every needed object on ``COVERAGE`` of the problems."""
+    lowest = []
+    for problem in problems:
+        needed = [
+            model.probability(vector)
+            for name in problem.positives
+            if (vector := problem.vectors.get(name)) is not None and _judged(model, vector)
+        ]
+        if needed:
+            lowest.append(min(needed))
+    if not lowest:
+        return 0.5
+    lowest.sort()
+    index = int((1.0 - COVERAGE) * len(lowest))
+    value = lowest[min(index, len(lowest) - 1)] * 0.999
+    return min(max(value, MIN_THRESHOLD), MAX_THRESHOLD)
+
+
+def _judged(model: LearnedModel, vector: Features) -> bool:
+    """Whether the scorer scores this object by the model (not a goal object, not ruled out)."""
+    if vector.get(GOAL_NAMED):
+        return False
+    return not (model.respect_goal_zero and vector.get(GOAL_ZERO))
+
+
+def _seen(problems: Sequence[LabelledProblem]) -> tuple[frozenset[str], frozenset[str]]:
+    types = frozenset(t for p in problems for t in p.types)
+    predicates = frozenset(name for p in problems for name in p.predicates)
+    return types, predicates

@@ -1,0 +1,191 @@
+"""Per-object relational features, identical for a problem whatever the order of its objects.
+
+The graph: objects (and the domain's constants) are nodes; every initial fact
+and every goal literal of two or more arguments links each pair of its
+arguments, the link labelled with its kind (init, goal, goal-negated), the
+predicate and both argument positions.  Unary facts are part of a node's
+first colour, with its type and whether the goal names it.  Weisfeiler-Leman
+refinement then gives each object, at each round, a colour that sums up its
+neighbourhood that many links deep; a round's colour is the old one with the
+*set* of (link label, neighbour colour) pairs, so that a location with forty
+packages and one with four look alike, as they should to a model learned on
+small problems and applied to large ones.
+
+An object's features are sparse: a few named ones (goal-named, the goal
+scorer's score, hops from the goal's objects) and hashed ones (its type and
+its ancestors, its colour at each round, and the colours of its neighbours by
+link label), each hashed with BLAKE2b of its text into ``buckets`` slots.
+Nothing depends on Python's per-process ``hash()`` or on the order of sets.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import math
+from collections import Counter, defaultdict
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass
+
+from relevance_plan.pddl.formulas import literals
+from relevance_plan.relevance.scorers.base import PlanningTask, ScoreRequest
+from relevance_plan.relevance.scorers.goal import score_by_goal
+
+Features = dict[int, float]  # feature index -> value (absent: 0)
+
+# The named features, then the hashed ones from NAMED on.
+BIAS, GOAL_NAMED, GOAL_SCORE, GOAL_ZERO, PINNED = 0, 1, 2, 3, 4
+DISTANCE = 5  # one-hot: 0, 1, 2, 3, 4 or more hops, unreached (DISTANCE .. DISTANCE + 5)
+NAMED = DISTANCE + 6
+NAMED_FEATURES = (
+    "bias",
+    "goal-named",
+    "goal-score",
+    "goal-score-zero",
+    "pinned",
+    "hops-0",
+    "hops-1",
+    "hops-2",
+    "hops-3",
+    "hops-4+",
+    "unreached",
+)
+
+
+@dataclass(frozen=True)
+class FeatureConfig:
+    iterations: int = 3
+    buckets: int = 4096
+
+    def to_json(self) -> dict[str, object]:
+        return {"kind": "wl-objects", "iterations": self.iterations, "buckets": self.buckets, "hash": "blake2b-64"}
+
+
+@dataclass(frozen=True)
+class ObjectFeatures:
+    """Every object's features, and what the scorer needs besides."""
+
+    vectors: Mapping[str, Features]
+    goal_scores: Mapping[str, float]
+    alternatives: frozenset[str]  # the goal scorer's: candidates of a populous role (ScoreResult.alternatives)
+    types: Mapping[str, tuple[str, ...]]  # each object's type and its ancestors
+    predicates: Mapping[str, frozenset[str]]  # the predicates of the facts naming each object
+
+
+def stable_hash(text: str) -> int:
+    return int.from_bytes(hashlib.blake2b(text.encode("utf-8"), digest_size=8).digest(), "big")
+
+
+def _bucket(text: str, config: FeatureConfig) -> int:
+    return NAMED + stable_hash(text) % config.buckets
+
+
+def goal_facts(task: PlanningTask) -> list[tuple[str, tuple[str, ...]]]:
+    """(kind, atom) of each goal literal naming objects only: kind 'goal' or 'goal-not'."""
+    known = task.problem.objects.keys() | task.domain.constants.keys()
+    found = []
+    for atom, positive in literals(task.problem.goal):
+        if all(arg in known for arg in atom.args):
+            found.append(("goal" if positive else "goal-not", (atom.predicate, *atom.args)))
+    return found
+
+
+def _facts(task: PlanningTask) -> Iterable[tuple[str, tuple[str, ...]]]:
+    for predicate, atoms in task.init_index.by_predicate.items():
+        for atom in atoms:
+            if atom[0] == predicate:
+                yield "init", atom
+    yield from goal_facts(task)
+
+
+def object_features(task: PlanningTask, config: FeatureConfig) -> ObjectFeatures:
+    """The features of every object of ``task`` (``FeatureConfig`` says how many rounds and slots)."""
+    domain, problem = task.typing.domain, task.typing.problem
+    objects = problem.objects
+    nodes = set(objects) | set(domain.constants)
+    unary: dict[str, set[str]] = defaultdict(set)
+    links: dict[str, set[tuple[int, str]]] = defaultdict(set)  # node -> {(label, neighbour)}
+    predicates: dict[str, set[str]] = defaultdict(set)
+    labels: dict[tuple[str, str, int, int], int] = {}
+    for kind, atom in _facts(task):
+        args = atom[1:]
+        for arg in args:
+            predicates[arg].add(atom[0])
+        if len(args) == 1:
+            unary[args[0]].add(f"{kind}:{atom[0]}")
+            continue
+        for i, here in enumerate(args):
+            for j, there in enumerate(args):
+                if i != j and here in nodes and there in nodes:
+                    key = (kind, atom[0], i, j)
+                    label = labels.get(key)
+                    if label is None:
+                        label = labels[key] = stable_hash(f"{kind}:{atom[0]}:{i}:{j}")
+                    links[here].add((label, there))
+    task.check_time("describing the objects")
+    goal_named = task.goal_objects
+    types = {
+        name: domain.ancestors(objects[name]) if name in objects else domain.ancestors(domain.constants[name])
+        for name in nodes
+    }
+    # a constant is the same object in every problem of the domain: its name is part of its colour
+    colour = {
+        name: stable_hash(
+            f"{types[name][0]}|{','.join(sorted(unary[name]))}|{'goal' if name in goal_named else ''}"
+            + (f"|{name}" if name in domain.constants else "")
+        )
+        for name in nodes
+    }
+    vectors: dict[str, Features] = {name: {} for name in objects}
+    for name in objects:
+        _add(vectors[name], _bucket(f"type:{types[name][0]}", config), 1.0)
+        for ancestor in types[name][1:]:
+            _add(vectors[name], _bucket(f"ancestor:{ancestor}", config), 1.0)
+    buckets: dict[tuple[int, int, int], int] = {}  # (round, label, colour) -> slot, each hashed once
+    for round_number in range(config.iterations + 1):
+        last = round_number == config.iterations
+        seen: dict[str, Counter[tuple[int, int]]] = {}
+        for name in nodes if not last else objects:
+            seen[name] = Counter((label, colour[other]) for label, other in links[name])
+        for name in objects:
+            vector = vectors[name]
+            _add(vector, _bucket(f"wl{round_number}:{colour[name]}", config), 1.0)
+            if last:
+                continue
+            for (label, shade), count in seen[name].items():
+                slot = buckets.get((round_number, label, shade))
+                if slot is None:
+                    slot = buckets[(round_number, label, shade)] = _bucket(f"nb{round_number}:{label}:{shade}", config)
+                _add(vector, slot, math.log1p(count))
+        if last:
+            break
+        colour = {name: stable_hash(repr((colour[name], sorted(seen[name])))) for name in nodes}
+        task.check_time("describing the objects")
+    goal_result = score_by_goal(task, ScoreRequest())
+    goal_scores = goal_result.element_scores
+    distance = task.goal_distance
+    pinned = task.pinned_objects
+    for name in objects:
+        vector = vectors[name]
+        vector[BIAS] = 1.0
+        if name in goal_named:
+            vector[GOAL_NAMED] = 1.0
+        score = goal_scores.get(name, 0.0)
+        if score:
+            vector[GOAL_SCORE] = score
+        else:
+            vector[GOAL_ZERO] = 1.0
+        if name in pinned:
+            vector[PINNED] = 1.0
+        hops = distance.get(name)
+        vector[DISTANCE + (5 if hops is None else min(hops, 4))] = 1.0
+    return ObjectFeatures(
+        vectors,
+        goal_scores,
+        goal_result.alternatives,
+        {name: types[name] for name in objects},
+        {name: frozenset(predicates.get(name, ())) for name in objects},
+    )
+
+
+def _add(vector: Features, index: int, value: float) -> None:
+    vector[index] = vector.get(index, 0.0) + value
