@@ -111,6 +111,7 @@ def make_row(
     seed=0,
     config="c",
     exit_code=0,
+    cost=None,
 ):
     """A complete results-store row, made by hand."""
     config_json = json.dumps({"method": method, "timeout": TIMEOUT, "config": config}, sort_keys=True)
@@ -135,6 +136,7 @@ def make_row(
         "attempts": 1,
         "first_attempt_status": first or status,
         "plan_length": 10 if status == "solved" else None,
+        "plan_cost": (10.0 if cost is None else cost) if status == "solved" else None,
         "timeout": TIMEOUT,
         "message": "",
         "config_json": config_json,
@@ -159,3 +161,19 @@ def outputs_under_hash_seeds(script: str, seeds: tuple[str, ...] = ("1", "2"), *
         ).stdout
         for seed in seeds
     ]
+
+
+# --------------------------------------------------------------------------- a store written by several processes
+
+
+def write_store_rounds(barrier, folder: str, rounds: int, writer: str, jobs: int) -> None:
+    """In a child process: for each round, wait for the other writers, then create the round's store
+    (the same new path for every writer) and add ``jobs`` rows of its own plus one row all share."""
+    from relevance_plan.batch.store import ResultStore
+
+    for number in range(rounds):
+        barrier.wait(timeout=120)
+        with ResultStore(Path(folder) / f"round-{number}.sqlite") as store:
+            store.add(make_row("s", "shared", "pure"))
+            for job in range(jobs):
+                store.add(make_row("s", f"{writer}-{job}", "pure"))

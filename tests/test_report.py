@@ -277,3 +277,54 @@ def test_report_csv_rows_read_back_as_the_json_rows(tmp_path):
 def test_report_takes_one_output_format(known_store, options):
     result = invoke("report", known_store, *options)
     assert result.exit_code == ExitCode.USAGE and "choose one output" in result.stderr
+
+
+# --------------------------------------------------------------------------- plan costs
+
+
+def cost_rows():
+    """Suite 'alpha': pure and relevance on a, b, c; relevance doubles a's cost and halves b's, c
+    unsolved by pure; random solves only a, at four times pure's cost.  Suite 'beta' has no pure."""
+    return [
+        make_row("alpha", "a", "pure", cost=10.0),
+        make_row("alpha", "b", "pure", cost=20.0),
+        make_row("alpha", "c", "pure", status="out-of-time", wall=100.0),
+        make_row("alpha", "a", "relevance", cost=20.0),
+        make_row("alpha", "b", "relevance", cost=10.0),
+        make_row("alpha", "c", "relevance", cost=99.0),
+        make_row("alpha", "a", "random", cost=40.0),
+        make_row("alpha", "b", "random", status="planner-error"),
+        make_row("beta", "a", "relevance", cost=3.0),
+    ]
+
+
+def test_cost_ratio_is_the_geometric_mean_over_problems_both_solved():
+    records = {(r.suite, r.method): r for r in build_report(cost_rows())}
+    relevance, random, pure = records[("alpha", "relevance")], records[("alpha", "random")], records[("alpha", "pure")]
+    # 20/10 and 10/20: a geometric mean of 1; c is left out (pure did not solve it)
+    assert relevance.cost_over_pure == pytest.approx(1.0) and relevance.cost_pairs == 2
+    assert random.cost_over_pure == pytest.approx(4.0) and random.cost_pairs == 1
+    assert pure.cost_over_pure == pytest.approx(1.0)
+    assert relevance.mean_plan_cost == pytest.approx((20 + 10 + 99) / 3)
+    assert records[("beta", "relevance")].cost_over_pure is None
+
+
+def test_cost_rows_in_the_text_table_and_the_csv(tmp_path):
+    lines = format_report(build_report(cost_rows())).splitlines()
+    assert "|  | cost / pure (geo. mean) | 1.00 | 1.00 | 4.00 |" in lines
+    assert "|  | plan cost | 43.0 | 15.0 | 40.0 |" in lines
+    assert "|  | solved | 3/3 | 2/3 | 1/2 |" in lines
+    beta = lines[lines.index("| beta | time (s) | 1.00 | – | – |") :]
+    assert not any("cost / pure" in line for line in beta[: beta.index("")])  # no pure in beta
+    table = list(csv.DictReader(io.StringIO(format_report(build_report(cost_rows()), "csv"))))
+    random = next(line for line in table if line["method"] == "random")
+    assert float(random["cost_over_pure"]) == 4.0 and random["cost_pairs"] == "1"
+
+
+def test_unknown_costs_show_as_unknown_not_as_zero():
+    rows = [{**row, "plan_cost": None} for row in cost_rows()]
+    records = build_report(rows)
+    assert all(r.mean_plan_cost is None and r.cost_over_pure is None for r in records)
+    text = format_report(records)
+    assert "|  | plan cost | ? | ? | ? |" in text.splitlines()
+    assert "plan cost unknown" in text
