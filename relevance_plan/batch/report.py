@@ -154,6 +154,12 @@ def cost_ratio(method: dict[tuple, float], pure: dict[tuple, float]) -> tuple[fl
     return (math.exp(sum(logs) / len(logs)) if logs else None), len(logs)
 
 
+def suite_labels(rows: Sequence[dict[str, Any]]) -> list[str]:
+    """Each row's block label: its suite, or ``SUITE [PLANNER]`` when the rows come from several planners."""
+    several = len({row_planner(row) for row in rows}) > 1
+    return [f"{row['suite']} [{row_planner(row)}]" if several else row["suite"] for row in rows]
+
+
 def build_report(rows: Iterable[dict[str, Any]]) -> list[ReportRecord]:
     """One record per (suite, method), suites by name, methods in METHODS order.
 
@@ -162,10 +168,9 @@ def build_report(rows: Iterable[dict[str, Any]]) -> list[ReportRecord]:
     are compared per planner and the ratios never mix planners.
     """
     rows = list(rows)
-    several = len({row_planner(row) for row in rows}) > 1
+    labels = suite_labels(rows)
     groups: dict[tuple[str, str], list[dict[str, Any]]] = {}
-    for row in rows:
-        suite = f"{row['suite']} [{row_planner(row)}]" if several else row["suite"]
+    for row, suite in zip(rows, labels):
         groups.setdefault((suite, row["method"]), []).append(row)
     medians = {key: statistics.median(job_time(r) for r in group) for key, group in groups.items()}
     costs = {key: solved_costs(group) for key, group in groups.items()}
@@ -246,7 +251,7 @@ def _cell(record: ReportRecord | None, attribute: str, pattern: str) -> str:
     return NOT_APPLICABLE if value is None else pattern.format(value)
 
 
-def _table(records: Sequence[ReportRecord]) -> tuple[list[str], list[tuple[str, list[tuple[str, list[str]]]]]]:
+def report_table(records: Sequence[ReportRecord]) -> tuple[list[str], list[tuple[str, list[tuple[str, list[str]]]]]]:
     """(method columns, [(suite, [(metric label, cells)])]) in the paper's shape."""
     methods = sorted({r.method for r in records}, key=_method_order)
     suites = sorted({r.suite for r in records})
@@ -270,7 +275,7 @@ def format_count(value: float) -> str:
     return f"{value:.0f}" if float(value).is_integer() else f"{value:.1f}"
 
 
-def _notes(records: Sequence[ReportRecord]) -> list[str]:
+def report_notes(records: Sequence[ReportRecord]) -> list[str]:
     notes = []
     if any(r.pure_over_method is not None or r.oracle_over_method is not None for r in records):
         notes.append("pure / method = median time of pure divided by the method's: times faster than pure")
@@ -293,12 +298,12 @@ def _notes(records: Sequence[ReportRecord]) -> list[str]:
 
 
 def _markdown(records: Sequence[ReportRecord]) -> str:
-    methods, blocks = _table(records)
+    methods, blocks = report_table(records)
     lines = ["| suite | metric | " + " | ".join(methods) + " |", "|---|---|" + "---|" * len(methods)]
     for suite, rows in blocks:
         for index, (label, cells) in enumerate(rows):
             lines.append(f"| {suite if index == 0 else ''} | {label} | " + " | ".join(cells) + " |")
-    lines += [""] + [f"- {note}" for note in _notes(records)]
+    lines += [""] + [f"- {note}" for note in report_notes(records)]
     return "\n".join(lines).rstrip() + "\n"
 
 
@@ -323,10 +328,10 @@ def _latex_escape(text: str) -> str:
 
 
 def _latex(records: Sequence[ReportRecord]) -> str:
-    methods, blocks = _table(records)
+    methods, blocks = report_table(records)
     lines = [
         "% relevance-plan report; needs \\usepackage{booktabs}",
-        *(f"% {_latex_escape(note)}" for note in _notes(records)),
+        *(f"% {_latex_escape(note)}" for note in report_notes(records)),
         "\\begin{tabular}{ll" + "r" * len(methods) + "}",
         "\\toprule",
         "world & metric & " + " & ".join(_latex_escape(m) for m in methods) + " \\\\",
