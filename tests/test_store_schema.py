@@ -122,3 +122,22 @@ def test_other_schema_versions_are_refused_for_writing_too(tmp_path, version):
     with pytest.raises(StoreError, match=f"schema version {version}"):
         ResultStore(path)
     assert files_of(path) == before
+
+
+@pytest.mark.planner
+def test_compare_into_a_schema_one_store_migrates_it_and_stores_costs(tmp_path):
+    suite = tmp_path / "coffee-simple"
+    made = invoke("generate", "coffee", "--difficulty", "simple", "--count", "1", "--seed", "1", "--out", suite)
+    assert made.exit_code == 0, made.output
+    path = schema_one_store(tmp_path / "old.sqlite", OLD_ROWS)
+    result = invoke("compare", suite, "--methods", "pure", "--store", path, "--timeout", "60", "-q")
+    assert result.exit_code == 0, result.output
+    with ResultStore(path, read_only=True) as store:
+        assert store.meta["schema_version"] == str(SCHEMA_VERSION)
+        rows = store.rows()
+    assert [(row["problem"], row["method"], row["plan_cost"]) for row in rows[:2]] == [
+        ("a.pddl", "pure", None),
+        ("a.pddl", "relevance", None),
+    ]
+    (new,) = rows[2:]
+    assert new["status"] == "solved" and new["plan_cost"] == new["plan_length"]  # the coffee world has unit costs
