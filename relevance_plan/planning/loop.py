@@ -769,8 +769,8 @@ def plan_cost_of(
     problem: Problem | None, plan: Plan, validation: ValidationResult, reported: float | None
 ) -> float | None:
     """A plan's cost as VAL's "Final value" gives it: the total-cost the validator found on the
-    original problem; without action costs, a sequential plan's length (unit cost, as Fast Downward
-    writes it); None for a timed plan without action costs (VAL would give its makespan) and for a
+    original problem; without action costs, a sequential plan's length (unit cost, the IPC
+    convention); None for a timed plan without action costs (VAL would give its makespan) and for a
     plan nobody validated whose planner named no cost."""
     if validation.cost is not None:
         return validation.cost
