@@ -116,6 +116,7 @@ def make_row(
     seed=0,
     config="c",
     exit_code=0,
+    cost=None,
 ):
     """A complete results-store row, made by hand."""
     config_json = json.dumps({"method": method, "timeout": TIMEOUT, "config": config}, sort_keys=True)
@@ -140,6 +141,7 @@ def make_row(
         "attempts": 1,
         "first_attempt_status": first or status,
         "plan_length": 10 if status == "solved" else None,
+        "plan_cost": (10.0 if cost is None else cost) if status == "solved" else None,
         "timeout": TIMEOUT,
         "message": "",
         "config_json": config_json,
@@ -531,3 +533,19 @@ def assert_session_gone(session: int) -> None:
 
 
 # --- without running the planner ---------------------------------------------
+
+
+# --------------------------------------------------------------------------- a store written by several processes
+
+
+def write_store_rounds(barrier, folder: str, rounds: int, writer: str, jobs: int) -> None:
+    """In a child process: for each round, wait for the other writers, then create the round's store
+    (the same new path for every writer) and add ``jobs`` rows of its own plus one row all share."""
+    from relevance_plan.batch.store import ResultStore
+
+    for number in range(rounds):
+        barrier.wait(timeout=120)
+        with ResultStore(Path(folder) / f"round-{number}.sqlite") as store:
+            store.add(make_row("s", "shared", "pure"))
+            for job in range(jobs):
+                store.add(make_row("s", f"{writer}-{job}", "pure"))

@@ -185,12 +185,71 @@ def test_empty_and_unknown_format():
         format_report([], "html")
 
 
+PNG_PLOTS = ["cactus.png", "relevance-vs-pure.png", "cactus-alpha.png", "cactus-beta.png"]
+
+
 def test_plots_are_written_atomically_as_png(known_store, tmp_path):
     written = write_plots(stored_rows(known_store), tmp_path / "plots")
-    assert [p.name for p in written] == ["cactus.png", "relevance-vs-pure.png"]
+    assert [p.name for p in written] == PNG_PLOTS
     for path in written:
         assert path.read_bytes().startswith(b"\x89PNG\r\n\x1a\n")
-    assert sorted(p.name for p in (tmp_path / "plots").iterdir()) == ["cactus.png", "relevance-vs-pure.png"]
+    assert sorted(p.name for p in (tmp_path / "plots").iterdir()) == sorted(PNG_PLOTS)
+
+
+@pytest.mark.parametrize("fmt, start", [("svg", b"<?xml"), ("pdf", b"%PDF")])
+def test_plots_in_a_paper_format_one_cactus_per_suite(known_store, tmp_path, fmt, start):
+    rows = stored_rows(known_store)
+    written = write_plots(rows, tmp_path / "plots", fmt=fmt)
+    assert [p.name for p in written] == [name.replace(".png", f".{fmt}") for name in PNG_PLOTS]
+    assert all(path.read_bytes().startswith(start) for path in written)
+    again = write_plots(rows, tmp_path / "plots", fmt=fmt)  # our own plots are replaced
+    assert again == written and sorted(p.name for p in (tmp_path / "plots").iterdir()) == sorted(
+        p.name for p in written
+    )
+
+
+def test_png_resolution_follows_dpi(known_store, tmp_path):
+    import struct
+
+    rows = stored_rows(known_store)
+    sizes = []
+    for dpi in (50, 100):
+        (cactus, *_) = write_plots(rows, tmp_path / f"dpi-{dpi}", dpi=dpi)
+        sizes.append(struct.unpack(">II", cactus.read_bytes()[16:24]))  # the IHDR width and height
+    assert sizes[1][0] == pytest.approx(2 * sizes[0][0], abs=2) and sizes[1][1] == pytest.approx(2 * sizes[0][1], abs=2)
+
+
+def test_a_users_file_with_a_per_suite_plot_name_stops_before_any_plot_is_written(known_store, tmp_path):
+    folder = tmp_path / "plots"
+    folder.mkdir()
+    (folder / "cactus-beta.svg").write_text("<svg>my own drawing</svg>")
+    with pytest.raises(UsageError, match="cactus-beta.svg exists and is not a plot"):
+        write_plots(stored_rows(known_store), folder, fmt="svg")
+    assert [p.name for p in folder.iterdir()] == ["cactus-beta.svg"]
+
+
+def test_a_drawing_error_leaves_no_plot_behind(known_store, tmp_path, monkeypatch):
+    from relevance_plan.batch import plots
+
+    def broken(rows, suite=None):
+        if suite == "beta":
+            raise RuntimeError("drawing failed")
+        return real(rows, suite)
+
+    real = plots._cactus
+    monkeypatch.setattr(plots, "_cactus", broken)
+    with pytest.raises(RuntimeError):
+        write_plots(stored_rows(known_store), tmp_path / "plots")
+    assert not (tmp_path / "plots").exists() or not list((tmp_path / "plots").iterdir())
+
+
+def test_suite_names_become_safe_distinct_file_names():
+    from relevance_plan.batch.plots import plot_names
+
+    names = plot_names(["a/b", "a b", "../x", "ok"], "png")
+    assert names["ok"] == "cactus-ok.png" and names["../x"] == "cactus-x.png"
+    assert len(set(names.values())) == len(names)
+    assert all("/" not in name and " " not in name for name in names.values())
 
 
 def test_plots_without_matplotlib_say_how_to_install(known_store, tmp_path, monkeypatch):
@@ -277,3 +336,54 @@ def test_report_csv_rows_read_back_as_the_json_rows(tmp_path):
 def test_report_takes_one_output_format(known_store, options):
     result = invoke("report", known_store, *options)
     assert result.exit_code == ExitCode.USAGE and "choose one output" in result.stderr
+
+
+# --------------------------------------------------------------------------- plan costs
+
+
+def cost_rows():
+    """Suite 'alpha': pure and relevance on a, b, c; relevance doubles a's cost and halves b's, c
+    unsolved by pure; random solves only a, at four times pure's cost.  Suite 'beta' has no pure."""
+    return [
+        make_row("alpha", "a", "pure", cost=10.0),
+        make_row("alpha", "b", "pure", cost=20.0),
+        make_row("alpha", "c", "pure", status="out-of-time", wall=100.0),
+        make_row("alpha", "a", "relevance", cost=20.0),
+        make_row("alpha", "b", "relevance", cost=10.0),
+        make_row("alpha", "c", "relevance", cost=99.0),
+        make_row("alpha", "a", "random", cost=40.0),
+        make_row("alpha", "b", "random", status="planner-error"),
+        make_row("beta", "a", "relevance", cost=3.0),
+    ]
+
+
+def test_cost_ratio_is_the_geometric_mean_over_problems_both_solved():
+    records = {(r.suite, r.method): r for r in build_report(cost_rows())}
+    relevance, random, pure = records[("alpha", "relevance")], records[("alpha", "random")], records[("alpha", "pure")]
+    # 20/10 and 10/20: a geometric mean of 1; c is left out (pure did not solve it)
+    assert relevance.cost_over_pure == pytest.approx(1.0) and relevance.cost_pairs == 2
+    assert random.cost_over_pure == pytest.approx(4.0) and random.cost_pairs == 1
+    assert pure.cost_over_pure == pytest.approx(1.0)
+    assert relevance.mean_plan_cost == pytest.approx((20 + 10 + 99) / 3)
+    assert records[("beta", "relevance")].cost_over_pure is None
+
+
+def test_cost_rows_in_the_text_table_and_the_csv(tmp_path):
+    lines = format_report(build_report(cost_rows())).splitlines()
+    assert "|  | cost / pure (geo. mean) | 1.00 | 1.00 | 4.00 |" in lines
+    assert "|  | plan cost | 43.0 | 15.0 | 40.0 |" in lines
+    assert "|  | solved | 3/3 | 2/3 | 1/2 |" in lines
+    beta = lines[lines.index("| beta | time (s) | 1.00 | – | – |") :]
+    assert not any("cost / pure" in line for line in beta[: beta.index("")])  # no pure in beta
+    table = list(csv.DictReader(io.StringIO(format_report(build_report(cost_rows()), "csv"))))
+    random = next(line for line in table if line["method"] == "random")
+    assert float(random["cost_over_pure"]) == 4.0 and random["cost_pairs"] == "1"
+
+
+def test_unknown_costs_show_as_unknown_not_as_zero():
+    rows = [{**row, "plan_cost": None} for row in cost_rows()]
+    records = build_report(rows)
+    assert all(r.mean_plan_cost is None and r.cost_over_pure is None for r in records)
+    text = format_report(records)
+    assert "|  | plan cost | ? | ? | ? |" in text.splitlines()
+    assert "plan cost unknown" in text

@@ -1,13 +1,19 @@
 """Figures drawn from the report's and the sweep's tables (the only module that imports matplotlib).
 
 matplotlib is the optional 'plots' extra: ``require_matplotlib`` says how to
-install it, and the commands call it before doing any work.
+install it, and the commands call it before doing any work.  Every figure is
+drawn into memory first and each file written through a temporary name, so an
+error leaves no half-written plot; every file carries our name in its metadata
+(PNG "Software", SVG and PDF "Creator"), which is how a later run knows it may
+replace it.
 """
 
 from __future__ import annotations
 
+import hashlib
 import io
 import os
+import re
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
@@ -18,11 +24,18 @@ from relevance_plan.errors import InputFileError, UsageError
 from relevance_plan.io import write_bytes_atomic
 
 PLOTS_INSTALL_HINT = "pip install 'relevance-plan[plots]'"
-PLOT_FILES = ("cactus.png", "relevance-vs-pure.png")
-# Written into every PNG we make (its tEXt "Software" entry): a plot file without it is the user's own.
+PLOT_FORMATS = ("png", "svg", "pdf")
+DEFAULT_DPI = 150
+PLOT_STEMS = ("cactus", "relevance-vs-pure")  # then one cactus-SUITE per suite
+PLOT_FILES = tuple(f"{stem}.png" for stem in PLOT_STEMS)
+# Written into every plot we make: a plot file without it is the user's own.
 SOFTWARE = "relevance-plan"
-_MARK = b"Software\x00" + SOFTWARE.encode()
-_MARK_WITHIN = 4096  # the text chunks come before the image data
+_MARKS = {
+    "png": (b"\x89PNG", b"Software\x00" + SOFTWARE.encode()),  # the tEXt chunk
+    "svg": (b"<?xml", b"<dc:title>" + SOFTWARE.encode() + b"</dc:title>"),  # the creator in the RDF metadata
+    "pdf": (b"%PDF", b"/Creator (" + SOFTWARE.encode() + b")"),  # the document information
+}
+_MARK_WITHIN = {"png": 4096, "svg": 4096, "pdf": 1 << 24}  # a PDF's information dictionary comes last
 
 
 def require_matplotlib(what: str = "plots") -> None:
@@ -40,19 +53,27 @@ def _figure(**options):
     return Figure(**options)
 
 
-def _save(figure, path: Path, dpi: int = 120) -> Path:
+def render(figure, fmt: str = "png", dpi: int = DEFAULT_DPI) -> bytes:
+    """The figure as a PNG, SVG or PDF file's bytes, our name in its metadata."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
+    if fmt not in PLOT_FORMATS:
+        raise UsageError(f"unknown plot format '{fmt}' (choose from: {', '.join(PLOT_FORMATS)})")
     FigureCanvasAgg(figure)
     buffer = io.BytesIO()
-    figure.savefig(buffer, format="png", dpi=dpi, metadata={"Software": SOFTWARE})
-    return write_bytes_atomic(path, buffer.getvalue())
+    key = "Software" if fmt == "png" else "Creator"
+    figure.savefig(buffer, format=fmt, dpi=dpi, metadata={key: SOFTWARE})
+    return buffer.getvalue()
+
+
+def _save(figure, path: Path, dpi: int = 120) -> Path:
+    return write_bytes_atomic(path, render(figure, "png", dpi))
 
 
 # --------------------------------------------------------------------------- report
 
 
-def _cactus(rows: Sequence[dict[str, Any]]):
+def _cactus(rows: Sequence[dict[str, Any]], suite: str | None = None):
     from matplotlib.ticker import MaxNLocator
 
     figure = _figure(figsize=(6.4, 4.4), layout="constrained")
@@ -68,7 +89,7 @@ def _cactus(rows: Sequence[dict[str, Any]]):
     axes.yaxis.set_major_locator(MaxNLocator(integer=True))
     axes.set_xlabel("time per problem (s): relevance + planning")
     axes.set_ylabel("problems solved")
-    axes.set_title("Solved problems within a time (all suites)")
+    axes.set_title("Solved problems within a time " + ("(all suites)" if suite is None else f"({suite})"))
     axes.grid(True, which="both", alpha=0.3)
     axes.legend()
     return figure
@@ -104,22 +125,51 @@ def _scatter(rows: Sequence[dict[str, Any]]):
 
 
 def _ours(path: Path) -> bool:
-    """A PNG this tool wrote (it carries our Software entry)."""
+    """A plot this tool wrote (it carries our name in its metadata)."""
+    fmt = path.suffix.lstrip(".").lower()
+    if fmt not in _MARKS:
+        return False
+    start, mark = _MARKS[fmt]
     try:
         with open(path, "rb") as stream:
-            head = stream.read(_MARK_WITHIN)
+            head = stream.read(_MARK_WITHIN[fmt])
     except OSError:
         return False
-    return head.startswith(b"\x89PNG") and _MARK in head
+    return head.startswith(start) and mark in head
 
 
-def check_plot_targets(directory: str | os.PathLike, store: str | os.PathLike | None = None) -> list[Path]:
+def _file_part(suite: str) -> str:
+    """A suite's name as part of a file name: letters, digits, '.', '_' and '-' only."""
+    return re.sub(r"[^A-Za-z0-9._-]+", "-", suite).strip(".-") or "suite"
+
+
+def plot_names(suites: Sequence[str], fmt: str = "png") -> dict[str | None, str]:
+    """The file name of each cactus plot (None: all suites; then each suite) and of the scatter ("")."""
+    names: dict[str | None, str] = {None: f"cactus.{fmt}", "": f"relevance-vs-pure.{fmt}"}
+    taken = set(names.values())
+    for suite in sorted(set(suites)):
+        name = f"cactus-{_file_part(suite)}.{fmt}"
+        if name in taken:  # two suites that differ only in characters a file name leaves out
+            name = f"cactus-{_file_part(suite)}-{hashlib.sha256(suite.encode()).hexdigest()[:8]}.{fmt}"
+        names[suite] = name
+        taken.add(name)
+    return names
+
+
+def check_plot_targets(
+    directory: str | os.PathLike,
+    store: str | os.PathLike | None = None,
+    fmt: str = "png",
+    suites: Sequence[str] = (),
+) -> list[Path]:
     """The plot files of ``directory``, refused (``UsageError``) where one would replace a file
     that is not a plot of ours: the results store, or the user's own ``cactus.png``."""
+    if fmt not in PLOT_FORMATS:
+        raise UsageError(f"unknown plot format '{fmt}' (choose from: {', '.join(PLOT_FORMATS)})")
     directory = Path(directory)
     if directory.exists() and not directory.is_dir():
         raise InputFileError("--plots names a file, not a folder", path=str(directory))
-    targets = [directory / name for name in PLOT_FILES]
+    targets = [directory / name for name in plot_names(suites, fmt).values()]
     for target in targets:
         if not os.path.lexists(target):
             continue
@@ -133,22 +183,69 @@ def check_plot_targets(directory: str | os.PathLike, store: str | os.PathLike | 
     return targets
 
 
-def write_plots(
-    rows: Sequence[dict[str, Any]], directory: str | os.PathLike, store: str | os.PathLike | None = None
-) -> list[Path]:
-    """Write ``cactus.png`` and ``relevance-vs-pure.png`` into ``directory`` (created if needed).
+def report_figures(rows: Sequence[dict[str, Any]]) -> dict[str | None, Any]:
+    """The report's figures keyed as ``plot_names``: the cactus of all suites (None), the scatter (""),
+    then a cactus per suite."""
+    rows = list(rows)
+    figures: dict[str | None, Any] = {None: _cactus(rows), "": _scatter(rows)}
+    for suite in sorted({r["suite"] for r in rows}):
+        figures[suite] = _cactus([r for r in rows if r["suite"] == suite], suite)
+    return figures
 
-    ``store`` (the results store the rows came from) is never overwritten.
+
+def write_plots(
+    rows: Sequence[dict[str, Any]],
+    directory: str | os.PathLike,
+    store: str | os.PathLike | None = None,
+    fmt: str = "png",
+    dpi: int = DEFAULT_DPI,
+) -> list[Path]:
+    """Write ``cactus.FMT``, ``relevance-vs-pure.FMT`` and a ``cactus-SUITE.FMT`` per suite into
+    ``directory`` (created if needed).
+
+    ``store`` (the results store the rows came from) is never overwritten.  Every figure is
+    drawn before the first file is written.
     """
     require_matplotlib()
+    if dpi <= 0:
+        raise UsageError(f"--dpi must be a positive number of dots per inch, got {dpi}")
+    rows = list(rows)
     directory = Path(directory)
-    targets = check_plot_targets(directory, store)
+    suites = sorted({r["suite"] for r in rows})
+    check_plot_targets(directory, store, fmt, suites)
+    names = plot_names(suites, fmt)
+    drawn = {key: render(figure, fmt, dpi) for key, figure in report_figures(rows).items()}
     try:
         directory.mkdir(parents=True, exist_ok=True)
     except OSError as error:
         raise InputFileError(f"cannot create the plot directory: {error.strerror}", path=str(directory)) from None
-    rows = list(rows)
-    return [_save(_cactus(rows), targets[0]), _save(_scatter(rows), targets[1])]
+    return [write_bytes_atomic(directory / names[key], data) for key, data in drawn.items()]
+
+
+_SVG_START = re.compile(rb"<svg[\s>]")
+_SVG_IDS = re.compile(r'(\bid=")([^"]+)(")|(url\(#)([^)]+)(\))|(href="#)([^"]+)(")')
+
+
+def inline_svg(data: bytes, prefix: str) -> str:
+    """An SVG file's ``<svg>`` element for an HTML page: no XML prolog, its ids prefixed so that
+    several figures on one page do not share one."""
+    start = _SVG_START.search(data)
+    text = data[start.start() if start else 0 :].decode("utf-8")
+
+    def renamed(match: re.Match) -> str:
+        groups = [g for g in match.groups() if g is not None]
+        return f"{groups[0]}{prefix}-{groups[1]}{groups[2]}"
+
+    return _SVG_IDS.sub(renamed, text)
+
+
+def report_svgs(rows: Sequence[dict[str, Any]]) -> dict[str | None, str]:
+    """The report's figures (keyed as ``report_figures``) as inline SVG elements."""
+    require_matplotlib("SVG figures")
+    return {
+        key: inline_svg(render(figure, "svg"), f"figure{index}")
+        for index, (key, figure) in enumerate(report_figures(rows).items())
+    }
 
 
 # --------------------------------------------------------------------------- sweep

@@ -23,6 +23,14 @@ Conventions (all numbers are computed from stored rows only):
   direction used everywhere, shown when that suite has pure (oracle) rows.
 - **objects kept**: mean objects kept / mean objects in the problem (the
   last attempt's count); **relevance (s)**: mean ``relevance_time``.
+- **plan cost**: mean ``plan_cost`` of the solved jobs whose cost is known
+  (the validated total-cost, or the length of a plan without action costs);
+  '?' when none is (rows of a store written before costs were recorded).
+- **cost / pure**: the geometric mean, over the (problem, seed) pairs that
+  both the method and ``pure`` solved with a known, non-zero cost, of the
+  method's cost divided by pure's (above 1: longer or costlier plans than
+  pure); a pair's cost is the median of its solved rows.
+- **solved**: solved jobs / jobs.
 - counts print as integers ("15/48"); a mean over jobs keeps its fraction
   only when it has one ("15.5/48").
 - ``n`` counts jobs: several seeds of one problem are several jobs.  Rows of
@@ -35,6 +43,7 @@ from __future__ import annotations
 import csv
 import io
 import json
+import math
 import statistics
 from collections.abc import Iterable, Sequence
 from dataclasses import asdict, dataclass, field
@@ -45,6 +54,7 @@ from relevance_plan.planning.loop import METHODS
 
 FORMATS = ("markdown", "csv", "latex")
 NOT_APPLICABLE = "–"
+UNKNOWN = "?"
 
 SOLVED = "solved"
 OUT_OF_TIME = "out-of-time"
@@ -67,6 +77,10 @@ class ReportRecord:
     mean_objects_total: float
     mean_kept_fraction: float | None
     mean_relevance_time: float
+    mean_plan_cost: float | None = None  # over solved jobs with a known cost
+    costs_known: int = 0  # solved jobs with a known cost
+    cost_over_pure: float | None = None  # geometric mean of cost(method) / cost(pure) over pairs both solved
+    cost_pairs: int = 0  # the pairs that ratio is taken over
     configs: int = 1  # distinct (config_hash, planner_version) pooled in this record
     timeouts: tuple = field(default=())  # distinct timeout values
 
@@ -121,6 +135,31 @@ def row_planner(row: dict[str, Any]) -> str:
     return planner if isinstance(planner, str) else "fast-downward"
 
 
+def _problem_key(row: dict[str, Any]) -> tuple:
+    return (row["problem_hash"] if "problem_hash" in row else row["problem"], row["seed"])
+
+
+def solved_costs(group: Sequence[dict[str, Any]]) -> dict[tuple, float]:
+    """Per (problem, seed), the median known cost of its solved rows."""
+    costs: dict[tuple, list[float]] = {}
+    for row in group:
+        if row["status"] == SOLVED and row.get("plan_cost") is not None:
+            costs.setdefault(_problem_key(row), []).append(float(row["plan_cost"]))
+    return {key: statistics.median(values) for key, values in costs.items()}
+
+
+def cost_ratio(method: dict[tuple, float], pure: dict[tuple, float]) -> tuple[float | None, int]:
+    """(geometric mean of method / pure over the shared keys with non-zero costs, how many)."""
+    logs = [math.log(method[key] / pure[key]) for key in method.keys() & pure.keys() if method[key] > 0 < pure[key]]
+    return (math.exp(sum(logs) / len(logs)) if logs else None), len(logs)
+
+
+def suite_labels(rows: Sequence[dict[str, Any]]) -> list[str]:
+    """Each row's block label: its suite, or ``SUITE [PLANNER]`` when the rows come from several planners."""
+    several = len({row_planner(row) for row in rows}) > 1
+    return [f"{row['suite']} [{row_planner(row)}]" if several else row["suite"] for row in rows]
+
+
 def build_report(rows: Iterable[dict[str, Any]]) -> list[ReportRecord]:
     """One record per (suite, method), suites by name, methods in METHODS order.
 
@@ -129,12 +168,12 @@ def build_report(rows: Iterable[dict[str, Any]]) -> list[ReportRecord]:
     are compared per planner and the ratios never mix planners.
     """
     rows = list(rows)
-    several = len({row_planner(row) for row in rows}) > 1
+    labels = suite_labels(rows)
     groups: dict[tuple[str, str], list[dict[str, Any]]] = {}
-    for row in rows:
-        suite = f"{row['suite']} [{row_planner(row)}]" if several else row["suite"]
+    for row, suite in zip(rows, labels):
         groups.setdefault((suite, row["method"]), []).append(row)
     medians = {key: statistics.median(job_time(r) for r in group) for key, group in groups.items()}
+    costs = {key: solved_costs(group) for key, group in groups.items()}
     records = []
     for suite, method in sorted(groups, key=lambda key: (key[0], _method_order(key[1]))):
         group = groups[(suite, method)]
@@ -145,6 +184,9 @@ def build_report(rows: Iterable[dict[str, Any]]) -> list[ReportRecord]:
         first_failures = sum(1 for r in group if r["first_attempt_status"] != SOLVED)
         final_failures = sum(1 for r in group if r["status"] not in (SOLVED, OUT_OF_TIME))
         fractions = [r["objects_kept"] / r["objects_total"] for r in group if r["objects_total"]]
+        known = [float(r["plan_cost"]) for r in group if r["status"] == SOLVED and r.get("plan_cost") is not None]
+        pure_costs = costs.get((suite, "pure"))
+        over_pure, pairs = cost_ratio(costs[(suite, method)], pure_costs) if pure_costs is not None else (None, 0)
         records.append(
             ReportRecord(
                 suite=suite,
@@ -162,6 +204,10 @@ def build_report(rows: Iterable[dict[str, Any]]) -> list[ReportRecord]:
                 mean_objects_total=_mean([r["objects_total"] for r in group]),
                 mean_kept_fraction=_mean(fractions) if fractions else None,
                 mean_relevance_time=_mean([r["relevance_time"] for r in group]),
+                mean_plan_cost=_mean(known) if known else None,
+                costs_known=len(known),
+                cost_over_pure=over_pure,
+                cost_pairs=pairs,
                 configs=len({_option_set(r) for r in group}),
                 timeouts=tuple(sorted({float(r["timeout"]) for r in group})),
             )
@@ -181,8 +227,11 @@ _METRICS: tuple[tuple[str, str, str], ...] = (
     ("fail (final)", "failure_rate", "{:.2f}"),
     ("pure / method (median)", "pure_over_method", "{:.2f}"),
     ("oracle / method (median)", "oracle_over_method", "{:.2f}"),
+    ("plan cost", "mean_plan_cost", "{:.1f}"),
+    ("cost / pure (geo. mean)", "cost_over_pure", "{:.2f}"),
     ("objects kept", "objects", ""),
     ("relevance (s)", "mean_relevance_time", "{:.3f}"),
+    ("solved", "coverage", ""),
     ("n", "n", "{}"),
 )
 
@@ -192,11 +241,17 @@ def _cell(record: ReportRecord | None, attribute: str, pattern: str) -> str:
         return NOT_APPLICABLE
     if attribute == "objects":
         return f"{format_count(record.mean_objects_kept)}/{format_count(record.mean_objects_total)}"
+    if attribute == "coverage":
+        return f"{record.solved}/{record.n}"
+    if attribute == "mean_plan_cost" and record.solved and not record.costs_known:
+        return UNKNOWN
+    if attribute == "cost_over_pure" and record.solved and not record.costs_known:
+        return UNKNOWN
     value = getattr(record, attribute)
     return NOT_APPLICABLE if value is None else pattern.format(value)
 
 
-def _table(records: Sequence[ReportRecord]) -> tuple[list[str], list[tuple[str, list[tuple[str, list[str]]]]]]:
+def report_table(records: Sequence[ReportRecord]) -> tuple[list[str], list[tuple[str, list[tuple[str, list[str]]]]]]:
     """(method columns, [(suite, [(metric label, cells)])]) in the paper's shape."""
     methods = sorted({r.method for r in records}, key=_method_order)
     suites = sorted({r.suite for r in records})
@@ -206,7 +261,7 @@ def _table(records: Sequence[ReportRecord]) -> tuple[list[str], list[tuple[str, 
         present = {m for m in methods if (suite, m) in by_key}
         lines = []
         for label, attribute, pattern in _METRICS:
-            if attribute == "pure_over_method" and "pure" not in present:
+            if attribute in ("pure_over_method", "cost_over_pure") and "pure" not in present:
                 continue
             if attribute == "oracle_over_method" and "oracle" not in present:
                 continue
@@ -220,10 +275,16 @@ def format_count(value: float) -> str:
     return f"{value:.0f}" if float(value).is_integer() else f"{value:.1f}"
 
 
-def _notes(records: Sequence[ReportRecord]) -> list[str]:
+def report_notes(records: Sequence[ReportRecord]) -> list[str]:
     notes = []
     if any(r.pure_over_method is not None or r.oracle_over_method is not None for r in records):
         notes.append("pure / method = median time of pure divided by the method's: times faster than pure")
+    if any(r.cost_over_pure is not None for r in records):
+        notes.append(
+            "cost / pure = geometric mean of the method's plan cost divided by pure's, over problems both solved"
+        )
+    if any(r.solved and not r.costs_known for r in records):
+        notes.append("? = plan cost unknown (rows stored before plan costs were recorded)")
     timeouts = sorted({t for r in records for t in r.timeouts})
     if timeouts:
         shown = ", ".join(f"{t:g}" for t in timeouts)
@@ -237,12 +298,12 @@ def _notes(records: Sequence[ReportRecord]) -> list[str]:
 
 
 def _markdown(records: Sequence[ReportRecord]) -> str:
-    methods, blocks = _table(records)
+    methods, blocks = report_table(records)
     lines = ["| suite | metric | " + " | ".join(methods) + " |", "|---|---|" + "---|" * len(methods)]
     for suite, rows in blocks:
         for index, (label, cells) in enumerate(rows):
             lines.append(f"| {suite if index == 0 else ''} | {label} | " + " | ".join(cells) + " |")
-    lines += [""] + [f"- {note}" for note in _notes(records)]
+    lines += [""] + [f"- {note}" for note in report_notes(records)]
     return "\n".join(lines).rstrip() + "\n"
 
 
@@ -267,10 +328,10 @@ def _latex_escape(text: str) -> str:
 
 
 def _latex(records: Sequence[ReportRecord]) -> str:
-    methods, blocks = _table(records)
+    methods, blocks = report_table(records)
     lines = [
         "% relevance-plan report; needs \\usepackage{booktabs}",
-        *(f"% {_latex_escape(note)}" for note in _notes(records)),
+        *(f"% {_latex_escape(note)}" for note in report_notes(records)),
         "\\begin{tabular}{ll" + "r" * len(methods) + "}",
         "\\toprule",
         "world & metric & " + " & ".join(_latex_escape(m) for m in methods) + " \\\\",
@@ -300,6 +361,9 @@ CSV_FIELDS = (
     "mean_objects_total",
     "mean_kept_fraction",
     "mean_relevance_time",
+    "mean_plan_cost",
+    "cost_over_pure",
+    "cost_pairs",
     "configs",
 )
 
@@ -357,6 +421,7 @@ JOB_FIELDS: tuple[tuple[str, type], ...] = (
     ("attempts", int),
     ("first_attempt_status", str),
     ("plan_length", int),
+    ("plan_cost", float),
     ("exit_code", int),
     ("timeout", float),
     ("world", str),

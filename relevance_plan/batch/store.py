@@ -18,10 +18,15 @@ A row's key is ``(problem_hash, method, config_hash, planner_version)``:
   driver file when ``$RELEVANCE_PLAN_FAST_DOWNWARD`` overrides it).
 
 The ``meta`` table holds ``schema_version`` and the version of the tool that
-created the store.  A store of another schema version, one missing a
+created the store.  Schema 2 added ``plan_cost``: a schema-1 store is read as
+it is (its rows' cost unknown) and migrated in place, one ``ALTER TABLE`` in
+one transaction that keeps every row, only when a command writes into it
+(``compare``).  A store of another schema version, one missing a
 column, or a file that is not a SQLite database, raises ``StoreError`` and is
 left untouched: nothing is written (not even the journal mode) before those
-checks pass.  A store or folder that cannot be written is ``InputFileError``
+checks pass.  Creating a store is one ``BEGIN IMMEDIATE`` transaction that
+looks for the tables and creates them only when missing, so two runs
+creating the same new store at once both use it.  A store or folder that cannot be written is ``InputFileError``
 (``check_store_writable``), found before a batch runs its first job; a
 write that finds the disk full is one ``StoreError`` line, and a store
 created by the failing run is removed again.
@@ -39,7 +44,10 @@ from typing import Any, NamedTuple
 from relevance_plan import __version__
 from relevance_plan.errors import InputFileError, StoreError
 
-SCHEMA_VERSION = 1
+SCHEMA_VERSION = 2
+OLDEST_SCHEMA_VERSION = 1  # the oldest a store may have to be read, or migrated when written to
+# Columns each older schema version lacks, added by ``_migrate`` (all nullable: old rows keep NULL).
+ADDED_IN: dict[int, tuple[str, ...]] = {2: ("plan_cost",)}
 SQLITE_HEADER = b"SQLite format 3\x00"
 BUSY_TIMEOUT_MS = 30_000
 
@@ -71,6 +79,7 @@ DATA_COLUMNS: tuple[tuple[str, str], ...] = (
     ("attempts", "INTEGER NOT NULL"),
     ("first_attempt_status", "TEXT"),
     ("plan_length", "INTEGER"),
+    ("plan_cost", "REAL"),  # PlanResult.plan_cost: the validated total-cost, or the length at unit cost
     ("timeout", "REAL NOT NULL"),
     ("message", "TEXT NOT NULL"),
     ("config_json", "TEXT NOT NULL"),  # the canonical JSON that config_hash hashes
@@ -159,6 +168,7 @@ class ResultStore:
     def __init__(self, path: str | os.PathLike, *, create: bool = True, read_only: bool = False):
         self.path = Path(path)
         self._connection: sqlite3.Connection | None = None
+        self.missing_columns: tuple[str, ...] = ()  # of an older store read as it is (their values: None)
         exists = self.path.exists()
         if exists and not self.path.is_file():
             raise InputFileError("results store is not a file", path=str(self.path))
@@ -266,47 +276,79 @@ class ResultStore:
             raise StoreError("not a SQLite database (not a results store)", path=str(self.path))
 
     def _check_or_create(self, connection: sqlite3.Connection, create: bool = True) -> None:
-        tables = {row[0] for row in connection.execute("SELECT name FROM sqlite_master WHERE type = 'table'")}
-        if not tables:
-            if not create:
-                raise StoreError("SQLite database without relevance-plan results (no tables)", path=str(self.path))
-            self._create(connection)
+        """Check the tables (``create``: inside one write transaction, creating or migrating them)."""
+        if not create:
+            self._check(connection, self._tables(connection), writing=False)
             return
+        # IMMEDIATE takes the write lock first (waiting up to the busy timeout): a run that creates
+        # the same new store at this moment either creates the tables or finds them made.
+        connection.execute("BEGIN IMMEDIATE")
+        try:
+            tables = self._tables(connection)
+            if tables:
+                self.created = False  # someone else's tables: never removed by this object
+                self._check(connection, tables, writing=True)
+            else:
+                self._create(connection)
+            connection.execute("COMMIT")
+        except BaseException:
+            _roll_back(connection)
+            raise
+
+    @staticmethod
+    def _tables(connection: sqlite3.Connection) -> set[str]:
+        return {row[0] for row in connection.execute("SELECT name FROM sqlite_master WHERE type = 'table'")}
+
+    def _check(self, connection: sqlite3.Connection, tables: set[str], writing: bool) -> None:
+        """Check an existing store; ``writing`` (inside the caller's transaction) migrates an older schema."""
+        if not tables:
+            raise StoreError("SQLite database without relevance-plan results (no tables)", path=str(self.path))
         if "meta" not in tables or "results" not in tables:
             raise StoreError(
                 "SQLite database without relevance-plan results (no meta/results table)", path=str(self.path)
             )
         meta = dict(connection.execute("SELECT key, value FROM meta").fetchall())
         found = meta.get("schema_version")
-        if found != str(SCHEMA_VERSION):
+        version = _version_number(found)
+        if version is None or not OLDEST_SCHEMA_VERSION <= version <= SCHEMA_VERSION:
             creator = meta.get("tool_version", "an unknown version")
             raise StoreError(
                 f"results store has schema version {found} (written by relevance-plan {creator}); this is "
                 f"relevance-plan {__version__} with schema version {SCHEMA_VERSION}: use a new --store file",
                 path=str(self.path),
             )
+        later = {name for added, names in ADDED_IN.items() if added > version for name in names}
         present = {row[1] for row in connection.execute("PRAGMA table_info(results)")}
-        missing = [name for name in COLUMNS if name not in present]
+        missing = [name for name in COLUMNS if name not in present and name not in later]
         if missing:
             raise StoreError(
                 f"results store lacks the column(s) {', '.join(missing)}: use a new --store file", path=str(self.path)
             )
+        if later and writing:
+            self._migrate(connection, version, present)
+            meta["schema_version"] = str(SCHEMA_VERSION)
+        self.missing_columns = tuple(sorted(later)) if not writing else ()
         self.meta = meta
 
+    def _migrate(self, connection: sqlite3.Connection, found: int, present: set[str]) -> None:
+        """Bring an older store to ``SCHEMA_VERSION`` in the caller's transaction: new columns only."""
+        kinds = dict(DATA_COLUMNS)
+        for version in range(found + 1, SCHEMA_VERSION + 1):
+            for name in ADDED_IN.get(version, ()):
+                if name not in present:
+                    connection.execute(f"ALTER TABLE results ADD COLUMN {name} {kinds[name]}")
+        connection.execute("UPDATE meta SET value = ? WHERE key = 'schema_version'", (str(SCHEMA_VERSION),))
+        connection.execute("INSERT OR REPLACE INTO meta (key, value) VALUES ('migrated_by', ?)", (__version__,))
+
     def _create(self, connection: sqlite3.Connection) -> None:
-        connection.execute("BEGIN IMMEDIATE")
-        try:
-            connection.execute("CREATE TABLE meta (key TEXT PRIMARY KEY, value TEXT NOT NULL)")
-            connection.executemany(
-                "INSERT INTO meta (key, value) VALUES (?, ?)",
-                [("schema_version", str(SCHEMA_VERSION)), ("tool_version", __version__)],
-            )
-            connection.execute(_CREATE_RESULTS)
-            connection.execute("CREATE INDEX results_suite ON results (suite, method)")
-            connection.execute("COMMIT")
-        except BaseException:
-            _roll_back(connection)
-            raise
+        """The tables of a new store, in the caller's transaction."""
+        connection.execute("CREATE TABLE meta (key TEXT PRIMARY KEY, value TEXT NOT NULL)")
+        connection.executemany(
+            "INSERT INTO meta (key, value) VALUES (?, ?)",
+            [("schema_version", str(SCHEMA_VERSION)), ("tool_version", __version__)],
+        )
+        connection.execute(_CREATE_RESULTS)
+        connection.execute("CREATE INDEX results_suite ON results (suite, method)")
         self.meta = {"schema_version": str(SCHEMA_VERSION), "tool_version": __version__}
 
     # ------------------------------------------------------------------ access
@@ -360,7 +402,8 @@ class ResultStore:
         if suite is not None:
             query += " WHERE suite = ?"
             parameters = (suite,)
-        return [dict(row) for row in self._query(query + " ORDER BY rowid", parameters)]
+        unknown = dict.fromkeys(self.missing_columns)
+        return [{**dict(row), **unknown} for row in self._query(query + " ORDER BY rowid", parameters)]
 
     def __len__(self) -> int:
         return self._query("SELECT COUNT(*) FROM results")[0][0]
@@ -383,6 +426,13 @@ class ResultStore:
         self.close()
         if discard:
             self._remove_files()
+
+
+def _version_number(text: str | None) -> int | None:
+    try:
+        return int(text) if text is not None else None
+    except ValueError:
+        return None
 
 
 def _probed_connection(uri: str) -> sqlite3.Connection:

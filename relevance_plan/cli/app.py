@@ -29,6 +29,7 @@ from relevance_plan.cli.common import (
 from relevance_plan.cli.exits import ToolGroup
 from relevance_plan.errors import UnsupportedFeatureError, UsageError
 from relevance_plan.exitcodes import EXIT_CODE_DESCRIPTIONS, ExitCode, exit_code_for_status
+from relevance_plan.pddl.formatter import format_number
 from relevance_plan.planning.loop import plan_task
 from relevance_plan.planning.results import PlanResult, PlanStatus
 from relevance_plan.relevance.prune import Selection
@@ -460,12 +461,13 @@ def _print_plan_summary(result: PlanResult, plan_file, err: bool = False) -> Non
         f" {result.planner_time:.2f} s planner, {result.validation_time:.2f} s validation"
     )
     if result.status is PlanStatus.SOLVED:
+        size = f"{len(result.plan)} steps" + (
+            f", cost {format_number(result.plan_cost)}" if result.plan_cost is not None else ""
+        )
         if result.validation is not None and result.valid:
-            echo(
-                f"plan:        {len(result.plan)} steps, valid on the original problem ({result.validation.validator})"
-            )
+            echo(f"plan:        {size}, valid on the original problem ({result.validation.validator})")
         else:
-            echo(f"plan:        {len(result.plan)} steps, NOT validated (--validator none)")
+            echo(f"plan:        {size}, NOT validated (--validator none)")
         echo(f"plan file:   {plan_file}")
 
 

@@ -99,10 +99,26 @@ def compare(suite_dirs, methods, planners, jobs, store_path, scheduler, schedule
     "plots_dir",
     type=click.Path(file_okay=False),
     default=None,
-    help="Also write a cactus plot and a relevance-vs-pure scatter (PNG) here; needs matplotlib.",
+    help="Also write cactus plots (all suites and one per suite) and a relevance-vs-pure scatter here;"
+    " needs matplotlib.",
+)
+@click.option(
+    "--plot-format",
+    type=click.Choice(["png", "svg", "pdf"]),
+    default="png",
+    show_default=True,
+    help="File format of --plots.",
+)
+@click.option("--dpi", type=click.IntRange(min=1), default=150, show_default=True, help="Resolution of PNG plots.")
+@click.option(
+    "--html",
+    "html_path",
+    type=click.Path(dir_okay=False),
+    default=None,
+    help="Also write one self-contained HTML page: the tables and, with matplotlib, the plots as inline SVG.",
 )
 @handle_errors
-def report(store_path, fmt, as_json, as_csv, suite, plots_dir):
+def report(store_path, fmt, as_json, as_csv, suite, plots_dir, plot_format, dpi, html_path):
     """Print the comparison table computed from the rows of STORE (or, with --json/--csv, every job)."""
     from relevance_plan.batch.report import build_report, format_jobs, format_report
     from relevance_plan.batch.store import read_rows
@@ -115,13 +131,23 @@ def report(store_path, fmt, as_json, as_csv, suite, plots_dir):
         from relevance_plan.batch.plots import check_plot_targets, require_matplotlib
 
         require_matplotlib("--plots")
-        check_plot_targets(plots_dir, store_path)
+        check_plot_targets(plots_dir, store_path, plot_format)
+    if html_path is not None:
+        from relevance_plan.io import check_output_file
+
+        check_output_file(html_path, "HTML report", [store_path])
     rows = read_rows(store_path, suite)
     if plots_dir is not None:
         from relevance_plan.batch.plots import write_plots
 
-        written = write_plots(rows, plots_dir, store=store_path)
+        written = write_plots(rows, plots_dir, store=store_path, fmt=plot_format, dpi=dpi)
         click.echo("wrote " + ", ".join(str(path) for path in written), err=True)
+    if html_path is not None:
+        from relevance_plan.batch.html_report import format_html
+        from relevance_plan.io import write_text_atomic
+
+        page = format_html(rows, title=f"relevance-plan report: {Path(store_path).name}")
+        click.echo(f"wrote {write_text_atomic(html_path, page)}", err=True)
     if per_job:
         click.echo(format_jobs(rows, "json" if as_json else "csv"), nl=False)
     else:

@@ -38,6 +38,8 @@ from typing import Any
 
 from relevance_plan.errors import OutOfTimeError, UnsupportedFeatureError, UsageError
 from relevance_plan.io import load_domain, load_problem, scratch_directory, write_text_atomic
+from relevance_plan.pddl.model import Problem
+from relevance_plan.pddl.plans import Plan
 from relevance_plan.pddl.sexpr import collection_paused
 from relevance_plan.planning.planners.auto import FallbackPlanner
 from relevance_plan.planning.planners.base import Planner, PlannerStatus, RunOutcome
@@ -592,16 +594,32 @@ def summarise(
     return PlanResult(status=status, message=message, log_tail=last.outcome.log_tail, **common)
 
 
+def plan_cost_of(
+    problem: Problem | None, plan: Plan, validation: ValidationResult, reported: float | None
+) -> float | None:
+    """A plan's cost as VAL's "Final value" gives it: the total-cost the validator found on the
+    original problem; without action costs, a sequential plan's length (unit cost, the IPC
+    convention); None for a timed plan without action costs (VAL would give its makespan) and for a
+    plan nobody validated whose planner named no cost."""
+    if validation.cost is not None:
+        return validation.cost
+    costs = problem is not None and (problem.metric is not None or ("total-cost",) in problem.numeric_init)
+    if costs or problem is None:
+        return reported  # not validated (--validator none), or a metric other than total-cost: the planner's word
+    return None if plan.timed else float(len(plan))
+
+
 def _validated(last: Attempt, common: dict[str, Any]) -> PlanResult:
     """The result when the last attempt found a plan: what its validation on the original said."""
     validation = last.validation
     if validation is not None and validation.accepted:
-        plan = last.outcome.plan
+        cost = plan_cost_of(common["problem"], last.outcome.plan, validation, last.outcome.plan_cost)
+        plan = replace(last.outcome.plan, cost=cost) if cost is not None else last.outcome.plan
         checked = f"validated on the original problem ({validation.validator})"
         return PlanResult(
             status=PlanStatus.SOLVED,
             plan=plan,
-            plan_cost=last.outcome.plan_cost,
+            plan_cost=cost,
             plans=last.outcome.plans,
             validation=validation,
             message=f"plan of {len(plan)} steps {checked if validation.valid else 'NOT validated (--validator none)'}",
