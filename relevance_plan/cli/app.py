@@ -78,6 +78,7 @@ LAZY_COMMANDS = {
     "sweep": "relevance_plan.cli.batch",
     "demo": "relevance_plan.cli.batch",
     "watch": "relevance_plan.cli.watch",
+    "validate": "relevance_plan.cli.validate",
 }
 
 
