@@ -97,25 +97,45 @@ def validate_with_up(domain: Domain, problem: Problem, plan: Plan, deadline: flo
 
 
 def validate_files_with_up(domain_path: str, problem_path: str, plan: Plan) -> ValidationResult:
+    return up_validator(domain_path, problem_path)(plan)
+
+
+def up_validator(domain_path: str, problem_path: str) -> Callable[[Plan], ValidationResult]:
+    """unified-planning's validator for one problem, its files read once: many plans of one problem
+    (a differential run's mutations) are judged without reading the problem again."""
     try:
         from unified_planning.engines.results import ValidationResultStatus
         from unified_planning.io import PDDLReader
         from unified_planning.shortcuts import get_environment
     except ImportError as error:  # pragma: no cover - depends on the installation
-        return ValidationResult(ValidationStatus.UNAVAILABLE, "up", f"unified-planning not importable: {error}")
+        failure = ValidationResult(ValidationStatus.UNAVAILABLE, "up", f"unified-planning not importable: {error}")
+        return lambda plan: failure
     get_environment().credits_stream = None
     try:
         up_problem = PDDLReader().parse_problem(domain_path, problem_path)
-        up_plan = _up_plan(up_problem, plan)
-        if isinstance(up_plan, ValidationResult):
-            return up_plan
-        result = _up_validator(up_problem, plan).validate(up_problem, up_plan)
     except Exception as error:  # UP raises many unrelated types; report, never guess
-        return ValidationResult(ValidationStatus.UNAVAILABLE, "up", f"unified-planning failed: {error}".splitlines()[0])
-    if result.status == ValidationResultStatus.VALID:
-        return ValidationResult(ValidationStatus.VALID, "up", "valid")
-    reason = str(getattr(result, "reason", "") or getattr(result, "log_messages", "") or "invalid")
-    return ValidationResult(ValidationStatus.INVALID, "up", reason.splitlines()[0] if reason else "invalid")
+        failure = _up_failure(error)
+        return lambda plan: failure
+
+    def judge(plan: Plan) -> ValidationResult:
+        try:
+            up_plan = _up_plan(up_problem, plan)
+            if isinstance(up_plan, ValidationResult):
+                return up_plan
+            result = _up_validator(up_problem, plan).validate(up_problem, up_plan)
+        except Exception as error:  # as above
+            return _up_failure(error)
+        if result.status == ValidationResultStatus.VALID:
+            return ValidationResult(ValidationStatus.VALID, "up", "valid")
+        reason = str(getattr(result, "reason", "") or getattr(result, "log_messages", "") or "invalid")
+        return ValidationResult(ValidationStatus.INVALID, "up", reason.splitlines()[0] if reason else "invalid")
+
+    return judge
+
+
+def _up_failure(error: Exception) -> ValidationResult:
+    text = f"unified-planning failed: {error}".splitlines()[0]
+    return ValidationResult(ValidationStatus.UNAVAILABLE, "up", text)
 
 
 def _up_plan(up_problem, plan: Plan):
