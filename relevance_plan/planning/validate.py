@@ -256,9 +256,9 @@ def read_val_report(output: str, exit_code: int, plan: Plan) -> ValidationResult
     if "Plan failed to execute" in lines or "Plan invalid" in lines:
         detail = _val_detail(lines)
         return invalid(detail or "the plan failed to execute")
-    if exit_code < 0 or exit_code > 128:
-        return ValidationResult(ValidationStatus.UNAVAILABLE, "val", f"VAL's Validate crashed (exit code {exit_code})")
     gist = next((line for line in lines if line and ("Error" in line or "Problem in" in line)), None)
+    if gist is None and (exit_code < 0 or 128 < exit_code < 160):  # killed by a signal (a segmentation fault)
+        return ValidationResult(ValidationStatus.UNAVAILABLE, "val", f"VAL's Validate crashed (exit code {exit_code})")
     return ValidationResult(
         ValidationStatus.UNAVAILABLE, "val", f"VAL gave no verdict: {gist or f'Validate exit code {exit_code}'}"
     )
