@@ -211,6 +211,7 @@ def run(args) -> dict:
         raise SystemExit("bench_validate: VAL is not installed (pip install 'relevance-plan[val]')")
     cases: list[Case] = []
     skipped: list[dict] = []
+    plans: list[dict] = []
     folders = domain_folders(roots)
     if args.limit:
         folders = folders[: args.limit]
@@ -239,16 +240,27 @@ def run(args) -> dict:
                 case.verdicts["up"] = judge_up(candidate)
             cases.append(case)
         mine = [c for c in cases if c.domain == name and c.track == track]
+        found = mine[0].verdicts
+        plans.append(
+            {
+                "track": track,
+                "domain": name,
+                "problem": item.problem.name,
+                "planner": planner,
+                "steps": len(plan),
+                "metric": {name: verdict.metric for name, verdict in found.items() if verdict.metric is not None},
+            }
+        )
         print(
             f"[{track}] {name} ({item.problem.name}, {planner}, {len(plan)} steps):"
             f" {sum(c.agrees() is True for c in mine)} of {len(mine)} cases agree"
             f" ({time.monotonic() - started:.1f} s)",
             file=sys.stderr,
         )
-    return summarize(cases, skipped)
+    return summarize(cases, skipped, plans)
 
 
-def summarize(cases: list[Case], skipped: list[dict]) -> dict:
+def summarize(cases: list[Case], skipped: list[dict], plans: list[dict]) -> dict:
     tracks: dict[str, dict[str, int]] = {}
     for case in cases:
         row = tracks.setdefault(case.track, {"domains": 0, "cases": 0, "agree": 0, "disagree": 0, "one_verdict": 0})
@@ -271,6 +283,7 @@ def summarize(cases: list[Case], skipped: list[dict]) -> dict:
             if "val" in c.verdicts and "val" not in c.judged()
         ],
         "skipped": skipped,
+        "plans": plans,
     }
 
 
@@ -292,6 +305,9 @@ def print_report(summary: dict) -> None:
             print(f"    {name:<8} {verdict['status']}{metric}: {verdict['reason']}")
     for item in summary["skipped"]:
         print(f"skipped [{item['track']}] {item['domain']}: {item['why']}")
+    for item in summary["plans"]:
+        values = ", ".join(f"{name} {value:g}" for name, value in item["metric"].items()) or "no metric"
+        print(f"plan [{item['track']}] {item['domain']} {item['problem']} ({item['planner']}, {item['steps']} steps): {values}")
 
 
 def main() -> None:
