@@ -307,7 +307,8 @@ def print_report(summary: dict) -> None:
         print(f"skipped [{item['track']}] {item['domain']}: {item['why']}")
     for item in summary["plans"]:
         values = ", ".join(f"{name} {value:g}" for name, value in item["metric"].items()) or "no metric"
-        print(f"plan [{item['track']}] {item['domain']} {item['problem']} ({item['planner']}, {item['steps']} steps): {values}")
+        where = f"[{item['track']}] {item['domain']} {item['problem']}"
+        print(f"plan {where} ({item['planner']}, {item['steps']} steps): {values}")
 
 
 def main() -> None:
