@@ -200,11 +200,15 @@ def validate_files_with_val(
     """VAL's verdict; ``metric`` holds the final value VAL printed (the metric's, or the plan's length
     when the problem states none: the caller who read the problem tells which)."""
     from relevance_plan.errors import ValidatorUnavailableError
+    from relevance_plan.pddl.simulator import DURATION_TOLERANCE
     from relevance_plan.supervision.val import run_val  # subprocess access lives in supervision
 
     timeout = 60.0 if deadline is None else max(0.1, deadline - time.monotonic())
+    # VAL's default tolerance (0.01 s) makes one instant of happenings that LPG separates by fractions
+    # of a millisecond; the builtin simulator's tolerance for printed durations is used instead.
+    tolerance = DURATION_TOLERANCE if plan.timed else None
     try:
-        run = run_val(domain_path, problem_path, format_plan(plan), timeout=timeout)
+        run = run_val(domain_path, problem_path, format_plan(plan), timeout=timeout, tolerance=tolerance)
     except ValidatorUnavailableError as error:
         return ValidationResult(ValidationStatus.UNAVAILABLE, "val", error.message)
     return read_val_report(run.output, run.exit_code, plan)

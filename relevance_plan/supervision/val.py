@@ -122,9 +122,11 @@ def _cached_copy(folder: Path) -> Path:
     return target
 
 
-def run_val(domain_path: str, problem_path: str, plan_text: str, timeout: float = 60.0) -> ValRun:
-    """Run ``Validate -v`` on a plan text; ``ValidatorUnavailableError`` when VAL is not installed or
-    could not run (not started, out of time)."""
+def run_val(
+    domain_path: str, problem_path: str, plan_text: str, timeout: float = 60.0, tolerance: float | None = None
+) -> ValRun:
+    """Run ``Validate -v`` on a plan text (``-t tolerance`` when given); ``ValidatorUnavailableError``
+    when VAL is not installed or could not run (not started, out of time)."""
     binary = find_validate()
     if binary is None:
         raise errors.ValidatorUnavailableError(f"VAL is not installed ({INSTALL_HINT}, or put Validate on PATH)")
@@ -136,8 +138,10 @@ def run_val(domain_path: str, problem_path: str, plan_text: str, timeout: float 
         plan_path = Path(tmp) / "plan"
         plan_path.write_text(plan_text)
         try:
+            options = ["-v"] + ([] if tolerance is None else ["-t", repr(tolerance)])
+            files = [str(Path(domain_path).resolve()), str(Path(problem_path).resolve()), "plan"]
             completed = subprocess.run(
-                [str(binary.path), "-v", str(Path(domain_path).resolve()), str(Path(problem_path).resolve()), "plan"],
+                [str(binary.path), *options, *files],
                 cwd=tmp,
                 capture_output=True,
                 text=True,
