@@ -22,6 +22,7 @@ class ExitCode(IntEnum):
     UNSOLVABLE = 10
     NO_VALID_PLAN = 11
     INSUFFICIENT_CUES = 12
+    PLAN_INVALID = 13
     OUT_OF_TIME = 20
     OUT_OF_MEMORY = 21
     USAGE = 30
@@ -45,6 +46,7 @@ EXIT_CODE_DESCRIPTIONS: dict[ExitCode, str] = {
         "no valid plan: search ended without one (incomplete search, invalid plans, or --no-widen failure)"
     ),
     ExitCode.INSUFFICIENT_CUES: "insufficient cues: relevance cannot be decided; give --task, --objective or --human",
+    ExitCode.PLAN_INVALID: "the plan is invalid on the problem (validate)",
     ExitCode.OUT_OF_TIME: "out of time",
     ExitCode.OUT_OF_MEMORY: "out of memory",
     ExitCode.USAGE: (
@@ -52,7 +54,7 @@ EXIT_CODE_DESCRIPTIONS: dict[ExitCode, str] = {
         " or an optional extra that is not installed"
     ),
     ExitCode.INPUT_FILE: "missing, unreadable or unwritable file or directory",
-    ExitCode.PDDL_SYNTAX: "malformed PDDL",
+    ExitCode.PDDL_SYNTAX: "malformed PDDL, or a malformed plan file",
     ExitCode.UNSUPPORTED_PDDL: "PDDL feature not supported",
     ExitCode.DOMAIN_MISMATCH: "problem does not belong to the domain",
     ExitCode.MODEL: "invalid knowledge model (YAML, schema, probability, unknown human or objective)",
@@ -68,6 +70,7 @@ _ERROR_CODES: tuple[tuple[type[errors.RelevancePlanError], ExitCode], ...] = (
     (errors.OutOfTimeError, ExitCode.OUT_OF_TIME),
     (errors.InputFileError, ExitCode.INPUT_FILE),
     (errors.PDDLParseError, ExitCode.PDDL_SYNTAX),
+    (errors.PlanFormatError, ExitCode.PDDL_SYNTAX),
     (errors.UnsupportedFeatureError, ExitCode.UNSUPPORTED_PDDL),
     (errors.DomainMismatchError, ExitCode.DOMAIN_MISMATCH),
     (errors.ModelError, ExitCode.MODEL),

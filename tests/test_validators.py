@@ -6,7 +6,6 @@ from support import coffee_problem
 from relevance_plan.io import load_domain
 from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.pddl.plans import Plan, PlanStep, format_plan, read_plan
-from relevance_plan.planning import validate
 from relevance_plan.planning.validate import (
     ValidationStatus,
     validate_builtin,
@@ -111,10 +110,12 @@ def test_adl_features_quantifiers_conditional_effects_equality():
 
 def test_no_runnable_validator_is_reported_not_guessed(task, monkeypatch):
     domain, problem = task
-    monkeypatch.setattr(validate, "val_available", lambda: False)
+    from relevance_plan.supervision import val
+
+    monkeypatch.setattr(val, "find_validate", lambda: None)
     result = validate_plan(domain, problem, read_plan(COFFEE_PLAN), validators=("val",))
     assert result.status is ValidationStatus.UNAVAILABLE
-    assert not result.valid and "Validate" in result.message
+    assert not result.valid and "pip install 'relevance-plan[val]'" in result.message
 
 
 def test_plan_format_round_trips_with_user_spelling(task):

@@ -81,6 +81,7 @@ LAZY_COMMANDS = {
     "demo": "relevance_plan.cli.batch",
     "watch": "relevance_plan.cli.watch",
     "learn": "relevance_plan.cli.batch",
+    "validate": "relevance_plan.cli.validate",
 }
 
 

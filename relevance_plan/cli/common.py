@@ -252,7 +252,9 @@ def require_installed_validators(names) -> None:
     from relevance_plan.planning.validate import val_available
 
     if "val" in (names or ()) and not val_available():
-        raise ValidatorUnavailableError("--validator val: VAL's Validate is not on PATH (install VAL, or drop it)")
+        raise ValidatorUnavailableError(
+            "--validator val: VAL is not installed (pip install 'relevance-plan[val]', or put Validate on PATH)"
+        )
 
 
 keep_work_option = click.option(

@@ -16,7 +16,12 @@ from pathlib import Path
 import click
 
 # Parameter name -> what the file is, for the messages.
-INPUT_FILES = {"domain_path": "domain file", "problem_path": "problem file", "model_path": "knowledge model"}
+INPUT_FILES = {
+    "domain_path": "domain file",
+    "problem_path": "problem file",
+    "model_path": "knowledge model",
+    "plan_path": "plan file",
+}
 OUTPUT_FILES = {"output": "output file", "plan_file": "plan file", "heatmap": "heatmap file"}
 # Read, never created, by these commands.
 INPUT_STORES = {"report"}

@@ -18,6 +18,18 @@ Semantics:
   ``increase`` and ``decrease``, which commute and add up); timed initial
   literals happen at their times.
 
+Values never set (VAL's rules, which the competitions' plans are judged by):
+
+* an ``increase``, ``decrease``, ``scale-up`` or ``scale-down`` of a value
+  never set starts from 0 (so an action-cost function that the problem does
+  not initialise counts from 0, as in Fast Downward and VAL);
+* an action-cost function — ``total-cost``, or a function that actions only
+  increase and that only the metric reads — reads 0 until set, so the metric
+  of a plan that never pays is 0 (Fast Downward's rule; VAL refuses to
+  evaluate such a metric);
+* any other read of a value never set — a condition, an effect's amount, an
+  ``assign``, a duration, the goal — fails, naming the fluent.
+
 Trajectory constraints and preferences are not checked (they are passed
 through; preferences change a plan's quality, not its validity).
 Every loop that enumerates bindings watches an optional deadline and raises
@@ -58,6 +70,8 @@ class Simulation:
     failed_step: int | None = None
     cost: float | None = None  # the total-cost fluent at the end, when the problem has one
     makespan: float | None = None  # timed plans
+    metric: float | None = None  # the value of the problem's :metric at the end, when it can be evaluated
+    metric_note: str = ""  # why the metric has no value (preferences, a value never set)
 
 
 @dataclass
@@ -83,6 +97,7 @@ class Simulator:
         self._needed: dict[int, tuple[tuple[f.Atom, ...], dict[str, str]]] = {}
         self._work = 0
         self._strata = _strata(domain) if domain.derived else ()
+        self.costs = cost_functions(domain, problem)
 
     # ---------------------------------------------------------------- bindings
 
@@ -142,6 +157,8 @@ class Simulator:
             key = (expression.function, *(binding.get(a, a) for a in expression.args))
             found = state.values.get(key)
             if found is None:
+                if expression.function in self.costs:
+                    return 0.0
                 raise StepFailure(f"the value of ({' '.join(key)}) is undefined")
             return found
         if isinstance(expression, f.NumericVariable):
@@ -213,7 +230,6 @@ class Simulator:
         amount = self.value(effect.value, state, binding)
         found.reads |= _reads(effect.value, binding)
         if effect.op in ADDITIVE:
-            _update(effect.op, state.values.get(key), amount, key)  # refuses an undefined value
             found.deltas[key] = found.deltas.get(key, 0.0) + (amount if effect.op == "increase" else -amount)
         else:
             new = amount if effect.op == "assign" else _update(effect.op, state.values.get(key), amount, key)
@@ -337,7 +353,7 @@ class Effects:
         state.facts.update(self.adds)
         state.values.update(self.values)
         for key, delta in self.deltas.items():
-            state.values[key] += delta
+            state.values[key] = state.values.get(key, 0.0) + delta  # a value never set starts from 0
 
     def changes(self) -> set[tuple[str, ...]]:
         facts = {("fact",) + atom for atom in self.adds | self.deletes}
@@ -356,7 +372,7 @@ class Effects:
 
 def _update(op: str, old: float | None, amount: float, key: f.GroundAtom) -> float:
     if old is None:
-        raise StepFailure(f"'{op}' of ({' '.join(key)}), whose value is undefined")
+        old = 0.0  # VAL's rule: an update of a value never set starts from 0
     if op == "increase":
         return old + amount
     if op == "decrease":
@@ -404,6 +420,31 @@ def initial_state(problem: Problem) -> State:
     return State(set(problem.init), dict(problem.numeric_init))
 
 
+def cost_functions(domain: Domain, problem: Problem) -> frozenset[str]:
+    """The action-cost functions, which read 0 until set: ``total-cost``, and every function that
+    actions only increase and that nothing but the metric reads (a cost by another name)."""
+    increased: set[str] = set()
+    other: set[str] = set()
+    parts: list[f.Node] = [rule.body for rule in domain.derived]
+    parts += [problem.goal]
+    for action in domain.actions:
+        parts += [action.precondition, action.effect] + ([action.duration] if action.duration is not None else [])
+    stack = parts
+    while stack:
+        node = stack.pop()
+        if isinstance(node, f.NumericEffect):
+            (increased if node.op == "increase" else other).add(node.fluent.function)
+            stack.append(node.value)  # the target is not a read; the amount is
+            continue
+        if isinstance(node, f.Fluent):
+            other.add(node.function)
+        stack.extend(f.children(node))
+    in_metric = set()
+    if problem.metric is not None:
+        in_metric = {node.function for node in f.walk(problem.metric.expression) if isinstance(node, f.Fluent)}
+    return frozenset({"total-cost"} | ((increased & in_metric) - other))
+
+
 # --------------------------------------------------------------------------- sequential plans
 
 
@@ -423,8 +464,27 @@ def simulate(
     except StepFailure as failure:
         return Simulation(False, failure.message, failure.step)
     cost = state.values.get(("total-cost",))
+    if cost is None and "total-cost" in domain.functions:
+        cost = 0.0
+    metric, note = _metric(simulator, state, len(steps) if makespan is None else makespan)
     what = f"{len(steps)} steps" + (f", makespan {makespan:g}" if makespan is not None else "")
-    return Simulation(True, f"{what}, goal reached", cost=cost, makespan=makespan)
+    return Simulation(True, f"{what}, goal reached", cost=cost, makespan=makespan, metric=metric, metric_note=note)
+
+
+def _metric(simulator: Simulator, state: State, total_time: float) -> tuple[float | None, str]:
+    """The problem's metric in the final state, or None and why not.  ``total-time`` is the
+    makespan of a timed plan and, as in VAL, the number of steps of a sequential one."""
+    metric = simulator.problem.metric
+    if metric is None:
+        return None, ""
+    nodes = list(f.walk(metric.expression))
+    if any(isinstance(node, f.Fluent) and node.function == "is-violated" for node in nodes):
+        return None, "the metric counts violated preferences, which are not evaluated"
+    final = State(state.facts, {**state.values, ("total-time",): float(total_time)})
+    try:
+        return simulator.value(metric.expression, final, {}), ""
+    except StepFailure as failure:
+        return None, f"the metric cannot be evaluated: {failure.message}"
 
 
 def _run_sequential(simulator: Simulator, steps: Sequence[PlanStep]) -> State:

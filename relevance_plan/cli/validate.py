@@ -1,0 +1,55 @@
+"""The ``validate`` command: judge a plan file on a problem, as the attempt loop judges its plans."""
+
+from __future__ import annotations
+
+import json
+import sys
+
+import click
+
+from relevance_plan.cli.common import handle_errors
+from relevance_plan.exitcodes import ExitCode
+from relevance_plan.pddl.formatter import format_number
+from relevance_plan.planning.validate import VALIDATORS
+
+
+@click.command()
+@click.argument("domain_path", metavar="DOMAIN", type=click.Path(dir_okay=False))
+@click.argument("problem_path", metavar="PROBLEM", type=click.Path(dir_okay=False))
+@click.argument("plan_path", metavar="PLAN", type=click.Path(dir_okay=False))
+@click.option(
+    "--validator",
+    type=click.Choice(tuple(VALIDATORS)),
+    default="builtin",
+    show_default=True,
+    help="builtin (the simulator the attempt loop uses), val (VAL's Validate: pip install"
+    " 'relevance-plan[val]'), up (unified-planning's validators).",
+)
+@click.option("--json", "as_json", is_flag=True, help="Print one JSON object.")
+@handle_errors
+def validate(domain_path, problem_path, plan_path, validator, as_json):
+    """Check that PLAN (sequential or timed, IPC format) solves PROBLEM.
+
+    Exit 0 for a valid plan, 13 for an invalid one (with the first failing
+    step and why), 41 when the validator cannot run.
+    """
+    from relevance_plan.io import check_regular_file
+    from relevance_plan.planning.validate import check_plan_file
+
+    if validator != "builtin":  # VAL and unified-planning read the files again
+        for path, what in ((domain_path, "domain file"), (problem_path, "problem file")):
+            check_regular_file(path, what, f"--validator {validator} reads it again")
+    check = check_plan_file(domain_path, problem_path, plan_path, validator)
+    result = check.result
+    if as_json:
+        click.echo(json.dumps(check.to_json(), indent=2))
+    else:
+        kind = "timed plan" if check.timed else "plan"
+        metric = "" if check.metric is None else f", metric {format_number(check.metric)}"
+        verdict = "valid" if result.valid else "INVALID"
+        click.echo(f"{verdict}: {kind} of {check.steps} steps{metric} ({result.validator})")
+        if result.failed_step is not None:
+            click.echo(f"failed step: {result.failed_step}")
+        click.echo(f"reason:      {result.message}")
+    if not result.valid:
+        sys.exit(int(ExitCode.PLAN_INVALID))
