@@ -26,6 +26,7 @@ import enum
 import time
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, replace
+from typing import Any
 
 from relevance_plan.errors import SimulationTimeout, UsageError
 from relevance_plan.pddl.formulas import Fluent, Modal, Node, Preference, children
@@ -44,7 +45,7 @@ class ValidationStatus(enum.Enum):
 NONE = "none"
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class ValidationResult:
     status: ValidationStatus
     validator: str
@@ -68,15 +69,24 @@ class ValidationResult:
 
 def validate_builtin(domain: Domain, problem: Problem, plan: Plan, deadline: float | None = None) -> ValidationResult:
     if any(_hard(constraint) for constraint in (domain.constraints, problem.constraints) if constraint is not None):
-        return ValidationResult(ValidationStatus.UNAVAILABLE, "builtin", "it does not check trajectory constraints")
+        return ValidationResult(
+            status=ValidationStatus.UNAVAILABLE, validator="builtin", message="it does not check trajectory constraints"
+        )
     try:
         from relevance_plan.pddl.simulator import simulate  # only when a plan is checked
 
         result = simulate(domain, problem, plan, deadline)
     except SimulationTimeout as error:
-        return ValidationResult(ValidationStatus.OUT_OF_TIME, "builtin", error.message)
+        return ValidationResult(status=ValidationStatus.OUT_OF_TIME, validator="builtin", message=error.message)
     status = ValidationStatus.VALID if result.valid else ValidationStatus.INVALID
-    return ValidationResult(status, "builtin", result.message, result.failed_step, result.cost, result.metric)
+    return ValidationResult(
+        status=status,
+        validator="builtin",
+        message=result.message,
+        failed_step=result.failed_step,
+        cost=result.cost,
+        metric=result.metric,
+    )
 
 
 def _hard(constraint: Node) -> bool:
@@ -92,7 +102,9 @@ def _hard(constraint: Node) -> bool:
 def validate_with_up(domain: Domain, problem: Problem, plan: Plan, deadline: float | None = None) -> ValidationResult:
     """Validate with unified-planning's validators, from the original files."""
     if domain.path is None or problem.path is None:
-        return ValidationResult(ValidationStatus.UNAVAILABLE, "up", "needs the domain and problem files on disk")
+        return ValidationResult(
+            status=ValidationStatus.UNAVAILABLE, validator="up", message="needs the domain and problem files on disk"
+        )
     return validate_files_with_up(domain.path, problem.path, plan)
 
 
@@ -108,7 +120,9 @@ def up_validator(domain_path: str, problem_path: str) -> Callable[[Plan], Valida
         from unified_planning.io import PDDLReader
         from unified_planning.shortcuts import get_environment
     except ImportError as error:  # pragma: no cover - depends on the installation
-        failure = ValidationResult(ValidationStatus.UNAVAILABLE, "up", f"unified-planning not importable: {error}")
+        failure = ValidationResult(
+            status=ValidationStatus.UNAVAILABLE, validator="up", message=f"unified-planning not importable: {error}"
+        )
         return lambda plan: failure
     get_environment().credits_stream = None
     try:
@@ -126,19 +140,21 @@ def up_validator(domain_path: str, problem_path: str) -> Callable[[Plan], Valida
         except Exception as error:  # as above
             return _up_failure(error)
         if result.status == ValidationResultStatus.VALID:
-            return ValidationResult(ValidationStatus.VALID, "up", "valid")
+            return ValidationResult(status=ValidationStatus.VALID, validator="up", message="valid")
         reason = str(getattr(result, "reason", "") or getattr(result, "log_messages", "") or "invalid")
-        return ValidationResult(ValidationStatus.INVALID, "up", reason.splitlines()[0] if reason else "invalid")
+        return ValidationResult(
+            status=ValidationStatus.INVALID, validator="up", message=reason.splitlines()[0] if reason else "invalid"
+        )
 
     return judge
 
 
 def _up_failure(error: Exception) -> ValidationResult:
     text = f"unified-planning failed: {error}".splitlines()[0]
-    return ValidationResult(ValidationStatus.UNAVAILABLE, "up", text)
+    return ValidationResult(status=ValidationStatus.UNAVAILABLE, validator="up", message=text)
 
 
-def _up_plan(up_problem, plan: Plan):
+def _up_plan(up_problem: Any, plan: Plan) -> Any:
     from fractions import Fraction
 
     from unified_planning.model import DurativeAction
@@ -149,7 +165,12 @@ def _up_plan(up_problem, plan: Plan):
     instances = []
     for number, step in enumerate(plan.steps, start=1):
         if step.action not in actions or any(arg not in objects for arg in step.args):
-            return ValidationResult(ValidationStatus.INVALID, "up", f"step {number}: unknown action or object", number)
+            return ValidationResult(
+                status=ValidationStatus.INVALID,
+                validator="up",
+                message=f"step {number}: unknown action or object",
+                failed_step=number,
+            )
         instances.append(ActionInstance(actions[step.action], tuple(objects[arg] for arg in step.args)))
     if not plan.timed:
         return SequentialPlan(instances)
@@ -162,7 +183,7 @@ def _up_plan(up_problem, plan: Plan):
     return TimeTriggeredPlan(timed)
 
 
-def _up_validator(up_problem, plan: Plan):
+def _up_validator(up_problem: Any, plan: Plan) -> Any:
     if plan.timed:
         from unified_planning.engines.plan_validator import TimeTriggeredPlanValidator
 
@@ -183,7 +204,9 @@ def val_available() -> bool:
 
 def validate_with_val(domain: Domain, problem: Problem, plan: Plan, deadline: float | None = None) -> ValidationResult:
     if domain.path is None or problem.path is None:
-        return ValidationResult(ValidationStatus.UNAVAILABLE, "val", "needs the domain and problem files on disk")
+        return ValidationResult(
+            status=ValidationStatus.UNAVAILABLE, validator="val", message="needs the domain and problem files on disk"
+        )
     result = validate_files_with_val(domain.path, problem.path, plan, deadline)
     if result.metric is None:
         return result
@@ -210,7 +233,7 @@ def validate_files_with_val(
     try:
         run = run_val(domain_path, problem_path, format_plan(plan), timeout=timeout, tolerance=tolerance)
     except ValidatorUnavailableError as error:
-        return ValidationResult(ValidationStatus.UNAVAILABLE, "val", error.message)
+        return ValidationResult(status=ValidationStatus.UNAVAILABLE, validator="val", message=error.message)
     return read_val_report(run.output, run.exit_code, plan)
 
 
@@ -225,7 +248,9 @@ def read_val_report(output: str, exit_code: int, plan: Plan) -> ValidationResult
     lines = [line.strip() for line in output.splitlines()]
     if "Plan valid" in lines:
         value = next((_number(line[len("Final value:") :]) for line in lines if line.startswith("Final value:")), None)
-        return ValidationResult(ValidationStatus.VALID, "val", "Plan valid (VAL)", metric=value)
+        return ValidationResult(
+            status=ValidationStatus.VALID, validator="val", message="Plan valid (VAL)", metric=value
+        )
     time_now = None  # the time of the happening VAL was checking
     for line in lines:
         if line.startswith(_VAL_HAPPENING):
@@ -234,7 +259,9 @@ def read_val_report(output: str, exit_code: int, plan: Plan) -> ValidationResult
 
     def invalid(reason: str) -> ValidationResult:
         where = f"step {step} {plan.steps[step - 1]}: " if step is not None else ""
-        return ValidationResult(ValidationStatus.INVALID, "val", f"{where}{reason} (VAL)", step)
+        return ValidationResult(
+            status=ValidationStatus.INVALID, validator="val", message=f"{where}{reason} (VAL)", failed_step=step
+        )
 
     undefined = next((line for line in lines if line.startswith(_VAL_UNDEFINED)), None)
     if undefined is not None:
@@ -262,9 +289,15 @@ def read_val_report(output: str, exit_code: int, plan: Plan) -> ValidationResult
         return invalid(detail or "the plan failed to execute")
     gist = next((line for line in lines if line and ("Error" in line or "Problem in" in line)), None)
     if gist is None and (exit_code < 0 or 128 < exit_code < 160):  # killed by a signal (a segmentation fault)
-        return ValidationResult(ValidationStatus.UNAVAILABLE, "val", f"VAL's Validate crashed (exit code {exit_code})")
+        return ValidationResult(
+            status=ValidationStatus.UNAVAILABLE,
+            validator="val",
+            message=f"VAL's Validate crashed (exit code {exit_code})",
+        )
     return ValidationResult(
-        ValidationStatus.UNAVAILABLE, "val", f"VAL gave no verdict: {gist or f'Validate exit code {exit_code}'}"
+        status=ValidationStatus.UNAVAILABLE,
+        validator="val",
+        message=f"VAL gave no verdict: {gist or f'Validate exit code {exit_code}'}",
     )
 
 
@@ -316,7 +349,9 @@ VALIDATORS: dict[str, Validator] = {
 # Every --validator choice: the validators, and ``none`` (no validation, explicitly).
 VALIDATOR_CHOICES = (*VALIDATORS, NONE)
 
-_NOT_VALIDATED = ValidationResult(ValidationStatus.NOT_VALIDATED, NONE, "not validated (--validator none)")
+_NOT_VALIDATED = ValidationResult(
+    status=ValidationStatus.NOT_VALIDATED, validator=NONE, message="not validated (--validator none)"
+)
 
 
 def check_validators(names: Sequence[str]) -> None:
@@ -373,7 +408,9 @@ def validate_unread(
         if name == "val":
             # without the problem read, VAL's final value cannot be told from the plan's length
             return replace(validate_files_with_val(domain_path, problem_path, plan, deadline), metric=None)
-        return ValidationResult(ValidationStatus.UNAVAILABLE, name, f"our reader refuses the input ({refused})")
+        return ValidationResult(
+            status=ValidationStatus.UNAVAILABLE, validator=name, message=f"our reader refuses the input ({refused})"
+        )
 
     return _combine(names, (run(name) for name in names))
 
@@ -388,11 +425,15 @@ def _combine(names: Sequence[str], results: Iterable[ValidationResult]) -> Valid
         (ran if result.status is ValidationStatus.VALID else unavailable).append(result)
     if not ran:
         reasons = "; ".join(f"{r.validator}: {r.message}" for r in unavailable)
-        return ValidationResult(ValidationStatus.UNAVAILABLE, "+".join(names), reasons)
+        return ValidationResult(status=ValidationStatus.UNAVAILABLE, validator="+".join(names), message=reasons)
     cost = next((r.cost for r in ran if r.cost is not None), None)
     metric = next((r.metric for r in ran if r.metric is not None), None)
     return ValidationResult(
-        ValidationStatus.VALID, "+".join(r.validator for r in ran), ran[0].message, cost=cost, metric=metric
+        status=ValidationStatus.VALID,
+        validator="+".join(r.validator for r in ran),
+        message=ran[0].message,
+        cost=cost,
+        metric=metric,
     )
 
 
@@ -408,7 +449,7 @@ class PlanCheck:
     timed: bool
     metric: float | None  # the problem's metric, or without one its total-cost, at the end of a valid plan
 
-    def to_json(self) -> dict:
+    def to_json(self) -> dict[str, Any]:
         result = self.result
         return {
             "valid": result.valid,
