@@ -10,6 +10,7 @@ from support import coffee_problem
 from relevance_plan.errors import RelevancePlanError
 from relevance_plan.generators.padded import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
 from relevance_plan.io import load_task
+from relevance_plan.pddl.plans import Plan
 from relevance_plan.planning.loop import PlanOptions, plan_task
 from relevance_plan.planning.results import PlanStatus
 from relevance_plan.planning.validate import ValidationStatus, validate_with_up
@@ -285,7 +286,7 @@ def test_a_failed_first_attempt_costs_no_more_than_its_share(coffee_files):
     def call_planner(objects, limit):
         calls.append((objects is None, limit))
         status = PlannerStatus.OUT_OF_TIME if objects is None else PlannerStatus.UNSOLVABLE
-        return RunOutcome(status, 12, (), None, 0.01, "fake")
+        return RunOutcome(status=status, exit_code=12, plan=Plan(()), plan_cost=None, wall_time=0.01, planner="fake")
 
     options = PlanOptions(timeout=60, first_share=0.25)
     attempts, _ = run_attempts(task, selection, call_planner, options, started=time.perf_counter())

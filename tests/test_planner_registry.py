@@ -450,7 +450,15 @@ class _Scripted:
     def run(self, domain_path, problem_path, *, time_limit, memory_limit_mb) -> RunOutcome:
         self.limits.append(time_limit)
         time.sleep(self.seconds)
-        return RunOutcome(self.status, 0, Plan(()), None, self.seconds, self.name, reason=f"{self.name} said so")
+        return RunOutcome(
+            status=self.status,
+            exit_code=0,
+            plan=Plan(()),
+            plan_cost=None,
+            wall_time=self.seconds,
+            planner=self.name,
+            reason=f"{self.name} said so",
+        )
 
 
 def test_auto_runs_the_next_planner_when_the_first_gives_up_without_an_answer():

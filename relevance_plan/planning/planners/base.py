@@ -37,7 +37,7 @@ class PlannerStatus(enum.Enum):
     PLANNER_CRASH = "planner-crash"
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class RunOutcome:
     """One planner run.
 
