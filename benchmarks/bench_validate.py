@@ -19,7 +19,7 @@ A case agrees when every validator that gave a verdict gave the same one; a
 validator that could not judge a case (VAL or UP refusing the files) is
 counted apart, never as agreement.  On valid plans of a problem with a
 metric, the builtin metric value is compared with VAL's final value too.
-Prints agreement counts per track (the folder above the domain folder) and
+Prints agreement counts per track (the corpus manifest's, else the folder above the domain folder) and
 every disagreement with each verdict and VAL's reason.
 
     python benchmarks/bench_validate.py                          # benchmarks/corpus of the repository
@@ -108,10 +108,21 @@ class Case:
         }
 
 
+def manifest_tracks(root: Path) -> dict[Path, str]:
+    """Folder -> track, from the corpus manifest when ``root`` has one (``benchmarks/corpus``)."""
+    manifest = root / "MANIFEST.json"
+    if not manifest.is_file():
+        return {}
+    entries = json.loads(manifest.read_text(encoding="utf-8")).get("folders", [])
+    return {(root / entry["path"]).resolve(): entry["track"] for entry in entries}
+
+
 def domain_folders(roots: list[Path]) -> list[tuple[str, str, list]]:
-    """(track, domain name, its problems) of every suite folder under ``roots``."""
+    """(track, domain name, its problems) of every suite folder under ``roots``; the track is the
+    corpus manifest's where there is one, else the name of the folder above."""
     found = []
     for root in roots:
+        tracks = manifest_tracks(root)
         for folder in sorted([root, *(p for p in root.rglob("*") if p.is_dir())]):
             if folder.name in ("instances", "problems", "domains"):
                 continue
@@ -120,7 +131,7 @@ def domain_folders(roots: list[Path]) -> list[tuple[str, str, list]]:
             except RelevancePlanError:
                 continue
             if problems:
-                found.append((folder.parent.name, folder.name, problems))
+                found.append((tracks.get(folder.resolve(), folder.parent.name), folder.name, problems))
     return found
 
 
