@@ -141,7 +141,7 @@ def from_scratch(session: Session):
     started = time.perf_counter()
     problem = read_problem(text, session.domain)
     scoring = score_problem(PlanningTask(session.domain, problem), session.options, model=session.model)
-    result = scoring.prune(session.options.thresholds)
+    result = scoring.prune(session.options.thresholds), scoring.first_selection()
     return time.perf_counter() - started, scoring.scores, result
 
 
@@ -151,13 +151,15 @@ def same(session: Session, scores, result) -> bool:
         return False
     if not scores.sufficient:
         return current.insufficiency == scores.insufficiency
-    selection = session.selection
+    relevance, first = result
+    determination = session.determination
     return (
         current.element_scores == scores.element_scores
         and current.class_scores == scores.class_scores
-        and selection.kept == result.kept
-        and selection.selected == result.selected
-        and {r.name for r in selection.restored} == {r.name for r in result.restored}
+        and determination.kept == relevance.kept
+        and determination.selected == relevance.selected
+        and {r.name for r in determination.restored} == {r.name for r in relevance.restored}
+        and session.kept == first.kept
     )
 
 

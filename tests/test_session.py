@@ -34,14 +34,15 @@ def coffee_session(text: str | None = None, options: ScoringOptions = ScoringOpt
 
 
 def from_scratch(session: Session):
-    """Determination from scratch on the current state: write it out, read it back, score, prune."""
+    """Determination from scratch on the current state: write it out, read it back, score, prune
+    (the paper's relevance, and the first selection ``prune`` writes)."""
     problem = read_problem(session.scene.problem_text(), session.domain)
     scoring = score_problem(PlanningTask(session.domain, problem), session.options, model=session.model)
-    return scoring.scores, scoring.prune(session.options.thresholds)
+    return scoring.scores, scoring.prune(session.options.thresholds), scoring.first_selection()
 
 
 def assert_same_as_scratch(session: Session, where: str = "", explanations: bool = True) -> None:
-    scores, result = from_scratch(session)
+    scores, result, first = from_scratch(session)
     current = session.current_scores()
     assert current.sufficient == scores.sufficient, where
     assert current.insufficiency == scores.insufficiency, where
@@ -53,11 +54,22 @@ def assert_same_as_scratch(session: Session, where: str = "", explanations: bool
     if explanations:
         assert current.explanations == scores.explanations, where
     assert current.unknown == scores.unknown, where
+    determination = session.determination
+    assert determination is not None and session.selection is not None, where
+    assert determination.selected == result.selected == session.relevant, where
+    assert determination.kept == result.kept, where
+    assert {r.name for r in determination.restored} == {r.name for r in result.restored}, where
+    assert session.kept == first.kept, where
+    assert session.selection.set_aside == first.set_aside, where
+    assert_relevant_covers_kept(session)
+
+
+def assert_relevant_covers_kept(session: Session) -> None:
+    """Every kept object is relevant or was put back (closure, soundness, the reachability repair)."""
     selection = session.selection
-    assert selection is not None, where
-    assert selection.selected == result.selected, where
-    assert selection.kept == result.kept, where
-    assert {r.name for r in selection.restored} == {r.name for r in result.restored}, where
+    assert selection is not None
+    if not selection.unpruned:
+        assert session.kept - {r.name for r in selection.restored} <= session.relevant
 
 
 def stand(item: str, place: str) -> list:
@@ -108,9 +120,13 @@ def test_a_plate_put_on_the_kept_cup_triggers_and_is_restored_by_closure():
     assert "plastic_cup_1" in session.kept and "dinner_plate_2" not in session.kept
     report = session.handle({"event": "set", "fact": ["on", "dinner_plate_2", "plastic_cup_1"]})
     assert report.triggered and "kept plastic_cup_1" in report.reason
-    restored = {r.name: r.reason for r in report.selection.restored}
+    determination = session.determination
+    assert determination is not None
+    restored = {r.name: r.reason for r in determination.restored}
     assert restored["dinner_plate_2"] == "on top of plastic_cup_1 (on dinner_plate_2 plastic_cup_1)"
-    assert "dinner_plate_2" in report.added
+    # the first selection sets the blocked cup aside while the paper cup stands free; it stays relevant
+    assert "plastic_cup_1" in report.dropped and "plastic_cup_1" in report.relevant
+    assert "plastic_cup_1" in report.selection.set_aside and "dinner_plate_2" not in report.selection.kept
     assert_same_as_scratch(session)
 
 
@@ -275,6 +291,12 @@ def test_incremental_determination_equals_from_scratch_on_random_streams(seed):
         report = session.handle(event)
         triggered += report.triggered
         assert_same_as_scratch(session, f"seed {seed} step {step}: {event}")
+        if step % 20 == 19 and session.sufficient:  # and as the Python API's prune, from the written scene
+            import relevance_plan as rp
+
+            how = {"objective": session.options.objective, "human": session.options.human}
+            pruned = rp.prune(COFFEE_DOMAIN, session.scene.problem_text(), **how, model_task=session.options.model_task)
+            assert session.kept == pruned.kept, f"seed {seed} step {step}"
     assert 0 < triggered < 120
 
 
@@ -331,7 +353,9 @@ def test_idle_scene_triggers_nothing_until_someone_is_served():
         report = session.handle(event)
         assert not report.triggered and report.error is None
     report = session.handle({"event": "human", "name": "alice", "preferences": "alice"})
-    assert report.triggered and report.sufficient and "cold_brew_1" in report.selection.kept
+    assert report.triggered and report.sufficient and "cold_brew_1" in report.relevant
+    # the goal is still (and): relevant to Alice, but no planner needs the coffee yet
+    assert "cold_brew_1" not in report.selection.kept
     assert not session.idle
     assert_same_as_scratch(session)
 
@@ -500,7 +524,8 @@ def test_watch_writes_one_line_per_event_and_a_snapshot_prune_agrees_with(tmp_pa
     assert lines[0]["triggered"] and "Mug_2" in lines[0]["kept"] and lines[0]["kept"] == sorted(lines[0]["kept"])
     assert lines[1]["error"].startswith("not a JSON object") and not lines[1]["triggered"]
     assert "error" in lines[4] and "unknown object 'ghost'" in lines[4]["error"]
-    assert lines[3]["triggered"] and "dinner_plate_1" in lines[3]["added"]
+    # the plate blocks Mug_2: the first selection sets the mug aside (free cups remain); it stays relevant
+    assert lines[3]["triggered"] and "Mug_2" in lines[3]["dropped"] and "Mug_2" in lines[3]["relevant"]
     kept = next(line["kept"] for line in reversed(lines) if line["triggered"])
 
     current = tmp_path / "snap" / "current.pddl"
@@ -508,15 +533,16 @@ def test_watch_writes_one_line_per_event_and_a_snapshot_prune_agrees_with(tmp_pa
     assert "Mug_2" in problem.display_names.values()  # the user's spelling
     pruned = read_problem((tmp_path / "snap" / "pruned.pddl").read_text(), domain)
     assert sorted(pruned.display(n) for n in pruned.objects) == kept
-    # the session's determination is relevance as the paper determines it (thresholds and closure):
-    # from scratch on the snapshot it is the same; prune hands planners plan's narrower first attempt
+    # the session reports as kept the first selection prune writes; relevant is the paper's relevant set
     scoring = score_problem(PlanningTask(domain, problem), ScoringOptions())
-    assert sorted(problem.display(n) for n in scoring.prune(ScoringOptions().thresholds).kept) == kept
+    assert sorted(problem.display(n) for n in scoring.first_selection().kept) == kept
+    relevant = next(line["relevant"] for line in reversed(lines) if line["triggered"])
+    assert relevant == sorted(problem.display(n) for n in scoring.prune(ScoringOptions().thresholds).selected)
     result = CliRunner().invoke(
         main, ["prune", str(COFFEE_DOMAIN), str(current), "-o", str(tmp_path / "p.pddl"), "--json"]
     )
     assert result.exit_code == 0, result.stderr
-    assert set(json.loads(result.stdout)["kept"]) == {problem.display(n) for n in scoring.first_selection().kept}
+    assert sorted(json.loads(result.stdout)["kept"]) == kept
 
 
 @pytest.mark.planner
@@ -586,6 +612,43 @@ def test_the_shipped_example_replays_the_paper_demonstration():
     assert not bob.sufficient and bob.ask.cue == "task" and bob.stale
     assert not bob_goal.sufficient and bob_goal.selection.kept == bob_arrives.selection.kept
     assert cue.sufficient and not cue.stale and cue.ask.cue == "preference" and "bob" in cue.selection.kept
+
+
+def test_watch_on_the_shipped_example_reports_what_prune_keeps_after_every_event(tmp_path):
+    import relevance_plan as rp
+    from relevance_plan.data import EXAMPLES_DIR
+
+    scene = EXAMPLES_DIR / "coffee-break" / "scene.pddl"
+    lines = (EXAMPLES_DIR / "coffee-break" / "events.jsonl").read_text().splitlines()
+    domain, problem = load_task(COFFEE_DOMAIN, scene)
+    session = Session(domain, problem, ScoringOptions(objective="drink-at-break"))
+    for count, line in enumerate(lines, 1):
+        report = session.handle_line(line)
+        # watch on the events so far: its last determination and its snapshot
+        events_file = tmp_path / "events.jsonl"
+        events_file.write_text("\n".join(lines[:count]) + "\n")
+        snap = tmp_path / f"snap-{count}"
+        args = [str(COFFEE_DOMAIN), str(scene), "--events", str(events_file), "--objective", "drink-at-break"]
+        result = CliRunner().invoke(main, ["watch", *args, "--snapshot", str(snap)])
+        assert result.exit_code == 0, result.stderr
+        out = [json.loads(text) for text in result.stdout.splitlines()]
+        determined = [o for o in out if o["triggered"] and o["sufficient"]]
+        if session.selection is None:
+            assert not determined
+            continue
+        current = (snap / "current.pddl").read_text()
+        assert current == session.scene.problem_text()
+        how = session.options  # the human and task cues the events gave
+        pruned = rp.prune(COFFEE_DOMAIN, current, objective=how.objective, human=how.human, model_task=how.model_task)
+        shown = {pruned.task.problem.display(n) for n in pruned.kept}
+        if report.sufficient:
+            assert {session.scene.display[n] for n in session.kept} == shown, line
+        assert sorted(shown) == determined[-1]["kept"] or not report.sufficient, line
+        assert set(determined[-1]["relevant"]) >= set(determined[-1]["kept"]) - {
+            r["object"] for r in determined[-1]["restored"]
+        }
+        assert_relevant_covers_kept(session)
+    assert determined[-1]["kept"] != determined[-1]["relevant"]  # the first selection narrows
 
 
 @pytest.mark.skipif(REPO is None, reason="needs the source tree (examples/, README.md)")

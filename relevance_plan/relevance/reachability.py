@@ -1017,7 +1017,7 @@ def repair_selection(
         return kept, (), Reachability(False, False)
     check = exploration.outcome()
     if check.reachable:
-        return kept, (), check
+        return _sharpen(task, kept, kept, (), check, scores, close, give_up_above)
     # One member of every class the kept set lacks first (no airplane at all), together; then, round by
     # round, the objects between what is reached and the goal atoms still unreached: one at a time at
     # first (one airplane may carry every package), then a quarter of what was added, or as many as
@@ -1085,7 +1085,46 @@ def repair_selection(
     ]
     closed, closure_reasons = close(kept | frozenset(used), kept)
     reasons.extend(r for r in closure_reasons if r.name not in used and r.name not in kept)
-    return closed, tuple(reasons), check
+    return _sharpen(task, kept, closed, tuple(reasons), check, scores, close, give_up_above)
+
+
+def _sharpen(
+    task: PlanningTask,
+    kept: frozenset[str],
+    closed: frozenset[str],
+    reasons: tuple[Restored, ...],
+    check: Reachability,
+    scores: Mapping[str, float],
+    close: CloseFn,
+    give_up_above: int,
+) -> tuple[frozenset[str], tuple[Restored, ...], Reachability]:
+    """On a temporal or numeric problem, a selection the delete relaxation admits but the sharper
+    relaxation of ``timed_relaxation`` refutes (fuel no kept action can give, a durative action's end
+    out of reach) has no plan: add the best-ranked objects, a doubling batch at a time, until it is
+    admitted (or the planner decides, past ``give_up_above``)."""
+    from relevance_plan.relevance.timed_relaxation import applies, timed_relaxed_reachability
+
+    if not applies(task) or timed_relaxed_reachability(task, closed) is not False:
+        return closed, reasons, check
+    distance = task.goal_distance
+    far = len(task.problem.objects) + 1
+    ranked = sorted(
+        (name for name in task.problem.objects if name not in closed),
+        key=lambda name: (-scores.get(name, 0.0), distance.get(name, far), name),
+    )
+    current, added, batch = closed, list(reasons), 1
+    while ranked and len(current) <= give_up_above:
+        take, ranked = ranked[:batch], ranked[batch:]
+        grown, more = close(current | frozenset(take), current)
+        added += [Restored(name, "", "reachability", ("goal",)) for name in take]
+        added += [r for r in more if r.name not in current and r.name not in take]
+        current = grown
+        ranked = [name for name in ranked if name not in current]
+        task.check_time("checking the selection")
+        if timed_relaxed_reachability(task, current) is not False:
+            break
+        batch = max(1, len(current) - len(kept))
+    return current, tuple(added), check
 
 
 class _Toward:

@@ -7,8 +7,14 @@
 For each event the session checks it against the scene, applies it, updates
 the scores of the elements it can affect (``rescoring.py``), runs the
 trigger check (``triggers.py``) and, only when a trigger fires, determines
-relevance again: the same threshold + closure step as ``relevance-plan
-prune`` (``relevance.prune.prune_with_scores``) on the current state.  When
+relevance again on the current state, in two steps: the paper's relevance
+(threshold + closure, ``relevance.prune.prune_with_scores``: its ``selected``
+is the relevant set, :attr:`Session.relevant`), and on top of it the same
+first selection ``relevance-plan prune`` writes (goal filter, blocked and
+spare alternatives set aside: ``Scoring.first_selection``), which is what
+the session reports as kept.  The triggers watch the first step's kept set, a
+superset of the first selection's, so an event that fires none changes
+neither.  When
 the cues are insufficient the previous selection stays in force, marked
 stale, with the question to ask; a ``cue``, ``human`` or ``goal`` event that
 settles it resumes.  With a planner, a determination that changes the kept
@@ -86,7 +92,8 @@ class EventReport:
     sufficient: bool = True
     insufficiency: str = ""
     stale: bool = False  # the selection in force predates insufficient cues
-    selection: Selection | None = None  # the selection in force (after the event)
+    selection: Selection | None = None  # the first selection in force (after the event), as ``prune`` writes it
+    relevant_objects: frozenset = frozenset()  # the paper's relevant set in force (names; see Session.relevant)
     added: tuple = ()  # kept now, not before (names)
     dropped: tuple = ()
     ask: Ask | None = None
@@ -107,6 +114,12 @@ class EventReport:
         """The objects the selection in force keeps, in the user's spelling, sorted."""
         return sorted(self.show(n) for n in (self.selection.kept if self.selection is not None else ()))
 
+    @property
+    def relevant(self) -> list[str]:
+        """The paper's relevant set in force (above the thresholds, before the goal filter), in the
+        user's spelling, sorted: every kept object is in it or was put back (``selection.restored``)."""
+        return sorted(self.show(n) for n in self.relevant_objects)
+
     def to_json(self) -> dict[str, Any]:
         """The event's report as ``watch`` prints it (names in the user's spelling)."""
         data: dict[str, Any] = {
@@ -123,6 +136,7 @@ class EventReport:
             data["insufficiency"] = self.insufficiency
         if self.triggered:
             data["kept"] = self.kept
+            data["relevant"] = self.relevant
             restored = self.selection.restored if self.selection is not None else ()
             data["restored"] = [{"object": self.show(r.name), "reason": r.reason} for r in restored]
             data["removed"] = len(self.selection.removed) if self.selection is not None else None
@@ -183,7 +197,10 @@ class Session:
         self.triggers = TRIGGERS if triggers is None else triggers
         self.served: str | None = None  # the human of the last 'human' event
         self.seq = 0
-        self.selection: Selection | None = None  # the last selection made with sufficient cues
+        # the last determination made with sufficient cues: relevance (thresholds + closure) and the
+        # first selection narrowed from it (what ``prune`` writes and the session reports as kept)
+        self.determination: Selection | None = None
+        self.selection: Selection | None = None
         self.passing: set = set()
         # (functional positions, closure rules by predicate) for the trigger check
         self._rules: tuple[frozenset, dict[str, list[ConstraintRule]]] | None = None
@@ -205,7 +222,14 @@ class Session:
 
     @property
     def kept(self) -> frozenset:
+        """The first selection in force: the objects ``prune`` keeps on the current state."""
         return self.selection.kept if self.selection is not None else frozenset()
+
+    @property
+    def relevant(self) -> frozenset:
+        """The paper's relevant set in force: above the thresholds (and the goal's objects), before
+        the goal filter and without what closure put back."""
+        return self.determination.selected if self.determination is not None else frozenset()
 
     @property
     def sufficient(self) -> bool:
@@ -241,7 +265,7 @@ class Session:
             event = check_event(data, self.scene, self.model)
         except EventError as error:
             return self._rejected(kind, error)
-        kept_before = self.kept
+        kept_before = self.determination.kept if self.determination is not None else frozenset()
         sufficient_before = self.scores.sufficient
         functional_before, single_valued_before = self.scene.index.functional, self._single_valued
         changed, rescored = self._apply(event)
@@ -293,6 +317,7 @@ class Session:
             sufficient=self.scores.sufficient,
             stale=not self.scores.sufficient and self.selection is not None,
             selection=self.selection,
+            relevant_objects=self.relevant,
             display=MappingProxyType(self.scene.display),
         )
 
@@ -438,12 +463,13 @@ class Session:
     # ------------------------------------------------------------------ determination
 
     def _determine(self) -> None:
-        """Threshold + closure on the current state (the prune step), if the cues suffice."""
+        """Relevance (threshold + closure) and the first selection on the current state, if the cues suffice."""
         scores = self.scores.result()
         if not scores.sufficient:
             return  # the previous selection stays in force, stale
         task = _LiveTask(self.scene.domain, self.scene.snapshot_problem(), _IndexView(self.scene))
-        self.selection = prune_with_scores(task, scores, self.options.thresholds, self.model)
+        self.determination = prune_with_scores(task, scores, self.options.thresholds, self.model)
+        self.selection = Scoring(task, self.model, scores, self.options).first_selection()
 
     def _report(self, kind: str, reasons: tuple, previous: Selection | None, seconds: float) -> EventReport:
         scores = self.scores.result()
@@ -458,6 +484,7 @@ class Session:
             insufficiency=scores.insufficiency,
             stale=not scores.sufficient and self.selection is not None,
             selection=self.selection,
+            relevant_objects=self.relevant,
             added=tuple(sorted(now - before)) if reasons else (),
             dropped=tuple(sorted(before - now)) if reasons else (),
             ask=self.ask(scores) if (reasons or not scores.sufficient) and not self.idle else None,
@@ -479,13 +506,13 @@ class Session:
                 tasks = tuple(name for name, _ in ranked)
                 return Ask("task", "Which would you like: " + ", ".join(tasks) + "?", tasks)
             return Ask("model", scores.insufficiency)
-        if model is None or self.options.human is not None or self.selection is None or scores.scorer != "model":
+        if model is None or self.options.human is not None or self.determination is None or scores.scorer != "model":
             return None
         from relevance_plan.relevance.metrics import plan_inquiries
         from relevance_plan.relevance.scene import kind_of
 
         structural = {c.name for c in model.classes.values() if c.fixed_relevance is not None or c.from_contents}
-        selected = self.selection.selected
+        selected = self.determination.selected
         found = plan_inquiries(scores, selected, {n: kind_of(n) for n in selected}, structural)
         if not found.optional:
             return None

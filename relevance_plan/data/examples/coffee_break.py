@@ -68,6 +68,8 @@ def main() -> None:
                 print(f"{'':34}insufficient cues: {report.insufficiency.split(' — ')[0]}")
             elif report.triggered and report.selection is not None:
                 kept = sorted(show(n, n) for n in report.selection.kept)
+                relevant = report.relevant
+                print(f"{'':34}relevant {len(relevant)}: {', '.join(relevant)}")
                 print(f"{'':34}kept {len(kept)} of {len(session.scene.objects)}: {', '.join(kept)}")
                 if report.added or report.dropped:
                     print(

@@ -1,0 +1,86 @@
+"""The sharper relaxed check for temporal and numeric problems: it refutes only what has no plan."""
+
+from __future__ import annotations
+
+import pytest
+
+import relevance_plan as rp
+from relevance_plan.data import DOMAINS_DIR
+from relevance_plan.generators.sized import generate_sized_problem
+from relevance_plan.io import load_sources
+from relevance_plan.relevance.reachability import relaxed_reachability
+from relevance_plan.relevance.scorers import PlanningTask
+from relevance_plan.relevance.timed_relaxation import timed_relaxed_reachability
+
+ROVER_DOMAIN = """(define (domain rover)
+  (:requirements :strips :typing :numeric-fluents :durative-actions)
+  (:types rover place charger)
+  (:predicates (at ?r - rover ?p - place) (road ?a - place ?b - place) (charger-at ?c - charger ?p - place)
+               (armed ?r - rover) (ready ?r - rover))
+  (:functions (battery ?r - rover))
+  (:durative-action drive
+    :parameters (?r - rover ?a - place ?b - place)
+    :duration (= ?duration 3)
+    :condition (and (at start (at ?r ?a)) (at start (road ?a ?b)) (at start (>= (battery ?r) 5)))
+    :effect (and (at start (not (at ?r ?a))) (at end (at ?r ?b)) (at start (decrease (battery ?r) 5))))
+  (:durative-action charge
+    :parameters (?r - rover ?c - charger ?p - place)
+    :duration (= ?duration 2)
+    :condition (and (over all (at ?r ?p)) (at start (charger-at ?c ?p)))
+    :effect (at end (increase (battery ?r) 4)))
+  (:durative-action prime
+    :parameters (?r - rover)
+    :duration (= ?duration 1)
+    :condition (and (at end (armed ?r)))
+    :effect (and (at start (armed ?r)) (at end (ready ?r)))))
+"""
+
+
+def rover_problem(battery: float, goal: str = "(at r1 p2)") -> str:
+    return f"""(define (problem rover-1) (:domain rover)
+  (:objects r1 - rover p1 p2 - place c1 - charger)
+  (:init (at r1 p1) (road p1 p2) (charger-at c1 p1) (= (battery r1) {battery}))
+  (:goal {goal}))
+"""
+
+
+def task_of(domain: str, problem: str) -> PlanningTask:
+    return PlanningTask(*load_sources(domain, problem))
+
+
+def test_a_battery_no_kept_charger_can_fill_refutes_the_selection_the_delete_relaxation_admits():
+    task = task_of(ROVER_DOMAIN, rover_problem(3))
+    without_charger = {"r1", "p1", "p2"}
+    assert relaxed_reachability(task, without_charger).reachable  # numbers ignored
+    assert timed_relaxed_reachability(task, without_charger) is False
+    assert timed_relaxed_reachability(task, without_charger | {"c1"}) is True  # charge, then drive
+
+
+def test_enough_battery_and_an_end_condition_met_by_the_actions_own_start_are_admitted():
+    task = task_of(ROVER_DOMAIN, rover_problem(7))
+    assert timed_relaxed_reachability(task, {"r1", "p1", "p2"}) is True
+    # prime needs (armed r1) at its end, which its own start adds: a plan exists
+    task = task_of(ROVER_DOMAIN, rover_problem(7, "(ready r1)"))
+    assert timed_relaxed_reachability(task, {"r1"}) is True
+
+
+def test_a_numeric_goal_is_checked_against_the_reachable_interval():
+    assert timed_relaxed_reachability(task_of(ROVER_DOMAIN, rover_problem(3, "(>= (battery r1) 10)")), {"r1"}) is False
+    task = task_of(ROVER_DOMAIN, rover_problem(3, "(>= (battery r1) 10)"))
+    assert timed_relaxed_reachability(task, {"r1", "p1", "c1"}) is True  # charging repeats
+
+
+def test_the_repaired_selection_is_admitted_by_the_sharper_check():
+    selection = rp.prune(ROVER_DOMAIN, rover_problem(3), scorer="goal")
+    assert "c1" in selection.kept
+    assert timed_relaxed_reachability(selection.task, selection.kept) is True
+
+
+@pytest.mark.parametrize("world", ["driverlog-temporal", "zenotravel-numeric"])
+@pytest.mark.parametrize("index", range(3))
+def test_the_generated_worlds_full_problems_and_first_selections_are_admitted(world, index):
+    # every generated problem is solvable: the check must never refute it, nor the first selection
+    generated = generate_sized_problem(world, 0, index, 60)
+    selection = rp.prune(DOMAINS_DIR / world / "domain.pddl", generated.pddl_text)
+    assert timed_relaxed_reachability(selection.task, selection.task.problem.objects.keys()) is True
+    assert timed_relaxed_reachability(selection.task, selection.kept) is True
