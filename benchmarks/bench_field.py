@@ -59,7 +59,7 @@ REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))
 
 from corpus import folders as corpus_folders  # noqa: E402
-from installed import compiled_checkout, installed_tool  # noqa: E402
+from installed import compiled_checkout, installed_environment, installed_tool  # noqa: E402
 
 from relevance_plan.errors import PDDLParseError, RelevancePlanError  # noqa: E402
 from relevance_plan.io import SuiteProblem, find_suite_problems, load_domain, load_problem  # noqa: E402
@@ -245,7 +245,7 @@ def speed(roots: list[str], per_folder: int, timeout: float, in_process: bool, i
     rows = []
     with _scratch() as scratch:
         if installed:
-            tool, env = installed_tool(scratch), dict(os.environ)
+            tool, env = installed_tool(scratch), installed_environment()
             print(f"relevance-plan as installed from a wheel of this checkout; medians of {repeat} run(s)\n")
         else:
             tool, env = compiled_checkout()
