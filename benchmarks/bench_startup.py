@@ -76,10 +76,10 @@ def main() -> int:
         if args.installed:
             tool = installed_tool(work)
             env = installed_environment()
-            print(f"relevance-plan as installed from a wheel of {REPO}: {tool[0]}")
+            print("relevance-plan as installed from a wheel of this checkout, in a new virtual environment")
         else:
             tool, env = compiled_checkout()
-            print(f"relevance-plan from {REPO / 'relevance_plan'}, bytecode compiled beforehand (as installed)")
+            print("relevance-plan from this checkout, bytecode compiled beforehand (as installed)")
         print(f"{'problem':<24} {'bare':>7} {'pure':>7} {'relev.':>7} {'overhead':>9} {'target':>7}  rel<=pure*1.1+0.3")
         for world in args.worlds:
             problem = generate_classic_problem(world, args.seed, 1, SIZES[world], dense=True)
