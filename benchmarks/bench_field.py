@@ -228,10 +228,12 @@ def _guess_track(domain_path: Path) -> str:
     return "classical"
 
 
-def timed(command: list[str], timeout: float) -> tuple[int, float]:
+def timed(command: list[str], timeout: float, folder: Path) -> tuple[int, float]:
+    """Exit code and seconds of ``command`` run in ``folder`` (Fast Downward's translator writes
+    ``output.sas`` where it runs)."""
     started = time.perf_counter()
     try:
-        completed = subprocess.run(command, capture_output=True, timeout=timeout + 30)
+        completed = subprocess.run(command, capture_output=True, timeout=timeout + 30, cwd=folder)
         code = completed.returncode
     except subprocess.TimeoutExpired:
         code = -1
@@ -271,13 +273,13 @@ def speed(roots: list[str], per_folder: int, timeout: float, in_process: bool, i
                     f"{int(timeout)}s",
                     "--alias",
                     "lama-first",
-                    str(entry.domain),
-                    str(entry.problem),
+                    str(entry.domain.resolve()),
+                    str(entry.problem.resolve()),
                 ]
                 pure_times: list[float] = []
                 relevance_times: list[float] = []
                 for _ in range(repeat):
-                    pure_code, seconds = timed(pure_command, timeout)
+                    pure_code, seconds = timed(pure_command, timeout, scratch)
                     if pure_code != 0:
                         break
                     pure_times.append(seconds)
@@ -324,8 +326,8 @@ def _relevance(entry: SuiteProblem, timeout: float, scratch: Path, in_process: b
     command = [
         *tool,
         "plan",
-        str(entry.domain),
-        str(entry.problem),
+        str(entry.domain.resolve()),
+        str(entry.problem.resolve()),
         "--json",
         "--scorer",
         "goal",
@@ -335,7 +337,7 @@ def _relevance(entry: SuiteProblem, timeout: float, scratch: Path, in_process: b
         str(scratch / "plan"),
     ]
     started = time.perf_counter()
-    completed = subprocess.run(command, capture_output=True, timeout=timeout + 60, env=env)
+    completed = subprocess.run(command, capture_output=True, timeout=timeout + 60, env=env, cwd=scratch)
     elapsed = time.perf_counter() - started
     if completed.returncode != 0:
         return None, None, None
