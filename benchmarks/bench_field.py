@@ -32,14 +32,15 @@ The folders default to the repository's corpus, ``benchmarks/corpus``
 problems (pddlgym's ``manyX/`` and ``manyX_test/`` folders beside their
 ``manyX.pddl``), which come from the ``pddlgym`` wheel rather than the
 corpus: ``pip install --no-deps pddlgym==0.0.7`` (its files only are read,
-the package is never imported).  Without the wheel, ``--pddlgym`` says so
-and runs the other folders.  Output names files relative to the repository
+the package is never imported); ``--pddlgym-only`` reads those alone.
+Without the wheel, either option says so (and ``--pddlgym`` runs the other
+folders).  Output names files relative to the repository
 (pddlgym's as ``pddlgym/...``).
 
     python benchmarks/bench_field.py accept
     python benchmarks/bench_field.py accept --pddlgym
     python benchmarks/bench_field.py speed benchmarks/corpus/potassco --per-folder 2 --timeout 60
-    python benchmarks/bench_field.py speed --pddlgym --installed --repeat 3
+    python benchmarks/bench_field.py speed --pddlgym-only --installed --repeat 3
 """
 
 from __future__ import annotations
@@ -392,23 +393,28 @@ def main() -> int:
     parser.add_argument(
         "--pddlgym", action="store_true", help="add PLOI's many-object folders of the installed pddlgym wheel"
     )
+    parser.add_argument("--pddlgym-only", action="store_true", help="read only those pddlgym folders")
     parser.add_argument("--per-folder", type=int, default=1, help="problems per folder in speed mode")
     parser.add_argument("--timeout", type=float, default=60.0)
     parser.add_argument("--in-process", action="store_true", help="time the library call, not the command")
     parser.add_argument("--installed", action="store_true", help="run a wheel of the checkout in a new venv")
     parser.add_argument("--repeat", type=int, default=1, help="runs of each command per problem (medians)")
     args = parser.parse_args()
-    args.roots = args.roots or [str(DEFAULT_CORPUS)]
+    if args.pddlgym_only and args.roots:
+        parser.error("--pddlgym-only takes no folders")
+    args.roots = [] if args.pddlgym_only else args.roots or [str(DEFAULT_CORPUS)]
     for root in args.roots:
         if not Path(root).is_dir():
             parser.error(f"not a folder: {root}")
-    if args.pddlgym:
+    if args.pddlgym or args.pddlgym_only:
         more = pddlgym_roots()
         if not more:
             print(
                 "pddlgym is not installed (pip install --no-deps pddlgym==0.0.7): its many-object folders are left out"
             )
         args.roots += more
+    if not args.roots:
+        return 1
     if args.mode == "accept":
         return accept(args.roots)
     return speed(args.roots, args.per_folder, args.timeout, args.in_process, args.installed, max(1, args.repeat))
