@@ -27,14 +27,26 @@ relevance in turn, and takes the medians (a single run of a 0.2 s problem
 varies by a few hundredths on a shared machine).  Takes a few minutes per
 50 problems and repetition on 2 cores.
 
-    python benchmarks/bench_field.py accept /path/to/corpus
-    python benchmarks/bench_field.py speed /path/to/corpus --per-folder 2 --timeout 60
-    python benchmarks/bench_field.py speed /path/to/corpus --installed --repeat 3
+The folders default to the repository's corpus, ``benchmarks/corpus``
+(``benchmarks/corpus/README.md``).  ``--pddlgym`` adds PLOI's many-object
+problems (pddlgym's ``manyX/`` and ``manyX_test/`` folders beside their
+``manyX.pddl``), which come from the ``pddlgym`` wheel rather than the
+corpus: ``pip install --no-deps pddlgym==0.0.7`` (its files only are read,
+the package is never imported); ``--pddlgym-only`` reads those alone.
+Without the wheel, either option says so (and ``--pddlgym`` runs the other
+folders).  Output names files relative to the repository
+(pddlgym's as ``pddlgym/...``).
+
+    python benchmarks/bench_field.py accept
+    python benchmarks/bench_field.py accept --pddlgym
+    python benchmarks/bench_field.py speed benchmarks/corpus/potassco --per-folder 2 --timeout 60
+    python benchmarks/bench_field.py speed --pddlgym-only --installed --repeat 3
 """
 
 from __future__ import annotations
 
 import argparse
+import importlib.util
 import math
 import os
 import statistics
@@ -47,14 +59,57 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))
 
-from installed import compiled_checkout, installed_tool  # noqa: E402
+from corpus import folders as corpus_folders  # noqa: E402
+from installed import compiled_checkout, installed_environment, installed_tool  # noqa: E402
 
 from relevance_plan.errors import PDDLParseError, RelevancePlanError  # noqa: E402
 from relevance_plan.io import SuiteProblem, find_suite_problems, load_domain, load_problem  # noqa: E402
 from relevance_plan.pddl.model import Domain  # noqa: E402
 from relevance_plan.planning.planners.features import NUMERIC_FLUENTS, domain_features  # noqa: E402
 
-DEFAULT_CORPUS = "/work/corpus"
+DEFAULT_CORPUS = REPO / "benchmarks" / "corpus"
+PDDLGYM_DOMAINS = (
+    "manyblocksnopiles",
+    "manyblockssmallpiles",
+    "manyexplodingblockssmallpiles",
+    "manyferry",
+    "manygrid",
+    "manygripper",
+    "manylogistics",
+    "manymiconic",
+    "manytireworld",
+)
+
+
+def pddlgym_folder() -> Path | None:
+    """pddlgym's ``pddl`` folder in the installed wheel, found without importing the package
+    (its dependencies are heavy and none of its code is needed); None when it is not installed."""
+    spec = importlib.util.find_spec("pddlgym")
+    if spec is None or not spec.submodule_search_locations:
+        return None
+    folder = Path(next(iter(spec.submodule_search_locations))) / "pddl"
+    return folder if folder.is_dir() else None
+
+
+def pddlgym_roots() -> list[str]:
+    """PLOI's many-object folders of the installed pddlgym (``manyX/`` and ``manyX_test/``)."""
+    folder = pddlgym_folder()
+    if folder is None:
+        return []
+    return [
+        str(folder / f"{name}{tail}")
+        for name in PDDLGYM_DOMAINS
+        for tail in ("", "_test")
+        if (folder / f"{name}{tail}").is_dir()
+    ]
+
+
+def shown(text: str | Path) -> str:
+    """``text`` with the repository's and pddlgym's absolute folders made relative, so that
+    saved outputs name no folder of one machine."""
+    text = str(text).replace(f"{REPO}{os.sep}", "")
+    folder = pddlgym_folder()
+    return text.replace(f"{folder}{os.sep}", "pddlgym/") if folder is not None else text
 
 
 @dataclass
@@ -67,10 +122,7 @@ def folders(roots: list[str]) -> list[Folder]:
     """Every folder under ``roots`` that holds a problem with a domain (its first problems)."""
     found: list[Folder] = []
     for root in roots:
-        for directory, subdirectories, files in sorted(os.walk(root)):
-            subdirectories.sort()
-            if not any(name.endswith(".pddl") for name in files):
-                continue
+        for directory in _directories(Path(root)):
             try:
                 entries = [e for e in find_suite_problems(directory) if e.domain is not None and e.error is None]
             except RelevancePlanError:
@@ -85,6 +137,22 @@ def folders(roots: list[str]) -> list[Folder]:
             seen.add(key)
             unique.append(folder)
     return unique
+
+
+def _directories(root: Path) -> list[Path]:
+    """The folders under ``root`` to read: the corpus's domain folders from its manifest when
+    ``root`` lies in the corpus, else every folder that holds a PDDL file."""
+    resolved, corpus = root.resolve(), DEFAULT_CORPUS.resolve()
+    if resolved == corpus or corpus in resolved.parents:
+        listed = [folder for folder in corpus_folders(root=corpus) if folder == resolved or resolved in folder.parents]
+        if listed:
+            return listed
+    found = []
+    for directory, subdirectories, files in sorted(os.walk(root)):
+        subdirectories.sort()
+        if any(name.endswith(".pddl") for name in files):
+            found.append(Path(directory))
+    return found
 
 
 def track(domain: Domain) -> str:
@@ -112,7 +180,7 @@ def accept(roots: list[str]) -> int:
     failures = 0
     for folder in folders(roots):
         entry = folder.entries[0]
-        name = os.path.relpath(folder.path, os.path.commonpath(roots) if len(roots) > 1 else roots[0])
+        name = shown(folder.path)
         kind, verdict = "?", "ok"
         try:
             domain = load_domain(entry.domain)
@@ -132,7 +200,7 @@ def accept(roots: list[str]) -> int:
         counts[1] += 1
         counts[0] += verdict.startswith("ok")
         if not verdict.startswith("ok"):
-            print(f"{kind:<10} {name}: {verdict[:200]}")
+            print(f"{kind:<10} {name}: {shown(verdict)[:200]}")
     print()
     print("| track | folders | accepted | share | target |")
     print("|---|---|---|---|---|")
@@ -161,10 +229,12 @@ def _guess_track(domain_path: Path) -> str:
     return "classical"
 
 
-def timed(command: list[str], timeout: float) -> tuple[int, float]:
+def timed(command: list[str], timeout: float, folder: Path) -> tuple[int, float]:
+    """Exit code and seconds of ``command`` run in ``folder`` (Fast Downward's translator writes
+    ``output.sas`` where it runs)."""
     started = time.perf_counter()
     try:
-        completed = subprocess.run(command, capture_output=True, timeout=timeout + 30)
+        completed = subprocess.run(command, capture_output=True, timeout=timeout + 30, cwd=folder)
         code = completed.returncode
     except subprocess.TimeoutExpired:
         code = -1
@@ -178,11 +248,11 @@ def speed(roots: list[str], per_folder: int, timeout: float, in_process: bool, i
     rows = []
     with _scratch() as scratch:
         if installed:
-            tool, env = installed_tool(scratch), dict(os.environ)
-            print(f"relevance-plan as installed from a wheel of {REPO}; medians of {repeat} run(s)\n")
+            tool, env = installed_tool(scratch), installed_environment()
+            print(f"relevance-plan as installed from a wheel of this checkout; medians of {repeat} run(s)\n")
         else:
             tool, env = compiled_checkout()
-            print(f"relevance-plan from {REPO / 'relevance_plan'}, bytecode compiled; medians of {repeat} run(s)\n")
+            print(f"relevance-plan from this checkout, bytecode compiled; medians of {repeat} run(s)\n")
         print("| problem | objects | pure (s) | relevance (s) | pure/relevance | kept | attempts |")
         print("|---|---|---|---|---|---|---|")
         for folder in folders(roots):
@@ -204,13 +274,13 @@ def speed(roots: list[str], per_folder: int, timeout: float, in_process: bool, i
                     f"{int(timeout)}s",
                     "--alias",
                     "lama-first",
-                    str(entry.domain),
-                    str(entry.problem),
+                    str(entry.domain.resolve()),
+                    str(entry.problem.resolve()),
                 ]
                 pure_times: list[float] = []
                 relevance_times: list[float] = []
                 for _ in range(repeat):
-                    pure_code, seconds = timed(pure_command, timeout)
+                    pure_code, seconds = timed(pure_command, timeout, scratch)
                     if pure_code != 0:
                         break
                     pure_times.append(seconds)
@@ -257,8 +327,8 @@ def _relevance(entry: SuiteProblem, timeout: float, scratch: Path, in_process: b
     command = [
         *tool,
         "plan",
-        str(entry.domain),
-        str(entry.problem),
+        str(entry.domain.resolve()),
+        str(entry.problem.resolve()),
         "--json",
         "--scorer",
         "goal",
@@ -268,7 +338,7 @@ def _relevance(entry: SuiteProblem, timeout: float, scratch: Path, in_process: b
         str(scratch / "plan"),
     ]
     started = time.perf_counter()
-    completed = subprocess.run(command, capture_output=True, timeout=timeout + 60, env=env)
+    completed = subprocess.run(command, capture_output=True, timeout=timeout + 60, env=env, cwd=scratch)
     elapsed = time.perf_counter() - started
     if completed.returncode != 0:
         return None, None, None
@@ -294,7 +364,7 @@ def _speed_summary(rows: list) -> int:
     print(f"median extra time of relevance over pure: {statistics.median(extra):+.2f} s")
     print(f"slower than pure x 1.25 + 0.5 s: {len(slow)} (target 0)")
     for problem, pure, rel in slow:
-        print(f"  {problem}: pure {pure:.2f} s, relevance {rel:.2f} s")
+        print(f"  {shown(problem)}: pure {pure:.2f} s, relevance {rel:.2f} s")
     return 0
 
 
@@ -319,16 +389,32 @@ def main() -> int:
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     parser.add_argument("mode", choices=("accept", "speed"), nargs="?", default="accept")
-    parser.add_argument("roots", nargs="*", default=[DEFAULT_CORPUS], help="corpus folders (default: %(default)s)")
+    parser.add_argument("roots", nargs="*", help="corpus folders (default: benchmarks/corpus)")
+    parser.add_argument(
+        "--pddlgym", action="store_true", help="add PLOI's many-object folders of the installed pddlgym wheel"
+    )
+    parser.add_argument("--pddlgym-only", action="store_true", help="read only those pddlgym folders")
     parser.add_argument("--per-folder", type=int, default=1, help="problems per folder in speed mode")
     parser.add_argument("--timeout", type=float, default=60.0)
     parser.add_argument("--in-process", action="store_true", help="time the library call, not the command")
     parser.add_argument("--installed", action="store_true", help="run a wheel of the checkout in a new venv")
     parser.add_argument("--repeat", type=int, default=1, help="runs of each command per problem (medians)")
     args = parser.parse_args()
+    if args.pddlgym_only and args.roots:
+        parser.error("--pddlgym-only takes no folders")
+    args.roots = [] if args.pddlgym_only else args.roots or [str(DEFAULT_CORPUS)]
     for root in args.roots:
         if not Path(root).is_dir():
             parser.error(f"not a folder: {root}")
+    if args.pddlgym or args.pddlgym_only:
+        more = pddlgym_roots()
+        if not more:
+            print(
+                "pddlgym is not installed (pip install --no-deps pddlgym==0.0.7): its many-object folders are left out"
+            )
+        args.roots += more
+    if not args.roots:
+        return 1
     if args.mode == "accept":
         return accept(args.roots)
     return speed(args.roots, args.per_folder, args.timeout, args.in_process, args.installed, max(1, args.repeat))

@@ -37,7 +37,6 @@ from __future__ import annotations
 
 import argparse
 import json
-import os
 import statistics
 import subprocess
 import sys
@@ -48,7 +47,7 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))
 
-from installed import compiled_checkout, installed_tool  # noqa: E402
+from installed import compiled_checkout, installed_environment, installed_tool  # noqa: E402
 
 from relevance_plan.generators.classic import generate_classic_problem  # noqa: E402
 from relevance_plan.planning.planners.fast_downward.command import find_fast_downward  # noqa: E402
@@ -76,11 +75,11 @@ def main() -> int:
         work = Path(scratch)
         if args.installed:
             tool = installed_tool(work)
-            env = dict(os.environ)
-            print(f"relevance-plan as installed from a wheel of {REPO}: {tool[0]}")
+            env = installed_environment()
+            print("relevance-plan as installed from a wheel of this checkout, in a new virtual environment")
         else:
             tool, env = compiled_checkout()
-            print(f"relevance-plan from {REPO / 'relevance_plan'}, bytecode compiled beforehand (as installed)")
+            print("relevance-plan from this checkout, bytecode compiled beforehand (as installed)")
         print(f"{'problem':<24} {'bare':>7} {'pure':>7} {'relev.':>7} {'overhead':>9} {'target':>7}  rel<=pure*1.1+0.3")
         for world in args.worlds:
             problem = generate_classic_problem(world, args.seed, 1, SIZES[world], dense=True)

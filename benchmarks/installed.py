@@ -27,23 +27,35 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parent.parent
 
 
+def installed_environment() -> dict[str, str]:
+    """The environment to run the installed copy in: this one without ``PYTHONPATH``, which
+    would put a checkout's ``relevance_plan`` before the installed one."""
+    return {name: value for name, value in os.environ.items() if name != "PYTHONPATH"}
+
+
 def installed_tool(folder: Path) -> list[str]:
     """The checkout as a user installs it: a wheel in a new virtual environment whose other
-    packages come from this one (a ``.pth`` line, which adds a folder but runs none of its hooks)."""
+    packages come from this one (a ``.pth`` line, which adds a folder but runs none of its hooks).
+    Run its command with ``installed_environment()``."""
+    env = installed_environment()  # with a checkout on PYTHONPATH, pip takes the wheel as installed already
     subprocess.run(
-        [sys.executable, "-m", "pip", "wheel", "-q", "--no-deps", "-w", str(folder / "wheel"), str(REPO)], check=True
-    )
+        [sys.executable, "-m", "pip", "wheel", "-q", "--no-deps", "-w", str(folder / "wheel"), str(REPO)],
+        check=True, env=env,
+    )  # fmt: skip
     venv = folder / "venv"
-    subprocess.run([sys.executable, "-m", "venv", str(venv)], check=True)
+    subprocess.run([sys.executable, "-m", "venv", str(venv)], check=True, env=env)
     python = venv / "bin" / "python"
     wheel = next((folder / "wheel").glob("*.whl"))
-    subprocess.run([str(python), "-m", "pip", "install", "-q", "--no-deps", str(wheel)], check=True)
+    subprocess.run([str(python), "-m", "pip", "install", "-q", "--no-deps", str(wheel)], check=True, env=env)
     site = subprocess.run(
         [str(python), "-c", "import sysconfig; print(sysconfig.get_paths()['purelib'])"],
-        check=True, capture_output=True, text=True,
+        check=True, capture_output=True, text=True, env=env,
     ).stdout.strip()  # fmt: skip
     Path(site, "zz-dependencies.pth").write_text(sysconfig.get_paths()["purelib"] + "\n")
-    return [str(venv / "bin" / "relevance-plan")]
+    script = venv / "bin" / "relevance-plan"
+    if not script.is_file():
+        raise SystemExit(f"the wheel installed no relevance-plan script in {venv}")
+    return [str(script)]
 
 
 def compiled_checkout() -> tuple[list[str], dict[str, str]]:
