@@ -74,11 +74,16 @@ class ProcessRun(NamedTuple):
         return self.watchdog_fired and os.WIFSIGNALED(self.wait_status)
 
 
-class _Run(NamedTuple):
-    """A run going on: the guard's pid (= its process group and session) and its cgroup, if any."""
+class _Run:
+    """A run going on: the guard's pid (= its process group and session), its cgroup (if any), and
+    whether the tool stopped it (then a guard that died of a signal died of ours)."""
 
-    pgid: int
-    cgroup: str | None
+    __slots__ = ("pgid", "cgroup", "stopped")
+
+    def __init__(self, pgid: int, cgroup: str | None):
+        self.pgid = pgid
+        self.cgroup = cgroup
+        self.stopped = False
 
 
 def watchdog_deadline(time_limit: float | None, grace: float | None = None) -> float | None:
@@ -250,6 +255,7 @@ def _stop(run: _Run, guard_exited: bool = False) -> None:
     Once the guard has exited it has no descendants (its orphans went to init), so ``guard_exited``
     spares the walk through /proc that looks for them.
     """
+    run.stopped = True
     if run.cgroup is not None:
         spawn.kill_cgroup(run.cgroup)
     if not guard_exited:
@@ -266,10 +272,11 @@ def _exit_code(wait_status: int) -> int:
     return code - 256 if code > 128 else code
 
 
-def _wait_for_run(run: _Run, deadline: float | None) -> tuple[int, float, float, bool]:
+def _wait_for_run(run: _Run, deadline: float | None) -> tuple[int, float, float, bool, bool]:
     """Wait for the guard; stop the whole run; reap the guard.
 
-    Returns (wait status, cpu seconds, peak memory MB, watchdog fired).  The
+    Returns (wait status, cpu seconds, peak memory MB, watchdog fired, stopped by the tool before the
+    guard ended: the watchdog, a cancelled scope, Ctrl-C).  The
     guard stays an unreaped zombie until every process of the run is gone,
     so its pid (= the group id) cannot be reused by an unrelated process meanwhile.
     """
@@ -297,13 +304,14 @@ def _wait_for_run(run: _Run, deadline: float | None) -> tuple[int, float, float,
         if timer is not None:
             timer.cancel()
             timer.join()  # a kill in flight must land before the pid is freed
+        ours = run.stopped
         # Killing only the guard would leave a running translator orphaned.
         _stop(run, guard_exited=exited)
         if hasattr(os, "waitid"):
             _await_run_death(run)
             _, status, usage = os.wait4(run.pgid, 0)
     cpu = usage.ru_utime + usage.ru_stime
-    return status, cpu, usage.ru_maxrss / 1024.0, fired.is_set()
+    return status, cpu, usage.ru_maxrss / 1024.0, fired.is_set(), ours
 
 
 def _await_run_death(run: _Run, timeout: float = 2.0) -> None:
@@ -389,13 +397,15 @@ class StartedGroup:
                 _stop(self.run)  # cancelled before it started: it ends at once and is reaped below
             left = None if deadline is None else max(deadline - (time.monotonic() - self.started), 0.0)
             try:
-                wait_status, cpu_time, peak_mb, fired = _wait_for_run(self.run, left)
+                wait_status, cpu_time, peak_mb, fired, ours = _wait_for_run(self.run, left)
             finally:
                 if scope is not None:
                     scope._leave(self.run)
             _restore_workdir(self.workdir, self.log_file)
         finally:
             self._close()
+        if os.WIFSIGNALED(wait_status) and not ours:
+            _refuse_killed_guard(os.WTERMSIG(wait_status))
         exit_code = _exit_code(wait_status)
         if exit_code != 0:
             _refuse_full_disk(self.workdir)
@@ -420,6 +430,18 @@ class StartedGroup:
         os.close(self.guard_write)
         if self.run.cgroup is not None:
             spawn.remove_cgroup(self.run.cgroup)
+
+
+def _refuse_killed_guard(signum: int) -> None:
+    """``PlannerError``: the guard died of a signal the tool did not send (a ``kill -9`` from outside,
+    the planner's own, the kernel's).  Its run is stopped whole by then; nothing supervises a
+    planner any more, so its outcome means nothing, and the caller must not wait for another side
+    (a race) to reach its time limit."""
+    try:
+        name = signal.Signals(signum).name
+    except ValueError:
+        name = f"signal {signum}"
+    raise errors.PlannerError(f"the planner's guard was killed (by {name}); every process of its run was stopped")
 
 
 def start_process_group(
