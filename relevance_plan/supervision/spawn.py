@@ -33,16 +33,20 @@ _GUARD_LAUNCH = guard.LAUNCH.format(folder=os.path.dirname(os.path.abspath(__fil
 
 class Spawned:
     """A guard just started: its pid (= its process group and session), the run's cgroup (or None),
-    the open log, the write end of the guard's pipe, and ``time.monotonic()`` at the start."""
+    the open log, the write end of the guard's pipe, ``time.monotonic()`` at the start, and the
+    working folder's (device, inode) then (a planner may replace the folder with a link)."""
 
-    __slots__ = ("pid", "cgroup", "log_fd", "guard_write", "started")
+    __slots__ = ("pid", "cgroup", "log_fd", "guard_write", "started", "workdir_id")
 
-    def __init__(self, pid: int, cgroup: str | None, log_fd: int, guard_write: int, started: float):
+    def __init__(
+        self, pid: int, cgroup: str | None, log_fd: int, guard_write: int, started: float, workdir_id: tuple[int, int]
+    ):
         self.pid = pid
         self.cgroup = cgroup
         self.log_fd = log_fd
         self.guard_write = guard_write
         self.started = started
+        self.workdir_id = workdir_id
 
 
 def usable_cores() -> int:
@@ -96,6 +100,7 @@ def start_guarded(
     try:
         # A file, not a pipe: nobody has to drain it while we wait.
         log_fd = os.open(os.path.join(workdir, LOG_FILE), os.O_RDWR | os.O_CREAT | os.O_TRUNC | os.O_CLOEXEC, 0o644)
+        folder = os.stat(workdir)
         limit = guard.NO_LIMIT if memory_limit_mb is None else str(memory_limit_mb)
         arguments = [guard_read, cgroup or guard.NO_CGROUP, workdir, limit]
         try:
@@ -128,7 +133,7 @@ def start_guarded(
         if cgroup is not None:
             remove_cgroup(cgroup)
         raise
-    return Spawned(pid, cgroup, log_fd, guard_write, started)
+    return Spawned(pid, cgroup, log_fd, guard_write, started, (folder.st_dev, folder.st_ino))
 
 
 # Python ignores these; a child should start with their defaults, as subprocess gives it.
