@@ -1763,8 +1763,10 @@ def _children(pid: int) -> list[int]:
 
 
 def _tmp_left_empty(result: Result) -> str | None:
+    """Nothing left in TMPDIR but a folder the planner put in place of its own, moved aside, not emptied
+    (it could be a folder of the user's the planner moved there)."""
     folder = result.work / _FAULT_TMP
-    left = sorted(path.name for path in folder.iterdir()) if folder.is_dir() else []
+    left = sorted(path.name for path in folder.iterdir() if "-replaced-" not in path.name) if folder.is_dir() else []
     return f"left in TMPDIR: {', '.join(left[:3])}" if left else None
 
 
