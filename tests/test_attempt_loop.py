@@ -316,3 +316,39 @@ def test_a_run_pauses_the_garbage_collector_and_resumes_it(coffee_files):
     with pytest.raises(RelevancePlanError):
         plan_task(domain_path, problem_path.with_name("missing.pddl"), PlanOptions(timeout=60))
     assert gc.isenabled()
+
+
+def _negative_literals_problem(blocks: int) -> str:
+    """Blocks x1..xN on the table, each also stated not held (a negative literal, true anyway under the
+    closed world); the goal names three of them."""
+    names = [f"x{i}" for i in range(1, blocks + 1)]
+    init = ["(handempty)", *(f"(ontable {n}) (clear {n}) (not (holding {n}))" for n in names)]
+    return (
+        f"(define (problem negative-literals) (:domain blocksworld)\n  (:objects {' '.join(names)})\n"
+        "  (:init\n    " + "\n    ".join(init) + ")\n  (:goal (and (on x1 x2) (on x2 x3))))\n"
+    )
+
+
+@pytest.mark.planner
+@pytest.mark.parametrize("flat", [False, True], ids=["list-reading", "flat-reading"])
+def test_negative_initial_literals_of_pruned_objects_are_cut_and_plan_solves_at_once(tmp_path, monkeypatch, flat):
+    from support import DOMAINS, run
+
+    from relevance_plan.pddl import parser
+
+    # a big :init is read with string methods, the negative literals being entries between its stretches
+    monkeypatch.setattr(parser, "FLAT_INIT_FROM", 1 if flat else 10**9)
+    domain = DOMAINS / "blocksworld" / "domain.pddl"
+    problem = tmp_path / "negative.pddl"
+    problem.write_text(_negative_literals_problem(40))
+    pruned = tmp_path / "pruned.pddl"
+    code, _, stderr = run("prune", domain, problem, "-o", pruned)
+    assert code == 0, stderr
+    _, kept = load_task(domain, pruned)
+    assert 3 <= len(kept.objects) < 40
+    held = set(re.findall(r"\(not \(holding (\w+)\)\)", pruned.read_text()))
+    assert held == set(kept.objects), "a negative literal about a pruned object stayed (or a kept one's went)"
+    code, stdout, stderr = run("plan", domain, problem, "--no-race", "--json", "-q", "--plan-file", tmp_path / "plan")
+    result = json.loads(stdout)
+    assert code == 0 and result["status"] == "solved", stderr
+    assert result["pruned"] and result["attempts"] == 1, result["attempt_log"]

@@ -40,7 +40,7 @@ def test_the_fast_path_imports_nothing_heavy(gripper_problem):
     # a fresh interpreter: what the launcher has imported when the driver is running
     script = (
         "import sys\n"
-        "from relevance_plan.planning import head_start\n"
+        "from relevance_plan.planning.planners.fast_downward import head_start\n"
         f"head_start.start_for_plan([{str(GRIPPER)!r}, {str(gripper_problem)!r}, '--method', 'pure'])\n"
         "assert head_start._PENDING, 'no head start'\n"
         "print(' '.join(sorted(sys.modules)))\n"

@@ -3,10 +3,12 @@ YAML alias bombs are refused at once, and absurd limit values are usage errors."
 
 from __future__ import annotations
 
+import subprocess
+import sys
 import time
 
 import pytest
-from support import COFFEE_DOMAIN, alias_bomb, coffee_problem, nested_goal, one_line_error, run
+from support import COFFEE_DOMAIN, PROBLEMS, alias_bomb, coffee_problem, nested_goal, one_line_error, run
 
 from relevance_plan.exitcodes import ExitCode
 
@@ -249,3 +251,42 @@ def test_a_short_run_gets_a_short_grace():
     assert watchdog_deadline(0.3) == pytest.approx(0.375)  # the last 0.3 s of a --timeout: done by 0.375 s
     assert watchdog_deadline(10.0) == pytest.approx(10.0 + DEFAULT_WATCHDOG_GRACE)
     assert watchdog_deadline(10.0, 2.0) == pytest.approx(12.0)
+
+
+# --------------------------------------------------------------------------- open files
+
+# The tool under a limit of 16 open files, with a descriptor its parent left open above that limit
+# (as a shell's `ulimit -n 16` leaves one of its own parent's): then exec'd, as the shell would.
+_UNDER_16_OPEN_FILES = (
+    "import os, resource, sys\n"
+    "os.dup2(0, 20)\nos.set_inheritable(20, True)\n"
+    "resource.setrlimit(resource.RLIMIT_NOFILE, (16, 16))\n"
+    "os.execv(sys.executable, [sys.executable, '-m', 'relevance_plan', *sys.argv[1:]])\n"
+)
+
+
+def _plan_under_16_open_files(tmp_path, *arguments: str) -> subprocess.CompletedProcess:
+    problem = PROBLEMS / "coffee-simple.pddl"
+    command = [sys.executable, "-c", _UNDER_16_OPEN_FILES, "plan", str(COFFEE_DOMAIN), str(problem), "-q"]
+    command += ["--timeout", "60", "--plan-file", str(tmp_path / "plan"), *arguments]
+    return subprocess.run(command, stdin=subprocess.DEVNULL, capture_output=True, text=True, timeout=120)
+
+
+@pytest.mark.planner
+@pytest.mark.parametrize("method", ["pure", "relevance"])
+def test_plan_starts_fast_downward_under_a_limit_of_16_open_files(tmp_path, method):
+    done = _plan_under_16_open_files(tmp_path, "--method", method)
+    assert done.returncode == 0, done.stderr
+    assert (tmp_path / "plan").read_text().strip()
+
+
+def test_the_planner_does_not_inherit_a_descriptor_left_open_above_the_limit(tmp_path):
+    probe = tmp_path / "probe.py"
+    probe.write_text(
+        "import os\ntry:\n    os.fstat(20)\n    print('fd 20 open')\nexcept OSError:\n    print('fd 20 closed')\n"
+    )
+    done = _plan_under_16_open_files(
+        tmp_path, "--method", "pure", "--planner", f"cmd:{sys.executable} {probe} {{domain}} {{problem}}"
+    )
+    assert done.returncode == ExitCode.PLANNER  # its output is no plan
+    assert "fd 20 closed" in one_line_error(done.stderr)

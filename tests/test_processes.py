@@ -6,11 +6,12 @@ from __future__ import annotations
 import os
 import signal
 import subprocess
+import sys
 import time
 from pathlib import Path
 
 import pytest
-from support import TOOL, one_line_error, run, running
+from support import COFFEE_DOMAIN, PROBLEMS, TOOL, one_line_error, run, running, write_file
 
 from relevance_plan.exitcodes import ExitCode
 
@@ -140,6 +141,60 @@ def test_planners_die_with_the_tool_on_kill_9(long_problem, tmp_path):
     while workdir.exists() and time.monotonic() < deadline + 2.0:
         time.sleep(0.05)
     assert not workdir.exists(), "the planner's scratch directory is removed too"
+
+
+@pytest.mark.planner
+def test_a_guard_killed_from_outside_ends_plan_at_once_as_a_planner_error(long_problem, tmp_path):
+    process, workdir = _start_plan(long_problem, tmp_path)
+    (guard,) = _guards(str(long_problem[1].parent))
+    planners = _session_processes(guard)
+    assert len(planners) >= 3, "guard, driver and a component"
+    os.kill(guard, signal.SIGKILL)
+    _, stderr = process.communicate(timeout=30)
+    assert process.returncode == ExitCode.PLANNER
+    assert "the planner's guard was killed (by SIGKILL)" in one_line_error(stderr.decode())
+    assert [p for p in planners if running(p)] == [], "the driver or a component outlived its guard"
+    assert not workdir.exists()
+    assert not (tmp_path / "plan").exists()
+
+
+def test_a_killed_guard_of_a_pruned_attempt_does_not_wait_for_the_race(tmp_path):
+    """The full problem, planned beside the pruned attempt, would only end at the time limit."""
+    sleeper = write_file(tmp_path, "sleeper.py", "import time\ntime.sleep(1000)\n")
+    process = subprocess.Popen(
+        [
+            *TOOL,
+            "plan",
+            str(COFFEE_DOMAIN),
+            str(PROBLEMS / "coffee-simple.pddl"),
+            "--race",
+            "--timeout",
+            "300",
+            "-q",
+            "--planner",
+            f"cmd:{sys.executable} {sleeper} {{domain}} {{problem}}",
+        ],
+        start_new_session=True,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+    )
+    try:
+        pruned: list[int] = []
+        deadline = time.monotonic() + 30
+        while not pruned and time.monotonic() < deadline:
+            pruned = sorted(set(_guards(str(sleeper))) & set(_guards("pruned-")))
+            time.sleep(0.05)
+        assert pruned, "the pruned attempt never started"
+        planners = _planner_processes(str(sleeper))
+        os.kill(pruned[0], signal.SIGKILL)
+        _, stderr = process.communicate(timeout=60)  # the time limit is 300 s
+    finally:
+        if process.poll() is None:
+            os.killpg(process.pid, signal.SIGKILL)
+            process.wait()
+    assert process.returncode == ExitCode.PLANNER
+    assert "guard was killed (by SIGKILL)" in one_line_error(stderr.decode())
+    assert [p for p in planners if running(p)] == [], "a planner outlived the run"
 
 
 def test_sigterm_during_generate_leaves_no_staging(tmp_path):

@@ -104,10 +104,13 @@ def test_a_race_hands_its_error_to_the_caller():
     def fails():
         raise RuntimeError("broken planner")
 
-    race = Race(fails, lambda result: True, CancelScope()).start()
+    loser = CancelScope()
+    race = Race(fails, lambda result: True, loser).start()
     with pytest.raises(RuntimeError, match="broken planner"):
         race.wait()
-    assert not race.won
+    race.stop()  # the thread has cancelled the other side by the time it ends
+    # an error is decisive: the other side learns it now, not at its own time limit
+    assert race.won and loser.cancelled
 
 
 def test_racing_is_the_default_only_for_relevance_with_a_second_core():

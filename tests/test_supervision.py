@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import os
 import signal
+import subprocess
 import sys
 import threading
 import time
@@ -14,7 +15,10 @@ from pathlib import Path
 import pytest
 from support import (
     BIG_DOMAIN,
+    COFFEE_DOMAIN,
+    PROBLEMS,
     SMALL_GRIPPER_DOMAIN,
+    TOOL,
     assert_session_gone,
     big_problem,
     small_gripper_problem,
@@ -147,3 +151,35 @@ def test_the_memory_limit_holds_in_the_planner(tmp_path: Path) -> None:
     )
     assert run.exit_code == 0
     assert "limit 900" in process.read_log(tmp_path)
+
+
+# A planner that puts a link to a folder (or file) of the user's where its working folder (or its log) was.
+_SWAP_FOLDER = (
+    "import os, shutil, sys\n"
+    "here = os.getcwd()\nos.chdir('/')\nshutil.rmtree(here)\nos.symlink(sys.argv[1], here)\n"
+    "print('(move counter_1 table_1)')\n"
+)
+_SWAP_LOG = "import os, sys\nos.unlink('planner.log')\nos.symlink(sys.argv[1] + '/mine.txt', 'planner.log')\n"
+
+
+@pytest.mark.parametrize("script", [_SWAP_FOLDER, _SWAP_LOG], ids=["folder", "log"])
+def test_a_planner_that_swaps_in_a_link_to_the_users_files_gets_nothing_written_there(tmp_path, script):
+    users = tmp_path / "users"
+    users.mkdir()
+    (users / "mine.txt").write_text("keep\n")
+    scratch = tmp_path / "tmp"
+    scratch.mkdir()
+    swap = write_file(tmp_path, "swap.py", script)
+    template = f"cmd:{sys.executable} {swap} {users} {{domain}} {{problem}}"
+    completed = subprocess.run(
+        [*TOOL, "plan", str(COFFEE_DOMAIN), str(PROBLEMS / "coffee-simple.pddl"), "--method", "pure", "-q"]
+        + ["--timeout", "60", "--planner", template],
+        env=dict(os.environ, TMPDIR=str(scratch)),
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert [path.name for path in users.iterdir()] == ["mine.txt"]
+    assert (users / "mine.txt").read_text() == "keep\n"
+    assert "Traceback" not in completed.stderr and completed.returncode in (0, 40), completed.stderr
+    assert list(scratch.iterdir()) == [], "a link or folder of the run left behind"

@@ -58,13 +58,17 @@ class Race(Generic[T]):
 
     @property
     def won(self) -> bool:
-        """Finished with a decisive result (and not stopped)."""
-        return (
-            self._done.is_set()
-            and not self._scope.cancelled
-            and self._result is not None
-            and self._decisive(self._result)
-        )
+        """Finished with a decisive result, or an error (and not stopped).
+
+        An error is decisive: it says the planner cannot be run or supervised (its guard killed from
+        outside, say), which the other side would learn only at its own time limit.
+        :meth:`wait` raises it.
+        """
+        if not self._done.is_set() or self._scope.cancelled:
+            return False
+        if self._error is not None:
+            return True
+        return self._result is not None and self._decisive(self._result)
 
     def wait(self) -> T:
         """The result, once ``work`` has finished (its error re-raised here)."""

@@ -73,11 +73,16 @@ class ProcessRun(NamedTuple):
         return self.watchdog_fired and os.WIFSIGNALED(self.wait_status)
 
 
-class _Run(NamedTuple):
-    """A run going on: the guard's pid (= its process group and session) and its cgroup, if any."""
+class _Run:
+    """A run going on: the guard's pid (= its process group and session), its cgroup (if any), and
+    whether the tool stopped it (then a guard that died of a signal died of ours)."""
 
-    pgid: int
-    cgroup: str | None
+    __slots__ = ("pgid", "cgroup", "stopped")
+
+    def __init__(self, pgid: int, cgroup: str | None):
+        self.pgid = pgid
+        self.cgroup = cgroup
+        self.stopped = False
 
 
 def watchdog_deadline(time_limit: float | None, grace: float | None = None) -> float | None:
@@ -249,6 +254,7 @@ def _stop(run: _Run, guard_exited: bool = False) -> None:
     Once the guard has exited it has no descendants (its orphans went to init), so ``guard_exited``
     spares the walk through /proc that looks for them.
     """
+    run.stopped = True
     if run.cgroup is not None:
         spawn.kill_cgroup(run.cgroup)
     if not guard_exited:
@@ -265,10 +271,11 @@ def _exit_code(wait_status: int) -> int:
     return code - 256 if code > 128 else code
 
 
-def _wait_for_run(run: _Run, deadline: float | None) -> tuple[int, float, float, bool]:
+def _wait_for_run(run: _Run, deadline: float | None) -> tuple[int, float, float, bool, bool]:
     """Wait for the guard; stop the whole run; reap the guard.
 
-    Returns (wait status, cpu seconds, peak memory MB, watchdog fired).  The
+    Returns (wait status, cpu seconds, peak memory MB, watchdog fired, stopped by the tool before the
+    guard ended: the watchdog, a cancelled scope, Ctrl-C).  The
     guard stays an unreaped zombie until every process of the run is gone,
     so its pid (= the group id) cannot be reused by an unrelated process meanwhile.
     """
@@ -296,13 +303,14 @@ def _wait_for_run(run: _Run, deadline: float | None) -> tuple[int, float, float,
         if timer is not None:
             timer.cancel()
             timer.join()  # a kill in flight must land before the pid is freed
+        ours = run.stopped
         # Killing only the guard would leave a running translator orphaned.
         _stop(run, guard_exited=exited)
         if hasattr(os, "waitid"):
             _await_run_death(run)
             _, status, usage = os.wait4(run.pgid, 0)
     cpu = usage.ru_utime + usage.ru_stime
-    return status, cpu, usage.ru_maxrss / 1024.0, fired.is_set()
+    return status, cpu, usage.ru_maxrss / 1024.0, fired.is_set(), ours
 
 
 def _await_run_death(run: _Run, timeout: float = 2.0) -> None:
@@ -362,12 +370,21 @@ def run_process_group(
 class StartedGroup:
     """A run started by :func:`start_process_group`; :meth:`finish` waits for it (or :meth:`stop` ends it)."""
 
-    def __init__(self, run: _Run, workdir: Path, log_file: BinaryIO, guard_write: int, started: float):
+    def __init__(
+        self,
+        run: _Run,
+        workdir: Path,
+        log_file: BinaryIO,
+        guard_write: int,
+        started: float,
+        workdir_id: tuple[int, int],
+    ):
         self.run = run
         self.workdir = workdir
         self.log_file = log_file
         self.guard_write = guard_write
         self.started = started  # time.monotonic() at the start
+        self.workdir_id = workdir_id  # the working folder's (device, inode) at the start
         self._closed = False
 
     @classmethod
@@ -378,7 +395,7 @@ class StartedGroup:
             _ACTIVE_GROUPS.add(run)
         # A file, not a pipe: nobody has to drain it while we wait.
         log_file = open(spawned.log_fd, "w+b", closefd=True)  # noqa: SIM115 - closed by _close
-        return cls(run, workdir, log_file, spawned.guard_write, spawned.started)
+        return cls(run, workdir, log_file, spawned.guard_write, spawned.started, spawned.workdir_id)
 
     def finish(self, deadline: float | None) -> ProcessRun:
         """Wait for the run, the watchdog firing ``deadline`` seconds after its start; reap it."""
@@ -388,13 +405,15 @@ class StartedGroup:
                 _stop(self.run)  # cancelled before it started: it ends at once and is reaped below
             left = None if deadline is None else max(deadline - (time.monotonic() - self.started), 0.0)
             try:
-                wait_status, cpu_time, peak_mb, fired = _wait_for_run(self.run, left)
+                wait_status, cpu_time, peak_mb, fired, ours = _wait_for_run(self.run, left)
             finally:
                 if scope is not None:
                     scope._leave(self.run)
-            _restore_workdir(self.workdir, self.log_file)
+            _restore_workdir(self.workdir, self.log_file, self.workdir_id)
         finally:
             self._close()
+        if os.WIFSIGNALED(wait_status) and not ours:
+            _refuse_killed_guard(os.WTERMSIG(wait_status))
         exit_code = _exit_code(wait_status)
         if exit_code != 0:
             _refuse_full_disk(self.workdir)
@@ -421,6 +440,18 @@ class StartedGroup:
             spawn.remove_cgroup(self.run.cgroup)
 
 
+def _refuse_killed_guard(signum: int) -> None:
+    """``PlannerError``: the guard died of a signal the tool did not send (a ``kill -9`` from outside,
+    the planner's own, the kernel's).  Its run is stopped whole by then; nothing supervises a
+    planner any more, so its outcome means nothing, and the caller must not wait for another side
+    (a race) to reach its time limit."""
+    try:
+        name = signal.Signals(signum).name
+    except ValueError:
+        name = f"signal {signum}"
+    raise errors.PlannerError(f"the planner's guard was killed (by {name}); every process of its run was stopped")
+
+
 def start_process_group(
     command: list[str],
     workdir: Path,
@@ -437,30 +468,69 @@ def start_process_group(
     return StartedGroup.adopt(spawned, workdir)
 
 
-def _restore_workdir(workdir: Path, log_file) -> None:
-    """Put back a working folder (and log) the planner removed, saying so in the log.
+def _restore_workdir(workdir: Path, log_file: BinaryIO, workdir_id: tuple[int, int]) -> None:
+    """Put back a working folder (and log) the planner removed or replaced, saying so in the log.
 
     The adapters read the log and remove the folder; a planner that deleted
-    it would otherwise make its output vanish and the clean-up fail.
+    it would otherwise make its output vanish and the clean-up fail.  Every
+    process of the run has ended by now, so nothing changes the folder
+    meanwhile.  What the planner left in the folder's place (a link to a
+    folder of the user's, a file) or the log's is removed as an entry and
+    never followed: the tool writes nothing outside its own folder.  A
+    directory put in the folder's place is moved aside, never emptied.
     """
-    log_path = workdir / LOG_FILE
     try:
-        now, ours = os.stat(log_path), os.fstat(log_file.fileno())
-        if (now.st_dev, now.st_ino) == (ours.st_dev, ours.st_ino):
-            return
+        now = os.stat(workdir)  # followed: a --keep-work folder may be a link the user made
+        ours = (now.st_dev, now.st_ino) == workdir_id
     except OSError:
-        pass
-    gone = "working folder" if not workdir.is_dir() else "log file"
+        ours = False
+    log_path = workdir / LOG_FILE
+    if ours:
+        try:
+            entry, mine = os.lstat(log_path), os.fstat(log_file.fileno())
+            if (entry.st_dev, entry.st_ino) == (mine.st_dev, mine.st_ino):
+                return
+        except OSError:
+            pass
+        what = "removed or replaced its log file"
+    else:
+        what = _clear_workdir_entry(workdir)
+        if not what:
+            return
     try:
-        workdir.mkdir(exist_ok=True)
+        if not ours:
+            workdir.mkdir(mode=0o700)
+        if os.path.lexists(log_path):
+            os.unlink(log_path)  # the entry, never what a link points to
+        restored = os.open(log_path, os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_NOFOLLOW | os.O_CLOEXEC, 0o644)
         log_file.seek(0, os.SEEK_END)
         size = log_file.tell()
         log_file.seek(max(size - MAX_OUTPUT_BYTES, 0))
-        with open(log_path, "wb") as restored:
-            shutil.copyfileobj(log_file, restored)
-            restored.write(f"\nrelevance-plan: the planner removed its {gone} ({workdir})\n".encode())
+        with open(restored, "wb") as stream:
+            shutil.copyfileobj(log_file, stream)
+            stream.write(f"\nrelevance-plan: the planner {what} ({workdir})\n".encode())
     except OSError:
         pass
+
+
+def _clear_workdir_entry(workdir: Path) -> str:
+    """Clear the path of a working folder that is no longer ours; what the planner did ('' when the
+    path cannot be cleared: then nothing is written there)."""
+    try:
+        entry = os.lstat(workdir)
+    except FileNotFoundError:
+        return "removed its working folder"
+    except OSError:
+        return ""
+    try:
+        if stat.S_ISDIR(entry.st_mode):
+            os.rename(workdir, f"{workdir}-replaced-{os.urandom(4).hex()}")
+            return "replaced its working folder with another folder, moved aside"
+        os.unlink(workdir)
+    except OSError:
+        return ""
+    kind = "a link" if stat.S_ISLNK(entry.st_mode) else "a file"
+    return f"replaced its working folder with {kind}, removed without following it"
 
 
 def _refuse_full_disk(workdir: Path) -> None:

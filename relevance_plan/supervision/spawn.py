@@ -17,6 +17,7 @@ and remove it.
 from __future__ import annotations
 
 import _signal  # signal's names without its enums
+import errno
 import itertools
 import os
 import sys
@@ -33,16 +34,20 @@ _GUARD_LAUNCH = guard.LAUNCH.format(folder=os.path.dirname(os.path.abspath(__fil
 
 class Spawned:
     """A guard just started: its pid (= its process group and session), the run's cgroup (or None),
-    the open log, the write end of the guard's pipe, and ``time.monotonic()`` at the start."""
+    the open log, the write end of the guard's pipe, ``time.monotonic()`` at the start, and the
+    working folder's (device, inode) then (a planner may replace the folder with a link)."""
 
-    __slots__ = ("pid", "cgroup", "log_fd", "guard_write", "started")
+    __slots__ = ("pid", "cgroup", "log_fd", "guard_write", "started", "workdir_id")
 
-    def __init__(self, pid: int, cgroup: str | None, log_fd: int, guard_write: int, started: float):
+    def __init__(
+        self, pid: int, cgroup: str | None, log_fd: int, guard_write: int, started: float, workdir_id: tuple[int, int]
+    ):
         self.pid = pid
         self.cgroup = cgroup
         self.log_fd = log_fd
         self.guard_write = guard_write
         self.started = started
+        self.workdir_id = workdir_id
 
 
 def usable_cores() -> int:
@@ -90,12 +95,21 @@ def start_guarded(
     # The guard stops the run when this process dies (its pipe's write end
     # closes, even on kill -9); os.pipe() fds are close-on-exec, so no other
     # child holds the write end.
-    guard_read, guard_write = os.pipe()
+    try:
+        guard_read, guard_write = os.pipe()
+    except OSError as error:
+        raise _cannot_start(what, program, error) from None
     cgroup = new_cgroup()
     log_fd = -1
     try:
         # A file, not a pipe: nobody has to drain it while we wait.
-        log_fd = os.open(os.path.join(workdir, LOG_FILE), os.O_RDWR | os.O_CREAT | os.O_TRUNC | os.O_CLOEXEC, 0o644)
+        try:
+            log_fd = os.open(os.path.join(workdir, LOG_FILE), os.O_RDWR | os.O_CREAT | os.O_TRUNC | os.O_CLOEXEC, 0o644)
+        except OSError as error:
+            if error.errno not in _OUT_OF_DESCRIPTORS:
+                raise
+            raise _cannot_start(what, program, error) from None
+        folder = os.stat(workdir)
         limit = guard.NO_LIMIT if memory_limit_mb is None else str(memory_limit_mb)
         arguments = [guard_read, cgroup or guard.NO_CGROUP, workdir, limit]
         try:
@@ -110,9 +124,10 @@ def start_guarded(
                 setsigmask=(),
             )
         except OSError as error:
-            raise errors.PlannerError(f"cannot start {what}: {error.strerror or error}", path=program) from None
+            raise _cannot_start(what, program, error) from None
         finally:
             os.close(guard_read)
+            guard_read = -1
         # Moved while the guard's interpreter starts; the guard starts the planner on our byte.
         if cgroup is not None and not guard.join_cgroup(cgroup, pid):
             remove_cgroup(cgroup)
@@ -122,13 +137,28 @@ def start_guarded(
         except OSError:
             pass  # the guard died already: waiting for it reports how
     except BaseException:
-        if log_fd >= 0:
-            os.close(log_fd)
+        for fd in (log_fd, guard_read):
+            if fd >= 0:
+                os.close(fd)
         os.close(guard_write)
         if cgroup is not None:
             remove_cgroup(cgroup)
         raise
-    return Spawned(pid, cgroup, log_fd, guard_write, started)
+    return Spawned(pid, cgroup, log_fd, guard_write, started, (folder.st_dev, folder.st_ino))
+
+
+_OUT_OF_DESCRIPTORS = (errno.EMFILE, errno.ENFILE)
+
+
+def _cannot_start(what: str, program: str, error: OSError) -> errors.PlannerError:
+    """The error for a start that failed; out of descriptors, it names the limit."""
+    if error.errno == errno.EMFILE:
+        why = f"too many open files for the limit on open files (ulimit -n {_descriptor_ceiling()}); raise it"
+    elif error.errno == errno.ENFILE:
+        why = "the system's table of open files is full"
+    else:
+        why = error.strerror or str(error)
+    return errors.PlannerError(f"cannot start {what}: {why}", path=program)
 
 
 # Python ignores these; a child should start with their defaults, as subprocess gives it.
@@ -144,10 +174,25 @@ def _file_actions(log_fd: int, keep: int) -> list[tuple]:
         (os.POSIX_SPAWN_DUP2, log_fd, 2),
     ]
     os.set_inheritable(keep, True)
-    for fd in _inheritable_descriptors():
-        if fd > 2 and fd != keep:
+    strangers = [fd for fd in _inheritable_descriptors() if fd > 2 and fd != keep]  # usually none
+    ceiling = _descriptor_ceiling() if strangers else 0
+    for fd in strangers:
+        if fd < ceiling:
             actions.append((os.POSIX_SPAWN_CLOSE, fd))
+        else:
+            # posix_spawn refuses to close a descriptor at or above the limit ("Bad file descriptor"):
+            # one a parent left open before lowering the limit (ulimit -n).  Never ours to pass on, and
+            # not the one kept (a new descriptor takes the lowest free number), so it is closed at exec.
+            os.set_inheritable(fd, False)
     return actions
+
+
+def _descriptor_ceiling() -> int:
+    """The soft limit on descriptors (RLIMIT_NOFILE): every descriptor we may open is below it."""
+    import resource  # only when a parent left descriptors open: not on every start
+
+    soft, _ = resource.getrlimit(resource.RLIMIT_NOFILE)
+    return soft if soft != resource.RLIM_INFINITY else 2**31
 
 
 def _inheritable_descriptors() -> list[int]:
