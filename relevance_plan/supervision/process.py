@@ -42,6 +42,7 @@ import stat
 import tempfile
 import threading
 import time
+from collections.abc import Iterator
 from pathlib import Path
 from typing import BinaryIO, NamedTuple
 
@@ -118,7 +119,7 @@ def _read_regular(path: Path, limit: int) -> tuple[bytes, int] | None:
         return stream.read(limit), info.st_size
 
 
-def read_output(path: str | os.PathLike, limit: int = MAX_OUTPUT_BYTES) -> str:
+def read_output(path: str | os.PathLike[str], limit: int = MAX_OUTPUT_BYTES) -> str:
     """A planner's output file as text: all of it, or its last ``limit`` bytes from a line start ('' if unreadable)."""
     found = _read_regular(Path(path), limit)
     if found is None:
@@ -130,7 +131,7 @@ def read_output(path: str | os.PathLike, limit: int = MAX_OUTPUT_BYTES) -> str:
 
 
 @contextlib.contextmanager
-def work_directory(keep: str | None, prefix: str):
+def work_directory(keep: str | None, prefix: str) -> Iterator[Path]:
     """Where one planner run works: ``keep`` (created if needed, left behind), else a temporary
     directory removed afterwards."""
     if keep is not None:
@@ -150,7 +151,7 @@ def log_tail(log: str) -> str:
     return "\n".join(log.splitlines()[-LOG_TAIL_LINES:])
 
 
-def read_plan_file(path: str | os.PathLike, limit: int = MAX_OUTPUT_BYTES) -> str | None:
+def read_plan_file(path: str | os.PathLike[str], limit: int = MAX_OUTPUT_BYTES) -> str | None:
     """The text of a plan file a planner wrote; None if there is none.
 
     ``PlanFormatError`` when it is larger than ``limit`` bytes or not a regular file.
@@ -213,7 +214,7 @@ _SCOPE: contextvars.ContextVar[CancelScope | None] = contextvars.ContextVar("rel
 
 
 @contextlib.contextmanager
-def cancel_scope(scope: CancelScope):
+def cancel_scope(scope: CancelScope) -> Iterator[CancelScope]:
     """Runs started inside the block (in this thread) belong to ``scope``."""
     token = _SCOPE.set(scope)
     try:
@@ -349,7 +350,7 @@ def run_process_group(
     *,
     what: str,
     program: Path | str,
-    env: dict | None = None,
+    env: dict[str, str] | None = None,
     memory_limit_mb: int | None = None,
 ) -> ProcessRun:
     """Run ``command`` (an argument list, never a shell string) in ``workdir`` under the guard,
@@ -458,7 +459,7 @@ def start_process_group(
     *,
     what: str,
     program: Path | str,
-    env: dict | None = None,
+    env: dict[str, str] | None = None,
     memory_limit_mb: int | None = None,
 ) -> StartedGroup:
     """Start ``command`` under the guard as :func:`run_process_group` does, without waiting for it."""

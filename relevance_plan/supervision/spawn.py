@@ -165,10 +165,10 @@ def _cannot_start(what: str, program: str, error: OSError) -> errors.PlannerErro
 _DEFAULT_IN_CHILD = (_signal.SIGPIPE, _signal.SIGXFSZ)
 
 
-def _file_actions(log_fd: int, keep: int) -> list[tuple]:
+def _file_actions(log_fd: int, keep: int) -> list[tuple[int, ...] | tuple[int, int, str, int, int]]:
     """The guard's standard input from /dev/null, its output to the log, and no other descriptor of
     ours but ``keep`` (what ``subprocess`` does with ``close_fds``)."""
-    actions: list[tuple] = [
+    actions: list[tuple[int, ...] | tuple[int, int, str, int, int]] = [
         (os.POSIX_SPAWN_OPEN, 0, os.devnull, os.O_RDONLY, 0),
         (os.POSIX_SPAWN_DUP2, log_fd, 1),
         (os.POSIX_SPAWN_DUP2, log_fd, 2),
