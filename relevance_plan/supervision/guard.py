@@ -7,7 +7,7 @@ write end the tool holds; CGROUP is a cgroup v2 directory the tool made for
 this run, or ``-``; WORKDIR is where the planner runs; LIMIT the planner's
 address-space limit in MB, or ``-``.  ``spawn.start_guarded`` starts the
 guard as the leader of a new session, moves it into CGROUP while its
-interpreter starts (moving a process costs the kernel 5-20 ms, better spent
+interpreter starts (moving a process costs the kernel time better spent
 beside the start-up than before the planner's) and then writes one byte:
 ``1`` in the cgroup, ``0`` not.  The guard then
 
@@ -31,7 +31,7 @@ The guard exits as the planner did (a death by signal N as 256 - N, which
 The module is imported by the tool too: :func:`kill_descendants` is the one
 sweep, used by the guard and by the tool.  It needs the standard library
 only, and imports little, since the guard's start-up delays the planner's:
-``_signal`` rather than ``signal`` (whose enums cost ~7 ms), no thread
+``_signal`` rather than ``signal`` (whose enums are slow to import), no thread
 (the planner's end and the tool's are both file descriptors to wait on),
 ``posix_spawn`` rather than ``subprocess``, ``shutil`` only to remove a
 scratch directory.

@@ -5,7 +5,7 @@ Every planner run starts here (:func:`start_guarded`, through
 which runs before anything else of the tool is imported: whatever this
 module imports delays the planner on every run.  So it imports ``os``,
 ``sys``, ``time`` and the guard, and nothing that pulls in ``re``, ``enum``,
-``typing``, ``pathlib`` or ``subprocess`` (together ~30 ms of a fresh
+``typing``, ``pathlib`` or ``subprocess`` (together a large share of a fresh
 interpreter's start).
 
 A run's processes live in a cgroup of their own where Linux lets us make
