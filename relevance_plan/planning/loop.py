@@ -82,6 +82,32 @@ MAX_TIMEOUT = 1e6
 # Below 16 MB Python cannot start the planner at all; above 1 PB is absurd.
 MIN_MEMORY_MB = 16
 MAX_MEMORY_MB = 1 << 30
+# A planner that cannot prove a pruned problem unsolvable searches it until its time runs out, so
+# its pruned attempts get budgets: the first this many times what scoring and pruning took (the
+# relaxed check among them), at least MIN_BUDGET seconds, and each widening's twice the last.
+BUDGET_PER_PRUNING = 4.0
+MIN_BUDGET = 1.0
+BUDGET_GROWTH = 2.0
+
+
+@dataclass(frozen=True)
+class Budgets:
+    """The time limits of pruned attempts for a planner that cannot prove one unsolvable.
+
+    The ``n``-th pruned attempt (from 0) gets ``first * growth ** n`` seconds (never more than
+    the loop would give it anyway); the full problem gets what is left.  A pruned attempt whose
+    budget runs out is taken as a wrong guess: the selection widens at once.
+    """
+
+    first: float
+    growth: float = BUDGET_GROWTH
+
+    def limit(self, pruned_before: int) -> float:
+        return self.first * self.growth**pruned_before
+
+    @classmethod
+    def after(cls, pruning_seconds: float) -> Budgets:
+        return cls(max(MIN_BUDGET, BUDGET_PER_PRUNING * pruning_seconds))
 
 
 @dataclass(frozen=True)
@@ -171,6 +197,7 @@ def run_attempts(
     model: KnowledgeModel | None = None,
     progress: ProgressCallback | None = None,
     race: Race[Attempt] | None = None,
+    budgets: Budgets | None = None,
 ) -> tuple[list[Attempt], float]:
     """Plan on ``selection`` (None: the full problem), widening after each failure.
 
@@ -178,7 +205,10 @@ def run_attempts(
     ``started + options.timeout``.  With ``race`` (the full problem planned
     since the start, in a thread), the pruned attempts may use all the time
     left; the full problem is never planned twice, and whichever side
-    decides first ends the other (the race's attempt is then the last).
+    decides first ends the other (the race's attempt is then the last; a
+    pruned attempt the race stopped is listed as ``stopped``).  With
+    ``budgets`` (a planner that cannot prove a pruned problem unsolvable),
+    each pruned attempt is held to its budget, with or without a race.
     """
     say = _teller(progress)
     total = len(task.problem.objects)
@@ -188,12 +218,21 @@ def run_attempts(
     widening_time = 0.0
     extra: frozenset[str] = frozenset()
     current = selection
+    pruned_before = 0
     while deadline is None or time.perf_counter() < deadline:
         if race is not None and race.won:
             break
         number = len(attempts) + 1
         pruned = current if current is not None and len(current.kept) < total else None
         full = pruned is None
+        last = attempts[-1] if attempts else None
+        if full and race is not None and budgets is not None and last is not None and last.selection is not None:
+            if last.status is AttemptStatus.OUT_OF_TIME:
+                # the full problem is planned beside: rather than wait for it, the widest pruned
+                # selection, stopped at its budget, gets the time left
+                say(f"attempt {number}: {len(last.selection.kept)} of {total} objects again, with the time left")
+                current, budgets = last.selection, None
+                continue
         if full and race is not None:
             say(f"attempt {number}: the full problem, planned since the start")
             attempts.append(replace(race.wait(), number=number))
@@ -206,11 +245,18 @@ def run_attempts(
         else:
             remaining = max(deadline - time.perf_counter(), LAST_SECONDS)
             limit = remaining if final or race is not None else max(1.0, remaining * options.first_share)
+        if budgets is not None and pruned is not None and not final:
+            budget = budgets.limit(pruned_before)
+            limit = budget if limit is None else min(limit, budget)
+        if pruned is not None:
+            pruned_before += 1
         outcome = call_planner(pruned, limit)
-        if race is not None and race.won and not outcome.solved:
+        stopped = race is not None and race.won and not outcome.solved
+        if stopped:
             say("the full problem, planned since the start, decided first: the pruned attempt was stopped")
-            break
-        outcome, validation, validation_time = _validate(task, outcome, options, deadline)
+            validation, validation_time = None, 0.0
+        else:
+            outcome, validation, validation_time = _validate(task, outcome, options, deadline)
         attempts.append(
             Attempt(
                 number=number,
@@ -222,8 +268,11 @@ def run_attempts(
                 time_limit=limit,
                 validation_time=validation_time,
                 selection=pruned,
+                stopped=stopped,
             )
         )
+        if stopped:
+            break
         if validation is not None and validation.status is not ValidationStatus.INVALID:
             break  # valid, out of time, or no validator could run: report it, never retry blindly
         if not options.widen or pruned is None:
@@ -248,7 +297,8 @@ def run_attempts(
 
 def _answering(prepared: PreparedPlanner, attempts: Sequence[Attempt]) -> str:
     """The planner that gave the last answer: auto's next one when its first gave up."""
-    last = attempts[-1].outcome.planner if attempts else ""
+    deciding = [a for a in attempts if not a.stopped]
+    last = deciding[-1].outcome.planner if deciding else ""
     return last if isinstance(prepared.planner, FallbackPlanner) and last else prepared.name
 
 
@@ -367,6 +417,7 @@ def _plan_task(
                 validation=validation,
                 time_limit=limit,
                 validation_time=validation_time,
+                raced=True,
             )
 
         own_runs = CancelScope()
@@ -400,6 +451,7 @@ def _prune_and_plan(
     total = len(task.problem.objects)
     domain_path, problem_path = paths
     selection = None
+    scoring_started = time.perf_counter()
     try:
         scoring, unpruned = _score(task, options, domain_path, problem_path, say)
     except OutOfTimeError:
@@ -428,7 +480,15 @@ def _prune_and_plan(
         if overran is not None:
             return overran
         _say_selection(say, selection, total)
-    relevance_time = time.perf_counter() - started
+    # scoring and pruning only: reading came before, and a race's planner only waits beside it
+    relevance_time = time.perf_counter() - scoring_started
+    budgets = None
+    if selection is not None and selection.removed and options.widen and not prepared.proves_unsolvable:
+        budgets = Budgets.after(relevance_time)
+        say(
+            f"{prepared.name} cannot prove a pruned problem unsolvable: pruned attempts get"
+            f" {budgets.first:.1f} s, doubling at each widening"
+        )
     attempts, widening_time = run_attempts(
         task,
         selection,
@@ -438,6 +498,7 @@ def _prune_and_plan(
         model=scoring.model if scoring else None,
         progress=progress,
         race=race,
+        budgets=budgets,
     )
     result = summarise(
         task,
@@ -454,7 +515,15 @@ def _prune_and_plan(
     )
     if race is None or not attempts:
         return result
-    return replace(result, raced="full" if attempts[-1].full else "pruned")
+    result = replace(result, raced=attempts[-1].side)
+    if not attempts[-1].raced:
+        # the pruned side decided (or the time ran out): the full problem's run is listed too
+        race.stop()
+        beside = race.result()
+        if beside is not None:
+            beside = replace(beside, number=len(attempts) + 1, stopped=race.cancelled)
+            result = replace(result, attempts=(*attempts, beside))
+    return result
 
 
 def _score(
@@ -570,7 +639,7 @@ def summarise(
         attempts=tuple(attempts),
         wall_time=time.perf_counter() - started,
         relevance_time=relevance_time,
-        planner_time=sum(a.outcome.wall_time for a in attempts),
+        planner_time=sum(a.outcome.wall_time for a in attempts if not a.stopped),
         validation_time=sum(a.validation_time for a in attempts),
         objects_total=total,
         selection=selection,
@@ -584,7 +653,7 @@ def summarise(
     )
     if not attempts:
         return PlanResult(status=PlanStatus.OUT_OF_TIME, message="no time left for planning", **common)
-    last = attempts[-1]
+    last = next((a for a in reversed(attempts) if not a.stopped), attempts[-1])
     common["objects_kept"] = last.objects_kept
     if last.outcome.status is PlannerStatus.SOLVED:
         return _validated(last, common)

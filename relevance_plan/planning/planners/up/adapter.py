@@ -84,6 +84,12 @@ ENGINE_FEATURES: dict[str, frozenset[str]] = {
     "enhsp": _UP_READ | _QUANTIFIED | {f.NUMERIC_FLUENTS, f.ACTION_COSTS},
 }
 
+# Engines whose search ends on a problem without a plan: complete searches over a finite grounded
+# space (Fast Downward's, SymK's, pyperplan's).  Aries and Tamer's satisficing searches and ENHSP's
+# search a temporal or numeric space that may be infinite: on a problem without a plan they search
+# until their time runs out.  An engine not listed counts as one that cannot.
+PROVING_ENGINES = frozenset({"fast-downward", "fast-downward-opt", "symk", "symk-opt", "pyperplan", "pyperplan-opt"})
+
 # Features an engine takes only when the child can rewrite the problem for it, which depends on
 # values that features do not show (Aries: PDDL's numbers only when they are whole); ``auto`` does
 # not choose an engine for them.
@@ -188,6 +194,10 @@ class UnifiedPlanningPlanner:
     @property
     def features(self) -> frozenset[str] | None:
         return ENGINE_FEATURES.get(self.engine)
+
+    @property
+    def proves_unsolvable(self) -> bool:
+        return self.engine in PROVING_ENGINES
 
     def check_installed(self) -> None:
         if self.engine not in installed_up_engines():
