@@ -45,11 +45,14 @@ from relevance_plan.planning.planners.preparation import PreparedPlanner, prepar
 from relevance_plan.planning.planners.registry import (
     DEFAULT_PLANNER,
     DEFAULT_PLANNER_CONFIG,
+    await_warm,
     make_planner,
     offer_early_run,
     planner_for,
     planner_for_unread,
     take_early_run,
+    warm_planners,
+    warm_up,
 )
 from relevance_plan.planning.race import Race
 from relevance_plan.planning.results import (
@@ -350,7 +353,8 @@ def plan_task(
 
     With ``keep_work``, each attempt's planner files stay in ``keep_work/attempt-N``.
     """
-    with collection_paused():  # the run's facts die with it: no pass over them needed
+    # the run's facts die with it: no pass over them needed; its warm planners too
+    with collection_paused(), warm_planners(options.memory_limit_mb):
         return _plan_task(domain_path, problem_path, options, progress, keep_work)
 
 
@@ -365,6 +369,8 @@ def _plan_task(
     started = time.perf_counter()
     domain_path, problem_path = str(domain_path), str(problem_path)
     planner = make_planner(options.planner, options.planner_config)
+    if keep_work is None:
+        warm_up(planner)  # a named engine starts now, beside the reading and scoring
     reading = None if options.timeout is None else time.monotonic() + options.timeout
     try:
         domain = load_domain(domain_path, deadline=reading)
@@ -377,6 +383,8 @@ def _plan_task(
     planner, choice = planner_for(planner, task.domain, task.problem)
     if choice:
         say(f"planner: {planner.name} (auto: {choice})")
+        if keep_work is None:
+            warm_up(planner)
     # the planner's check; what it lacks and can be compiled away is compiled away at each attempt
     prepared = prepare_planner(planner, task.domain, task.problem, problem_path, options.planner_args, keep_work, say)
     overran = _overran("reading the domain and problem", started, options, total)
@@ -489,6 +497,8 @@ def _prune_and_plan(
             f"{prepared.name} cannot prove a pruned problem unsolvable: pruned attempts get"
             f" {budgets.first:.1f} s, doubling at each widening"
         )
+        # a budget is the planner's search: a warm engine still starting is waited for first
+        await_warm(prepared.planner, None if options.timeout is None else time.monotonic() + _left(started, options))
     attempts, widening_time = run_attempts(
         task,
         selection,
@@ -595,6 +605,12 @@ def _plan_unread(
     return summarise(
         None, options, [attempt], started, 0.0, None, planner.name, unpruned_reason=unpruned, planner_choice=choice
     )
+
+
+def _left(started: float, options: PlanOptions) -> float:
+    """Seconds left of the --timeout (``started`` on ``time.perf_counter()``)."""
+    assert options.timeout is not None
+    return max(started + options.timeout - time.perf_counter(), 0.0)
 
 
 def _overran(step: str, started: float, options: PlanOptions, total: int) -> PlanResult | None:

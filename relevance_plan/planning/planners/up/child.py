@@ -17,6 +17,7 @@ undefined values, no quality metric), saying so on stderr.
 from __future__ import annotations
 
 import sys
+import time
 from typing import TYPE_CHECKING, Any
 
 from relevance_plan.planning.planners.up.adapter import CHILD_CANNOT_READ, ENGINE_FEATURES
@@ -27,10 +28,23 @@ if TYPE_CHECKING:
 # An engine that raises instead of answering cannot take the problem's features.
 _REFUSED = "UNSUPPORTED_PROBLEM"
 _CRASHED = "INTERNAL_ERROR"
+# The least an engine is given to search when reading and fitting took nearly all of the time.
+MIN_SEARCH_SECONDS = 0.1
 
 
 def main(arguments: list[str]) -> int:
     engine, domain_path, problem_path, plan_path, verdict_path, timeout_text = arguments
+    timeout = None if timeout_text == "none" else float(timeout_text)
+    return solve_files(engine, domain_path, problem_path, plan_path, verdict_path, timeout)
+
+
+def solve_files(
+    engine: str, domain_path: str, problem_path: str, plan_path: str, verdict_path: str, timeout: float | None
+) -> int:
+    """Read, fit, solve and write the plan and the verdict; the child's exit code (the worker's answer).
+
+    ``timeout`` covers the reading and fitting too: the engine's own timeout counts its search only."""
+    started = time.monotonic()
     import unified_planning.shortcuts as shortcuts
     from unified_planning.engines.results import POSITIVE_OUTCOMES
     from unified_planning.io import PDDLReader
@@ -41,11 +55,12 @@ def main(arguments: list[str]) -> int:
     except Exception as error:  # the engine's reader rejects it: an input error, said in the log
         print(f"unified-planning cannot read the problem: {error}", file=sys.stderr)
         return CHILD_CANNOT_READ
-    timeout = None if timeout_text == "none" else float(timeout_text)
     fitted = _fit(shortcuts.get_environment(), engine, problem)
     if fitted is not None:
         problem = fitted.problem
     lacking = () if fitted is None else fitted.lacking
+    if timeout is not None:
+        timeout = max(timeout - (time.monotonic() - started), MIN_SEARCH_SECONDS)
     try:
         with shortcuts.OneshotPlanner(name=engine, problem_kind=problem.kind) as planner:
             result = planner.solve(problem, timeout=timeout)
