@@ -81,6 +81,8 @@ ENGINE_FEATURES: dict[str, frozenset[str]] = {
     # Tamer: temporal and numeric; its type checker rejects a type below another declared type, which the
     # child flattens.
     "tamer": _UP_READ | _TEMPORAL | {f.NUMERIC_FLUENTS, f.ACTION_COSTS},
+    # Kairos (up-kairos, registered by the child and the worker): temporal and numeric, proves unsolvability.
+    "kairos": _UP_READ | _TEMPORAL | {f.NUMERIC_FLUENTS, f.ACTION_COSTS},
     # ENHSP: numeric planning with ADL; no durative actions.
     "enhsp": _UP_READ | _QUANTIFIED | {f.NUMERIC_FLUENTS, f.ACTION_COSTS},
 }
@@ -89,7 +91,9 @@ ENGINE_FEATURES: dict[str, frozenset[str]] = {
 # space (Fast Downward's, SymK's, pyperplan's).  Aries and Tamer's satisficing searches and ENHSP's
 # search a temporal or numeric space that may be infinite: on a problem without a plan they search
 # until their time runs out.  An engine not listed counts as one that cannot.
-PROVING_ENGINES = frozenset({"fast-downward", "fast-downward-opt", "symk", "symk-opt", "pyperplan", "pyperplan-opt"})
+PROVING_ENGINES = frozenset(
+    {"fast-downward", "fast-downward-opt", "symk", "symk-opt", "pyperplan", "pyperplan-opt", "kairos"}
+)
 
 # Features an engine takes only when the child can rewrite the problem for it, which depends on
 # values that features do not show (Aries: PDDL's numbers only when they are whole); ``auto`` does
@@ -141,6 +145,7 @@ ENGINE_MODULES = {
     "lpg": "up_lpg",
     "lpg-anytime": "up_lpg",
     "aries": "up_aries",
+    "kairos": "up_kairos",  # not in unified-planning's table: registered by ``child.register_engine``
 }
 
 

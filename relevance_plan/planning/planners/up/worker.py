@@ -20,7 +20,7 @@ import resource
 import socket
 import sys
 
-from relevance_plan.planning.planners.up.child import solve_files
+from relevance_plan.planning.planners.up.child import register_engine, solve_files
 
 # Printed to the log before each request's output, so the tool can cut out one attempt's part.
 HEADER = "=== request {number}"
@@ -39,6 +39,7 @@ def main(arguments: list[str]) -> int:
     import unified_planning.shortcuts as shortcuts  # the cost every attempt's child paid: paid once here
 
     shortcuts.get_environment().credits_stream = None
+    register_engine(engine)
     try:
         shortcuts.get_environment().factory.engine(engine)  # loads the engine's own modules
     except Exception as error:  # the request's answer will say what is wrong
