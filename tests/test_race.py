@@ -10,7 +10,7 @@ from support import planner_script, process_gone
 
 from relevance_plan.planning.loop import PlanOptions, plan_task
 from relevance_plan.planning.race import Race, race_by_default, usable_cores
-from relevance_plan.planning.results import PlanStatus
+from relevance_plan.planning.results import AttemptStatus, PlanStatus
 from relevance_plan.supervision.process import CancelScope, cancel_scope
 
 # A planner that hangs (after noting its pid) on one kind of input and asks Fast Downward on the other.
@@ -58,9 +58,14 @@ def test_the_pruned_problem_wins_when_the_full_problem_hangs_and_the_full_run_is
     planner, marker = split_planner(tmp_path, hang_on_pruned=False)
     result = plan_task(domain, problem, PlanOptions(planner=planner, timeout=120, race=True))
     assert result.status is PlanStatus.SOLVED and result.valid, result.message
-    assert result.raced == "pruned" and not result.attempts[-1].full
+    assert result.raced == "pruned"
     assert result.objects_kept < result.objects_total
-    assert all(attempt.selection is not None for attempt in result.attempts)  # the full problem ran once, raced
+    # the full problem ran once, raced, and is listed last, stopped; every other attempt was pruned
+    *pruned, beside = result.attempts
+    assert all(attempt.selection is not None for attempt in pruned) and pruned[-1].status is AttemptStatus.SOLVED
+    assert beside.full and beside.raced and beside.status is AttemptStatus.STOPPED
+    logged = result.to_json()["attempt_log"][-1]
+    assert logged["status"] == "stopped" and logged["side"] == "full" and logged["kept"] == "all"
     deadline = time.monotonic() + 10
     while not hung_pids(marker) and time.monotonic() < deadline:
         time.sleep(0.05)  # the stopped run may not have got as far as writing its pid

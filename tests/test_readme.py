@@ -140,6 +140,8 @@ def test_the_status_table_of_how_it_works_is_the_code_s():
 
     text = (REPO / "docs" / "how-it-works.md").read_text()
     table = text.split("### Statuses, from the planner to the exit code")[1].split("\n\n")[2]
+    attempt_cells = [line.strip("|").split("|")[1] for line in table.splitlines()[2:]]
+    assert {re.findall(r"`([\w-]+)`", cell)[0] for cell in attempt_cells} == {s.value for s in AttemptStatus}
     rows = [line for line in table.splitlines() if line.startswith("| `")]
     assert len(rows) >= len(PlannerStatus)
     for row in rows:

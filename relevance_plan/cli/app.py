@@ -443,6 +443,12 @@ def _plan_within_timeout(domain_path, problem_path, options, quiet: bool, keep_w
         )
 
 
+def _attempt_label(attempt) -> str:
+    """ "attempt 2 (23 objects)" or "attempt 3 (the full problem)"."""
+    what = "the full problem" if attempt.selection is None else f"{attempt.objects_kept} objects"
+    return f"attempt {attempt.number} ({what})"
+
+
 def _print_plan_summary(result: PlanResult, plan_file, err: bool = False) -> None:
     echo = functools.partial(click.echo, err=err)
     echo(f"method:      {result.method}")
@@ -456,7 +462,16 @@ def _print_plan_summary(result: PlanResult, plan_file, err: bool = False) -> Non
             f"objects:     {result.objects_kept} kept of {result.objects_total}"
             + (f" (pruned: no, {unpruned})" if unpruned else "")
         )
+    if result.pruned and result.selection is not None:
+        echo(f"pruning:     kept {len(result.selection.kept)} of {result.objects_total} objects first")
     echo(f"attempts:    {len(result.attempts)} (first: {result.first_attempt_status})")
+    if result.raced:
+        stopped = [a for a in result.attempts if a.stopped]
+        echo(
+            "race:        "
+            + ("the full problem, planned from the start, won" if result.raced == "full" else "the pruned side won")
+            + (f"; stopped: {', '.join(_attempt_label(a) for a in stopped)}" if stopped else "")
+        )
     echo(
         f"time:        {result.wall_time:.2f} s total, {result.relevance_time:.2f} s relevance,"
         f" {result.planner_time:.2f} s planner, {result.validation_time:.2f} s validation"

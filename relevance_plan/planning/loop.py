@@ -47,11 +47,14 @@ from relevance_plan.planning.planners.preparation import PreparedPlanner, prepar
 from relevance_plan.planning.planners.registry import (
     DEFAULT_PLANNER,
     DEFAULT_PLANNER_CONFIG,
+    await_warm,
     make_planner,
     offer_early_run,
     planner_for,
     planner_for_unread,
     take_early_run,
+    warm_planners,
+    warm_up,
 )
 from relevance_plan.planning.race import Race
 from relevance_plan.planning.results import (
@@ -84,6 +87,32 @@ MAX_TIMEOUT = 1e6
 # Below 16 MB Python cannot start the planner at all; above 1 PB is absurd.
 MIN_MEMORY_MB = 16
 MAX_MEMORY_MB = 1 << 30
+# A planner that cannot prove a pruned problem unsolvable searches it until its time runs out, so
+# its pruned attempts get budgets: the first this many times what scoring and pruning took (the
+# relaxed check among them), at least MIN_BUDGET seconds, and each widening's twice the last.
+BUDGET_PER_PRUNING = 4.0
+MIN_BUDGET = 1.0
+BUDGET_GROWTH = 2.0
+
+
+@dataclass(frozen=True)
+class Budgets:
+    """The time limits of pruned attempts for a planner that cannot prove one unsolvable.
+
+    The ``n``-th pruned attempt (from 0) gets ``first * growth ** n`` seconds (never more than
+    the loop would give it anyway); the full problem gets what is left.  A pruned attempt whose
+    budget runs out is taken as a wrong guess: the selection widens at once.
+    """
+
+    first: float
+    growth: float = BUDGET_GROWTH
+
+    def limit(self, pruned_before: int) -> float:
+        return self.first * self.growth**pruned_before
+
+    @classmethod
+    def after(cls, pruning_seconds: float) -> Budgets:
+        return cls(max(MIN_BUDGET, BUDGET_PER_PRUNING * pruning_seconds))
 
 
 @dataclass(frozen=True)
@@ -173,6 +202,7 @@ def run_attempts(
     model: KnowledgeModel | None = None,
     progress: ProgressCallback | None = None,
     race: Race[Attempt] | None = None,
+    budgets: Budgets | None = None,
 ) -> tuple[list[Attempt], float]:
     """Plan on ``selection`` (None: the full problem), widening after each failure.
 
@@ -180,7 +210,10 @@ def run_attempts(
     ``started + options.timeout``.  With ``race`` (the full problem planned
     since the start, in a thread), the pruned attempts may use all the time
     left; the full problem is never planned twice, and whichever side
-    decides first ends the other (the race's attempt is then the last).
+    decides first ends the other (the race's attempt is then the last; a
+    pruned attempt the race stopped is listed as ``stopped``).  With
+    ``budgets`` (a planner that cannot prove a pruned problem unsolvable),
+    each pruned attempt is held to its budget, with or without a race.
     """
     say = _teller(progress)
     total = len(task.problem.objects)
@@ -190,12 +223,21 @@ def run_attempts(
     widening_time = 0.0
     extra: frozenset[str] = frozenset()
     current = selection
+    pruned_before = 0
     while deadline is None or time.perf_counter() < deadline:
         if race is not None and race.won:
             break
         number = len(attempts) + 1
         pruned = current if current is not None and len(current.kept) < total else None
         full = pruned is None
+        last = attempts[-1] if attempts else None
+        if full and race is not None and budgets is not None and last is not None and last.selection is not None:
+            if last.status is AttemptStatus.OUT_OF_TIME:
+                # the full problem is planned beside: rather than wait for it, the widest pruned
+                # selection, stopped at its budget, gets the time left
+                say(f"attempt {number}: {len(last.selection.kept)} of {total} objects again, with the time left")
+                current, budgets = last.selection, None
+                continue
         if full and race is not None:
             say(f"attempt {number}: the full problem, planned since the start")
             attempts.append(replace(race.wait(), number=number))
@@ -208,11 +250,18 @@ def run_attempts(
         else:
             remaining = max(deadline - time.perf_counter(), LAST_SECONDS)
             limit = remaining if final or race is not None else max(1.0, remaining * options.first_share)
+        if budgets is not None and pruned is not None and not final:
+            budget = budgets.limit(pruned_before)
+            limit = budget if limit is None else min(limit, budget)
+        if pruned is not None:
+            pruned_before += 1
         outcome = call_planner(pruned, limit)
-        if race is not None and race.won and not outcome.solved:
+        stopped = race is not None and race.won and not outcome.solved
+        if stopped:
             say("the full problem, planned since the start, decided first: the pruned attempt was stopped")
-            break
-        outcome, validation, validation_time = _validate(task, outcome, options, deadline)
+            validation, validation_time = None, 0.0
+        else:
+            outcome, validation, validation_time = _validate(task, outcome, options, deadline)
         attempts.append(
             Attempt(
                 number=number,
@@ -224,8 +273,11 @@ def run_attempts(
                 time_limit=limit,
                 validation_time=validation_time,
                 selection=pruned,
+                stopped=stopped,
             )
         )
+        if stopped:
+            break
         if validation is not None and validation.status is not ValidationStatus.INVALID:
             break  # valid, out of time, or no validator could run: report it, never retry blindly
         if not options.widen or pruned is None:
@@ -250,7 +302,8 @@ def run_attempts(
 
 def _answering(prepared: PreparedPlanner, attempts: Sequence[Attempt]) -> str:
     """The planner that gave the last answer: auto's next one when its first gave up."""
-    last = attempts[-1].outcome.planner if attempts else ""
+    deciding = [a for a in attempts if not a.stopped]
+    last = deciding[-1].outcome.planner if deciding else ""
     return last if isinstance(prepared.planner, FallbackPlanner) and last else prepared.name
 
 
@@ -302,7 +355,8 @@ def plan_task(
 
     With ``keep_work``, each attempt's planner files stay in ``keep_work/attempt-N``.
     """
-    with collection_paused():  # the run's facts die with it: no pass over them needed
+    # the run's facts die with it: no pass over them needed; its warm planners too
+    with collection_paused(), warm_planners(options.memory_limit_mb):
         return _plan_task(domain_path, problem_path, options, progress, keep_work)
 
 
@@ -317,6 +371,8 @@ def _plan_task(
     started = time.perf_counter()
     domain_path, problem_path = str(domain_path), str(problem_path)
     planner = make_planner(options.planner, options.planner_config)
+    if keep_work is None:
+        warm_up(planner)  # a named engine starts now, beside the reading and scoring
     reading = None if options.timeout is None else time.monotonic() + options.timeout
     try:
         domain = load_domain(domain_path, deadline=reading)
@@ -329,6 +385,8 @@ def _plan_task(
     planner, choice = planner_for(planner, task.domain, task.problem)
     if choice:
         say(f"planner: {planner.name} (auto: {choice})")
+        if keep_work is None:
+            warm_up(planner)
     # the planner's check; what it lacks and can be compiled away is compiled away at each attempt
     prepared = prepare_planner(planner, task.domain, task.problem, problem_path, options.planner_args, keep_work, say)
     overran = _overran("reading the domain and problem", started, options, total)
@@ -369,6 +427,7 @@ def _plan_task(
                 validation=validation,
                 time_limit=limit,
                 validation_time=validation_time,
+                raced=True,
             )
 
         own_runs = CancelScope()
@@ -402,6 +461,7 @@ def _prune_and_plan(
     total = len(task.problem.objects)
     domain_path, problem_path = paths
     selection = None
+    scoring_started = time.perf_counter()
     try:
         scoring, unpruned = _score(task, options, domain_path, problem_path, say)
     except OutOfTimeError:
@@ -430,7 +490,17 @@ def _prune_and_plan(
         if overran is not None:
             return overran
         _say_selection(say, selection, total)
-    relevance_time = time.perf_counter() - started
+    # scoring and pruning only: reading came before, and a race's planner only waits beside it
+    relevance_time = time.perf_counter() - scoring_started
+    budgets = None
+    if selection is not None and selection.removed and options.widen and not prepared.proves_unsolvable:
+        budgets = Budgets.after(relevance_time)
+        say(
+            f"{prepared.name} cannot prove a pruned problem unsolvable: pruned attempts get"
+            f" {budgets.first:.1f} s, doubling at each widening"
+        )
+        # a budget is the planner's search: a warm engine still starting is waited for first
+        await_warm(prepared.planner, None if options.timeout is None else time.monotonic() + _left(started, options))
     attempts, widening_time = run_attempts(
         task,
         selection,
@@ -440,6 +510,7 @@ def _prune_and_plan(
         model=scoring.model if scoring else None,
         progress=progress,
         race=race,
+        budgets=budgets,
     )
     result = summarise(
         task,
@@ -456,7 +527,15 @@ def _prune_and_plan(
     )
     if race is None or not attempts:
         return result
-    return replace(result, raced="full" if attempts[-1].full else "pruned")
+    result = replace(result, raced=attempts[-1].side)
+    if not attempts[-1].raced:
+        # the pruned side decided (or the time ran out): the full problem's run is listed too
+        race.stop()
+        beside = race.result()
+        if beside is not None:
+            beside = replace(beside, number=len(attempts) + 1, stopped=race.cancelled)
+            result = replace(result, attempts=(*attempts, beside))
+    return result
 
 
 def _score(
@@ -530,6 +609,12 @@ def _plan_unread(
     )
 
 
+def _left(started: float, options: PlanOptions) -> float:
+    """Seconds left of the --timeout (``started`` on ``time.perf_counter()``)."""
+    assert options.timeout is not None
+    return max(started + options.timeout - time.perf_counter(), 0.0)
+
+
 def _overran(step: str, started: float, options: PlanOptions, total: int) -> PlanResult | None:
     """An out-of-time result naming ``step`` when ``--timeout`` ran out during it."""
     if options.timeout is None or time.perf_counter() - started < options.timeout:
@@ -572,7 +657,7 @@ def summarise(
         attempts=tuple(attempts),
         wall_time=time.perf_counter() - started,
         relevance_time=relevance_time,
-        planner_time=sum(a.outcome.wall_time for a in attempts),
+        planner_time=sum(a.outcome.wall_time for a in attempts if not a.stopped),
         validation_time=sum(a.validation_time for a in attempts),
         objects_total=total,
         selection=selection,
@@ -586,7 +671,7 @@ def summarise(
     )
     if not attempts:
         return PlanResult(status=PlanStatus.OUT_OF_TIME, message="no time left for planning", **common)
-    last = attempts[-1]
+    last = next((a for a in reversed(attempts) if not a.stopped), attempts[-1])
     common["objects_kept"] = last.objects_kept
     if last.outcome.status is PlannerStatus.SOLVED:
         return _validated(last, common)

@@ -78,6 +78,15 @@ class Race(Generic[T]):
         assert self._result is not None
         return self._result
 
+    @property
+    def cancelled(self) -> bool:
+        """Stopped by :meth:`stop` before ``work`` had finished."""
+        return self._scope.cancelled
+
+    def result(self) -> T | None:
+        """``work``'s result once it has finished; None while it runs or when it raised."""
+        return self._result if self._done.is_set() else None
+
     def stop(self) -> None:
         """Stop ``work``'s planner runs (if still going) and wait for the thread."""
         if not self._done.is_set():

@@ -57,6 +57,7 @@ class AttemptStatus(enum.Enum):
     PLANNER_CONFIG_ERROR = "planner-config-error"
     UNSUPPORTED = "unsupported"
     PLANNER_CRASH = "planner-crash"
+    STOPPED = "stopped"  # the race's other side decided first; this attempt's planner was stopped
 
 
 _VALIDATION_FAILURE = {
@@ -79,13 +80,22 @@ class Attempt:
     time_limit: float | None
     validation_time: float = 0.0
     selection: Selection | None = None  # the objects it planned on (None: the user's full problem)
+    raced: bool = False  # the full problem, planned from the start beside the pruned attempts (planning.race)
+    stopped: bool = False  # stopped unfinished because the race's other side decided first
 
     @property
     def full(self) -> bool:
         return self.thresholds is None
 
     @property
+    def side(self) -> str:
+        """Which side of a race it ran on: "full" (planned from the start) or "pruned"."""
+        return "full" if self.raced else "pruned"
+
+    @property
     def status(self) -> AttemptStatus:
+        if self.stopped:
+            return AttemptStatus.STOPPED
         if self.outcome.status is PlannerStatus.SOLVED and self.validation is not None:
             return AttemptStatus.SOLVED if self.validation.accepted else _VALIDATION_FAILURE[self.validation.status]
         return AttemptStatus(self.outcome.status.value)
@@ -117,6 +127,11 @@ class PlanResult:
     compilations: tuple[str, ...] = ()  # what was compiled away for the planner (planning.compile)
     plans: tuple[Plan, ...] = ()  # an anytime planner's valid plans, in the order found (``plan`` is the last)
     raced: str = ""  # with a race: which side gave the result, "full" or "pruned" (planning.race)
+
+    @property
+    def first_kept(self) -> int:
+        """How many objects pruning chose for the first pruned attempt (all of them without pruning)."""
+        return len(self.selection.kept) if self.selection is not None else self.objects_total
 
     def plan_text(self) -> str:
         """The plan in the IPC format, object names in the user's spelling."""
@@ -181,6 +196,7 @@ class PlanResult:
                     "planner_status": a.outcome.status.value,
                     "planner_exit_code": a.outcome.exit_code,
                     "status": a.status.value,
+                    "side": a.side if self.raced else None,
                     "wall_time": round(a.outcome.wall_time, 4),
                     **_objects_of(a),
                 }

@@ -421,6 +421,32 @@ class StartedGroup:
         wall = time.monotonic() - self.started
         return ProcessRun(wait_status, exit_code, cpu_time, peak_mb, fired, wall, self.run.pgid)
 
+    @contextlib.contextmanager
+    def attended(self):  # type: ignore[no-untyped-def]
+        """While inside, the run belongs to the current cancel scope (a long-lived worker serving one
+        request): cancelling the scope kills it.  A scope cancelled already kills it at once."""
+        scope = _SCOPE.get()
+        if scope is not None and not scope._enter(self.run):
+            _stop(self.run)
+        try:
+            yield self
+        finally:
+            if scope is not None:
+                scope._leave(self.run)
+
+    def exited(self) -> bool:
+        """Whether the guard has ended (it stays unreaped, so its pid is still ours)."""
+        if not hasattr(os, "waitid"):
+            return False
+        try:
+            return os.waitid(os.P_PID, self.run.pgid, os.WEXITED | os.WNOHANG | os.WNOWAIT) is not None
+        except ChildProcessError:
+            return True
+
+    def kill(self) -> None:
+        """Kill every process of the run now (it is reaped by :meth:`stop`)."""
+        _stop(self.run)
+
     def stop(self) -> None:
         """End the run and reap it (its result is not wanted)."""
         try:

@@ -178,6 +178,10 @@ class FallbackPlanner:
     def features(self) -> frozenset[str] | None:
         return self.first.features
 
+    @property
+    def proves_unsolvable(self) -> bool:
+        return self.first.proves_unsolvable
+
     def check_installed(self) -> None:
         self.first.check_installed()
 
@@ -215,6 +219,11 @@ class AutoPlanner:
     def features(self) -> frozenset[str]:
         """What the installed planners take between them."""
         return frozenset().union(*(c.takes for c in EVERY if c.installed()))
+
+    @property
+    def proves_unsolvable(self) -> bool:
+        """The chosen planner's (``planner_for`` chooses before any attempt); unknown before: no."""
+        return False
 
     def check_installed(self) -> None:
         """Fast Downward is always there and its configuration is checked now (a typo is found before

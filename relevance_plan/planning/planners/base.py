@@ -121,6 +121,13 @@ class Planner(Protocol):
         """The PDDL features it takes (names from ``features.py``); None: unknown, it decides."""
         ...
 
+    @property
+    def proves_unsolvable(self) -> bool:
+        """Whether its search ends on a problem that has no plan (and says so), rather than searching
+        until its time runs out.  The attempt loop gives a planner that cannot short, growing budgets
+        on pruned problems, which pruning may have made unsolvable; unknown counts as no."""
+        ...
+
     def check_installed(self) -> None:
         """Raise when it cannot run at all (engine not installed, executable not found, template incomplete)."""
         ...

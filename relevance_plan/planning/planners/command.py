@@ -77,6 +77,11 @@ class CommandPlanner:
         return None
 
     @property
+    def proves_unsolvable(self) -> bool:
+        """Unknown: counted as no."""
+        return False
+
+    @property
     def arguments(self) -> list[str]:
         try:
             arguments = shlex.split(self.template)

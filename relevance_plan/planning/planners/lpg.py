@@ -146,6 +146,11 @@ class LpgPlanner:
     def features(self) -> frozenset[str]:
         return FEATURES
 
+    @property
+    def proves_unsolvable(self) -> bool:
+        """A local search: on a problem without a plan it restarts until its time runs out."""
+        return False
+
     def executable(self) -> Path:
         found = lpg_binary()
         if found is None:

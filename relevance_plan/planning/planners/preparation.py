@@ -188,6 +188,10 @@ class PreparedPlanner:
         return self.planner.name
 
     @property
+    def proves_unsolvable(self) -> bool:
+        return self.planner.proves_unsolvable
+
+    @property
     def compilations(self) -> tuple[str, ...]:
         return self.full.names if self.full is not None else ()
 

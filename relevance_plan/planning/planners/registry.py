@@ -27,11 +27,12 @@ watchdog of ``process.run_process_group``.
 from __future__ import annotations
 
 from collections.abc import Callable
+from contextlib import AbstractContextManager
 
 from relevance_plan import errors
 from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.planning.planners import auto, lpg
-from relevance_plan.planning.planners.auto import AutoPlanner
+from relevance_plan.planning.planners.auto import AutoPlanner, FallbackPlanner
 from relevance_plan.planning.planners.base import Planner
 from relevance_plan.planning.planners.command import CommandPlanner
 from relevance_plan.planning.planners.fast_downward import adapter as fast_downward
@@ -40,6 +41,7 @@ from relevance_plan.planning.planners.fast_downward import head_start
 from relevance_plan.planning.planners.fast_downward.adapter import FastDownwardPlanner
 from relevance_plan.planning.planners.lpg import LpgPlanner
 from relevance_plan.planning.planners.up.adapter import UnifiedPlanningPlanner
+from relevance_plan.planning.planners.up.pool import WorkerPool, worker_pool
 
 DEFAULT_PLANNER = auto.NAME
 DEFAULT_PLANNER_CONFIG = fd_command.DEFAULT_CONFIG
@@ -77,6 +79,28 @@ def make_planner(name: str, config: str = DEFAULT_PLANNER_CONFIG, check: bool = 
     if check:
         planner.check_installed()
     return planner
+
+
+def warm_planners(memory_limit_mb: int | None) -> AbstractContextManager[WorkerPool]:
+    """The run's warm planners (a unified-planning engine's worker), killed when the block ends."""
+    return worker_pool(memory_limit_mb)
+
+
+def warm_up(planner: Planner) -> None:
+    """Start what ``planner`` can start before its first run, inside :func:`warm_planners`: a
+    unified-planning engine's worker imports the engine while the tool reads and scores.  For
+    ``auto``'s choice with planners standing by, only the first."""
+    first = planner.first if isinstance(planner, FallbackPlanner) else planner
+    if isinstance(first, UnifiedPlanningPlanner):
+        first.warm_up()
+
+
+def await_warm(planner: Planner, until: float | None) -> None:
+    """Wait (until ``until``, ``time.monotonic()``) for what :func:`warm_up` started to be ready, so
+    that an attempt's time limit is the planner's search, not its start."""
+    first = planner.first if isinstance(planner, FallbackPlanner) else planner
+    if isinstance(first, UnifiedPlanningPlanner):
+        first.await_warm(until)
 
 
 def planner_for(planner: Planner, domain: Domain, problem: Problem) -> tuple[Planner, str]:

@@ -439,6 +439,11 @@ class FastDownwardPlanner:
         """Classical planning with ADL, action costs and derived predicates; no numbers, time or preferences."""
         return CLASSICAL
 
+    @property
+    def proves_unsolvable(self) -> bool:
+        """Its translator and a complete search end on a problem without a plan (exit code 11 or 12)."""
+        return True
+
     def check_installed(self) -> None:
         """The configuration: an alias must be one the driver knows.  up-fast-downward is a dependency
         of the tool, and a missing or overridden driver is reported when the first run looks for it."""

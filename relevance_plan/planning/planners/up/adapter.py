@@ -22,6 +22,7 @@ from pathlib import Path
 
 from relevance_plan import errors
 from relevance_plan.pddl.model import Domain, Problem
+from relevance_plan.pddl.plans import Plan
 from relevance_plan.planning.planners import features as f
 from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome, parse_ipc_plan, signal_reason
 from relevance_plan.planning.planners.features import refuse_unsupported
@@ -80,9 +81,19 @@ ENGINE_FEATURES: dict[str, frozenset[str]] = {
     # Tamer: temporal and numeric; its type checker rejects a type below another declared type, which the
     # child flattens.
     "tamer": _UP_READ | _TEMPORAL | {f.NUMERIC_FLUENTS, f.ACTION_COSTS},
+    # Kairos (up-kairos, registered by the child and the worker): temporal and numeric, proves unsolvability.
+    "kairos": _UP_READ | _TEMPORAL | {f.NUMERIC_FLUENTS, f.ACTION_COSTS},
     # ENHSP: numeric planning with ADL; no durative actions.
     "enhsp": _UP_READ | _QUANTIFIED | {f.NUMERIC_FLUENTS, f.ACTION_COSTS},
 }
+
+# Engines whose search ends on a problem without a plan: complete searches over a finite grounded
+# space (Fast Downward's, SymK's, pyperplan's).  Aries and Tamer's satisficing searches and ENHSP's
+# search a temporal or numeric space that may be infinite: on a problem without a plan they search
+# until their time runs out.  An engine not listed counts as one that cannot.
+PROVING_ENGINES = frozenset(
+    {"fast-downward", "fast-downward-opt", "symk", "symk-opt", "pyperplan", "pyperplan-opt", "kairos"}
+)
 
 # Features an engine takes only when the child can rewrite the problem for it, which depends on
 # values that features do not show (Aries: PDDL's numbers only when they are whole); ``auto`` does
@@ -116,6 +127,34 @@ def java_environment(engine: str) -> dict[str, str] | None:
     if shutil.which("java") is not None:
         return None
     return {**os.environ, "PATH": os.pathsep.join([str(java.parent), os.environ.get("PATH", "")])}
+
+
+# The top-level module of each one-shot planner in unified-planning's own table of engines: finding it
+# installed imports nothing (unified-planning and every engine's module take seconds to import).
+ENGINE_MODULES = {
+    "fast-downward": "up_fast_downward",
+    "fast-downward-opt": "up_fast_downward",
+    "symk": "up_symk",
+    "symk-opt": "up_symk",
+    "pyperplan": "up_pyperplan",
+    "pyperplan-opt": "up_pyperplan",
+    "enhsp": "up_enhsp",
+    "enhsp-opt": "up_enhsp",
+    "enhsp-any": "up_enhsp",
+    "tamer": "up_tamer",
+    "lpg": "up_lpg",
+    "lpg-anytime": "up_lpg",
+    "aries": "up_aries",
+    "kairos": "up_kairos",  # not in unified-planning's table: registered by ``child.register_engine``
+}
+
+
+def engine_module_installed(engine: str) -> bool:
+    """Whether ``engine`` is one of unified-planning's own one-shot planners with its package installed."""
+    import importlib.util
+
+    module = ENGINE_MODULES.get(engine)
+    return module is not None and importlib.util.find_spec(module) is not None
 
 
 def installed_up_engines() -> tuple[str, ...]:
@@ -189,8 +228,12 @@ class UnifiedPlanningPlanner:
     def features(self) -> frozenset[str] | None:
         return ENGINE_FEATURES.get(self.engine)
 
+    @property
+    def proves_unsolvable(self) -> bool:
+        return self.engine in PROVING_ENGINES
+
     def check_installed(self) -> None:
-        if self.engine not in installed_up_engines():
+        if not engine_module_installed(self.engine) and self.engine not in installed_up_engines():
             raise errors.UsageError(
                 f"unified-planning engine '{self.engine}' is not installed (installed: "
                 f"{', '.join(installed_up_engines()) or 'none'}); {PLANNERS_EXTRA_HINT} adds"
@@ -211,10 +254,30 @@ class UnifiedPlanningPlanner:
             pass
         return "; ".join(parts)
 
+    def warm_up(self) -> None:
+        """Start this engine's worker now, when the run has a pool (``up.pool``), so that it imports
+        unified-planning and the engine while the tool reads and scores."""
+        from relevance_plan.planning.planners.up.pool import current_pool
+
+        pool = current_pool()
+        if pool is not None and self.work_dir is None:
+            pool.start(self.engine, java_environment(self.engine))
+
+    def await_warm(self, until: float | None) -> bool:
+        """Wait (until ``until``, monotonic) for the worker :meth:`warm_up` started; whether it is ready."""
+        from relevance_plan.planning.planners.up.pool import current_pool
+
+        pool = current_pool()
+        return pool is not None and self.work_dir is None and pool.wait_ready(self.engine, until)
+
     def run(
         self, domain_path: str, problem_path: str, *, time_limit: float | None, memory_limit_mb: int | None
     ) -> RunOutcome:
         environment = java_environment(self.engine)
+        if self.work_dir is None:
+            outcome = self._run_in_worker(domain_path, problem_path, time_limit, memory_limit_mb, environment)
+            if outcome is not None:
+                return outcome
         with work_directory(self.work_dir, prefix="relevance-plan-up-") as workdir:
             plan_path = workdir / PLAN_FILE
             command = [
@@ -250,5 +313,72 @@ class UnifiedPlanningPlanner:
             log_tail=log,
             raw_status=verdict or "",
             reason=exit_reason(self.name, run.exit_code, verdict, run.watchdog_fired),
+            optimal=verdict == SOLVED_OPTIMALLY and status is PlannerStatus.SOLVED,
+        )
+
+    def _run_in_worker(
+        self,
+        domain_path: str,
+        problem_path: str,
+        time_limit: float | None,
+        memory_limit_mb: int | None,
+        environment: dict[str, str] | None,
+    ) -> RunOutcome | None:
+        """The attempt as a request to the run's warm worker; None when there is none (the child runs)."""
+        from relevance_plan.planning.planners.up.pool import WORKER_GRACE, current_pool
+
+        pool = current_pool()
+        if pool is None or pool.memory_limit_mb != memory_limit_mb:
+            return None
+        worker = pool.start(self.engine, environment)
+        if worker is None:
+            return None
+        with work_directory(None, prefix="relevance-plan-up-") as workdir:
+            plan_path = workdir / PLAN_FILE
+            answer = worker.solve(
+                str(Path(domain_path).absolute()),
+                str(Path(problem_path).absolute()),
+                str(plan_path),
+                str(workdir / VERDICT_FILE),
+                time_limit,
+                watchdog_deadline(time_limit, WORKER_GRACE),
+            )
+            if answer is None:
+                pool.retire(self.engine)
+                return None
+            parsed = parse_ipc_plan(plan_path.read_text(errors="replace")) if plan_path.is_file() else None
+            verdict = _read_verdict(workdir)
+        if answer.starting:
+            return RunOutcome(
+                PlannerStatus.OUT_OF_TIME,
+                None,
+                Plan(),
+                None,
+                answer.wall_time,
+                self.name,
+                process_group=answer.process_group,
+                reason=f"{self.name}: the engine was still starting at the attempt's time limit",
+            )
+        if answer.code is None:
+            # killed at its limit, by the race, or died: a new one starts now, for the next attempt
+            pool.retire(self.engine)
+            pool.start(self.engine, environment)
+        exit_code = -9 if answer.code is None else answer.code
+        status = classify(exit_code, verdict, parsed is not None, answer.watchdog_fired, answer.log)
+        return RunOutcome(
+            status=status,
+            exit_code=exit_code,
+            plan=parsed if parsed is not None and status is PlannerStatus.SOLVED else Plan(),
+            plan_cost=parsed.cost if parsed is not None else None,
+            wall_time=answer.wall_time,
+            planner=self.name,
+            cpu_time=answer.cpu_time,
+            peak_memory_mb=answer.peak_memory_mb,
+            config=self.engine,
+            log_tail=answer.log,
+            killed_by_watchdog=answer.watchdog_fired,
+            process_group=answer.process_group,
+            raw_status=verdict or "",
+            reason=exit_reason(self.name, exit_code, verdict, answer.watchdog_fired),
             optimal=verdict == SOLVED_OPTIMALLY and status is PlannerStatus.SOLVED,
         )

@@ -16,7 +16,9 @@ undefined values, no quality metric), saying so on stderr.
 
 from __future__ import annotations
 
+import contextlib
 import sys
+import time
 from typing import TYPE_CHECKING, Any
 
 from relevance_plan.planning.planners.up.adapter import CHILD_CANNOT_READ, ENGINE_FEATURES
@@ -27,25 +29,48 @@ if TYPE_CHECKING:
 # An engine that raises instead of answering cannot take the problem's features.
 _REFUSED = "UNSUPPORTED_PROBLEM"
 _CRASHED = "INTERNAL_ERROR"
+# Engines that come with a ``register()`` of their own rather than in unified-planning's table.
+REGISTERED_BY_PACKAGE = {"kairos": "up_kairos"}
+# Engines that, given a quality metric and a timeout, search for better plans until the timeout.
+FIRST_PLAN_ENGINES = frozenset({"kairos"})
+# The least an engine is given to search when reading and fitting took nearly all of the time.
+MIN_SEARCH_SECONDS = 0.1
 
 
 def main(arguments: list[str]) -> int:
     engine, domain_path, problem_path, plan_path, verdict_path, timeout_text = arguments
+    timeout = None if timeout_text == "none" else float(timeout_text)
+    return solve_files(engine, domain_path, problem_path, plan_path, verdict_path, timeout)
+
+
+def solve_files(
+    engine: str, domain_path: str, problem_path: str, plan_path: str, verdict_path: str, timeout: float | None
+) -> int:
+    """Read, fit, solve and write the plan and the verdict; the child's exit code (the worker's answer).
+
+    ``timeout`` covers the reading and fitting too: the engine's own timeout counts its search only."""
+    started = time.monotonic()
     import unified_planning.shortcuts as shortcuts
     from unified_planning.engines.results import POSITIVE_OUTCOMES
     from unified_planning.io import PDDLReader
 
     shortcuts.get_environment().credits_stream = None
+    register_engine(engine)
     try:
         problem = PDDLReader().parse_problem(domain_path, problem_path)
     except Exception as error:  # the engine's reader rejects it: an input error, said in the log
         print(f"unified-planning cannot read the problem: {error}", file=sys.stderr)
         return CHILD_CANNOT_READ
-    timeout = None if timeout_text == "none" else float(timeout_text)
     fitted = _fit(shortcuts.get_environment(), engine, problem)
     if fitted is not None:
         problem = fitted.problem
+    if engine in FIRST_PLAN_ENGINES and problem.quality_metrics:
+        # with a metric and a timeout such an engine improves its plan until the timeout: the first one is wanted
+        problem.clear_quality_metrics()
+        print(f"{engine}: the quality metric left out (the first plan is wanted)", file=sys.stderr)
     lacking = () if fitted is None else fitted.lacking
+    if timeout is not None:
+        timeout = max(timeout - (time.monotonic() - started), MIN_SEARCH_SECONDS)
     try:
         with shortcuts.OneshotPlanner(name=engine, problem_kind=problem.kind) as planner:
             result = planner.solve(problem, timeout=timeout)
@@ -66,6 +91,15 @@ def main(arguments: list[str]) -> int:
     with open(verdict_path, "w", encoding="utf-8") as stream:
         stream.write(verdict + "\n")
     return 0
+
+
+def register_engine(engine: str) -> None:
+    """Register an engine that unified-planning's own table of engines does not list (Kairos)."""
+    if engine in REGISTERED_BY_PACKAGE:
+        import importlib
+
+        with contextlib.suppress(ImportError):  # not installed: the engine's lookup says so
+            importlib.import_module(REGISTERED_BY_PACKAGE[engine]).register()
 
 
 def _fit(environment: Any, engine: str, problem: Any) -> Fitted | None:

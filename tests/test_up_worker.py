@@ -1,0 +1,98 @@
+"""The unified-planning worker: one warm engine per run, its time limit held, dead with the tool."""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+import time
+
+import pytest
+from support import BIG_DOMAIN, SMALL_GRIPPER_DOMAIN, big_problem, process_gone, small_gripper_problem
+
+from relevance_plan.planning.planners.base import PlannerStatus
+from relevance_plan.planning.planners.registry import make_planner, warm_planners, warm_up
+from relevance_plan.planning.planners.up.adapter import engine_module_installed
+
+needs_pyperplan = pytest.mark.skipif(not engine_module_installed("pyperplan"), reason="up-pyperplan not installed")
+
+
+def _files(tmp_path, domain: str, problem: str):
+    (tmp_path / "domain.pddl").write_text(domain)
+    (tmp_path / "problem.pddl").write_text(problem)
+    return str(tmp_path / "domain.pddl"), str(tmp_path / "problem.pddl")
+
+
+@pytest.mark.planner
+@needs_pyperplan
+def test_the_attempts_of_a_run_are_served_by_one_worker(tmp_path):
+    domain, problem = _files(tmp_path, SMALL_GRIPPER_DOMAIN, small_gripper_problem())
+    planner = make_planner("up:pyperplan")
+    with warm_planners(None):
+        warm_up(planner)
+        first = planner.run(domain, problem, time_limit=60, memory_limit_mb=None)
+        second = planner.run(domain, problem, time_limit=60, memory_limit_mb=None)
+    assert first.status is second.status is PlannerStatus.SOLVED
+    assert first.plan == second.plan and len(first.plan) == 3
+    assert first.process_group == second.process_group  # the same worker answered both
+    assert process_gone(first.process_group)  # killed when the run ended
+    alone = planner.run(domain, problem, time_limit=60, memory_limit_mb=None)  # no run open: the one-shot child
+    assert alone.status is PlannerStatus.SOLVED and alone.process_group != first.process_group
+
+
+@pytest.mark.planner
+@needs_pyperplan
+def test_an_attempt_that_overruns_kills_the_worker_and_the_next_gets_a_new_one(tmp_path):
+    (tmp_path / "hard").mkdir()
+    hard = _files(tmp_path / "hard", BIG_DOMAIN, big_problem(60))
+    easy = _files(tmp_path, SMALL_GRIPPER_DOMAIN, small_gripper_problem())
+    planner = make_planner("up:pyperplan")
+    with warm_planners(None):
+        warm_up(planner)
+        warm = planner.run(*easy, time_limit=60, memory_limit_mb=None)
+        started = time.monotonic()
+        overrun = planner.run(*hard, time_limit=1.0, memory_limit_mb=None)
+        took = time.monotonic() - started
+        after = planner.run(*easy, time_limit=60, memory_limit_mb=None)
+    assert overrun.status is PlannerStatus.OUT_OF_TIME
+    assert took < 30  # the limit held (one second and the worker's grace, on a slow machine)
+    assert process_gone(overrun.process_group)
+    assert after.status is PlannerStatus.SOLVED and after.process_group not in (warm.process_group, None)
+    assert after.process_group != overrun.process_group
+
+
+WORKER_OWNER = """
+    import sys, time
+    from relevance_plan.planning.planners.registry import make_planner, warm_planners
+    from relevance_plan.planning.planners.up.pool import current_pool
+    with warm_planners(None):
+        worker = current_pool().start("pyperplan", None)
+        worker.wait_ready(time.monotonic() + 120)
+        print(worker._group.run.pgid, flush=True)
+        time.sleep(300)
+"""
+
+
+@pytest.mark.planner
+@needs_pyperplan
+def test_the_worker_dies_when_the_tool_is_killed():
+    owner = subprocess.Popen(
+        [sys.executable, "-c", textwrap.dedent(WORKER_OWNER)],
+        stdout=subprocess.PIPE,
+        text=True,
+        env={**os.environ, "PYTHONPATH": os.pathsep.join(sys.path)},
+    )
+    try:
+        group = int(owner.stdout.readline())
+        assert not process_gone(group)
+        owner.send_signal(signal.SIGKILL)
+        owner.wait()
+        deadline = time.monotonic() + 30
+        while not process_gone(group) and time.monotonic() < deadline:
+            time.sleep(0.05)
+        assert process_gone(group)
+    finally:
+        owner.kill()
+        owner.wait()
