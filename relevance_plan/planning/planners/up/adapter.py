@@ -350,12 +350,12 @@ class UnifiedPlanningPlanner:
             verdict = _read_verdict(workdir)
         if answer.starting:
             return RunOutcome(
-                PlannerStatus.OUT_OF_TIME,
-                None,
-                Plan(),
-                None,
-                answer.wall_time,
-                self.name,
+                status=PlannerStatus.OUT_OF_TIME,
+                exit_code=None,
+                plan=Plan(),
+                plan_cost=None,
+                wall_time=answer.wall_time,
+                planner=self.name,
                 process_group=answer.process_group,
                 reason=f"{self.name}: the engine was still starting at the attempt's time limit",
             )
