@@ -18,7 +18,7 @@ TYPE_CHECKING = False  # typing's own flag would import typing (the launcher's p
 if TYPE_CHECKING:
     from typing import Any
 
-__version__ = "0.10.0"
+__version__ = "0.11.0"
 
 _EXPORTS = {
     "prune": "relevance_plan.api",
