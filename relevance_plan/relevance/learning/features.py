@@ -36,6 +36,10 @@ Features = dict[int, float]  # feature index -> value (absent: 0)
 BIAS, GOAL_NAMED, GOAL_SCORE, GOAL_ZERO, PINNED = 0, 1, 2, 3, 4
 DISTANCE = 5  # one-hot: 0, 1, 2, 3, 4 or more hops, unreached (DISTANCE .. DISTANCE + 5)
 NAMED = DISTANCE + 6
+# A predicate with more initial facts than this many per object links nearly every pair of its
+# objects: it marks the positions each object fills instead of linking pairs, which would cost the
+# square of the objects and tell the model nothing a marker does not.
+HUB = 4
 NAMED_FEATURES = (
     "bias",
     "goal-named",
@@ -55,9 +59,16 @@ NAMED_FEATURES = (
 class FeatureConfig:
     iterations: int = 3
     buckets: int = 4096
+    hubs: frozenset[str] = frozenset()  # predicates marked, not linked, on every problem (see HUB)
 
     def to_json(self) -> dict[str, object]:
-        return {"kind": "wl-objects", "iterations": self.iterations, "buckets": self.buckets, "hash": "blake2b-64"}
+        return {
+            "kind": "wl-objects",
+            "iterations": self.iterations,
+            "buckets": self.buckets,
+            "hash": "blake2b-64",
+            "hubs": sorted(self.hubs),
+        }
 
 
 @dataclass(frozen=True)
@@ -89,8 +100,21 @@ def goal_facts(task: PlanningTask) -> list[tuple[str, tuple[str, ...]]]:
     return found
 
 
-def _facts(task: PlanningTask) -> Iterable[tuple[str, tuple[str, ...]]]:
+def hub_predicates(task: PlanningTask) -> frozenset[str]:
+    """Initial-state predicates of two or more arguments with more than ``HUB`` facts per object
+    (``not-eq`` between every two locations, ``above`` between every two floors)."""
+    nodes = len(task.problem.objects) + len(task.domain.constants)
+    return frozenset(
+        predicate
+        for predicate, atoms in task.init_index.by_predicate.items()
+        if atoms and len(atoms) > HUB * max(nodes, 1) and len(next(iter(atoms))) > 2
+    )
+
+
+def _facts(task: PlanningTask, hubs: frozenset[str] = frozenset()) -> Iterable[tuple[str, tuple[str, ...]]]:
     for predicate, atoms in task.init_index.by_predicate.items():
+        if predicate in hubs:
+            continue
         for atom in atoms:
             if atom[0] == predicate:
                 yield "init", atom
@@ -106,7 +130,17 @@ def object_features(task: PlanningTask, config: FeatureConfig) -> ObjectFeatures
     links: dict[str, set[tuple[int, str]]] = defaultdict(set)  # node -> {(label, neighbour)}
     predicates: dict[str, set[str]] = defaultdict(set)
     labels: dict[tuple[str, str, int, int], int] = {}
-    for kind, atom in _facts(task):
+    hubs = config.hubs | hub_predicates(task)
+    for predicate in sorted(hubs & task.init_index.by_predicate.keys()):
+        # a hub's facts link (nearly) every pair: which positions an object fills says all they say
+        atoms = task.init_index.by_predicate[predicate]
+        if not atoms:
+            continue
+        for position in range(1, len(next(iter(atoms)))):
+            for arg in {atom[position] for atom in atoms}:
+                predicates[arg].add(predicate)
+                unary[arg].add(f"init:{predicate}@{position - 1}")
+    for kind, atom in _facts(task, hubs):
         args = atom[1:]
         for arg in args:
             predicates[arg].add(atom[0])
