@@ -12,7 +12,9 @@ the geometric means (so a speed-up over an unsolved pure run is a lower bound).
 
 Scoring cost: on each test problem, ``score_problem`` once with the goal and
 once with the learned scorer (in-process, median of 3); the difference is
-what applying the model adds.
+what applying the model adds.  The same on a problem of at least
+``--scale`` objects (default 1,000) made of renamed copies of the first test
+problem side by side.
 
 The problems come from the pddlgym wheel's files, without its dependencies:
 
@@ -39,6 +41,8 @@ sys.path.insert(0, str(REPO))
 
 from relevance_plan.batch.learn import learn  # noqa: E402
 from relevance_plan.io import load_domain, load_problem, write_text_atomic  # noqa: E402
+from relevance_plan.pddl.formulas import literals  # noqa: E402
+from relevance_plan.pddl.model import Problem  # noqa: E402
 from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task  # noqa: E402
 from relevance_plan.relevance.learning.model import model_text  # noqa: E402
 from relevance_plan.relevance.scorers import PlanningTask  # noqa: E402
@@ -79,6 +83,36 @@ def scoring_seconds(domain_path: Path, problem_path: Path, scorer: str) -> float
     return statistics.median(times)
 
 
+def scaled_text(problem: Problem, least: int) -> str:
+    """Copies of ``problem`` side by side (objects renamed, goals conjoined), at least ``least`` objects."""
+    copies = max(1, -(-least // max(len(problem.objects), 1)))
+    objects, facts, goal = [], set(), []
+
+    def atom_text(atom: tuple[str, ...], suffix: str) -> str:
+        args = [f"{arg}{suffix}" if arg in problem.objects else arg for arg in atom[1:]]
+        return "(" + " ".join([atom[0], *args]) + ")"
+
+    for copy in range(copies):
+        suffix = f"_c{copy}"
+        objects += [f"{name}{suffix} - {kind}" for name, kind in problem.objects.items()]
+        facts |= {atom_text(atom, suffix) for atom in problem.init}
+        for atom, positive in literals(problem.goal):
+            goal.append(
+                atom_text((atom.predicate, *atom.args), suffix)
+                if positive
+                else f"(not {atom_text((atom.predicate, *atom.args), suffix)})"
+            )
+    return (
+        f"(define (problem scaled) (:domain {problem.domain_name})\n(:objects\n"
+        + "\n".join(objects)
+        + ")\n(:init\n"
+        + "\n".join(sorted(facts))
+        + ")\n(:goal (and\n"
+        + "\n".join(goal)
+        + ")))\n"
+    )
+
+
 def geomean(values: list[float]) -> float:
     return math.exp(sum(math.log(v) for v in values) / len(values)) if values else float("nan")
 
@@ -97,11 +131,12 @@ def run_domain(folder: Path, name: str, args: argparse.Namespace, scratch: Path)
         f" ({args.labels} labels, threshold P > {report.model.threshold:.3f})",
         flush=True,
     )
-    print(f"{'problem':<16}{'objects':>8}  " + "  ".join(f"{run:>24}" for run in RUNS) + f"  {'+scoring':>9}")
+    runs = args.runs
+    print(f"{'problem':<16}{'objects':>8}  " + "  ".join(f"{run:>24}" for run in runs) + f"  {'+scoring':>9}")
     rows = []
     for problem in tests:
         row: dict = {"problem": problem.name}
-        for run in RUNS:
+        for run in runs:
             result = plan_task(domain_path, problem, options_for(run, str(model), args.timeout))
             solved = result.status is PlanStatus.SOLVED and result.valid
             row[run] = (solved, result.wall_time, result.objects_kept, len(result.attempts))
@@ -111,7 +146,7 @@ def run_domain(folder: Path, name: str, args: argparse.Namespace, scratch: Path)
         row["added"] = learned_scoring - goal_scoring
         rows.append(row)
         cells = []
-        for run in RUNS:
+        for run in runs:
             solved, seconds, kept, attempts = row[run]
             cells.append(f"{'ok' if solved else 'FAIL':>4} {seconds:7.2f}s {kept:>5} kept {attempts}att")
         print(
@@ -119,7 +154,24 @@ def run_domain(folder: Path, name: str, args: argparse.Namespace, scratch: Path)
             + "  ".join(f"{c:>24}" for c in cells)
             + f"  {row['added']:+8.3f}s"
         )
-    return {"name": name, "learning": learning, "rows": rows, "threshold": report.model.threshold}
+    scale = scaled_scoring(domain_path, tests[0], str(model), args.scale, scratch) if tests and args.scale else None
+    if scale is not None:
+        objects, goal_seconds, learned_seconds = scale
+        print(
+            f"scoring {objects} objects (copies of {tests[0].name}): goal {goal_seconds:.3f} s,"
+            f" learned {learned_seconds:.3f} s, the model added {learned_seconds - goal_seconds:+.3f} s"
+        )
+    return {"name": name, "learning": learning, "rows": rows, "threshold": report.model.threshold, "scale": scale}
+
+
+def scaled_scoring(
+    domain_path: Path, problem_path: Path, model: str, least: int, scratch: Path
+) -> tuple[int, float, float]:
+    """Objects, goal and learned scoring seconds on copies of ``problem_path`` (``scaled_text``)."""
+    domain = load_domain(domain_path)
+    path = write_text_atomic(scratch / "scaled.pddl", scaled_text(load_problem(problem_path, domain), least))
+    objects = len(load_problem(path, domain).objects)
+    return objects, scoring_seconds(domain_path, path, "goal"), scoring_seconds(domain_path, path, f"learned:{model}")
 
 
 def seconds_of(row: dict, run: str, limit: float) -> float:
@@ -127,23 +179,39 @@ def seconds_of(row: dict, run: str, limit: float) -> float:
     return seconds if solved else max(seconds, limit)
 
 
-def summary(results: list[dict], limit: float) -> None:
+def ratios(rows: list[dict], top: str, bottom: str, limit: float) -> list[float]:
+    """top's seconds over bottom's, per problem (empty when either run was not made)."""
+    if not rows or top not in rows[0] or bottom not in rows[0]:
+        return []
+    return [seconds_of(r, top, limit) / seconds_of(r, bottom, limit) for r in rows]
+
+
+def summary(results: list[dict], limit: float, runs: list[str]) -> None:
     print("\nper domain (geometric means; an unsolved run counts at the time limit):")
     print(
-        f"{'domain':<24}{'learn s':>8}{'solved p/g/l/r':>16}{'l over pure':>12}{'l over goal':>12}{'g over pure':>12}"
+        f"{'domain':<24}{'learn s':>8}{'solved ' + '/'.join(r[0] for r in runs):>16}"
+        f"{'l over pure':>12}{'l over goal':>12}{'g over pure':>12}{'kept g/l':>14}{'attempts g/l':>14}"
     )
     over_pure, over_goal = [], []
     for result in results:
         rows = result["rows"]
-        solved = "/".join(str(sum(row[run][0] for row in rows)) for run in RUNS)
-        lp = [seconds_of(r, "pure", limit) / seconds_of(r, "learned", limit) for r in rows]
-        lg = [seconds_of(r, "goal", limit) / seconds_of(r, "learned", limit) for r in rows]
-        gp = [seconds_of(r, "pure", limit) / seconds_of(r, "goal", limit) for r in rows]
+        solved = "/".join(str(sum(row[run][0] for row in rows)) for run in runs)
+        lp, lg, gp = (
+            ratios(rows, "pure", "learned", limit),
+            ratios(rows, "goal", "learned", limit),
+            ratios(rows, "pure", "goal", limit),
+        )
         over_pure += lp
         over_goal += lg
+        kept = "/".join(
+            f"{statistics.mean(r[run][2] for r in rows):.0f}" if run in runs else "-" for run in ("goal", "learned")
+        )
+        tries = "/".join(
+            f"{statistics.mean(r[run][3] for r in rows):.1f}" if run in runs else "-" for run in ("goal", "learned")
+        )
         print(
             f"{result['name']:<24}{result['learning']:>8.1f}{solved:>16}"
-            f"{geomean(lp):>12.2f}{geomean(lg):>12.2f}{geomean(gp):>12.2f}"
+            f"{geomean(lp):>12.2f}{geomean(lg):>12.2f}{geomean(gp):>12.2f}{kept:>14}{tries:>14}"
         )
     print(f"{'all':<24}{'':>8}{'':>16}{geomean(over_pure):>12.2f}{geomean(over_goal):>12.2f}")
     added = [row["added"] for result in results for row in result["rows"]]
@@ -160,7 +228,18 @@ def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
     parser.add_argument("--train-limit", type=float, default=30.0, help="Seconds for each training planner run.")
     parser.add_argument("--labels", choices=("plan", "minimal"), default="plan")
     parser.add_argument("--seed", type=int, default=0)
-    return parser.parse_args(argv)
+    parser.add_argument(
+        "--runs", default=",".join(RUNS), help=f"Comma-separated runs of each test problem (default: {','.join(RUNS)})."
+    )
+    parser.add_argument(
+        "--scale",
+        type=int,
+        default=1000,
+        help="Also time scoring on copies of a test problem, this many objects (0: not).",
+    )
+    args = parser.parse_args(argv)
+    args.runs = [run for run in RUNS if run in args.runs.split(",")]
+    return args
 
 
 def main(argv: list[str] | None = None) -> None:
@@ -170,7 +249,7 @@ def main(argv: list[str] | None = None) -> None:
     with tempfile.TemporaryDirectory(prefix="bench-learned-") as scratch:
         for name in args.domains.split(","):
             results.append(run_domain(folder, name, args, Path(scratch)))
-    summary(results, args.timeout)
+    summary(results, args.timeout, args.runs)
 
 
 if __name__ == "__main__":

@@ -15,7 +15,7 @@ from relevance_plan.errors import ModelError
 from relevance_plan.generators.classic import generate_classic_problem
 from relevance_plan.io import load_domain
 from relevance_plan.pddl.parser import read_domain, read_problem
-from relevance_plan.relevance.learning.features import FeatureConfig, hub_predicates, object_features
+from relevance_plan.relevance.learning.features import NAMED, FeatureConfig, hub_predicates, object_features
 from relevance_plan.relevance.learning.model import load_learned_model, model_text
 from relevance_plan.relevance.learning.scorer import KEEP_AT, calibrated, score_learned
 from relevance_plan.relevance.scorers import PlanningTask
@@ -246,3 +246,16 @@ def test_learning_marks_a_hub_of_any_training_problem_on_every_problem(model_fil
     # the model file keeps them
     model = replace(load_learned_model(model_file), config=config)
     assert load_learned_model(write_file(tmp_path, "hubs.json", model_text(model))).config == config
+
+
+def test_describing_only_the_judged_objects_leaves_their_features_as_they_were():
+    task = ferry_task(ferry_text(7, size=30)[0])
+    everything = object_features(task, CONFIG)
+    judged = object_features(task, CONFIG, only_judged=True)
+    left_out = {n for n in task.problem.objects if n in task.goal_objects or not everything.goal_scores.get(n)}
+    assert left_out and len(left_out) < len(task.problem.objects)
+    for name, vector in judged.vectors.items():
+        if name in left_out:
+            assert all(index < NAMED for index in vector)
+        else:
+            assert vector == everything.vectors[name]
