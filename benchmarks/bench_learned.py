@@ -34,6 +34,7 @@ import statistics
 import sys
 import tempfile
 import time
+from collections import Counter
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parent.parent
@@ -149,7 +150,8 @@ def run_domain(folder: Path, name: str, args: argparse.Namespace, scratch: Path)
                 first_kept[run] = result.selection.kept
             if run == "pure" and solved:
                 domain = load_domain(domain_path)
-                needed = plan_objects(PlanningTask(domain, load_problem(problem, domain)), result.plan)
+                pure_task = PlanningTask(domain, load_problem(problem, domain))
+                needed = plan_objects(pure_task, result.plan)
         goal_scoring = scoring_seconds(domain_path, problem, "goal")
         learned_scoring = scoring_seconds(domain_path, problem, f"learned:{model}")
         row["added"] = learned_scoring - goal_scoring
@@ -169,6 +171,7 @@ def run_domain(folder: Path, name: str, args: argparse.Namespace, scratch: Path)
                 f"{'':<16}the full problem's plan uses {len(needed)} objects (with closure); first selections: "
                 + ", ".join(
                     f"{run} keeps {len(kept & needed)} of them and {len(kept - needed)} others"
+                    + missed(pure_task, needed - kept)
                     for run, kept in first_kept.items()
                 )
             )
@@ -180,6 +183,14 @@ def run_domain(folder: Path, name: str, args: argparse.Namespace, scratch: Path)
             f" learned {learned_seconds:.3f} s, the model added {learned_seconds - goal_seconds:+.3f} s (CPU)"
         )
     return {"name": name, "learning": learning, "rows": rows, "threshold": report.model.threshold, "scale": scale}
+
+
+def missed(task: PlanningTask, names: frozenset[str]) -> str:
+    """' (not: 13 airplane)': the types of the plan's objects a first selection left out."""
+    if not names:
+        return ""
+    kinds = Counter(task.typing.problem.objects[name] for name in names)
+    return " (not: " + ", ".join(f"{count} {kind}" for kind, count in sorted(kinds.items())) + ")"
 
 
 def scaled_scoring(
