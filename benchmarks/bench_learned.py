@@ -10,9 +10,11 @@ loop's wall time (reading, scoring, pruning, planner processes, validation),
 without interpreter start-up.  An unsolved run counts at the time limit in
 the geometric means (so a speed-up over an unsolved pure run is a lower bound).
 
-Scoring cost: on each test problem, ``score_problem`` once with the goal and
-once with the learned scorer (in-process, median of 3); the difference is
-what applying the model adds.
+Scoring cost: on each test problem, ``score_problem`` with the goal and with
+the learned scorer (in-process CPU seconds, median of 5); the difference is
+what applying the model adds.  The same on a problem of at least
+``--scale`` objects (default 1,000) made of renamed copies of the first test
+problem side by side.
 
 The problems come from the pddlgym wheel's files, without its dependencies:
 
@@ -32,13 +34,16 @@ import statistics
 import sys
 import tempfile
 import time
+from collections import Counter
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))
 
-from relevance_plan.batch.learn import learn  # noqa: E402
+from relevance_plan.batch.learn import learn, plan_objects  # noqa: E402
 from relevance_plan.io import load_domain, load_problem, write_text_atomic  # noqa: E402
+from relevance_plan.pddl.formulas import literals  # noqa: E402
+from relevance_plan.pddl.model import Problem  # noqa: E402
 from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task  # noqa: E402
 from relevance_plan.relevance.learning.model import model_text  # noqa: E402
 from relevance_plan.relevance.scorers import PlanningTask  # noqa: E402
@@ -69,14 +74,46 @@ def options_for(run: str, model: str, timeout: float) -> PlanOptions:
 
 
 def scoring_seconds(domain_path: Path, problem_path: Path, scorer: str) -> float:
+    """CPU seconds of scoring the problem in this process (median of 5): other processes' load on a
+    shared machine stretches wall time, not this."""
     times = []
-    for _ in range(3):
+    for _ in range(5):
         domain = load_domain(domain_path)
         task = PlanningTask(domain, load_problem(problem_path, domain))
-        started = time.perf_counter()
+        started = time.process_time()
         score_problem(task, ScoringOptions(scorer=scorer))
-        times.append(time.perf_counter() - started)
+        times.append(time.process_time() - started)
     return statistics.median(times)
+
+
+def scaled_text(problem: Problem, least: int) -> str:
+    """Copies of ``problem`` side by side (objects renamed, goals conjoined), at least ``least`` objects."""
+    copies = max(1, -(-least // max(len(problem.objects), 1)))
+    objects, facts, goal = [], set(), []
+
+    def atom_text(atom: tuple[str, ...], suffix: str) -> str:
+        args = [f"{arg}{suffix}" if arg in problem.objects else arg for arg in atom[1:]]
+        return "(" + " ".join([atom[0], *args]) + ")"
+
+    for copy in range(copies):
+        suffix = f"_c{copy}"
+        objects += [f"{name}{suffix} - {kind}" for name, kind in problem.objects.items()]
+        facts |= {atom_text(atom, suffix) for atom in problem.init}
+        for atom, positive in literals(problem.goal):
+            goal.append(
+                atom_text((atom.predicate, *atom.args), suffix)
+                if positive
+                else f"(not {atom_text((atom.predicate, *atom.args), suffix)})"
+            )
+    return (
+        f"(define (problem scaled) (:domain {problem.domain_name})\n(:objects\n"
+        + "\n".join(objects)
+        + ")\n(:init\n"
+        + "\n".join(sorted(facts))
+        + ")\n(:goal (and\n"
+        + "\n".join(goal)
+        + ")))\n"
+    )
 
 
 def geomean(values: list[float]) -> float:
@@ -97,21 +134,30 @@ def run_domain(folder: Path, name: str, args: argparse.Namespace, scratch: Path)
         f" ({args.labels} labels, threshold P > {report.model.threshold:.3f})",
         flush=True,
     )
-    print(f"{'problem':<16}{'objects':>8}  " + "  ".join(f"{run:>24}" for run in RUNS) + f"  {'+scoring':>9}")
+    runs = args.runs
+    print(f"{'problem':<16}{'objects':>8}  " + "  ".join(f"{run:>24}" for run in runs) + f"  {'+scoring':>9}")
     rows = []
     for problem in tests:
         row: dict = {"problem": problem.name}
-        for run in RUNS:
+        first_kept: dict[str, frozenset[str]] = {}
+        needed: frozenset[str] | None = None
+        for run in runs:
             result = plan_task(domain_path, problem, options_for(run, str(model), args.timeout))
             solved = result.status is PlanStatus.SOLVED and result.valid
             row[run] = (solved, result.wall_time, result.objects_kept, len(result.attempts))
             row["objects"] = result.objects_total
+            if result.selection is not None:
+                first_kept[run] = result.selection.kept
+            if run == "pure" and solved:
+                domain = load_domain(domain_path)
+                pure_task = PlanningTask(domain, load_problem(problem, domain))
+                needed = plan_objects(pure_task, result.plan)
         goal_scoring = scoring_seconds(domain_path, problem, "goal")
         learned_scoring = scoring_seconds(domain_path, problem, f"learned:{model}")
         row["added"] = learned_scoring - goal_scoring
         rows.append(row)
         cells = []
-        for run in RUNS:
+        for run in runs:
             solved, seconds, kept, attempts = row[run]
             cells.append(f"{'ok' if solved else 'FAIL':>4} {seconds:7.2f}s {kept:>5} kept {attempts}att")
         print(
@@ -119,7 +165,42 @@ def run_domain(folder: Path, name: str, args: argparse.Namespace, scratch: Path)
             + "  ".join(f"{c:>24}" for c in cells)
             + f"  {row['added']:+8.3f}s"
         )
-    return {"name": name, "learning": learning, "rows": rows, "threshold": report.model.threshold}
+        if needed is not None:
+            # the objects pure Fast Downward's plan names, with their closure, against each first selection
+            print(
+                f"{'':<16}the full problem's plan uses {len(needed)} objects (with closure); first selections: "
+                + ", ".join(
+                    f"{run} keeps {len(kept & needed)} of them and {len(kept - needed)} others"
+                    + missed(pure_task, needed - kept)
+                    for run, kept in first_kept.items()
+                )
+            )
+    scale = scaled_scoring(domain_path, tests[0], str(model), args.scale, scratch) if tests and args.scale else None
+    if scale is not None:
+        objects, goal_seconds, learned_seconds = scale
+        print(
+            f"scoring {objects} objects (copies of {tests[0].name}): goal {goal_seconds:.3f} s,"
+            f" learned {learned_seconds:.3f} s, the model added {learned_seconds - goal_seconds:+.3f} s (CPU)"
+        )
+    return {"name": name, "learning": learning, "rows": rows, "threshold": report.model.threshold, "scale": scale}
+
+
+def missed(task: PlanningTask, names: frozenset[str]) -> str:
+    """' (not: 13 airplane)': the types of the plan's objects a first selection left out."""
+    if not names:
+        return ""
+    kinds = Counter(task.typing.problem.objects[name] for name in names)
+    return " (not: " + ", ".join(f"{count} {kind}" for kind, count in sorted(kinds.items())) + ")"
+
+
+def scaled_scoring(
+    domain_path: Path, problem_path: Path, model: str, least: int, scratch: Path
+) -> tuple[int, float, float]:
+    """Objects, goal and learned scoring seconds on copies of ``problem_path`` (``scaled_text``)."""
+    domain = load_domain(domain_path)
+    path = write_text_atomic(scratch / "scaled.pddl", scaled_text(load_problem(problem_path, domain), least))
+    objects = len(load_problem(path, domain).objects)
+    return objects, scoring_seconds(domain_path, path, "goal"), scoring_seconds(domain_path, path, f"learned:{model}")
 
 
 def seconds_of(row: dict, run: str, limit: float) -> float:
@@ -127,28 +208,44 @@ def seconds_of(row: dict, run: str, limit: float) -> float:
     return seconds if solved else max(seconds, limit)
 
 
-def summary(results: list[dict], limit: float) -> None:
+def ratios(rows: list[dict], top: str, bottom: str, limit: float) -> list[float]:
+    """top's seconds over bottom's, per problem (empty when either run was not made)."""
+    if not rows or top not in rows[0] or bottom not in rows[0]:
+        return []
+    return [seconds_of(r, top, limit) / seconds_of(r, bottom, limit) for r in rows]
+
+
+def summary(results: list[dict], limit: float, runs: list[str]) -> None:
     print("\nper domain (geometric means; an unsolved run counts at the time limit):")
     print(
-        f"{'domain':<24}{'learn s':>8}{'solved p/g/l/r':>16}{'l over pure':>12}{'l over goal':>12}{'g over pure':>12}"
+        f"{'domain':<24}{'learn s':>8}{'solved ' + '/'.join(r[0] for r in runs):>16}"
+        f"{'l over pure':>12}{'l over goal':>12}{'g over pure':>12}{'kept g/l':>14}{'attempts g/l':>14}"
     )
     over_pure, over_goal = [], []
     for result in results:
         rows = result["rows"]
-        solved = "/".join(str(sum(row[run][0] for row in rows)) for run in RUNS)
-        lp = [seconds_of(r, "pure", limit) / seconds_of(r, "learned", limit) for r in rows]
-        lg = [seconds_of(r, "goal", limit) / seconds_of(r, "learned", limit) for r in rows]
-        gp = [seconds_of(r, "pure", limit) / seconds_of(r, "goal", limit) for r in rows]
+        solved = "/".join(str(sum(row[run][0] for row in rows)) for run in runs)
+        lp, lg, gp = (
+            ratios(rows, "pure", "learned", limit),
+            ratios(rows, "goal", "learned", limit),
+            ratios(rows, "pure", "goal", limit),
+        )
         over_pure += lp
         over_goal += lg
+        kept = "/".join(
+            f"{statistics.mean(r[run][2] for r in rows):.0f}" if run in runs else "-" for run in ("goal", "learned")
+        )
+        tries = "/".join(
+            f"{statistics.mean(r[run][3] for r in rows):.1f}" if run in runs else "-" for run in ("goal", "learned")
+        )
         print(
             f"{result['name']:<24}{result['learning']:>8.1f}{solved:>16}"
-            f"{geomean(lp):>12.2f}{geomean(lg):>12.2f}{geomean(gp):>12.2f}"
+            f"{geomean(lp):>12.2f}{geomean(lg):>12.2f}{geomean(gp):>12.2f}{kept:>14}{tries:>14}"
         )
     print(f"{'all':<24}{'':>8}{'':>16}{geomean(over_pure):>12.2f}{geomean(over_goal):>12.2f}")
     added = [row["added"] for result in results for row in result["rows"]]
     if added:
-        print(f"applying the model added {statistics.median(added):+.3f} s (median), {max(added):+.3f} s (most)")
+        print(f"applying the model added {statistics.median(added):+.3f} s (median), {max(added):+.3f} s (most) of CPU")
 
 
 def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
@@ -160,7 +257,18 @@ def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
     parser.add_argument("--train-limit", type=float, default=30.0, help="Seconds for each training planner run.")
     parser.add_argument("--labels", choices=("plan", "minimal"), default="plan")
     parser.add_argument("--seed", type=int, default=0)
-    return parser.parse_args(argv)
+    parser.add_argument(
+        "--runs", default=",".join(RUNS), help=f"Comma-separated runs of each test problem (default: {','.join(RUNS)})."
+    )
+    parser.add_argument(
+        "--scale",
+        type=int,
+        default=1000,
+        help="Also time scoring on copies of a test problem, this many objects (0: not).",
+    )
+    args = parser.parse_args(argv)
+    args.runs = [run for run in RUNS if run in args.runs.split(",")]
+    return args
 
 
 def main(argv: list[str] | None = None) -> None:
@@ -170,7 +278,7 @@ def main(argv: list[str] | None = None) -> None:
     with tempfile.TemporaryDirectory(prefix="bench-learned-") as scratch:
         for name in args.domains.split(","):
             results.append(run_domain(folder, name, args, Path(scratch)))
-    summary(results, args.timeout)
+    summary(results, args.timeout, args.runs)
 
 
 if __name__ == "__main__":

@@ -9,13 +9,13 @@ from pathlib import Path
 
 import pytest
 
-from relevance_plan.batch.learn import LabelledProblem, fit_model
+from relevance_plan.batch.learn import LabelledProblem, fit_model, with_hubs
 from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.errors import ModelError
 from relevance_plan.generators.classic import generate_classic_problem
 from relevance_plan.io import load_domain
-from relevance_plan.pddl.parser import read_problem
-from relevance_plan.relevance.learning.features import FeatureConfig, object_features
+from relevance_plan.pddl.parser import read_domain, read_problem
+from relevance_plan.relevance.learning.features import NAMED, FeatureConfig, hub_predicates, object_features
 from relevance_plan.relevance.learning.model import load_learned_model, model_text
 from relevance_plan.relevance.learning.scorer import KEEP_AT, calibrated, score_learned
 from relevance_plan.relevance.scorers import PlanningTask
@@ -181,3 +181,81 @@ def test_learn_then_plan_with_the_model_gives_a_plan_valid_on_the_original(tmp_p
     result = json.loads(out)
     assert result["status"] == "solved" and result["valid"] and result["validation"] == "valid"
     assert result["objects_kept"] < result["objects_total"]
+
+
+SHUTTLE_DOMAIN = """(define (domain shuttle)
+  (:requirements :strips :typing)
+  (:types place crate)
+  (:predicates (at ?c - crate ?p - place) (here ?p - place) (different ?a - place ?b - place) (dock ?p - place))
+  (:action go :parameters (?a - place ?b - place)
+    :precondition (and (here ?a) (different ?a ?b)) :effect (and (here ?b) (not (here ?a)))))
+"""
+
+
+def shuttle_task(places: int, crates: int, skip: tuple[int, int] | None = None, reverse: bool = False) -> PlanningTask:
+    """Places linked pairwise by ``different`` (a hub predicate), crates at some of them; ``skip``
+    leaves out one ``different`` fact; ``reverse`` lists objects and facts backwards."""
+    names = [f"p{i}" for i in range(places)]
+    objects = [f"{n} - place" for n in names] + [f"c{i} - crate" for i in range(crates)]
+    facts = ["(here p0)", "(dock p1)"] + [f"(at c{i} p{i % places})" for i in range(crates)]
+    facts += [f"(different p{a} p{b})" for a in range(places) for b in range(places) if a != b and (a, b) != skip]
+    if reverse:
+        objects, facts = objects[::-1], facts[::-1]
+    text = (
+        "(define (problem shuttle-1) (:domain shuttle)\n(:objects "
+        + " ".join(objects)
+        + ")\n(:init "
+        + " ".join(facts)
+        + ")\n(:goal (at c0 p1)))\n"
+    )
+    domain = read_domain(SHUTTLE_DOMAIN, "shuttle.pddl")
+    return PlanningTask(domain, read_problem(text, domain, "shuttle-1.pddl"))
+
+
+def test_a_predicate_linking_every_pair_is_a_hub_and_a_sparse_one_is_not():
+    assert hub_predicates(shuttle_task(12, 3)) == {"different"}
+    assert hub_predicates(shuttle_task(3, 30)) == frozenset()  # 6 facts among 33 objects
+
+
+def test_a_hub_marks_positions_instead_of_linking_pairs():
+    # every place still fills both positions of 'different' without one of its facts: nothing changes
+    full = object_features(shuttle_task(12, 3), CONFIG).vectors
+    assert object_features(shuttle_task(12, 3, skip=(4, 7)), CONFIG).vectors == full
+    # a predicate the model treats as a hub is one on a small problem too
+    small = shuttle_task(3, 30)
+    linked = object_features(small, CONFIG).vectors
+    marked = object_features(small, replace(CONFIG, hubs=frozenset({"different"}))).vectors
+    assert linked != marked
+    assert (
+        object_features(shuttle_task(3, 30, skip=(1, 2)), replace(CONFIG, hubs=frozenset({"different"}))).vectors
+        == marked
+    )
+
+
+def test_features_with_a_hub_do_not_depend_on_the_order_of_objects_or_facts():
+    assert (
+        object_features(shuttle_task(15, 6), CONFIG).vectors
+        == object_features(shuttle_task(15, 6, reverse=True), CONFIG).vectors
+    )
+
+
+def test_learning_marks_a_hub_of_any_training_problem_on_every_problem(model_file, tmp_path):
+    domain = read_domain(SHUTTLE_DOMAIN, "shuttle.pddl")
+    config = with_hubs(CONFIG, domain, [shuttle_task(3, 30).problem, shuttle_task(12, 3).problem])
+    assert config.hubs == {"different"}
+    # the model file keeps them
+    model = replace(load_learned_model(model_file), config=config)
+    assert load_learned_model(write_file(tmp_path, "hubs.json", model_text(model))).config == config
+
+
+def test_describing_only_the_judged_objects_leaves_their_features_as_they_were():
+    task = ferry_task(ferry_text(7, size=30)[0])
+    everything = object_features(task, CONFIG)
+    judged = object_features(task, CONFIG, only_judged=True)
+    left_out = {n for n in task.problem.objects if n in task.goal_objects or not everything.goal_scores.get(n)}
+    assert left_out and len(left_out) < len(task.problem.objects)
+    for name, vector in judged.vectors.items():
+        if name in left_out:
+            assert all(index < NAMED for index in vector)
+        else:
+            assert vector == everything.vectors[name]

@@ -32,7 +32,7 @@ from pathlib import Path
 
 from relevance_plan.errors import DomainMismatchError, UsageError
 from relevance_plan.io import load_domain, load_problem, write_text_atomic
-from relevance_plan.pddl.model import Domain
+from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.plans import Plan
 from relevance_plan.planning.planners.base import PlannerStatus
 from relevance_plan.planning.planners.registry import DEFAULT_PLANNER_CONFIG, make_planner
@@ -44,6 +44,7 @@ from relevance_plan.relevance.learning.features import (
     NAMED_FEATURES,
     FeatureConfig,
     Features,
+    hub_predicates,
     object_features,
 )
 from relevance_plan.relevance.learning.model import LearnedModel, domain_signature
@@ -204,8 +205,8 @@ def learn(
         raise UsageError("learn needs at least one training problem")
     started = time.perf_counter()
     domain = load_domain(domain_path)
-    for path in problem_paths:  # all read before any planning: another domain's problem stops the run at once
-        _check_domain(domain, path)
+    # all read before any planning: another domain's problem stops the run at once
+    config = with_hubs(config, domain, [_check_domain(domain, path) for path in problem_paths])
     labelled: list[LabelledProblem] = []
     skipped: list[tuple[str, str]] = []
     with tempfile.TemporaryDirectory(prefix="relevance-plan-learn-") as scratch:
@@ -224,12 +225,22 @@ def learn(
     return _report(domain, labelled, skipped, config, labels, seed, started)
 
 
-def _check_domain(domain: Domain, path: str | os.PathLike[str]) -> None:
+def _check_domain(domain: Domain, path: str | os.PathLike[str]) -> Problem:
     problem = load_problem(path, domain)
     if problem.domain_name != domain.name:
         raise DomainMismatchError(
             f"problem is for domain '{problem.domain_name}', not '{domain.name}'", path=os.fspath(path)
         )
+    return problem
+
+
+def with_hubs(config: FeatureConfig, domain: Domain, problems: Iterable[Problem]) -> FeatureConfig:
+    """``config`` marking the predicates that are hubs on any training problem on every problem, so
+    that small problems (where they may link few pairs) and large ones describe objects alike."""
+    hubs = set(config.hubs)
+    for problem in problems:
+        hubs |= hub_predicates(PlanningTask(domain, problem))
+    return replace(config, hubs=frozenset(hubs))
 
 
 def _report(
@@ -281,8 +292,7 @@ def learn_from_store(
         steps = json.loads(row["result_json"]).get("plan") or []
         if steps:
             plans[path] = "\n".join(steps)
-    for path in plans:
-        _check_domain(domain, path)
+    config = with_hubs(config, domain, [_check_domain(domain, path) for path in plans])
     labelled: list[LabelledProblem] = []
     skipped = [(os.fspath(p), "no solved run in the store") for p in problem_paths if os.fspath(p) not in plans]
     with tempfile.TemporaryDirectory(prefix="relevance-plan-learn-") as scratch:

@@ -36,6 +36,10 @@ Features = dict[int, float]  # feature index -> value (absent: 0)
 BIAS, GOAL_NAMED, GOAL_SCORE, GOAL_ZERO, PINNED = 0, 1, 2, 3, 4
 DISTANCE = 5  # one-hot: 0, 1, 2, 3, 4 or more hops, unreached (DISTANCE .. DISTANCE + 5)
 NAMED = DISTANCE + 6
+# A predicate with more initial facts than this many per object links nearly every pair of its
+# objects: it marks the positions each object fills instead of linking pairs, which would cost the
+# square of the objects and tell the model nothing a marker does not.
+HUB = 4
 NAMED_FEATURES = (
     "bias",
     "goal-named",
@@ -55,9 +59,16 @@ NAMED_FEATURES = (
 class FeatureConfig:
     iterations: int = 3
     buckets: int = 4096
+    hubs: frozenset[str] = frozenset()  # predicates marked, not linked, on every problem (see HUB)
 
     def to_json(self) -> dict[str, object]:
-        return {"kind": "wl-objects", "iterations": self.iterations, "buckets": self.buckets, "hash": "blake2b-64"}
+        return {
+            "kind": "wl-objects",
+            "iterations": self.iterations,
+            "buckets": self.buckets,
+            "hash": "blake2b-64",
+            "hubs": sorted(self.hubs),
+        }
 
 
 @dataclass(frozen=True)
@@ -89,16 +100,33 @@ def goal_facts(task: PlanningTask) -> list[tuple[str, tuple[str, ...]]]:
     return found
 
 
-def _facts(task: PlanningTask) -> Iterable[tuple[str, tuple[str, ...]]]:
+def hub_predicates(task: PlanningTask) -> frozenset[str]:
+    """Initial-state predicates of two or more arguments with more than ``HUB`` facts per object
+    (``not-eq`` between every two locations, ``above`` between every two floors)."""
+    nodes = len(task.problem.objects) + len(task.domain.constants)
+    return frozenset(
+        predicate
+        for predicate, atoms in task.init_index.by_predicate.items()
+        if atoms and len(atoms) > HUB * max(nodes, 1) and len(next(iter(atoms))) > 2
+    )
+
+
+def _facts(task: PlanningTask, hubs: frozenset[str] = frozenset()) -> Iterable[tuple[str, tuple[str, ...]]]:
     for predicate, atoms in task.init_index.by_predicate.items():
+        if predicate in hubs:
+            continue
         for atom in atoms:
             if atom[0] == predicate:
                 yield "init", atom
     yield from goal_facts(task)
 
 
-def object_features(task: PlanningTask, config: FeatureConfig) -> ObjectFeatures:
-    """The features of every object of ``task`` (``FeatureConfig`` says how many rounds and slots)."""
+def object_features(task: PlanningTask, config: FeatureConfig, only_judged: bool = False) -> ObjectFeatures:
+    """The features of every object of ``task`` (``FeatureConfig`` says how many rounds and slots).
+
+    With ``only_judged``, the objects a model never judges (the goal's, and those the goal scorer
+    rules out) get their named features only: the scorer decides them without the model.
+    """
     domain, problem = task.typing.domain, task.typing.problem
     objects = problem.objects
     nodes = set(objects) | set(domain.constants)
@@ -106,7 +134,17 @@ def object_features(task: PlanningTask, config: FeatureConfig) -> ObjectFeatures
     links: dict[str, set[tuple[int, str]]] = defaultdict(set)  # node -> {(label, neighbour)}
     predicates: dict[str, set[str]] = defaultdict(set)
     labels: dict[tuple[str, str, int, int], int] = {}
-    for kind, atom in _facts(task):
+    hubs = config.hubs | hub_predicates(task)
+    for predicate in sorted(hubs & task.init_index.by_predicate.keys()):
+        # a hub's facts link (nearly) every pair: which positions an object fills says all they say
+        atoms = task.init_index.by_predicate[predicate]
+        if not atoms:
+            continue
+        for position in range(1, len(next(iter(atoms)))):
+            for arg in {atom[position] for atom in atoms}:
+                predicates[arg].add(predicate)
+                unary[arg].add(f"init:{predicate}@{position - 1}")
+    for kind, atom in _facts(task, hubs):
         args = atom[1:]
         for arg in args:
             predicates[arg].add(atom[0])
@@ -123,10 +161,11 @@ def object_features(task: PlanningTask, config: FeatureConfig) -> ObjectFeatures
                     links[here].add((label, there))
     task.check_time("describing the objects")
     goal_named = task.goal_objects
-    types = {
-        name: domain.ancestors(objects[name]) if name in objects else domain.ancestors(domain.constants[name])
-        for name in nodes
-    }
+    ancestors: dict[str, tuple[str, ...]] = {}
+    types = {}
+    for name in nodes:
+        declared = objects[name] if name in objects else domain.constants[name]
+        types[name] = ancestors.get(declared) or ancestors.setdefault(declared, domain.ancestors(declared))
     # a constant is the same object in every problem of the domain: its name is part of its colour
     colour = {
         name: stable_hash(
@@ -135,33 +174,63 @@ def object_features(task: PlanningTask, config: FeatureConfig) -> ObjectFeatures
         )
         for name in nodes
     }
-    vectors: dict[str, Features] = {name: {} for name in objects}
-    for name in objects:
-        _add(vectors[name], _bucket(f"type:{types[name][0]}", config), 1.0)
-        for ancestor in types[name][1:]:
-            _add(vectors[name], _bucket(f"ancestor:{ancestor}", config), 1.0)
-    buckets: dict[tuple[int, int, int], int] = {}  # (round, label, colour) -> slot, each hashed once
-    for round_number in range(config.iterations + 1):
-        last = round_number == config.iterations
-        seen: dict[str, Counter[tuple[int, int]]] = {}
-        for name in nodes if not last else objects:
-            seen[name] = Counter((label, colour[other]) for label, other in links[name])
-        for name in objects:
-            vector = vectors[name]
-            _add(vector, _bucket(f"wl{round_number}:{colour[name]}", config), 1.0)
-            if last:
-                continue
-            for (label, shade), count in seen[name].items():
-                slot = buckets.get((round_number, label, shade))
-                if slot is None:
-                    slot = buckets[(round_number, label, shade)] = _bucket(f"nb{round_number}:{label}:{shade}", config)
-                _add(vector, slot, math.log1p(count))
-        if last:
-            break
-        colour = {name: stable_hash(repr((colour[name], sorted(seen[name])))) for name in nodes}
-        task.check_time("describing the objects")
     goal_result = score_by_goal(task, ScoreRequest())
     goal_scores = goal_result.element_scores
+    # Objects alike so far get the same features and the same next colour: each distinct
+    # (colour, neighbourhood) is hashed once, which on large problems is most of the work saved.
+    described = [
+        name for name in objects if not only_judged or (name not in goal_named and goal_scores.get(name, 0.0) != 0.0)
+    ]
+    type_slots: dict[tuple[str, ...], tuple[int, ...]] = {}
+    vectors: dict[str, Features] = {name: {} for name in objects}
+    for name in described:
+        slots = type_slots.get(types[name])
+        if slots is None:
+            first, *rest = types[name]
+            slots = type_slots[types[name]] = (
+                _bucket(f"type:{first}", config),
+                *(_bucket(f"ancestor:{ancestor}", config) for ancestor in rest),
+            )
+        vector = vectors[name]
+        for slot in slots:
+            _add(vector, slot, 1.0)
+    adjacent = {name: sorted(links[name]) for name in nodes}
+    contributions: dict[tuple[int, tuple[tuple[int, int], ...]], tuple[tuple[int, float], ...]] = {}
+    refined: dict[tuple[int, tuple[tuple[int, int], ...]], int] = {}
+    for round_number in range(config.iterations + 1):
+        last = round_number == config.iterations
+        # each node's neighbourhood: the sorted (link label, neighbour colour) pairs, repeats kept
+        seen = {
+            name: tuple(sorted([(label, colour[other]) for label, other in adjacent[name]]))
+            for name in (described if last else nodes)
+        }
+        contributions.clear()
+        for name in described:
+            key = (colour[name], () if last else seen[name])
+            found = contributions.get(key)
+            if found is None:
+                found = contributions[key] = (
+                    (_bucket(f"wl{round_number}:{colour[name]}", config), 1.0),
+                    *(
+                        (_bucket(f"nb{round_number}:{label}:{shade}", config), math.log1p(count))
+                        for (label, shade), count in Counter(key[1]).items()
+                    ),
+                )
+            vector = vectors[name]
+            for slot, value in found:
+                _add(vector, slot, value)
+        if last:
+            break
+        new_colour = {}
+        for name in nodes:
+            key = (colour[name], seen[name])
+            shade = refined.get(key)
+            if shade is None:
+                # the set of pairs, not their counts: forty packages at a place look like four
+                shade = refined[key] = stable_hash(repr((key[0], sorted(set(key[1])))))
+            new_colour[name] = shade
+        colour = new_colour
+        task.check_time("describing the objects")
     distance = task.goal_distance
     pinned = task.pinned_objects
     for name in objects:

@@ -129,7 +129,9 @@ def _from_json(data: Any, path: str) -> LearnedModel:
             path=path,
         )
     features = data["features"]
-    config = FeatureConfig(int(features["iterations"]), int(features["buckets"]))
+    config = FeatureConfig(
+        int(features["iterations"]), int(features["buckets"]), frozenset(str(h) for h in features.get("hubs", ()))
+    )
     if not 0 <= config.iterations <= 8 or not 1 <= config.buckets <= 1 << 24:
         raise ValueError("feature configuration out of range")
     named = data["weights"]["named"]

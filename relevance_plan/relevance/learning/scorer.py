@@ -32,7 +32,7 @@ def calibrated(probability: float, threshold: float) -> float:
 
 
 def score_learned(task: PlanningTask, model: LearnedModel) -> ScoreResult:
-    features = object_features(task, model.config)
+    features = object_features(task, model.config, only_judged=model.respect_goal_zero)
     task.check_time("scoring the objects")
     goal_objects = task.goal_objects
     scores: dict[str, float] = {}
