@@ -206,14 +206,14 @@ def object_features(task: PlanningTask, config: FeatureConfig, only_judged: bool
         }
         contributions.clear()
         for name in described:
-            key = (colour[name], () if last else seen[name])
-            found = contributions.get(key)
+            seen_key = (colour[name], () if last else seen[name])
+            found = contributions.get(seen_key)
             if found is None:
-                found = contributions[key] = (
+                found = contributions[seen_key] = (
                     (_bucket(f"wl{round_number}:{colour[name]}", config), 1.0),
                     *(
                         (_bucket(f"nb{round_number}:{label}:{shade}", config), math.log1p(count))
-                        for (label, shade), count in Counter(key[1]).items()
+                        for (label, shade), count in Counter(seen_key[1]).items()
                     ),
                 )
             vector = vectors[name]
@@ -223,11 +223,11 @@ def object_features(task: PlanningTask, config: FeatureConfig, only_judged: bool
             break
         new_colour = {}
         for name in nodes:
-            key = (colour[name], seen[name])
-            shade = refined.get(key)
+            seen_key = (colour[name], seen[name])
+            shade = refined.get(seen_key)
             if shade is None:
                 # the set of pairs, not their counts: forty packages at a place look like four
-                shade = refined[key] = stable_hash(repr((key[0], sorted(set(key[1])))))
+                shade = refined[seen_key] = stable_hash(repr((seen_key[0], sorted(set(seen_key[1])))))
             new_colour[name] = shade
         colour = new_colour
         task.check_time("describing the objects")
