@@ -236,3 +236,37 @@ def test_the_makespan_ends_at_the_last_step_not_at_a_later_timed_literal(tmp_pat
     builtin, val = timed_verdicts(tmp_path, 0.5, "0.000: (mark) [0.500]\n1.000: (finish) [2.000]")
     assert builtin.valid and val.valid, (builtin.message, val.message)
     assert builtin.metric == pytest.approx(val.metric) == 3
+
+
+STRICT_DOMAIN = """
+(define (domain strict)
+  (:requirements :strips :numeric-fluents)
+  (:predicates (done))
+  (:functions (space) (limit))
+  (:action above :parameters () :precondition (> (space) 0) :effect (done))
+  (:action below :parameters () :precondition (< (space) (limit)) :effect (done)))
+"""
+
+
+@pytest.mark.parametrize("step", ["(above)", "(below)"])
+def test_a_strict_comparison_between_equal_values_fails_where_val_lets_it_pass(tmp_path, step):
+    # VAL reads > as >= and < as <= (settlers' load with no space left, openstacks' start-order
+    # with every stack in use); the builtin simulator keeps PDDL's strict comparison.
+    domain_path = write_file(tmp_path, "domain.pddl", STRICT_DOMAIN)
+    problem_path = write_file(
+        tmp_path,
+        "problem.pddl",
+        "(define (problem p) (:domain strict) (:init (= (space) 0) (= (limit) 0)) (:goal (done)))",
+    )
+    domain, problem = load_task(domain_path, problem_path)
+    builtin, val = verdicts(domain, problem, read_plan(step))
+    assert not builtin.valid and builtin.failed_step == 1
+    assert val.valid  # a VAL quirk, documented in docs/validation.md
+    positive = write_file(
+        tmp_path,
+        "positive.pddl",
+        "(define (problem p) (:domain strict) (:init (= (space) 1) (= (limit) 2)) (:goal (done)))",
+    )
+    _, problem = load_task(domain_path, positive)
+    builtin, val = verdicts(domain, problem, read_plan(step))
+    assert builtin.valid and val.valid
