@@ -42,7 +42,7 @@ from pathlib import Path
 from relevance_plan.errors import RelevancePlanError
 from relevance_plan.io import find_suite_problems, load_task
 from relevance_plan.pddl.model import Domain, Problem, all_objects
-from relevance_plan.pddl.plans import Plan
+from relevance_plan.pddl.plans import Plan, format_plan
 from relevance_plan.planning.planners.registry import make_planner
 from relevance_plan.planning.validate import (
     ValidationResult,
@@ -250,6 +250,8 @@ def run(args) -> dict:
             if judge_up is not None:
                 case.verdicts["up"] = judge_up(candidate)
             cases.append(case)
+            if args.plans_dir:
+                write_case(Path(args.plans_dir), name, case_name, candidate, item)
         mine = [c for c in cases if c.domain == name and c.track == track]
         found = mine[0].verdicts
         plans.append(
@@ -269,6 +271,14 @@ def run(args) -> dict:
             file=sys.stderr,
         )
     return summarize(cases, skipped, plans)
+
+
+def write_case(folder: Path, domain_name: str, case_name: str, plan: Plan, item) -> None:
+    """Write one case's plan (and where its domain and problem are) so both validators can be rerun on it."""
+    target = folder / domain_name
+    target.mkdir(parents=True, exist_ok=True)
+    (target / (case_name.replace(" ", "-") + ".plan")).write_text(format_plan(plan))
+    (target / "task.txt").write_text(f"{item.domain}\n{item.problem}\n")
 
 
 def summarize(cases: list[Case], skipped: list[dict], plans: list[dict]) -> dict:
@@ -330,6 +340,7 @@ def main() -> None:
     parser.add_argument("--problem", help="the problem to solve in each folder, by name (default: the first)")
     parser.add_argument("--limit", type=int, default=0, help="at most this many domain folders")
     parser.add_argument("--no-up", dest="up", action="store_false", help="leave unified-planning's validator out")
+    parser.add_argument("--plans-dir", help="write each case's plan under this folder, one subfolder per domain")
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     args = parser.parse_args()
     summary = run(args)

@@ -10,13 +10,15 @@ Semantics:
 * timed plans (PDDL 2.1): each durative step is a start and an end
   happening; ``at start`` conditions are checked before the start,
   ``at end`` ones before the end, ``over all`` ones in every state strictly
-  between; the duration must satisfy the action's duration constraint;
+  between; the duration must satisfy the action's duration constraint and
+  not be negative (a zero duration makes its start and end one happening);
   happenings at the same instant must not interfere (PDDL 2.1's mutex, as
   VAL checks it: one deletes what another adds, one changes what another
   reads — a condition, a conditional effect's condition or a value an
   effect is computed from —, or both change one value other than by
   ``increase`` and ``decrease``, which commute and add up); timed initial
-  literals happen at their times.
+  literals happen at their times; the makespan (``total-time``) is the time
+  of the plan's last happening, a timed literal's time not counting.
 
 Values never set (VAL's rules, which the competitions' plans are judged by):
 
@@ -551,7 +553,8 @@ def _run_timed(simulator: Simulator, steps: Sequence[PlanStep]) -> tuple[State, 
             group.append(happenings[index + len(group)])
         index += len(group)
         _apply_group(simulator, state, group, running)
-        makespan = max(makespan, group[0].time)
+        if any(happening.kind != "til" for happening in group):
+            makespan = max(makespan, group[0].time)  # timed literals after the last step do not count
         for start in running.values():
             _check_invariant(simulator, state, start)
     return state, makespan
@@ -593,8 +596,10 @@ def _duration(
         other = exact[0].right if exact[0].left == f.NumericVariable("?duration") else exact[0].left
         duration = simulator.value(other, state, binding)
         _check_duration(simulator, action, step, binding, state, number, duration)
-    if duration <= 0:
-        raise StepFailure(f"step {number} {step}: duration {duration:g} is not positive", number)
+    # A zero duration puts the start and the end in one happening, as VAL does; VAL also takes a
+    # negative one, placing the end before the start, which PDDL 2.1 does not allow.
+    if duration < 0:
+        raise StepFailure(f"step {number} {step}: duration {duration:g} is negative", number)
     return duration
 
 
