@@ -8,6 +8,7 @@ import pytest
 from support import planner_script
 
 from relevance_plan.io import load_task
+from relevance_plan.pddl.plans import Plan
 from relevance_plan.planning.loop import MIN_BUDGET, Budgets, PlanOptions, plan_task, run_attempts
 from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome
 from relevance_plan.planning.planners.registry import make_planner
@@ -59,7 +60,14 @@ def test_pruned_attempts_get_growing_budgets_and_the_full_problem_the_rest(coffe
 
     def call_planner(objects, limit):
         calls.append((objects is None, limit))
-        return RunOutcome(PlannerStatus.OUT_OF_TIME, -9, (), None, 0.01, "fake")
+        return RunOutcome(
+            status=PlannerStatus.OUT_OF_TIME,
+            exit_code=-9,
+            plan=Plan(()),
+            plan_cost=None,
+            wall_time=0.01,
+            planner="fake",
+        )
 
     options = PlanOptions(timeout=timeout, thresholds=STRICT)
     attempts, _ = run_attempts(task, selection, call_planner, options, started=time.perf_counter(), budgets=Budgets(1))
@@ -76,7 +84,14 @@ def test_without_budgets_a_pruned_attempt_gets_its_share(coffee_files):
 
     def call_planner(objects, limit):
         limits.append(limit)
-        return RunOutcome(PlannerStatus.OUT_OF_TIME, -9, (), None, 0.01, "fake")
+        return RunOutcome(
+            status=PlannerStatus.OUT_OF_TIME,
+            exit_code=-9,
+            plan=Plan(()),
+            plan_cost=None,
+            wall_time=0.01,
+            planner="fake",
+        )
 
     run_attempts(task, selection, call_planner, PlanOptions(timeout=60, thresholds=STRICT), started=time.perf_counter())
     assert limits[0] > 20  # half of the time left: a planner that proves unsolvability ends early by itself
