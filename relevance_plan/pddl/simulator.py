@@ -96,7 +96,9 @@ class Simulator:
         self._by_type: dict[str, tuple[str, ...]] = {}
         self._member_sets: dict[str, frozenset[str]] = {}
         # per derived rule (by id: self.domain keeps it alive): the atoms its body needs, the variables' types
-        self._needed: dict[int, tuple[tuple[f.Atom, ...], dict[str, str]]] = {}
+        # per derived rule or quantifier (by id: self.domain keeps it alive): what its body needs
+        self._covers: dict[int, _Cover] = {}
+        self._mentioned: dict[int, frozenset[str]] = {}
         self._work = 0
         self._strata = _strata(domain) if domain.derived else ()
         self.costs = cost_functions(domain, problem)
@@ -126,21 +128,33 @@ class Simulator:
 
     # ---------------------------------------------------------------- conditions
 
-    def holds(self, formula: f.Formula, state: State, binding: Mapping[str, str]) -> bool:
+    def holds(
+        self, formula: f.Formula, state: State, binding: Mapping[str, str], index: _FactIndex | None = None
+    ) -> bool:
+        """Does ``formula`` hold in ``state`` under ``binding``?  With ``index`` (the facts of
+        ``state``, indexed), quantifiers try only the bindings the facts allow."""
         if isinstance(formula, f.Atom):
             return f.ground(formula, binding) in state.facts
         if isinstance(formula, f.And):
-            return all(self.holds(part, state, binding) for part in formula.parts)
+            return all(self.holds(part, state, binding, index) for part in formula.parts)
         if isinstance(formula, f.Or):
-            return any(self.holds(part, state, binding) for part in formula.parts)
+            return any(self.holds(part, state, binding, index) for part in formula.parts)
         if isinstance(formula, f.Not):
-            return not self.holds(formula.body, state, binding)
+            return not self.holds(formula.body, state, binding, index)
         if isinstance(formula, f.Imply):
-            return not self.holds(formula.condition, state, binding) or self.holds(formula.consequence, state, binding)
+            return not self.holds(formula.condition, state, binding, index) or self.holds(
+                formula.consequence, state, binding, index
+            )
+        if isinstance(formula, (f.Exists, f.Forall)) and index is not None:
+            return self._quantified(formula, state, binding, index)
         if isinstance(formula, f.Exists):
-            return any(self.holds(formula.body, state, inner) for inner in self.bindings(formula.parameters, binding))
+            return any(
+                self.holds(formula.body, state, inner, index) for inner in self.bindings(formula.parameters, binding)
+            )
         if isinstance(formula, f.Forall):
-            return all(self.holds(formula.body, state, inner) for inner in self.bindings(formula.parameters, binding))
+            return all(
+                self.holds(formula.body, state, inner, index) for inner in self.bindings(formula.parameters, binding)
+            )
         if isinstance(formula, f.Equality):
             return binding.get(formula.left, formula.left) == binding.get(formula.right, formula.right)
         if isinstance(formula, f.Comparison):
@@ -149,7 +163,7 @@ class Simulator:
             )
         if isinstance(formula, (f.Timed, f.Preference)):
             # a preference is soft: it never makes a plan invalid
-            return True if isinstance(formula, f.Preference) else self.holds(formula.body, state, binding)
+            return True if isinstance(formula, f.Preference) else self.holds(formula.body, state, binding, index)
         raise StepFailure(f"cannot evaluate {type(formula).__name__} in a condition")
 
     def value(self, expression: f.Expression, state: State, binding: Mapping[str, str]) -> float:
@@ -244,59 +258,125 @@ class Simulator:
     # ---------------------------------------------------------------- derived predicates
 
     def derive(self, state: State) -> None:
-        """Replace the derived facts of ``state`` by those its basic facts imply (stratified fixpoint)."""
+        """Replace the derived facts of ``state`` by those its basic facts imply (stratified fixpoint).
+
+        Semi-naive: after a stratum's first round, a rule is tried again only when a predicate its
+        body mentions gained facts in the round before.  Within a stratum the rules read one
+        another only positively, so the fixpoint does not depend on the order facts are found in."""
         if not self._strata:
             return
         derived = self.domain.derived_predicates
         state.facts = {fact for fact in state.facts if fact[0] not in derived}
+        index = _FactIndex(state.facts)
         for stratum in self._strata:
-            changed = True
-            while changed:
-                changed = False
-                # facts derived in this round are joined in the next (changed): the index is a snapshot
-                by_predicate: dict[str, list[f.GroundAtom]] = defaultdict(list)
-                for fact in state.facts:
-                    by_predicate[fact[0]].append(fact)
-                for rule in stratum:
-                    for binding in self._rule_bindings(rule, by_predicate):
+            pending = list(stratum)
+            while pending:
+                gained: set[str] = set()
+                for rule in pending:
+                    # candidates are listed before any is added: the index is not changed while joined
+                    for binding in list(self._rule_bindings(rule, index)):
                         fact = f.ground(rule.head, binding)
-                        if fact not in state.facts and self.holds(rule.body, state, binding):
+                        if fact not in state.facts and self.holds(rule.body, state, binding, index):
                             state.facts.add(fact)
-                            changed = True
+                            index.add(fact)
+                            gained.add(fact[0])
+                pending = [rule for rule in stratum if gained & self._mentions(rule)]
 
-    def _rule_bindings(
-        self, rule: DerivedPredicate, facts: Mapping[str, list[f.GroundAtom]]
-    ) -> Iterator[dict[str, str]]:
-        """Bindings of ``rule``'s parameters under which the positive atoms the body needs hold (those of
-        its top-level conjunction, and of the conjunctions under its top-level ``exists``, whose
-        variables join too), found by joining those atoms with ``facts`` rather than by trying every
-        object for every parameter; the caller checks the whole body."""
-        found = self._needed.get(id(rule))
-        if found is None:  # the same for every state: found once per rule
-            types = dict(rule.parameters)
-            found = self._needed[id(rule)] = (tuple(_needed_atoms(rule.body, types)), types)
-        atoms, types = found
-        needed = sorted(atoms, key=lambda atom: len(facts.get(atom.predicate, ())))
-        names = tuple(v for v, _ in rule.parameters)
+    def _mentions(self, rule: DerivedPredicate) -> frozenset[str]:
+        found = self._mentioned.get(id(rule))
+        if found is None:
+            found = frozenset(node.predicate for node in f.walk(rule.body) if isinstance(node, f.Atom))
+            self._mentioned[id(rule)] = found
+        return found
+
+    def _rule_bindings(self, rule: DerivedPredicate, index: _FactIndex) -> Iterator[dict[str, str]]:
+        """Bindings of ``rule``'s parameters under which its body may hold: those of the atoms the
+        body needs (see :func:`_cover`), found in ``index``, rather than every object for every
+        parameter; the caller checks the whole body."""
+        cover = self._covers.get(id(rule))
+        if cover is None:  # the same for every state: found once per rule
+            cover = self._covers[id(rule)] = _Cover.of(rule.body, rule.parameters, positive=True)
+        return self._candidates(cover, {}, index)
+
+    def _quantified(
+        self, formula: f.Exists | f.Forall, state: State, binding: Mapping[str, str], index: _FactIndex
+    ) -> bool:
+        """``exists`` or ``forall`` tried only on the bindings under which its body (for ``forall``,
+        the body's negation) may hold, found in ``index``; under every other binding the body holds
+        (for ``exists``: fails), so the answer is the one every binding would give."""
+        positive = isinstance(formula, f.Exists)
+        cover = self._covers.get(id(formula))
+        if cover is None:
+            cover = self._covers[id(formula)] = _Cover.of(formula.body, formula.parameters, positive=positive)
+        for inner in self._candidates(cover, binding, index):
+            if self.holds(formula.body, state, inner, index) == positive:
+                return positive
+        return not positive
+
+    def _candidates(self, cover: _Cover, binding: Mapping[str, str], index: _FactIndex) -> Iterator[dict[str, str]]:
+        """``binding`` extended by each binding of the cover's variables that one of its alternatives
+        allows (each once); a variable the alternative leaves open takes every object of its type."""
+        outer = {k: v for k, v in binding.items() if k not in cover.types}
+        names = tuple(v for v, _ in cover.parameters)
         seen: set[tuple[str, ...]] = set()
-
-        def extend(index: int, binding: dict[str, str]) -> Iterator[dict[str, str]]:
-            if index == len(needed):
-                free = tuple((v, t) for v, t in rule.parameters if v not in binding)
-                for full in self.bindings(free, binding):
+        for alternative in cover.alternatives:
+            for joined in self._join(list(alternative), outer, cover.types, index):
+                free = tuple((v, t) for v, t in cover.parameters if v not in joined)
+                for full in self.bindings(free, joined):
                     key = tuple(full[v] for v in names)
-                    if key not in seen:  # several witnesses of an exists give one binding of the rule
+                    if key not in seen:
                         seen.add(key)
-                        yield {v: full[v] for v in names}
-                return
-            atom = needed[index]
-            for fact in facts.get(atom.predicate, ()):
-                self.tick()
-                found = self._match(atom.args, fact, binding, types)
-                if found is not None:
-                    yield from extend(index + 1, found)
+                        inner = dict(binding)
+                        inner.update(zip(names, key))
+                        yield inner
 
-        return extend(0, {})
+    def _join(
+        self, items: list[f.Atom | f.Equality], binding: dict[str, str], types: Mapping[str, str], index: _FactIndex
+    ) -> Iterator[dict[str, str]]:
+        """Bindings extending ``binding`` under which every item holds in ``index`` (the most bound
+        item first); a variable not in ``types`` is the outer binding's, or stands for itself."""
+        if not items:
+            yield binding
+            return
+        best, best_score = 0, (-1, 0)
+        for position, item in enumerate(items):
+            if isinstance(item, f.Equality):
+                score = (
+                    1_000_000
+                    if (item.left not in types or item.left in binding)
+                    or (item.right not in types or item.right in binding)
+                    else -1,
+                    0,
+                )
+            else:
+                bound = sum(1 for a in item.args if a not in types or a in binding)
+                score = (bound, -len(index.facts(item.predicate)))
+            if score > best_score:
+                best, best_score = position, score
+        item = items[best]
+        rest = items[:best] + items[best + 1 :]
+        if isinstance(item, f.Equality):
+            left, right = item.left, item.right
+            left_open = left in types and left not in binding
+            right_open = right in types and right not in binding
+            if left_open and right_open:  # nothing binds either side: no constraint from it
+                yield from self._join(rest, binding, types, index)
+                return
+            if left_open or right_open:
+                var, other = (left, right) if left_open else (right, left)
+                value = binding.get(other, other)
+                if value in self._members(types[var]):
+                    yield from self._join(rest, {**binding, var: value}, types, index)
+                return
+            if binding.get(left, left) == binding.get(right, right):
+                yield from self._join(rest, binding, types, index)
+            return
+        ground = [(i, binding.get(a, a)) for i, a in enumerate(item.args) if a not in types or a in binding]
+        for fact in index.matching(item.predicate, ground):
+            self.tick()
+            found = self._match(item.args, fact, binding, types)
+            if found is not None:
+                yield from self._join(rest, found, types, index)
 
     def _match(
         self, args: tuple[str, ...], fact: f.GroundAtom, binding: dict[str, str], types: Mapping[str, str]
@@ -306,11 +386,11 @@ class Simulator:
             return None
         found = binding
         for arg, value in zip(args, fact[1:]):
-            if not arg.startswith("?"):
-                if arg != value:
-                    return None
-            elif arg in found:
+            if arg in found:
                 if found[arg] != value:
+                    return None
+            elif arg not in types:
+                if arg != value:
                     return None
             elif value in self._members(types[arg]):
                 if found is binding:
@@ -327,16 +407,105 @@ class Simulator:
         return cached
 
 
-def _needed_atoms(formula: f.Formula, types: dict[str, str]) -> Iterator[f.Atom]:
-    """The positive atoms that must hold for ``formula`` to hold, through conjunctions and ``exists``
-    (whose variables are added to ``types``; one that shadows a name already there is not looked into)."""
-    for part in f.conjuncts(formula):
-        if isinstance(part, f.Atom):
-            if all(a in types for a in part.args if a.startswith("?")):
-                yield part
-        elif isinstance(part, f.Exists) and not any(v in types for v, _ in part.parameters):
-            types.update(part.parameters)
-            yield from _needed_atoms(part.body, types)
+class _FactIndex:
+    """The facts of a state by predicate and by (predicate, position, value), kept up to date as
+    facts are added."""
+
+    def __init__(self, facts: set[f.GroundAtom]):
+        self._by_predicate: dict[str, list[f.GroundAtom]] = defaultdict(list)
+        self._by_argument: dict[tuple[str, int, str], list[f.GroundAtom]] = defaultdict(list)
+        for fact in facts:
+            self.add(fact)
+
+    def add(self, fact: f.GroundAtom) -> None:
+        self._by_predicate[fact[0]].append(fact)
+        for position, value in enumerate(fact[1:]):
+            self._by_argument[(fact[0], position, value)].append(fact)
+
+    def facts(self, predicate: str) -> Sequence[f.GroundAtom]:
+        return self._by_predicate.get(predicate, ())
+
+    def matching(self, predicate: str, ground: Sequence[tuple[int, str]]) -> Sequence[f.GroundAtom]:
+        """The facts of ``predicate`` with the fewest candidates among those having one of the
+        given values at its position (the caller checks the rest)."""
+        best = self.facts(predicate)
+        for position, value in ground:
+            found = self._by_argument.get((predicate, position, value), ())
+            if len(found) < len(best):
+                best = found
+        return best
+
+
+_MAX_ALTERNATIVES = 32
+
+
+@dataclass(frozen=True)
+class _Cover:
+    """What must hold for a formula to hold under a binding of ``parameters``: one of the
+    ``alternatives``, each a conjunction of positive atoms and equalities (an empty one: nothing
+    known).  Variables of quantifiers inside are renamed apart (``?y#2``) and typed in ``types``
+    with the parameters; they are joined like the parameters and then forgotten."""
+
+    parameters: f.Parameters
+    types: dict[str, str]
+    alternatives: tuple[tuple[f.Atom | f.Equality, ...], ...]
+
+    @staticmethod
+    def of(formula: f.Formula, parameters: f.Parameters, positive: bool) -> _Cover:
+        types = dict(parameters)
+        renames = {v: v for v, _ in parameters}
+        alternatives = _alternatives(formula, positive, types, renames, itertools.count())
+        return _Cover(parameters, types, tuple(alternatives))
+
+
+_Alternatives = list[tuple[f.Atom | f.Equality, ...]]
+_NOTHING_KNOWN: _Alternatives = [()]
+
+
+def _alternatives(
+    formula: f.Formula, positive: bool, types: dict[str, str], renames: dict[str, str], counter: Iterator[int]
+) -> _Alternatives:
+    """The alternatives of a :class:`_Cover` for ``formula`` (its negation when not ``positive``);
+    ``renames`` maps the quantified variables in scope to their names in ``types``."""
+    if isinstance(formula, f.Atom):
+        if not positive:
+            return _NOTHING_KNOWN
+        return [(f.Atom(formula.predicate, tuple(renames.get(a, a) for a in formula.args)),)]
+    if isinstance(formula, f.Equality):
+        if not positive:
+            return _NOTHING_KNOWN
+        return [(f.Equality(renames.get(formula.left, formula.left), renames.get(formula.right, formula.right)),)]
+    if isinstance(formula, f.Not):
+        return _alternatives(formula.body, not positive, types, renames, counter)
+    if isinstance(formula, f.Timed):
+        return _alternatives(formula.body, positive, types, renames, counter)
+    if isinstance(formula, f.Imply):
+        parts: tuple[f.Formula, ...] = (f.Not(formula.condition), formula.consequence)
+        return _alternatives(f.Or(parts), positive, types, renames, counter)
+    if isinstance(formula, (f.And, f.Or)):
+        if isinstance(formula, f.And) == positive:  # a conjunction: any part's alternatives, or several joined
+            result: _Alternatives = [()]
+            found = [_alternatives(part, positive, types, renames, counter) for part in formula.parts]
+            for part_alternatives in sorted(found, key=len):
+                if part_alternatives == _NOTHING_KNOWN or len(result) * len(part_alternatives) > _MAX_ALTERNATIVES:
+                    continue
+                result = [mine + theirs for mine in result for theirs in part_alternatives]
+            return result
+        result = []  # a disjunction: one of every part's alternatives
+        for part in formula.parts:
+            part_alternatives = _alternatives(part, positive, types, renames, counter)
+            if () in part_alternatives:
+                return _NOTHING_KNOWN
+            result += part_alternatives
+        return result if len(result) <= _MAX_ALTERNATIVES else _NOTHING_KNOWN
+    if isinstance(formula, (f.Exists, f.Forall)) and isinstance(formula, f.Exists) == positive:
+        # a witness of the inner quantifier is joined like a parameter, under a name of its own
+        inner = dict(renames)
+        for name, type_name in formula.parameters:
+            inner[name] = f"{name}#{next(counter)}"
+            types[inner[name]] = type_name
+        return _alternatives(formula.body, positive, types, inner, counter)
+    return _NOTHING_KNOWN
 
 
 ADDITIVE = frozenset({"increase", "decrease"})
