@@ -102,6 +102,9 @@ class Simulator:
         self._work = 0
         self._strata = _strata(domain) if domain.derived else ()
         self.costs = cost_functions(domain, problem)
+        # what effects read matters only for happenings at one time (a timed plan's interference check)
+        self.track_reads = True
+        self._condition_quantified: dict[int, bool] = {}
 
     # ---------------------------------------------------------------- bindings
 
@@ -205,7 +208,19 @@ class Simulator:
         """What ``effect`` does in ``state`` (conditions and values read in ``state``); for a
         durative action, only its parts at ``when`` ("start" or "end")."""
         found = Effects(set(), set(), {})
-        self._collect(effect, state, binding, when, None, found)
+        # quantified effect conditions are joined over an index of the state, as derived rules are
+        index = _FactIndex(state.facts) if self._quantified_conditions(effect) else None
+        self._collect(effect, state, binding, when, None, found, index)
+        return found
+
+    def _quantified_conditions(self, effect: f.Formula) -> bool:
+        found = self._condition_quantified.get(id(effect))
+        if found is None:
+            found = self._condition_quantified[id(effect)] = any(
+                isinstance(node, f.When)
+                and any(isinstance(inner, (f.Exists, f.Forall)) for inner in f.walk(node.condition))
+                for node in f.walk(effect)
+            )
         return found
 
     def _collect(
@@ -216,6 +231,7 @@ class Simulator:
         when: str | None,
         current: str | None,
         found: Effects,
+        index: _FactIndex | None = None,
     ) -> None:
         if isinstance(effect, f.Atom):
             if current == when:
@@ -225,18 +241,19 @@ class Simulator:
                 found.deletes.add(f.ground(effect.body, binding))
         elif isinstance(effect, f.And):
             for part in effect.parts:
-                self._collect(part, state, binding, when, current, found)
+                self._collect(part, state, binding, when, current, found, index)
         elif isinstance(effect, f.Forall):
             for inner in self.bindings(effect.parameters, binding):
-                self._collect(effect.body, state, inner, when, current, found)
+                self._collect(effect.body, state, inner, when, current, found, index)
         elif isinstance(effect, f.When):
             # Conditions are read in the state before the happening; a timed condition
             # part is checked with the happening that carries the effect.
-            found.reads |= _reads(effect.condition, binding)
-            if self.holds(effect.condition, state, binding):
-                self._collect(effect.effect, state, binding, when, current, found)
+            if self.track_reads:
+                found.reads |= _reads(effect.condition, binding)
+            if self.holds(effect.condition, state, binding, index):
+                self._collect(effect.effect, state, binding, when, current, found, index)
         elif isinstance(effect, f.Timed):
-            self._collect(effect.body, state, binding, when, effect.when, found)
+            self._collect(effect.body, state, binding, when, effect.when, found, index)
         elif isinstance(effect, f.NumericEffect):
             if current == when:
                 self._numeric(effect, state, binding, found)
@@ -244,7 +261,8 @@ class Simulator:
     def _numeric(self, effect: f.NumericEffect, state: State, binding: Mapping[str, str], found: Effects) -> None:
         key = (effect.fluent.function, *(binding.get(a, a) for a in effect.fluent.args))
         amount = self.value(effect.value, state, binding)
-        found.reads |= _reads(effect.value, binding)
+        if self.track_reads:
+            found.reads |= _reads(effect.value, binding)
         if effect.op in ADDITIVE:
             found.deltas[key] = found.deltas.get(key, 0.0) + (amount if effect.op == "increase" else -amount)
         else:
@@ -659,6 +677,7 @@ def _metric(simulator: Simulator, state: State, total_time: float) -> tuple[floa
 
 
 def _run_sequential(simulator: Simulator, steps: Sequence[PlanStep]) -> State:
+    simulator.track_reads = False  # one step at a time: nothing can interfere
     state = initial_state(simulator.problem)
     simulator.derive(state)
     for number, step in enumerate(steps, start=1):
