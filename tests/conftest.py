@@ -70,3 +70,26 @@ def wheel(tmp_path_factory):
     )
     (found,) = out.glob("relevance_plan-*.whl")
     return found
+
+
+@pytest.fixture
+def installed_elsewhere(wheel, tmp_path):
+    """(a folder outside the clone, the environment that runs the wheel installed into a folder of its own)."""
+    site = tmp_path / "site"
+    subprocess.run(
+        [sys.executable, "-m", "pip", "install", "--no-deps", "-q", "--target", str(site), str(wheel)],
+        check=True,
+        capture_output=True,
+    )
+    work = tmp_path / "elsewhere"
+    work.mkdir()
+    env = {**os.environ, "PYTHONPATH": str(site)}
+    where = subprocess.run(
+        [sys.executable, "-c", "import relevance_plan; print(relevance_plan.__file__)"],
+        cwd=work,
+        env=env,
+        capture_output=True,
+        text=True,
+    )
+    assert where.stdout.startswith(str(site)), "the installed package, not the clone's"
+    return work, env

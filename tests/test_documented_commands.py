@@ -70,18 +70,8 @@ def test_the_readme_commands_and_snippets_run_from_a_clone(tmp_path):
 
 
 @pytest.mark.planner
-def test_the_readme_commands_and_snippets_run_after_a_regular_install(wheel, tmp_path):
-    site = tmp_path / "site"
-    subprocess.run(
-        [sys.executable, "-m", "pip", "install", "--no-deps", "-q", "--target", str(site), str(wheel)],
-        check=True,
-        capture_output=True,
-    )
-    work = tmp_path / "elsewhere"
-    work.mkdir()
-    env = {**os.environ, "PYTHONPATH": str(site)}
-    where = run_in(work, [sys.executable, "-c", "import relevance_plan; print(relevance_plan.__file__)"], env)
-    assert where.stdout.startswith(str(site))
+def test_the_readme_commands_and_snippets_run_after_a_regular_install(installed_elsewhere):
+    work, env = installed_elsewhere
     check_readme_commands(work, env)
 
 

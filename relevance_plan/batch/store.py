@@ -181,7 +181,9 @@ class ResultStore:
             self._check_header()
             if read_only and self.path.stat().st_size == 0:
                 raise StoreError("empty file, not a results store", path=str(self.path))
-        self.created = not exists
+        self.created = False
+        if not exists:
+            self.created = self._create_whole()
         # Companion files this object makes SQLite create are folded away again on closing.
         self._tidy = not any(path.exists() for path in _companions(self.path))
         connection = self._connect_read_only() if read_only else self._connect()
@@ -208,6 +210,33 @@ class ResultStore:
         self._connection = connection
 
     # ------------------------------------------------------------------ opening
+
+    def _create_whole(self) -> bool:
+        """Make the new store beside its path, tables and WAL mode set, then link it into place: a run
+        that creates the same store at this moment finds either no file or a whole one (never an
+        empty file another connection is still setting up).  True if this object's file is the store."""
+        building = self.path.with_name(f".{self.path.name}.{os.getpid()}.{id(self):x}.creating")
+        try:
+            connection = sqlite3.connect(building, isolation_level=None)
+            try:
+                self._create(connection)
+                connection.execute("PRAGMA journal_mode = WAL")
+            finally:
+                connection.close()
+            os.link(building, self.path)
+            return True
+        except FileExistsError:
+            return False  # another run made it first: this one opens theirs
+        except sqlite3.Error as error:
+            message = f"cannot create the results store: {_write_failure(error)}"
+            raise StoreError(message, path=str(self.path)) from None
+        except OSError as error:
+            message = f"cannot create the results store: {error.strerror or error}"
+            raise StoreError(message, path=str(self.path)) from None
+        finally:
+            for path in (building, *_companions(building)):
+                with contextlib.suppress(OSError):
+                    path.unlink()
 
     def _connect(self) -> sqlite3.Connection:
         try:
@@ -286,7 +315,6 @@ class ResultStore:
         try:
             tables = self._tables(connection)
             if tables:
-                self.created = False  # someone else's tables: never removed by this object
                 self._check(connection, tables, writing=True)
             else:
                 self._create(connection)
