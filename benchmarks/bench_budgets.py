@@ -1,7 +1,7 @@
 #!/usr/bin/env python
 """The tool against a temporal engine alone, on IPC driverlog with time, unpadded and padded.
 
-For each size (objects added to the IPC's ``driverlog-time-automatic``
+For each size N (N objects of each kind added to the IPC's ``driverlog-time-automatic``
 instance-3 of the in-repository corpus: packages, trucks, drivers and
 linked locations the goal does not need), it times, in this one run:
 
@@ -24,7 +24,6 @@ from __future__ import annotations
 
 import argparse
 import json
-import random
 import subprocess
 import sys
 import tempfile
@@ -32,39 +31,13 @@ import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))
+
+from relevance_plan.generators.padded import padded_driverlog  # noqa: E402
+
 FOLDER = ROOT / "benchmarks" / "corpus" / "potassco" / "ipc-2002" / "driverlog-time-automatic"
 DOMAIN = FOLDER / "domain.pddl"
 PROBLEM = FOLDER / "instances" / "instance-3.pddl"
-CITIES = ("s0", "s1", "s2")
-
-
-def pad_driverlog(text: str, extra: int, seed: int = 1) -> str:
-    """The IPC problem with ``extra`` objects the goal does not need: most of them packages, every
-    tenth a truck, a driver or a location linked to the others."""
-    rng = random.Random(seed)
-    objects, facts = [], []
-    places = list(CITIES)
-    for i in range(1, extra + 1):
-        kind = ("truck", "driver", "location")[i % 3] if i % 10 == 0 else "obj"
-        name = f"x{kind}{i}"
-        objects.append(f"{name} - {kind}")
-        if kind == "location":
-            other = rng.choice(places)
-            minutes = rng.randint(10, 90)
-            facts += [f"(link {name} {other})", f"(link {other} {name})"]
-            facts += [f"(= (time-to-drive {name} {other}) {minutes})", f"(= (time-to-drive {other} {name}) {minutes})"]
-            facts += [f"(path {name} {other})", f"(path {other} {name})"]
-            facts += [
-                f"(= (time-to-walk {name} {other}) {minutes * 3})",
-                f"(= (time-to-walk {other} {name}) {minutes * 3})",
-            ]
-            places.append(name)
-        else:
-            facts.append(f"(at {name} {rng.choice(CITIES)})")
-            if kind == "truck":
-                facts.append(f"(empty {name})")
-    text = text.replace("\t)\n\t(:init", "\t" + "\n\t".join(objects) + "\n\t)\n\t(:init", 1)
-    return text.replace("\t(:init\n", "\t(:init\n\t" + "\n\t".join(facts) + "\n", 1)
 
 
 def timed(command: list[str]) -> tuple[float, str]:
@@ -114,9 +87,10 @@ def main(argv: list[str] | None = None) -> int:
         folder = Path(scratch)
         for extra in args.extra:
             problem = folder / f"driverlog-{extra}.pddl"
-            problem.write_text(pad_driverlog(PROBLEM.read_text(), extra))
+            problem.write_text(padded_driverlog(PROBLEM.read_text(), extra))
+            objects = 14 + 4 * extra
             alone, verdict = engine_alone(engine, problem, folder, args.timeout)
-            print(f"+{extra:<4} engine alone    {alone:7.2f} s  {verdict}", flush=True)
+            print(f"+{extra:<4} ({objects} objects) engine alone {alone:7.2f} s  {verdict}", flush=True)
             times = {}
             for name, flags in (("pure", ["--method", "pure"]), ("no-race", ["--no-race"]), ("race", ["--race"])):
                 seconds, result = tool(problem, args.planner, flags, folder, args.timeout)

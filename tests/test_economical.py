@@ -4,9 +4,12 @@ from __future__ import annotations
 
 import random
 
+from support import REPO
+
 from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.io import load_domain
 from relevance_plan.pddl.parser import read_problem
+from relevance_plan.relevance.prune import widen
 from relevance_plan.relevance.scorers import PlanningTask
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
 
@@ -62,7 +65,7 @@ def test_the_first_selection_keeps_one_of_many_nearby_airplanes():
         selection = scoring.first_selection()
         assert len(selection.kept & airplanes) == 1, sorted(selection.kept & airplanes)
         assert len(selection.kept) <= len(generated.sidecar["necessary"]) + 5
-        assert selection.set_aside  # what widening brings back first
+        assert selection.set_aside  # what widening brings back last
         # the relevance method's later attempts and the other methods do not set alternatives aside
         assert len(scoring.first_selection(narrow=False).kept & airplanes) > 10
 
@@ -85,3 +88,25 @@ def test_a_second_truck_in_one_city_goes_when_the_first_can_stand_in_for_it(monk
 
     assert trucks_of_city_eight(0) == {"truck8-1", "truck8-3"}  # both taken in one round, both used
     assert trucks_of_city_eight(pairwise) == {"truck8-1"}
+
+
+def test_widening_keeps_set_aside_alternatives_aside_and_brings_them_back_last():
+    # IPC driverlog with 30 spare trucks, drivers, packages and locations: the first selection sets
+    # the trucks near the goal aside; a failed first attempt more likely lacks an object of another
+    # role (the instance's own paths and driver) than thirty trucks
+    from relevance_plan.generators.padded import padded_driverlog
+
+    folder = REPO / "benchmarks" / "corpus" / "potassco" / "ipc-2002" / "driverlog-time-automatic"
+    domain = load_domain(folder / "domain.pddl")
+    instance = (folder / "instances" / "instance-3.pddl").read_text()
+    task = PlanningTask(domain, read_problem(padded_driverlog(instance, 30), domain))
+    scoring = score_problem(task, ScoringOptions())
+    first = scoring.first_selection()
+    aside = first.set_aside
+    assert len(aside) > 10 and all(name.startswith("xtruck") for name in aside)
+    instance_objects = {name for name in task.problem.objects if not name.startswith("x")}
+    assert not instance_objects <= first.kept
+    widened, _ = widen(first, 0.5, frozenset(), scoring.model, goal_filter=True)
+    assert instance_objects <= widened.kept  # the instance's own objects come back first
+    assert not aside & widened.kept and widened.set_aside == aside
+    assert len(widened.kept) < len(task.problem.objects) / 2

@@ -155,6 +155,26 @@ def test_a_dash_glued_to_its_type_is_read_as_published_domains_write_it():
     assert domain.actions[0].parameters == (("?b", "ball"),)
 
 
+def test_a_variable_glued_to_its_predicate_is_read_as_published_domains_write_it():
+    domain = read_domain(
+        "(define (domain d) (:requirements :typing) (:types plane)"
+        " (:predicates (aircraft?a - plane) (ready ?a - plane))"
+        " (:action go :parameters (?a - plane) :precondition (aircraft?a) :effect (ready?a)))"
+    )
+    assert domain.predicates["aircraft"] == (("?a", "plane"),)
+    assert "?a" in str(domain.actions[0].precondition)
+
+
+def test_a_bare_zero_ary_function_is_a_numeric_effect_target_and_a_one_ary_one_is_not():
+    head = "(define (domain d) (:requirements :fluents) (:types t) (:functions (used) (fuel ?x - t)) "
+    domain = read_domain(head + "(:action a :parameters (?x - t) :effect (increase used (fuel ?x))))")
+    assert str(domain.actions[0].effect) == str(
+        read_domain(head + "(:action a :parameters (?x - t) :effect (increase (used) (fuel ?x))))").actions[0].effect
+    )
+    with pytest.raises(PDDLParseError, match="takes a function term"):
+        read_domain(head + "(:action a :parameters (?x - t) :effect (increase fuel 1)))")
+
+
 @pytest.mark.parametrize(
     "effect, construct",
     [("(oneof (p) (q))", "non-deterministic effects"), ("(probabilistic 0.5 (p))", "probabilistic effects")],

@@ -1,9 +1,12 @@
-"""Two classic domains padded with objects the goal does not need, as PDDL text.
+"""Problems padded with objects the goal does not need, as PDDL text.
 
 Blocksworld with extra towers and blocks stacked on the goal's blocks, and
 gripper with extra balls: the smallest worlds on which pruning without a
 knowledge model (the goal scorer) pays off on domains we did not design.
-The benchmarks and the tests build their padded problems here.
+And an IPC driverlog-with-time instance with extra locations, trucks, drivers
+and packages: where a temporal planner that cannot prove a pruned problem
+unsolvable meets many interchangeable objects.  The benchmarks and the tests
+build their padded problems here.
 """
 
 from __future__ import annotations
@@ -97,3 +100,28 @@ def gripper_problem(extra: int, rooms: int = 6) -> str:
         "  (:init " + " ".join(init) + ")\n"
         "  (:goal (and (at ball1 r2) (at ball2 r2))))\n"
     )
+
+
+DRIVERLOG_CITIES = ("s0", "s1", "s2")
+
+
+def padded_driverlog(text: str, extra: int, seed: int = 1) -> str:
+    """IPC 2002 driverlog (with time) instance 3, as written in the corpus, with ``extra`` objects
+    of each kind the goal does not need: locations (each linked by road and path to a place
+    already there), trucks, drivers and packages at the instance's cities."""
+    rng = random.Random(seed)
+    objects, facts = [], []
+    places = list(DRIVERLOG_CITIES)
+    for i in range(1, extra + 1):
+        location, truck, driver, package = f"xloc{i}", f"xtruck{i}", f"xdriver{i}", f"xobj{i}"
+        objects += [f"{location} - location", f"{truck} - truck", f"{driver} - driver", f"{package} - obj"]
+        other = rng.choice(places)
+        minutes = rng.randint(10, 90)
+        for a, b in ((location, other), (other, location)):
+            facts += [f"(link {a} {b})", f"(= (time-to-drive {a} {b}) {minutes})"]
+            facts += [f"(path {a} {b})", f"(= (time-to-walk {a} {b}) {minutes * 3})"]
+        places.append(location)
+        facts += [f"(at {truck} {rng.choice(DRIVERLOG_CITIES)})", f"(empty {truck})"]
+        facts += [f"(at {driver} {rng.choice(DRIVERLOG_CITIES)})", f"(at {package} {rng.choice(DRIVERLOG_CITIES)})"]
+    text = text.replace("\t)\n\t(:init", "\t" + "\n\t".join(objects) + "\n\t)\n\t(:init", 1)
+    return text.replace("\t(:init\n", "\t(:init\n\t" + "\n\t".join(facts) + "\n", 1)

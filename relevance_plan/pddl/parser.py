@@ -299,6 +299,15 @@ class _Reader:
             self.fail(f"function '{name}' takes {len(declared)} arguments, got {len(args)}", node, self.mismatch(scope))
         return f.Fluent(name, args)
 
+    def effect_target(self, item: Item, scope: _Scope) -> f.Fluent | None:
+        """The function term a numeric effect changes; IPC 2002's zenotravel writes a 0-ary one bare."""
+        if isinstance(item, Node):
+            return self.fluent(item, scope)
+        name = item.text.lower()
+        if not scope.functions.get(name, ()) and (name in scope.functions or name in BUILTIN_FUNCTIONS):
+            return f.Fluent(name)
+        return None
+
     def numeric_operand(self, item: Item) -> bool:
         if isinstance(item, Node):
             return True
@@ -448,9 +457,11 @@ class _Reader:
         return atom
 
     def numeric_effect(self, node: Node, head: str, args: list[Item], scope: _Scope) -> f.NumericEffect:
-        if len(args) != 2 or not isinstance(args[0], Node):
+        if len(args) != 2:
             self.fail(f"'{head}' takes a function term and a value", node)
-        target = self.fluent(args[0], scope)
+        target = self.effect_target(args[0], scope)
+        if target is None:
+            self.fail(f"'{head}' takes a function term and a value", node)
         return f.NumericEffect(head, target, self.expression(args[1], scope))
 
 

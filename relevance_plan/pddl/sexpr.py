@@ -25,8 +25,9 @@ from dataclasses import dataclass
 
 from relevance_plan.errors import OutOfTimeError, PDDLParseError
 
-# Group 1: '(', group 2: ')', no group: a comment or a symbol.
-_TOKEN = re.compile(r"(\()|(\))|;[^\n\r]*|[^\s();]+")
+# Group 1: '(', group 2: ')', no group: a comment or a symbol.  A '?' starts a new
+# symbol, since names cannot hold one: some IPC files write '(aircraft?a)'.
+_TOKEN = re.compile(r"(\()|(\))|;[^\n\r]*|\??[^\s();?]+|\?")
 _LINE_BREAK = re.compile(r"\r\n?|\n")
 
 # Lists nested deeper than this are refused, naming the line: the formula

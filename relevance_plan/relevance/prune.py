@@ -162,6 +162,7 @@ def prune_with_scores(
     repair: bool | None = None,
     full_above: float | None = None,
     economical: bool = False,
+    held_aside: Set[str] = frozenset(),
 ) -> Selection:
     """Threshold the scores, add ``extra`` objects, close over constraints, check, write the text.
 
@@ -176,9 +177,12 @@ def prune_with_scores(
     ``repair``), the selected alternatives of a populous role
     (``ScoreResult.alternatives``: fifty airplanes near the goal's objects)
     are set aside and the repair brings back, best ranked first, only those
-    a relaxed plan needs: one airplane carries every package.
+    a relaxed plan needs: one airplane carries every package.  ``held_aside``
+    (a widening's: what earlier selections set aside) stays out unless in ``extra``.
     """
-    selected = select_relevant(task, scores, thresholds, goal_filter) | (frozenset(extra) & task.problem.objects.keys())
+    extra = frozenset(extra) & task.problem.objects.keys()
+    held = frozenset(held_aside) - extra
+    selected = (select_relevant(task, scores, thresholds, goal_filter) - held) | extra
     task.check_time("choosing the objects")
     rules = constraint_rules(task.domain, task.init_index, model)
     singletons = single_valued_predicates(task.domain, task.init_index)
@@ -207,11 +211,11 @@ def prune_with_scores(
 
     kept, restored = close(selected)
     task.check_time("closing the selection over constraints")
-    set_aside: frozenset[str] = frozenset()
+    set_aside: frozenset[str] = held
     if prefer_free:
         narrowed = free_alternatives(task, scores, selected, restored)
         if narrowed != selected:
-            set_aside = selected - narrowed
+            set_aside |= selected - narrowed
             selected = narrowed
             kept, restored = close(selected)
     if repair is None:
@@ -327,19 +331,27 @@ def widen(
         everything = frozenset(task.problem.objects)
         why = f"widening would keep more than {full_above:.0%} of the objects: the full problem"
         return full_problem(task, result.scores, result.thresholds.scaled(factor), result.selected, (), why), everything
-    ranked = ranked_by_score(result)
+    # alternatives set aside stay aside, and come back last: the selection already holds a free
+    # member of their role, so a failed attempt more likely lacks an object of another role
+    held = result.set_aside
+    ranked = _aside_last(ranked_by_score(result), held)
     extra = frozenset(extra) | frozenset(ranked[: target - len(result.kept)])
+    thresholds = result.thresholds.scaled(factor)
     widened = prune_with_scores(
-        task, result.scores, result.thresholds.scaled(factor), model, extra, goal_filter, full_above=full_above
+        task, result.scores, thresholds, model, extra, goal_filter, full_above=full_above, held_aside=held
     )
     while len(widened.kept) < target and len(widened.kept) < total:
         # closure or the thresholds cannot account for every addition: add more by rank
-        missing = ranked_by_score(widened)
+        missing = _aside_last(ranked_by_score(widened), held)
         extra = extra | frozenset(missing[: target - len(widened.kept)])
         widened = prune_with_scores(
-            task, result.scores, result.thresholds.scaled(factor), model, extra, goal_filter, full_above=full_above
+            task, result.scores, thresholds, model, extra, goal_filter, full_above=full_above, held_aside=held
         )
     return widened, extra
+
+
+def _aside_last(ranked: Sequence[str], aside: Set[str]) -> list[str]:
+    return [name for name in ranked if name not in aside] + [name for name in ranked if name in aside]
 
 
 def ranked_names(task: PlanningTask, scores: ScoreResult, kept: Set[str] = frozenset()) -> list[str]:

@@ -53,7 +53,7 @@ if TYPE_CHECKING:
     from relevance_plan.relevance.scorers.base import PlanningTask
 
 GROUND_BUDGET = 200_000  # candidate bindings tried before the check gives up (None: unknown)
-SECONDS = 1.0  # and the fixpoint's own bound
+SECONDS = 1.0  # and the whole check's bound (grounding and fixpoint): it must stay cheaper than a planner run
 WIDEN_AFTER = 4  # rounds in which a fluent's bound moves before it is widened to infinity
 
 Interval = tuple[float, float]  # (low, high), closed hull; low > high: no value yet
@@ -163,6 +163,7 @@ class _Check:
         domain, problem = task.typing.domain, task.typing.problem
         self.domain = domain
         self.budget = budget
+        self.deadline = time.monotonic() + SECONDS
         self.types_of = dict(domain.constants)
         self.types_of.update(problem.objects)
         allowed = (set(kept) & problem.objects.keys()) | set(domain.constants)
@@ -242,7 +243,7 @@ class _Check:
                 return
             for value in domains[i]:
                 spent += 1
-                if spent > self.budget:
+                if spent > self.budget or (spent & 1023 == 0 and time.monotonic() > self.deadline):
                     raise _OutOfBudget
                 binding[variables[i]] = value
                 if all(self._holds(a, binding) for a in checks.get(i, ())):
@@ -291,9 +292,8 @@ class _Check:
         duration = (0.0, math.inf)
         moves: dict[tuple[GroundFluent, int], int] = {}
         pending = list(self.snaps)
-        deadline = time.monotonic() + SECONDS
         while True:
-            if time.monotonic() > deadline:
+            if time.monotonic() > self.deadline:
                 raise _OutOfBudget
             changed = False
             waiting = []
