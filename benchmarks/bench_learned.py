@@ -21,11 +21,18 @@ problems and plans each test problem with each model (runs ``learned-plan``
 and ``learned-minimal``); training time and planner runs are printed per
 model.
 
-``--oracle N``: on the first N test problems of each domain, the greedy
-minimal sufficient set (the machinery of ``--labels minimal``, on the test
-problem, started from the objects of the goal run's plan), its size beside
-each first selection, how long finding it took, and one planner run's wall
-time on it alone: what a perfect first selection would cost the planner.
+``--oracle N``: on the first N test problems of each domain (but those of
+``--oracle-skip``), the greedy minimal sufficient set (the machinery of
+``--labels minimal``, on the test problem, started from the objects of the
+goal run's plan with their closure), its size beside each first selection,
+how long finding it took, and the planner alone on it and on the goal
+scorer's first selection (``--repeat`` times each, in turns, median): how
+much faster a perfect first selection could have made the goal run's
+planner.
+
+``--repeat N``: a goal or learned run under 10 s runs N times in all, in
+turns, median time (at a second or less, other work on a shared machine
+moves a single run's time by half).
 
 Scoring cost: on each test problem, ``score_problem`` with the goal and with
 the learned scorer (in-process CPU seconds, median of 5); the difference is
@@ -37,14 +44,25 @@ The pddlgym problems come from the wheel's files, without its dependencies:
 
     pip install --no-deps pddlgym==0.0.7
 
-Takes 10-40 minutes on 2 cores with the defaults; for a short run:
+With the defaults (seven domains, all ten test problems, 120 s) it takes
+hours; docs/results.md's run (three test problems, 60 s, grid trained on 8
+problems, each of which pure Fast Downward takes about 20 s to solve) took
+30 minutes on a loaded 2-core machine:
+
+    python benchmarks/bench_learned.py --per-domain 3 --timeout 60 --repeat 3 --oracle 2 \\
+        --oracle-skip manymiconic --domains manyblockssmallpiles,manyblocksnopiles,manylogistics,\\
+manymiconic,manyferry,manygripper,manygrid:8
+
+For a short run:
 
     python benchmarks/bench_learned.py --per-domain 2 --timeout 60 --domains manylogistics,manyferry
 
-Taskography's medium scenes (training problems from the corpus):
+Taskography's medium scenes (twelve training problems each in the corpus;
+30 s as in the Taskography paper's setting; 11 minutes):
 
     python benchmarks/bench_learned.py --folder benchmarks/corpus/taskography/scene-graph \\
-        --domains taskographyv2medium10,taskographyv3medium10bagslots10 --per-domain 2 --timeout 60
+        --domains taskographyv2medium10,taskographyv3medium10bagslots10 --per-domain 2 --timeout 30 \\
+        --repeat 3 --oracle 2
 """
 
 from __future__ import annotations
