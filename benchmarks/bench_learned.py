@@ -1,14 +1,38 @@
-"""The learned scorer by PLOI's protocol: learn on pddlgym's small training problems, plan its large test ones.
+"""The learned scorer by PLOI's protocol: learn on small training problems, plan the large test ones.
 
 For each domain, ``relevance-plan learn``'s library call trains a model on the
-training problems (``manyX/problem0..39``), timed.  Then on each test problem
-(``manyX_test/``) four runs, one after the other, without the race (one core
-each): pure Fast Downward, ``plan --scorer goal`` (the default), ``plan
---scorer learned:MODEL`` and ``--method random``.  Every plan is validated on
-the original problem by the attempt loop.  Times are in-process: the attempt
-loop's wall time (reading, scoring, pruning, planner processes, validation),
-without interpreter start-up.  An unsolved run counts at the time limit in
-the geometric means (so a speed-up over an unsolved pure run is a lower bound).
+training problems (``NAME/problem0..39`` in pddlgym's layout), timed.  Then
+on each test problem (``NAME_test/``) these runs, one after the other, without
+the race (one core each): pure Fast Downward, ``plan --scorer goal`` (the
+default), ``plan --scorer learned:MODEL`` and ``--method random``.  Every plan
+is validated on the original problem by the attempt loop.  Times are
+in-process: the attempt loop's wall time (reading, scoring, pruning, planner
+processes, validation), without interpreter start-up.  An unsolved run counts
+at the time limit in the geometric means (so a speed-up over an unsolved pure
+run is a lower bound).
+
+Domains (``--domains``) are pddlgym's by default, read from the pddlgym
+wheel's files; ``--folder`` reads another folder of the same layout
+(``NAME.pddl`` beside ``NAME/`` and ``NAME_test/``), such as the corpus's
+Taskography scene graphs.  ``NAME:K`` trains on the first K problems only.
+
+``--labels plan,minimal`` trains one model per label kind on the same
+problems and plans each test problem with each model (runs ``learned-plan``
+and ``learned-minimal``); training time and planner runs are printed per
+model.
+
+``--oracle N``: on the first N test problems of each domain (but those of
+``--oracle-skip``), the greedy minimal sufficient set (the machinery of
+``--labels minimal``, on the test problem, started from the objects of the
+goal run's plan with their closure), its size beside each first selection,
+how long finding it took, and the planner alone on it and on the goal
+scorer's first selection (``--repeat`` times each, in turns, median): how
+much faster a perfect first selection could have made the goal run's
+planner.
+
+``--repeat N``: a goal or learned run under 10 s runs N times in all, in
+turns, median time (at a second or less, other work on a shared machine
+moves a single run's time by half).
 
 Scoring cost: on each test problem, ``score_problem`` with the goal and with
 the learned scorer (in-process CPU seconds, median of 5); the difference is
@@ -16,13 +40,29 @@ what applying the model adds.  The same on a problem of at least
 ``--scale`` objects (default 1,000) made of renamed copies of the first test
 problem side by side.
 
-The problems come from the pddlgym wheel's files, without its dependencies:
+The pddlgym problems come from the wheel's files, without its dependencies:
 
     pip install --no-deps pddlgym==0.0.7
 
-Takes 10-40 minutes on 2 cores with the defaults; for a short run:
+With the defaults (seven domains, all ten test problems, 120 s) it takes
+hours; docs/results.md's run (three test problems, 60 s, grid trained on 8
+problems, each of which pure Fast Downward takes about 20 s to solve) took
+30 minutes on a loaded 2-core machine:
+
+    python benchmarks/bench_learned.py --per-domain 3 --timeout 60 --repeat 3 --oracle 2 \\
+        --oracle-skip manymiconic --domains manyblockssmallpiles,manyblocksnopiles,manylogistics,\\
+manymiconic,manyferry,manygripper,manygrid:8
+
+For a short run:
 
     python benchmarks/bench_learned.py --per-domain 2 --timeout 60 --domains manylogistics,manyferry
+
+Taskography's medium scenes (twelve training problems each in the corpus;
+30 s as in the Taskography paper's setting; 11 minutes):
+
+    python benchmarks/bench_learned.py --folder benchmarks/corpus/taskography/scene-graph \\
+        --domains taskographyv2medium10,taskographyv3medium10bagslots10 --per-domain 2 --timeout 30 \\
+        --repeat 3 --oracle 2
 """
 
 from __future__ import annotations
@@ -40,17 +80,32 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))
 
-from relevance_plan.batch.learn import learn, plan_objects  # noqa: E402
+from relevance_plan.batch.learn import LABEL_KINDS, Solver, learn, minimal_objects, plan_objects  # noqa: E402
 from relevance_plan.io import load_domain, load_problem, write_text_atomic  # noqa: E402
 from relevance_plan.pddl.formulas import literals  # noqa: E402
 from relevance_plan.pddl.model import Problem  # noqa: E402
+from relevance_plan.pddl.plans import Plan  # noqa: E402
+from relevance_plan.pddl.writer import write_pruned_problem  # noqa: E402
 from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task  # noqa: E402
+from relevance_plan.planning.planners.base import PlannerStatus  # noqa: E402
+from relevance_plan.planning.planners.registry import DEFAULT_PLANNER_CONFIG  # noqa: E402
+from relevance_plan.planning.results import PlanResult  # noqa: E402
 from relevance_plan.relevance.learning.model import model_text  # noqa: E402
 from relevance_plan.relevance.scorers import PlanningTask  # noqa: E402
 from relevance_plan.relevance.setup import ScoringOptions, score_problem  # noqa: E402
 
-DOMAINS = "manylogistics,manymiconic,manyblockssmallpiles,manyferry"
+PLOI_DOMAINS = (
+    "manyblockssmallpiles",
+    "manyblocksnopiles",
+    "manylogistics",
+    "manymiconic",
+    "manyferry",
+    "manygripper",
+    "manygrid",
+)
+DOMAINS = ",".join(PLOI_DOMAINS)
 RUNS = ("pure", "goal", "learned", "random")
+SHORT = 10.0  # seconds: a pruned run shorter than this is repeated with --repeat
 
 
 def pddlgym_folder() -> Path:
@@ -64,13 +119,26 @@ def numbered(folder: Path) -> list[Path]:
     return sorted(folder.glob("problem*.pddl"), key=lambda p: int(p.stem[len("problem") :]))
 
 
-def options_for(run: str, model: str, timeout: float) -> PlanOptions:
+def run_names(runs: list[str], labels: list[str]) -> list[str]:
+    """The runs of each test problem: ``learned`` becomes one run per label kind when there are several."""
+    names = []
+    for run in runs:
+        if run == "learned" and len(labels) > 1:
+            names += [f"learned-{kind}" for kind in labels]
+        else:
+            names.append(run)
+    return names
+
+
+def options_for(run: str, models: dict[str, Path], timeout: float) -> PlanOptions:
     common = {"timeout": timeout, "race": False, "validators": ("builtin",)}
     if run == "pure":
         return PlanOptions(method="pure", **common)
     if run == "random":
         return PlanOptions(method="random", **common)
-    return PlanOptions(scorer="goal" if run == "goal" else f"learned:{model}", **common)
+    if run == "goal":
+        return PlanOptions(scorer="goal", **common)
+    return PlanOptions(scorer=f"learned:{models[run]}", **common)
 
 
 def scoring_seconds(domain_path: Path, problem_path: Path, scorer: str) -> float:
@@ -120,69 +188,180 @@ def geomean(values: list[float]) -> float:
     return math.exp(sum(math.log(v) for v in values) / len(values)) if values else float("nan")
 
 
-def run_domain(folder: Path, name: str, args: argparse.Namespace, scratch: Path) -> dict:
+def train(
+    domain_path: Path, training: list[Path], args: argparse.Namespace, scratch: Path, name: str
+) -> tuple[dict[str, Path], dict[str, dict]]:
+    """One model per label kind, written under ``scratch``; each kind's training figures."""
+    models, training_figures = {}, {}
+    for kind in args.labels:
+        started = time.perf_counter()
+        report = learn(domain_path, training, time_limit=args.train_limit, labels=kind, seed=args.seed)
+        seconds = time.perf_counter() - started
+        run = "learned" if len(args.labels) == 1 else f"learned-{kind}"
+        models[run] = write_text_atomic(scratch / f"{name}-{kind}.json", model_text(report.model))
+        runs = sum(p.planner_runs for p in report.problems)
+        needed = statistics.mean(len(p.positives) for p in report.problems)
+        size = statistics.mean(p.objects for p in report.problems)
+        training_figures[run] = {"seconds": seconds, "problems": len(report.problems), "planner_runs": runs}
+        print(
+            f"\n{name}: learned ({kind} labels) from {len(report.problems)} of {len(training)} training problems"
+            f" in {seconds:.1f} s, {runs} planner runs, {needed:.1f} needed objects a problem"
+            f" (of {size:.1f}), threshold P > {report.model.threshold:.3f}",
+            flush=True,
+        )
+    return models, training_figures
+
+
+def run_domain(folder: Path, spec: str, args: argparse.Namespace, scratch: Path) -> dict:
+    name, _, count = spec.partition(":")
     domain_path = folder / f"{name}.pddl"
-    training = numbered(folder / name)[: args.train]
+    training = numbered(folder / name)[: int(count) if count else args.train]
     tests = numbered(folder / f"{name}_test")[: args.per_domain]
-    started = time.perf_counter()
-    report = learn(domain_path, training, time_limit=args.train_limit, labels=args.labels, seed=args.seed)
-    learning = time.perf_counter() - started
-    model = scratch / f"{name}.json"
-    write_text_atomic(model, model_text(report.model))
-    print(
-        f"\n{name}: learned from {len(report.problems)} of {len(training)} training problems in {learning:.1f} s"
-        f" ({args.labels} labels, threshold P > {report.model.threshold:.3f})",
-        flush=True,
-    )
-    runs = args.runs
+    models, training_figures = train(domain_path, training, args, scratch, name)
+    runs = run_names(args.runs, args.labels)
     print(f"{'problem':<16}{'objects':>8}  " + "  ".join(f"{run:>24}" for run in runs) + f"  {'+scoring':>9}")
     rows = []
-    for problem in tests:
+    for number, problem in enumerate(tests):
         row: dict = {"problem": problem.name}
         first_kept: dict[str, frozenset[str]] = {}
-        needed: frozenset[str] | None = None
+        plans: dict[str, Plan] = {}
         for run in runs:
-            result = plan_task(domain_path, problem, options_for(run, str(model), args.timeout))
-            solved = result.status is PlanStatus.SOLVED and result.valid
-            row[run] = (solved, result.wall_time, result.objects_kept, len(result.attempts))
+            result = plan_task(domain_path, problem, options_for(run, models, args.timeout))
+            row[run] = measured(result)
+            solved = row[run][0]
             row["objects"] = result.objects_total
             if result.selection is not None:
                 first_kept[run] = result.selection.kept
-            if run == "pure" and solved:
-                domain = load_domain(domain_path)
-                pure_task = PlanningTask(domain, load_problem(problem, domain))
-                needed = plan_objects(pure_task, result.plan)
+            if solved:
+                plans[run] = result.plan
+        repeat_short_runs(row, runs, domain_path, problem, models, args)
+        row["first"] = {run: len(kept) for run, kept in first_kept.items()}
+        domain = load_domain(domain_path)
+        task = PlanningTask(domain, load_problem(problem, domain))
+        learned = [run for run in runs if run.startswith("learned")]
         goal_scoring = scoring_seconds(domain_path, problem, "goal")
-        learned_scoring = scoring_seconds(domain_path, problem, f"learned:{model}")
-        row["added"] = learned_scoring - goal_scoring
+        row["added"] = {
+            run: scoring_seconds(domain_path, problem, f"learned:{models[run]}") - goal_scoring for run in learned
+        }
         rows.append(row)
         cells = []
         for run in runs:
-            solved, seconds, kept, attempts = row[run]
+            solved, seconds, kept, attempts, _ = row[run]
             cells.append(f"{'ok' if solved else 'FAIL':>4} {seconds:7.2f}s {kept:>5} kept {attempts}att")
-        print(
-            f"{problem.name:<16}{row['objects']:>8}  "
-            + "  ".join(f"{c:>24}" for c in cells)
-            + f"  {row['added']:+8.3f}s"
-        )
-        if needed is not None:
+        added = " ".join(f"{value:+8.3f}s" for value in row["added"].values())
+        print(f"{problem.name:<16}{row['objects']:>8}  " + "  ".join(f"{c:>24}" for c in cells) + f"  {added}")
+        if first_kept:
+            print(f"{'':<16}first selections: " + ", ".join(f"{run} {len(kept)}" for run, kept in first_kept.items()))
+        if "pure" in plans:
+            needed = plan_objects(task, plans["pure"])
             # the objects pure Fast Downward's plan names, with their closure, against each first selection
             print(
                 f"{'':<16}the full problem's plan uses {len(needed)} objects (with closure); first selections: "
                 + ", ".join(
                     f"{run} keeps {len(kept & needed)} of them and {len(kept - needed)} others"
-                    + missed(pure_task, needed - kept)
+                    + missed(task, needed - kept)
                     for run, kept in first_kept.items()
-                )
+                ),
+                flush=True,
             )
-    scale = scaled_scoring(domain_path, tests[0], str(model), args.scale, scratch) if tests and args.scale else None
+        start_plan = plans.get("goal") or plans.get("pure")
+        if number < args.oracle and name not in args.oracle_skip and start_plan is not None:
+            row["oracle"] = oracle(domain_path, problem, task, start_plan, first_kept, args, scratch)
+    scale = None
+    if tests and args.scale:
+        scale = scaled_scoring(domain_path, tests[0], str(next(iter(models.values()))), args.scale, scratch)
     if scale is not None:
         objects, goal_seconds, learned_seconds = scale
         print(
             f"scoring {objects} objects (copies of {tests[0].name}): goal {goal_seconds:.3f} s,"
             f" learned {learned_seconds:.3f} s, the model added {learned_seconds - goal_seconds:+.3f} s (CPU)"
         )
-    return {"name": name, "learning": learning, "rows": rows, "threshold": report.model.threshold, "scale": scale}
+    return {"name": name, "training": training_figures, "rows": rows, "scale": scale, "runs": runs}
+
+
+def measured(result: PlanResult) -> tuple[bool, float, int, int, float]:
+    """(solved with a valid plan, wall seconds, objects kept, attempts, planner seconds)."""
+    solved = result.status is PlanStatus.SOLVED and result.valid
+    return solved, result.wall_time, result.objects_kept, len(result.attempts), result.planner_time
+
+
+def repeat_short_runs(
+    row: dict, runs: list[str], domain_path: Path, problem: Path, models: dict[str, Path], args: argparse.Namespace
+) -> None:
+    """With ``--repeat N``, the goal and learned runs that took under ``SHORT`` seconds run N times in
+    all, in turns, and keep the median wall and planner times: at a second or less, other work on
+    the machine moves one run's time by half."""
+    short = [run for run in runs if run != "pure" and run != "random" and row[run][1] < SHORT]
+    times = {run: [row[run]] for run in short}
+    for _ in range(args.repeat - 1):
+        for run in short:
+            times[run].append(measured(plan_task(domain_path, problem, options_for(run, models, args.timeout))))
+    for run, each in times.items():
+        solved, _, kept, attempts, _ = each[0]
+        row[run] = (
+            solved and all(m[0] for m in each),
+            statistics.median(m[1] for m in each),
+            kept,
+            attempts,
+            statistics.median(m[4] for m in each),
+        )
+
+
+def oracle(
+    domain_path: Path,
+    problem_path: Path,
+    task: PlanningTask,
+    plan: Plan,
+    first_kept: dict[str, frozenset[str]],
+    args: argparse.Namespace,
+    scratch: Path,
+) -> dict:
+    """The greedy minimal sufficient set from ``plan``'s objects, against each first selection; the
+    planner alone on it and on the goal run's first selection (``--repeat`` times each, in turns,
+    median): how much faster a perfect first selection would have made the goal run's planner."""
+    started = time.perf_counter()
+    solver = Solver(str(domain_path), "fast-downward", DEFAULT_PLANNER_CONFIG, args.oracle_limit, str(scratch))
+    start = plan_objects(task, plan)
+    minimal = minimal_objects(task, str(problem_path), start, solver, args.seed)
+    finding = time.perf_counter() - started
+    sets = {"minimal": minimal}
+    if "goal" in first_kept and first_kept["goal"] != minimal:
+        sets["goal"] = first_kept["goal"]
+    paths = {
+        which: write_text_atomic(scratch / f"oracle-{which}.pddl", write_pruned_problem(task.problem, kept))
+        for which, kept in sets.items()
+    }
+    times: dict[str, list[float]] = {which: [] for which in sets}
+    solved = True
+    for _ in range(args.repeat):
+        for which, path in paths.items():
+            outcome = solver.planner.run(str(domain_path), str(path), time_limit=args.timeout, memory_limit_mb=None)
+            solved = solved and (which != "minimal" or outcome.status is PlannerStatus.SOLVED)
+            times[which].append(outcome.wall_time)
+    seconds = statistics.median(times["minimal"])
+    goal_seconds = statistics.median(times["goal"]) if "goal" in times else None
+    print(
+        f"{'':<16}oracle: {len(minimal)} objects (from the goal run's plan's {len(start)}; found in {finding:.1f} s,"
+        f" {solver.runs} planner runs); the planner alone on them: {seconds:.2f} s"
+        f"{'' if solved else ' (not solved)'}; first selections: "
+        + ", ".join(f"{run} {len(kept)} ({len(kept & minimal)} of its objects)" for run, kept in first_kept.items()),
+        flush=True,
+    )
+    if "goal" in first_kept:
+        bound = 1.0 if goal_seconds is None else goal_seconds / seconds
+        print(
+            f"{'':<16}"
+            + (
+                "the goal scorer's first selection is this set: no first selection could make its planner faster"
+                if goal_seconds is None
+                else f"the planner alone on the goal scorer's first selection: {goal_seconds:.2f} s; a perfect first"
+                f" selection could make it at most {bound:.2f}x faster"
+            ),
+            flush=True,
+        )
+    else:
+        bound = float("nan")
+    return {"size": len(minimal), "seconds": seconds, "solved": solved, "finding": finding, "bound": bound}
 
 
 def missed(task: PlanningTask, names: frozenset[str]) -> str:
@@ -204,7 +383,7 @@ def scaled_scoring(
 
 
 def seconds_of(row: dict, run: str, limit: float) -> float:
-    solved, seconds, _, _ = row[run]
+    solved, seconds = row[run][:2]
     return seconds if solved else max(seconds, limit)
 
 
@@ -215,50 +394,93 @@ def ratios(rows: list[dict], top: str, bottom: str, limit: float) -> list[float]
     return [seconds_of(r, top, limit) / seconds_of(r, bottom, limit) for r in rows]
 
 
-def summary(results: list[dict], limit: float, runs: list[str]) -> None:
-    print("\nper domain (geometric means; an unsolved run counts at the time limit):")
-    print(
-        f"{'domain':<24}{'learn s':>8}{'solved ' + '/'.join(r[0] for r in runs):>16}"
-        f"{'l over pure':>12}{'l over goal':>12}{'g over pure':>12}{'kept g/l':>14}{'attempts g/l':>14}"
-    )
-    over_pure, over_goal = [], []
+def summary(results: list[dict], limit: float) -> None:
+    print("\nper domain and run (geometric-mean seconds, an unsolved run counting at the time limit;")
+    print("mean objects kept in the end and in the first selection; mean attempts; mean planner seconds):")
+    print(f"{'domain':<32}{'run':<17}{'solved':>7}{'time s':>9}{'kept':>8}{'first':>8}{'attempts':>9}{'planner s':>10}")
     for result in results:
         rows = result["rows"]
-        solved = "/".join(str(sum(row[run][0] for row in rows)) for run in runs)
-        lp, lg, gp = (
-            ratios(rows, "pure", "learned", limit),
-            ratios(rows, "goal", "learned", limit),
-            ratios(rows, "pure", "goal", limit),
-        )
-        over_pure += lp
-        over_goal += lg
-        kept = "/".join(
-            f"{statistics.mean(r[run][2] for r in rows):.0f}" if run in runs else "-" for run in ("goal", "learned")
-        )
-        tries = "/".join(
-            f"{statistics.mean(r[run][3] for r in rows):.1f}" if run in runs else "-" for run in ("goal", "learned")
-        )
-        print(
-            f"{result['name']:<24}{result['learning']:>8.1f}{solved:>16}"
-            f"{geomean(lp):>12.2f}{geomean(lg):>12.2f}{geomean(gp):>12.2f}{kept:>14}{tries:>14}"
-        )
-    print(f"{'all':<24}{'':>8}{'':>16}{geomean(over_pure):>12.2f}{geomean(over_goal):>12.2f}")
-    added = [row["added"] for result in results for row in result["rows"]]
+        for run in result["runs"]:
+            solved = sum(row[run][0] for row in rows)
+            firsts = [row["first"][run] for row in rows if run in row["first"]]
+            print(
+                f"{result['name']:<32}{run:<17}{solved:>4}/{len(rows):<2}"
+                f"{geomean([seconds_of(row, run, limit) for row in rows]):>9.2f}"
+                f"{statistics.mean(row[run][2] for row in rows):>8.0f}"
+                f"{statistics.mean(firsts) if firsts else float('nan'):>8.0f}"
+                f"{statistics.mean(row[run][3] for row in rows):>9.1f}"
+                f"{statistics.mean(row[run][4] for row in rows):>10.2f}"
+            )
+        measured = [row["oracle"] for row in rows if "oracle" in row]
+        if measured:
+            print(
+                f"{result['name']:<32}{'oracle':<17}{sum(o['solved'] for o in measured):>4}/{len(measured):<2}"
+                f"{geomean([o['seconds'] for o in measured]):>9.2f}{statistics.mean(o['size'] for o in measured):>8.0f}"
+                f"{'':>8}{'':>9}{geomean([o['seconds'] for o in measured]):>10.2f}"
+                f"  (the planner alone on the minimal set; {len(measured)} problems;"
+                f" a perfect first selection: at most {geomean([o['bound'] for o in measured]):.2f}x over goal's)"
+            )
+    print("\nspeed-ups (geometric means over the domain's test problems):")
+    print(f"{'domain':<32}{'run':<17}{'training s':>11}{'runs':>6}{'over pure':>10}{'over goal':>10}{'goal/pure':>10}")
+    over_pure: dict[str, list[float]] = {}
+    over_goal: dict[str, list[float]] = {}
+    for result in results:
+        rows = result["rows"]
+        goal_over_pure = geomean(ratios(rows, "pure", "goal", limit))
+        for run in [r for r in result["runs"] if r.startswith("learned")]:
+            lp, lg = ratios(rows, "pure", run, limit), ratios(rows, "goal", run, limit)
+            over_pure.setdefault(run, []).extend(lp)
+            over_goal.setdefault(run, []).extend(lg)
+            figures = result["training"][run]
+            print(
+                f"{result['name']:<32}{run:<17}{figures['seconds']:>11.1f}{figures['planner_runs']:>6}"
+                f"{geomean(lp):>10.2f}{geomean(lg):>10.2f}{goal_over_pure:>10.2f}"
+            )
+    for run in over_pure:
+        print(f"{'all':<32}{run:<17}{'':>11}{'':>6}{geomean(over_pure[run]):>10.2f}{geomean(over_goal[run]):>10.2f}")
+    added = [value for result in results for row in result["rows"] for value in row["added"].values()]
     if added:
         print(f"applying the model added {statistics.median(added):+.3f} s (median), {max(added):+.3f} s (most) of CPU")
 
 
 def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--domains", default=DOMAINS, help=f"Comma-separated pddlgym domains (default: {DOMAINS}).")
+    parser.add_argument(
+        "--domains",
+        default=DOMAINS,
+        help=f"Comma-separated domains, NAME or NAME:K to train on K problems (default: {DOMAINS}).",
+    )
+    parser.add_argument(
+        "--folder",
+        type=Path,
+        default=None,
+        help="Folder of NAME.pddl, NAME/ and NAME_test/ (default: the pddlgym wheel's pddl folder).",
+    )
     parser.add_argument("--per-domain", type=int, default=10, help="Test problems per domain (default: all 10).")
     parser.add_argument("--train", type=int, default=40, help="Training problems per domain (default: 40).")
     parser.add_argument("--timeout", type=float, default=120.0, help="Seconds for each test run (default: 120).")
     parser.add_argument("--train-limit", type=float, default=30.0, help="Seconds for each training planner run.")
-    parser.add_argument("--labels", choices=("plan", "minimal"), default="plan")
+    parser.add_argument(
+        "--labels", default="plan", help="Label kinds, comma-separated: plan, minimal or both (default: plan)."
+    )
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument(
         "--runs", default=",".join(RUNS), help=f"Comma-separated runs of each test problem (default: {','.join(RUNS)})."
+    )
+    parser.add_argument(
+        "--repeat",
+        type=int,
+        default=1,
+        help=f"Run goal and learned runs shorter than {SHORT:g} s this many times, median time (default: 1).",
+    )
+    parser.add_argument(
+        "--oracle", type=int, default=0, help="Find the minimal sufficient set on this many test problems (default: 0)."
+    )
+    parser.add_argument(
+        "--oracle-limit", type=float, default=30.0, help="Seconds for each planner run while finding it (default: 30)."
+    )
+    parser.add_argument(
+        "--oracle-skip", default="", help="Comma-separated domains not to find it on (too many planner runs)."
     )
     parser.add_argument(
         "--scale",
@@ -268,17 +490,22 @@ def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
     )
     args = parser.parse_args(argv)
     args.runs = [run for run in RUNS if run in args.runs.split(",")]
+    args.oracle_skip = set(filter(None, args.oracle_skip.split(",")))
+    args.labels = [kind for kind in args.labels.split(",") if kind]
+    unknown = [kind for kind in args.labels if kind not in LABEL_KINDS]
+    if unknown or not args.labels:
+        parser.error(f"--labels takes {', '.join(LABEL_KINDS)} (comma-separated)")
     return args
 
 
 def main(argv: list[str] | None = None) -> None:
     args = parse_args(argv)
-    folder = pddlgym_folder()
+    folder = args.folder or pddlgym_folder()
     results = []
     with tempfile.TemporaryDirectory(prefix="bench-learned-") as scratch:
-        for name in args.domains.split(","):
-            results.append(run_domain(folder, name, args, Path(scratch)))
-    summary(results, args.timeout, args.runs)
+        for spec in args.domains.split(","):
+            results.append(run_domain(folder, spec, args, Path(scratch)))
+    summary(results, args.timeout)
 
 
 if __name__ == "__main__":

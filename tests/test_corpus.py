@@ -97,3 +97,17 @@ def test_each_domain_and_first_problem_reads_or_is_a_known_unreadable_one():
     surprises = sorted(set(refused) - set(unreadable))
     assert not surprises, "\n".join(f"{name}: {refused[name]}" for name in surprises)
     assert set(unreadable) <= {entry["path"] for entry in manifest()["folders"]}
+
+
+def test_training_problems_pair_with_their_test_folders_domain():
+    data = manifest()
+    training = [entry for entry in data["folders"] if "training" in entry]
+    assert training, "the Taskography training problems are in the manifest"
+    for entry in training:
+        folder = CORPUS / entry["training"]["path"]
+        listed = [f for f in data["files"] if f["role"] == "training-problem" and f["folder"] == entry["path"]]
+        entries = find_suite_problems(folder)
+        assert len(entries) == len(listed) == entry["training"]["problems"]
+        (test_domain,) = {e.domain for e in find_suite_problems(CORPUS / entry["path"])}
+        assert {e.domain for e in entries} == {test_domain}
+        load_problem(entries[0].problem, load_domain(test_domain))

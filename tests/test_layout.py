@@ -54,6 +54,21 @@ def test_changing_an_option_changes_the_job_key(name, coffee_domain_path):
     assert before != after
 
 
+def test_retraining_a_learned_model_at_the_same_path_changes_the_job_key(coffee_domain_path, tmp_path):
+    problem = str(REPO / "problems" / "coffee-simple.pddl")
+    model = tmp_path / "model.json"
+    options = PlanOptions(scorer=f"learned:{model}")
+
+    def key() -> str:
+        return config_hash(config_fingerprint(options, str(coffee_domain_path), problem))
+
+    model.write_text('{"threshold": 0.3}')
+    first = key()
+    assert key() == first  # the same file: the same key
+    model.write_text('{"threshold": 0.4}')
+    assert key() != first
+
+
 @pytest.fixture
 def hard_gripper(tmp_path):
     """A problem whose first pruning fails at these thresholds (the rooms and grippers are cut)."""

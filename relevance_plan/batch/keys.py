@@ -98,7 +98,7 @@ FINGERPRINT_RULES: dict[str, str] = {
     "widen": "pruning",
     "widen_factor": "pruning",
     "first_share": "pruning",
-    "scorer": "pruning",
+    "scorer": "pruning",  # and, for learned:MODEL, the sha256 of the model file
     "goal_filter": "pruning",
     "prefer_free": "pruning",
     "economical": "pruning",
@@ -118,8 +118,9 @@ def config_fingerprint(options: PlanOptions, domain_path: str | None, problem_pa
 
     Besides the options: the tool version (a new release may prune or
     validate differently), for pruning methods the sha256 of the knowledge
-    model the run would use, and for the oracle the sha256 of the sidecar
-    (its ground truth).
+    model the run would use, for ``--scorer learned:MODEL`` the sha256 of
+    MODEL (a model retrained at the same path must not reuse rows), and for
+    the oracle the sha256 of the sidecar (its ground truth).
     """
     from relevance_plan.planning.validate import default_validators
 
@@ -140,6 +141,9 @@ def config_fingerprint(options: PlanOptions, domain_path: str | None, problem_pa
         config["tau_class"] = float(options.thresholds.tau_class)
         config["tau_element"] = float(options.thresholds.tau_element)
         config["model_hash"] = _file_hash(_model_file(options, domain_path))
+        learned = options.scoring.learned_model_path
+        if learned is not None:
+            config["learned_model_hash"] = _file_hash(learned)
         if options.method == "oracle" or options.scorer == "oracle":
             config["sidecar_hash"] = _file_hash(sidecar_path(problem_path))
     return config
