@@ -122,8 +122,9 @@ def pad_with_clones(domain: Domain, problem: Problem, extra: int, seed: int = 0)
     within a type, the sources come in an order shuffled by ``seed``, one
     after the other.  A clone has a fresh name and its source's type, and
     every initial fact, numeric value and timed literal that mentions the
-    source is copied with the clone in the source's place (every occurrence).
-    The goal, constraints and metric are unchanged.  The result has no
+    source is copied with the clone in the source's place (every occurrence):
+    a clone of a location has its roads, and what stood at the location stands
+    at the clone too.  The goal, constraints and metric are unchanged.  The result has no
     source text: write it with ``pddl.formatter.format_problem``.
 
     ``UsageError`` when ``extra`` is negative, or when it is positive and no
