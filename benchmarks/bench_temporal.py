@@ -1,43 +1,66 @@
 #!/usr/bin/env python
-"""Pure vs relevance with temporal and numeric planners at growing object counts.
+"""Pure vs relevance with temporal and numeric planners: on the IPC corpus, and on generated worlds.
 
-For each world and size, one problem is generated (`relevance-plan generate`,
-seeded), then planned in this process by `plan_task`, first on the full
-problem (`--method pure`), then with relevance (`--method relevance`, no
-race, so both use one core), with the same planner and time limit.  Every
-plan reported as solved was validated on the original problem by the
-builtin PDDL 2.1 simulator (or unified-planning's validator).  Prints one
-row per run and pure / relevance per planner as a geometric mean over the
-sizes both solved; a run that fails counts as the time limit.
+``corpus``: the IPC's own temporal, numeric and timed-literals domains in
+``benchmarks/corpus/`` (121 folders; ``--one-per-family`` keeps the newest
+competition's folder of each track and domain: 66).  For each folder, its
+smallest problem (``--per-folder K``: the K smallest), and for each
+installed planner (``--planners``, default LPG and the unified-planning
+engines Aries, Tamer, ENHSP and Kairos) whose declared features accept it
+(the registry decides; a refusal gets no row and is counted), this process
+runs ``plan_task`` twice, one after the other: ``method="pure"``, then
+relevance with the tool's defaults as users get them (the race on when two
+cores are there; ``--no-race`` for one core).  ``--extra N`` plans instead
+the problem padded with N clones of objects the goal does not need
+(``relevance_plan.generators.padded.pad_with_clones``, seeded by
+``--seed``), written to a temporary folder; ``--pure-solved-in JSON`` keeps
+the pairs whose pure run solved in an earlier ``--json`` output.  Every
+solved plan was validated on the (padded) original; a row solved without a
+valid plan is flagged and the script exits 1.  One row per (folder,
+planner); an unsolved run counts as the ``--timeout``; a row solved by
+neither is listed but left out of the means.  At the end, per planner: the
+geometric mean of pure/relevance, the rows where relevance was more than
+1.25x + 0.5 s slower than pure, the rows solved by one side only.
 
-Worlds: driverlog-temporal (LPG, Tamer, Aries), coffee-temporal with
-distractors (LPG, Aries, Tamer), zenotravel-numeric (LPG, ENHSP when Java is
-there, Tamer).  Aries and Tamer run on these worlds because the up child fits
-each problem to them (whole-valued functions read as integers for Aries, the
-type hierarchy flattened and undefined distances guarded for Tamer); Aries
-takes no numeric effect by a function, so not zenotravel-numeric.
+``worlds`` (the default): for each generated world and size, one problem
+(``relevance-plan generate``, seeded), planned pure and with relevance (no
+race), with the same planner and time limit; pure/relevance per planner as
+a geometric mean over the sizes.  Worlds: driverlog-temporal (LPG, Tamer,
+Aries), coffee-temporal with distractors (LPG, Aries, Tamer),
+zenotravel-numeric (LPG, ENHSP when Java is there, Tamer).
 
-    python benchmarks/bench_temporal.py                  # the default grid: takes about 30 minutes
+    python benchmarks/bench_temporal.py corpus --one-per-family --timeout 20 --json rows.json   # about an hour
+    python benchmarks/bench_temporal.py corpus --one-per-family --extra 40 --pure-solved-in rows.json  # 30 minutes
+    python benchmarks/bench_temporal.py corpus --folders driverlog --planners lpg,up:aries --extra 60
+    python benchmarks/bench_temporal.py                  # the generated grid: takes about 30 minutes
     python benchmarks/bench_temporal.py --quick          # the smallest sizes only: takes about 4 minutes
-    python benchmarks/bench_temporal.py --timeout 120 --seed 3
+
+Progress lines go to stderr; rows and the summary to stdout.
 """
 
 from __future__ import annotations
 
 import argparse
+import json
 import math
 import shutil
 import subprocess
 import sys
 import tempfile
 import time
+from dataclasses import asdict, dataclass, field
 from pathlib import Path
+from typing import Any
 
 from relevance_plan.errors import RelevancePlanError
+from relevance_plan.generators.padded import pad_with_clones
+from relevance_plan.io import SuiteProblem, find_suite_problems, load_domain, load_problem, write_text_atomic
+from relevance_plan.pddl.formatter import format_problem
+from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.planning.loop import PlanOptions, plan_task
-
-# (world, how its size is given, sizes, planners)
-from relevance_plan.planning.results import PlanStatus
+from relevance_plan.planning.planners.preparation import prepare_planner
+from relevance_plan.planning.planners.registry import make_planner
+from relevance_plan.planning.results import PlanResult, PlanStatus
 
 # (world, how its size is given, sizes, planners)
 GRID = (
@@ -78,9 +101,10 @@ def run(domain: Path, problem: Path, method: str, planner: str, timeout: float):
     return result, time.perf_counter() - started
 
 
-def main(argv: list[str] | None = None) -> int:
+def run_worlds(argv: list[str]) -> int:
     parser = argparse.ArgumentParser(
-        description=__doc__.split("\n\n")[0],
+        prog="bench_temporal.py [worlds]",
+        description="Pure vs relevance on generated temporal and numeric worlds at growing sizes.",
         epilog="The default grid takes about 30 minutes on 2 cores; --quick about 4 minutes.",
     )
     parser.add_argument("--timeout", type=float, default=60.0)
@@ -124,6 +148,345 @@ def main(argv: list[str] | None = None) -> int:
         mean = math.exp(sum(math.log(v) for v in values) / len(values))
         print(f"{planner}: pure / relevance geometric mean {mean:.2f} over {len(values)} problems")
     return 0
+
+
+# --------------------------------------------------------------------------- the IPC corpus
+
+TRACKS = ("temporal", "numeric", "timed-literals")
+CORPUS_PLANNERS = ("lpg", "up:aries", "up:tamer", "up:enhsp", "up:kairos")
+# A row where relevance took longer than this many times pure, plus SLOWER_SLACK seconds, is a miss.
+SLOWER_FACTOR = 1.25
+SLOWER_SLACK = 0.5
+LABEL = 52  # the width of the folder column: year/folder
+# Words that begin the part of a folder's name that names a form of its domain (the competition's
+# variants: durations, numbers, STRIPS or ADL, compiled time windows): --one-per-family keeps one
+# folder per track and the name before the first of them.
+FORM_WORDS = frozenset(
+    {
+        "time",
+        "temporal",
+        "metric",
+        "numeric",
+        "complex",
+        "strips",
+        "adl",
+        "fluents",
+        "automatic",
+        "hand",
+        "satisficing",
+        "constraints",
+        "compiled",
+    }
+)
+
+
+def family_of(folder: Path) -> str:
+    """The domain a folder holds a form of: its name up to the first form word, hyphens and a
+    plural 's' dropped (``driver-log-temporal-satisficing`` and ``driverlog-time-automatic`` are
+    both ``driverlog``)."""
+    words = []
+    for word in folder.name.split("-"):
+        if word in FORM_WORDS:
+            break
+        words.append(word)
+    return "".join(words).rstrip("s") or folder.name
+
+
+def one_per_family(chosen: list[tuple[str, Path]]) -> list[tuple[str, Path]]:
+    """Of the (track, folder) pairs in manifest order (oldest competition first), the last of each
+    track and family: the newest competition's form."""
+    newest = {(track, family_of(folder)): (track, folder) for track, folder in chosen}
+    kept = set(newest.values())
+    return [pair for pair in chosen if pair in kept]
+
+
+def corpus_folders(filters: list[str], families: bool) -> list[Path]:
+    """The corpus folders of the temporal, numeric and timed-literals tracks, in manifest order,
+    whose path contains one of ``filters`` (all when none)."""
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    import corpus
+
+    chosen = [(track, folder) for track in TRACKS for folder in corpus.folders(track)]
+    if families:
+        chosen = one_per_family(chosen)
+    root = corpus.corpus_root()
+    return [f for _, f in chosen if not filters or any(text in str(f.relative_to(root)) for text in filters)]
+
+
+def smallest_problems(folder: Path, count: int) -> list[SuiteProblem]:
+    """The folder's ``count`` smallest problems (by file size, then name) that have a domain."""
+    found = [entry for entry in find_suite_problems(folder) if entry.domain is not None and entry.error is None]
+    return sorted(found, key=lambda entry: (entry.problem.stat().st_size, entry.problem.name))[:count]
+
+
+@dataclass
+class Row:
+    """One (problem, planner) pair: the two runs and what they say."""
+
+    folder: str
+    problem: str
+    planner: str
+    objects: int
+    extra: int
+    pure: dict[str, Any]
+    relevance: dict[str, Any]
+    pure_seconds: float
+    relevance_seconds: float
+    pure_solved: bool
+    relevance_solved: bool
+    unvalidated: list[str] = field(default_factory=list)
+
+    @property
+    def counted(self) -> bool:
+        return self.pure_solved or self.relevance_solved
+
+    def charged(self, timeout: float) -> tuple[float, float]:
+        """The two times, an unsolved run counted as the timeout."""
+        return (
+            self.pure_seconds if self.pure_solved else timeout,
+            self.relevance_seconds if self.relevance_solved else timeout,
+        )
+
+    def ratio(self, timeout: float) -> float:
+        pure, relevance = self.charged(timeout)
+        return pure / relevance
+
+    def slower(self, timeout: float) -> bool:
+        pure, relevance = self.charged(timeout)
+        return self.counted and relevance > SLOWER_FACTOR * pure + SLOWER_SLACK
+
+
+def compact(result: dict[str, Any]) -> dict[str, Any]:
+    """A result's JSON without its plan's steps, each attempt's object lists as their lengths."""
+    attempts = [
+        {key: len(value) if isinstance(value, list) else value for key, value in attempt.items()}
+        for attempt in result["attempt_log"]
+    ]
+    return {**{key: value for key, value in result.items() if key != "plan"}, "attempt_log": attempts}
+
+
+def timed_plan(domain: Path, problem: Path, options: PlanOptions) -> tuple[PlanResult, float]:
+    started = time.perf_counter()
+    result = plan_task(domain, problem, options)
+    return result, time.perf_counter() - started
+
+
+def accepts(planner: str, domain: Domain, problem: Problem, path: Path) -> str | None:
+    """Why ``planner`` refuses this problem (its declared features, through the registry), or None."""
+    try:
+        prepare_planner(make_planner(planner), domain, problem, str(path))
+    except RelevancePlanError as error:
+        return error.message
+    return None
+
+
+def note(message: str) -> None:
+    print(message, file=sys.stderr, flush=True)
+
+
+def run_corpus(argv: list[str]) -> int:
+    parser = argparse.ArgumentParser(
+        prog="bench_temporal.py corpus",
+        description="Pure vs relevance (as users get it) on the IPC temporal, numeric and timed-literals "
+        "folders of benchmarks/corpus, unpadded or padded with clones of objects the goal does not need.",
+        epilog="With --one-per-family on 2 cores: about an hour unpadded (--timeout 20), about 30 minutes"
+        " padded with 40 clones over the pairs pure solved (--timeout 30).",
+    )
+    parser.add_argument("--planners", default=",".join(CORPUS_PLANNERS), help="comma-separated planner names")
+    parser.add_argument(
+        "--folders", action="append", default=[], help="only folders whose path contains this text (repeatable)"
+    )
+    parser.add_argument("--one-per-family", action="store_true", help="the newest folder of each track and domain")
+    parser.add_argument("--extra", type=int, default=0, help="pad each problem with this many clones")
+    parser.add_argument("--seed", type=int, default=1, help="the padding's seed")
+    parser.add_argument("--timeout", type=float, default=30.0, help="per run, seconds")
+    parser.add_argument("--per-folder", type=int, default=1, help="the K smallest problems of each folder")
+    parser.add_argument("--no-race", action="store_true", help="relevance without the race (one core)")
+    parser.add_argument("--json", type=Path, help="write the raw rows (both results' JSON) here")
+    parser.add_argument(
+        "--pure-solved-in",
+        type=Path,
+        metavar="JSON",
+        help="only the (problem, planner) pairs whose pure run solved in this earlier --json output",
+    )
+    args = parser.parse_args(argv)
+    wanted = None
+    if args.pure_solved_in:
+        earlier = json.loads(args.pure_solved_in.read_text(encoding="utf-8"))
+        wanted = {(row["folder"], row["problem"], row["planner"]) for row in earlier if row["pure_solved"]}
+
+    from relevance_plan.planning.race import race_by_default
+
+    race = race_by_default("relevance") and not args.no_race
+    planners = [name.strip() for name in args.planners.split(",") if name.strip()]
+    usable = []
+    for name in planners:
+        missing = planner_available(name)
+        if missing:
+            print(f"# {name} skipped: {missing}")
+        else:
+            usable.append(name)
+    folders = corpus_folders(args.folders, args.one_per_family)
+    print(
+        f"# {len(folders)} folders, planners {', '.join(usable)}; --extra {args.extra} (seed {args.seed}),"
+        f" --timeout {args.timeout:g}, relevance {'with' if race else 'without'} the race"
+    )
+    header = (
+        f"{'folder':58} {'planner':9} {'objects':>7} {'pure s':>8} {'relev. s':>8} {'kept':>7} {'att':>3} {'ratio':>6}"
+    )
+    print(header, flush=True)
+    rows: list[Row] = []
+    refused: dict[str, int] = {name: 0 for name in usable}
+    unreadable: list[str] = []
+    unpaddable: list[str] = []
+    with tempfile.TemporaryDirectory(prefix="bench-temporal-corpus-") as scratch:
+        for folder in folders:
+            label = f"{folder.parent.name}/{folder.name}"
+            for entry in smallest_problems(folder, args.per_folder):
+                assert entry.domain is not None
+                if wanted is not None and not any(key[:2] == (label, entry.problem.name) for key in wanted):
+                    continue
+                try:
+                    domain = load_domain(entry.domain)
+                    problem = load_problem(entry.problem, domain)
+                except RelevancePlanError as error:
+                    unreadable.append(label)
+                    print(f"{label:{LABEL}} our reader refuses it: {error.message[:80]}")
+                    continue
+                path = entry.problem
+                if args.extra:
+                    try:
+                        problem = pad_with_clones(domain, problem, args.extra, seed=args.seed)
+                    except RelevancePlanError as error:
+                        unpaddable.append(label)
+                        print(f"{label:{LABEL}} not padded: {error.message[:80]}")
+                        continue
+                    path = write_text_atomic(
+                        Path(scratch) / f"{len(rows)}-{entry.problem.name}", format_problem(problem)
+                    )
+                for planner in usable:
+                    if wanted is not None and (label, entry.problem.name, planner) not in wanted:
+                        continue
+                    why = accepts(planner, domain, problem, path)
+                    if why is not None:
+                        refused[planner] += 1
+                        note(f"{label} {planner}: refused ({why[:100]})")
+                        continue
+                    note(f"{label} {planner}: pure")
+                    pure, pure_time = timed_plan(
+                        entry.domain, path, PlanOptions(method="pure", planner=planner, timeout=args.timeout)
+                    )
+                    note(f"{label} {planner}: relevance")
+                    rel, rel_time = timed_plan(
+                        entry.domain, path, PlanOptions(planner=planner, timeout=args.timeout, race=race)
+                    )
+                    row = Row(
+                        folder=label,
+                        problem=entry.problem.name,
+                        planner=planner,
+                        objects=len(problem.objects),
+                        extra=args.extra,
+                        pure=compact(pure.to_json()),
+                        relevance=compact(rel.to_json()),
+                        pure_seconds=pure_time,
+                        relevance_seconds=rel_time,
+                        pure_solved=pure.status is PlanStatus.SOLVED,
+                        relevance_solved=rel.status is PlanStatus.SOLVED,
+                        unvalidated=[
+                            method
+                            for method, r in (("pure", pure), ("relevance", rel))
+                            if r.status is PlanStatus.SOLVED and not r.valid
+                        ],
+                    )
+                    rows.append(row)
+                    print(format_row(row, args.timeout), flush=True)
+    print_summary(rows, usable, refused, unreadable, unpaddable, args.timeout)
+    if args.json:
+        lines = ",\n".join(json.dumps(asdict(row)) for row in rows)
+        args.json.write_text(f"[\n{lines}\n]\n", encoding="utf-8")
+    return 1 if any(row.unvalidated for row in rows) else 0
+
+
+def geometric_mean(values: list[float]) -> float:
+    return math.exp(sum(math.log(v) for v in values) / len(values)) if values else float("nan")
+
+
+def format_row(row: Row, timeout: float) -> str:
+    pure = f"{row.pure_seconds:8.2f}" if row.pure_solved else f"{_short(row.pure['status']):>8}"
+    rel = f"{row.relevance_seconds:8.2f}" if row.relevance_solved else f"{_short(row.relevance['status']):>8}"
+    kept = f"{_first_kept(row.relevance)}/{row.objects}"
+    ratio = f"{row.ratio(timeout):6.2f}" if row.counted else f"{'-':>6}"
+    attempts = row.relevance["attempts"]
+    line = f"{row.folder:{LABEL}} {row.planner:9} {row.objects:7} {pure} {rel} {kept:>7} {attempts:3} {ratio}"
+    if row.unvalidated:
+        line += f"  !!! SOLVED BUT NOT VALIDATED: {', '.join(row.unvalidated)}"
+    return line
+
+
+def _short(status: str) -> str:
+    return {"out-of-time": "timeout", "planner-error": "error", "unsupported": "unsupp."}.get(status, status[:8])
+
+
+def _first_kept(result: dict[str, Any]) -> int:
+    """How many objects the first pruned attempt kept (the full count when nothing was pruned)."""
+    for attempt in result["attempt_log"]:
+        if attempt["pruned"]:
+            return int(attempt["objects_kept"])
+    return int(result["objects_total"])
+
+
+def print_summary(
+    rows: list[Row],
+    planners: list[str],
+    refused: dict[str, int],
+    unreadable: list[str],
+    unpaddable: list[str],
+    timeout: float,
+) -> None:
+    print()
+    if unreadable:
+        print(f"# our reader refuses {len(unreadable)} problems: {', '.join(unreadable)}")
+    if unpaddable:
+        print(f"# {len(unpaddable)} problems have no object to clone: {', '.join(unpaddable)}")
+    for planner in planners:
+        mine = [row for row in rows if row.planner == planner]
+        counted = [row for row in mine if row.counted]
+        mean = (
+            math.exp(sum(math.log(row.ratio(timeout)) for row in counted) / len(counted)) if counted else float("nan")
+        )
+        slower = [row for row in counted if row.slower(timeout)]
+        pure_only = sum(1 for row in counted if row.pure_solved and not row.relevance_solved)
+        rel_only = sum(1 for row in counted if row.relevance_solved and not row.pure_solved)
+        print(
+            f"{planner}: {len(mine)} rows ({refused[planner]} problems refused by its features),"
+            f" {len(mine) - len(counted)} solved by neither; pure/relevance geometric mean {mean:.2f}"
+            f" over {len(counted)}; relevance slower (> {SLOWER_FACTOR}x + {SLOWER_SLACK} s) on {len(slower)};"
+            f" solved by pure only {pure_only}, by relevance only {rel_only}"
+        )
+        for row in slower:
+            pure, rel = row.charged(timeout)
+            print(f"    slower: {row.folder} ({row.problem}) pure {pure:.2f} s, relevance {rel:.2f} s")
+    flagged = [row for row in rows if row.unvalidated]
+    if flagged:
+        print(f"!!! {len(flagged)} rows solved without a validated plan: " + ", ".join(r.folder for r in flagged))
+
+
+USAGE = (
+    "usage: bench_temporal.py [worlds] [--quick] [--timeout S] [--seed N]   (worlds --help: its options)\n"
+    "       bench_temporal.py corpus [options]                              (corpus --help: its options)\n"
+)
+
+
+def main(argv: list[str] | None = None) -> int:
+    argv = sys.argv[1:] if argv is None else argv
+    if argv and argv[0] == "corpus":
+        return run_corpus(argv[1:])
+    if argv and argv[0] == "worlds":
+        return run_worlds(argv[1:])
+    if argv and argv[0] in ("-h", "--help"):
+        print(USAGE + "\n" + (__doc__ or ""))
+        return 0
+    return run_worlds(argv)
 
 
 if __name__ == "__main__":

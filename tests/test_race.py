@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextvars
 import sys
 import time
 
@@ -103,6 +104,18 @@ def test_a_race_that_decides_cancels_the_loser_and_stop_waits_for_its_thread():
     undecided = Race(lambda: 1, lambda result: result == 42, CancelScope()).start()
     assert undecided.wait() == 1 and not undecided.won
     undecided.stop()
+
+
+def test_a_race_works_in_a_copy_of_its_starters_context():
+    # the run's warm planners are found through a context variable: the race's thread must see them
+    run = contextvars.ContextVar("run", default="none")
+    token = run.set("this run")
+    try:
+        race = Race(run.get, lambda result: True, CancelScope()).start()
+        assert race.wait() == "this run"
+        race.stop()
+    finally:
+        run.reset(token)
 
 
 def test_a_race_hands_its_error_to_the_caller():

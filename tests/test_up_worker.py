@@ -7,14 +7,20 @@ import signal
 import subprocess
 import sys
 import textwrap
+import threading
 import time
 
 import pytest
 from support import BIG_DOMAIN, SMALL_GRIPPER_DOMAIN, big_problem, process_gone, small_gripper_problem
 
+from relevance_plan.generators.padded import GRIPPER_DOMAIN, gripper_problem
+from relevance_plan.planning.loop import PlanOptions, plan_task
 from relevance_plan.planning.planners.base import PlannerStatus
 from relevance_plan.planning.planners.registry import make_planner, warm_planners, warm_up
 from relevance_plan.planning.planners.up.adapter import engine_module_installed
+from relevance_plan.planning.planners.up.pool import EngineWorker
+from relevance_plan.planning.race import THREAD_NAME
+from relevance_plan.planning.results import PlanStatus
 
 needs_pyperplan = pytest.mark.skipif(not engine_module_installed("pyperplan"), reason="up-pyperplan not installed")
 
@@ -61,6 +67,46 @@ def test_an_attempt_that_overruns_kills_the_worker_and_the_next_gets_a_new_one(t
     assert process_gone(overrun.process_group)
     assert after.status is PlannerStatus.SOLVED and after.process_group not in (warm.process_group, None)
     assert after.process_group != overrun.process_group
+
+
+def _served_by(monkeypatch) -> list[tuple[str, int]]:
+    """(thread name, worker) of every request a worker is sent from now on."""
+    served: list[tuple[str, int]] = []
+    solve = EngineWorker.solve
+
+    def spy(self, *args, **kwargs):
+        served.append((threading.current_thread().name, id(self)))
+        return solve(self, *args, **kwargs)
+
+    monkeypatch.setattr(EngineWorker, "solve", spy)
+    return served
+
+
+@pytest.mark.planner
+@needs_pyperplan
+def test_a_race_plans_the_full_problem_in_the_runs_warm_worker_and_the_pruned_attempts_in_another(
+    tmp_path, monkeypatch
+):
+    # as planning without pruning does: no one-shot child paying unified-planning's import
+    served = _served_by(monkeypatch)
+    domain, problem = _files(tmp_path, GRIPPER_DOMAIN, gripper_problem(8))
+    result = plan_task(domain, problem, PlanOptions(planner="up:pyperplan", race=True, timeout=120))
+    assert result.status is PlanStatus.SOLVED and result.valid and result.pruned
+    full_side = {worker for thread, worker in served if thread == THREAD_NAME}
+    pruned_side = {worker for thread, worker in served if thread != THREAD_NAME}
+    assert full_side and pruned_side
+    assert not full_side & pruned_side  # one worker never serves both sides
+
+
+@pytest.mark.planner
+@needs_pyperplan
+def test_a_race_with_nothing_to_prune_plans_once_in_the_warm_worker(tmp_path, monkeypatch):
+    served = _served_by(monkeypatch)
+    every_object_needed = small_gripper_problem().replace("rooma roomb roomc - room", "rooma roomb - room")
+    domain, problem = _files(tmp_path, SMALL_GRIPPER_DOMAIN, every_object_needed)
+    result = plan_task(domain, problem, PlanOptions(planner="up:pyperplan", race=True, timeout=120))
+    assert result.status is PlanStatus.SOLVED and not result.pruned
+    assert [thread for thread, _ in served] == [THREAD_NAME]
 
 
 WORKER_OWNER = """

@@ -1,17 +1,25 @@
-"""Problems padded with objects the goal does not need, as PDDL text.
+"""Problems padded with objects the goal does not need.
 
 Blocksworld with extra towers and blocks stacked on the goal's blocks, and
-gripper with extra balls: the smallest worlds on which pruning without a
-knowledge model (the goal scorer) pays off on domains we did not design.
-And an IPC driverlog-with-time instance with extra locations, trucks, drivers
-and packages: where a temporal planner that cannot prove a pruned problem
-unsolvable meets many interchangeable objects.  The benchmarks and the tests
-build their padded problems here.
+gripper with extra balls, as PDDL text: the smallest worlds on which pruning
+without a knowledge model (the goal scorer) pays off on domains we did not
+design.  An IPC driverlog-with-time instance with extra locations, trucks,
+drivers and packages: where a temporal planner that cannot prove a pruned
+problem unsolvable meets many interchangeable objects.  :func:`pad_with_clones`
+pads any parsed problem (an IPC one, say) by cloning objects the goal does
+not name, with all their initial facts.  The benchmarks and the tests build
+their padded problems here.
 """
 
 from __future__ import annotations
 
 import random
+from collections.abc import Iterable
+from dataclasses import replace
+
+from relevance_plan.errors import UsageError
+from relevance_plan.pddl.formulas import GroundAtom
+from relevance_plan.pddl.model import Domain, Problem, TimedLiteral, frozen, pinned_objects
 
 BLOCKSWORLD_DOMAIN = """(define (domain blocksworld)
   (:requirements :strips :typing)
@@ -125,3 +133,123 @@ def padded_driverlog(text: str, extra: int, seed: int = 1) -> str:
         facts += [f"(at {driver} {rng.choice(DRIVERLOG_CITIES)})", f"(at {package} {rng.choice(DRIVERLOG_CITIES)})"]
     text = text.replace("\t)\n\t(:init", "\t" + "\n\t".join(objects) + "\n\t)\n\t(:init", 1)
     return text.replace("\t(:init\n", "\t(:init\n\t" + "\n\t".join(facts) + "\n", 1)
+
+
+# --------------------------------------------------------------------------- any problem, padded with clones
+
+CLONE_MARK = "-pad"  # a clone's name: its source's, this mark and a number
+
+
+def pad_with_clones(domain: Domain, problem: Problem, extra: int, seed: int = 0) -> Problem:
+    """``problem`` with ``extra`` more objects, each a clone of an object the goal does not need.
+
+    Sources are the problem's objects that the goal, the constraints and the
+    metric do not name (domain constants are never objects of the problem).
+    The clones go round robin over the sources' types, in the order the
+    problem first declares them, so that every kind of object gets copies;
+    within a type, the sources come in an order shuffled by ``seed``, one
+    after the other.  A clone has a fresh name and its source's type, and
+    every initial fact, numeric value and timed literal that mentions the
+    source is copied with the clone in the source's place (every occurrence):
+    a clone of a location has its roads, and what stood at the location stands
+    at the clone too.  The goal, constraints and metric are unchanged.  The result has no
+    source text: write it with ``pddl.formatter.format_problem``.
+
+    ``UsageError`` when ``extra`` is negative, or when it is positive and no
+    object can be cloned (every object is named by the goal, or there is none).
+    """
+    if extra < 0:
+        raise UsageError(f"the number of clones must be at least 0, got {extra}")
+    if extra == 0:
+        return problem
+    pinned = pinned_objects(problem, domain)
+    by_type: dict[str, list[str]] = {}
+    for name, type_name in problem.objects.items():
+        if name not in pinned:
+            by_type.setdefault(type_name, []).append(name)
+    if not by_type:
+        why = "it declares no object" if not problem.objects else "the goal names every object it declares"
+        raise UsageError(f"cannot pad problem '{problem.name}' with clones: {why}", path=problem.path)
+    rng = random.Random(seed)
+    for names in by_type.values():
+        rng.shuffle(names)
+    types = list(by_type)
+    taken = _taken_names(domain, problem)
+    clones: dict[str, str] = {}  # clone -> source, in the order made
+    for index in range(extra):
+        names = by_type[types[index % len(types)]]
+        source = names[(index // len(types)) % len(names)]
+        clones[_fresh_name(source, taken)] = source
+    return _with_clones(problem, clones)
+
+
+def _taken_names(domain: Domain, problem: Problem) -> set[str]:
+    """Names a clone must not take: objects, constants, and every name the domain defines (some
+    readers refuse an object named like a predicate)."""
+    taken = set(problem.objects) | set(domain.constants) | set(domain.types)
+    taken |= set(domain.predicates) | set(domain.functions) | {action.name for action in domain.actions}
+    return taken
+
+
+def _fresh_name(source: str, taken: set[str]) -> str:
+    number = 1
+    while f"{source}{CLONE_MARK}{number}" in taken:
+        number += 1
+    name = f"{source}{CLONE_MARK}{number}"
+    taken.add(name)
+    return name
+
+
+def _swap(atom: GroundAtom, source: str, clone: str) -> GroundAtom:
+    return (atom[0], *(clone if arg == source else arg for arg in atom[1:]))
+
+
+def _mentioning(atoms: Iterable[GroundAtom]) -> dict[str, list[GroundAtom]]:
+    """Object name -> the atoms (in the order given) whose arguments name it."""
+    index: dict[str, list[GroundAtom]] = {}
+    for atom in atoms:
+        for name in dict.fromkeys(atom[1:]):
+            index.setdefault(name, []).append(atom)
+    return index
+
+
+def _with_clones(problem: Problem, clones: dict[str, str]) -> Problem:
+    """``problem`` with each clone declared and given its source's initial facts and values."""
+    facts = list(problem.facts_in_order())
+    fact_index = _mentioning(facts)
+    numeric_index = _mentioning(problem.numeric_init)
+    timed_index: dict[str, list[TimedLiteral]] = {}
+    for literal in problem.timed_literals:
+        term = literal.atom if literal.atom is not None else literal.fluent
+        for name in dict.fromkeys(term[1:] if term is not None else ()):
+            timed_index.setdefault(name, []).append(literal)
+    objects = dict(problem.objects)
+    display = dict(problem.display_names)
+    order = {atom: number for number, atom in enumerate(facts)}
+    numeric = dict(problem.numeric_init)
+    timed = list(problem.timed_literals)
+    for clone, source in clones.items():
+        objects[clone] = problem.objects[source]
+        display[clone] = problem.display(source) + clone[len(source) :]
+        for atom in fact_index.get(source, ()):
+            order.setdefault(_swap(atom, source, clone), len(order))
+        for term in numeric_index.get(source, ()):
+            numeric[_swap(term, source, clone)] = problem.numeric_init[term]
+        for literal in timed_index.get(source, ()):
+            if literal.atom is not None:
+                timed.append(replace(literal, atom=_swap(literal.atom, source, clone)))
+            elif literal.fluent is not None:
+                timed.append(replace(literal, fluent=_swap(literal.fluent, source, clone)))
+    return replace(
+        problem,
+        objects=frozen(objects),
+        init=frozenset(order),
+        text="",
+        path=None,
+        display_names=frozen(display),
+        numeric_init=frozen(numeric),
+        timed_literals=tuple(timed),
+        object_groups=(),
+        init_spans=(),
+        init_order=frozen(order),
+    )

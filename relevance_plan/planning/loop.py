@@ -29,6 +29,7 @@ planner gets the full problem and the result says why it was not pruned.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import time
 from collections.abc import Callable, Sequence
@@ -52,6 +53,7 @@ from relevance_plan.planning.planners.registry import (
     offer_early_run,
     planner_for,
     planner_for_unread,
+    release_warm,
     take_early_run,
     warm_planners,
     warm_up,
@@ -432,11 +434,17 @@ def _plan_task(
 
         own_runs = CancelScope()
         race = None
+        pruned_side: contextlib.AbstractContextManager[object] = contextlib.nullcontext()
         if options.race and options.method != "pure":
             say("racing: the full problem is planned beside the pruned attempts")
+            # the race's thread takes the run's warm planners, as planning without pruning would have
+            # them; the pruned attempts get their own, started now and let go if nothing is pruned
             race = Race(plan_full_problem, _race_decides, own_runs).start()
+            pruned_side = warm_planners(options.memory_limit_mb)
         try:
-            with cancel_scope(own_runs):
+            with cancel_scope(own_runs), pruned_side:
+                if race is not None and keep_work is None:
+                    warm_up(planner)
                 return _prune_and_plan(
                     task, (domain_path, problem_path), options, prepared, call_planner, race, started, progress, choice
                 )
@@ -490,6 +498,8 @@ def _prune_and_plan(
         if overran is not None:
             return overran
         _say_selection(say, selection, total)
+    if race is not None and (selection is None or not selection.removed):
+        release_warm()  # the full problem is all there is to plan, and the race plans it
     # scoring and pruning only: reading came before, and a race's planner only waits beside it
     relevance_time = time.perf_counter() - scoring_started
     budgets = None

@@ -6,10 +6,16 @@ main thread scores, prunes and plans pruned problems.  The first decisive
 answer wins and the other side's planner is stopped: a valid plan, or (from
 the full problem only) a proof that the problem has none.  The total time is
 then about the smaller of the two, whatever the first selection was.
+
+The race's thread works in a copy of the context of the thread that started
+it, so the run's warm planners (a unified-planning engine's worker, started
+while the tool read the problem) serve the full problem there as they would
+serve planning without pruning; the pruned attempts get planners of their own.
 """
 
 from __future__ import annotations
 
+import contextvars
 import threading
 from collections.abc import Callable
 from typing import Generic, TypeVar
@@ -18,6 +24,7 @@ from relevance_plan.supervision.process import CancelScope, cancel_scope
 from relevance_plan.supervision.spawn import usable_cores
 
 T = TypeVar("T")
+THREAD_NAME = "relevance-plan-race"
 
 
 def race_by_default(method: str) -> bool:
@@ -40,9 +47,12 @@ class Race(Generic[T]):
         self._done = threading.Event()
         self._result: T | None = None
         self._error: BaseException | None = None
-        self._thread = threading.Thread(target=self._main, name="relevance-plan-race", daemon=True)
+        self._thread: threading.Thread | None = None
 
     def start(self) -> Race[T]:
+        """Start ``work`` in its own thread, in a copy of this thread's context."""
+        context = contextvars.copy_context()
+        self._thread = threading.Thread(target=context.run, args=(self._main,), name=THREAD_NAME, daemon=True)
         self._thread.start()
         return self
 
@@ -91,4 +101,5 @@ class Race(Generic[T]):
         """Stop ``work``'s planner runs (if still going) and wait for the thread."""
         if not self._done.is_set():
             self._scope.cancel()
-        self._thread.join()
+        if self._thread is not None:
+            self._thread.join()

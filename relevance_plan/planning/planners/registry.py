@@ -41,7 +41,7 @@ from relevance_plan.planning.planners.fast_downward import head_start
 from relevance_plan.planning.planners.fast_downward.adapter import FastDownwardPlanner
 from relevance_plan.planning.planners.lpg import LpgPlanner
 from relevance_plan.planning.planners.up.adapter import UnifiedPlanningPlanner
-from relevance_plan.planning.planners.up.pool import WorkerPool, worker_pool
+from relevance_plan.planning.planners.up.pool import WorkerPool, current_pool, worker_pool
 
 DEFAULT_PLANNER = auto.NAME
 DEFAULT_PLANNER_CONFIG = fd_command.DEFAULT_CONFIG
@@ -93,6 +93,13 @@ def warm_up(planner: Planner) -> None:
     first = planner.first if isinstance(planner, FallbackPlanner) else planner
     if isinstance(first, UnifiedPlanningPlanner):
         first.warm_up()
+
+
+def release_warm() -> None:
+    """Stop now what :func:`warm_up` started in this thread's run: nothing more will plan here."""
+    pool = current_pool()
+    if pool is not None:
+        pool.close()
 
 
 def await_warm(planner: Planner, until: float | None) -> None:

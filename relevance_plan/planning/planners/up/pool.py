@@ -8,9 +8,11 @@ to it instead of a new child process.  The worker runs under the guard
 (``supervision``): it dies with the tool, the current cancel scope kills it
 while it serves a request (the race's other side won), and an attempt that
 overruns its time limit kills it; the next attempt starts a new one.  The
-pool is per thread of work (a context variable): the race's full-problem
-thread has none and runs the one-shot child, as do ``--keep-work`` runs
-(their files stay apart per attempt).
+pool belongs to a thread of work (a context variable): the race's
+full-problem thread works in a copy of its starter's context and so takes
+the run's pool, while the pruned attempts beside it open a pool of their
+own; ``--keep-work`` runs use the one-shot child (their files stay apart
+per attempt).
 """
 
 from __future__ import annotations
