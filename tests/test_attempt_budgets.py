@@ -28,6 +28,11 @@ FOREVER_ON_PRUNED = """
         print(step)
 """
 
+# What a fake planner answers when its time ran out.
+OUT_OF_TIME = RunOutcome(
+    status=PlannerStatus.OUT_OF_TIME, exit_code=-9, plan=Plan(()), plan_cost=None, wall_time=0.01, planner="fake"
+)
+
 # Keeps little: each widening leaves more objects out than it brings back, so several attempts are pruned.
 STRICT = Thresholds(0.2, 0.85)
 
@@ -60,14 +65,7 @@ def test_pruned_attempts_get_growing_budgets_and_the_full_problem_the_rest(coffe
 
     def call_planner(objects, limit):
         calls.append((objects is None, limit))
-        return RunOutcome(
-            status=PlannerStatus.OUT_OF_TIME,
-            exit_code=-9,
-            plan=Plan(()),
-            plan_cost=None,
-            wall_time=0.01,
-            planner="fake",
-        )
+        return OUT_OF_TIME
 
     options = PlanOptions(timeout=timeout, thresholds=STRICT)
     attempts, _ = run_attempts(task, selection, call_planner, options, started=time.perf_counter(), budgets=Budgets(1))
@@ -84,14 +82,7 @@ def test_without_budgets_a_pruned_attempt_gets_its_share(coffee_files):
 
     def call_planner(objects, limit):
         limits.append(limit)
-        return RunOutcome(
-            status=PlannerStatus.OUT_OF_TIME,
-            exit_code=-9,
-            plan=Plan(()),
-            plan_cost=None,
-            wall_time=0.01,
-            planner="fake",
-        )
+        return OUT_OF_TIME
 
     run_attempts(task, selection, call_planner, PlanOptions(timeout=60, thresholds=STRICT), started=time.perf_counter())
     assert limits[0] > 20  # half of the time left: a planner that proves unsolvability ends early by itself
