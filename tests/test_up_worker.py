@@ -18,7 +18,7 @@ from relevance_plan.planning.loop import PlanOptions, plan_task
 from relevance_plan.planning.planners.base import PlannerStatus
 from relevance_plan.planning.planners.registry import make_planner, warm_planners, warm_up
 from relevance_plan.planning.planners.up.adapter import engine_module_installed
-from relevance_plan.planning.planners.up.pool import EngineWorker
+from relevance_plan.planning.planners.up.pool import EngineWorker, ForkedWorker, current_pool
 from relevance_plan.planning.race import THREAD_NAME
 from relevance_plan.planning.results import PlanStatus
 
@@ -69,13 +69,13 @@ def test_an_attempt_that_overruns_kills_the_worker_and_the_next_gets_a_new_one(t
     assert after.process_group != overrun.process_group
 
 
-def _served_by(monkeypatch) -> list[tuple[str, int]]:
+def _served_by(monkeypatch) -> list[tuple[str, EngineWorker]]:
     """(thread name, worker) of every request a worker is sent from now on."""
-    served: list[tuple[str, int]] = []
+    served: list[tuple[str, EngineWorker]] = []
     solve = EngineWorker.solve
 
     def spy(self, *args, **kwargs):
-        served.append((threading.current_thread().name, id(self)))
+        served.append((threading.current_thread().name, self))
         return solve(self, *args, **kwargs)
 
     monkeypatch.setattr(EngineWorker, "solve", spy)
@@ -96,6 +96,63 @@ def test_a_race_plans_the_full_problem_in_the_runs_warm_worker_and_the_pruned_at
     pruned_side = {worker for thread, worker in served if thread != THREAD_NAME}
     assert full_side and pruned_side
     assert not full_side & pruned_side  # one worker never serves both sides
+
+
+@pytest.mark.planner
+@needs_pyperplan
+def test_a_race_copies_the_runs_warm_worker_for_the_pruned_attempts(tmp_path, monkeypatch):
+    # a second worker would import unified-planning again, on the core the full problem needs
+    served = _served_by(monkeypatch)
+    domain, problem = _files(tmp_path, GRIPPER_DOMAIN, gripper_problem(8))
+    result = plan_task(domain, problem, PlanOptions(planner="up:pyperplan", race=True, timeout=120))
+    assert result.status is PlanStatus.SOLVED and result.valid and result.pruned
+    pruned_side = [worker for thread, worker in served if thread != THREAD_NAME]
+    copies = [worker for worker in pruned_side if isinstance(worker, ForkedWorker)]
+    assert copies and copies[0] is pruned_side[0]  # the first pruned attempt had a copy
+    full_side = [worker for thread, worker in served if thread == THREAD_NAME]
+    assert all(type(worker) is EngineWorker for worker in full_side)
+    assert all(copy.parent is full_side[0] for copy in copies)
+    groups = [attempt.outcome.process_group for attempt in result.attempts]
+    assert all(group is None or process_gone(group) for group in groups)  # nothing left running
+
+
+@pytest.mark.planner
+@needs_pyperplan
+def test_a_copy_serves_its_own_requests_and_is_killed_alone(tmp_path):
+    domain, problem = _files(tmp_path, SMALL_GRIPPER_DOMAIN, small_gripper_problem())
+    planner = make_planner("up:pyperplan")
+    with warm_planners(None):
+        warm_up(planner)
+        parent = current_pool().start("pyperplan", None)
+        with warm_planners(None, beside=True):
+            warm_up(planner)
+            copy = current_pool().start("pyperplan", None)
+            assert isinstance(copy, ForkedWorker) and copy.parent is parent
+            copied = planner.run(domain, problem, time_limit=60, memory_limit_mb=None)
+            assert copied.status is PlannerStatus.SOLVED and len(copied.plan) == 3
+            assert copied.process_group != parent._group.run.pgid  # a group of its own
+            assert not process_gone(copied.process_group)
+        assert process_gone(copied.process_group)  # killed when its pool closed
+        assert parent.alive
+        own = planner.run(domain, problem, time_limit=60, memory_limit_mb=None)
+        assert own.status is PlannerStatus.SOLVED and own.process_group == parent._group.run.pgid
+    assert process_gone(own.process_group)
+
+
+@pytest.mark.planner
+@needs_pyperplan
+def test_a_worker_that_has_served_a_request_is_not_copied(tmp_path):
+    # an engine may leave threads behind after a request, and a fork copies none of them
+    domain, problem = _files(tmp_path, SMALL_GRIPPER_DOMAIN, small_gripper_problem())
+    planner = make_planner("up:pyperplan")
+    with warm_planners(None):
+        warm_up(planner)
+        assert planner.run(domain, problem, time_limit=60, memory_limit_mb=None).status is PlannerStatus.SOLVED
+        with warm_planners(None, beside=True):
+            warm_up(planner)
+            worker = current_pool().start("pyperplan", None)
+            assert type(worker) is EngineWorker
+            assert planner.run(domain, problem, time_limit=60, memory_limit_mb=None).status is PlannerStatus.SOLVED
 
 
 @pytest.mark.planner

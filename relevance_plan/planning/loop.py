@@ -30,6 +30,7 @@ planner gets the full problem and the result says why it was not pruned.
 from __future__ import annotations
 
 import contextlib
+import contextvars
 import os
 import time
 from collections.abc import Callable, Sequence
@@ -433,18 +434,22 @@ def _plan_task(
             )
 
         own_runs = CancelScope()
-        race = None
+        racing = options.race and options.method != "pure"
+        race: Race[Attempt] | None = None
         pruned_side: contextlib.AbstractContextManager[object] = contextlib.nullcontext()
-        if options.race and options.method != "pure":
+        if racing:
             say("racing: the full problem is planned beside the pruned attempts")
             # the race's thread takes the run's warm planners, as planning without pruning would have
-            # them; the pruned attempts get their own, started now and let go if nothing is pruned
-            race = Race(plan_full_problem, _race_decides, own_runs).start()
-            pruned_side = warm_planners(options.memory_limit_mb)
+            # them; the pruned attempts get their own: copies of those, asked for before the full
+            # problem keeps them busy, and let go if nothing is pruned
+            full_side = contextvars.copy_context()
+            pruned_side = warm_planners(options.memory_limit_mb, beside=True)
         try:
             with cancel_scope(own_runs), pruned_side:
-                if race is not None and keep_work is None:
-                    warm_up(planner)
+                if racing:
+                    if keep_work is None:
+                        warm_up(planner)
+                    race = Race(plan_full_problem, _race_decides, own_runs).start(full_side)
                 return _prune_and_plan(
                     task, (domain_path, problem_path), options, prepared, call_planner, race, started, progress, choice
                 )

@@ -49,9 +49,9 @@ class Race(Generic[T]):
         self._error: BaseException | None = None
         self._thread: threading.Thread | None = None
 
-    def start(self) -> Race[T]:
-        """Start ``work`` in its own thread, in a copy of this thread's context."""
-        context = contextvars.copy_context()
+    def start(self, context: contextvars.Context | None = None) -> Race[T]:
+        """Start ``work`` in its own thread, in ``context`` (default: a copy of this thread's)."""
+        context = contextvars.copy_context() if context is None else context
         self._thread = threading.Thread(target=context.run, args=(self._main,), name=THREAD_NAME, daemon=True)
         self._thread.start()
         return self

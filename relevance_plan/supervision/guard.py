@@ -99,7 +99,7 @@ def descendants(root: int) -> list[tuple[int, bytes, bytes]]:
     return found
 
 
-def _kill(pid: int, started: bytes) -> None:
+def kill_process(pid: int, started: bytes) -> None:
     """SIGKILL ``pid`` if it is still the process that started at ``started`` (never a reused pid)."""
     try:
         handle = os.pidfd_open(pid)
@@ -118,6 +118,17 @@ def _kill(pid: int, started: bytes) -> None:
     finally:
         if handle is not None:
             os.close(handle)
+
+
+def start_time(pid: int) -> bytes | None:
+    """When ``pid`` started (field 22 of its stat, in clock ticks since boot); None when it has gone
+    or is a zombie: what tells a process from a later one given the same number."""
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as stream:
+            fields = stream.read().rsplit(b")", 1)[1].split()
+    except (OSError, IndexError):
+        return None
+    return None if fields[0] in _GONE_STATES else fields[19]
 
 
 def reap_children() -> None:
@@ -151,7 +162,7 @@ def kill_descendants(root: int, timeout: float = 2.0, reap: bool = False) -> boo
         if time.monotonic() > deadline:
             return False
         for pid, started in alive:
-            _kill(pid, started)
+            kill_process(pid, started)
         time.sleep(0.002)
 
 

@@ -76,14 +76,16 @@ class ProcessRun(NamedTuple):
 
 class _Run:
     """A run going on: the guard's pid (= its process group and session), its cgroup (if any), and
-    whether the tool stopped it (then a guard that died of a signal died of ours)."""
+    whether the tool stopped it (then a guard that died of a signal died of ours).  A run another
+    process forked (:class:`ForkedGroup`) has its leader's start time instead of a guard."""
 
-    __slots__ = ("pgid", "cgroup", "stopped")
+    __slots__ = ("pgid", "cgroup", "stopped", "forked_start")
 
-    def __init__(self, pgid: int, cgroup: str | None):
+    def __init__(self, pgid: int, cgroup: str | None, forked_start: bytes | None = None):
         self.pgid = pgid
         self.cgroup = cgroup
         self.stopped = False
+        self.forked_start = forked_start
 
 
 def watchdog_deadline(time_limit: float | None, grace: float | None = None) -> float | None:
@@ -256,6 +258,12 @@ def _stop(run: _Run, guard_exited: bool = False) -> None:
     spares the walk through /proc that looks for them.
     """
     run.stopped = True
+    if run.forked_start is not None:
+        # not our child: its number is ours to use only while its start time says it is still the same
+        guard.kill_descendants(run.pgid)
+        if guard.start_time(run.pgid) == run.forked_start:
+            _kill_group(run.pgid)
+        return
     if run.cgroup is not None:
         spawn.kill_cgroup(run.cgroup)
     if not guard_exited:
@@ -421,18 +429,10 @@ class StartedGroup:
         wall = time.monotonic() - self.started
         return ProcessRun(wait_status, exit_code, cpu_time, peak_mb, fired, wall, self.run.pgid)
 
-    @contextlib.contextmanager
-    def attended(self):  # type: ignore[no-untyped-def]
+    def attended(self) -> contextlib.AbstractContextManager[object]:
         """While inside, the run belongs to the current cancel scope (a long-lived worker serving one
         request): cancelling the scope kills it.  A scope cancelled already kills it at once."""
-        scope = _SCOPE.get()
-        if scope is not None and not scope._enter(self.run):
-            _stop(self.run)
-        try:
-            yield self
-        finally:
-            if scope is not None:
-                scope._leave(self.run)
+        return _attended(self.run)
 
     def exited(self) -> bool:
         """Whether the guard has ended (it stays unreaped, so its pid is still ours)."""
@@ -465,6 +465,54 @@ class StartedGroup:
         os.close(self.guard_write)
         if self.run.cgroup is not None:
             spawn.remove_cgroup(self.run.cgroup)
+
+
+@contextlib.contextmanager
+def _attended(run: _Run) -> Iterator[_Run]:
+    scope = _SCOPE.get()
+    if scope is not None and not scope._enter(run):
+        _stop(run)
+    try:
+        yield run
+    finally:
+        if scope is not None:
+            scope._leave(run)
+
+
+class ForkedGroup:
+    """A process group that a supervised process forked off itself (a warm engine worker's copy).
+
+    It is not the tool's child, and runs under its parent's guard (which
+    stops it with the parent's run).  The tool stops it alone: its
+    descendants, then its group, by number only while the leader's start
+    time is the one seen at the start (its parent never reaps it, so the
+    number stays its own meanwhile).  Registered as going on like every run.
+    """
+
+    def __init__(self, pid: int):
+        self.started = time.monotonic()
+        self.run = _Run(pid, None, forked_start=guard.start_time(pid) or b"gone")
+        with _ACTIVE_LOCK:
+            _ACTIVE_GROUPS.add(self.run)
+
+    def attended(self) -> contextlib.AbstractContextManager[object]:
+        """As :meth:`StartedGroup.attended`."""
+        return _attended(self.run)
+
+    def exited(self) -> bool:
+        return guard.start_time(self.run.pgid) != self.run.forked_start
+
+    def kill(self) -> None:
+        _stop(self.run)
+
+    def stop(self) -> None:
+        """Kill it and wait (briefly) until none of its processes runs."""
+        try:
+            _stop(self.run)
+            _await_run_death(self.run)
+        finally:
+            with _ACTIVE_LOCK:
+                _ACTIVE_GROUPS.discard(self.run)
 
 
 def _refuse_killed_guard(signum: int) -> None:

@@ -81,9 +81,10 @@ def make_planner(name: str, config: str = DEFAULT_PLANNER_CONFIG, check: bool = 
     return planner
 
 
-def warm_planners(memory_limit_mb: int | None) -> AbstractContextManager[WorkerPool]:
-    """The run's warm planners (a unified-planning engine's worker), killed when the block ends."""
-    return worker_pool(memory_limit_mb)
+def warm_planners(memory_limit_mb: int | None, beside: bool = False) -> AbstractContextManager[WorkerPool]:
+    """The run's warm planners (a unified-planning engine's worker), killed when the block ends;
+    ``beside``: for work beside the run's own (the race's pruned side), copies of its warm planners."""
+    return worker_pool(memory_limit_mb, beside)
 
 
 def warm_up(planner: Planner) -> None:

@@ -13,6 +13,13 @@ full-problem thread works in a copy of its starter's context and so takes
 the run's pool, while the pruned attempts beside it open a pool of their
 own; ``--keep-work`` runs use the one-shot child (their files stay apart
 per attempt).
+
+The pruned attempts' pool is opened *beside* the run's: its worker is a copy
+the run's worker forks off itself once it is ready and before it serves the
+full problem (:class:`ForkedWorker`), so the race does not import
+unified-planning twice on a machine whose second core is the pruned side's.
+A worker that has served a request may have engine threads running and is
+not copied; the pool then starts a worker of its own.
 """
 
 from __future__ import annotations
@@ -33,7 +40,13 @@ from pathlib import Path
 from typing import Any
 
 from relevance_plan import errors
-from relevance_plan.supervision.process import StartedGroup, log_tail, read_output, start_process_group
+from relevance_plan.supervision.process import (
+    ForkedGroup,
+    StartedGroup,
+    log_tail,
+    read_output,
+    start_process_group,
+)
 from relevance_plan.supervision.spawn import LOG_FILE
 
 SOCKET_NAME = "worker.sock"
@@ -43,6 +56,7 @@ _MAX_SOCKET_PATH = 100
 # (and must be started again: a second or more).
 WORKER_GRACE = 1.0
 _POLL = 0.05  # seconds between looks at a worker that has not connected yet
+_FORK_ANSWER = 10.0  # seconds a ready worker may take to answer a request for a copy of itself
 # The worker runs the tool's own code, wherever the tool was imported from (a checkout on a
 # relative PYTHONPATH too: the worker's working folder is its own).
 _PACKAGE_ROOT = str(Path(__file__).resolve().parents[4])
@@ -74,18 +88,22 @@ class EngineWorker:
         self.memory_limit_mb = memory_limit_mb
         self._env = env
         self._folder = Path(tempfile.mkdtemp(prefix="relevance-plan-upw-"))
-        self._group: StartedGroup | None = None
+        self._group: StartedGroup | ForkedGroup | None = None
         self._listener: socket.socket | None = None
         self._connection: socket.socket | None = None
         self._stream: Any = None  # the connection as a binary file
         self.start_cost: float | None = None  # seconds from its start until it was ready
+        self._lock = threading.Lock()  # the connection's: the race's two sides may both wait for it
+        self._served = False  # it has served a request: copies of it are no longer safe
+        self._copies: list[ForkedWorker] = []  # asked for before it was ready
         try:
             self._start()
         except BaseException:
             self.close()
             raise
 
-    def _start(self) -> None:
+    def _listen(self) -> str:
+        """Listen on a new socket in the worker's folder; its address."""
         address = str(self._folder / SOCKET_NAME)
         if len(address) > _MAX_SOCKET_PATH:
             raise errors.PlannerError(f"the temporary folder's path is too long for a socket: {address}")
@@ -93,6 +111,10 @@ class EngineWorker:
         listener.bind(address)
         listener.listen(1)
         self._listener = listener
+        return address
+
+    def _start(self) -> None:
+        address = self._listen()
         command = [sys.executable, "-c", _LAUNCH.format(root=_PACKAGE_ROOT), self.engine, address]
         self._group = start_process_group(
             command,
@@ -104,20 +126,60 @@ class EngineWorker:
         )
 
     def _ready(self, until: float | None) -> bool:
-        """Wait (until ``until``, monotonic) for the worker to connect; False if it died or did not."""
-        if self._connection is not None:
-            return True
-        assert self._listener is not None and self._group is not None
-        while until is None or time.monotonic() < until:
-            wait = _POLL if until is None else max(min(_POLL, until - time.monotonic()), 0.0)
-            if select.select([self._listener], [], [], wait)[0]:
-                self._connection, _ = self._listener.accept()
-                self._stream = self._connection.makefile("rwb")
-                self.start_cost = time.monotonic() - self._group.started
-                return True
-            if self._group.exited():
+        """Wait (until ``until``, monotonic) for the worker to connect; False if it died or did not.
+        The copies asked for meanwhile are made as soon as it is."""
+        while True:
+            with self._lock:
+                if self._connection is not None:
+                    return True
+                if self._listener is None or self._group is None:
+                    return False  # closed
+                wait = _POLL if until is None else max(min(_POLL, until - time.monotonic()), 0.0)
+                if select.select([self._listener], [], [], wait)[0]:
+                    self._connection, _ = self._listener.accept()
+                    self._stream = self._connection.makefile("rwb")
+                    self.start_cost = time.monotonic() - self._group.started
+                    copies, self._copies = self._copies, []
+                    for copy in copies:
+                        self._fork(copy)
+                    return True
+                if self._group.exited():
+                    return False
+            if until is not None and time.monotonic() >= until:
                 return False
-        return False
+
+    def copy(self, copy: ForkedWorker) -> None:
+        """Make ``copy`` a copy of this worker: now if it is ready, else once it is; refused (the copy
+        says so) once it has served a request."""
+        with self._lock:
+            if self._served or self._group is None:
+                copy.refuse()
+            elif self._connection is None:
+                self._copies.append(copy)
+            else:
+                self._fork(copy)
+
+    def forget(self, copy: ForkedWorker) -> None:
+        """``copy`` is no longer wanted: if it was not made yet, it will not be."""
+        with self._lock:
+            if copy in self._copies:
+                self._copies.remove(copy)
+
+    def _fork(self, copy: ForkedWorker) -> None:
+        """Ask the ready, idle worker for ``copy`` (holding the lock)."""
+        assert self._connection is not None and self._stream is not None
+        try:
+            self._connection.settimeout(_FORK_ANSWER)
+            self._stream.write(json.dumps({"fork": copy.address, "log": copy.log_path}).encode() + b"\n")
+            self._stream.flush()
+            line = self._stream.readline()
+            pid = int(json.loads(line)["pid"]) if line else None
+        except (OSError, ValueError, KeyError, TypeError):
+            pid = None
+        if pid is None:
+            copy.refuse()
+        else:
+            copy.adopt(pid)
 
     def wait_ready(self, until: float | None) -> bool:
         """Wait until the worker is ready (or ``until``, monotonic); whether it is."""
@@ -144,6 +206,8 @@ class EngineWorker:
                 # still starting at the attempt's limit: out of time, and left to start for the next attempt
                 return WorkerAnswer(None, time.monotonic() - started, 0.0, 0.0, False, self._group.run.pgid, "", True)
             assert self._connection is not None and self._stream is not None
+            with self._lock:
+                self._served = True
             log_start = self._log_size()
             left = None if time_limit is None else max(time_limit - (time.monotonic() - started), 0.1)
             request = {"domain": domain, "problem": problem, "plan": plan, "verdict": verdict, "timeout": left}
@@ -183,6 +247,10 @@ class EngineWorker:
 
     def close(self) -> None:
         """Kill the worker and whatever its engine started, reap it, remove its folder."""
+        with self._lock:
+            copies, self._copies = self._copies, []
+        for copy in copies:
+            copy.refuse()
         group, self._group = self._group, None
         for handle in (self._stream, self._connection, self._listener):
             if handle is not None:
@@ -194,11 +262,71 @@ class EngineWorker:
         shutil.rmtree(self._folder, ignore_errors=True)
 
 
-class WorkerPool:
-    """The workers of one run, one per engine, all killed when the run ends."""
+class ForkedWorker(EngineWorker):
+    """A copy that a run's worker forks off itself (``up.worker``'s fork request): the engine comes
+    imported.  It waits for its parent to be ready before it can be; it runs under the parent's
+    guard and is killed alone (``ForkedGroup``)."""
 
-    def __init__(self, memory_limit_mb: int | None):
+    def __init__(self, parent: EngineWorker):
+        self.parent = parent
+        self._refused = False
+        super().__init__(parent.engine, None, parent.memory_limit_mb)
+
+    def _start(self) -> None:
+        self.address = self._listen()
+        self.log_path = str(self._folder / LOG_FILE)
+        self.parent.copy(self)
+
+    def adopt(self, pid: int) -> None:
+        """The parent forked it: ``pid`` leads its process group."""
+        self._group = ForkedGroup(pid)
+
+    def refuse(self) -> None:
+        """The parent cannot fork it (it served a request, died or was closed)."""
+        self._refused = True
+
+    def _forked(self, until: float | None) -> bool:
+        """Wait (until ``until``) for the parent to be ready, and so to have forked it; whether it did."""
+        if self._group is None and not self._refused:
+            self.parent._ready(until)
+        return self._group is not None
+
+    @property
+    def alive(self) -> bool:
+        return not self._refused and (self._group is None or not self._group.exited())
+
+    def wait_ready(self, until: float | None) -> bool:
+        return self._forked(until) and super().wait_ready(until)
+
+    def solve(
+        self, domain: str, problem: str, plan: str, verdict: str, time_limit: float | None, deadline: float | None
+    ) -> WorkerAnswer | None:
+        started = time.monotonic()
+        if not self._forked(None if deadline is None else started + deadline):
+            if self._refused or not self.parent.alive:
+                return None  # the caller runs the child
+            # the parent still starting at the attempt's limit: out of time, as a starting worker is
+            pgid = self.parent._group.run.pgid if self.parent._group is not None else 0
+            return WorkerAnswer(None, time.monotonic() - started, 0.0, 0.0, False, pgid, "", True)
+        left = None if deadline is None else max(deadline - (time.monotonic() - started), 0.0)
+        return super().solve(domain, problem, plan, verdict, time_limit, left)
+
+    def close(self) -> None:
+        self.parent.forget(self)
+        self._refused = True
+        super().close()
+
+
+class WorkerPool:
+    """The workers of one run, one per engine, all killed when the run ends.
+
+    ``beside``: the pool of the run this one works beside (the race's pruned side); an engine's
+    worker here is then a copy of that pool's, while that one is idle.
+    """
+
+    def __init__(self, memory_limit_mb: int | None, beside: WorkerPool | None = None):
         self.memory_limit_mb = memory_limit_mb
+        self._beside = beside
         self._workers: dict[str, EngineWorker] = {}
         self._refused: set[str] = set()  # engines whose worker could not start: the child runs them
         self._lock = threading.Lock()
@@ -214,13 +342,25 @@ class WorkerPool:
                 del self._workers[engine]
             if engine in self._refused:
                 return None
+            parent = None if self._beside is None else self._beside.copyable(engine)
             try:
-                worker = EngineWorker(engine, env, self.memory_limit_mb)
+                worker = None if parent is None else ForkedWorker(parent)
+                if worker is None or not worker.alive:  # refused at once: the parent has just got busy
+                    if worker is not None:
+                        worker.close()
+                    worker = EngineWorker(engine, env, self.memory_limit_mb)
             except (errors.PlannerError, OSError):
                 self._refused.add(engine)
                 return None
             self._workers[engine] = worker
             return worker
+
+    def copyable(self, engine: str) -> EngineWorker | None:
+        """The engine's worker if it runs, has served no request, and is not itself a copy."""
+        with self._lock:
+            worker = self._workers.get(engine)
+        usable = worker is not None and type(worker) is EngineWorker and worker.alive and not worker._served
+        return worker if usable else None
 
     def wait_ready(self, engine: str, until: float | None) -> bool:
         """Wait for the engine's worker to be ready, if it was started (False if not, or not in time)."""
@@ -251,9 +391,10 @@ def current_pool() -> WorkerPool | None:
 
 
 @contextlib.contextmanager
-def worker_pool(memory_limit_mb: int | None) -> Iterator[WorkerPool]:
-    """Engine workers for the run inside the block (this thread), killed when it ends."""
-    pool = WorkerPool(memory_limit_mb)
+def worker_pool(memory_limit_mb: int | None, beside: bool = False) -> Iterator[WorkerPool]:
+    """Engine workers for the run inside the block (this thread), killed when it ends; ``beside``:
+    copies of the workers of the pool open until now, where they can be had."""
+    pool = WorkerPool(memory_limit_mb, current_pool() if beside else None)
     token = _POOL.set(pool)
     try:
         yield pool
