@@ -25,11 +25,11 @@ DOMAIN = """(define (domain haul)
 
 PROBLEM = """(define (problem haul-1) (:domain haul)
   (:objects Home Shop Loop Yard - place Van Truck - vehicle box crate - parcel)
-  (:init (at Van home) (at truck shop) (in box home) (in crate shop)
+  (:init (at Van home) (at truck yard) (in box home) (in crate shop)
          (road home shop) (road shop home) (road yard home) (road depot home) (road loop loop)
          (= (distance home shop) 3) (= (distance shop home) 3) (= (distance loop loop) 1)
          (= (fuel van) 5) (= (fuel truck) 2)
-         (at 10 (open shop)) (at 20 (not (open shop))))
+         (at 10 (open shop)) (at 20 (not (open shop))) (at 15 (open yard)))
   (:goal (and (at van shop) (in box home))))
 """
 
@@ -48,7 +48,17 @@ def swapped(atom, source, clone):
     return (atom[0], *(clone if arg == source else arg for arg in atom[1:]))
 
 
-def test_each_clone_has_its_sources_type_facts_values_and_timed_literals():
+# (at ?v ?p), (fuel ?v) change by the action and (open ?p) by timed literals; (in ?c ?p), (road ?a ?b)
+# and (distance ?a ?b) never change
+CHANGING = {"at", "fuel", "open"}
+
+
+def gets(term, source):
+    """Whether a clone of ``source`` gets this fact or value: static ones all, the state only as its first argument."""
+    return source in term[1:] and (term[0] not in CHANGING or term[1] == source)
+
+
+def test_each_clone_has_its_sources_type_static_facts_and_own_state():
     domain, problem = task()
     padded = pad_with_clones(domain, problem, 9, seed=3)
     clones = clones_of(padded)
@@ -56,12 +66,23 @@ def test_each_clone_has_its_sources_type_facts_values_and_timed_literals():
     for clone, source in clones.items():
         assert padded.objects[clone] == problem.objects[source]
         facts = {atom for atom in padded.init if clone in atom[1:]}
-        assert facts == {swapped(atom, source, clone) for atom in problem.init if source in atom[1:]}
+        assert facts == {swapped(atom, source, clone) for atom in problem.init if gets(atom, source)}
         values = {term: value for term, value in padded.numeric_init.items() if clone in term[1:]}
-        expected = {swapped(t, source, clone): v for t, v in problem.numeric_init.items() if source in t[1:]}
+        expected = {swapped(t, source, clone): v for t, v in problem.numeric_init.items() if gets(t, source)}
         assert values == expected
         timed = [literal for literal in padded.timed_literals if literal.atom and clone in literal.atom[1:]]
-        assert len(timed) == sum(1 for literal in problem.timed_literals if literal.atom and source in literal.atom)
+        assert len(timed) == sum(1 for literal in problem.timed_literals if literal.atom and gets(literal.atom, source))
+    assert {"truck", "yard"} <= set(clones.values())  # the cases below are there
+    for clone, source in clones.items():
+        if source == "truck":  # a vehicle's own state: where it stands, its fuel
+            assert ("at", clone, "yard") in padded.init and padded.numeric_init[("fuel", clone)] == 2
+        if source == "yard":  # a place's static facts and timed literals, not what stands there
+            assert ("road", clone, "home") in padded.init
+            assert not any(atom[0] == "at" and clone in atom for atom in padded.init)
+            assert any(literal.atom == ("open", clone) for literal in padded.timed_literals)
+    # no vehicle stands in two places
+    standing = [atom[1] for atom in padded.init if atom[0] == "at"]
+    assert len(standing) == len(set(standing))
     # every occurrence: the loop road of a cloned 'loop' leads from the clone to the clone
     for clone, source in clones.items():
         if source == "loop":

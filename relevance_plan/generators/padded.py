@@ -18,8 +18,9 @@ from collections.abc import Iterable
 from dataclasses import replace
 
 from relevance_plan.errors import UsageError
-from relevance_plan.pddl.formulas import GroundAtom
+from relevance_plan.pddl.formulas import GroundAtom, numeric_effects
 from relevance_plan.pddl.model import Domain, Problem, TimedLiteral, frozen, pinned_objects
+from relevance_plan.relevance.types import static_predicates
 
 BLOCKSWORLD_DOMAIN = """(define (domain blocksworld)
   (:requirements :strips :typing)
@@ -148,11 +149,18 @@ def pad_with_clones(domain: Domain, problem: Problem, extra: int, seed: int = 0)
     The clones go round robin over the sources' types, in the order the
     problem first declares them, so that every kind of object gets copies;
     within a type, the sources come in an order shuffled by ``seed``, one
-    after the other.  A clone has a fresh name and its source's type, and
-    every initial fact, numeric value and timed literal that mentions the
-    source is copied with the clone in the source's place (every occurrence):
-    a clone of a location has its roads, and what stood at the location stands
-    at the clone too.  The goal, constraints and metric are unchanged.  The result has no
+    after the other.  A clone has a fresh name and its source's type.  Of the
+    initial facts and numeric values that mention the source, it gets, with
+    itself in the source's place (every occurrence):
+
+    - those of static predicates and functions (that no action and no timed
+      literal changes): a clone of a location has its roads and distances;
+    - of the others (the state), those whose first argument is the source: a
+      clone of a truck stands where the truck stands and has its fuel, but
+      what stands at a cloned location is not copied, so that no object of
+      the problem is in two places.  Timed literals follow the same rule.
+
+    The goal, constraints and metric are unchanged.  The result has no
     source text: write it with ``pddl.formatter.format_problem``.
 
     ``UsageError`` when ``extra`` is negative, or when it is positive and no
@@ -180,7 +188,24 @@ def pad_with_clones(domain: Domain, problem: Problem, extra: int, seed: int = 0)
         names = by_type[types[index % len(types)]]
         source = names[(index // len(types)) % len(names)]
         clones[_fresh_name(source, taken)] = source
-    return _with_clones(problem, clones)
+    return _with_clones(problem, clones, _changing(domain, problem))
+
+
+def _changing(domain: Domain, problem: Problem) -> frozenset[str]:
+    """Predicates and functions whose values change: set by an action, a derived rule or a timed literal."""
+    changing = set(domain.predicates) - static_predicates(domain)
+    for action in domain.actions:
+        changing.update(effect.fluent.function for effect, *_ in numeric_effects(action.effect))
+    for literal in problem.timed_literals:
+        term = literal.atom if literal.atom is not None else literal.fluent
+        if term is not None:
+            changing.add(term[0])
+    return frozenset(changing)
+
+
+def _copied(term: tuple[str, ...], source: str, changing: frozenset[str]) -> bool:
+    """Whether a clone of ``source`` gets this fact, value or timed literal (see :func:`pad_with_clones`)."""
+    return term[0] not in changing or (len(term) > 1 and term[1] == source)
 
 
 def _taken_names(domain: Domain, problem: Problem) -> set[str]:
@@ -213,7 +238,7 @@ def _mentioning(atoms: Iterable[GroundAtom]) -> dict[str, list[GroundAtom]]:
     return index
 
 
-def _with_clones(problem: Problem, clones: dict[str, str]) -> Problem:
+def _with_clones(problem: Problem, clones: dict[str, str], changing: frozenset[str]) -> Problem:
     """``problem`` with each clone declared and given its source's initial facts and values."""
     facts = list(problem.facts_in_order())
     fact_index = _mentioning(facts)
@@ -232,13 +257,15 @@ def _with_clones(problem: Problem, clones: dict[str, str]) -> Problem:
         objects[clone] = problem.objects[source]
         display[clone] = problem.display(source) + clone[len(source) :]
         for atom in fact_index.get(source, ()):
-            order.setdefault(_swap(atom, source, clone), len(order))
+            if _copied(atom, source, changing):
+                order.setdefault(_swap(atom, source, clone), len(order))
         for term in numeric_index.get(source, ()):
-            numeric[_swap(term, source, clone)] = problem.numeric_init[term]
+            if _copied(term, source, changing):
+                numeric[_swap(term, source, clone)] = problem.numeric_init[term]
         for literal in timed_index.get(source, ()):
-            if literal.atom is not None:
+            if literal.atom is not None and _copied(literal.atom, source, changing):
                 timed.append(replace(literal, atom=_swap(literal.atom, source, clone)))
-            elif literal.fluent is not None:
+            elif literal.fluent is not None and _copied(literal.fluent, source, changing):
                 timed.append(replace(literal, fluent=_swap(literal.fluent, source, clone)))
     return replace(
         problem,
