@@ -16,7 +16,7 @@ Every plan the tool reports is validated on the original problem (the tool
 does it; the script checks the JSON says so).  Prints one row per run with
 the attempts (objects kept, time limit, status), then the ratios.
 
-    python benchmarks/bench_budgets.py                       # up:aries; sizes 0, 60, 120: about 10 minutes
+    python benchmarks/bench_budgets.py                       # up:aries; sizes 0, 60, 120: about 2 minutes
     python benchmarks/bench_budgets.py --planner up:tamer --extra 0 60
 """
 
@@ -76,7 +76,7 @@ def describe(result: dict) -> str:
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(
         description=__doc__.split("\n\n")[0],
-        epilog="Sizes 0, 60 and 120 with up:aries take about 10 minutes on 2 cores.",
+        epilog="Sizes 0, 60 and 120 with up:aries take about 2 minutes on 2 cores.",
     )
     parser.add_argument("--planner", default="up:aries")
     parser.add_argument("--extra", type=int, nargs="+", default=[0, 60, 120])

@@ -79,17 +79,11 @@ def _serve(engine: str, address: str) -> None:
             stream.flush()
 
 
-def _solve(engine: str, number: int, request: dict[str, object]) -> dict[str, object]:
+def _solve(engine: str, number: int, request: dict[str, Any]) -> dict[str, object]:
     print(HEADER.format(number=number), flush=True)
     before, _ = _used()
-    timeout = request["timeout"]
     code = solve_files(
-        engine,
-        str(request["domain"]),
-        str(request["problem"]),
-        str(request["plan"]),
-        str(request["verdict"]),
-        None if timeout is None else float(timeout),  # type: ignore[arg-type]
+        engine, request["domain"], request["problem"], request["plan"], request["verdict"], request["timeout"]
     )
     sys.stdout.flush()
     sys.stderr.flush()
