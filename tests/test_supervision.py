@@ -21,13 +21,14 @@ from support import (
     TOOL,
     assert_session_gone,
     big_problem,
+    process_gone,
     small_gripper_problem,
     write_file,
 )
 
 from relevance_plan.planning.planners.base import PlannerStatus
 from relevance_plan.planning.planners.fast_downward import adapter as fast_downward
-from relevance_plan.supervision import process, spawn
+from relevance_plan.supervision import guard, process, spawn
 
 
 @pytest.fixture
@@ -183,3 +184,49 @@ def test_a_planner_that_swaps_in_a_link_to_the_users_files_gets_nothing_written_
     assert (users / "mine.txt").read_text() == "keep\n"
     assert "Traceback" not in completed.stderr and completed.returncode in (0, 40), completed.stderr
     assert list(scratch.iterdir()) == [], "a link or folder of the run left behind"
+
+
+# A supervised program that forks a copy of itself (as a warm engine worker does): the copy leads a
+# group of its own with one child of its own, and writes its pid to ``copy.pid``.
+FORKING = """
+import os, subprocess, sys, time
+pid = os.fork()
+if pid == 0:
+    os.setpgid(0, 0)
+    subprocess.Popen([sys.executable, "-c", "import time; time.sleep(300)"])
+    with open("copy.pid.tmp", "w") as out:
+        out.write(str(os.getpid()))
+    os.rename("copy.pid.tmp", "copy.pid")
+    time.sleep(300)
+    os._exit(0)
+time.sleep(300)
+"""
+
+
+def test_a_forked_group_is_killed_alone_and_its_parent_goes_on(tmp_path):
+    workdir = tmp_path / "run"
+    workdir.mkdir()
+    started = process.start_process_group(
+        [sys.executable, "-c", FORKING], workdir, what="forking program", program=sys.executable
+    )
+    try:
+        deadline = time.monotonic() + 30
+        while not (workdir / "copy.pid").exists() and time.monotonic() < deadline:
+            time.sleep(0.02)
+        copy = process.ForkedGroup(int((workdir / "copy.pid").read_text()))
+        members = [pid for pid, fields in guard.process_stats() if int(fields[2]) == copy.run.pgid]
+        assert len(members) == 2 and not copy.exited()  # the copy and its child
+        copy.stop()
+        assert copy.exited() and all(process_gone(pid) for pid in members)
+        assert not started.exited()  # the guard and the program that forked the copy run on
+        copy.kill()  # again: its number is no longer its own (a zombie), and nothing else is touched
+        assert not started.exited()
+    finally:
+        started.stop()
+    assert process_gone(started.run.pgid)
+
+
+def test_a_forked_group_that_is_gone_counts_as_exited():
+    copy = process.ForkedGroup(2**22 + 1)  # above Linux's largest pid: never a process
+    assert copy.exited()
+    copy.stop()  # nothing to kill, and no error
