@@ -40,7 +40,7 @@ STRICT = Thresholds(0.2, 0.85)
 def test_which_planners_prove_a_problem_unsolvable():
     assert make_planner("fast-downward").proves_unsolvable
     assert make_planner("up:symk").proves_unsolvable
-    for name in ("lpg", "up:aries", "up:tamer", "up:enhsp", "cmd:planner {domain} {problem}", "auto"):
+    for name in ("lpg", "up:aries", "up:tamer", "up:enhsp", "up:kairos", "cmd:planner {domain} {problem}", "auto"):
         assert not make_planner(name).proves_unsolvable, name
 
 
