@@ -31,20 +31,27 @@ def _files(tmp_path, domain: str, problem: str):
     return str(tmp_path / "domain.pddl"), str(tmp_path / "problem.pddl")
 
 
+@pytest.fixture
+def gripper(tmp_path):
+    """The small gripper problem's files and a planner run on them (in whatever pool is current)."""
+    files = _files(tmp_path, SMALL_GRIPPER_DOMAIN, small_gripper_problem())
+    planner = make_planner("up:pyperplan")
+    return planner, lambda: planner.run(*files, time_limit=60, memory_limit_mb=None)
+
+
 @pytest.mark.planner
 @needs_pyperplan
-def test_the_attempts_of_a_run_are_served_by_one_worker(tmp_path):
-    domain, problem = _files(tmp_path, SMALL_GRIPPER_DOMAIN, small_gripper_problem())
-    planner = make_planner("up:pyperplan")
+def test_the_attempts_of_a_run_are_served_by_one_worker(gripper):
+    planner, solve = gripper
     with warm_planners(None):
         warm_up(planner)
-        first = planner.run(domain, problem, time_limit=60, memory_limit_mb=None)
-        second = planner.run(domain, problem, time_limit=60, memory_limit_mb=None)
+        first = solve()
+        second = solve()
     assert first.status is second.status is PlannerStatus.SOLVED
     assert first.plan == second.plan and len(first.plan) == 3
     assert first.process_group == second.process_group  # the same worker answered both
     assert process_gone(first.process_group)  # killed when the run ended
-    alone = planner.run(domain, problem, time_limit=60, memory_limit_mb=None)  # no run open: the one-shot child
+    alone = solve()  # no run open: the one-shot child
     assert alone.status is PlannerStatus.SOLVED and alone.process_group != first.process_group
 
 
@@ -118,9 +125,8 @@ def test_a_race_copies_the_runs_warm_worker_for_the_pruned_attempts(tmp_path, mo
 
 @pytest.mark.planner
 @needs_pyperplan
-def test_a_copy_serves_its_own_requests_and_is_killed_alone(tmp_path):
-    domain, problem = _files(tmp_path, SMALL_GRIPPER_DOMAIN, small_gripper_problem())
-    planner = make_planner("up:pyperplan")
+def test_a_copy_serves_its_own_requests_and_is_killed_alone(gripper):
+    planner, solve = gripper
     with warm_planners(None):
         warm_up(planner)
         parent = current_pool().start("pyperplan", None)
@@ -128,31 +134,30 @@ def test_a_copy_serves_its_own_requests_and_is_killed_alone(tmp_path):
             warm_up(planner)
             copy = current_pool().start("pyperplan", None)
             assert isinstance(copy, ForkedWorker) and copy.parent is parent
-            copied = planner.run(domain, problem, time_limit=60, memory_limit_mb=None)
+            copied = solve()
             assert copied.status is PlannerStatus.SOLVED and len(copied.plan) == 3
             assert copied.process_group != parent._group.run.pgid  # a group of its own
             assert not process_gone(copied.process_group)
         assert process_gone(copied.process_group)  # killed when its pool closed
         assert parent.alive
-        own = planner.run(domain, problem, time_limit=60, memory_limit_mb=None)
+        own = solve()
         assert own.status is PlannerStatus.SOLVED and own.process_group == parent._group.run.pgid
     assert process_gone(own.process_group)
 
 
 @pytest.mark.planner
 @needs_pyperplan
-def test_a_worker_that_has_served_a_request_is_not_copied(tmp_path):
+def test_a_worker_that_has_served_a_request_is_not_copied(gripper):
     # an engine may leave threads behind after a request, and a fork copies none of them
-    domain, problem = _files(tmp_path, SMALL_GRIPPER_DOMAIN, small_gripper_problem())
-    planner = make_planner("up:pyperplan")
+    planner, solve = gripper
     with warm_planners(None):
         warm_up(planner)
-        assert planner.run(domain, problem, time_limit=60, memory_limit_mb=None).status is PlannerStatus.SOLVED
+        assert solve().status is PlannerStatus.SOLVED
         with warm_planners(None, beside=True):
             warm_up(planner)
             worker = current_pool().start("pyperplan", None)
             assert type(worker) is EngineWorker
-            assert planner.run(domain, problem, time_limit=60, memory_limit_mb=None).status is PlannerStatus.SOLVED
+            assert solve().status is PlannerStatus.SOLVED
 
 
 @pytest.mark.planner
