@@ -84,3 +84,44 @@ def test_the_generated_worlds_full_problems_and_first_selections_are_admitted(wo
     selection = rp.prune(DOMAINS_DIR / world / "domain.pddl", generated.pddl_text)
     assert timed_relaxed_reachability(selection.task, selection.task.problem.objects.keys()) is True
     assert timed_relaxed_reachability(selection.task, selection.kept) is True
+
+
+UPLINK_DOMAIN = """(define (domain uplink)
+  (:requirements :strips :typing :durative-actions :timed-initial-literals :numeric-fluents)
+  (:types probe station)
+  (:predicates (measured ?p - probe) (visible ?s - station ?p - probe) (sent ?p - probe))
+  (:functions (send-time ?s - station))
+  (:durative-action measure
+    :parameters (?p - probe)
+    :duration (= ?duration 2)
+    :condition ()
+    :effect (at end (measured ?p)))
+  (:durative-action send
+    :parameters (?s - station ?p - probe)
+    :duration (= ?duration (send-time ?s))
+    :condition (and (at start (measured ?p)) (over all (visible ?s ?p)))
+    :effect (at end (sent ?p))))
+"""
+
+
+def uplink_problem(stations: int, numeric: bool) -> str:
+    names = " ".join(f"s{i}" for i in range(stations))
+    windows = " ".join(f"(at 10 (visible s{i} p1)) (at 30 (not (visible s{i} p1)))" for i in range(stations))
+    times = " ".join(f"(= (send-time s{i}) 4)" for i in range(stations)) if numeric else ""
+    return f"""(define (problem uplink-1) (:domain uplink)
+  (:objects p1 - probe {names} - station)
+  (:init {windows} {times})
+  (:goal (sent p1)))
+"""
+
+
+@pytest.mark.parametrize("numeric", [True, False], ids=["with-numeric-values", "facts-only"])
+def test_a_fact_only_a_timed_literal_makes_true_is_reached_by_the_delete_relaxation(numeric):
+    # the window of visibility opens at 10: a plan waits for it, so one station is enough
+    domain = UPLINK_DOMAIN
+    if not numeric:
+        domain = domain.replace("(:functions (send-time ?s - station))", "").replace("(send-time ?s)", "4")
+    task = task_of(domain, uplink_problem(12, numeric))
+    assert relaxed_reachability(task, {"p1", "s0"}).reachable
+    selection = rp.prune(domain, uplink_problem(12, numeric), scorer="goal")
+    assert len(selection.kept) == 2  # the probe and one station, not all twelve

@@ -153,6 +153,8 @@ class _Compiled:
     schemas: list[_Schema]
     static: frozenset[str]  # predicates no action and no timed literal changes
     timed: frozenset[GroundAtom]  # atoms a timed initial literal makes true
+    # object -> the timed atoms that mention it (the initial facts' index has none of them)
+    timed_by_object: Mapping[str, tuple[GroundAtom, ...]]
     nullary: frozenset[GroundAtom]  # initial and timed atoms without arguments
     shared: _Shared | None = None
     # id(schema) -> the atoms without arguments that, once reached, make it add nothing new (see _dominated)
@@ -177,10 +179,22 @@ def _compiled(task: PlanningTask) -> _Compiled:
             for atom in by_predicate.get(predicate, ())
             if atom in problem.init
         ) | frozenset(atom for atom in timed if len(atom) == 1)
+        timed_by_object: dict[str, list[GroundAtom]] = defaultdict(list)
+        for atom in sorted(timed):
+            for name in dict.fromkeys(atom[1:]):
+                timed_by_object[name].append(atom)
         schemas = _compiled_schemas(task)
         shared = None if problem.timed_literals else _shared_class(task, schemas)
         dominated = _dominated(task.typing.domain, schemas, shared.variable if shared else {})
-        cached = _Compiled(schemas, frozenset(static), timed, nullary, shared, dominated)
+        cached = _Compiled(
+            schemas,
+            frozenset(static),
+            timed,
+            {name: tuple(atoms) for name, atoms in timed_by_object.items()},
+            nullary,
+            shared,
+            dominated,
+        )
         _COMPILED[task] = cached
     return cached
 
@@ -448,6 +462,7 @@ class _Exploration:
         self.numeric_terms = bool(problem.numeric_init)
         # timed initial literals that make a fact true count as reached: a plan may wait for them
         self.timed = compiled.timed
+        self.timed_by_object = compiled.timed_by_object
         self.of_type: dict[str, list[str]] = {}
         self.fits: dict[str, frozenset[str]] = {}
         self.schemas = compiled.schemas
@@ -509,8 +524,10 @@ class _Exploration:
         allowed, members, init, timed = self.allowed, self.members, self.init, self.timed
         fits, shares = allowed.issuperset, members.isdisjoint
         all_facts = not self.numeric_terms
+        timed_by_object = self.timed_by_object
         for name in sorted(names):
-            for atom in self.by_object.get(name, ()):
+            # a fact only a timed literal makes true is reached too: a plan may wait for it
+            for atom in itertools.chain(self.by_object.get(name, ()), timed_by_object.get(name, ())):
                 args = atom[1:]
                 if not members or shares(args):
                     if fits(args) and (all_facts or atom in init or atom in timed):
