@@ -125,3 +125,32 @@ def test_a_fact_only_a_timed_literal_makes_true_is_reached_by_the_delete_relaxat
     assert relaxed_reachability(task, {"p1", "s0"}).reachable
     selection = rp.prune(domain, uplink_problem(12, numeric), scorer="goal")
     assert len(selection.kept) == 2  # the probe and one station, not all twelve
+
+
+WATERING_DOMAIN = """(define (domain watering)
+  (:requirements :typing :numeric-fluents)
+  (:types agent tap plant)
+  (:functions (carrying ?a - agent) (poured ?p - plant))
+  (:action load
+    :parameters (?a - agent ?t - tap)
+    :precondition (<= (carrying ?a) 4)
+    :effect (increase (carrying ?a) 1))
+  (:action pour
+    :parameters (?a - agent ?p - plant)
+    :precondition (>= (carrying ?a) 1)
+    :effect (and (decrease (carrying ?a) 1) (increase (poured ?p) 1))))
+"""
+
+
+def test_a_class_the_selection_lacks_is_tried_before_more_members_of_a_tied_class():
+    # thirty agents, tied with the tap at score 0 and first by name: one agent and the tap suffice
+    agents = [f"a{i:02}" for i in range(30)]
+    problem = f"""(define (problem watering-1) (:domain watering)
+  (:objects {" ".join(agents)} - agent zt - tap p1 - plant)
+  (:init {" ".join(f"(= (carrying {a}) 0)" for a in agents)} (= (poured p1) 0))
+  (:goal (>= (poured p1) 2)))
+"""
+    selection = rp.prune(WATERING_DOMAIN, problem, scorer="goal")
+    assert "zt" in selection.kept
+    assert len(selection.kept) == 3  # p1, one agent, the tap
+    assert timed_relaxed_reachability(selection.task, selection.kept) is True

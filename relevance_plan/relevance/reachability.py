@@ -1125,9 +1125,12 @@ def _sharpen(
         return closed, reasons, check
     distance = task.goal_distance
     far = len(task.problem.objects) + 1
-    ranked = sorted(
-        (name for name in task.problem.objects if name not in closed),
-        key=lambda name: (-scores.get(name, 0.0), distance.get(name, far), name),
+    ranked = _round_robin(
+        sorted(
+            (name for name in task.problem.objects if name not in closed),
+            key=lambda name: (-scores.get(name, 0.0), distance.get(name, far), name),
+        ),
+        task.typing.problem.objects,
     )
     current, added, batch = closed, list(reasons), 1
     while ranked and len(current) <= give_up_above:
@@ -1142,6 +1145,17 @@ def _sharpen(
             break
         batch = max(1, len(current) - len(kept))
     return current, tuple(added), check
+
+
+def _round_robin(ranked: Sequence[str], classes: Mapping[str, str]) -> list[str]:
+    """``ranked`` taken one class at a time: the best of each class, then the second of each, ...
+
+    The sharper check says only that the selection fails, not what it lacks: sixty agents tied at
+    score 0 must not all come before the one tap the agents need to fill up."""
+    by_class: dict[str, list[str]] = {}
+    for name in ranked:
+        by_class.setdefault(classes.get(name, "object"), []).append(name)
+    return [name for row in itertools.zip_longest(*by_class.values()) for name in row if name is not None]
 
 
 class _Toward:
