@@ -204,3 +204,28 @@ def test_the_worker_dies_when_the_tool_is_killed():
     finally:
         owner.kill()
         owner.wait()
+
+
+DEFERRED_CHECK = """
+import sys
+from relevance_plan.planning.planners.up.deferred import defer_configspace
+assert defer_configspace()
+import unified_planning.io, unified_planning.shortcuts as shortcuts
+shortcuts.get_environment().credits_stream = None
+engine = shortcuts.get_environment().factory.engine("pyperplan")
+assert "scipy.stats" not in sys.modules, "ConfigSpace was imported with unified-planning"
+space = engine.get_configuration_space()  # built on first use, by the real package
+import ConfigSpace, ConfigSpace.util
+assert isinstance(space, ConfigSpace.ConfigurationSpace), type(space)
+assert "scipy.stats" in sys.modules
+print("deferred")
+"""
+
+
+@needs_pyperplan
+def test_the_engine_processes_import_configspace_only_when_an_engine_asks_for_it():
+    completed = subprocess.run(
+        [sys.executable, "-c", DEFERRED_CHECK], capture_output=True, text=True, timeout=120, check=False
+    )
+    assert completed.returncode == 0, completed.stderr
+    assert completed.stdout.strip() == "deferred"

@@ -24,6 +24,7 @@ on these objects (``False`` is a proof); when it is reached, nothing is known
 
 from __future__ import annotations
 
+import functools
 import itertools
 import math
 import time
@@ -267,24 +268,26 @@ class _Check:
         marker: tuple[str, ...] | None = None
         if len(parts) == 2:
             marker = ("#started", str(id(parts[0])), *(binding[v] for v in sorted(binding)))
+        get = binding.get
         for index, part in enumerate(parts):
-            pre = tuple((a.predicate, *(binding.get(x, x) for x in a.args)) for a in part.pre)
-            add = tuple(
-                (a.predicate, *(each.get(x, binding.get(x, x)) for x in a.args))
-                for a, quantified in part.add
-                for each in self._each(quantified)
-            )
+            pre = tuple([(a.predicate, *[get(x, x) for x in a.args]) for a in part.pre])
+            add = [(a.predicate, *[get(x, x) for x in a.args]) for a in part.plain_add]
+            for a, quantified in part.quantified_add:  # one atom for each binding of the quantified variables
+                add.extend((a.predicate, *[each.get(x, get(x, x)) for x in a.args]) for each in self._each(quantified))
             if marker is not None:
-                pre, add = (pre + (marker,), add) if index == 1 else (pre, add + (marker,))
+                if index == 1:
+                    pre += (marker,)
+                else:
+                    add.append(marker)
             tests = tuple(
                 Comparison(c.op, _ground_expression(c.left, binding), _ground_expression(c.right, binding))
                 for c in part.tests
             )
             numeric = tuple(
-                (op, (fluent.function, *(binding.get(a, a) for a in fluent.args)), _ground_expression(value, binding))
+                (op, (fluent.function, *[get(a, a) for a in fluent.args]), _ground_expression(value, binding))
                 for op, fluent, value in part.numeric
             )
-            self.snaps.append(_Snap(pre, tests, add, numeric))
+            self.snaps.append(_Snap(pre, tests, tuple(add), numeric))
 
     # ------------------------------------------------------------------ the fixpoint
 
@@ -354,6 +357,14 @@ class _Part:
     tests: tuple[Comparison, ...]
     add: tuple[tuple[Atom, tuple[tuple[str, str], ...]], ...]  # (atom, its quantified (variable, type)s)
     numeric: tuple[tuple[str, Fluent, Expression], ...]
+
+    @functools.cached_property
+    def plain_add(self) -> tuple[Atom, ...]:
+        return tuple(atom for atom, quantified in self.add if not quantified)
+
+    @functools.cached_property
+    def quantified_add(self) -> tuple[tuple[Atom, tuple[tuple[str, str], ...]], ...]:
+        return tuple(item for item in self.add if item[1])
 
 
 def _parts(action: Action) -> list[_Part]:

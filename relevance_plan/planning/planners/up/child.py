@@ -22,6 +22,7 @@ import time
 from typing import TYPE_CHECKING, Any
 
 from relevance_plan.planning.planners.up.adapter import CHILD_CANNOT_READ, ENGINE_FEATURES
+from relevance_plan.planning.planners.up.deferred import defer_configspace
 
 if TYPE_CHECKING:
     from relevance_plan.planning.planners.up.fitting import Fitted
@@ -39,6 +40,7 @@ MIN_SEARCH_SECONDS = 0.1
 
 def main(arguments: list[str]) -> int:
     engine, domain_path, problem_path, plan_path, verdict_path, timeout_text = arguments
+    defer_configspace()  # a second of a core that no one-shot solve needs
     timeout = None if timeout_text == "none" else float(timeout_text)
     return solve_files(engine, domain_path, problem_path, plan_path, verdict_path, timeout)
 

@@ -35,6 +35,7 @@ import traceback
 from typing import Any
 
 from relevance_plan.planning.planners.up.child import register_engine, solve_files
+from relevance_plan.planning.planners.up.deferred import defer_configspace
 
 # Printed to the log before each request's output, so the tool can cut out one attempt's part.
 HEADER = "=== request {number}"
@@ -49,6 +50,7 @@ def _used() -> tuple[float, float]:
 
 def main(arguments: list[str]) -> int:
     engine, address = arguments
+    defer_configspace()  # a second of a core that no one-shot solve needs
     import unified_planning.io  # noqa: F401
     import unified_planning.shortcuts as shortcuts  # the cost every attempt's child paid: paid once here
 
