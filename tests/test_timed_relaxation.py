@@ -154,3 +154,26 @@ def test_a_class_the_selection_lacks_is_tried_before_more_members_of_a_tied_clas
     assert "zt" in selection.kept
     assert len(selection.kept) == 3  # p1, one agent, the tap
     assert timed_relaxed_reachability(selection.task, selection.kept) is True
+
+
+def test_without_numeric_conditions_effects_or_goals_the_check_is_skipped_for_it_cannot_refute():
+    import random
+
+    from relevance_plan.relevance.timed_relaxation import applies
+
+    assert applies(task_of(ROVER_DOMAIN, rover_problem(3)))
+    # durations read from functions, but no number in a condition, an effect or the goal
+    generated = generate_sized_problem("driverlog-temporal", 0, 0, 30)
+    domain_text = (DOMAINS_DIR / "driverlog-temporal" / "domain.pddl").read_text()
+    task = task_of(domain_text, generated.pddl_text)
+    assert task.domain.temporal and task.domain.numeric and not applies(task)
+    # each part of a split durative action needs a subset of the whole action's conditions:
+    # whatever the delete relaxation admits, the sharper check admits too
+    names = sorted(task.problem.objects)
+    admitted = 0
+    for seed in range(25):
+        subset = set(random.Random(seed).sample(names, len(names) - 1 - seed % 12))  # 1 to 12 left out
+        if relaxed_reachability(task, subset).reachable:
+            admitted += 1
+            assert timed_relaxed_reachability(task, subset) is True
+    assert admitted >= 5  # the property was tested at all (8 of the 25 subsets when written)
