@@ -229,3 +229,26 @@ def test_the_engine_processes_import_configspace_only_when_an_engine_asks_for_it
     )
     assert completed.returncode == 0, completed.stderr
     assert completed.stdout.strip() == "deferred"
+
+
+@needs_pyperplan
+def test_waiting_for_a_starting_worker_leaves_its_lock_free_for_the_other_side():
+    # the race's full side waits for the worker while the pruned side gives up its copy: that
+    # must not queue behind the wait (it held the lock through every 0.05 s look, 0.1-0.2 s in all)
+    worker = EngineWorker("pyperplan", None, None)
+    try:
+        waiting = threading.Thread(target=worker.wait_ready, args=(time.monotonic() + 60,))
+        waiting.start()
+        free = taken = 0
+        while waiting.is_alive() and free + taken < 200:
+            if worker._lock.acquire(blocking=False):
+                worker._lock.release()
+                free += 1
+            else:
+                taken += 1
+            time.sleep(0.002)
+        waiting.join(60)
+        assert free + taken >= 20  # the worker took a while to start: the wait was sampled
+        assert free > 3 * taken
+    finally:
+        worker.close()

@@ -503,10 +503,10 @@ def _prune_and_plan(
         if overran is not None:
             return overran
         _say_selection(say, selection, total)
-    if race is not None and (selection is None or not selection.removed):
-        release_warm()  # the full problem is all there is to plan, and the race plans it
     # scoring and pruning only: reading came before, and a race's planner only waits beside it
     relevance_time = time.perf_counter() - scoring_started
+    if race is not None and (selection is None or not selection.removed):
+        release_warm()  # the full problem is all there is to plan, and the race plans it
     budgets = None
     if selection is not None and selection.removed and options.widen and not prepared.proves_unsolvable:
         budgets = Budgets.after(relevance_time)
