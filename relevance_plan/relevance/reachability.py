@@ -1125,11 +1125,12 @@ def _sharpen(
         return closed, reasons, check
     distance = task.goal_distance
     far = len(task.problem.objects) + 1
-    ranked = _round_robin(
+    ranked = _lacking_classes_first(
         sorted(
             (name for name in task.problem.objects if name not in closed),
             key=lambda name: (-scores.get(name, 0.0), distance.get(name, far), name),
         ),
+        closed,
         task.typing.problem.objects,
     )
     current, added, batch = closed, list(reasons), 1
@@ -1147,15 +1148,19 @@ def _sharpen(
     return current, tuple(added), check
 
 
-def _round_robin(ranked: Sequence[str], classes: Mapping[str, str]) -> list[str]:
-    """``ranked`` taken one class at a time: the best of each class, then the second of each, ...
+def _lacking_classes_first(ranked: Sequence[str], selected: Set[str], classes: Mapping[str, str]) -> list[str]:
+    """``ranked`` with the best candidate of each class ``selected`` has no member of moved to the front.
 
-    The sharper check says only that the selection fails, not what it lacks: sixty agents tied at
-    score 0 must not all come before the one tap the agents need to fill up."""
-    by_class: dict[str, list[str]] = {}
+    The sharper check says only that the selection fails, not what it lacks: as the repair does,
+    one member of every missing class comes first, so sixty agents tied at score 0 do not all come
+    before the one tap the agents need to fill up."""
+    present = {classes.get(name, "object") for name in selected}
+    first: dict[str, str] = {}
     for name in ranked:
-        by_class.setdefault(classes.get(name, "object"), []).append(name)
-    return [name for row in itertools.zip_longest(*by_class.values()) for name in row if name is not None]
+        first.setdefault(classes.get(name, "object"), name)
+    front = [name for cls, name in first.items() if cls not in present]
+    chosen = set(front)
+    return front + [name for name in ranked if name not in chosen]
 
 
 class _Toward:
