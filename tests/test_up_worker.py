@@ -18,7 +18,7 @@ from relevance_plan.planning.loop import PlanOptions, plan_task
 from relevance_plan.planning.planners.base import PlannerStatus
 from relevance_plan.planning.planners.registry import make_planner, warm_planners, warm_up
 from relevance_plan.planning.planners.up.adapter import engine_module_installed
-from relevance_plan.planning.planners.up.pool import EngineWorker, ForkedWorker, current_pool
+from relevance_plan.planning.planners.up.pool import COPY_NICE, EngineWorker, ForkedWorker, current_pool
 from relevance_plan.planning.race import THREAD_NAME
 from relevance_plan.planning.results import PlanStatus
 
@@ -138,6 +138,9 @@ def test_a_copy_serves_its_own_requests_and_is_killed_alone(gripper):
             assert copied.status is PlannerStatus.SOLVED and len(copied.plan) == 3
             assert copied.process_group != parent._group.run.pgid  # a group of its own
             assert not process_gone(copied.process_group)
+            # a guess: lower in priority than the worker planning the full problem
+            lower = os.getpriority(os.PRIO_PROCESS, copied.process_group)
+            assert lower - os.getpriority(os.PRIO_PROCESS, parent._group.run.pgid) == COPY_NICE
         assert process_gone(copied.process_group)  # killed when its pool closed
         assert parent.alive
         own = solve()

@@ -12,10 +12,11 @@ request.  The tool kills it (and whatever the engine started) when an
 attempt overruns, when the race's other side wins, and at the end of the
 run; the guard kills it when the tool dies.
 
-A request ``{"fork": SOCKET2, "log": LOG2}`` asks for a copy of the worker
+A request ``{"fork": SOCKET2, "log": LOG2, "nice": N}`` asks for a copy of the worker
 (``os.fork``: unified-planning and the engine come imported, where a new
 worker would spend seconds of a core importing them again).  The copy leads
-a process group of its own, so that the tool can kill it alone, writes its
+a process group of its own, so that the tool can kill it alone, runs N
+steps lower in priority (``os.nice``), writes its
 output to LOG2, connects to SOCKET2 and serves its own requests there; the
 answer is ``{"pid"}``.  The copy is never reaped here: its pid stays taken
 until this worker ends, so the tool cannot kill a stranger by that number.
@@ -73,7 +74,9 @@ def _serve(engine: str, address: str) -> None:
         for line in stream:
             request = json.loads(line)
             if "fork" in request:
-                answer: dict[str, object] = {"pid": _fork(engine, request["fork"], request["log"], connection, stream)}
+                answer: dict[str, object] = {
+                    "pid": _fork(engine, request["fork"], request["log"], request.get("nice", 0), connection, stream)
+                }
             else:
                 number += 1
                 answer = _solve(engine, number, request)
@@ -93,8 +96,9 @@ def _solve(engine: str, number: int, request: dict[str, Any]) -> dict[str, objec
     return {"code": code, "cpu_time": after - before, "peak_memory_mb": peak}
 
 
-def _fork(engine: str, address: str, log: str, *inherited: Any) -> int:
-    """A copy of this worker serving ``address``, its output to ``log``; its pid (its process group)."""
+def _fork(engine: str, address: str, log: str, nice: int, *inherited: Any) -> int:
+    """A copy of this worker serving ``address``, its output to ``log``, ``nice`` steps lower in
+    priority; its pid (its process group)."""
     sys.stdout.flush()
     sys.stderr.flush()
     pid = os.fork()
@@ -105,6 +109,8 @@ def _fork(engine: str, address: str, log: str, *inherited: Any) -> int:
     code = 1
     try:
         os.setpgid(0, 0)
+        if nice:
+            os.nice(nice)  # the engine it starts inherits it
         for handle in inherited:  # the parent's connection: its end must close when the parent dies
             handle.close()
         output = os.open(log, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o644)
