@@ -83,7 +83,7 @@ def applies(task: PlanningTask) -> bool:
     Split into its start and its end, a durative action fires whenever the one action that
     ``relaxed_reachability`` reads it as fires (each part needs a subset of that action's
     conditions), so without numeric conditions, effects or goals the check admits at least as much
-    and its time is lost (0.05-0.1 s of a problem a planner solves in tenths of a second)."""
+    and its time is lost (the tool's largest cost on a problem a planner solves in tenths of a second)."""
     domain = task.typing.domain
     if not (domain.temporal or domain.numeric):
         return False
