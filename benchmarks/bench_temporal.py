@@ -20,7 +20,11 @@ valid plan is flagged and the script exits 1.  One row per (folder,
 planner); an unsolved run counts as the ``--timeout``; a row solved by
 neither is listed but left out of the means.  At the end, per planner: the
 geometric mean of pure/relevance, the rows where relevance was more than
-1.25x + 0.5 s slower than pure, the rows solved by one side only.
+1.25x + 0.5 s slower than pure, the rows solved by one side only.  With
+``--extra N --oracle``, each row also plans the problem as published (the
+padding removed exactly, a perfect pruning of it) with ``method="pure"``,
+and the summary gives pure/oracle over the same rows: what planning on a
+perfectly pruned problem gives that planner, measured in the same run.
 
 ``worlds`` (the default): for each generated world and size, one problem
 (``relevance-plan generate``, seeded), planned pure and with relevance (no
@@ -235,6 +239,9 @@ class Row:
     pure_solved: bool
     relevance_solved: bool
     unvalidated: list[str] = field(default_factory=list)
+    oracle: dict[str, Any] | None = None  # --oracle: the unpadded problem planned pure
+    oracle_seconds: float | None = None
+    oracle_solved: bool = False
 
     @property
     def counted(self) -> bool:
@@ -250,6 +257,12 @@ class Row:
     def ratio(self, timeout: float) -> float:
         pure, relevance = self.charged(timeout)
         return pure / relevance
+
+    def oracle_ratio(self, timeout: float) -> float:
+        """pure/oracle, an unsolved oracle run counted as the timeout."""
+        pure, _ = self.charged(timeout)
+        assert self.oracle_seconds is not None
+        return pure / (self.oracle_seconds if self.oracle_solved else timeout)
 
     def slower(self, timeout: float) -> bool:
         pure, relevance = self.charged(timeout)
@@ -299,6 +312,11 @@ def run_corpus(argv: list[str]) -> int:
     parser.add_argument("--one-per-family", action="store_true", help="the newest folder of each track and domain")
     parser.add_argument("--extra", type=int, default=0, help="pad each problem with this many clones")
     parser.add_argument("--seed", type=int, default=1, help="the padding's seed")
+    parser.add_argument(
+        "--oracle",
+        action="store_true",
+        help="with --extra: also plan each problem as published (the padding removed), pure, in the same run",
+    )
     parser.add_argument("--timeout", type=float, default=30.0, help="per run, seconds")
     parser.add_argument("--per-folder", type=int, default=1, help="the K smallest problems of each folder")
     parser.add_argument("--no-race", action="store_true", help="relevance without the race (one core)")
@@ -310,6 +328,8 @@ def run_corpus(argv: list[str]) -> int:
         help="only the (problem, planner) pairs whose pure run solved in this earlier --json output",
     )
     args = parser.parse_args(argv)
+    if args.oracle and not args.extra:
+        parser.error("--oracle needs --extra: the oracle is the problem without its padding")
     wanted = None
     if args.pure_solved_in:
         earlier = json.loads(args.pure_solved_in.read_text(encoding="utf-8"))
@@ -380,6 +400,14 @@ def run_corpus(argv: list[str]) -> int:
                     rel, rel_time = timed_plan(
                         entry.domain, path, PlanOptions(planner=planner, timeout=args.timeout, race=race)
                     )
+                    oracle = oracle_time = None
+                    if args.oracle:
+                        note(f"{label} {planner}: oracle (the problem as published)")
+                        oracle, oracle_time = timed_plan(
+                            entry.domain,
+                            entry.problem,
+                            PlanOptions(method="pure", planner=planner, timeout=args.timeout),
+                        )
                     row = Row(
                         folder=label,
                         problem=entry.problem.name,
@@ -394,9 +422,12 @@ def run_corpus(argv: list[str]) -> int:
                         relevance_solved=rel.status is PlanStatus.SOLVED,
                         unvalidated=[
                             method
-                            for method, r in (("pure", pure), ("relevance", rel))
-                            if r.status is PlanStatus.SOLVED and not r.valid
+                            for method, r in (("pure", pure), ("relevance", rel), ("oracle", oracle))
+                            if r is not None and r.status is PlanStatus.SOLVED and not r.valid
                         ],
+                        oracle=None if oracle is None else compact(oracle.to_json()),
+                        oracle_seconds=oracle_time,
+                        oracle_solved=oracle is not None and oracle.status is PlanStatus.SOLVED,
                     )
                     rows.append(row)
                     print(format_row(row, args.timeout), flush=True)
@@ -418,6 +449,9 @@ def format_row(row: Row, timeout: float) -> str:
     ratio = f"{row.ratio(timeout):6.2f}" if row.counted else f"{'-':>6}"
     attempts = row.relevance["attempts"]
     line = f"{row.folder:{LABEL}} {row.planner:9} {row.objects:7} {pure} {rel} {kept:>7} {attempts:3} {ratio}"
+    if row.oracle is not None:
+        oracle = f"{row.oracle_seconds:.2f}" if row.oracle_solved else _short(row.oracle["status"])
+        line += f"  oracle {oracle}"
     if row.unvalidated:
         line += f"  !!! SOLVED BUT NOT VALIDATED: {', '.join(row.unvalidated)}"
     return line
@@ -463,6 +497,14 @@ def print_summary(
             f" over {len(counted)}; relevance slower (> {SLOWER_FACTOR}x + {SLOWER_SLACK} s) on {len(slower)};"
             f" solved by pure only {pure_only}, by relevance only {rel_only}"
         )
+        with_oracle = [row for row in counted if row.oracle is not None]
+        if with_oracle:
+            oracle_mean = geometric_mean([row.oracle_ratio(timeout) for row in with_oracle])
+            print(
+                f"    pure/oracle (the problem as published, planned pure) geometric mean {oracle_mean:.2f}"
+                f" over the same {len(with_oracle)} rows; oracle unsolved on"
+                f" {sum(1 for row in with_oracle if not row.oracle_solved)}"
+            )
         for row in slower:
             pure, rel = row.charged(timeout)
             print(f"    slower: {row.folder} ({row.problem}) pure {pure:.2f} s, relevance {rel:.2f} s")

@@ -9,7 +9,7 @@ from support import REPO
 from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.io import load_domain
 from relevance_plan.pddl.parser import read_problem
-from relevance_plan.relevance.prune import widen
+from relevance_plan.relevance.prune import ranked_names, widen
 from relevance_plan.relevance.scorers import PlanningTask
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
 
@@ -107,6 +107,27 @@ def test_widening_keeps_set_aside_alternatives_aside_and_brings_them_back_last()
     instance_objects = {name for name in task.problem.objects if not name.startswith("x")}
     assert not instance_objects <= first.kept
     widened, _ = widen(first, 0.5, frozenset(), scoring.model, goal_filter=True)
-    assert instance_objects <= widened.kept  # the instance's own objects come back first
+    # the instance's own objects come back first, but for an idle twin of a kept one (package4,
+    # at s1 like package3, is in no goal)
+    profiles = task.object_profiles
+    twins = {name for name in instance_objects - first.kept if any(profiles[name] == profiles[k] for k in first.kept)}
+    assert twins == {"package4"}
+    assert instance_objects - twins <= widened.kept
     assert not aside & widened.kept and widened.set_aside == aside
     assert len(widened.kept) < len(task.problem.objects) / 2
+
+
+def test_widening_takes_one_of_each_set_of_interchangeable_objects_before_a_second():
+    # IPC tpp-metric padded with 120 clones: only the five original markets have goods on sale,
+    # and their clones (on no sale, all alike) sort between them by name
+    from relevance_plan.generators.padded import pad_with_clones
+
+    folder = REPO / "benchmarks" / "corpus" / "potassco" / "ipc-2006" / "tpp-metric"
+    domain = load_domain(folder / "domain.pddl")
+    problem = read_problem((folder / "instances" / "instance-1.pddl").read_text(), domain)
+    task = PlanningTask(domain, pad_with_clones(domain, problem, 120, seed=1))
+    first = score_problem(task, ScoringOptions()).first_selection()
+    selling = {f"market{number}" for number in range(1, 6)}
+    assert len(first.kept) == 4 and len(selling & first.kept) == 1
+    ranked = ranked_names(task, first.scores, first.kept, first.set_aside)
+    assert selling - first.kept <= set(ranked[:10])  # one clone of each market at most comes before

@@ -255,6 +255,20 @@ def test_fast_downward_keeps_its_working_files_per_attempt(roads, tmp_path):
     assert code == ExitCode.INPUT_FILE and "never overwrites" in one_line_error(err)
 
 
+@pytest.mark.planner
+def test_a_relative_keep_work_directory_is_the_users_even_for_an_engine_worker(tmp_path, monkeypatch):
+    # the engine's child runs in a directory of its own: a relative path must not name a place there
+    action = "(:action a :parameters () :precondition () :effect (p))"
+    domain = write(tmp_path, "d.pddl", f"(define (domain d) (:predicates (p)) {action})")
+    problem = write(tmp_path, "p.pddl", "(define (problem q) (:domain d) (:init) (:goal (p)))")
+    monkeypatch.chdir(tmp_path)
+    args = ("--method", "pure", "--planner", "up:pyperplan", "--plan-file", "plan", "--keep-work", "work")
+    code, _, err = run("plan", domain.name, problem.name, *args)
+    assert code == 0, err
+    kept = {path.name for path in (tmp_path / "work" / "attempt-1").iterdir()}
+    assert {"plan.txt", "verdict.txt", "planner.log"} <= kept
+
+
 @pytest.mark.parametrize("where", ["domain", "file"])
 def test_keep_work_is_refused_before_planning_when_it_is_a_file(roads, tmp_path, where):
     target = roads[0] if where == "domain" else write(tmp_path, "notes.txt", "mine")

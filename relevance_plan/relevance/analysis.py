@@ -114,6 +114,17 @@ def fan_in(index: FactIndex) -> dict[tuple[str, int], float]:
     return result
 
 
+def object_profiles(index: FactIndex, values: Mapping[GroundAtom, float]) -> dict[str, tuple[object, ...]]:
+    """Each object's initial facts with its own name blanked out (numeric terms with their values):
+    objects with the same profile are interchangeable in the initial state, so a second one rarely
+    does what the first could not."""
+    profiles: dict[str, tuple[object, ...]] = {}
+    for name, atoms in index.by_object.items():
+        blanked = ((tuple("" if arg == name else arg for arg in atom), values.get(atom)) for atom in atoms)
+        profiles[name] = tuple(sorted(blanked, key=repr))
+    return profiles
+
+
 def object_distances(
     index: FactIndex,
     sources: Iterable[str],

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections import defaultdict
+from collections import Counter, defaultdict
 from collections.abc import Sequence, Set
 from dataclasses import dataclass, field
 from typing import Any
@@ -319,7 +319,7 @@ def widen(
     """One widening step after a failed attempt; returns the new result and the extra set.
 
     The thresholds shrink by ``factor`` and the best-ranked removed objects
-    (score, then distance from the goal's objects) are put back until the kept
+    (``ranked_names``) are put back until the kept
     set has at least ``growth`` times as many objects, so all failed attempts
     together cost about as much as the last one.  When that would keep more
     than ``full_above`` of the objects, the result is the full problem.
@@ -331,10 +331,8 @@ def widen(
         everything = frozenset(task.problem.objects)
         why = f"widening would keep more than {full_above:.0%} of the objects: the full problem"
         return full_problem(task, result.scores, result.thresholds.scaled(factor), result.selected, (), why), everything
-    # alternatives set aside stay aside, and come back last: the selection already holds a free
-    # member of their role, so a failed attempt more likely lacks an object of another role
-    held = result.set_aside
-    ranked = _aside_last(ranked_by_score(result), held)
+    held = result.set_aside  # alternatives set aside stay aside, and come back late
+    ranked = ranked_by_score(result, held)
     extra = frozenset(extra) | frozenset(ranked[: target - len(result.kept)])
     thresholds = result.thresholds.scaled(factor)
     widened = prune_with_scores(
@@ -342,7 +340,7 @@ def widen(
     )
     while len(widened.kept) < target and len(widened.kept) < total:
         # closure or the thresholds cannot account for every addition: add more by rank
-        missing = _aside_last(ranked_by_score(widened), held)
+        missing = ranked_by_score(widened, held)
         extra = extra | frozenset(missing[: target - len(widened.kept)])
         widened = prune_with_scores(
             task, result.scores, thresholds, model, extra, goal_filter, full_above=full_above, held_aside=held
@@ -350,24 +348,37 @@ def widen(
     return widened, extra
 
 
-def _aside_last(ranked: Sequence[str], aside: Set[str]) -> list[str]:
-    return [name for name in ranked if name not in aside] + [name for name in ranked if name in aside]
+def ranked_names(
+    task: PlanningTask, scores: ScoreResult, kept: Set[str] = frozenset(), aside: Set[str] = frozenset()
+) -> list[str]:
+    """Objects outside ``kept``, in the order widening adds them back: one of each set of
+    interchangeable objects (``PlanningTask.object_profiles``) before a second of any, the
+    alternatives set ``aside`` after the others, then by score and by hops from the goal's objects.
 
-
-def ranked_names(task: PlanningTask, scores: ScoreResult, kept: Set[str] = frozenset()) -> list[str]:
-    """Objects outside ``kept``, most relevant first: by score, then by hops from the goal's objects."""
+    A copy rarely does what its twin, kept or tried, could not: among fifty copies of a truck and
+    one market that sells, the market comes second, not fifty-first.  Set-aside alternatives come
+    late because the selection already holds a free member of their role, so a failed attempt
+    more likely lacks an object of another role."""
     values = scores.element_scores
     distance = task.goal_distance
     far = len(task.problem.objects) + 1
-    return sorted(
-        (name for name in task.problem.objects if name not in kept),
-        key=lambda name: (-values.get(name, 0.0), distance.get(name, far), name),
-    )
+
+    def rank(name: str) -> tuple[bool, float, int, str]:
+        return name in aside, -values.get(name, 0.0), distance.get(name, far), name
+
+    candidates = sorted((name for name in task.problem.objects if name not in kept), key=rank)
+    profiles = task.object_profiles
+    seen = Counter(profiles[name] for name in kept if name in profiles)
+    earlier: dict[str, int] = {}
+    for name in candidates:
+        earlier[name] = seen[profiles[name]]
+        seen[profiles[name]] += 1
+    return sorted(candidates, key=lambda name: (earlier[name], *rank(name)))
 
 
-def ranked_by_score(result: Selection) -> Sequence[str]:
-    """Pruned objects, most relevant first: the order in which widening adds them back."""
-    return ranked_names(result.task, result.scores, result.kept)
+def ranked_by_score(result: Selection, aside: Set[str] = frozenset()) -> Sequence[str]:
+    """Pruned objects in the order widening adds them back (``ranked_names``)."""
+    return ranked_names(result.task, result.scores, result.kept, aside)
 
 
 __all__ = [

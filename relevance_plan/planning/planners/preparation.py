@@ -130,8 +130,10 @@ def keeping_work(planner: Planner, directory: Path) -> Planner:
 
 
 def check_keep_directory(directory: str | os.PathLike[str], inputs: Iterable[str | None] = ()) -> Path:
-    """Refuse, before any work, a ``--keep-work`` directory that is an input, a file, or holds attempts."""
-    path = Path(directory)
+    """Refuse, before any work, a ``--keep-work`` directory that is an input, a file, or holds attempts;
+    the directory made absolute (planners run in directories of their own, where a relative path
+    names another place)."""
+    path = Path(os.path.abspath(directory))
     for source in inputs:
         if source is not None and _same_path(path, Path(source)):
             raise errors.UsageError(f"--keep-work {path} is also the file {source}; choose another directory")

@@ -8,7 +8,14 @@ from functools import cached_property
 
 from relevance_plan.pddl.model import Domain, Problem, goal_objects, pinned_objects
 from relevance_plan.pddl.sexpr import check_deadline
-from relevance_plan.relevance.analysis import FactIndex, GoalAnalysis, analyse_goal, index_init, object_distances
+from relevance_plan.relevance.analysis import (
+    FactIndex,
+    GoalAnalysis,
+    analyse_goal,
+    index_init,
+    object_distances,
+    object_profiles,
+)
 from relevance_plan.relevance.knowledge import KnowledgeModel
 from relevance_plan.relevance.soundness import KeptObjects, objects_to_keep, soundness_requirements
 from relevance_plan.relevance.types import InferredTypes, infer_types
@@ -48,6 +55,12 @@ class PlanningTask:
         """Hops from the goal's objects through initial facts (unreached objects are absent)."""
         hub = max(16, int(2 * len(self.problem.objects) ** 0.5))
         return object_distances(self.init_index, self.goal_objects, hub)
+
+    @cached_property
+    def object_profiles(self) -> dict[str, tuple[object, ...]]:
+        """Each object's class and initial facts, its own name blanked out: equal for interchangeable objects."""
+        facts = object_profiles(self.init_index, self.problem.numeric_init)
+        return {name: (self.object_type(name), *facts.get(name, ())) for name in self.problem.objects}
 
     def object_type(self, name: str) -> str:
         """The declared type of an object, or its inferred class in an untyped domain."""
