@@ -505,6 +505,11 @@ def print_summary(
                 f" over the same {len(with_oracle)} rows; oracle unsolved on"
                 f" {sum(1 for row in with_oracle if not row.oracle_solved)}"
             )
+        missed = [row for row in mine if not row.counted and row.oracle_solved]
+        if missed:
+            print(f"    solved by the oracle but by neither side: {len(missed)} rows")
+            for row in missed:
+                print(f"        {row.folder} ({row.problem}): oracle {row.oracle_seconds:.2f} s")
         for row in slower:
             pure, rel = row.charged(timeout)
             print(f"    slower: {row.folder} ({row.problem}) pure {pure:.2f} s, relevance {rel:.2f} s")
