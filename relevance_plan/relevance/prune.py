@@ -332,7 +332,7 @@ def widen(
         why = f"widening would keep more than {full_above:.0%} of the objects: the full problem"
         return full_problem(task, result.scores, result.thresholds.scaled(factor), result.selected, (), why), everything
     held = result.set_aside  # alternatives set aside stay aside, and come back late
-    ranked = ranked_by_score(result, held)
+    ranked = widening_order(result, held)
     extra = frozenset(extra) | frozenset(ranked[: target - len(result.kept)])
     thresholds = result.thresholds.scaled(factor)
     widened = prune_with_scores(
@@ -340,7 +340,7 @@ def widen(
     )
     while len(widened.kept) < target and len(widened.kept) < total:
         # closure or the thresholds cannot account for every addition: add more by rank
-        missing = ranked_by_score(widened, held)
+        missing = widening_order(widened, held)
         extra = extra | frozenset(missing[: target - len(widened.kept)])
         widened = prune_with_scores(
             task, result.scores, thresholds, model, extra, goal_filter, full_above=full_above, held_aside=held
@@ -376,7 +376,7 @@ def ranked_names(
     return sorted(candidates, key=lambda name: (earlier[name], *rank(name)))
 
 
-def ranked_by_score(result: Selection, aside: Set[str] = frozenset()) -> Sequence[str]:
+def widening_order(result: Selection, aside: Set[str] = frozenset()) -> Sequence[str]:
     """Pruned objects in the order widening adds them back (``ranked_names``)."""
     return ranked_names(result.task, result.scores, result.kept, aside)
 
@@ -390,7 +390,7 @@ __all__ = [
     "full_problem",
     "ranked_names",
     "prune_with_scores",
-    "ranked_by_score",
+    "widening_order",
     "widen",
     "select_relevant",
 ]
