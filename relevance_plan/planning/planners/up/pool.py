@@ -59,7 +59,7 @@ _POLL = 0.05  # seconds between looks at a worker that has not connected yet
 _FORK_ANSWER = 10.0  # seconds a ready worker may take to answer a request for a copy of itself
 # The copy plans the race's pruned side, a guess: where the engine runs threads on every core (Aries),
 # the two sides compete, and the full problem, which planning without pruning would run alone, keeps
-# the priority (padded corpus, Aries: pure/relevance 1.86 and no row slower, against 1.76 and one).
+# the priority (measured in docs/results.md, "Temporal and numeric planners").
 COPY_NICE = 10
 # The worker runs the tool's own code, wherever the tool was imported from (a checkout on a
 # relative PYTHONPATH too: the worker's working folder is its own).
@@ -140,7 +140,7 @@ class EngineWorker:
                 if listener is None or self._group is None:
                     return False  # closed
             # waited for without the lock: the pruned side must not queue behind the full side's
-            # wait to give up its copy (0.05 s a round, 0.1-0.2 s measured)
+            # wait to give up its copy
             wait = _POLL if until is None else max(min(_POLL, until - time.monotonic()), 0.0)
             try:
                 knocked = bool(select.select([listener], [], [], wait)[0])
