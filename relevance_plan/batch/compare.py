@@ -28,7 +28,8 @@ from relevance_plan.batch.executors import (
 from relevance_plan.batch.jobs import Job, build_jobs
 from relevance_plan.batch.store import ResultKey, ResultStore, check_store_writable
 from relevance_plan.errors import UsageError
-from relevance_plan.planning.loop import MAX_TIMEOUT, PlanOptions
+from relevance_plan.limits import DEFAULT_TIMEOUT, MAX_TIMEOUT
+from relevance_plan.planning.loop import PlanOptions
 from relevance_plan.planning.planners.registry import make_planner
 from relevance_plan.planning.results import PlanStatus
 from relevance_plan.progress import ProgressCallback, ProgressEvent, ignore
@@ -76,7 +77,7 @@ class _Recorder:
 
 def check_compare_options(
     *,
-    timeout: float = 120.0,
+    timeout: float = DEFAULT_TIMEOUT,
     jobs: int = 1,
     scheduler: str | None = None,
     scheduler_timeout: float = DEFAULT_SCHEDULER_TIMEOUT,

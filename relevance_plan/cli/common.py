@@ -19,6 +19,7 @@ import click
 
 from relevance_plan.errors import InputFileError, RelevancePlanError, UsageError, ValidatorUnavailableError
 from relevance_plan.exitcodes import ExitCode, exit_code_for_error
+from relevance_plan.limits import DEFAULT_TIMEOUT
 from relevance_plan.planning.loop import METHODS, PlanOptions
 from relevance_plan.planning.planners.registry import DEFAULT_PLANNER, DEFAULT_PLANNER_CONFIG
 from relevance_plan.planning.results import PlanResult
@@ -190,7 +191,9 @@ def planning_options(per_job: bool = False):
                     "one); Fast Downward: after the inputs, e.g. '--translate-options "
                     "--invariant-generation-max-candidates 1000'.",
                 ),
-                click.option("--timeout", type=float, default=120.0, show_default=True, help=f"Seconds for {per}."),
+                click.option(
+                    "--timeout", type=float, default=DEFAULT_TIMEOUT, show_default=True, help=f"Seconds for {per}."
+                ),
                 click.option(
                     "--memory-limit", "memory_limit", type=int, default=None, help="Planner memory limit in MB."
                 ),

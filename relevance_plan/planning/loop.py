@@ -40,6 +40,7 @@ from typing import Any
 
 from relevance_plan.errors import OutOfTimeError, UnsupportedFeatureError, UsageError
 from relevance_plan.io import load_domain, load_problem, scratch_directory, write_text_atomic
+from relevance_plan.limits import DEFAULT_TIMEOUT, MAX_TIMEOUT
 from relevance_plan.pddl.model import Problem
 from relevance_plan.pddl.plans import Plan
 from relevance_plan.pddl.sexpr import collection_paused
@@ -85,8 +86,6 @@ METHODS = ("relevance", "pure", "random", "oracle")
 # The least a planner is given when the --timeout is nearly out: a chance to finish, yet with the
 # watchdog's grace a run still ends close to the --timeout.
 LAST_SECONDS = 0.2
-# Limits beyond these are typos: the watchdog's timer cannot even hold much more.
-MAX_TIMEOUT = 1e6
 # Below 16 MB Python cannot start the planner at all; above 1 PB is absurd.
 MIN_MEMORY_MB = 16
 MAX_MEMORY_MB = 1 << 30
@@ -125,7 +124,7 @@ class PlanOptions:
     method: str = "relevance"
     planner: str = DEFAULT_PLANNER  # a planner name as planning.planners.make_planner takes it
     planner_config: str = DEFAULT_PLANNER_CONFIG
-    timeout: float | None = 120.0  # None: no limit (the UP engine without a timeout)
+    timeout: float | None = DEFAULT_TIMEOUT  # None: no limit (the UP engine without a timeout)
     memory_limit_mb: int | None = None
     thresholds: Thresholds = field(default_factory=Thresholds)
     widen: bool = True  # after a failed attempt, widen the selection and try again

@@ -26,6 +26,7 @@ from pathlib import Path
 
 from relevance_plan import errors
 from relevance_plan.errors import PlanFormatError
+from relevance_plan.limits import DEFAULT_TIMEOUT
 from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.plans import Plan, read_plan
 from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome, signal_reason
@@ -320,7 +321,7 @@ def run_fast_downward(
     problem_path: str | os.PathLike[str],
     *,
     config: str = DEFAULT_CONFIG,
-    time_limit: float | None = 120.0,
+    time_limit: float | None = DEFAULT_TIMEOUT,
     memory_limit_mb: int | None = None,
     python: str = sys.executable,
     driver_limits: bool = True,

@@ -28,6 +28,7 @@ import contextvars
 import os
 import sys
 
+from relevance_plan.limits import DEFAULT_TIMEOUT, MAX_TIMEOUT
 from relevance_plan.planning.planners.fast_downward import command as fd_command
 from relevance_plan.supervision import spawn
 
@@ -50,7 +51,6 @@ _VALUE_OPTIONS = frozenset(
     }
 )  # fmt: skip
 _FLAGS = frozenset({"--no-widen", "--no-relax", "--race", "--no-race", "--json", "--quiet", "-q"})
-_DEFAULT_TIMEOUT = 120.0
 # Words of a domain that may make ``auto`` choose another planner than Fast Downward.
 _NOT_CLASSICAL = frozenset({":durative-action", ":process", ":event", ":numeric-fluents", ":fluents", ":time"})
 # The one function Fast Downward takes: (:functions (total-cost)), perhaps typed ``- number``.
@@ -242,12 +242,12 @@ def _full_run_wanted(
     if values.get("--planner", "auto") == "auto" and not _plainly_classical(domain):
         return None
     try:
-        timeout = float(values.get("--timeout", _DEFAULT_TIMEOUT))
+        timeout = float(values.get("--timeout", DEFAULT_TIMEOUT))
         memory = int(values["--memory-limit"]) if "--memory-limit" in values else None
         extra = _split_like_a_shell(values.get("--planner-args", ""))
     except ValueError:
         return None
-    if not 0 < timeout <= 1e6 or (memory is not None and memory <= 0):
+    if not 0 < timeout <= MAX_TIMEOUT or (memory is not None and memory <= 0):
         return None
     return domain, problem, values.get("--planner-config", fd_command.DEFAULT_CONFIG), timeout, memory, extra
 
