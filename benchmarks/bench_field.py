@@ -62,8 +62,9 @@ sys.path.insert(0, str(REPO))
 from corpus import folders as corpus_folders  # noqa: E402
 from installed import compiled_checkout, installed_environment, installed_tool  # noqa: E402
 
+from relevance_plan.batch.suites import SuiteProblem, find_suite_problems  # noqa: E402
 from relevance_plan.errors import PDDLParseError, RelevancePlanError  # noqa: E402
-from relevance_plan.io import SuiteProblem, find_suite_problems, load_domain, load_problem  # noqa: E402
+from relevance_plan.io import load_domain, load_problem  # noqa: E402
 from relevance_plan.pddl.model import Domain  # noqa: E402
 from relevance_plan.planning.planners.features import NUMERIC_FLUENTS, domain_features  # noqa: E402
 

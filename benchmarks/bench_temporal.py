@@ -56,9 +56,10 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any
 
+from relevance_plan.batch.suites import SuiteProblem, find_suite_problems
 from relevance_plan.errors import RelevancePlanError
 from relevance_plan.generators.padded import pad_with_clones
-from relevance_plan.io import SuiteProblem, find_suite_problems, load_domain, load_problem, write_text_atomic
+from relevance_plan.io import load_domain, load_problem, write_text_atomic
 from relevance_plan.pddl.formatter import format_problem
 from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.planning.loop import PlanOptions, plan_task

@@ -39,8 +39,9 @@ import time
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
+from relevance_plan.batch.suites import find_suite_problems
 from relevance_plan.errors import RelevancePlanError
-from relevance_plan.io import find_suite_problems, load_task
+from relevance_plan.io import load_task
 from relevance_plan.pddl.model import Domain, Problem, all_objects
 from relevance_plan.pddl.plans import Plan, format_plan
 from relevance_plan.planning.planners.registry import make_planner

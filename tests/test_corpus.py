@@ -13,8 +13,9 @@ import sys
 import pytest
 from support import REPO
 
+from relevance_plan.batch.suites import find_suite_problems
 from relevance_plan.errors import RelevancePlanError
-from relevance_plan.io import find_suite_problems, load_domain, load_problem
+from relevance_plan.io import load_domain, load_problem
 
 SCRIPT = REPO / "benchmarks" / "corpus.py"
 CORPUS = REPO / "benchmarks" / "corpus"

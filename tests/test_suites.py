@@ -13,9 +13,9 @@ import pytest
 from support import REPO, TOOL, invoke, one_line_error
 
 from relevance_plan.batch.jobs import build_jobs, run_job
+from relevance_plan.batch.suites import find_suite_problems, suite_name
 from relevance_plan.errors import InputFileError
 from relevance_plan.exitcodes import ExitCode
-from relevance_plan.io import find_suite_problems, suite_name
 
 GRIPPER = (REPO / "relevance_plan" / "data" / "domains" / "gripper" / "domain.pddl").read_text()
 

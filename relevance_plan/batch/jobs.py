@@ -20,8 +20,8 @@ from typing import Any
 from relevance_plan.batch.keys import config_fingerprint, result_key
 from relevance_plan.batch.rows import error_row, result_row
 from relevance_plan.batch.store import ResultKey
+from relevance_plan.batch.suites import find_suite_problems, suite_name
 from relevance_plan.errors import InputFileError, PlannerError, RelevancePlanError, UsageError
-from relevance_plan.io import find_suite_problems, suite_name
 from relevance_plan.planning.loop import METHODS, PlanOptions, plan_task
 
 
@@ -105,7 +105,7 @@ def build_jobs(
     """Every (problem, seed, planner, method) of every suite, problems in natural name order.
 
     A suite is a folder of problems in one of the layouts of
-    ``io.find_suite_problems`` (``generate``'s, the IPC's, potassco's,
+    ``suites.find_suite_problems`` (``generate``'s, the IPC's, potassco's,
     pddlgym's); its name in the store is the folder's name.  A problem
     without a domain or that is not a regular file becomes jobs that record
     the reason.  Raises ``InputFileError`` for a missing suite or one without

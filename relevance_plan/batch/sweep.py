@@ -16,8 +16,9 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from relevance_plan.batch.report import format_count
+from relevance_plan.batch.suites import SuiteProblem, find_suite_problems
 from relevance_plan.errors import InputFileError, UsageError
-from relevance_plan.io import SuiteProblem, find_suite_problems, load_domain, load_problem
+from relevance_plan.io import load_domain, load_problem
 from relevance_plan.pddl.model import Domain
 from relevance_plan.relevance.knowledge import KnowledgeModel
 from relevance_plan.relevance.metrics import SetMetrics, mean_metrics, set_metrics

@@ -209,7 +209,8 @@ def score(domain_path, problem_path, inquiries, as_json, **values):
 
 def _pass_through(problem_path, output, refused: UnsupportedFeatureError, as_json: bool) -> None:
     """``prune --pass-through`` on input that cannot be pruned: the problem, unchanged, and why."""
-    from relevance_plan.io import STDOUT, read_text, write_output
+    from relevance_plan.cli.files import write_output
+    from relevance_plan.io import STDOUT, read_text
 
     reason = f"cannot be pruned: {refused}"
     written = write_output(output, read_text(problem_path, "problem file"))
@@ -316,7 +317,7 @@ def prune(domain_path, problem_path, output, pass_through, as_json, **values):
 
     "-o -" writes the pruned problem to standard output (the summary goes to stderr).
     """
-    from relevance_plan.io import names_stdout, write_output
+    from relevance_plan.cli.files import names_stdout, write_output
 
     to_stdout = names_stdout(output)
     if to_stdout and as_json:
@@ -375,7 +376,7 @@ def prune(domain_path, problem_path, output, pass_through, as_json, **values):
 @handle_errors
 def plan(domain_path, problem_path, method, plan_file, keep_work, race, as_json, quiet, **values):
     """Prune, plan, validate on the original problem, widen until solved."""
-    from relevance_plan.io import names_stdout
+    from relevance_plan.cli.files import names_stdout
     from relevance_plan.planning.planners.preparation import check_keep_directory
     from relevance_plan.planning.planners.registry import make_planner
 

@@ -133,7 +133,7 @@ def report(store_path, fmt, as_json, as_csv, suite, plots_dir, plot_format, dpi,
         require_matplotlib("--plots")
         check_plot_targets(plots_dir, store_path, plot_format)
     if html_path is not None:
-        from relevance_plan.io import check_output_file
+        from relevance_plan.cli.files import check_output_file
 
         check_output_file(html_path, "HTML report", [store_path])
     rows = read_rows(store_path, suite)
@@ -166,8 +166,9 @@ def report(store_path, fmt, as_json, as_csv, suite, plots_dir, plot_format, dpi,
 def sweep(suite_dir, taus, heatmap, as_json, **values):
     """Objects kept, timing and (with the generator's sidecars) precision, recall, F1 and N
     over a tau_c x tau_e grid for a suite."""
+    from relevance_plan.batch.suites import find_suite_problems
     from relevance_plan.batch.sweep import format_sweep, sweep_suite
-    from relevance_plan.io import check_output_file, find_suite_problems
+    from relevance_plan.cli.files import check_output_file
     from relevance_plan.relevance.knowledge import check_threshold
 
     options = take_scoring(values)
@@ -258,7 +259,8 @@ def learn(domain_path, problem_paths, output_path, time_limit, labels, seed, sto
     """Learn which objects matter from solved PROBLEMs of DOMAIN; use the model with --scorer learned:MODEL."""
     from relevance_plan.batch.learn import learn as learn_model
     from relevance_plan.batch.learn import learn_from_store
-    from relevance_plan.io import check_input_file, check_output_file, write_output
+    from relevance_plan.cli.files import check_output_file, write_output
+    from relevance_plan.io import check_input_file
     from relevance_plan.relevance.learning.model import model_text
 
     if time_limit <= 0:

@@ -274,7 +274,7 @@ keep_work_option = click.option(
 def write_plan_files(result: PlanResult, plan_file: str) -> list[str]:
     """The plan in ``plan_file``; an anytime planner's plans also in ``plan_file.1``, ``.2``, ... in the
     order found, like Fast Downward's driver (the last is the plan).  Returns the numbered files."""
-    from relevance_plan.io import names_stdout, write_output
+    from relevance_plan.cli.files import names_stdout, write_output
     from relevance_plan.pddl.plans import format_plan
 
     write_output(plan_file, result.plan_text())

@@ -2,7 +2,7 @@
 
 click's own checks end with its four-line usage block and exit 2; a bad file
 is exit 31 with one line, and an output that is also an input is exit 30
-(``io.check_input_file`` / ``io.check_output_file``).  ``own_path_checks``
+(``io.check_input_file`` / ``cli.files.check_output_file``).  ``own_path_checks``
 is applied once to the command group: it makes every ``click.Path`` accept
 any string and checks the values itself before the command runs.
 """
@@ -43,7 +43,8 @@ def _as_list(value) -> list:
 
 
 def _check(command_name: str, values: dict) -> None:
-    from relevance_plan.io import check_input_file, check_output_file, check_regular_file
+    from relevance_plan.cli.files import check_output_file, check_regular_file
+    from relevance_plan.io import check_input_file
 
     inputs = []
     for name, what in INPUT_FILES.items():

@@ -33,7 +33,7 @@ def validate(domain_path, problem_path, plan_path, validator, as_json):
     Exit 0 for a valid plan, 13 for an invalid one (with the first failing
     step and why), 41 when the validator cannot run.
     """
-    from relevance_plan.io import check_regular_file
+    from relevance_plan.cli.files import check_regular_file
     from relevance_plan.planning.validate import check_plan_file
 
     if validator != "builtin":  # VAL and unified-planning read the files again

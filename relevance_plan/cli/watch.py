@@ -63,7 +63,7 @@ def _open_events(events_path: str) -> BinaryIO:
 
 def _check_snapshot_targets(snapshot_dir: str, inputs: list) -> list[Path]:
     """The snapshot files, checked (and their folder made) before the first event."""
-    from relevance_plan.io import check_output_file
+    from relevance_plan.cli.files import check_output_file
 
     folder = Path(snapshot_dir)
     if folder.exists() and not folder.is_dir():

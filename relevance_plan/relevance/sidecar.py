@@ -13,7 +13,7 @@ from pathlib import Path
 from typing import Any
 
 from relevance_plan.errors import InputFileError
-from relevance_plan.io import read_sidecar
+from relevance_plan.io import read_text
 
 
 @dataclass(frozen=True)
@@ -27,6 +27,21 @@ class Sidecar:
 
 def sidecar_path(problem_path: str | os.PathLike[str]) -> Path:
     return Path(problem_path).with_suffix(".json")
+
+
+def read_sidecar(path: str | os.PathLike[str]) -> dict[str, Any]:
+    """A sidecar file as a dict (its fields are checked by :func:`read_sidecar_for`)."""
+    import json
+
+    try:
+        data = json.loads(read_text(path, "sidecar"))
+    except ValueError as error:
+        raise InputFileError(f"sidecar is not valid JSON: {str(error).splitlines()[0]}", path=str(path)) from None
+    except RecursionError:
+        raise InputFileError("sidecar is not valid JSON: nested too deeply", path=str(path)) from None
+    if not isinstance(data, dict):
+        raise InputFileError("sidecar must hold a JSON object", path=str(path))
+    return data
 
 
 def _names(data: dict[str, Any], key: str, path: str) -> frozenset[str] | None:
