@@ -66,7 +66,7 @@ from relevance_plan.batch.suites import SuiteProblem, find_suite_problems  # noq
 from relevance_plan.errors import PDDLParseError, RelevancePlanError  # noqa: E402
 from relevance_plan.io import load_domain, load_problem  # noqa: E402
 from relevance_plan.pddl.model import Domain  # noqa: E402
-from relevance_plan.planning.planners.features import NUMERIC_FLUENTS, domain_features  # noqa: E402
+from relevance_plan.planning.planners.requirements import NUMERIC_FLUENTS, domain_features  # noqa: E402
 
 DEFAULT_CORPUS = REPO / "benchmarks" / "corpus"
 PDDLGYM_DOMAINS = (

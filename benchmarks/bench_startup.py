@@ -50,7 +50,7 @@ sys.path.insert(0, str(REPO))
 from installed import compiled_checkout, installed_environment, installed_tool  # noqa: E402
 
 from relevance_plan.generators.classic import generate_classic_problem  # noqa: E402
-from relevance_plan.planning.planners.fast_downward.command import find_fast_downward  # noqa: E402
+from relevance_plan.planning.planners.fast_downward.command_line import find_fast_downward  # noqa: E402
 
 # Sizes where the bare driver takes from a few tenths of a second to a few seconds.
 SIZES = {"blocksworld": 20, "logistics": 40, "gripper": 40, "ferry": 40, "grid": 40, "miconic": 40}

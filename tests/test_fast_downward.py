@@ -20,7 +20,7 @@ from support import (
 from relevance_plan import errors
 from relevance_plan.planning.planners.base import PlannerStatus
 from relevance_plan.planning.planners.fast_downward import adapter as fast_downward
-from relevance_plan.planning.planners.fast_downward import command as fd_command
+from relevance_plan.planning.planners.fast_downward import command_line as fd_command
 from relevance_plan.supervision import process
 
 

@@ -10,7 +10,7 @@ from support import SMALL_GRIPPER_DOMAIN, small_gripper_problem, write_file
 
 from relevance_plan.planning.planners.base import PlannerStatus
 from relevance_plan.planning.planners.fast_downward import adapter as fast_downward
-from relevance_plan.planning.planners.fast_downward import command as fd_command
+from relevance_plan.planning.planners.fast_downward import command_line as fd_command
 from relevance_plan.supervision import process
 
 LEAN_MARK = "translate command line: "  # the lean driver's own line; the driver logs "INFO     Running translator."

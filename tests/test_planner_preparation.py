@@ -21,10 +21,10 @@ from relevance_plan.pddl.simulator import simulate
 from relevance_plan.pddl.writer import write_pruned_problem
 from relevance_plan.planning.loop import PlanOptions, plan_task
 from relevance_plan.planning.planners.fast_downward import adapter as fast_downward
-from relevance_plan.planning.planners.fast_downward import command as fd_command
-from relevance_plan.planning.planners.features import STRIPS, TYPING, problem_features
+from relevance_plan.planning.planners.fast_downward import command_line as fd_command
 from relevance_plan.planning.planners.preparation import COMPILED_FEATURES, compile_for, prepare_planner
 from relevance_plan.planning.planners.registry import make_planner
+from relevance_plan.planning.planners.requirements import STRIPS, TYPING, problem_features
 from relevance_plan.planning.results import PlanStatus
 
 # Two ways to the goal: one expensive step, or four cheap ones (an anytime planner finds both).

@@ -196,7 +196,7 @@ FEATURE_CASES = [
 
 @pytest.mark.parametrize("body, expected", FEATURE_CASES)
 def test_problem_features_come_from_what_the_files_use(tmp_path, body, expected):
-    from relevance_plan.planning.planners.features import problem_features
+    from relevance_plan.planning.planners.requirements import problem_features
 
     types = "(:types t)" if " - t" in body else ""
     domain_text = (
@@ -208,7 +208,7 @@ def test_problem_features_come_from_what_the_files_use(tmp_path, body, expected)
 
 
 def test_problem_features_of_durative_and_timed_problems(tmp_path):
-    from relevance_plan.planning.planners.features import problem_features
+    from relevance_plan.planning.planners.requirements import problem_features
 
     timed = DURATIVE_PROBLEM.replace("(:init (ready a))", "(:init (at 5 (ready a)))")
     domain, problem = _task(tmp_path, DURATIVE_DOMAIN.replace(":typing", ":typing :timed-initial-literals"), timed)

@@ -19,7 +19,7 @@ from relevance_plan.io import load_task
 from relevance_plan.pddl.plans import PlanStep, format_plan, read_plan
 from relevance_plan.planning.loop import PlanOptions, plan_task
 from relevance_plan.planning.planners import auto
-from relevance_plan.planning.planners import features as f
+from relevance_plan.planning.planners import requirements as f
 from relevance_plan.planning.planners.base import PlannerStatus
 from relevance_plan.planning.planners.lpg import classify, lpg_binary, read_lpg_plan
 from relevance_plan.planning.planners.registry import make_planner

@@ -27,7 +27,7 @@ from relevance_plan.io import load_task  # noqa: E402
 from relevance_plan.pddl.plans import read_plan  # noqa: E402
 from relevance_plan.planning.loop import PlanOptions, plan_task  # noqa: E402
 from relevance_plan.planning.planners import auto  # noqa: E402
-from relevance_plan.planning.planners import features as f  # noqa: E402
+from relevance_plan.planning.planners import requirements as f  # noqa: E402
 from relevance_plan.planning.planners.up.child import _plan_lines  # noqa: E402
 from relevance_plan.planning.planners.up.fitting import fit_problem  # noqa: E402
 from relevance_plan.planning.results import PlanStatus  # noqa: E402

@@ -81,9 +81,6 @@ ENGINE_NAME = "relevance"
 # Scorers a user may choose through params; the oracle needs a generator's sidecar.
 ENGINE_SCORERS = tuple(name for name in SCORERS if name != "oracle")
 
-# The params this engine takes for itself; the others go to the inner planner.
-OWN_PARAMS = frozenset({"tau_class", "tau_element", "scorer", "model", "domain", "widen_factor", "first_share", "seed"})
-
 # What our PDDL reader handles (pddl.SUPPORTED_REQUIREMENTS).  The engine
 # supports the intersection of this with the inner planner's kind.
 _READER_FEATURES = {

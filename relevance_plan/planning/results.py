@@ -124,7 +124,7 @@ class PlanResult:
     problem: Problem | None = field(default=None, repr=False)  # the original problem (for the user's spelling)
     unpruned_reason: str = ""  # why the input could not be pruned at all (reader or analysis refused it)
     planner_choice: str = ""  # why the default planner chose ``planner``
-    compilations: tuple[str, ...] = ()  # what was compiled away for the planner (planning.compile)
+    compilations: tuple[str, ...] = ()  # what was compiled away for the planner (pddl.compile)
     plans: tuple[Plan, ...] = ()  # an anytime planner's valid plans, in the order found (``plan`` is the last)
     raced: str = ""  # with a race: which side gave the result, "full" or "pruned" (planning.race)
 

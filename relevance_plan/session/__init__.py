@@ -1,4 +1,11 @@
-"""Event-based relevance: a live scene session (see ``session.py``)."""
+"""Event-based relevance: a live scene session.
+
+- ``session``: :class:`Session`, events in, the determination kept current, plans kept valid;
+- ``events``: one event, checked against the current scene;
+- ``state``: the live scene (objects, facts, goal) and its index;
+- ``triggers``: when relevance must be determined again;
+- ``rescoring``: the scores kept current event by event.
+"""
 
 from relevance_plan.session.events import EVENT_KINDS, Event, EventError
 from relevance_plan.session.session import Ask, EventReport, PlanReport, Session

@@ -1,6 +1,6 @@
 """The ``auto`` planner: the installed planner that takes what the problem uses.
 
-The problem's features (``features.py``) name a family, and the family an
+The problem's features (``requirements.py``) name a family, and the family an
 order of planners; the first one installed that takes every feature runs:
 
 - classical (ADL, action costs, derived predicates): Fast Downward;
@@ -31,10 +31,10 @@ from dataclasses import dataclass
 from relevance_plan.errors import UnsupportedFeatureError
 from relevance_plan.io import load_domain, load_problem
 from relevance_plan.pddl.model import Domain, Problem
-from relevance_plan.planning.planners import features as f
+from relevance_plan.planning.planners import requirements as f
 from relevance_plan.planning.planners.base import Planner, PlannerStatus, RunOutcome
 from relevance_plan.planning.planners.fast_downward.adapter import FastDownwardPlanner, check_config
-from relevance_plan.planning.planners.fast_downward.command import DEFAULT_CONFIG
+from relevance_plan.planning.planners.fast_downward.command_line import DEFAULT_CONFIG
 from relevance_plan.planning.planners.lpg import FEATURES as LPG_FEATURES
 from relevance_plan.planning.planners.lpg import INSTALL_HINT as LPG_HINT
 from relevance_plan.planning.planners.lpg import LpgPlanner, lpg_binary

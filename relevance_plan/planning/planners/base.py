@@ -118,7 +118,7 @@ class Planner(Protocol):
 
     @property
     def features(self) -> frozenset[str] | None:
-        """The PDDL features it takes (names from ``features.py``); None: unknown, it decides."""
+        """The PDDL features it takes (names from ``requirements.py``); None: unknown, it decides."""
         ...
 
     @property

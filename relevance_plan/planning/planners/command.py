@@ -20,7 +20,7 @@ from relevance_plan import errors
 from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.plans import Plan
 from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome, parse_ipc_plan, signal_reason
-from relevance_plan.planning.planners.features import refuse_unsupported
+from relevance_plan.planning.planners.requirements import refuse_unsupported
 from relevance_plan.supervision.process import (
     ProcessRun,
     log_tail,

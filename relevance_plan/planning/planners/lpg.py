@@ -41,7 +41,7 @@ from pathlib import Path
 from relevance_plan import errors
 from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.plans import Plan
-from relevance_plan.planning.planners import features as f
+from relevance_plan.planning.planners import requirements as f
 from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome, parse_ipc_plan, signal_reason
 from relevance_plan.supervision.process import ProcessRun, log_tail, read_log, run_process_group, watchdog_deadline
 

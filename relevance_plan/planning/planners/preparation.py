@@ -35,7 +35,7 @@ from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.plans import Plan
 from relevance_plan.planning.planners.auto import FallbackPlanner
 from relevance_plan.planning.planners.base import Planner, RunOutcome
-from relevance_plan.planning.planners.features import (
+from relevance_plan.planning.planners.requirements import (
     CONDITIONAL_EFFECTS,
     DISJUNCTIVE_PRECONDITIONS,
     EQUALITY,

@@ -11,11 +11,11 @@ kind to its adapter; a planner is named ``KIND`` or ``KIND:ARGUMENT``:
 - ``auto`` (the default) — the installed planner that takes what the problem
   uses, chosen by its features: ``auto.py``;
 - ``fast-downward`` — Fast Downward from up-fast-downward (``--planner-config``
-  chooses its alias or search): ``fast_downward.py``;
+  chooses its alias or search): ``fast_downward/``;
 - ``lpg`` — the LPG-td binary of up-lpg (temporal and numeric PDDL 2.1): ``lpg.py``;
 - ``up:NAME`` — a one-shot planner installed for unified-planning
   (``up:aries``, ``up:tamer``, ``up:enhsp``, ``up:pyperplan``, ``up:symk``, ...), run in a child process so
-  that its time limit holds and a hung engine can be killed: ``up_engines.py``;
+  that its time limit holds and a hung engine can be killed: ``up/``;
 - ``cmd:TEMPLATE`` — any external planner: a command template with
   ``{domain}``, ``{problem}`` and optionally ``{plan}``, split into an
   argument list (never a shell): ``command.py``.
@@ -36,15 +36,14 @@ from relevance_plan.planning.planners.auto import AutoPlanner, FallbackPlanner
 from relevance_plan.planning.planners.base import Planner
 from relevance_plan.planning.planners.command import CommandPlanner
 from relevance_plan.planning.planners.fast_downward import adapter as fast_downward
-from relevance_plan.planning.planners.fast_downward import command as fd_command
-from relevance_plan.planning.planners.fast_downward import head_start
+from relevance_plan.planning.planners.fast_downward import command_line, head_start
 from relevance_plan.planning.planners.fast_downward.adapter import FastDownwardPlanner
 from relevance_plan.planning.planners.lpg import LpgPlanner
 from relevance_plan.planning.planners.up.adapter import UnifiedPlanningPlanner
 from relevance_plan.planning.planners.up.pool import WorkerPool, current_pool, worker_pool
 
 DEFAULT_PLANNER = auto.NAME
-DEFAULT_PLANNER_CONFIG = fd_command.DEFAULT_CONFIG
+DEFAULT_PLANNER_CONFIG = command_line.DEFAULT_CONFIG
 
 # A run of the full problem the launcher started before the tool was imported (Fast Downward's, today):
 # the loop takes it, offers it to its first call on the full problem, and stops it if not taken over.

@@ -31,7 +31,7 @@ from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.plans import Plan, read_plan
 from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome, signal_reason
 from relevance_plan.planning.planners.fast_downward import head_start
-from relevance_plan.planning.planners.fast_downward.command import (
+from relevance_plan.planning.planners.fast_downward.command_line import (
     DEFAULT_CONFIG,
     FAST_DOWNWARD_ENV,
     PLAN_FILE,
@@ -41,7 +41,7 @@ from relevance_plan.planning.planners.fast_downward.command import (
     planner_arguments,
     through_lean_driver,
 )
-from relevance_plan.planning.planners.features import CLASSICAL, refuse_unsupported
+from relevance_plan.planning.planners.requirements import CLASSICAL, refuse_unsupported
 from relevance_plan.supervision.process import log_tail, read_log, run_process_group, watchdog_deadline, work_directory
 
 NAME = "fast-downward"

@@ -15,7 +15,7 @@ decided here: every argument is checked again by the CLI, and a head start
 that does not match is simply not used.
 
 Everything this module imports at its top delays the driver, so that is
-``os``, ``sys``, ``fd_command`` and ``spawn`` (no ``re``, ``typing``,
+``os``, ``sys``, ``command_line`` and ``spawn`` (no ``re``, ``typing``,
 ``pathlib``, ``subprocess``, ``contextlib`` or ``threading``): the
 command line and the domain are read with string methods, and what waits
 for the run (``process``) is imported once the tool needs it.
@@ -29,7 +29,7 @@ import os
 import sys
 
 from relevance_plan.limits import DEFAULT_TIMEOUT, MAX_TIMEOUT
-from relevance_plan.planning.planners.fast_downward import command as fd_command
+from relevance_plan.planning.planners.fast_downward import command_line
 from relevance_plan.supervision import spawn
 
 TYPE_CHECKING = False  # typing's own flag would import typing
@@ -186,14 +186,14 @@ def start_for_plan(arguments: Sequence[str]) -> None:
     if wanted is None:
         return
     domain, problem, config, timeout, memory, extra = wanted
-    driver = fd_command.driver_location()
-    command = fd_command.build_command(sys.executable, driver, domain, problem, config, timeout, memory, extra)
+    driver = command_line.driver_location()
+    command = command_line.build_command(sys.executable, driver, domain, problem, config, timeout, memory, extra)
     workdir = spawn.scratch_folder("fd")
     if workdir is None:
         return
     try:
         spawned = spawn.start_guarded(
-            fd_command.through_lean_driver(command), workdir, what="Fast Downward", program=driver
+            command_line.through_lean_driver(command), workdir, what="Fast Downward", program=driver
         )
     except BaseException:
         _remove(workdir)
@@ -249,7 +249,7 @@ def _full_run_wanted(
         return None
     if not 0 < timeout <= MAX_TIMEOUT or (memory is not None and memory <= 0):
         return None
-    return domain, problem, values.get("--planner-config", fd_command.DEFAULT_CONFIG), timeout, memory, extra
+    return domain, problem, values.get("--planner-config", command_line.DEFAULT_CONFIG), timeout, memory, extra
 
 
 def _split_like_a_shell(text: str) -> tuple[str, ...]:

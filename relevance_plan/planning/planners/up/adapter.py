@@ -1,6 +1,6 @@
 """The ``up:NAME`` adapter: a one-shot planner installed for unified-planning, run in a child process.
 
-The child (``up_child.py``) reads the PDDL files with unified-planning,
+The child (``up.child``) reads the PDDL files with unified-planning,
 solves, and writes the plan and the engine's verdict (a
 ``PlanGenerationResultStatus`` name) into the run's directory; it runs under
 ``process.run_process_group`` so that its time limit holds and a hung
@@ -23,9 +23,9 @@ from pathlib import Path
 from relevance_plan import errors
 from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.plans import Plan
-from relevance_plan.planning.planners import features as f
+from relevance_plan.planning.planners import requirements as f
 from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome, parse_ipc_plan, signal_reason
-from relevance_plan.planning.planners.features import refuse_unsupported
+from relevance_plan.planning.planners.requirements import refuse_unsupported
 from relevance_plan.supervision.process import log_tail, read_log, run_process_group, watchdog_deadline, work_directory
 
 KIND = "up"
@@ -63,7 +63,7 @@ CHILD_CANNOT_READ = 3  # unified-planning cannot read the PDDL files: an input e
 # unified-planning's PDDL reader takes no derived predicates, either types,
 # preferences or constraints, and turns every function into a real-valued
 # fluent; the engines' limits below were found by trying (docs/planners.md).
-# The child rewrites what an engine refuses when it can (``up_fit``): real
+# The child rewrites what an engine refuses when it can (``up.fitting``): real
 # fluents with whole values as integers, the type hierarchy flat; whether it
 # can depends on the values, so a feature admitted for that may still end in
 # UNSUPPORTED_PROBLEM from the child.

@@ -1,16 +1,16 @@
 """Child process of the ``up:NAME`` planners: read PDDL with unified-planning, solve, write the plan.
 
 Run as ``python -m relevance_plan.planning.planners.up.child ENGINE DOMAIN PROBLEM PLAN VERDICT TIMEOUT``
-by ``up_engines.UnifiedPlanningPlanner``, inside its own session so that the
+by ``up.adapter.UnifiedPlanningPlanner``, inside its own session so that the
 parent's watchdog can kill it (and whatever the engine started) at once.
 The plan is written to PLAN in the IPC format with the names of the PDDL
 files (a time-triggered plan as timed lines ``t: (action args) [d]``, the
 duration left out for an instantaneous action); the engine's verdict, the name of its ``PlanGenerationResultStatus``,
-to VERDICT (the parent maps it through ``up_engines.UP_STATUS``).  When
+to VERDICT (the parent maps it through ``up.adapter.UP_STATUS``).  When
 unified-planning cannot read the files there is no verdict and the exit code
-is ``up_engines.CHILD_CANNOT_READ``.  A problem whose kind the engine does
+is ``up.adapter.CHILD_CANNOT_READ``.  A problem whose kind the engine does
 not take is first rewritten into an equivalent one it takes when
-``up_fit`` can (integer fluents for whole values, flat types, guarded
+``up.fitting`` can (integer fluents for whole values, flat types, guarded
 undefined values, no quality metric), saying so on stderr.
 """
 
@@ -105,7 +105,7 @@ def register_engine(engine: str) -> None:
 
 
 def _fit(environment: Any, engine: str, problem: Any) -> Fitted | None:
-    """The problem rewritten for an engine that does not take its kind as read (``up_fit``)."""
+    """The problem rewritten for an engine that does not take its kind as read (``up.fitting``)."""
     try:
         from relevance_plan.planning.planners.up.fitting import fit_problem
 

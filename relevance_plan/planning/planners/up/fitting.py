@@ -1,6 +1,6 @@
 """Fit a problem read by unified-planning to an engine that does not take its kind.
 
-Run only by the ``up:NAME`` child (``up_child.py``), after the PDDL reader and
+Run only by the ``up:NAME`` child (``up.child``) and worker, after the PDDL reader and
 before solving: this module imports unified_planning at the top, so nothing on
 the main process's start-up path may import it.
 

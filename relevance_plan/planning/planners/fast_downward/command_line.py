@@ -1,6 +1,6 @@
 """Fast Downward's driver and its command line, with the standard library only.
 
-Separate from :mod:`fast_downward` (which reads what a run leaves behind) so
+Separate from :mod:`adapter` (which reads what a run leaves behind) so
 that the command can be built, and the driver started, before the rest of
 the tool is imported (:mod:`head_start`).
 """
