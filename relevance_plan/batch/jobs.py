@@ -17,12 +17,13 @@ from functools import cached_property
 from pathlib import Path
 from typing import Any
 
-from relevance_plan.batch.keys import config_fingerprint, result_key
+from relevance_plan.batch.keys import canonical_json, config_fingerprint, result_key
 from relevance_plan.batch.rows import error_row, result_row
 from relevance_plan.batch.store import ResultKey
 from relevance_plan.batch.suites import find_suite_problems, suite_name
 from relevance_plan.errors import InputFileError, PlannerError, RelevancePlanError, UsageError
 from relevance_plan.planning.loop import METHODS, PlanOptions, plan_task
+from relevance_plan.relevance.sidecar import read_sidecar_for
 
 
 @dataclass(frozen=True)
@@ -58,6 +59,29 @@ class Job:
 
     def describe(self) -> str:
         return f"{self.suite}/{self.problem} {self.method} {self.options.planner} seed {self.seed}"
+
+    def columns(self) -> dict[str, Any]:
+        """The job's own columns of its store row (``rows`` adds what the run gave)."""
+        world, difficulty = _sidecar_fields(self.problem_path)
+        return {
+            **self.key._asdict(),
+            "suite": self.suite,
+            "problem": self.problem,
+            "world": world,
+            "difficulty": difficulty,
+            "seed": self.seed,
+            "timeout": float(self.options.timeout or 0.0),  # compare refuses jobs without one
+            "config_json": canonical_json(self.config),
+        }
+
+
+def _sidecar_fields(problem_path: str) -> tuple[str | None, str | None]:
+    """(world, difficulty) from the generator's sidecar, (None, None) without a usable one."""
+    try:
+        sidecar = read_sidecar_for(problem_path)
+    except InputFileError:
+        return None, None  # the job reports a bad sidecar when it needs one (the oracle)
+    return (sidecar.world, sidecar.difficulty) if sidecar is not None else (None, None)
 
 
 def parse_methods(methods: str | Iterable[str]) -> tuple[str, ...]:
@@ -150,11 +174,11 @@ def run_job(job: Job) -> dict[str, Any]:
     started = time.perf_counter()
     if job.input_error is not None or job.domain_path is None:
         error = InputFileError(job.input_error or "no domain file found for this problem", path=job.problem_path)
-        return error_row(job, error, time.perf_counter() - started)
+        return error_row(job.columns(), error, time.perf_counter() - started)
     try:
         result = plan_task(job.domain_path, job.problem_path, job.options)
     except PlannerError:
         raise
     except RelevancePlanError as error:
-        return error_row(job, error, time.perf_counter() - started)
-    return result_row(job, result)
+        return error_row(job.columns(), error, time.perf_counter() - started)
+    return result_row(job.columns(), result)
