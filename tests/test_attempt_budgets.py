@@ -103,11 +103,12 @@ def test_a_planner_that_never_proves_reaches_the_full_problem_quickly(tmp_path, 
     limits = [a.time_limit for a in pruned]
     assert limits == sorted(limits) and len(set(limits)) == len(limits)  # each widening's budget is larger
     if race:
-        assert result.raced == "full"
+        assert result.deciding_side == "full"
         assert pruned[-1].status is AttemptStatus.STOPPED
         logged = result.to_json()["attempt_log"]
         assert logged[-1]["side"] == "full" and logged[-1]["status"] == "solved"
         assert any(entry["status"] == "stopped" and entry["side"] == "pruned" for entry in logged)
+        assert all(entry["planner_status"] == "stopped" for entry in logged if entry["status"] == "stopped")
     else:
         assert all(a.status is AttemptStatus.OUT_OF_TIME for a in pruned)
         assert result.attempts[-1].full and result.objects_kept == result.objects_total

@@ -46,7 +46,7 @@ def test_the_full_problem_wins_when_the_pruned_attempt_hangs_and_the_hung_planne
     result = plan_task(domain, problem, PlanOptions(planner=planner, timeout=120, race=True))
     elapsed = time.monotonic() - started
     assert result.status is PlanStatus.SOLVED and result.valid, result.message
-    assert result.raced == "full" and result.attempts[-1].full
+    assert result.deciding_side == "full" and result.attempts[-1].full
     assert result.objects_kept == result.objects_total
     assert elapsed < 60  # not the pruned attempt's share of the 120 s, nor its 300 s sleep
     pids = hung_pids(marker)
@@ -59,7 +59,7 @@ def test_the_pruned_problem_wins_when_the_full_problem_hangs_and_the_full_run_is
     planner, marker = split_planner(tmp_path, hang_on_pruned=False)
     result = plan_task(domain, problem, PlanOptions(planner=planner, timeout=120, race=True))
     assert result.status is PlanStatus.SOLVED and result.valid, result.message
-    assert result.raced == "pruned"
+    assert result.deciding_side == "pruned"
     assert result.objects_kept < result.objects_total
     # the full problem ran once, raced, and is listed last, stopped; every other attempt was pruned
     *pruned, beside = result.attempts
@@ -67,6 +67,7 @@ def test_the_pruned_problem_wins_when_the_full_problem_hangs_and_the_full_run_is
     assert beside.full and beside.raced and beside.status is AttemptStatus.STOPPED
     logged = result.to_json()["attempt_log"][-1]
     assert logged["status"] == "stopped" and logged["side"] == "full" and logged["kept"] == "all"
+    assert logged["planner_status"] == "stopped"  # we stopped it: not a crash of the planner's
     deadline = time.monotonic() + 10
     while not hung_pids(marker) and time.monotonic() < deadline:
         time.sleep(0.05)  # the stopped run may not have got as far as writing its pid
@@ -80,6 +81,9 @@ def test_without_a_race_the_json_says_so_and_with_one_it_names_the_winner(coffee
     raced = plan_task(domain, problem, PlanOptions(timeout=60, race=True))
     assert plain.to_json()["raced"] is None
     assert raced.to_json()["raced"] in ("full", "pruned")
+    # the field's new name, and the old one kept for a release: the same value
+    assert plain.to_json()["deciding_side"] is None
+    assert raced.to_json()["deciding_side"] == raced.to_json()["raced"] == raced.deciding_side
     assert plain.status is raced.status is PlanStatus.SOLVED
 
 

@@ -236,7 +236,8 @@ def test_auto_names_what_to_install_in_one_line(monkeypatch):
 
 
 def test_auto_is_the_default_and_stays_fast_downward_on_classical_problems(coffee_files):
-    from relevance_plan.planning.planners.registry import DEFAULT_PLANNER, planner_for
+    from relevance_plan.planning.planners.registry import DEFAULT_PLANNER
+    from relevance_plan.planning.planners.supply import planner_for
 
     assert DEFAULT_PLANNER == "auto" and PlanOptions().planner == "auto"
     domain, problem = load_task(*coffee_files)

@@ -16,7 +16,8 @@ from support import BIG_DOMAIN, SMALL_GRIPPER_DOMAIN, big_problem, process_gone,
 from relevance_plan.generators.padded import GRIPPER_DOMAIN, gripper_problem
 from relevance_plan.planning.loop import PlanOptions, plan_task
 from relevance_plan.planning.planners.base import PlannerStatus
-from relevance_plan.planning.planners.registry import make_planner, warm_planners, warm_up
+from relevance_plan.planning.planners.registry import make_planner
+from relevance_plan.planning.planners.supply import warm_planners, warm_up
 from relevance_plan.planning.planners.up.adapter import engine_module_installed
 from relevance_plan.planning.planners.up.pool import COPY_NICE, EngineWorker, ForkedWorker, current_pool
 from relevance_plan.planning.race import THREAD_NAME
@@ -176,7 +177,8 @@ def test_a_race_with_nothing_to_prune_plans_once_in_the_warm_worker(tmp_path, mo
 
 WORKER_OWNER = """
     import sys, time
-    from relevance_plan.planning.planners.registry import make_planner, warm_planners
+    from relevance_plan.planning.planners.registry import make_planner
+    from relevance_plan.planning.planners.supply import warm_planners
     from relevance_plan.planning.planners.up.pool import current_pool
     with warm_planners(None):
         worker = current_pool().start("pyperplan", None)

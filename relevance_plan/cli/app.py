@@ -455,8 +455,8 @@ def _print_plan_summary(result: PlanResult, plan_file, err: bool = False) -> Non
     echo(f"method:      {result.method}")
     echo(f"planner:     {result.planner}" + (f" (auto: {result.planner_choice})" if result.planner_choice else ""))
     echo(f"status:      {result.status.value}")
-    unpruned = result.why_unpruned
-    if result.unpruned_reason and not result.objects_total:
+    unpruned = result.unpruned_reason
+    if result.refusal and not result.objects_total:
         echo(f"objects:     all (pruned: no, {unpruned})")
     else:
         echo(
@@ -466,11 +466,11 @@ def _print_plan_summary(result: PlanResult, plan_file, err: bool = False) -> Non
     if result.pruned and result.selection is not None:
         echo(f"pruning:     kept {len(result.selection.kept)} of {result.objects_total} objects first")
     echo(f"attempts:    {len(result.attempts)} (first: {result.first_attempt_status})")
-    if result.raced:
+    if result.deciding_side:
         stopped = [a for a in result.attempts if a.stopped]
         echo(
             "race:        "
-            + ("the full problem, planned from the start, won" if result.raced == "full" else "the pruned side won")
+            + ("the full problem, planned from the start, won" if result.deciding_side == "full" else "the pruned side won")
             + (f"; stopped: {', '.join(_attempt_label(a) for a in stopped)}" if stopped else "")
         )
     echo(

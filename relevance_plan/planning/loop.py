@@ -11,16 +11,23 @@ full problem, so every solvable problem is solved given time.
 
 :func:`run_attempts` is the loop itself.  It does not know how a planner is
 called: the front end passes a function that runs the planner on one object
-set (``plan_task`` writes the pruned file and calls a registered planner; the
+set (``plan_task`` writes the pruned file and calls its planner; the
 unified-planning engine restricts a UP problem and calls its inner engine).
 Both then turn the attempts into a :class:`PlanResult` with :func:`summarise`.
 
-The loop knows no planner by name.  What is a planner's own (the PDDL it
-takes, its exit codes, its plan files) is its adapter's (``planners/``):
-``plan_task`` lets the planner ``check`` the problem before any work, and
-every run arrives as a :class:`RunOutcome` whose status the adapter already
+:func:`plan_task` reads the files and runs the steps in order: obtain the
+planner, score and choose the first selection (:func:`_first_selection`),
+run the attempts, beside a race of the full problem where the options ask
+for one (:func:`_race_and_plan`), and summarise.  What its steps share is one
+frozen value, :class:`_Run`.
+
+The loop knows no planner by name.  It obtains its planner once, from
+``planners.supply``: chosen (``auto`` by the problem's features), checked
+against the problem before any work, prepared (compilations), warmed, with
+the launcher's head start.  What is a planner's own (the PDDL it takes, its
+exit codes, its plan files) is its adapter's (``planners/``); every run
+arrives as a :class:`RunOutcome` whose status the adapter already
 classified and whose ``reason`` says what the planner reported, in its terms.
-The default planner (``auto``) is chosen there too, by the problem's features.
 
 Nothing a planner can solve is refused: when our reader refuses the input
 (PDDL+, object fluents) or the relevance analysis cannot take it, the
@@ -29,7 +36,6 @@ planner gets the full problem and the result says why it was not pruned.
 
 from __future__ import annotations
 
-import contextlib
 import contextvars
 import os
 import time
@@ -44,21 +50,14 @@ from relevance_plan.limits import DEFAULT_TIMEOUT, MAX_TIMEOUT
 from relevance_plan.pddl.model import Problem
 from relevance_plan.pddl.plans import Plan
 from relevance_plan.pddl.sexpr import collection_paused
-from relevance_plan.planning.planners.auto import FallbackPlanner
-from relevance_plan.planning.planners.base import Planner, PlannerStatus, RunOutcome
-from relevance_plan.planning.planners.preparation import PreparedPlanner, prepare_planner, with_planner_args
-from relevance_plan.planning.planners.registry import (
+from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome
+from relevance_plan.planning.planners.supply import (
     DEFAULT_PLANNER,
     DEFAULT_PLANNER_CONFIG,
-    await_warm,
-    make_planner,
-    offer_early_run,
-    planner_for,
-    planner_for_unread,
-    release_warm,
-    take_early_run,
-    warm_planners,
-    warm_up,
+    PlannerRequest,
+    RunPlanner,
+    RunPlanners,
+    open_planners,
 )
 from relevance_plan.planning.race import Race
 from relevance_plan.planning.results import (
@@ -122,7 +121,7 @@ class PlanOptions:
     """Everything that decides how one problem is planned; every front end builds one."""
 
     method: str = "relevance"
-    planner: str = DEFAULT_PLANNER  # a planner name as planning.planners.make_planner takes it
+    planner: str = DEFAULT_PLANNER  # a planner name as planners.registry.make_planner takes it
     planner_config: str = DEFAULT_PLANNER_CONFIG
     timeout: float | None = DEFAULT_TIMEOUT  # None: no limit (the UP engine without a timeout)
     memory_limit_mb: int | None = None
@@ -170,6 +169,10 @@ class PlanOptions:
     def from_scoring(cls, scoring: ScoringOptions, **planning: Any) -> PlanOptions:
         return cls(**{name: getattr(scoring, name) for name in SCORING_FIELDS}, **planning)
 
+    def planner_request(self, keep_work: str | os.PathLike[str] | None = None) -> PlannerRequest:
+        """What these options ask of the run's planner (``planners.supply``), with ``--keep-work``."""
+        return PlannerRequest(self.planner, self.planner_config, self.planner_args, self.memory_limit_mb, keep_work)
+
     @property
     def narrows_first(self) -> bool:
         """Whether the first selection is narrowed (goal filter, blocked alternatives set aside)."""
@@ -192,6 +195,44 @@ _PLANNER_STOPS = (PlannerStatus.UNSUPPORTED, PlannerStatus.PLANNER_CONFIG_ERROR)
 # Runs the planner on one object set (None: the user's full problem) within a
 # time limit (None: no limit) and returns its outcome.
 PlannerCall = Callable[["Selection | None", "float | None"], RunOutcome]
+
+
+# --------------------------------------------------------------------------- the attempts
+
+
+@dataclass(frozen=True)
+class _Attempting:
+    """What every attempt of one :func:`run_attempts` reads."""
+
+    task: PlanningTask
+    call_planner: PlannerCall
+    options: PlanOptions
+    deadline: float | None  # time.perf_counter(); None: no limit
+    model: KnowledgeModel | None
+    race: Race[Attempt] | None
+    say: Callable[[str], None]
+
+    @property
+    def total(self) -> int:
+        return len(self.task.problem.objects)
+
+    def time_left(self) -> bool:
+        return self.deadline is None or time.perf_counter() < self.deadline
+
+    def pruned(self, selection: Selection | None) -> Selection | None:
+        """``selection`` when it leaves objects out; None for the full problem."""
+        return selection if selection is not None and len(selection.kept) < self.total else None
+
+
+@dataclass(frozen=True)
+class _Widening:
+    """Where the loop stands between attempts: the next selection (None: the full problem), the
+    objects widening added back, how many pruned attempts ran, and their budgets."""
+
+    selection: Selection | None
+    added_back: frozenset[str] = frozenset()
+    pruned_before: int = 0
+    budgets: Budgets | None = None
 
 
 def run_attempts(
@@ -217,96 +258,112 @@ def run_attempts(
     ``budgets`` (a planner that cannot prove a pruned problem unsolvable),
     each pruned attempt is held to its budget, with or without a race.
     """
-    say = _teller(progress)
-    total = len(task.problem.objects)
     deadline = None if options.timeout is None else started + options.timeout
-    goal_filter = options.goal_filter and options.narrows_first
+    loop = _Attempting(task, call_planner, options, deadline, model, race, _teller(progress))
+    state = _Widening(selection, budgets=budgets)
     attempts: list[Attempt] = []
     widening_time = 0.0
-    extra: frozenset[str] = frozenset()
-    current = selection
-    pruned_before = 0
-    while deadline is None or time.perf_counter() < deadline:
-        if race is not None and race.won:
-            break
+    while loop.time_left() and not (race is not None and race.won):
         number = len(attempts) + 1
-        pruned = current if current is not None and len(current.kept) < total else None
-        full = pruned is None
-        last = attempts[-1] if attempts else None
-        if full and race is not None and budgets is not None and last is not None and last.selection is not None:
-            if last.status is AttemptStatus.OUT_OF_TIME:
+        pruned = loop.pruned(state.selection)
+        if pruned is None and race is not None:
+            if state.budgets is not None and _ran_out_of_budget(attempts):
                 # the full problem is planned beside: rather than wait for it, the widest pruned
                 # selection, stopped at its budget, gets the time left
-                say(f"attempt {number}: {len(last.selection.kept)} of {total} objects again, with the time left")
-                current, budgets = last.selection, None
+                again = attempts[-1].selection
+                assert again is not None
+                loop.say(f"attempt {number}: {len(again.kept)} of {loop.total} objects again, with the time left")
+                state = replace(state, selection=again, budgets=None)
                 continue
-        if full and race is not None:
-            say(f"attempt {number}: the full problem, planned since the start")
+            loop.say(f"attempt {number}: the full problem, planned since the start")
             attempts.append(replace(race.wait(), number=number))
             return attempts, widening_time
-        kept = total if pruned is None else len(pruned.kept)
-        say(f"attempt {number}: the full problem" if full else f"attempt {number}: {kept} of {total} objects")
-        final = full or not options.widen
-        if deadline is None:
-            limit = None
-        else:
-            remaining = max(deadline - time.perf_counter(), LAST_SECONDS)
-            limit = remaining if final or race is not None else max(1.0, remaining * options.first_share)
-        if budgets is not None and pruned is not None and not final:
-            budget = budgets.limit(pruned_before)
-            limit = budget if limit is None else min(limit, budget)
+        attempt = _attempt(loop, number, pruned, state)
+        attempts.append(attempt)
         if pruned is not None:
-            pruned_before += 1
-        outcome = call_planner(pruned, limit)
-        stopped = race is not None and race.won and not outcome.solved
-        if stopped:
-            say("the full problem, planned since the start, decided first: the pruned attempt was stopped")
-            validation, validation_time = None, 0.0
-        else:
-            outcome, validation, validation_time = _validate(task, outcome, options, deadline)
-        attempts.append(
-            Attempt(
-                number=number,
-                objects_kept=kept,
-                thresholds=None if pruned is None else pruned.thresholds,
-                added_back=len(extra),
-                outcome=outcome,
-                validation=validation,
-                time_limit=limit,
-                validation_time=validation_time,
-                selection=pruned,
-                stopped=stopped,
+            state = replace(state, pruned_before=state.pruned_before + 1)
+        if _decided(attempt, options):
+            break
+        if attempt.outcome.status in _PLANNER_FAULTS:
+            loop.say(
+                f"the planner reported {attempt.outcome.status.value} on a pruned problem: trying the full problem"
             )
-        )
-        if stopped:
-            break
-        if validation is not None and validation.status is not ValidationStatus.INVALID:
-            break  # valid, out of time, or no validator could run: report it, never retry blindly
-        if not options.widen or pruned is None:
-            break
-        if outcome.status in _PLANNER_STOPS:
-            break
-        if outcome.status in _PLANNER_FAULTS:
-            say(f"the planner reported {outcome.status.value} on a pruned problem: trying the full problem")
-            current = None
+            state = replace(state, selection=None)
             continue
+        assert pruned is not None  # _decided ends the loop after the full problem
         widen_started = time.perf_counter()
         try:
-            current, extra = widen(pruned, options.widen_factor, extra, model, goal_filter)
+            widened, added_back = widen(pruned, options.widen_factor, state.added_back, model, _goal_filter(options))
         except OutOfTimeError:
             break  # the --timeout ran out while widening: as when it runs out between attempts
         finally:
             widening_time += time.perf_counter() - widen_started
+        state = replace(state, selection=widened, added_back=added_back)
     if race is not None and race.won and not (attempts and attempts[-1].status is AttemptStatus.SOLVED):
         attempts.append(replace(race.wait(), number=len(attempts) + 1))
     return attempts, widening_time
 
 
-def _answering(prepared: PreparedPlanner, attempts: Sequence[Attempt]) -> str:
-    """The planner that gave the last answer: auto's next one when its first gave up."""
-    deciding = [a for a in attempts if not a.stopped]
-    last = deciding[-1].outcome.planner if deciding else ""
-    return last if isinstance(prepared.planner, FallbackPlanner) and last else prepared.name
+def _goal_filter(options: PlanOptions) -> bool:
+    return options.goal_filter and options.narrows_first
+
+
+def _ran_out_of_budget(attempts: Sequence[Attempt]) -> bool:
+    """Whether the last attempt was a pruned one that ran out of its time."""
+    return bool(attempts) and attempts[-1].selection is not None and attempts[-1].status is AttemptStatus.OUT_OF_TIME
+
+
+def _time_limit(loop: _Attempting, pruned: Selection | None, state: _Widening) -> float | None:
+    """The attempt's time limit: a share of what is left for a pruned attempt that may widen (all of
+    it beside a race), all of it for the last; a pruned attempt's budget when it has one."""
+    final = pruned is None or not loop.options.widen
+    if loop.deadline is None:
+        limit = None
+    else:
+        remaining = max(loop.deadline - time.perf_counter(), LAST_SECONDS)
+        limit = remaining if final or loop.race is not None else max(1.0, remaining * loop.options.first_share)
+    if state.budgets is not None and pruned is not None and not final:
+        budget = state.budgets.limit(state.pruned_before)
+        limit = budget if limit is None else min(limit, budget)
+    return limit
+
+
+def _attempt(loop: _Attempting, number: int, pruned: Selection | None, state: _Widening) -> Attempt:
+    """One attempt on ``pruned`` (None: the full problem), its plan validated on the original."""
+    kept = loop.total if pruned is None else len(pruned.kept)
+    loop.say(
+        f"attempt {number}: the full problem" if pruned is None else f"attempt {number}: {kept} of {loop.total} objects"
+    )
+    limit = _time_limit(loop, pruned, state)
+    outcome = loop.call_planner(pruned, limit)
+    stopped = loop.race is not None and loop.race.won and not outcome.solved
+    if stopped:
+        loop.say("the full problem, planned since the start, decided first: the pruned attempt was stopped")
+        validation, validation_time = None, 0.0
+    else:
+        outcome, validation, validation_time = _validate(loop.task, outcome, loop.options, loop.deadline)
+    attempt = Attempt(
+        number=number,
+        objects_kept=kept,
+        thresholds=None if pruned is None else pruned.thresholds,
+        added_back=len(state.added_back),
+        outcome=outcome,
+        validation=validation,
+        time_limit=limit,
+        validation_time=validation_time,
+        selection=pruned,
+    )
+    return attempt.as_stopped() if stopped else attempt
+
+
+def _decided(attempt: Attempt, options: PlanOptions) -> bool:
+    """Whether the loop ends after ``attempt``: it was stopped, its plan was valid (or could not be
+    judged), it was the last one widening allows, or the planner cannot take the problem at all."""
+    if attempt.stopped:
+        return True
+    if attempt.validation is not None and attempt.validation.status is not ValidationStatus.INVALID:
+        return True  # valid, out of time, or no validator could run: report it, never retry blindly
+    return not options.widen or attempt.selection is None or attempt.outcome.status in _PLANNER_STOPS
 
 
 def _race_decides(attempt: Attempt) -> bool:
@@ -346,6 +403,9 @@ def _validate(
     return outcome, validation, time.perf_counter() - started
 
 
+# --------------------------------------------------------------------------- one problem, from its files
+
+
 def plan_task(
     domain_path: str | Path,
     problem_path: str | Path,
@@ -357,24 +417,89 @@ def plan_task(
 
     With ``keep_work``, each attempt's planner files stay in ``keep_work/attempt-N``.
     """
+    started = time.perf_counter()
     # the run's facts die with it: no pass over them needed; its warm planners too
-    with collection_paused(), warm_planners(options.memory_limit_mb):
-        return _plan_task(domain_path, problem_path, options, progress, keep_work)
+    with collection_paused(), open_planners(options.planner_request(keep_work)) as planners:
+        return _plan_task(str(domain_path), str(problem_path), options, planners, started, progress)
+
+
+@dataclass(frozen=True)
+class _Run:
+    """What the steps of one :func:`plan_task` share once the problem is read and its planner prepared."""
+
+    task: PlanningTask
+    domain_path: str
+    problem_path: str
+    options: PlanOptions
+    planner: RunPlanner
+    started: float  # time.perf_counter()
+    scratch: Path  # where the pruned problems are written
+    progress: ProgressCallback | None
+    say: Callable[[str], None]
+
+    @property
+    def total(self) -> int:
+        return len(self.task.problem.objects)
+
+    @property
+    def races(self) -> bool:
+        """Whether the full problem is planned beside the pruned attempts (nothing to race for 'pure')."""
+        return self.options.race and self.options.method != "pure"
+
+    def call_planner(self, objects: Selection | None, limit: float | None) -> RunOutcome:
+        """The planner on ``objects`` (written to a pruned file), or on the user's files (None)."""
+        if objects is None:
+            return self.planner.run_full(self.domain_path, self.problem_path, limit)
+        target = write_text_atomic(self.scratch / f"pruned-{len(objects.kept)}.pddl", objects.text)
+        return self.planner.run(self.domain_path, str(target), limit)
+
+    def plan_full_problem(self) -> Attempt:
+        """The race's side: the full problem with all the time there is, its plan validated."""
+        deadline = None if self.options.timeout is None else self.started + self.options.timeout
+        limit = None if deadline is None else max(deadline - time.perf_counter(), LAST_SECONDS)
+        outcome = self.call_planner(None, limit)
+        outcome, validation, validation_time = _validate(self.task, outcome, self.options, deadline)
+        return Attempt(
+            number=0,
+            objects_kept=self.total,
+            thresholds=None,
+            added_back=0,
+            outcome=outcome,
+            validation=validation,
+            time_limit=limit,
+            validation_time=validation_time,
+            raced=True,
+        )
+
+
+@dataclass(frozen=True)
+class _FirstSelection:
+    """The objects' scores (None: nothing scored) and the first selection, and the seconds they took."""
+
+    scoring: Scoring | None
+    selection: Selection | None
+    unpruned_reason: str  # why the relevance analysis could not take the input ('' when it could)
+    seconds: float
+
+    @property
+    def model(self) -> KnowledgeModel | None:
+        return self.scoring.model if self.scoring is not None else None
+
+    @property
+    def scorer(self) -> str | None:
+        return self.scoring.scorer if self.scoring is not None else None
 
 
 def _plan_task(
-    domain_path: str | Path,
-    problem_path: str | Path,
+    domain_path: str,
+    problem_path: str,
     options: PlanOptions,
+    planners: RunPlanners,
+    started: float,
     progress: ProgressCallback | None,
-    keep_work: str | os.PathLike[str] | None,
 ) -> PlanResult:
+    """Read the problem, obtain its planner, and plan (unpruned when our reader refuses the input)."""
     say = _teller(progress)
-    started = time.perf_counter()
-    domain_path, problem_path = str(domain_path), str(problem_path)
-    planner = make_planner(options.planner, options.planner_config)
-    if keep_work is None:
-        warm_up(planner)  # a named engine starts now, beside the reading and scoring
     reading = None if options.timeout is None else time.monotonic() + options.timeout
     try:
         domain = load_domain(domain_path, deadline=reading)
@@ -382,191 +507,157 @@ def _plan_task(
     except OutOfTimeError:
         return _ran_out("reading the domain and problem", started, options, 0)
     except UnsupportedFeatureError as refused:
-        return _plan_unread(domain_path, problem_path, planner, refused, options, started, say)
-    total = len(task.problem.objects)
-    planner, choice = planner_for(planner, task.domain, task.problem)
-    if choice:
-        say(f"planner: {planner.name} (auto: {choice})")
-        if keep_work is None:
-            warm_up(planner)
+        return _plan_unread(domain_path, problem_path, planners.for_unread(refused), refused, options, started, say)
     # the planner's check; what it lacks and can be compiled away is compiled away at each attempt
-    prepared = prepare_planner(planner, task.domain, task.problem, problem_path, options.planner_args, keep_work, say)
-    overran = _overran("reading the domain and problem", started, options, total)
+    planner = planners.for_task(task.domain, task.problem, problem_path, say)
+    overran = _overran("reading the domain and problem", started, options, len(task.problem.objects))
     if overran is not None:
         return overran
-
     if not options.validators or "builtin" in options.validators:
         # the plan is checked once the planner has ended: import the checker now, while it runs
         import relevance_plan.pddl.simulator  # noqa: F401
-
-    # the launcher's early run of the full problem: the first call on the full problem may take it
-    # over; offered() stops it after that call, and the end of the run in every case
-    early = take_early_run()
-    if early is not None:  # the run began when the launcher started the driver: times and limits count from there
-        started = min(started, early.spawned.started + time.perf_counter() - time.monotonic())
-    with scratch_directory() as scratch, offer_early_run(early):
-
-        def call_planner(objects: Selection | None, limit: float | None) -> RunOutcome:
-            if objects is None:
-                with offer_early_run(early):
-                    return prepared.run(
-                        domain_path, problem_path, time_limit=limit, memory_limit_mb=options.memory_limit_mb
-                    )
-            target = str(write_text_atomic(Path(scratch) / f"pruned-{len(objects.kept)}.pddl", objects.text))
-            return prepared.run(domain_path, target, time_limit=limit, memory_limit_mb=options.memory_limit_mb)
-
-        def plan_full_problem() -> Attempt:
-            deadline = None if options.timeout is None else started + options.timeout
-            limit = None if deadline is None else max(deadline - time.perf_counter(), LAST_SECONDS)
-            outcome = call_planner(None, limit)
-            outcome, validation, validation_time = _validate(task, outcome, options, deadline)
-            return Attempt(
-                number=0,
-                objects_kept=total,
-                thresholds=None,
-                added_back=0,
-                outcome=outcome,
-                validation=validation,
-                time_limit=limit,
-                validation_time=validation_time,
-                raced=True,
-            )
-
-        own_runs = CancelScope()
-        racing = options.race and options.method != "pure"
-        race: Race[Attempt] | None = None
-        pruned_side: contextlib.AbstractContextManager[object] = contextlib.nullcontext()
-        if racing:
-            say("racing: the full problem is planned beside the pruned attempts")
-            # the race's thread takes the run's warm planners, as planning without pruning would have
-            # them; the pruned attempts get their own: copies of those, asked for before the full
-            # problem keeps them busy, and let go if nothing is pruned
-            full_side = contextvars.copy_context()
-            pruned_side = warm_planners(options.memory_limit_mb, beside=True)
-        try:
-            with cancel_scope(own_runs), pruned_side:
-                if racing:
-                    if keep_work is None:
-                        warm_up(planner)
-                    race = Race(plan_full_problem, _race_decides, own_runs).start(full_side)
-                return _prune_and_plan(
-                    task, (domain_path, problem_path), options, prepared, call_planner, race, started, progress, choice
-                )
-        finally:
-            if race is not None:
-                race.stop()
+    with scratch_directory() as scratch:
+        run = _Run(task, domain_path, problem_path, options, planner, planner.began(started), scratch, progress, say)
+        return _race_and_plan(run)
 
 
-def _prune_and_plan(
-    task: PlanningTask,
-    paths: tuple[str, str],
-    options: PlanOptions,
-    prepared: PreparedPlanner,
-    call_planner: PlannerCall,
-    race: Race[Attempt] | None,
-    started: float,
-    progress: ProgressCallback | None,
-    choice: str,
-) -> PlanResult:
-    """Score, choose the first selection, and run the attempts (``plan_task``'s second half)."""
-    say = _teller(progress)
-    total = len(task.problem.objects)
-    domain_path, problem_path = paths
-    selection = None
+def _race_and_plan(run: _Run) -> PlanResult:
+    """:func:`_prune_and_plan`, with the full problem planned beside it when the run races."""
+    own_runs = CancelScope()
+    if not run.races:
+        with cancel_scope(own_runs):
+            return _prune_and_plan(run, None)
+    run.say("racing: the full problem is planned beside the pruned attempts")
+    # the race's thread takes the run's warm planners, as planning without pruning would have
+    # them; the pruned attempts get their own: copies of those, asked for before the full
+    # problem keeps them busy, and let go if nothing is pruned
+    full_side = contextvars.copy_context()
+    race = Race(run.plan_full_problem, _race_decides, own_runs)
+    try:
+        with cancel_scope(own_runs), run.planner.beside():
+            race.start(full_side)
+            return _prune_and_plan(run, race)
+    finally:
+        race.stop()
+
+
+def _prune_and_plan(run: _Run, race: Race[Attempt] | None) -> PlanResult:
+    """Score, choose the first selection, and run the attempts on it."""
+    first = _first_selection(run)
+    if isinstance(first, PlanResult):
+        return first
+    if race is not None and (first.selection is None or not first.selection.removed):
+        run.planner.release()  # the full problem is all there is to plan, and the race plans it
+    attempts, widening_time = run_attempts(
+        run.task,
+        first.selection,
+        run.call_planner,
+        run.options,
+        started=run.started,
+        model=first.model,
+        progress=run.progress,
+        race=race,
+        budgets=_budgets(run, first),
+    )
+    deciding = [a for a in attempts if not a.stopped]
+    result = summarise(
+        run.task,
+        run.options,
+        attempts,
+        run.started,
+        first.seconds + widening_time,
+        first.selection,
+        planner=run.planner.answering(deciding[-1].outcome.planner if deciding else ""),
+        scorer=first.scorer,
+        refusal=first.unpruned_reason,
+        planner_choice=run.planner.choice,
+        compilations=run.planner.compilations,
+    )
+    return result if race is None or not attempts else _raced(result, race)
+
+
+def _first_selection(run: _Run) -> _FirstSelection | PlanResult:
+    """The scores and the first selection; instead, the result when the run ends here (out of time,
+    insufficient cues)."""
     scoring_started = time.perf_counter()
     try:
-        scoring, unpruned = _score(task, options, domain_path, problem_path, say)
+        scoring, unpruned_reason = _score(run)
     except OutOfTimeError:
-        return _ran_out("scoring", started, options, total)
+        return _ran_out("scoring", run.started, run.options, run.total)
+    selection = None
     if scoring is not None:
-        overran = _overran("scoring", started, options, total)
+        overran = _overran("scoring", run.started, run.options, run.total)
         if overran is not None:
             return overran
         if not scoring.scores.sufficient:
-            elapsed = time.perf_counter() - started
-            return PlanResult(
-                method=options.method,
-                status=PlanStatus.INSUFFICIENT_CUES,
-                wall_time=elapsed,
-                relevance_time=elapsed,
-                objects_total=total,
-                message=scoring.scores.insufficiency,
-                planner=prepared.name,
+            return _before_planning(
+                PlanStatus.INSUFFICIENT_CUES,
+                scoring.scores.insufficiency,
+                time.perf_counter() - run.started,
+                run.options,
+                run.total,
+                planner=run.planner.name,
                 scorer=scoring.scorer,
             )
         try:
-            selection = scoring.first_selection(options.narrows_first)
+            selection = scoring.first_selection(run.options.narrows_first)
         except OutOfTimeError:
-            return _ran_out("pruning and closure", started, options, total)
-        overran = _overran("pruning and closure", started, options, total)
+            return _ran_out("pruning and closure", run.started, run.options, run.total)
+        overran = _overran("pruning and closure", run.started, run.options, run.total)
         if overran is not None:
             return overran
-        _say_selection(say, selection, total)
+        _say_selection(run.say, selection, run.total)
     # scoring and pruning only: reading came before, and a race's planner only waits beside it
-    relevance_time = time.perf_counter() - scoring_started
-    if race is not None and (selection is None or not selection.removed):
-        release_warm()  # the full problem is all there is to plan, and the race plans it
-    budgets = None
-    if selection is not None and selection.removed and options.widen and not prepared.proves_unsolvable:
-        budgets = Budgets.after(relevance_time)
-        say(
-            f"{prepared.name} cannot prove a pruned problem unsolvable: pruned attempts get"
-            f" {budgets.first:.1f} s, doubling at each widening"
-        )
-        # a budget is the planner's search: a warm engine still starting is waited for first
-        await_warm(prepared.planner, None if options.timeout is None else time.monotonic() + _left(started, options))
-    attempts, widening_time = run_attempts(
-        task,
-        selection,
-        call_planner,
-        options,
-        started=started,
-        model=scoring.model if scoring else None,
-        progress=progress,
-        race=race,
-        budgets=budgets,
+    return _FirstSelection(scoring, selection, unpruned_reason, time.perf_counter() - scoring_started)
+
+
+def _budgets(run: _Run, first: _FirstSelection) -> Budgets | None:
+    """The pruned attempts' budgets, for a planner that cannot prove a pruned problem unsolvable."""
+    selection = first.selection
+    if selection is None or not selection.removed or not run.options.widen or run.planner.proves_unsolvable:
+        return None
+    budgets = Budgets.after(first.seconds)
+    run.say(
+        f"{run.planner.name} cannot prove a pruned problem unsolvable: pruned attempts get"
+        f" {budgets.first:.1f} s, doubling at each widening"
     )
-    result = summarise(
-        task,
-        options,
-        attempts,
-        started,
-        relevance_time + widening_time,
-        selection,
-        planner=_answering(prepared, attempts),
-        scorer=scoring.scorer if scoring else None,
-        unpruned_reason=unpruned,
-        planner_choice=choice,
-        compilations=prepared.compilations,
-    )
-    if race is None or not attempts:
+    # a budget is the planner's search: a warm engine still starting is waited for first
+    run.planner.await_warm(None if run.options.timeout is None else time.monotonic() + _left(run.started, run.options))
+    return budgets
+
+
+def _raced(result: PlanResult, race: Race[Attempt]) -> PlanResult:
+    """The result of a race: which side decided, and the full problem's run listed when the pruned
+    side decided (or the time ran out)."""
+    attempts = result.attempts
+    result = replace(result, deciding_side=attempts[-1].side)
+    if attempts[-1].raced:
         return result
-    result = replace(result, raced=attempts[-1].side)
-    if not attempts[-1].raced:
-        # the pruned side decided (or the time ran out): the full problem's run is listed too
-        race.stop()
-        beside = race.result()
-        if beside is not None:
-            beside = replace(beside, number=len(attempts) + 1, stopped=race.cancelled)
-            result = replace(result, attempts=(*attempts, beside))
-    return result
+    race.stop()
+    beside = race.result()
+    if beside is None:
+        return result
+    beside = replace(beside, number=len(attempts) + 1)
+    return replace(result, attempts=(*attempts, beside.as_stopped() if race.cancelled else beside))
 
 
-def _score(
-    task: PlanningTask, options: PlanOptions, domain_path: str, problem_path: str, say: Callable[[str], None]
-) -> tuple[Scoring | None, str]:
+def _score(run: _Run) -> tuple[Scoring | None, str]:
     """The objects' scores (None for 'pure'); None and the reason when the analysis does not take the input."""
-    if options.method == "pure":
+    if run.options.method == "pure":
         return None, ""
     try:
         scoring = score_problem(
-            task, options.scoring, method=options.method, domain_path=domain_path, problem_path=problem_path
+            run.task,
+            run.options.scoring,
+            method=run.options.method,
+            domain_path=run.domain_path,
+            problem_path=run.problem_path,
         )
     except UnsupportedFeatureError as refused:
-        unpruned = f"the relevance analysis does not take this input: {refused.message}"
-        say(f"pruned: no ({unpruned}); planning the full problem")
-        return None, unpruned
-    say(f"scoring {len(task.problem.objects)} objects with the {scoring.scorer} scorer")
+        unpruned_reason = f"the relevance analysis does not take this input: {refused.message}"
+        run.say(f"pruned: no ({unpruned_reason}); planning the full problem")
+        return None, unpruned_reason
+    run.say(f"scoring {run.total} objects with the {scoring.scorer} scorer")
     return scoring, ""
 
 
@@ -582,7 +673,7 @@ def _say_selection(say: Callable[[str], None], selection: Selection, total: int)
 def _plan_unread(
     domain_path: str,
     problem_path: str,
-    planner: Planner,
+    planner: RunPlanner,
     refused: UnsupportedFeatureError,
     options: PlanOptions,
     started: float,
@@ -590,16 +681,14 @@ def _plan_unread(
 ) -> PlanResult:
     """Input our reader refuses (PDDL+, object fluents): the planner gets the full problem, unpruned;
     only validators that read the files themselves can check its plan."""
-    planner, choice = planner_for_unread(planner, refused)
-    planner = with_planner_args(planner, options.planner_args)
-    unpruned = f"our reader refuses the input: {refused}"
+    unpruned_reason = f"our reader refuses the input: {refused}"
     say(
-        f"pruned: no ({unpruned}); planning the full problem with {planner.name}"
-        + (f" (auto: {choice})" if choice else "")
+        f"pruned: no ({unpruned_reason}); planning the full problem with {planner.name}"
+        + (f" (auto: {planner.choice})" if planner.choice else "")
     )
     deadline = None if options.timeout is None else started + options.timeout
     limit = None if deadline is None else max(deadline - time.perf_counter(), LAST_SECONDS)
-    outcome = planner.run(domain_path, problem_path, time_limit=limit, memory_limit_mb=options.memory_limit_mb)
+    outcome = planner.run(domain_path, problem_path, limit)
     validation, validation_time = None, 0.0
     if outcome.solved:
         begun = time.perf_counter()
@@ -619,7 +708,15 @@ def _plan_unread(
         validation_time=validation_time,
     )
     return summarise(
-        None, options, [attempt], started, 0.0, None, planner.name, unpruned_reason=unpruned, planner_choice=choice
+        None,
+        options,
+        [attempt],
+        started,
+        0.0,
+        None,
+        planner.name,
+        refusal=unpruned_reason,
+        planner_choice=planner.choice,
     )
 
 
@@ -639,13 +736,22 @@ def _overran(step: str, started: float, options: PlanOptions, total: int) -> Pla
 def _ran_out(step: str, started: float, options: PlanOptions, total: int) -> PlanResult:
     """The out-of-time result of a step that stopped because ``--timeout`` ran out."""
     elapsed = time.perf_counter() - started
+    message = f"out of time while {step}: {elapsed:.1f} s of the {options.timeout:g} s --timeout"
+    return _before_planning(PlanStatus.OUT_OF_TIME, message, elapsed, options, total)
+
+
+def _before_planning(
+    status: PlanStatus, message: str, elapsed: float, options: PlanOptions, total: int, **more: Any
+) -> PlanResult:
+    """The result of a run that ended before any planner ran: all its time went to reading and relevance."""
     return PlanResult(
         method=options.method,
-        status=PlanStatus.OUT_OF_TIME,
+        status=status,
         wall_time=elapsed,
         relevance_time=elapsed,
         objects_total=total,
-        message=f"out of time while {step}: {elapsed:.1f} s of the {options.timeout:g} s --timeout",
+        message=message,
+        **more,
     )
 
 
@@ -658,7 +764,7 @@ def summarise(
     selection: Selection | None,
     planner: str = DEFAULT_PLANNER,
     scorer: str | None = None,
-    unpruned_reason: str = "",
+    refusal: str = "",
     planner_choice: str = "",
     compilations: tuple[str, ...] = (),
 ) -> PlanResult:
@@ -679,7 +785,7 @@ def summarise(
         planner=planner,
         scorer=scorer,
         problem=task.problem if task is not None else None,
-        unpruned_reason=unpruned_reason,
+        refusal=refusal,
         planner_choice=planner_choice,
         compilations=compilations,
     )

@@ -12,7 +12,7 @@ and ``loop.summarise``); the CLI's exit code from the :class:`PlanStatus`
 from __future__ import annotations
 
 import enum
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from relevance_plan.pddl.model import Problem
@@ -57,7 +57,7 @@ class AttemptStatus(enum.Enum):
     PLANNER_CONFIG_ERROR = "planner-config-error"
     UNSUPPORTED = "unsupported"
     PLANNER_CRASH = "planner-crash"
-    STOPPED = "stopped"  # the race's other side decided first; this attempt's planner was stopped
+    STOPPED = "stopped"  # the tool stopped its planner: the race's other side decided first
 
 
 _VALIDATION_FAILURE = {
@@ -92,6 +92,10 @@ class Attempt:
         """Which side of a race it ran on: "full" (planned from the start) or "pruned"."""
         return "full" if self.raced else "pruned"
 
+    def as_stopped(self) -> Attempt:
+        """This attempt, its planner stopped by the tool (the race's other side decided first)."""
+        return replace(self, stopped=True, outcome=replace(self.outcome, status=PlannerStatus.STOPPED))
+
     @property
     def status(self) -> AttemptStatus:
         if self.stopped:
@@ -122,11 +126,11 @@ class PlanResult:
     scorer: str | None = None
     log_tail: str = ""  # the last planner's log tail when it failed
     problem: Problem | None = field(default=None, repr=False)  # the original problem (for the user's spelling)
-    unpruned_reason: str = ""  # why the input could not be pruned at all (reader or analysis refused it)
+    refusal: str = ""  # why the input could not be pruned at all: our reader or the relevance analysis refused it
     planner_choice: str = ""  # why the default planner chose ``planner``
     compilations: tuple[str, ...] = ()  # what was compiled away for the planner (pddl.compile)
     plans: tuple[Plan, ...] = ()  # an anytime planner's valid plans, in the order found (``plan`` is the last)
-    raced: str = ""  # with a race: which side gave the result, "full" or "pruned" (planning.race)
+    deciding_side: str = ""  # with a race: the side that gave the result, "full" or "pruned" (planning.race)
 
     @property
     def first_kept(self) -> int:
@@ -147,12 +151,12 @@ class PlanResult:
         return self.selection is not None and bool(self.selection.removed)
 
     @property
-    def why_unpruned(self) -> str | None:
+    def unpruned_reason(self) -> str | None:
         """Why every object was kept (None when the problem was pruned)."""
         if self.pruned:
             return None
-        if self.unpruned_reason:
-            return self.unpruned_reason
+        if self.refusal:
+            return self.refusal
         if self.selection is not None:
             return self.selection.unpruned or None
         return "method 'pure' plans the full problem" if self.method == "pure" else None
@@ -174,7 +178,7 @@ class PlanResult:
             "validation": self.validation.status.value if self.validation else None,
             "validator": self.validation.validator if self.validation else None,
             "pruned": self.pruned,
-            "unpruned_reason": self.why_unpruned,
+            "unpruned_reason": self.unpruned_reason,
             "plan_length": len(self.plan) if self.status is PlanStatus.SOLVED else None,
             "plan_cost": self.plan_cost,
             "wall_time": round(self.wall_time, 4),
@@ -196,7 +200,7 @@ class PlanResult:
                     "planner_status": a.outcome.status.value,
                     "planner_exit_code": a.outcome.exit_code,
                     "status": a.status.value,
-                    "side": a.side if self.raced else None,
+                    "side": a.side if self.deciding_side else None,
                     "wall_time": round(a.outcome.wall_time, 4),
                     **_objects_of(a),
                 }
@@ -205,7 +209,8 @@ class PlanResult:
             "peak_memory_mb": round(self.peak_memory_mb, 1),
             "message": self.message,
             "compilations": list(self.compilations),
-            "raced": self.raced or None,
+            "deciding_side": self.deciding_side or None,
+            "raced": self.deciding_side or None,  # deciding_side's old name, still written for one release
             "anytime_plans": [{"plan_length": len(plan), "plan_cost": plan.cost} for plan in self.plans],
             # one IPC line per step: a timed step keeps its start time and duration
             "plan": [format_plan((s,)).splitlines()[0] for s in self.plan.steps]

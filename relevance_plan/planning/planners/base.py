@@ -35,6 +35,7 @@ class PlannerStatus(enum.Enum):
     PLANNER_CONFIG_ERROR = "planner-config-error"  # the planner rejected its configuration, not the task
     UNSUPPORTED = "unsupported"
     PLANNER_CRASH = "planner-crash"
+    STOPPED = "stopped"  # the tool stopped it: the race's other side decided first
 
 
 @dataclass(frozen=True, kw_only=True)

@@ -176,8 +176,14 @@ class PreparedPlanner:
     """A planner fitted to one problem; each :meth:`run` is one attempt."""
 
     def __init__(
-        self, planner: Planner, domain: Domain, full: CompiledTask | None, problem_path: str, keep: Path | None
+        self,
+        planner: Planner,
+        domain: Domain | None = None,
+        full: CompiledTask | None = None,
+        problem_path: str = "",
+        keep: Path | None = None,
     ):
+        """``planner`` alone: it runs on the files as they are (input our reader refuses)."""
         self.planner = planner
         self.domain = domain
         self.full = full  # the full problem compiled (None: the planner takes it as it is)
@@ -221,7 +227,7 @@ class PreparedPlanner:
         )
 
     def _compiled(self, problem_path: str) -> CompiledTask:
-        assert self.full is not None
+        assert self.full is not None and self.domain is not None
         if os.path.abspath(problem_path) == os.path.abspath(self.problem_path):
             return self.full
         return replay(self.full.names, self.domain, load_problem(problem_path, self.domain))

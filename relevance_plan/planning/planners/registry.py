@@ -21,35 +21,27 @@ kind to its adapter; a planner is named ``KIND`` or ``KIND:ARGUMENT``:
   argument list (never a shell): ``command.py``.
 
 All of them run in their own session and temporary directory under the
-watchdog of ``process.run_process_group``.
+watchdog of ``process.run_process_group``.  The attempt loop gets its
+planner through ``supply``, which makes it here.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
-from contextlib import AbstractContextManager
 
 from relevance_plan import errors
-from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.planning.planners import auto, lpg
-from relevance_plan.planning.planners.auto import AutoPlanner, FallbackPlanner
+from relevance_plan.planning.planners.auto import AutoPlanner
 from relevance_plan.planning.planners.base import Planner
 from relevance_plan.planning.planners.command import CommandPlanner
 from relevance_plan.planning.planners.fast_downward import adapter as fast_downward
-from relevance_plan.planning.planners.fast_downward import command_line, head_start
+from relevance_plan.planning.planners.fast_downward import command_line
 from relevance_plan.planning.planners.fast_downward.adapter import FastDownwardPlanner
 from relevance_plan.planning.planners.lpg import LpgPlanner
 from relevance_plan.planning.planners.up.adapter import UnifiedPlanningPlanner
-from relevance_plan.planning.planners.up.pool import WorkerPool, current_pool, worker_pool
 
 DEFAULT_PLANNER = auto.NAME
 DEFAULT_PLANNER_CONFIG = command_line.DEFAULT_CONFIG
-
-# A run of the full problem the launcher started before the tool was imported (Fast Downward's, today):
-# the loop takes it, offers it to its first call on the full problem, and stops it if not taken over.
-take_early_run = head_start.take
-offer_early_run = head_start.offered
-
 
 PLANNERS: dict[str, Callable[[str, str], Planner]] = {
     auto.NAME: lambda argument, config: AutoPlanner(config),
@@ -78,52 +70,6 @@ def make_planner(name: str, config: str = DEFAULT_PLANNER_CONFIG, check: bool = 
     if check:
         planner.check_installed()
     return planner
-
-
-def warm_planners(memory_limit_mb: int | None, beside: bool = False) -> AbstractContextManager[WorkerPool]:
-    """The run's warm planners (a unified-planning engine's worker), killed when the block ends;
-    ``beside``: for work beside the run's own (the race's pruned side), copies of its warm planners."""
-    return worker_pool(memory_limit_mb, beside)
-
-
-def warm_up(planner: Planner) -> None:
-    """Start what ``planner`` can start before its first run, inside :func:`warm_planners`: a
-    unified-planning engine's worker imports the engine while the tool reads and scores.  For
-    ``auto``'s choice with planners standing by, only the first."""
-    first = planner.first if isinstance(planner, FallbackPlanner) else planner
-    if isinstance(first, UnifiedPlanningPlanner):
-        first.warm_up()
-
-
-def release_warm() -> None:
-    """Stop now what :func:`warm_up` started in this thread's run: nothing more will plan here."""
-    pool = current_pool()
-    if pool is not None:
-        pool.close()
-
-
-def await_warm(planner: Planner, until: float | None) -> None:
-    """Wait (until ``until``, ``time.monotonic()``) for what :func:`warm_up` started to be ready, so
-    that an attempt's time limit is the planner's search, not its start."""
-    first = planner.first if isinstance(planner, FallbackPlanner) else planner
-    if isinstance(first, UnifiedPlanningPlanner):
-        first.await_warm(until)
-
-
-def planner_for(planner: Planner, domain: Domain, problem: Problem) -> tuple[Planner, str]:
-    """The planner that runs on this problem, and why: ``auto`` chooses by its features; any other is itself."""
-    if isinstance(planner, AutoPlanner):
-        choice = planner.choose(domain, problem)
-        return choice.planner, choice.reason
-    return planner, ""
-
-
-def planner_for_unread(planner: Planner, refused: errors.UnsupportedFeatureError) -> tuple[Planner, str]:
-    """The planner for input our reader refuses (it is planned unpruned); ``auto`` chooses by the refusal."""
-    if isinstance(planner, AutoPlanner):
-        choice = planner.choose_unread(refused)
-        return choice.planner, choice.reason
-    return planner, ""
 
 
 def split_planner_names(text: str) -> tuple[str, ...]:
