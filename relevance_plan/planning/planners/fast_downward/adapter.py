@@ -42,7 +42,14 @@ from relevance_plan.planning.planners.fast_downward.command_line import (
     through_lean_driver,
 )
 from relevance_plan.planning.planners.requirements import CLASSICAL, refuse_unsupported
-from relevance_plan.supervision.process import log_tail, read_log, run_process_group, watchdog_deadline, work_directory
+from relevance_plan.supervision.process import (
+    ProcessRun,
+    log_tail,
+    read_log,
+    run_process_group,
+    watchdog_deadline,
+    work_directory,
+)
 
 NAME = "fast-downward"
 WHOSE = "Fast Downward"
@@ -339,15 +346,7 @@ def run_fast_downward(
     the driver works in and leaves its files in (default: a temporary one).
     An anytime configuration's plans are all in the outcome's ``plans``.
     """
-    domain = Path(domain_path).absolute()
-    problem = Path(problem_path).absolute()
-    for path in (domain, problem):
-        if not path.is_file():
-            raise errors.InputFileError("no such file", path=str(path))
-    if time_limit is not None and time_limit <= 0:
-        raise errors.UsageError(f"time limit must be positive, got {time_limit}")
-    if memory_limit_mb is not None and memory_limit_mb <= 0:
-        raise errors.UsageError(f"memory limit must be positive, got {memory_limit_mb}")
+    domain, problem = _check_run(domain_path, problem_path, time_limit, memory_limit_mb)
     driver = find_fast_downward()
     driver_time_limit = time_limit if driver_limits else None
     command = build_command(
@@ -372,31 +371,68 @@ def run_fast_downward(
         else:
             deadline = watchdog_deadline(time_limit, watchdog_grace)
             run = run_process_group(through_lean_driver(command), workdir, deadline, what=WHOSE, program=driver)
-        log = read_log(workdir)
         plans, numbered = read_plans(workdir)
-    plan = plans[-1] if plans else None
-    killed = run.killed_by_watchdog
-    memory_limited = driver_limits and memory_limit_mb is not None
-    status = classify(run.exit_code, plan is not None, killed, log, run.cpu_time, driver_time_limit, memory_limited)
-    return RunOutcome(
-        status=status,
-        exit_code=run.exit_code,
-        plan=plan if plan is not None else Plan(),
-        plan_cost=plan.cost if plan is not None else None,
-        wall_time=run.wall_time,
-        planner=NAME,
-        cpu_time=run.cpu_time,
-        peak_memory_mb=run.peak_memory_mb,
-        translate_time=_last_float(_TRANSLATE_DONE_RE, log),
-        search_time=_search_time(log),
-        config=config,
-        log_tail=log_tail(_up_to_complaint(log)),
-        killed_by_watchdog=killed,
-        process_group=run.process_group,
-        raw_status=EXIT_CODES.get(run.exit_code, ("", status))[0],
-        reason=exit_reason(run.exit_code, killed),
-        plans=plans if numbered else (),
-    )
+        ended = _Ended(run, read_log(workdir), plans, numbered, driver_time_limit)
+    return ended.outcome(config, memory_limited=driver_limits and memory_limit_mb is not None)
+
+
+def _check_run(
+    domain_path: str | os.PathLike[str],
+    problem_path: str | os.PathLike[str],
+    time_limit: float | None,
+    memory_limit_mb: int | None,
+) -> tuple[Path, Path]:
+    """The domain and problem as absolute paths; ``InputFileError`` or ``UsageError`` before any run."""
+    domain = Path(domain_path).absolute()
+    problem = Path(problem_path).absolute()
+    for path in (domain, problem):
+        if not path.is_file():
+            raise errors.InputFileError("no such file", path=str(path))
+    if time_limit is not None and time_limit <= 0:
+        raise errors.UsageError(f"time limit must be positive, got {time_limit}")
+    if memory_limit_mb is not None and memory_limit_mb <= 0:
+        raise errors.UsageError(f"memory limit must be positive, got {memory_limit_mb}")
+    return domain, problem
+
+
+@dataclass(frozen=True)
+class _Ended:
+    """What a driver run left: how its process ended, its log, its complete plans (best last) and
+    whether they were numbered (anytime), and the CPU limit the driver had (None: none)."""
+
+    run: ProcessRun
+    log: str
+    plans: tuple[Plan, ...]
+    numbered: bool
+    driver_time_limit: float | None
+
+    def outcome(self, config: str, memory_limited: bool) -> RunOutcome:
+        """The run in our words: status, plan, times and Fast Downward's own reason."""
+        run, log = self.run, self.log
+        plan = self.plans[-1] if self.plans else None
+        killed = run.killed_by_watchdog
+        status = classify(
+            run.exit_code, plan is not None, killed, log, run.cpu_time, self.driver_time_limit, memory_limited
+        )
+        return RunOutcome(
+            status=status,
+            exit_code=run.exit_code,
+            plan=plan if plan is not None else Plan(),
+            plan_cost=plan.cost if plan is not None else None,
+            wall_time=run.wall_time,
+            planner=NAME,
+            cpu_time=run.cpu_time,
+            peak_memory_mb=run.peak_memory_mb,
+            translate_time=_last_float(_TRANSLATE_DONE_RE, log),
+            search_time=_search_time(log),
+            config=config,
+            log_tail=log_tail(_up_to_complaint(log)),
+            killed_by_watchdog=killed,
+            process_group=run.process_group,
+            raw_status=EXIT_CODES.get(run.exit_code, ("", status))[0],
+            reason=exit_reason(run.exit_code, killed),
+            plans=self.plans if self.numbered else (),
+        )
 
 
 # --------------------------------------------------------------------------- the adapter
