@@ -101,6 +101,26 @@ def test_what_the_launcher_reads_from_the_command_line(gripper_problem, extra, w
         assert found is not None and found[3] == 30.0 and found[4] == 2000
 
 
+def test_the_launcher_s_option_table_is_plan_s():
+    # the head start reads plan's command line without click: its table is generated from plan's options
+    import click
+
+    from relevance_plan.cli.app import plan
+    from relevance_plan.limits import DEFAULT_TIMEOUT
+    from relevance_plan.planning.planners.fast_downward import command_line
+
+    options = [param for param in plan.params if isinstance(param, click.Option)]
+    values = {name for param in options if not param.is_flag for name in (*param.opts, *param.secondary_opts)}
+    flags = {name for param in options if param.is_flag for name in (*param.opts, *param.secondary_opts)}
+    table = f"VALUE_OPTIONS = frozenset({sorted(values)})\nFLAGS = frozenset({sorted(flags)})"
+    assert (head_start.VALUE_OPTIONS, head_start.FLAGS) == (values, flags), f"paste into head_start.py:\n{table}"
+    defaults = {param.opts[0]: param.default for param in options}
+    assert defaults["--method"] == head_start.DEFAULT_METHOD
+    assert defaults["--planner"] == head_start.DEFAULT_PLANNER
+    assert defaults["--planner-config"] == command_line.DEFAULT_CONFIG
+    assert defaults["--timeout"] == DEFAULT_TIMEOUT
+
+
 def test_a_temporal_domain_gets_no_head_start_under_auto(tmp_path):
     domain = DOMAINS / "coffee-temporal" / "domain.pddl"
     problem = write_file(tmp_path, "p.pddl", "(define (problem p) (:domain coffee-temporal))")

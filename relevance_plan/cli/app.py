@@ -468,9 +468,9 @@ def _print_plan_summary(result: PlanResult, plan_file, err: bool = False) -> Non
     echo(f"attempts:    {len(result.attempts)} (first: {result.first_attempt_status})")
     if result.deciding_side:
         stopped = [a for a in result.attempts if a.stopped]
+        side = "the full problem, planned from the start," if result.deciding_side == "full" else "the pruned side"
         echo(
-            "race:        "
-            + ("the full problem, planned from the start, won" if result.deciding_side == "full" else "the pruned side won")
+            f"race:        {side} won"
             + (f"; stopped: {', '.join(_attempt_label(a) for a in stopped)}" if stopped else "")
         )
     echo(

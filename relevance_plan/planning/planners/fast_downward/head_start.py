@@ -15,7 +15,7 @@ decided here: every argument is checked again by the CLI, and a head start
 that does not match is simply not used.
 
 Everything this module imports at its top delays the driver, so that is
-``os``, ``sys``, ``command_line`` and ``spawn`` (no ``re``, ``typing``,
+``os``, ``sys``, ``limits``, ``command_line`` and ``spawn`` (no ``re``, ``typing``,
 ``pathlib``, ``subprocess``, ``contextlib`` or ``threading``): the
 command line and the domain are read with string methods, and what waits
 for the run (``process``) is imported once the tool needs it.
@@ -42,15 +42,23 @@ if TYPE_CHECKING:
     # What identifies a driver run: (domain, problem, configuration, memory limit MB, extra arguments).
     RunKey = tuple[str, str, str, int | None, tuple[str, ...]]
 
-# ``plan``'s options that take a value, and its flags (cli/app.py); anything else: no head start.
-_VALUE_OPTIONS = frozenset(
+# ``plan``'s options as the launcher reads them, generated from ``plan``'s click parameters (cli/app.py):
+# those that take a value, its flags, and the defaults the head start depends on.  click cannot be
+# imported here (it delays the driver), so the table is written out; tests/test_head_start.py derives
+# it from ``plan`` again and prints the table to paste here when the two differ.  Anything else on the
+# command line: no head start.
+VALUE_OPTIONS = frozenset(
     {
-        "--method", "--scorer", "--model", "--objective", "--task", "--human", "--tau-class", "--tau-element",
-        "--seed", "--planner", "--planner-config", "--planner-args", "--timeout", "--memory-limit",
-        "--validator", "--plan-file", "--keep-work",
+        "--human", "--keep-work", "--memory-limit", "--method", "--model", "--objective", "--plan-file",
+        "--planner", "--planner-args", "--planner-config", "--scorer", "--seed", "--task", "--tau-class",
+        "--tau-element", "--timeout", "--validator",
     }
 )  # fmt: skip
-_FLAGS = frozenset({"--no-widen", "--no-relax", "--race", "--no-race", "--json", "--quiet", "-q"})
+FLAGS = frozenset({"--json", "--no-race", "--no-relax", "--no-widen", "--quiet", "--race", "-q"})
+DEFAULT_METHOD = "relevance"
+DEFAULT_PLANNER = "auto"
+# --timeout's and --planner-config's defaults are shared: relevance_plan.limits, command_line.DEFAULT_CONFIG.
+
 # Words of a domain that may make ``auto`` choose another planner than Fast Downward.
 _NOT_CLASSICAL = frozenset({":durative-action", ":process", ":event", ":numeric-fluents", ":fluents", ":time"})
 # The one function Fast Downward takes: (:functions (total-cost)), perhaps typed ``- number``.
@@ -216,13 +224,13 @@ def _full_run_wanted(
         if item == "--":
             positional += items
             break
-        if name in _VALUE_OPTIONS:
+        if name in VALUE_OPTIONS:
             if not equals:
                 if not items:
                     return None
                 value = items.pop(0)
             values[name] = value
-        elif item in _FLAGS:
+        elif item in FLAGS:
             flags.add(item)
         elif item.startswith("-") and item != "-":
             return None  # --help, a typo: the CLI answers
@@ -230,16 +238,17 @@ def _full_run_wanted(
             positional.append(item)
     if len(positional) != 2 or "--keep-work" in values:
         return None
-    method = values.get("--method", "relevance")
+    method = values.get("--method", DEFAULT_METHOD)
     races = "--race" in flags or ("--no-race" not in flags and spawn.usable_cores() >= 2)
     if not (method == "pure" or (method == "relevance" and races)):
         return None
-    if values.get("--planner", "auto") not in ("auto", "fast-downward"):
+    planner = values.get("--planner", DEFAULT_PLANNER)
+    if planner not in ("auto", "fast-downward"):
         return None
     domain, problem = (os.path.abspath(path) for path in positional)
     if not (os.path.isfile(domain) and os.path.isfile(problem)):
         return None
-    if values.get("--planner", "auto") == "auto" and not _plainly_classical(domain):
+    if planner == "auto" and not _plainly_classical(domain):
         return None
     try:
         timeout = float(values.get("--timeout", DEFAULT_TIMEOUT))
