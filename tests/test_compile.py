@@ -235,6 +235,14 @@ def adl_tasks() -> tuple:
     raise AssertionError("unreachable")
 
 
+def test_every_compilation_declares_features_the_planners_know():
+    from relevance_plan.planning.planners.requirements import FEATURES
+
+    for name, compiler in COMPILATIONS.items():
+        assert compiler.removes and compiler.removes <= set(FEATURES), name
+        assert COMPILED_FEATURES[name] == compiler.removes
+
+
 @pytest.mark.parametrize("name", list(COMPILATIONS))
 def test_every_compilation_keeps_the_plans_of_small_adl_tasks(name):
     checked = solvable = 0

@@ -5,7 +5,7 @@ feature is compiled away.  Each compilation here is a function from a
 domain and a problem to a :class:`Compilation`: a new domain and problem
 without one feature, and :meth:`Compilation.map_back`, which turns a plan of
 the compiled task into a plan of the given one.  :data:`COMPILATIONS` lists
-them in the order they must run (a later one removes what an earlier one may
+them, each with the features it removes, in the order they must run (a later one removes what an earlier one may
 add: conditional effects become negated preconditions, existentials become
 disjunctions):
 
@@ -937,11 +937,26 @@ def _unified(action: Action, unifier: Mapping[str, str], deleted: Atom) -> Actio
 
 # --------------------------------------------------------------------------- the registry
 
+
+@dataclass(frozen=True)
+class Compiler:
+    """A compilation of this module and the PDDL features it removes (requirement names without the
+    colon, as ``planning.planners.requirements`` computes them from a task)."""
+
+    compile: Callable[[Domain, Problem], Compilation]
+    removes: frozenset[str]
+
+    def __call__(self, domain: Domain, problem: Problem) -> Compilation:
+        return self.compile(domain, problem)
+
+
 # Run in this order: a later compilation removes what an earlier one may add.
-COMPILATIONS: dict[str, Callable[[Domain, Problem], Compilation]] = {
-    "quantified-preconditions": compile_quantified_preconditions,
-    "conditional-effects": compile_conditional_effects,
-    "disjunctive-preconditions": compile_disjunctive_preconditions,
-    "equality": compile_equality,
-    "negative-preconditions": compile_negative_preconditions,
+COMPILATIONS: dict[str, Compiler] = {
+    "quantified-preconditions": Compiler(
+        compile_quantified_preconditions, frozenset({"universal-preconditions", "existential-preconditions"})
+    ),
+    "conditional-effects": Compiler(compile_conditional_effects, frozenset({"conditional-effects"})),
+    "disjunctive-preconditions": Compiler(compile_disjunctive_preconditions, frozenset({"disjunctive-preconditions"})),
+    "equality": Compiler(compile_equality, frozenset({"equality"})),
+    "negative-preconditions": Compiler(compile_negative_preconditions, frozenset({"negative-preconditions"})),
 }

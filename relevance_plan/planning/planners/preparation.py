@@ -2,10 +2,11 @@
 
 The attempt loop calls :func:`prepare_planner` once per problem, before any
 work.  The planner gets its pass-through arguments (``--planner-args``);
-then its features are compared with the problem's.  What it lacks and
-``pddl.compile`` can remove is compiled away (the compilations are chosen
-once, on the full problem, and named in the result); what cannot be
-removed is refused, as the planner's own ``check`` refuses it.
+then its features are compared with the problem's.  What it lacks and a
+compilation of ``pddl.compile`` removes (each declares what it removes) is
+compiled away (the compilations are chosen once, on the full problem, and
+named in the result); what cannot be removed is refused, as the planner's
+own ``check`` refuses it.
 
 Each run of the :class:`PreparedPlanner` then compiles the problem it is
 given (an attempt's pruned problem, or the full one, compiled once),
@@ -35,25 +36,10 @@ from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.plans import Plan
 from relevance_plan.planning.planners.auto import FallbackPlanner
 from relevance_plan.planning.planners.base import Planner, RunOutcome
-from relevance_plan.planning.planners.requirements import (
-    CONDITIONAL_EFFECTS,
-    DISJUNCTIVE_PRECONDITIONS,
-    EQUALITY,
-    EXISTENTIAL_PRECONDITIONS,
-    NEGATIVE_PRECONDITIONS,
-    UNIVERSAL_PRECONDITIONS,
-    problem_features,
-)
+from relevance_plan.planning.planners.requirements import problem_features
 
-# The features each compilation of ``pddl.compile`` removes.
-COMPILED_FEATURES: dict[str, frozenset[str]] = {
-    "quantified-preconditions": frozenset({UNIVERSAL_PRECONDITIONS, EXISTENTIAL_PRECONDITIONS}),
-    "conditional-effects": frozenset({CONDITIONAL_EFFECTS}),
-    "disjunctive-preconditions": frozenset({DISJUNCTIVE_PRECONDITIONS}),
-    "equality": frozenset({EQUALITY}),
-    "negative-preconditions": frozenset({NEGATIVE_PRECONDITIONS}),
-}
-assert list(COMPILED_FEATURES) == list(COMPILATIONS), "one entry per compilation, in their order"
+# The features each compilation removes, as it declares them; and all that can be compiled away.
+COMPILED_FEATURES: dict[str, frozenset[str]] = {name: step.removes for name, step in COMPILATIONS.items()}
 COMPILABLE = frozenset().union(*COMPILED_FEATURES.values())
 
 ATTEMPT_DIRECTORY = "attempt-{}"
@@ -85,9 +71,9 @@ def compile_for(takes: frozenset[str], domain: Domain, problem: Problem) -> Comp
     steps: list[Compilation] = []
     for _ in range(len(COMPILATIONS)):
         ran = False
-        for name, compile_task in COMPILATIONS.items():
-            if (problem_features(domain, problem) - takes) & COMPILED_FEATURES[name]:
-                step = compile_task(domain, problem)
+        for compiler in COMPILATIONS.values():
+            if (problem_features(domain, problem) - takes) & compiler.removes:
+                step = compiler(domain, problem)
                 steps.append(step)
                 domain, problem = step.domain, step.problem
                 ran = True
