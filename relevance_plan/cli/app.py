@@ -17,13 +17,17 @@ import click
 from relevance_plan import __version__
 from relevance_plan.cli.common import (
     fail,
+    file_option,
     handle_errors,
+    json_option,
     keep_work_option,
     method_option,
     planning_options,
+    quiet_option,
     scoring_options,
     take_plan_options,
     take_scoring,
+    task_arguments,
     write_plan_files,
 )
 from relevance_plan.cli.exits import ToolGroup
@@ -123,7 +127,7 @@ def main():
 @click.option("--difficulty", default="simple", show_default=True, help="Kitchen worlds: simple or hard.")
 @click.option("--count", type=int, default=10, show_default=True, help="Number of problems.")
 @click.option("--seed", type=int, default=0, show_default=True)
-@click.option("--out", "out_dir", type=click.Path(file_okay=False), required=True, help="Suite directory to write.")
+@file_option("--out", "out_dir", folder=True, required=True, help="Suite directory to write.")
 @click.option("--distractors", type=int, default=None, help="Kitchen worlds: override the paper's distractor count.")
 @click.option(
     "--size",
@@ -176,11 +180,10 @@ def generate(world, difficulty, count, seed, out_dir, distractors, size, force):
 
 
 @main.command()
-@click.argument("domain_path", metavar="DOMAIN", type=click.Path(dir_okay=False))
-@click.argument("problem_path", metavar="PROBLEM", type=click.Path(dir_okay=False))
+@task_arguments
 @scoring_options
 @click.option("--inquiries", is_flag=True, help="List what the robot would ask the human.")
-@click.option("--json", "as_json", is_flag=True, help="Machine-readable output.")
+@json_option("Machine-readable output.")
 @handle_errors
 def score(domain_path, problem_path, inquiries, as_json, **values):
     """Print the class and element relevance table for PROBLEM."""
@@ -293,16 +296,8 @@ def _print_score_table(result: Selection) -> None:
 
 
 @main.command()
-@click.argument("domain_path", metavar="DOMAIN", type=click.Path(dir_okay=False))
-@click.argument("problem_path", metavar="PROBLEM", type=click.Path(dir_okay=False))
-@click.option(
-    "-o",
-    "--output",
-    "output",
-    type=click.Path(dir_okay=False),
-    required=True,
-    help="Pruned problem file ('-': standard output).",
-)
+@task_arguments
+@file_option("-o", "--output", "output", required=True, help="Pruned problem file ('-': standard output).")
 @scoring_options
 @click.option(
     "--pass-through",
@@ -310,7 +305,7 @@ def _print_score_table(result: Selection) -> None:
     help="When the input cannot be pruned (a construct the reader or the analysis does not take),"
     " write PROBLEM unchanged, say why, and exit 0.",
 )
-@click.option("--json", "as_json", is_flag=True, help="Machine-readable report on stdout.")
+@json_option("Machine-readable report on stdout.")
 @handle_errors
 def prune(domain_path, problem_path, output, pass_through, as_json, **values):
     """Write PROBLEM without the objects that do not matter (a drop-in filter for any planner).
@@ -352,18 +347,11 @@ def prune(domain_path, problem_path, output, pass_through, as_json, **values):
 
 
 @main.command()
-@click.argument("domain_path", metavar="DOMAIN", type=click.Path(dir_okay=False))
-@click.argument("problem_path", metavar="PROBLEM", type=click.Path(dir_okay=False))
+@task_arguments
 @method_option
 @scoring_options
 @planning_options()
-@click.option(
-    "--plan-file",
-    default="sas_plan",
-    show_default=True,
-    type=click.Path(dir_okay=False),
-    help="Where the plan goes ('-': standard output).",
-)
+@file_option("--plan-file", default="sas_plan", show_default=True, help="Where the plan goes ('-': standard output).")
 @keep_work_option
 @click.option(
     "--race/--no-race",
@@ -371,8 +359,8 @@ def prune(domain_path, problem_path, output, pass_through, as_json, **values):
     help="Plan the full problem beside the pruned attempts and take the first valid plan"
     " (default: on for relevance with two or more usable cores).",
 )
-@click.option("--json", "as_json", is_flag=True, help="Print one JSON object.")
-@click.option("--quiet", "-q", is_flag=True, help="No progress messages.")
+@json_option("Print one JSON object.")
+@quiet_option()
 @handle_errors
 def plan(domain_path, problem_path, method, plan_file, keep_work, race, as_json, quiet, **values):
     """Prune, plan, validate on the original problem, widen until solved."""

@@ -8,8 +8,11 @@ from pathlib import Path
 import click
 
 from relevance_plan.cli.common import (
+    file_option,
     handle_errors,
+    json_option,
     planning_options,
+    quiet_option,
     scoring_options,
     take_plan_options,
     take_scoring,
@@ -41,10 +44,9 @@ DEFAULT_METHODS = "relevance,pure,random"
     show_default=True,
     help="Jobs run at once locally (each drives one planner process).",
 )
-@click.option(
+@file_option(
     "--store",
     "store_path",
-    type=click.Path(dir_okay=False),
     default="results.sqlite",
     show_default=True,
     help="SQLite results store; jobs already in it are skipped (resume).",
@@ -54,7 +56,7 @@ DEFAULT_METHODS = "relevance,pure,random"
     "--scheduler-timeout", type=float, default=10.0, show_default=True, help="Seconds to wait for the Dask scheduler."
 )
 @click.option("--seeds", default="0", show_default=True, help="Comma-separated seeds; one job per seed.")
-@click.option("--quiet", "-q", is_flag=True, help="No progress display.")
+@quiet_option("No progress display.")
 @handle_errors
 def compare(suite_dirs, methods, planners, jobs, store_path, scheduler, scheduler_timeout, seeds, quiet, **values):
     """Run each method on every problem of the SUITE_DIRs and store the results.
@@ -91,14 +93,13 @@ def compare(suite_dirs, methods, planners, jobs, store_path, scheduler, schedule
     default=None,
     help="The table per suite and method  [default: markdown].",
 )
-@click.option("--json", "as_json", is_flag=True, help="One JSON object per job instead of the table.")
+@json_option("One JSON object per job instead of the table.")
 @click.option("--csv", "as_csv", is_flag=True, help="One CSV line per job instead of the table.")
 @click.option("--suite", default=None, help="Only this suite.")
-@click.option(
+@file_option(
     "--plots",
     "plots_dir",
-    type=click.Path(file_okay=False),
-    default=None,
+    folder=True,
     help="Also write cactus plots (all suites and one per suite) and a relevance-vs-pure scatter here;"
     " needs matplotlib.",
 )
@@ -110,11 +111,9 @@ def compare(suite_dirs, methods, planners, jobs, store_path, scheduler, schedule
     help="File format of --plots.",
 )
 @click.option("--dpi", type=click.IntRange(min=1), default=150, show_default=True, help="Resolution of PNG plots.")
-@click.option(
+@file_option(
     "--html",
     "html_path",
-    type=click.Path(dir_okay=False),
-    default=None,
     help="Also write one self-contained HTML page: the tables and, with matplotlib, the plots as inline SVG.",
 )
 @handle_errors
@@ -158,10 +157,8 @@ def report(store_path, fmt, as_json, as_csv, suite, plots_dir, plot_format, dpi,
 @click.argument("suite_dir", metavar="SUITE_DIR", type=click.Path())
 @scoring_options
 @click.option("--taus", default="0.1,0.2,0.3,0.4,0.5", show_default=True, help="Threshold values for both axes.")
-@click.option(
-    "--heatmap", type=click.Path(dir_okay=False), default=None, help="Write a PNG heatmap (needs matplotlib)."
-)
-@click.option("--json", "as_json", is_flag=True)
+@file_option("--heatmap", help="Write a PNG heatmap (needs matplotlib).")
+@json_option()
 @handle_errors
 def sweep(suite_dir, taus, heatmap, as_json, **values):
     """Objects kept, timing and (with the generator's sidecars) precision, recall, F1 and N
@@ -194,10 +191,9 @@ def sweep(suite_dir, taus, heatmap, as_json, **values):
 
 
 @click.command()
-@click.option(
+@file_option(
     "--workdir",
-    type=click.Path(file_okay=False),
-    default=None,
+    folder=True,
     help="Where suites and results go, kept (default: a temporary folder, removed at the end).",
 )
 @click.option("--count", type=int, default=3, show_default=True, help="Problems per world.")
@@ -205,7 +201,7 @@ def sweep(suite_dir, taus, heatmap, as_json, **values):
 @click.option("--jobs", "-j", type=int, default=2, show_default=True, help="Jobs run at once.")
 @click.option("--distractors", type=int, default=None, help="Distractors per problem (default 30).")
 @click.option("--tiny", is_flag=True, help="1 problem per world with 5 distractors (a quick check).")
-@click.option("--quiet", "-q", is_flag=True, help="No progress display.")
+@quiet_option("No progress display.")
 @handle_errors
 def demo(workdir, count, timeout, jobs, distractors, tiny, quiet):
     """Generate coffee and cereal suites, compare relevance, pure, random and oracle, print the table."""
@@ -231,9 +227,7 @@ def demo(workdir, count, timeout, jobs, distractors, tiny, quiet):
 @click.command()
 @click.argument("domain_path", metavar="DOMAIN", type=click.Path(dir_okay=False))
 @click.argument("problem_paths", metavar="PROBLEM...", nargs=-1, type=click.Path(dir_okay=False))
-@click.option(
-    "-o", "--output", "output_path", required=True, type=click.Path(dir_okay=False), help="Model file (JSON)."
-)
+@file_option("-o", "--output", "output_path", required=True, help="Model file (JSON).")
 @click.option(
     "--time-limit", type=float, default=60.0, show_default=True, help="Seconds for each planner run on a problem."
 )
@@ -246,14 +240,12 @@ def demo(workdir, count, timeout, jobs, distractors, tiny, quiet):
     " sufficient set (one run per object).",
 )
 @click.option("--seed", type=int, default=0, show_default=True, help="Seed of the order 'minimal' drops objects in.")
-@click.option(
+@file_option(
     "--store",
     "store_path",
-    type=click.Path(dir_okay=False),
-    default=None,
     help="Learn from the solved runs of this results store (their plans) instead of planning again.",
 )
-@click.option("--quiet", "-q", is_flag=True, help="No progress messages.")
+@quiet_option()
 @handle_errors
 def learn(domain_path, problem_paths, output_path, time_limit, labels, seed, store_path, quiet):
     """Learn which objects matter from solved PROBLEMs of DOMAIN; use the model with --scorer learned:MODEL."""

@@ -79,6 +79,34 @@ def _apply(command, decorators):
     return command
 
 
+# --------------------------------------------------------------------------- files and output
+
+
+def task_arguments(command):
+    """DOMAIN PROBLEM: the two files a command on one problem reads."""
+    return _apply(
+        command,
+        [
+            click.argument("domain_path", metavar="DOMAIN", type=click.Path(dir_okay=False)),
+            click.argument("problem_path", metavar="PROBLEM", type=click.Path(dir_okay=False)),
+        ],
+    )
+
+
+def file_option(*names: str, help: str, folder: bool = False, default: str | None = None, **more):
+    """An option naming a file (``folder``: a directory); ``paths`` checks it before the command runs."""
+    kind = click.Path(file_okay=False) if folder else click.Path(dir_okay=False)
+    return click.option(*names, type=kind, default=default, help=help, **more)
+
+
+def json_option(help: str | None = None):
+    return click.option("--json", "as_json", is_flag=True, help=help)
+
+
+def quiet_option(help: str = "No progress messages."):
+    return click.option("--quiet", "-q", is_flag=True, help=help)
+
+
 # --------------------------------------------------------------------------- scoring
 
 SCORING_KEYS = ("scorer", "model_path", "objective", "model_task", "human", "tau_class", "tau_element", "seed")
@@ -112,11 +140,9 @@ def scoring_options(command=None, *, with_seed: bool = True):
                 help="Scorer: " + ", ".join(sorted(SCORERS)) + " or learned:MODEL (a model made by 'relevance-plan"
                 " learn'); default: 'model' when a knowledge model applies, else 'goal'.",
             ),
-            click.option(
+            file_option(
                 "--model",
                 "model_path",
-                type=click.Path(dir_okay=False),
-                default=None,
                 help="Knowledge-model YAML (default: found next to the domain or among the shipped worlds).",
             ),
             click.option(
@@ -260,11 +286,10 @@ def require_installed_validators(names) -> None:
         )
 
 
-keep_work_option = click.option(
+keep_work_option = file_option(
     "--keep-work",
     "keep_work",
-    type=click.Path(file_okay=False),
-    default=None,
+    folder=True,
     metavar="DIR",
     help="Keep each attempt's planner files in DIR/attempt-N (Fast Downward's output.sas, sas_plan* and log; "
     "a command's plan file and log; compiled PDDL); never overwrites.",

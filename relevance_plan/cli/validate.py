@@ -7,15 +7,14 @@ import sys
 
 import click
 
-from relevance_plan.cli.common import handle_errors
+from relevance_plan.cli.common import handle_errors, json_option, task_arguments
 from relevance_plan.exitcodes import ExitCode
 from relevance_plan.pddl.formatter import format_number
 from relevance_plan.planning.validate import VALIDATORS
 
 
 @click.command()
-@click.argument("domain_path", metavar="DOMAIN", type=click.Path(dir_okay=False))
-@click.argument("problem_path", metavar="PROBLEM", type=click.Path(dir_okay=False))
+@task_arguments
 @click.argument("plan_path", metavar="PLAN", type=click.Path(dir_okay=False))
 @click.option(
     "--validator",
@@ -25,7 +24,7 @@ from relevance_plan.planning.validate import VALIDATORS
     help="builtin (the simulator the attempt loop uses), val (VAL's Validate: pip install"
     " 'relevance-plan[val]'), up (unified-planning's validators).",
 )
-@click.option("--json", "as_json", is_flag=True, help="Print one JSON object.")
+@json_option("Print one JSON object.")
 @handle_errors
 def validate(domain_path, problem_path, plan_path, validator, as_json):
     """Check that PLAN (sequential or timed, IPC format) solves PROBLEM.

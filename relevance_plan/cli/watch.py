@@ -18,7 +18,14 @@ from typing import BinaryIO
 
 import click
 
-from relevance_plan.cli.common import handle_errors, planning_options, scoring_options, take_plan_options
+from relevance_plan.cli.common import (
+    file_option,
+    handle_errors,
+    planning_options,
+    scoring_options,
+    take_plan_options,
+    task_arguments,
+)
 from relevance_plan.errors import InputFileError
 from relevance_plan.exitcodes import ExitCode
 
@@ -79,8 +86,7 @@ def _check_snapshot_targets(snapshot_dir: str, inputs: list) -> list[Path]:
 
 
 @click.command()
-@click.argument("domain_path", metavar="DOMAIN", type=click.Path(dir_okay=False))
-@click.argument("problem_path", metavar="PROBLEM", type=click.Path(dir_okay=False))
+@task_arguments
 @click.option(
     "--events",
     "events_path",
@@ -95,12 +101,8 @@ def _check_snapshot_targets(snapshot_dir: str, inputs: list) -> list[Path]:
     is_flag=True,
     help="Plan again whenever a determination changes the kept set (a 'plan' event always plans).",
 )
-@click.option(
-    "--snapshot",
-    "snapshot_dir",
-    type=click.Path(file_okay=False),
-    default=None,
-    help="After the last event, write DIR/current.pddl and DIR/pruned.pddl.",
+@file_option(
+    "--snapshot", "snapshot_dir", folder=True, help="After the last event, write DIR/current.pddl and DIR/pruned.pddl."
 )
 @scoring_options
 @planning_options()

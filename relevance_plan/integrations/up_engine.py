@@ -39,7 +39,7 @@ import dataclasses
 import math
 import time
 from collections.abc import Callable, Iterator, Set
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import cached_property
 from typing import IO
 
@@ -430,24 +430,27 @@ class _InnerPlanner:
         )
 
 
+@dataclass(eq=False)
 class _AnytimeSearch:
     """The anytime engine's attempts: the inner planner's stream of plans on each object set,
     each plan mapped back and validated on the original problem, only better ones passed on."""
 
-    def __init__(self, meta, problem: Problem, stage: _RelevanceStage | None, options: PlanOptions, output, warnings):
-        self.meta = meta
-        self.problem = problem
-        self.stage = stage
-        self.options = options
-        self.output = output
-        self.warnings = warnings
-        self.started = time.perf_counter()
-        self.best: SequentialPlan | None = None
-        self.best_measure = math.inf  # plan cost on the original problem (its length without costs)
-        self.attempts = 0
-        self.last_status: PlanGenerationResultStatus | None = None
-        self.last_full = False
-        self.kept = len(problem.all_objects)
+    meta: RelevanceMetaEngine
+    problem: Problem
+    stage: _RelevanceStage | None
+    options: PlanOptions
+    output: IO[str] | None
+    warnings: list[str]
+    started: float = field(default_factory=time.perf_counter, init=False)
+    best: SequentialPlan | None = field(default=None, init=False)
+    best_measure: float = field(default=math.inf, init=False)  # cost on the original problem (length without costs)
+    attempts: int = field(default=0, init=False)
+    last_status: PlanGenerationResultStatus | None = field(default=None, init=False)
+    last_full: bool = field(default=False, init=False)
+    kept: int = field(init=False)
+
+    def __post_init__(self) -> None:
+        self.kept = len(self.problem.all_objects)
 
     def run(self) -> Iterator[PlanGenerationResult]:
         total = len(self.problem.all_objects)

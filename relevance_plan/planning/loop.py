@@ -456,18 +456,12 @@ class _Run:
     def plan_full_problem(self) -> Attempt:
         """The race's side: the full problem with all the time there is, its plan validated."""
         deadline = None if self.options.timeout is None else self.started + self.options.timeout
-        limit = None if deadline is None else max(deadline - time.perf_counter(), LAST_SECONDS)
-        outcome = self.call_planner(None, limit)
-        outcome, validation, validation_time = _validate(self.task, outcome, self.options, deadline)
-        return Attempt(
-            number=0,
-            objects_kept=self.total,
-            thresholds=None,
-            added_back=0,
-            outcome=outcome,
-            validation=validation,
-            time_limit=limit,
-            validation_time=validation_time,
+        return _full_attempt(
+            0,
+            self.total,
+            deadline,
+            lambda limit: self.call_planner(None, limit),
+            lambda outcome: _validate(self.task, outcome, self.options, deadline),
             raced=True,
         )
 
@@ -687,26 +681,18 @@ def _plan_unread(
         + (f" (auto: {planner.choice})" if planner.choice else "")
     )
     deadline = None if options.timeout is None else started + options.timeout
-    limit = None if deadline is None else max(deadline - time.perf_counter(), LAST_SECONDS)
-    outcome = planner.run(domain_path, problem_path, limit)
-    validation, validation_time = None, 0.0
-    if outcome.solved:
+
+    def validate(outcome: RunOutcome) -> tuple[RunOutcome, ValidationResult | None, float]:
+        if not outcome.solved:
+            return outcome, None, 0.0
         begun = time.perf_counter()
         until = None if deadline is None else time.monotonic() + max(deadline - begun, 0.5)
         validation = validate_unread(
             domain_path, problem_path, outcome.plan, refused.message, options.validators, until
         )
-        validation_time = time.perf_counter() - begun
-    attempt = Attempt(
-        number=1,
-        objects_kept=0,
-        thresholds=None,
-        added_back=0,
-        outcome=outcome,
-        validation=validation,
-        time_limit=limit,
-        validation_time=validation_time,
-    )
+        return outcome, validation, time.perf_counter() - begun
+
+    attempt = _full_attempt(1, 0, deadline, lambda limit: planner.run(domain_path, problem_path, limit), validate)
     return summarise(
         None,
         options,
@@ -717,6 +703,31 @@ def _plan_unread(
         planner.name,
         refusal=unpruned_reason,
         planner_choice=planner.choice,
+    )
+
+
+def _full_attempt(
+    number: int,
+    objects_kept: int,
+    deadline: float | None,
+    run: Callable[[float | None], RunOutcome],
+    validate: Callable[[RunOutcome], tuple[RunOutcome, ValidationResult | None, float]],
+    raced: bool = False,
+) -> Attempt:
+    """An attempt on the full problem with all the time left before ``deadline`` (``perf_counter``):
+    ``run`` plans within a limit, ``validate`` judges the outcome (and says the seconds it took)."""
+    limit = None if deadline is None else max(deadline - time.perf_counter(), LAST_SECONDS)
+    outcome, validation, validation_time = validate(run(limit))
+    return Attempt(
+        number=number,
+        objects_kept=objects_kept,
+        thresholds=None,
+        added_back=0,
+        outcome=outcome,
+        validation=validation,
+        time_limit=limit,
+        validation_time=validation_time,
+        raced=raced,
     )
 
 

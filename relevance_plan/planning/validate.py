@@ -382,10 +382,7 @@ def validate_plan(
     If none could run, the result is UNAVAILABLE (the caller must say so loudly);
     past ``deadline`` (``time.monotonic()`` seconds) it is OUT_OF_TIME.
     """
-    names = tuple(validators) if validators else default_validators()
-    if NONE in names:
-        return _NOT_VALIDATED
-    return _combine(names, (VALIDATORS[name](domain, problem, plan, deadline) for name in names))
+    return _each_validator(validators, lambda name: VALIDATORS[name](domain, problem, plan, deadline))
 
 
 def validate_unread(
@@ -398,9 +395,6 @@ def validate_unread(
 ) -> ValidationResult:
     """Validate a plan of input our reader refuses (``refused`` says why): only the validators that
     read the files themselves can run; the builtin simulator cannot."""
-    names = tuple(validators) if validators else default_validators()
-    if NONE in names:
-        return _NOT_VALIDATED
 
     def run(name: str) -> ValidationResult:
         if name == "up":
@@ -412,6 +406,15 @@ def validate_unread(
             status=ValidationStatus.UNAVAILABLE, validator=name, message=f"our reader refuses the input ({refused})"
         )
 
+    return _each_validator(validators, run)
+
+
+def _each_validator(validators: Sequence[str] | None, run: Callable[[str], ValidationResult]) -> ValidationResult:
+    """``run`` for each validator asked for (default: :func:`default_validators`), combined; not
+    validated at all with ``none``."""
+    names = tuple(validators) if validators else default_validators()
+    if NONE in names:
+        return _NOT_VALIDATED
     return _combine(names, (run(name) for name in names))
 
 

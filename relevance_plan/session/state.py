@@ -11,7 +11,7 @@ determining from scratch, planning and snapshots.
 from __future__ import annotations
 
 from collections import defaultdict
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from types import MappingProxyType
 
 from relevance_plan.pddl.formatter import format_problem
@@ -35,28 +35,27 @@ class LiveIndex:
             self.add(fact)
 
     def add(self, fact: tuple) -> None:
-        self.by_predicate[fact[0]].add(fact)
-        for arg in set(fact[1:]):
-            self.by_object[arg].add(fact)
-            self._by_object_predicate[arg, fact[0]].add(fact)
-        for position, value in enumerate(fact[1:]):
-            counts = self._counts[fact[0], position]
-            counts[value] = counts.get(value, 0) + 1
-            if counts[value] == 2:
-                self._clashes[fact[0], position] += 1
+        self._change(fact, set.add, 1)
 
     def discard(self, fact: tuple) -> None:
-        self.by_predicate[fact[0]].discard(fact)
+        """Remove a fact that is there (the caller checks)."""
+        self._change(fact, set.discard, -1)
+
+    def _change(self, fact: tuple, change: Callable[[set, tuple], None], step: int) -> None:
+        change(self.by_predicate[fact[0]], fact)
         for arg in set(fact[1:]):
-            self.by_object[arg].discard(fact)
-            self._by_object_predicate[arg, fact[0]].discard(fact)
+            change(self.by_object[arg], fact)
+            change(self._by_object_predicate[arg, fact[0]], fact)
         for position, value in enumerate(fact[1:]):
             counts = self._counts[fact[0], position]
-            counts[value] -= 1
-            if counts[value] == 1:
-                self._clashes[fact[0], position] -= 1
-            elif counts[value] == 0:
+            before = counts.get(value, 0)
+            after = before + step
+            if after:
+                counts[value] = after
+            else:
                 del counts[value]
+            # a value in two facts or more makes the position not functional
+            self._clashes[fact[0], position] += (after >= 2) - (before >= 2)
 
     def facts_of(self, name: str, predicate: str) -> set:
         return self._by_object_predicate.get((name, predicate), set())

@@ -20,7 +20,6 @@ from typing import Any, Protocol
 from relevance_plan.errors import PlanFormatError
 from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.plans import Plan, read_plan
-from relevance_plan.supervision.process import ProcessRun
 
 
 class PlannerStatus(enum.Enum):
@@ -36,6 +35,29 @@ class PlannerStatus(enum.Enum):
     UNSUPPORTED = "unsupported"
     PLANNER_CRASH = "planner-crash"
     STOPPED = "stopped"  # the tool stopped it: the race's other side decided first
+
+
+class FinishedRun(Protocol):
+    """A planner process that has ended, as the tool measured it: ``process.ProcessRun``, or a warm
+    worker's answer to one request (``up.pool.WorkerAnswer``)."""
+
+    @property
+    def exit_code(self) -> int: ...
+
+    @property
+    def wall_time(self) -> float: ...
+
+    @property
+    def cpu_time(self) -> float: ...
+
+    @property
+    def peak_memory_mb(self) -> float: ...
+
+    @property
+    def watchdog_fired(self) -> bool: ...
+
+    @property
+    def process_group(self) -> int: ...
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -75,7 +97,7 @@ class RunOutcome:
     plans: tuple[Plan, ...] = ()  # an anytime run's plans in the order found (``plan`` is the last); else empty
 
     @classmethod
-    def of_process(cls, run: ProcessRun, status: PlannerStatus, plan: Plan | None, **details: Any) -> RunOutcome:
+    def of_process(cls, run: FinishedRun, status: PlannerStatus, plan: Plan | None, **details: Any) -> RunOutcome:
         """The outcome of a finished planner process: exit code, times, memory, watchdog and group
         from ``run``; ``plan`` kept only when solved, its cost as the plan's; ``details`` add or override."""
         fields: dict[str, Any] = dict(

@@ -178,14 +178,6 @@ class PreparedPlanner:
         self._runs = itertools.count(1)
 
     @property
-    def name(self) -> str:
-        return self.planner.name
-
-    @property
-    def proves_unsolvable(self) -> bool:
-        return self.planner.proves_unsolvable
-
-    @property
     def compilations(self) -> tuple[str, ...]:
         return self.full.names if self.full is not None else ()
 

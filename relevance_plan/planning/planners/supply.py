@@ -83,14 +83,15 @@ class RunPlanner:
 
     @property
     def name(self) -> str:
-        return self.prepared.name
+        return self.prepared.planner.name
 
     @property
     def proves_unsolvable(self) -> bool:
-        return self.prepared.proves_unsolvable
+        return self.prepared.planner.proves_unsolvable
 
     @property
     def compilations(self) -> tuple[str, ...]:
+        """What is compiled away for the planner, in order (``pddl.compile``)."""
         return self.prepared.compilations
 
     def run(self, domain_path: str, problem_path: str, time_limit: float | None) -> RunOutcome:

@@ -24,7 +24,13 @@ from relevance_plan import errors
 from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.plans import Plan
 from relevance_plan.planning.planners import requirements as f
-from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome, parse_ipc_plan, signal_reason
+from relevance_plan.planning.planners.base import (
+    FinishedRun,
+    PlannerStatus,
+    RunOutcome,
+    parse_ipc_plan,
+    signal_reason,
+)
 from relevance_plan.planning.planners.requirements import refuse_unsupported
 from relevance_plan.supervision.process import log_tail, read_log, run_process_group, watchdog_deadline, work_directory
 
@@ -299,9 +305,13 @@ class UnifiedPlanningPlanner:
                 env=environment,
                 memory_limit_mb=memory_limit_mb,
             )
-            parsed = parse_ipc_plan(plan_path.read_text(errors="replace")) if plan_path.is_file() else None
-            verdict = _read_verdict(workdir)
-            log = log_tail(read_log(workdir))
+            return self._outcome(run, workdir, log_tail(read_log(workdir)))
+
+    def _outcome(self, run: FinishedRun, workdir: Path, log: str) -> RunOutcome:
+        """The child's (or the worker's) answer in our words, from the plan and verdict it left in ``workdir``."""
+        plan_path = workdir / PLAN_FILE
+        parsed = parse_ipc_plan(plan_path.read_text(errors="replace")) if plan_path.is_file() else None
+        verdict = _read_verdict(workdir)
         status = classify(run.exit_code, verdict, parsed is not None, run.watchdog_fired, log)
         return RunOutcome.of_process(
             run,
@@ -333,11 +343,10 @@ class UnifiedPlanningPlanner:
         if worker is None:
             return None
         with work_directory(None, prefix="relevance-plan-up-") as workdir:
-            plan_path = workdir / PLAN_FILE
             answer = worker.solve(
                 str(Path(domain_path).absolute()),
                 str(Path(problem_path).absolute()),
-                str(plan_path),
+                str(workdir / PLAN_FILE),
                 str(workdir / VERDICT_FILE),
                 time_limit,
                 watchdog_deadline(time_limit, WORKER_GRACE),
@@ -345,39 +354,20 @@ class UnifiedPlanningPlanner:
             if answer is None:
                 pool.retire(self.engine)
                 return None
-            parsed = parse_ipc_plan(plan_path.read_text(errors="replace")) if plan_path.is_file() else None
-            verdict = _read_verdict(workdir)
-        if answer.starting:
-            return RunOutcome(
-                status=PlannerStatus.OUT_OF_TIME,
-                exit_code=None,
-                plan=Plan(),
-                plan_cost=None,
-                wall_time=answer.wall_time,
-                planner=self.name,
-                process_group=answer.process_group,
-                reason=f"{self.name}: the engine was still starting at the attempt's time limit",
-            )
+            if answer.starting:
+                return RunOutcome(
+                    status=PlannerStatus.OUT_OF_TIME,
+                    exit_code=None,
+                    plan=Plan(),
+                    plan_cost=None,
+                    wall_time=answer.wall_time,
+                    planner=self.name,
+                    process_group=answer.process_group,
+                    reason=f"{self.name}: the engine was still starting at the attempt's time limit",
+                )
+            outcome = self._outcome(answer, workdir, answer.log)
         if answer.code is None:
             # killed at its limit, by the race, or died: a new one starts now, for the next attempt
             pool.retire(self.engine)
             pool.start(self.engine, environment)
-        exit_code = -9 if answer.code is None else answer.code
-        status = classify(exit_code, verdict, parsed is not None, answer.watchdog_fired, answer.log)
-        return RunOutcome(
-            status=status,
-            exit_code=exit_code,
-            plan=parsed if parsed is not None and status is PlannerStatus.SOLVED else Plan(),
-            plan_cost=parsed.cost if parsed is not None else None,
-            wall_time=answer.wall_time,
-            planner=self.name,
-            cpu_time=answer.cpu_time,
-            peak_memory_mb=answer.peak_memory_mb,
-            config=self.engine,
-            log_tail=answer.log,
-            killed_by_watchdog=answer.watchdog_fired,
-            process_group=answer.process_group,
-            raw_status=verdict or "",
-            reason=exit_reason(self.name, exit_code, verdict, answer.watchdog_fired),
-            optimal=verdict == SOLVED_OPTIMALLY and status is PlannerStatus.SOLVED,
-        )
+        return outcome

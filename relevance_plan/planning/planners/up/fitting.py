@@ -464,12 +464,10 @@ def _rebuild(problem: Any, rewrite: _Rewrite) -> Any:
         new.add_action(actions[old])
     for goal in problem.goals:
         new.add_goal(expression(goal))
-    for interval, goals in problem.timed_goals.items():
-        for goal in goals:
-            new.add_timed_goal(interval, expression(goal))
-    for timing, effects in problem.timed_effects.items():
-        for effect in effects:
-            _add_effect(new, effect, rewrite, timing)
+    for interval, goal in _each(problem.timed_goals):
+        new.add_timed_goal(interval, expression(goal))
+    for timing, effect in _each(problem.timed_effects):
+        _add_effect(new, effect, rewrite, timing)
     for constraint in problem.trajectory_constraints:
         new.add_trajectory_constraint(expression(constraint))
     for target, value in problem.explicit_initial_values.items():
@@ -507,14 +505,18 @@ def _rebuild_action(old: Any, rewrite: _Rewrite) -> Any:
         )
         for guard in rewrite.guards(old, new):
             new.add_condition(StartTiming(), guard)
-        for interval, conditions in old.conditions.items():
-            for condition in conditions:
-                new.add_condition(interval, expression(condition))
-        for timing, effects in old.effects.items():
-            for effect in effects:
-                _add_effect(new, effect, rewrite, timing)
+        for interval, condition in _each(old.conditions):
+            new.add_condition(interval, expression(condition))
+        for timing, effect in _each(old.effects):
+            _add_effect(new, effect, rewrite, timing)
         return new
     raise _CannotFit  # sensing actions and other kinds: not from PDDL
+
+
+def _each(timed: Mapping[Any, Iterable[Any]]) -> Iterator[tuple[Any, Any]]:
+    """(timing, item) for each item of a mapping from timings (or intervals) to lists: goals,
+    conditions, effects."""
+    return ((timing, item) for timing, items in timed.items() for item in items)
 
 
 def _add_effect(target: Any, effect: Any, rewrite: _Rewrite, timing: Any = None) -> None:

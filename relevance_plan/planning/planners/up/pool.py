@@ -83,6 +83,11 @@ class WorkerAnswer:
     log: str  # this request's part of the worker's log
     starting: bool = False  # the worker was still starting at the attempt's limit (and goes on starting)
 
+    @property
+    def exit_code(self) -> int:
+        """The child's exit code; without an answer (killed at its limit, by the race, or died), -9."""
+        return -9 if self.code is None else self.code
+
 
 class EngineWorker:
     """One worker process for one engine; :meth:`solve` sends it one attempt's files."""
