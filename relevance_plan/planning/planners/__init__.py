@@ -1,8 +1,11 @@
-"""Planner adapters behind one protocol, and the choice of a planner.
+"""Planner adapters behind one protocol, the choice of a planner, and a run's planner obtained once.
 
+- ``supply``: what the attempt loop imports: ``open_planners`` around a run
+  (the planner made, warmed, the head start taken) and the ``RunPlanner``
+  for the problem read (chosen, prepared, with the race's handles);
 - ``base``: the :class:`Planner` protocol, :class:`PlannerStatus` and
   :class:`RunOutcome` (one run: status, plan, cost, the planner's own words);
-- ``features``: the PDDL features a problem uses and a planner takes;
+- ``requirements``: the PDDL features a problem uses and a planner takes;
 - ``registry``: ``PLANNERS`` (kind -> adapter, what ``--planner`` offers)
   and ``make_planner``;
 - ``auto``: the installed planner that takes what the problem uses, with
@@ -11,7 +14,8 @@
   takes, and mapping its plan back;
 - one adapter per family: ``fast_downward/`` (adapter, command line, lean
   driver, head start), ``up/`` (unified-planning engines: adapter, child
-  process, fitting), ``lpg`` (LPG-td), ``command`` (any planner binary).
+  process, warm workers, fitting), ``lpg`` (LPG-td), ``command`` (any
+  planner binary, ``cmd:TEMPLATE``).
 
 This package's ``__init__`` imports nothing: the launcher's head start
 imports ``fast_downward.head_start`` before anything else.
