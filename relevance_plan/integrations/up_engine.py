@@ -543,7 +543,7 @@ class _AnytimeSearch:
 
 
 def up_status(status: PlannerStatus) -> PlanGenerationResultStatus:
-    """Ours as unified-planning says it (``planning.up_engines.UP_STATUS`` read backwards)."""
+    """Ours as unified-planning says it (``planning.planners.up.adapter.UP_STATUS`` read backwards)."""
     return PlanGenerationResultStatus[up_status_name(status)]
 
 

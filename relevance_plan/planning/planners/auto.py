@@ -222,7 +222,7 @@ class AutoPlanner:
 
     @property
     def proves_unsolvable(self) -> bool:
-        """The chosen planner's (``planner_for`` chooses before any attempt); unknown before: no."""
+        """The chosen planner's (``supply.planner_for`` chooses before any attempt); unknown before: no."""
         return False
 
     def check_installed(self) -> None:

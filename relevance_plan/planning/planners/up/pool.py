@@ -1,7 +1,7 @@
 """The tool's side of the ``up:NAME`` workers: one warm engine per run, started early, killed with the run.
 
-A run of ``plan`` opens a :func:`worker_pool`; the registry's ``warm_up``
-starts the worker of the run's engine at once (``up.worker``: it imports
+A run of ``plan`` opens a :func:`worker_pool` and starts the worker of the
+run's engine at once (``planners.supply``; ``up.worker``: it imports
 unified-planning and the engine while the tool reads and scores), and each
 attempt of ``UnifiedPlanningPlanner.run`` in that thread is then a request
 to it instead of a new child process.  The worker runs under the guard
