@@ -55,8 +55,8 @@ from relevance_plan.planning.planners.supply import (
     DEFAULT_PLANNER,
     DEFAULT_PLANNER_CONFIG,
     PlannerRequest,
-    RunPlanner,
-    RunPlanners,
+    PlannerSupply,
+    SuppliedPlanner,
     open_planners,
 )
 from relevance_plan.planning.race import Race
@@ -419,8 +419,8 @@ def plan_task(
     """
     started = time.perf_counter()
     # the run's facts die with it: no pass over them needed; its warm planners too
-    with collection_paused(), open_planners(options.planner_request(keep_work)) as planners:
-        return _plan_task(str(domain_path), str(problem_path), options, planners, started, progress)
+    with collection_paused(), open_planners(options.planner_request(keep_work)) as supply:
+        return _plan_task(str(domain_path), str(problem_path), options, supply, started, progress)
 
 
 @dataclass(frozen=True)
@@ -431,7 +431,7 @@ class _Run:
     domain_path: str
     problem_path: str
     options: PlanOptions
-    planner: RunPlanner
+    planner: SuppliedPlanner
     started: float  # time.perf_counter()
     scratch: Path  # where the pruned problems are written
     progress: ProgressCallback | None
@@ -488,7 +488,7 @@ def _plan_task(
     domain_path: str,
     problem_path: str,
     options: PlanOptions,
-    planners: RunPlanners,
+    supply: PlannerSupply,
     started: float,
     progress: ProgressCallback | None,
 ) -> PlanResult:
@@ -501,9 +501,9 @@ def _plan_task(
     except OutOfTimeError:
         return _ran_out("reading the domain and problem", started, options, 0)
     except UnsupportedFeatureError as refused:
-        return _plan_unread(domain_path, problem_path, planners.for_unread(refused), refused, options, started, say)
+        return _plan_unread(domain_path, problem_path, supply.for_unread(refused), refused, options, started, say)
     # the planner's check; what it lacks and can be compiled away is compiled away at each attempt
-    planner = planners.for_task(task.domain, task.problem, problem_path, say)
+    planner = supply.for_task(task.domain, task.problem, problem_path, say)
     overran = _overran("reading the domain and problem", started, options, len(task.problem.objects))
     if overran is not None:
         return overran
@@ -667,7 +667,7 @@ def _say_selection(say: Callable[[str], None], selection: Selection, total: int)
 def _plan_unread(
     domain_path: str,
     problem_path: str,
-    planner: RunPlanner,
+    planner: SuppliedPlanner,
     refused: UnsupportedFeatureError,
     options: PlanOptions,
     started: float,

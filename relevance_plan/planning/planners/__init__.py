@@ -1,7 +1,7 @@
 """Planner adapters behind one protocol, the choice of a planner, and a run's planner obtained once.
 
 - ``supply``: what the attempt loop imports: ``open_planners`` around a run
-  (the planner made, warmed, the head start taken) and the ``RunPlanner``
+  (the planner made, warmed, the head start taken) and the ``SuppliedPlanner``
   for the problem read (chosen, prepared, with the race's handles);
 - ``base``: the :class:`Planner` protocol, :class:`PlannerStatus` and
   :class:`RunOutcome` (one run: status, plan, cost, the planner's own words);

@@ -11,9 +11,9 @@ because one part must start before the problem is read:
    (Fast Downward on the full problem, started before the tool was
    imported).  When the run ends, the pool is closed and a head start
    nobody took over is stopped.
-2. :meth:`RunPlanners.for_task` (the problem read) or
-   :meth:`RunPlanners.for_unread` (our reader refused it) gives the one
-   value the loop uses from then on, a :class:`RunPlanner`: the chosen
+2. :meth:`PlannerSupply.for_task` (the problem read) or
+   :meth:`PlannerSupply.for_unread` (our reader refused it) gives the one
+   value the loop uses from then on, a :class:`SuppliedPlanner`: the chosen
    planner (``auto`` chooses by the problem's features), prepared for the
    problem (compilations, ``--planner-args``, ``--keep-work``), why it was
    chosen, and the handles on the warm pool a race needs.
@@ -45,8 +45,8 @@ __all__ = [
     "DEFAULT_PLANNER",
     "DEFAULT_PLANNER_CONFIG",
     "PlannerRequest",
-    "RunPlanner",
-    "RunPlanners",
+    "SuppliedPlanner",
+    "PlannerSupply",
     "open_planners",
     "planner_for",
     "planner_for_unread",
@@ -72,7 +72,7 @@ class PlannerRequest:
 
 
 @dataclass(frozen=True)
-class RunPlanner:
+class SuppliedPlanner:
     """The planner of one run, prepared for its problem; each :meth:`run` is one attempt."""
 
     prepared: PreparedPlanner
@@ -140,14 +140,16 @@ class RunPlanner:
 
 
 @dataclass(frozen=True)
-class RunPlanners:
+class PlannerSupply:
     """The run's planner as the options name it, before the problem is read (see :func:`open_planners`)."""
 
     request: PlannerRequest
     named: Planner
     head: HeadStart | None
 
-    def for_task(self, domain: Domain, problem: Problem, problem_path: str, say: Callable[[str], None]) -> RunPlanner:
+    def for_task(
+        self, domain: Domain, problem: Problem, problem_path: str, say: Callable[[str], None]
+    ) -> SuppliedPlanner:
         """The planner for this problem (``auto`` chooses by its features), prepared for it; ``say``
         hears the choice and the compilations.  ``UnsupportedFeatureError`` or ``UsageError`` when
         the planner cannot take the problem or the options."""
@@ -159,17 +161,17 @@ class RunPlanners:
         request = self.request
         prepared = prepare_planner(planner, domain, problem, problem_path, request.arguments, request.keep_work, say)
         warm = planner if request.warms else None
-        return RunPlanner(prepared, choice, request.memory_limit_mb, warm, self.head)
+        return SuppliedPlanner(prepared, choice, request.memory_limit_mb, warm, self.head)
 
-    def for_unread(self, refused: errors.UnsupportedFeatureError) -> RunPlanner:
+    def for_unread(self, refused: errors.UnsupportedFeatureError) -> SuppliedPlanner:
         """The planner for input our reader refuses (planned unpruned, on the files as they are)."""
         planner, choice = planner_for_unread(self.named, refused)
         planner = with_planner_args(planner, self.request.arguments)
-        return RunPlanner(PreparedPlanner(planner), choice, self.request.memory_limit_mb)
+        return SuppliedPlanner(PreparedPlanner(planner), choice, self.request.memory_limit_mb)
 
 
 @contextlib.contextmanager
-def open_planners(request: PlannerRequest) -> Iterator[RunPlanners]:
+def open_planners(request: PlannerRequest) -> Iterator[PlannerSupply]:
     """The run's planner made and, where it can be, warmed, inside its warm pool; the launcher's head
     start taken.  At the end of the block the pool is closed and an unclaimed head start stopped."""
     with warm_planners(request.memory_limit_mb):
@@ -178,7 +180,7 @@ def open_planners(request: PlannerRequest) -> Iterator[RunPlanners]:
             warm_up(named)  # a named engine starts now, beside the reading and scoring
         head = head_start.take()
         try:
-            yield RunPlanners(request, named, head)
+            yield PlannerSupply(request, named, head)
         finally:
             if head is not None:
                 head.discard()
