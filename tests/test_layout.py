@@ -155,3 +155,40 @@ def test_the_installed_tool_runs_without_the_source_tree(installed_elsewhere):
     demo = tool("demo", "--tiny", "--quiet", "--workdir", work / "demo")
     assert demo.returncode == 0, demo.stderr
     assert "coffee-simple" in demo.stdout
+
+
+def _imports(path) -> set[str]:
+    """The modules of the package a file imports: at its top, under TYPE_CHECKING, or inside functions."""
+    import ast
+
+    found = set()
+    for node in ast.walk(ast.parse(path.read_text())):
+        if isinstance(node, ast.ImportFrom) and node.module and node.module.startswith("relevance_plan"):
+            found |= {f"{node.module}.{alias.name}" for alias in node.names} | {node.module}
+        elif isinstance(node, ast.Import):
+            found |= {alias.name for alias in node.names if alias.name.startswith("relevance_plan")}
+    return found
+
+
+def test_no_module_imports_one_that_imports_it_back():
+    package = REPO / "relevance_plan"
+    modules = {}
+    for path in package.rglob("*.py"):
+        name = ".".join(path.relative_to(REPO).with_suffix("").parts).removesuffix(".__init__")
+        modules[name] = path
+    graph = {
+        name: {target for target in _imports(path) if target in modules and target != name}
+        for name, path in modules.items()
+    }
+    # every module that reaches itself again along the imports
+    cycles = []
+    for start in graph:
+        seen, todo = set(), list(graph[start])
+        while todo:
+            name = todo.pop()
+            if name not in seen:
+                seen.add(name)
+                todo += graph[name]
+        if start in seen:
+            cycles.append(start)
+    assert not cycles
