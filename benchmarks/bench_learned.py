@@ -91,8 +91,8 @@ from relevance_plan.planning.planners.base import PlannerStatus  # noqa: E402
 from relevance_plan.planning.planners.registry import DEFAULT_PLANNER_CONFIG  # noqa: E402
 from relevance_plan.planning.results import PlanResult  # noqa: E402
 from relevance_plan.relevance.learning.model import model_text  # noqa: E402
-from relevance_plan.relevance.scorers import PlanningTask  # noqa: E402
 from relevance_plan.relevance.setup import ScoringOptions, score_problem  # noqa: E402
+from relevance_plan.relevance.task import PlanningTask  # noqa: E402
 
 PLOI_DOMAINS = (
     "manyblockssmallpiles",

@@ -28,8 +28,8 @@ sys.path.insert(0, str(REPO))
 from relevance_plan.generators.generate import generate_problem  # noqa: E402
 from relevance_plan.io import load_domain, load_problem, write_text_atomic  # noqa: E402
 from relevance_plan.relevance.knowledge import load_model  # noqa: E402
-from relevance_plan.relevance.scorers import PlanningTask  # noqa: E402
 from relevance_plan.relevance.setup import ScoringOptions, score_problem  # noqa: E402
+from relevance_plan.relevance.task import PlanningTask  # noqa: E402
 
 TARGETS = {500: 0.3, 2000: 1.5}
 

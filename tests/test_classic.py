@@ -15,7 +15,8 @@ from relevance_plan.planning.results import PlanStatus
 from relevance_plan.planning.validate import ValidationStatus, validate_plan
 from relevance_plan.relevance.prune import prune_with_scores, widen
 from relevance_plan.relevance.reachability import relaxed_reachability
-from relevance_plan.relevance.scorers import SCORERS, PlanningTask, ScoreRequest
+from relevance_plan.relevance.scorers import SCORERS, ScoreRequest
+from relevance_plan.relevance.task import PlanningTask
 
 # Two cities, a truck in each, one airplane; the goal moves a package from city a to city b.
 LOGISTICS_PROBLEM = """(define (problem tiny) (:domain logistics)

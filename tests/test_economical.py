@@ -10,8 +10,8 @@ from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.io import load_domain
 from relevance_plan.pddl.parser import read_problem
 from relevance_plan.relevance.prune import ranked_names, widen
-from relevance_plan.relevance.scorers import PlanningTask
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
+from relevance_plan.relevance.task import PlanningTask
 
 
 def many_goal_logistics(seed: int, cities: int = 6, packages: int = 12, airplanes: int = 20) -> str:

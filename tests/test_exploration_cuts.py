@@ -14,8 +14,8 @@ from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.relevance import reachability
 from relevance_plan.relevance.analysis import fan_in, object_distances
 from relevance_plan.relevance.reachability import relaxed_reachability
-from relevance_plan.relevance.scorers import PlanningTask
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
+from relevance_plan.relevance.task import PlanningTask
 
 
 def task_of(world: str, size: int, seed: int = 2) -> tuple[PlanningTask, dict]:
@@ -173,7 +173,7 @@ def test_the_repairs_selection_is_the_same_in_every_process():
         "from relevance_plan.data import DOMAINS_DIR\n"
         "from relevance_plan.generators.sized import generate_sized_problem\n"
         "from relevance_plan.pddl.parser import read_domain, read_problem\n"
-        "from relevance_plan.relevance.scorers import PlanningTask\n"
+        "from relevance_plan.relevance.task import PlanningTask\n"
         "from relevance_plan.relevance.setup import ScoringOptions, score_problem\n"
         "for world, domain in (('grid', 'grid'), ('scenegraph', 'scenegraph'), ('logistics-manygoals', 'logistics')):\n"
         "    problem = generate_sized_problem(world, 3, 1, 500)\n"

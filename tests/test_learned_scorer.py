@@ -18,7 +18,7 @@ from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.relevance.learning.features import NAMED, FeatureConfig, hub_predicates, object_features
 from relevance_plan.relevance.learning.model import load_learned_model, model_text
 from relevance_plan.relevance.learning.scorer import KEEP_AT, calibrated, score_learned
-from relevance_plan.relevance.scorers import PlanningTask
+from relevance_plan.relevance.task import PlanningTask
 from tests.support import one_line_error, run, write_file
 
 FERRY = Path(DOMAINS_DIR) / "ferry-typed" / "domain.pddl"

@@ -20,8 +20,9 @@ from relevance_plan.relevance.analysis import (
 from relevance_plan.relevance.closure import close_over_constraints
 from relevance_plan.relevance.knowledge import parse_model
 from relevance_plan.relevance.prune import Thresholds, prune_with_scores, select_relevant
-from relevance_plan.relevance.scorers import SCORERS, PlanningTask, ScoreRequest
+from relevance_plan.relevance.scorers import SCORERS, ScoreRequest
 from relevance_plan.relevance.scorers.model import task_entropy
+from relevance_plan.relevance.task import PlanningTask
 
 MODEL = """
 version: 1

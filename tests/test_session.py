@@ -19,8 +19,8 @@ from relevance_plan.planning.loop import PlanOptions
 from relevance_plan.planning.planners.registry import make_planner
 from relevance_plan.planning.results import PlanStatus
 from relevance_plan.planning.validate import validate_plan
-from relevance_plan.relevance.scorers import PlanningTask
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
+from relevance_plan.relevance.task import PlanningTask
 from relevance_plan.session import TRIGGERS, Session
 
 COFFEE_DOMAIN = DOMAINS_DIR / "coffee" / "domain.pddl"

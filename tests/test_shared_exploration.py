@@ -12,8 +12,8 @@ from relevance_plan.generators.sized import NEW_WORLDS, generate_sized_problem
 from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.relevance import reachability
 from relevance_plan.relevance.reachability import relaxed_reachability
-from relevance_plan.relevance.scorers import PlanningTask
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
+from relevance_plan.relevance.task import PlanningTask
 
 WORLDS = ("logistics-manygoals", "logistics-manygoals-typed", "miconic-manygoals", "miconic-manygoals-typed")
 

@@ -49,7 +49,8 @@ from relevance_plan.relevance.learning.features import (
 )
 from relevance_plan.relevance.learning.model import LearnedModel, domain_signature
 from relevance_plan.relevance.prune import prune_with_scores
-from relevance_plan.relevance.scorers import PlanningTask, ScoreResult
+from relevance_plan.relevance.scorers import ScoreResult
+from relevance_plan.relevance.task import PlanningTask
 
 LABEL_KINDS = ("plan", "minimal")
 DEFAULT_LABELS = "plan"

@@ -22,9 +22,9 @@ from relevance_plan.pddl.model import Domain
 from relevance_plan.relevance.knowledge import KnowledgeModel
 from relevance_plan.relevance.metrics import SetMetrics, mean_metrics, set_metrics
 from relevance_plan.relevance.prune import Thresholds
-from relevance_plan.relevance.scorers import PlanningTask
 from relevance_plan.relevance.setup import ScoringOptions, resolve_model, score_problem
 from relevance_plan.relevance.sidecar import read_sidecar_for
+from relevance_plan.relevance.task import PlanningTask
 
 METRICS = ("recall", "precision", "f1", "N")
 N_MEANING = "N = objects chosen / objects in the ground truth (1 = the right number)"

@@ -33,8 +33,8 @@ from relevance_plan.pddl.formatter import format_number
 from relevance_plan.planning.loop import plan_task
 from relevance_plan.planning.results import PlanResult, PlanStatus
 from relevance_plan.relevance.prune import Selection
-from relevance_plan.relevance.scorers import PlanningTask
 from relevance_plan.relevance.setup import Scoring, ScoringOptions, score_problem
+from relevance_plan.relevance.task import PlanningTask
 
 
 def _score_and_prune(domain_path, problem_path, options: ScoringOptions) -> tuple[Scoring, Selection]:

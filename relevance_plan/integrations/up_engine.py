@@ -73,8 +73,9 @@ from relevance_plan.planning.results import Attempt, PlanStatus
 from relevance_plan.planning.validate import validate_plan
 from relevance_plan.relevance.knowledge import KnowledgeModel, load_model
 from relevance_plan.relevance.prune import DEFAULT_TAU, Selection, Thresholds, widen
-from relevance_plan.relevance.scorers import SCORERS, PlanningTask
+from relevance_plan.relevance.scorers import SCORERS
 from relevance_plan.relevance.setup import Scoring, resolve_model, score_problem
+from relevance_plan.relevance.task import PlanningTask
 
 ENGINE_NAME = "relevance"
 

@@ -77,8 +77,8 @@ from relevance_plan.planning.validate import (
 from relevance_plan.progress import ProgressCallback, ProgressEvent
 from relevance_plan.relevance.knowledge import KnowledgeModel
 from relevance_plan.relevance.prune import Selection, Thresholds, widen
-from relevance_plan.relevance.scorers import PlanningTask
 from relevance_plan.relevance.setup import Scoring, ScoringOptions, score_problem
+from relevance_plan.relevance.task import PlanningTask
 from relevance_plan.supervision.process import CancelScope, cancel_scope
 
 METHODS = ("relevance", "pure", "random", "oracle")

@@ -21,7 +21,7 @@ from relevance_plan.errors import ModelError, UsageError, printable
 from relevance_plan.pddl.model import Domain
 from relevance_plan.relevance.scene import PLACEMENT_CONDITIONS, ScenePredicates
 
-if TYPE_CHECKING:
+if TYPE_CHECKING:  # for the annotations only: yaml itself is imported on first use (_yaml_loader)
     import yaml
 
 SCHEMA_VERSION = 1

@@ -18,8 +18,9 @@ from relevance_plan.relevance.analysis import (
 from relevance_plan.relevance.closure import Restored, close_over_constraints
 from relevance_plan.relevance.knowledge import KnowledgeModel, check_threshold
 from relevance_plan.relevance.reachability import repair_selection
-from relevance_plan.relevance.scorers import PlanningTask, ScoreResult
+from relevance_plan.relevance.scorers import ScoreResult
 from relevance_plan.relevance.soundness import KeptForSoundness
+from relevance_plan.relevance.task import PlanningTask
 from relevance_plan.relevance.types import static_predicates
 
 DEFAULT_TAU = 0.2

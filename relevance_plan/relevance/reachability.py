@@ -35,16 +35,13 @@ import weakref
 from collections import defaultdict, deque
 from collections.abc import Callable, Collection, Iterable, Iterator, Mapping, Sequence, Set
 from dataclasses import dataclass, field, replace
-from typing import TYPE_CHECKING
 
 from relevance_plan.pddl.formulas import Atom, Formula, GroundAtom, Or, conjuncts, effect_literals
 from relevance_plan.pddl.model import Domain
 from relevance_plan.relevance.analysis import ObjectGraph, fan_in, graph_distances
 from relevance_plan.relevance.closure import Restored
+from relevance_plan.relevance.task import PlanningTask
 from relevance_plan.relevance.types import static_predicates
-
-if TYPE_CHECKING:  # the scorers' package imports this module's users
-    from relevance_plan.relevance.scorers.base import PlanningTask
 
 DEFAULT_BUDGET = 400_000  # bindings tried before the check gives up
 DISJUNCTIVE_WAYS = 16  # ways through an action's disjunctive conditions the check splits it into

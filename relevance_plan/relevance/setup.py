@@ -18,8 +18,9 @@ from relevance_plan.relevance.knowledge import KnowledgeModel, check_model_appli
 from relevance_plan.relevance.learning.model import load_learned_model
 from relevance_plan.relevance.learning.scorer import score_learned
 from relevance_plan.relevance.prune import Selection, Thresholds, prune_with_scores
-from relevance_plan.relevance.scorers import SCORERS, PlanningTask, ScoreRequest, ScoreResult
+from relevance_plan.relevance.scorers import SCORERS, ScoreRequest, ScoreResult
 from relevance_plan.relevance.sidecar import necessary_objects
+from relevance_plan.relevance.task import PlanningTask
 
 
 @dataclass(frozen=True)

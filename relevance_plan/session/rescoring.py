@@ -20,7 +20,7 @@ from dataclasses import replace
 from relevance_plan.relevance.knowledge import KnowledgeModel
 from relevance_plan.relevance.prune import Thresholds
 from relevance_plan.relevance.scene import Element, build_scene
-from relevance_plan.relevance.scorers import PlanningTask, ScoreRequest, ScoreResult
+from relevance_plan.relevance.scorers import ScoreRequest, ScoreResult
 from relevance_plan.relevance.scorers.model import (
     UNKNOWN_CLASS,
     ModelContext,
@@ -33,6 +33,7 @@ from relevance_plan.relevance.scorers.model import (
     unknown_share_problem,
 )
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
+from relevance_plan.relevance.task import PlanningTask
 from relevance_plan.session.state import LiveScene
 
 ALL = None  # "every element may have changed"

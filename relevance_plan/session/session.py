@@ -53,8 +53,9 @@ from relevance_plan.planning.validate import validate_plan
 from relevance_plan.relevance.analysis import ConstraintRule, FactIndex, single_valued_predicates
 from relevance_plan.relevance.knowledge import KnowledgeModel
 from relevance_plan.relevance.prune import Selection, constraint_rules, prune_with_scores
-from relevance_plan.relevance.scorers import PlanningTask, ScoreResult
+from relevance_plan.relevance.scorers import ScoreResult
 from relevance_plan.relevance.setup import Scoring, ScoringOptions, choose_scorer, resolve_model
+from relevance_plan.relevance.task import PlanningTask
 from relevance_plan.session.events import Event, EventError, check_event, parse_event_line
 from relevance_plan.session.rescoring import ALL, FullScores, LiveModelScores, restrict
 from relevance_plan.session.state import LiveScene

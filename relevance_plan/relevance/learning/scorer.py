@@ -17,7 +17,8 @@ from __future__ import annotations
 
 from relevance_plan.relevance.learning.features import object_features
 from relevance_plan.relevance.learning.model import LearnedModel
-from relevance_plan.relevance.scorers.base import PlanningTask, ScoreResult
+from relevance_plan.relevance.scorers.base import ScoreResult
+from relevance_plan.relevance.task import PlanningTask
 
 # The default element threshold (relevance.prune.DEFAULT_TAU, which imports the scorers): the model's
 # own threshold maps onto it.

@@ -8,11 +8,12 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from relevance_plan.relevance.scorers.base import PlanningTask, ScoreRequest, ScoreResult
+from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult
 from relevance_plan.relevance.scorers.goal import score_by_goal
 from relevance_plan.relevance.scorers.model import score_by_model
 from relevance_plan.relevance.scorers.oracle import score_by_oracle
 from relevance_plan.relevance.scorers.random import score_randomly
+from relevance_plan.relevance.task import PlanningTask
 
 Scorer = Callable[[PlanningTask, ScoreRequest], ScoreResult]
 
@@ -23,4 +24,4 @@ SCORERS: dict[str, Scorer] = {
     "oracle": score_by_oracle,
 }
 
-__all__ = ["SCORERS", "Scorer", "ScoreRequest", "ScoreResult", "PlanningTask"]
+__all__ = ["SCORERS", "Scorer", "ScoreRequest", "ScoreResult"]

@@ -20,7 +20,8 @@ from relevance_plan.errors import ModelError
 from relevance_plan.pddl.formulas import Formula, predicates_in
 from relevance_plan.relevance.knowledge import Human, KnowledgeModel, ModelClass
 from relevance_plan.relevance.scene import Element, build_scene
-from relevance_plan.relevance.scorers.base import PlanningTask, ScoreRequest, ScoreResult
+from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult
+from relevance_plan.relevance.task import PlanningTask
 
 UNKNOWN_CLASS = "(unknown)"
 # More than this share of objects of unknown class: the model is not about this scene.
