@@ -13,8 +13,8 @@ from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.planning.loop import PlanOptions, plan_task
 from relevance_plan.planning.results import PlanStatus
 from relevance_plan.planning.validate import ValidationStatus, validate_plan
+from relevance_plan.relevance.exploration import relaxed_reachability
 from relevance_plan.relevance.prune import prune_with_scores, widen
-from relevance_plan.relevance.reachability import relaxed_reachability
 from relevance_plan.relevance.scorers import SCORERS, ScoreRequest
 from relevance_plan.relevance.task import PlanningTask
 

@@ -74,14 +74,14 @@ def test_a_second_truck_in_one_city_goes_when_the_first_can_stand_in_for_it(monk
     """Trucks are needed one per city, so no truck stands in for most others; but when one round
     adds two trucks of one city and the relaxed plan uses both, the one the other can replace goes."""
     from relevance_plan.generators.sized import NEW_WORLDS, generate_sized_problem
-    from relevance_plan.relevance import reachability
+    from relevance_plan.relevance import repair
 
-    pairwise = reachability.PAIRWISE_UP_TO
+    pairwise = repair.PAIRWISE_UP_TO
     generated = generate_sized_problem("logistics-manygoals", 5, 1, 200)
     domain = load_domain(DOMAINS_DIR / NEW_WORLDS["logistics-manygoals"].domain / "domain.pddl")
 
     def trucks_of_city_eight(pairwise: int) -> set[str]:
-        monkeypatch.setattr(reachability, "PAIRWISE_UP_TO", pairwise)
+        monkeypatch.setattr(repair, "PAIRWISE_UP_TO", pairwise)
         task = PlanningTask(domain, read_problem(generated.pddl_text, domain))
         selection = score_problem(task, ScoringOptions(), method="relevance").first_selection(narrow=True)
         return {name for name in selection.kept if name.startswith("truck8-")}

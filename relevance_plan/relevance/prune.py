@@ -17,7 +17,7 @@ from relevance_plan.relevance.analysis import (
 )
 from relevance_plan.relevance.closure import Restored, close_over_constraints
 from relevance_plan.relevance.knowledge import KnowledgeModel, check_threshold
-from relevance_plan.relevance.reachability import repair_selection
+from relevance_plan.relevance.repair import repair_selection
 from relevance_plan.relevance.scorers import ScoreResult
 from relevance_plan.relevance.soundness import KeptForSoundness
 from relevance_plan.relevance.task import PlanningTask
@@ -170,7 +170,7 @@ def prune_with_scores(
     With ``prefer_free``, blocked alternatives are set aside (``free_alternatives``)
     and closure runs again on what is left.  With ``repair`` (default: for the
     goal scorer at the default thresholds or lower), a kept set on which the goal is unreachable even ignoring
-    deletes gets what a relaxed plan needs (``reachability.repair_selection``).
+    deletes gets what a relaxed plan needs (``repair.repair_selection``).
     A selection that keeps more than ``full_above`` of the objects (default:
     ``FULL_ABOVE`` for the scorers repaired by default, never for the others,
     whose first selection is kept as chosen) becomes the full problem: pruning

@@ -57,8 +57,13 @@ class PlanningTask:
     @cached_property
     def goal_distance(self) -> dict[str, int]:
         """Hops from the goal's objects through initial facts (unreached objects are absent)."""
-        hub = max(16, int(2 * len(self.problem.objects) ** 0.5))
-        return object_distances(self.init_index, self.goal_objects, hub)
+        return object_distances(self.init_index, self.goal_objects, self.hub_degree)
+
+    @cached_property
+    def hub_degree(self) -> int:
+        """Objects in more initial facts than this (a shape every key has, a floor above all others) link
+        everything to everything: distances do not pass through them."""
+        return max(16, int(2 * len(self.problem.objects) ** 0.5))
 
     @cached_property
     def object_profiles(self) -> dict[str, tuple[object, ...]]:

@@ -1,6 +1,6 @@
 """A sharper relaxed check for temporal and numeric problems, on a small kept set.
 
-``relaxed_reachability`` (``reachability.py``) reads a durative action as one
+``relaxed_reachability`` (``exploration.py``) reads a durative action as one
 action with all its conditions and ignores numbers.  Here, on the kept
 objects only:
 
