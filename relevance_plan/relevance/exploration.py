@@ -144,9 +144,18 @@ class RelaxedTask:
     shared: _Shared | None = None
     # id(schema) -> the atoms without arguments that, once reached, make it add nothing new (see _dominated)
     dominated: Mapping[int, frozenset[GroundAtom]] = field(default_factory=dict)
+    # predicate -> (schema, the condition it matches, the schema's other conditions with their types)
+    triggers: Mapping[str, list[tuple[_Schema, int, list[_Typed]]]] = field(default_factory=dict)
+    conditions: Mapping[int, list[_Typed]] = field(default_factory=dict)  # id(schema) -> its typed conditions
+    # id(schema) -> the schemas the exploration may pass over once every atom they add is reached
+    # (every floor reached: no more joins of ``up``); the placeholder's steps are never passed over,
+    # as each member follows them
+    saturable: Mapping[int, _Schema] = field(default_factory=dict)
+    counted: frozenset[str] = frozenset()  # the predicates the saturable schemas add: their facts are counted
 
 
 def relaxed_task(task: PlanningTask) -> RelaxedTask:
+    """The task's relaxed actions and what the exploration reads besides the facts (computed once per task)."""
     cached = _RELAXED.get(task)
     if cached is None:
         problem = task.typing.problem
@@ -156,32 +165,66 @@ def relaxed_task(task: PlanningTask) -> RelaxedTask:
         static = static_predicates(task.typing.domain) - {
             literal.atom[0] for literal in problem.timed_literals if literal.atom
         }
-        by_predicate = task.init_index.by_predicate
-        nullary = frozenset(
-            atom
-            for predicate, parameters in task.typing.domain.predicates.items()
-            if not parameters
-            for atom in by_predicate.get(predicate, ())
-            if atom in problem.init
-        ) | frozenset(atom for atom in timed if len(atom) == 1)
-        timed_by_object: dict[str, list[GroundAtom]] = defaultdict(list)
-        for atom in sorted(timed):
-            for name in dict.fromkeys(atom[1:]):
-                timed_by_object[name].append(atom)
         schemas = _relaxed_schemas(task)
         shared = None if problem.timed_literals else _shared_class(task, schemas)
-        dominated = _dominated(task.typing.domain, schemas, shared.variable if shared else {})
+        shared_steps = shared.variable if shared else {}
+        triggers, conditions = _triggers(schemas)
+        saturable = {id(s): s for s in schemas if s.saturable and id(s) not in shared_steps}
         cached = RelaxedTask(
             schemas,
             frozenset(static),
             timed,
-            {name: tuple(atoms) for name, atoms in timed_by_object.items()},
-            nullary,
+            _timed_by_object(timed),
+            _nullary(task, timed),
             shared,
-            dominated,
+            _dominated(task.typing.domain, schemas, shared_steps),
+            triggers,
+            conditions,
+            saturable,
+            frozenset(predicate for s in saturable.values() for predicate, _, _ in s.add),
         )
         _RELAXED[task] = cached
     return cached
+
+
+def _nullary(task: PlanningTask, timed: Set[GroundAtom]) -> frozenset[GroundAtom]:
+    """The initial and timed atoms without arguments."""
+    by_predicate = task.init_index.by_predicate
+    return frozenset(
+        atom
+        for predicate, parameters in task.typing.domain.predicates.items()
+        if not parameters
+        for atom in by_predicate.get(predicate, ())
+        if atom in task.typing.problem.init
+    ) | frozenset(atom for atom in timed if len(atom) == 1)
+
+
+def _timed_by_object(timed: Set[GroundAtom]) -> dict[str, tuple[GroundAtom, ...]]:
+    """Object -> the timed atoms that mention it, each once, in sorted order."""
+    found: dict[str, list[GroundAtom]] = defaultdict(list)
+    for atom in sorted(timed):
+        for name in dict.fromkeys(atom[1:]):
+            found[name].append(atom)
+    return {name: tuple(atoms) for name, atoms in found.items()}
+
+
+def _triggers(
+    schemas: Sequence[_Schema],
+) -> tuple[dict[str, list[tuple[_Schema, int, list[_Typed]]]], dict[int, list[_Typed]]]:
+    """Predicate -> (schema, the condition a fact of it matches, the schema's other conditions), and
+    each schema's conditions, each with its arguments' types (None: a name)."""
+    triggers: dict[str, list[tuple[_Schema, int, list[_Typed]]]] = defaultdict(list)
+    conditions: dict[int, list[_Typed]] = {}
+    for schema in schemas:
+        type_of = dict(zip(schema.parameters, schema.types))
+        typed = [
+            (predicate, args, tuple(type_of.get(a) if a[0] == "?" else None for a in args))
+            for predicate, args in schema.pre
+        ]
+        conditions[id(schema)] = typed
+        for i, (predicate, _) in enumerate(schema.pre):
+            triggers[predicate].append((schema, i, typed[:i] + typed[i + 1 :]))
+    return dict(triggers), conditions
 
 
 _RELAXED: weakref.WeakKeyDictionary[PlanningTask, RelaxedTask] = weakref.WeakKeyDictionary()
@@ -411,22 +454,38 @@ class Exploration:
     """
 
     def __init__(self, task: PlanningTask, kept: Set[str], work: Work):
-        domain, problem = task.typing.domain, task.typing.problem
-        compiled = relaxed_task(task)
-        self.domain = domain
+        relaxed = relaxed_task(task)
+        self.domain = task.typing.domain
         self.work = work
-        self.shared = compiled.shared
-        self.dominated = compiled.dominated
-        self.members = self.shared.members if self.shared else frozenset()  # of the shared class, kept or not
+        self.schemas = relaxed.schemas
+        self.triggers, self.conditions, self.dominated = relaxed.triggers, relaxed.conditions, relaxed.dominated
+        self.saturable, self.counted = relaxed.saturable, relaxed.counted
+        self._take_objects(task, relaxed.shared, kept)
+        self._prepare_placeholder()
+        self._prepare_facts(task, relaxed)
+        self._prepare_joins()
+        self._reach_start(relaxed)
+
+    def _take_objects(self, task: PlanningTask, shared: _Shared | None, kept: Set[str]) -> None:
+        """The objects the exploration may use, and their types."""
+        domain = self.domain
+        self.shared = shared
+        self.members = shared.members if shared else frozenset()  # of the shared class, kept or not
         # with a shared class, its kept members are not objects of the exploration: MEMBER stands for them
         self.kept_members: set[str] = set(kept) & self.members
         self.allowed = set(kept) - self.kept_members | set(domain.constants)
         self.types_of = dict(domain.constants)
-        self.types_of.update(problem.objects)
-        if self.shared is not None:
+        self.types_of.update(task.typing.problem.objects)
+        if shared is not None:
             self.allowed.add(MEMBER)
-            self.types_of[MEMBER] = self.shared.name
-        # the placeholder's steps, each with its conditions on the placeholder (shared class only)
+            self.types_of[MEMBER] = shared.name
+        self.of_type: dict[str, list[str]] = {}
+        self.fits: dict[str, frozenset[str]] = {}
+        self.variable_fits: dict[int, dict[str, frozenset[str]]] = {}
+
+    def _prepare_placeholder(self) -> None:
+        """The placeholder's steps and the members' bits (used with a shared class only)."""
+        # the placeholder's steps, each with its conditions on the placeholder
         self.edges: list[tuple[tuple[GroundAtom, ...], tuple[GroundAtom, ...], Step, _Schema, Binding]] = []
         self.edges_from: dict[GroundAtom, list[int]] = defaultdict(list)
         self.edge_steps: set[Step] = set()
@@ -438,7 +497,12 @@ class Exploration:
         self.spreading: deque[GroundAtom] = deque()
         self.seeds: list[tuple[GroundAtom, str]] = []  # (pattern, member): a member's initial fact not yet spread
         self.edges_spread = 0  # the placeholder's steps fired at least once
+
+    def _prepare_facts(self, task: PlanningTask, relaxed: RelaxedTask) -> None:
+        """The goal, the facts reached (none yet) and what the initial ones are read from."""
+        problem = task.typing.problem
         self.goal = [(p, *args) for p, args in required_atoms(problem.goal) if not any(a[0] == "?" for a in args)]
+        self.missing = set(self.goal)
         self.facts: dict[GroundAtom, _Achiever | None] = {}  # the step that first reached each fact
         self.queue: deque[GroundAtom] = deque()
         self.by_object = task.init_index.by_object
@@ -446,24 +510,11 @@ class Exploration:
         # the index also holds numeric terms, (distance a b), which are not facts
         self.numeric_terms = bool(problem.numeric_init)
         # timed initial literals that make a fact true count as reached: a plan may wait for them
-        self.timed = compiled.timed
-        self.timed_by_object = compiled.timed_by_object
-        self.of_type: dict[str, list[str]] = {}
-        self.fits: dict[str, frozenset[str]] = {}
-        self.schemas = compiled.schemas
-        # predicate -> (schema, the condition it matches, the schema's other conditions with their types)
-        self.triggers: dict[str, list[tuple[_Schema, int, list[_Typed]]]] = defaultdict(list)
-        self.conditions: dict[int, list[_Typed]] = {}
-        for schema in self.schemas:
-            type_of = dict(zip(schema.parameters, schema.types))
-            typed = [
-                (predicate, args, tuple(type_of.get(a) if a[0] == "?" else None for a in args))
-                for predicate, args in schema.pre
-            ]
-            self.conditions[id(schema)] = typed
-            for i, (predicate, _) in enumerate(schema.pre):
-                self.triggers[predicate].append((schema, i, typed[:i] + typed[i + 1 :]))
-        self.variable_fits: dict[int, dict[str, frozenset[str]]] = {}
+        self.timed = relaxed.timed
+        self.timed_by_object = relaxed.timed_by_object
+
+    def _prepare_joins(self) -> None:
+        """The indexes the joins read, and the counts that tell a saturated schema."""
         # Processed facts by (predicate, signature) and (predicate, position, value, signature), where
         # the signature is the classes of the fact's objects: a condition on a truck's place looks only
         # at the facts that place a truck, not at the hundred packages that may be there too.
@@ -474,23 +525,20 @@ class Exploration:
         self.effects_added: set[tuple[object, ...]] = set()
         # applications that ranged over every kept object of some types: run again when those grow
         self.ranging: list[tuple[_Schema, Binding, frozenset[str]]] = []
-        self.missing = set(self.goal)
-        # How many reached facts of each (predicate, signature) a saturable schema adds, to pass over
-        # the schemas that have nothing left to add (every floor reached: no more joins of ``up``).
-        # The placeholder's steps are never passed over: each member follows them.
-        shared_steps = self.shared.variable if self.shared else {}
-        self.saturable = {id(s): s for s in self.schemas if s.saturable and id(s) not in shared_steps}
-        self.counted = {predicate for s in self.saturable.values() for predicate, _, _ in s.add}
+        # how many reached facts of each (predicate, signature) the saturable schemas add
         self.reached: dict[tuple[str, tuple[str, ...]], int] = {}
         self.reached_signatures: dict[str, list[tuple[str, ...]]] = defaultdict(list)
         self.reached_total: dict[str, int] = {}
         self.saturated: set[int] = set()
         self.saturation_needs: dict[int, list[tuple[str, tuple[str, ...], int]]] = {}  # until objects are added
+
+    def _reach_start(self, relaxed: RelaxedTask) -> None:
+        """The initial facts over the kept objects, and the steps that need no dynamic fact."""
         # The initial static facts (a map, the floors above each other) are indexed at once and trigger
         # nothing: every dynamic fact is processed after them, and its joins find them.  Only the
         # schemas whose conditions are all static need a join of their own.
-        static = compiled.static
-        self._reach_initial(self.allowed | self.kept_members, compiled.nullary, static)
+        static = relaxed.static
+        self._reach_initial(self.allowed | self.kept_members, relaxed.nullary, static)
         for schema in self.schemas:
             if not schema.pre:
                 self.apply(schema, {})

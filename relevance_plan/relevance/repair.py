@@ -16,6 +16,7 @@ from __future__ import annotations
 import math
 import time
 from collections.abc import Callable, Collection, Mapping, Sequence, Set
+from dataclasses import dataclass
 
 from relevance_plan.pddl.formulas import GroundAtom
 from relevance_plan.relevance.analysis import ObjectGraph, fan_in, graph_distances
@@ -41,6 +42,23 @@ PAIRWISE_UP_TO = 64  # added objects of one class compared each with all others 
 
 # closure over constraints: (names, a subset of them already closed) -> (closed set, what it put back and why)
 CloseFn = Callable[[Set[str], Set[str]], tuple[frozenset[str], tuple[Restored, ...]]]
+Repaired = tuple[frozenset[str], tuple[Restored, ...], Reachability]  # (kept, what was put back and why, last check)
+
+
+@dataclass(frozen=True)
+class _Repair:
+    """What every step of one repair reads: the task, the kept set it grows, closure and the bounds."""
+
+    task: PlanningTask
+    kept: frozenset[str]
+    scores: Mapping[str, float]
+    close: CloseFn
+    budget: int  # bindings each check may try
+    deadline: float  # time.monotonic() by which the checks stop
+    give_up_above: int  # kept objects past which the search stops and returns what it has
+
+    def work(self) -> Work:
+        return Work(self.budget, self.deadline)
 
 
 def repair_selection(
@@ -50,7 +68,7 @@ def repair_selection(
     close: CloseFn,
     budget: int | None = None,
     give_up_above: int | None = None,
-) -> tuple[frozenset[str], tuple[Restored, ...], Reachability]:
+) -> Repaired:
     """Add what the relaxed goal needs to ``kept``; returns (kept, what was put back and why, the last check).
 
     Candidates are tried best first: one member of every class the kept set
@@ -61,27 +79,49 @@ def repair_selection(
     returns what it has.
     """
     total = len(task.problem.objects)
-    if budget is None:
-        budget = max(DEFAULT_BUDGET, BUDGET_PER_OBJECT * total)
-    if give_up_above is None:
-        give_up_above = total
-    deadline = min(time.monotonic() + REPAIR_SECONDS, math.inf if task.deadline is None else task.deadline)
+    repair = _Repair(
+        task,
+        kept,
+        scores,
+        close,
+        max(DEFAULT_BUDGET, BUDGET_PER_OBJECT * total) if budget is None else budget,
+        min(time.monotonic() + REPAIR_SECONDS, math.inf if task.deadline is None else task.deadline),
+        total if give_up_above is None else give_up_above,
+    )
     try:
-        exploration = Exploration(task, kept, Work(budget, deadline))
+        exploration = Exploration(task, kept, repair.work())
         exploration.run()
     except OutOfBudget:
         task.check_time("checking the selection")  # the --timeout, not the repair's own bound
         return kept, (), Reachability(False, False)
     check = exploration.outcome()
     if check.reachable:
-        return _sharpen(task, kept, kept, (), check, scores, close, give_up_above)
-    # One member of every class the kept set lacks first (no airplane at all), together; then, round by
-    # round, the objects between what is reached and the goal atoms still unreached: one at a time at
-    # first (one airplane may carry every package), then a quarter of what was added, or as many as
-    # the last round's rate of goal atoms says are needed.  The exploration carries on from where it
-    # stopped, so the whole growth costs about one exploration of the final set.
-    toward = RepairOrder(task, scores)
-    take = toward.missing_classes(kept)
+        return _sharpen(repair, kept, (), check)
+    order = RepairOrder(task, scores)
+    current, added, check = _grow(repair, exploration, order)
+    if not check.reachable:
+        # Nothing short of the whole problem reaches the goal (or the check gave up): let the planner decide.
+        return current, tuple(Restored(n, "", "reachability", ("goal",)) for n in sorted(current - kept)), check
+    rank = {name: i for i, name in enumerate(added)}
+    used = {name for name in check.plan_objects if name in task.problem.objects and name not in kept}
+    used, check = _economize(repair, used, rank, check, order, exploration.facts)
+    closed, reasons = _restore_used(repair, used, rank, check)
+    return _sharpen(repair, closed, reasons, check)
+
+
+def _grow(
+    repair: _Repair, exploration: Exploration, order: RepairOrder
+) -> tuple[frozenset[str], list[str], Reachability]:
+    """Grow the kept set until the exploration reaches the goal; returns (the grown set, the objects
+    added in the order they came, the last check).
+
+    One member of every class the kept set lacks first (no airplane at all), together; then, round by
+    round, the objects between what is reached and the goal atoms still unreached: one at a time at
+    first (one airplane may carry every package), then a quarter of what was added, or as many as
+    the last round's rate of goal atoms says are needed.  The exploration carries on from where it
+    stopped, so the whole growth costs about one exploration of the final set."""
+    kept = repair.kept
+    take = order.missing_classes(kept)
     current = kept
     added: list[str] = []
     estimate = 0  # objects still needed, judged by what the last round's objects reached
@@ -90,12 +130,12 @@ def repair_selection(
             if not take:
                 batch = max(1, (len(current) - len(kept)) // 4, min(estimate, 2 * (len(current) - len(kept))))
                 unreached = {arg for atom in exploration.missing for arg in atom[1:]}
-                take = toward.nearest(current, unreached, batch, exploration.facts)
+                take = order.nearest(current, unreached, batch, exploration.facts)
                 if not take:
                     break
-            grown, _ = close(current | frozenset(take), current)
+            grown, _ = repair.close(current | frozenset(take), current)
             added += take + sorted(grown - current - set(take))
-            if len(grown) > give_up_above:
+            if len(grown) > repair.give_up_above:
                 current = grown
                 break  # it would keep most of the problem anyway: checking costs more than it saves
             before = len(exploration.missing)
@@ -103,35 +143,23 @@ def repair_selection(
             current = grown
             exploration.run()
             brought = before - len(exploration.missing)
-            toward.learn(take, brought > 0)
+            order.learn(take, brought > 0)
             # one truck brought its city's packages home: about as many more as cities still waiting
             estimate = -(-len(take) * len(exploration.missing) // brought) if brought > 0 else 0
             take = []
         check = exploration.outcome()
     except OutOfBudget:
-        task.check_time("checking the selection")
+        repair.task.check_time("checking the selection")
         check = Reachability(False, False)
-    rank = {name: i for i, name in enumerate(added)}
-    if not check.reachable:
-        # Nothing short of the whole problem reaches the goal (or the check gave up): let the planner decide.
-        unchecked = frozenset(current) - kept
-        return frozenset(current), tuple(Restored(n, "", "reachability", ("goal",)) for n in sorted(unchecked)), check
-    classes = task.typing.problem.objects
-    used = {name for name in check.plan_objects if name in task.problem.objects and name not in kept}
-    reached = exploration.facts
-    used, check = _economize(
-        task,
-        kept,
-        used,
-        classes,
-        rank,
-        check,
-        close,
-        budget,
-        deadline,
-        lambda members: toward.interchangeable(members, reached),
-        lambda name, others: toward.stood_in_for(name, others, reached),
-    )
+    return frozenset(current), added, check
+
+
+def _restore_used(
+    repair: _Repair, used: Set[str], rank: Mapping[str, int], check: Reachability
+) -> tuple[frozenset[str], tuple[Restored, ...]]:
+    """The kept set with the objects the relaxed plan uses, closed, and why each came back: the
+    first plan step that names it (closure's own reasons for what closure adds)."""
+    kept = repair.kept
     step_of: dict[str, Step] = {}
     for step in check.plan:
         for arg in step[1:]:
@@ -140,27 +168,19 @@ def repair_selection(
         Restored(name, "", "reachability", step_of.get(name, ("goal",)))
         for name in sorted(used, key=lambda n: (rank.get(n, len(rank)), n))
     ]
-    closed, closure_reasons = close(kept | frozenset(used), kept)
+    closed, closure_reasons = repair.close(kept | frozenset(used), kept)
     reasons.extend(r for r in closure_reasons if r.name not in used and r.name not in kept)
-    return _sharpen(task, kept, closed, tuple(reasons), check, scores, close, give_up_above)
+    return closed, tuple(reasons)
 
 
-def _sharpen(
-    task: PlanningTask,
-    kept: frozenset[str],
-    closed: frozenset[str],
-    reasons: tuple[Restored, ...],
-    check: Reachability,
-    scores: Mapping[str, float],
-    close: CloseFn,
-    give_up_above: int,
-) -> tuple[frozenset[str], tuple[Restored, ...], Reachability]:
+def _sharpen(repair: _Repair, closed: frozenset[str], reasons: tuple[Restored, ...], check: Reachability) -> Repaired:
     """On a temporal or numeric problem, a selection the delete relaxation admits but the sharper
     relaxation of ``timed_relaxation`` refutes (fuel no kept action can give, a durative action's end
     out of reach) has no plan: add the best-ranked objects, a doubling batch at a time, until it is
     admitted (or the planner decides, past ``give_up_above``)."""
     from relevance_plan.relevance.timed_relaxation import applies, timed_relaxed_reachability
 
+    task, scores = repair.task, repair.scores
     if not applies(task) or timed_relaxed_reachability(task, closed) is not False:
         return closed, reasons, check
     distance = task.goal_distance
@@ -174,9 +194,9 @@ def _sharpen(
         task.typing.problem.objects,
     )
     current, added, batch = closed, list(reasons), 1
-    while ranked and len(current) <= give_up_above:
+    while ranked and len(current) <= repair.give_up_above:
         take, ranked = ranked[:batch], ranked[batch:]
-        grown, more = close(current | frozenset(take), current)
+        grown, more = repair.close(current | frozenset(take), current)
         added += [Restored(name, "", "reachability", ("goal",)) for name in take]
         added += [r for r in more if r.name not in current and r.name not in take]
         current = grown
@@ -184,7 +204,7 @@ def _sharpen(
         task.check_time("checking the selection")
         if timed_relaxed_reachability(task, current) is not False:
             break
-        batch = max(1, len(current) - len(kept))
+        batch = max(1, len(current) - len(repair.kept))
     return current, tuple(added), check
 
 
@@ -360,17 +380,12 @@ class RepairOrder:
 
 
 def _economize(
-    task: PlanningTask,
-    kept: frozenset[str],
+    repair: _Repair,
     used: set[str],
-    classes: Mapping[str, str],
     rank: Mapping[str, int],
     check: Reachability,
-    close: CloseFn,
-    budget: int,
-    deadline: float,
-    interchangeable: Callable[[Sequence[str]], bool],
-    stood_in_for: Callable[[str, Sequence[str]], bool],
+    order: RepairOrder,
+    reached: Mapping[GroundAtom, object],
 ) -> tuple[set[str], Reachability]:
     """Fewer added objects of one class where fewer do: a relaxed plan takes the first airplane it
     meets for each package, when one airplane carries them all.  Class by class (most members
@@ -378,33 +393,60 @@ def _economize(
     relaxed-reachable, else drop the less used half while it does; what the last relaxed plan no
     longer uses goes too.  A few checks, each on the small kept set.  In a class none of whose
     members can stand in for most others (a truck in each city), only those another member can
-    stand in for go (a second truck in one city, added in the same round as the first)."""
+    stand in for go (a second truck in one city, added in the same round as the first).
+    ``reached``: what the repair's exploration reached, for telling which member stands in for which."""
+    classes = repair.task.typing.problem.objects
     by_class: dict[str, list[str]] = {}
     for name in used:
         by_class.setdefault(classes.get(name, "object"), []).append(name)
     for cls in sorted((c for c in by_class if len(by_class[c]) > 1), key=lambda c: (-len(by_class[c]), c)):
-        if not interchangeable(sorted(by_class[cls])):
-            members = _by_use(by_class[cls], check, rank)
-            if len(members) <= PAIRWISE_UP_TO:
-                dropped: list[str] = []
-                for name in reversed(members):  # the least used first
-                    if stood_in_for(name, [m for m in members if m != name and m not in dropped]):
-                        dropped.append(name)
-                if dropped:
-                    trial_used, trial = _without(task, kept, used, dropped, close, budget, deadline)
-                    if trial is not None and len(trial_used) < len(used):
-                        used, check = trial_used, trial
-            continue
-        while True:
-            members = _by_use([m for m in by_class[cls] if m in used], check, rank)
-            if len(members) < 2:
-                break
-            trial_used, trial = _without(task, kept, used, members[1:], close, budget, deadline)
-            if trial is None and len(members) > 3:
-                trial_used, trial = _without(task, kept, used, members[len(members) // 2 :], close, budget, deadline)
-            if trial is None or len(trial_used) >= len(used):
-                break  # no smaller set reaches the goal (closure may bring the dropped ones back)
-            used, check = trial_used, trial
+        if order.interchangeable(sorted(by_class[cls]), reached):
+            used, check = _fewest_of_class(repair, by_class[cls], used, rank, check)
+        else:
+            used, check = _without_stood_in_for(repair, by_class[cls], used, rank, check, order, reached)
+    return used, check
+
+
+def _fewest_of_class(
+    repair: _Repair, members: list[str], used: set[str], rank: Mapping[str, int], check: Reachability
+) -> tuple[set[str], Reachability]:
+    """``used`` with the most used of ``members`` alone if the goal stays relaxed-reachable, else
+    without the less used half while it does."""
+    while True:
+        ordered = _by_use([m for m in members if m in used], check, rank)
+        if len(ordered) < 2:
+            break
+        trial_used, trial = _without(repair, used, ordered[1:])
+        if trial is None and len(ordered) > 3:
+            trial_used, trial = _without(repair, used, ordered[len(ordered) // 2 :])
+        if trial is None or len(trial_used) >= len(used):
+            break  # no smaller set reaches the goal (closure may bring the dropped ones back)
+        used, check = trial_used, trial
+    return used, check
+
+
+def _without_stood_in_for(
+    repair: _Repair,
+    members: list[str],
+    used: set[str],
+    rank: Mapping[str, int],
+    check: Reachability,
+    order: RepairOrder,
+    reached: Mapping[GroundAtom, object],
+) -> tuple[set[str], Reachability]:
+    """``used`` without the ``members`` another member can stand in for (the least used first), if
+    the goal stays relaxed-reachable; past ``PAIRWISE_UP_TO`` members they are not compared."""
+    ordered = _by_use(members, check, rank)
+    if len(ordered) > PAIRWISE_UP_TO:
+        return used, check
+    dropped: list[str] = []
+    for name in reversed(ordered):  # the least used first
+        if order.stood_in_for(name, [m for m in ordered if m != name and m not in dropped], reached):
+            dropped.append(name)
+    if dropped:
+        trial_used, trial = _without(repair, used, dropped)
+        if trial is not None and len(trial_used) < len(used):
+            return trial_used, trial
     return used, check
 
 
@@ -416,20 +458,13 @@ def _by_use(members: list[str], check: Reachability, rank: Mapping[str, int]) ->
     return sorted(members, key=lambda n: (-uses.get(n, 0), rank.get(n, len(rank)), n))
 
 
-def _without(
-    task: PlanningTask,
-    kept: frozenset[str],
-    used: set[str],
-    dropped: list[str],
-    close: CloseFn,
-    budget: int,
-    deadline: float,
-) -> tuple[set[str], Reachability | None]:
+def _without(repair: _Repair, used: set[str], dropped: list[str]) -> tuple[set[str], Reachability | None]:
     """``used`` without ``dropped`` (and without what its relaxed plan then leaves unused), if the goal
     stays relaxed-reachable."""
+    kept = repair.kept
     trial = used - set(dropped)
-    closed, _ = close(kept | frozenset(trial), kept)
-    attempt = relaxed_reachability(task, closed, budget, deadline)
+    closed, _ = repair.close(kept | frozenset(trial), kept)
+    attempt = relaxed_reachability(repair.task, closed, repair.budget, repair.deadline)
     if not attempt.reachable:
         return used, None
     # what the relaxed plan uses, closure's additions included (they stay only through their cause)
