@@ -9,7 +9,7 @@ from support import REPO
 from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.io import load_domain
 from relevance_plan.pddl.parser import read_problem
-from relevance_plan.relevance.prune import ranked_names, widen
+from relevance_plan.relevance.prune import Widening, ranked_names, widen
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
 from relevance_plan.relevance.task import PlanningTask
 
@@ -106,7 +106,7 @@ def test_widening_keeps_set_aside_alternatives_aside_and_brings_them_back_last()
     assert len(aside) > 10 and all(name.startswith("xtruck") for name in aside)
     instance_objects = {name for name in task.problem.objects if not name.startswith("x")}
     assert not instance_objects <= first.kept
-    widened, _ = widen(first, 0.5, frozenset(), scoring.model, goal_filter=True)
+    widened, _ = widen(first, Widening(0.5, goal_filter=True), frozenset(), scoring.model)
     # the instance's own objects come back first, but for an idle twin of a kept one (package4,
     # at s1 like package3, is in no goal)
     profiles = task.object_profiles

@@ -19,7 +19,7 @@ from relevance_plan.relevance.analysis import (
 )
 from relevance_plan.relevance.closure import close_over_constraints
 from relevance_plan.relevance.knowledge import parse_model
-from relevance_plan.relevance.prune import Thresholds, prune_with_scores, select_relevant
+from relevance_plan.relevance.prune import PruneSettings, Thresholds, prune_with_scores, select_relevant
 from relevance_plan.relevance.scorers import SCORERS, ScoreRequest
 from relevance_plan.relevance.scorers.model import task_entropy
 from relevance_plan.relevance.task import PlanningTask
@@ -176,7 +176,7 @@ def test_blocked_alternatives_are_set_aside_when_a_free_one_is_kept(task, model)
     scores = score(task, model)
     plain = prune_with_scores(task, scores, Thresholds(), model)
     assert {"plastic_cup_1", "paper_cup_1", "dinner_plate_1"} <= plain.kept and plain.set_aside == frozenset()
-    narrowed = prune_with_scores(task, scores, Thresholds(), model, prefer_free=True)
+    narrowed = prune_with_scores(task, scores, Thresholds(), model, settings=PruneSettings(prefer_free=True))
     # the plate stands on the plastic cup; the paper cup stands free and serves as well
     assert narrowed.set_aside == {"plastic_cup_1"}
     assert "paper_cup_1" in narrowed.kept
@@ -186,7 +186,9 @@ def test_blocked_alternatives_are_set_aside_when_a_free_one_is_kept(task, model)
 
 def test_a_blocked_object_without_a_free_alternative_stays(task, model):
     # tau_e = 0.4 selects the plastic cup (R = 0.65) but not the paper cup (R = 0.36)
-    result = prune_with_scores(task, score(task, model), Thresholds(0.2, 0.4), model, prefer_free=True)
+    result = prune_with_scores(
+        task, score(task, model), Thresholds(0.2, 0.4), model, settings=PruneSettings(prefer_free=True)
+    )
     assert "paper_cup_1" not in result.selected
     assert result.set_aside == frozenset()
     assert {"plastic_cup_1", "dinner_plate_1"} <= result.kept
@@ -195,7 +197,9 @@ def test_a_blocked_object_without_a_free_alternative_stays(task, model):
 def test_types_are_not_treated_as_alternatives(task):
     # the goal scorer's classes are PDDL types: every block of a tower may be needed
     scores = SCORERS["goal"](task, ScoreRequest())
-    assert prune_with_scores(task, scores, Thresholds(), prefer_free=True).set_aside == frozenset()
+    assert (
+        prune_with_scores(task, scores, Thresholds(), settings=PruneSettings(prefer_free=True)).set_aside == frozenset()
+    )
 
 
 def test_closure_rules_are_inferred_from_schemas(task):

@@ -68,7 +68,7 @@ def assert_relevant_covers_kept(session: Session) -> None:
     """Every kept object is relevant or was put back (closure, soundness, the reachability repair)."""
     selection = session.selection
     assert selection is not None
-    if not selection.unpruned:
+    if not selection.unpruned_reason:
         assert session.kept - {r.name for r in selection.restored} <= session.relevant
 
 

@@ -72,7 +72,7 @@ from relevance_plan.planning.planners.up.adapter import UP_STATUS, up_status_nam
 from relevance_plan.planning.results import Attempt, PlanStatus
 from relevance_plan.planning.validate import validate_plan
 from relevance_plan.relevance.knowledge import KnowledgeModel, load_model
-from relevance_plan.relevance.prune import DEFAULT_TAU, Selection, Thresholds, widen
+from relevance_plan.relevance.prune import DEFAULT_TAU, Selection, Thresholds, Widening, widen
 from relevance_plan.relevance.scorers import SCORERS
 from relevance_plan.relevance.setup import Scoring, resolve_model, score_problem
 from relevance_plan.relevance.task import PlanningTask
@@ -471,7 +471,9 @@ class _AnytimeSearch:
                 break
             assert self.stage is not None and selection is not None
             goal_filter = self.options.goal_filter and self.options.narrows_first
-            selection, extra = widen(selection, self.options.widen_factor, extra, self.stage.scoring.model, goal_filter)
+            selection, extra = widen(
+                selection, Widening(self.options.widen_factor, goal_filter), extra, self.stage.scoring.model
+            )
         yield self._final()
 
     def _limit(self, final: bool) -> float | None:

@@ -76,7 +76,7 @@ from relevance_plan.planning.validate import (
 )
 from relevance_plan.progress import ProgressCallback, ProgressEvent
 from relevance_plan.relevance.knowledge import KnowledgeModel
-from relevance_plan.relevance.prune import Selection, Thresholds, widen
+from relevance_plan.relevance.prune import Selection, Thresholds, Widening, widen
 from relevance_plan.relevance.setup import Scoring, ScoringOptions, score_problem
 from relevance_plan.relevance.task import PlanningTask
 from relevance_plan.supervision.process import CancelScope, cancel_scope
@@ -293,7 +293,7 @@ def run_attempts(
             continue
         widen_started = time.perf_counter()
         try:
-            current, extra = widen(pruned, options.widen_factor, extra, model, goal_filter)
+            current, extra = widen(pruned, Widening(options.widen_factor, goal_filter), extra, model)
         except OutOfTimeError:
             break  # the --timeout ran out while widening: as when it runs out between attempts
         finally:
@@ -577,7 +577,7 @@ def _say_selection(say: Callable[[str], None], selection: Selection, total: int)
         + (f", {len(selection.set_aside)} blocked alternatives set aside)" if selection.set_aside else ")")
     )
     if not selection.removed:
-        say(f"pruned: no ({selection.unpruned})")
+        say(f"pruned: no ({selection.unpruned_reason})")
 
 
 def _plan_unread(

@@ -154,7 +154,7 @@ class PlanResult:
         if self.unpruned_reason:
             return self.unpruned_reason
         if self.selection is not None:
-            return self.selection.unpruned or None
+            return self.selection.unpruned_reason or None
         return "method 'pure' plans the full problem" if self.method == "pure" else None
 
     @property

@@ -10,14 +10,13 @@ from __future__ import annotations
 import os
 from collections.abc import Iterable
 from dataclasses import dataclass, field, replace
-from typing import Any
 
 from relevance_plan.errors import UsageError
 from relevance_plan.pddl.model import Domain
 from relevance_plan.relevance.knowledge import KnowledgeModel, check_model_applies, find_model, load_model
 from relevance_plan.relevance.learning.model import load_learned_model
 from relevance_plan.relevance.learning.scorer import score_learned
-from relevance_plan.relevance.prune import Selection, Thresholds, prune_with_scores
+from relevance_plan.relevance.prune import PruneSettings, Selection, Thresholds, prune_with_scores
 from relevance_plan.relevance.scorers import SCORERS, ScoreRequest, ScoreResult
 from relevance_plan.relevance.sidecar import necessary_objects
 from relevance_plan.relevance.task import PlanningTask
@@ -77,20 +76,20 @@ class Scoring:
     def scorer(self) -> str:
         return self.scores.scorer
 
-    def prune(self, thresholds: Thresholds, **how: Any) -> Selection:
-        return prune_with_scores(self.task, self.scores, thresholds, self.model, **how)
+    def prune(self, thresholds: Thresholds, settings: PruneSettings = PruneSettings()) -> Selection:
+        return prune_with_scores(self.task, self.scores, thresholds, self.model, settings=settings)
 
     def first_selection(self, narrow: bool = True) -> Selection:
         """The objects ``prune`` writes and ``plan`` tries first: thresholds and closure, and when
         ``narrow`` (the relevance method) the goal filter, the set-aside of blocked alternatives and of
         the alternatives no relaxed plan needs (a bet on the first attempt only: widening never sets
         aside, so it brings them back)."""
-        return self.prune(
-            self.options.thresholds,
+        settings = PruneSettings(
             goal_filter=self.options.goal_filter and narrow,
             prefer_free=self.options.prefer_free and narrow,
             economical=self.options.economical and narrow,
         )
+        return self.prune(self.options.thresholds, settings)
 
 
 def resolve_model(

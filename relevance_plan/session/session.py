@@ -51,8 +51,9 @@ from relevance_plan.planning.planners.base import RunOutcome
 from relevance_plan.planning.results import PlanResult, PlanStatus
 from relevance_plan.planning.validate import validate_plan
 from relevance_plan.relevance.analysis import ConstraintRule, FactIndex, single_valued_predicates
+from relevance_plan.relevance.closure import constraint_rules
 from relevance_plan.relevance.knowledge import KnowledgeModel
-from relevance_plan.relevance.prune import Selection, constraint_rules, prune_with_scores
+from relevance_plan.relevance.prune import Selection, prune_with_scores
 from relevance_plan.relevance.scorers import ScoreResult
 from relevance_plan.relevance.setup import Scoring, ScoringOptions, choose_scorer, resolve_model
 from relevance_plan.relevance.task import PlanningTask
