@@ -890,55 +890,13 @@ def _read_problem_from(
 ) -> Problem:
     reader = _Reader(path)
     name, sections = reader.header(root, "problem")
-    found: dict[str, Any] = {"init": []}
-    requirements: frozenset[str] = frozenset()
-    for section in sections:
-        key = reader.keyword_of(section)
-        if key is None or not isinstance(section, Node):
-            reader.fail("expected a '(:section ...)'", section)
-        if key in found and key != ":init":
-            reader.fail(f"section '{key}' appears twice", section)
-        body = section.items[1:]
-        if key == ":domain":
-            if len(body) != 1:
-                reader.fail("expected '(:domain NAME)'", section)
-            domain_name = reader.symbol(body[0], "a domain name")
-            if domain_name != domain.name:
-                reader.fail(
-                    f"problem is for domain '{domain_name}', but the domain file defines '{domain.name}'",
-                    section,
-                    DomainMismatchError,
-                )
-            found[key] = domain_name
-        elif key == ":requirements":
-            requirements = reader.requirements(body)
-            found[key] = True
-        elif key == ":init":
-            found["init"].extend(body)
-        elif key in (":objects", ":goal", ":constraints", ":metric"):
-            found[key] = section
-        elif key == ":length":
-            found[key] = True  # PDDL 1.2's plan-length hint: planners ignore it
-        else:
-            reader.fail(f"unknown problem section '{key}'", section)
-    if ":domain" not in found:
-        reader.fail("missing '(:domain NAME)'", root)
-    if ":goal" not in found and ":constraints" not in found:
-        reader.fail("missing '(:goal ...)'", root)
+    found, requirements = _problem_sections(reader, root, sections, domain)
     objects, display, groups = _read_objects(reader, found.get(":objects"), domain)
     check_deadline(deadline, "reading the objects", path)
     known = dict(domain.constants)
     known.update(objects)
     scope = _Scope(domain.types, domain.predicates, domain.functions, MappingProxyType(known), {}, in_problem=True)
-    if atoms is None:
-        init = _read_init(reader, found["init"], scope, objects, deadline)
-    else:
-        init = _read_flat_init(atoms, scope, objects, path, deadline)
-        if found["init"]:  # the entries between the stretches: numeric values, negative and timed literals
-            entries = _read_init(reader, found["init"], scope, objects, deadline)
-            if entries.facts:
-                raise PDDLParseError("a fact among the entries")  # none holds one: read in full if it did
-            init = _InitParts(init.facts, entries.numeric, entries.timed, sorted(init.spans + entries.spans))
+    init = _read_problem_init(reader, found["init"], scope, objects, deadline, atoms)
     goal = _read_goal(reader, found.get(":goal"), replace(scope, preferences=True))
     constraints = None
     if ":constraints" in found:
@@ -961,6 +919,75 @@ def _read_problem_from(
         init_spans=tuple(init.spans),
         init_order=MappingProxyType(init.facts),
     )
+
+
+def _problem_sections(
+    reader: _Reader, root: Node, sections: list[Item], domain: Domain
+) -> tuple[dict[str, Any], frozenset[str]]:
+    """The problem's sections by keyword (``init``: the entries of every ``:init``), and its requirements."""
+    found: dict[str, Any] = {"init": []}
+    requirements: frozenset[str] = frozenset()
+    for section in sections:
+        key = reader.keyword_of(section)
+        if key is None or not isinstance(section, Node):
+            reader.fail("expected a '(:section ...)'", section)
+        if key in found and key != ":init":
+            reader.fail(f"section '{key}' appears twice", section)
+        body = section.items[1:]
+        if key == ":domain":
+            found[key] = _domain_name(reader, section, domain)
+        elif key == ":requirements":
+            requirements = reader.requirements(body)
+            found[key] = True
+        elif key == ":init":
+            found["init"].extend(body)
+        elif key in (":objects", ":goal", ":constraints", ":metric"):
+            found[key] = section
+        elif key == ":length":
+            found[key] = True  # PDDL 1.2's plan-length hint: planners ignore it
+        else:
+            reader.fail(f"unknown problem section '{key}'", section)
+    if ":domain" not in found:
+        reader.fail("missing '(:domain NAME)'", root)
+    if ":goal" not in found and ":constraints" not in found:
+        reader.fail("missing '(:goal ...)'", root)
+    return found, requirements
+
+
+def _domain_name(reader: _Reader, section: Node, domain: Domain) -> str:
+    """The name of ``(:domain NAME)``; DomainMismatchError unless it is ``domain``'s."""
+    body = section.items[1:]
+    if len(body) != 1:
+        reader.fail("expected '(:domain NAME)'", section)
+    domain_name = reader.symbol(body[0], "a domain name")
+    if domain_name != domain.name:
+        reader.fail(
+            f"problem is for domain '{domain_name}', but the domain file defines '{domain.name}'",
+            section,
+            DomainMismatchError,
+        )
+    return domain_name
+
+
+def _read_problem_init(
+    reader: _Reader,
+    entries: list[Item],
+    scope: _Scope,
+    objects: Mapping[str, str],
+    deadline: float | None,
+    atoms: _PlainAtoms | None,
+) -> _InitParts:
+    """The initial state: every entry read, or (``atoms``) the plain atoms read flat and the other entries in full."""
+    if atoms is None:
+        return _read_init(reader, entries, scope, objects, deadline)
+    init = _read_flat_init(atoms, scope, objects, reader.path, deadline)
+    if not entries:
+        return init
+    # the entries between the stretches: numeric values, negative and timed literals
+    others = _read_init(reader, entries, scope, objects, deadline)
+    if others.facts:
+        raise PDDLParseError("a fact among the entries")  # none holds one: read in full if it did
+    return _InitParts(init.facts, others.numeric, others.timed, sorted(init.spans + others.spans))
 
 
 def _single(reader: _Reader, section: Node, key: str, scope: _Scope) -> f.Formula:
