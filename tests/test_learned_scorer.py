@@ -9,13 +9,13 @@ from pathlib import Path
 
 import pytest
 
-from relevance_plan.batch.learn import LabelledProblem, fit_model, with_hubs
 from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.errors import ModelError
 from relevance_plan.generators.classic import generate_classic_problem
 from relevance_plan.io import load_domain
 from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.relevance.learning.features import NAMED, FeatureConfig, hub_predicates, object_features
+from relevance_plan.relevance.learning.fit import LabelledProblem, fit_model, with_hubs
 from relevance_plan.relevance.learning.model import load_learned_model, model_text
 from relevance_plan.relevance.learning.scorer import KEEP_AT, calibrated, score_learned
 from relevance_plan.relevance.task import PlanningTask
