@@ -140,7 +140,7 @@ def from_scratch(session: Session):
     text = session.scene.problem_text()
     started = time.perf_counter()
     problem = read_problem(text, session.domain)
-    scoring = score_problem(PlanningTask(session.domain, problem), session.options, model=session.model)
+    scoring = score_problem(PlanningTask(session.domain, problem), session.options, knowledge_model=session.model)
     result = scoring.prune(session.options.thresholds), scoring.first_selection()
     return time.perf_counter() - started, scoring.scores, result
 

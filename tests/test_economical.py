@@ -106,7 +106,7 @@ def test_widening_keeps_set_aside_alternatives_aside_and_brings_them_back_last()
     assert len(aside) > 10 and all(name.startswith("xtruck") for name in aside)
     instance_objects = {name for name in task.problem.objects if not name.startswith("x")}
     assert not instance_objects <= first.kept
-    widened, _ = widen(first, Widening(0.5, goal_filter=True), frozenset(), scoring.model)
+    widened, _ = widen(first, Widening(0.5, goal_filter=True), frozenset(), scoring.knowledge_model)
     # the instance's own objects come back first, but for an idle twin of a kept one (package4,
     # at s1 like package3, is in no goal)
     profiles = task.object_profiles

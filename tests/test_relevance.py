@@ -18,10 +18,10 @@ from relevance_plan.relevance.analysis import (
     single_valued_predicates,
 )
 from relevance_plan.relevance.closure import close_over_constraints
-from relevance_plan.relevance.knowledge import parse_model
+from relevance_plan.relevance.knowledge import parse_knowledge_model
 from relevance_plan.relevance.prune import PruneSettings, Thresholds, prune_with_scores, select_relevant
 from relevance_plan.relevance.scorers import SCORERS, ScoreRequest
-from relevance_plan.relevance.scorers.model import task_entropy
+from relevance_plan.relevance.scorers.knowledge_model import task_entropy
 from relevance_plan.relevance.task import PlanningTask
 
 MODEL = """
@@ -72,11 +72,11 @@ def task(coffee_domain_path):
 
 @pytest.fixture
 def model():
-    return parse_model(MODEL, "m.yaml")
+    return parse_knowledge_model(MODEL, "m.yaml")
 
 
 def score(planning_task, model, **kwargs):
-    return SCORERS["model"](planning_task, ScoreRequest(model=model, **kwargs))
+    return SCORERS["model"](planning_task, ScoreRequest(knowledge_model=model, **kwargs))
 
 
 def test_class_relevance_sums_over_tasks(task, model):
@@ -225,7 +225,7 @@ def test_closure_is_transitive_and_pure():
 
 def test_model_dependencies_extend_closure(task):
     text = MODEL + "dependencies:\n  - {predicate: human-at, when_kept: 2, restore: 1, reason: who sits there}\n"
-    model = parse_model(text, "m.yaml")
+    model = parse_knowledge_model(text, "m.yaml")
     result = prune_with_scores(task, score(task, model), Thresholds(), model)
     assert "alice" in result.kept
 
@@ -314,7 +314,7 @@ def test_oracle_needs_a_sidecar(task):
 )
 def test_invalid_models_name_file_and_line(mutate, match, line):
     with pytest.raises(ModelError, match=match) as caught:
-        parse_model(mutate(MODEL), "bad.yaml")
+        parse_knowledge_model(mutate(MODEL), "bad.yaml")
     assert caught.value.path == "bad.yaml"
     if line is not None:
         assert caught.value.line == line

@@ -37,7 +37,7 @@ def from_scratch(session: Session):
     """Determination from scratch on the current state: write it out, read it back, score, prune
     (the paper's relevance, and the first selection ``prune`` writes)."""
     problem = read_problem(session.scene.problem_text(), session.domain)
-    scoring = score_problem(PlanningTask(session.domain, problem), session.options, model=session.model)
+    scoring = score_problem(PlanningTask(session.domain, problem), session.options, knowledge_model=session.model)
     return scoring.scores, scoring.prune(session.options.thresholds), scoring.first_selection()
 
 

@@ -22,7 +22,7 @@ from relevance_plan.errors import InputFileError, RelevancePlanError
 from relevance_plan.io import load_domain, read_bytes
 from relevance_plan.planning.loop import PLAN_OPTION_FIELDS, PlanOptions
 from relevance_plan.planning.planners.registry import DEFAULT_PLANNER_CONFIG, make_planner
-from relevance_plan.relevance.knowledge import find_model
+from relevance_plan.relevance.knowledge import find_knowledge_model
 from relevance_plan.relevance.sidecar import sidecar_path
 
 
@@ -73,7 +73,7 @@ def _model_file(options: PlanOptions, domain_path: str | None) -> str | None:
         name = load_domain(domain_path).name
     except RelevancePlanError:
         return None  # the job itself will report the bad domain
-    found = find_model(name, domain_path)
+    found = find_knowledge_model(name, domain_path)
     return str(found) if found is not None else None
 
 

@@ -35,8 +35,8 @@ from relevance_plan.planning.planners.base import PlannerStatus
 from relevance_plan.planning.planners.registry import DEFAULT_PLANNER_CONFIG, make_planner
 from relevance_plan.planning.validate import validate_plan
 from relevance_plan.relevance.learning.features import FeatureConfig, object_features
-from relevance_plan.relevance.learning.fit import LabelledProblem, fit_model, with_hubs
-from relevance_plan.relevance.learning.model import LearnedModel
+from relevance_plan.relevance.learning.fit import LabelledProblem, fit_learned_model, with_hubs
+from relevance_plan.relevance.learning.learned_model import LearnedModel
 from relevance_plan.relevance.prune import prune_with_scores
 from relevance_plan.relevance.scorers import ScoreResult
 from relevance_plan.relevance.task import PlanningTask
@@ -220,7 +220,7 @@ def _report(
 ) -> LearnReport:
     if not labelled:
         raise UsageError("no training problem was solved: nothing to learn from (raise --time-limit?)")
-    model = fit_model(domain, labelled, config, labels, seed)
+    model = fit_learned_model(domain, labelled, config, labels, seed)
     seconds = time.perf_counter() - started
     training = dict(model.training, seconds=round(seconds, 2))
     return LearnReport(replace(model, training=training), labelled, skipped, seconds)

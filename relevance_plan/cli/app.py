@@ -225,7 +225,7 @@ def _inquiries(scoring: Scoring, result: Selection) -> dict:
     from relevance_plan.relevance.prune import select_relevant
     from relevance_plan.relevance.scene import kind_of
 
-    task, model, scores = scoring.task, scoring.model, scoring.scores
+    task, model, scores = scoring.task, scoring.knowledge_model, scoring.scores
     structural = set()
     if model is not None:
         structural = {c.name for c in model.classes.values() if c.fixed_relevance is not None or c.from_contents}

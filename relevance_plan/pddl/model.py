@@ -1,4 +1,4 @@
-"""The immutable PDDL model: domains, problems, actions, derived predicates, metrics.
+"""Immutable PDDL values: ``Domain``, ``Problem``, actions, derived predicates, metrics.
 
 Built by ``parser.py``, written back by ``formatter.py`` (whole files) and
 ``writer.py`` (the user's own file minus pruned objects).  Names are

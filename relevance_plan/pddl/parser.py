@@ -1,4 +1,4 @@
-"""Read PDDL text into the model of ``model.py``: PDDL 3.1 without PDDL+.
+"""Read PDDL text into ``Domain`` and ``Problem`` values (``model.py``): PDDL 3.1 without PDDL+.
 
 Typed STRIPS and ADL, action costs and numeric fluents, durative actions
 (with duration inequalities), derived predicates, timed initial literals,
@@ -44,44 +44,7 @@ from relevance_plan.pddl.model import (
 )
 from relevance_plan.pddl.sexpr import Item, Node, Symbol, check_deadline, collection_paused, parse_sexpr
 
-# Accepted as written; PDDL+ is refused (see UNSUPPORTED_REQUIREMENTS).
-KNOWN_REQUIREMENTS = frozenset(
-    {
-        ":strips",
-        ":typing",
-        ":negative-preconditions",
-        ":disjunctive-preconditions",
-        ":equality",
-        ":existential-preconditions",
-        ":universal-preconditions",
-        ":quantified-preconditions",
-        ":conditional-effects",
-        ":adl",
-        ":action-costs",
-        ":fluents",
-        ":numeric-fluents",
-        ":durative-actions",
-        ":duration-inequalities",
-        ":derived-predicates",
-        ":timed-initial-literals",
-        ":preferences",
-        ":constraints",
-        ":goal-utilities",
-        ":domain-axioms",
-        ":safety-constraints",
-        ":expression-evaluation",
-        ":open-world",
-        ":true-negation",
-        ":ucpop",
-        ":foralls",
-        ":action-expansions",
-        ":foreach-expansions",
-        ":dag-expansions",
-        ":subgoals-through-axioms",
-        ":numbers",
-        ":timed-initial-fluents",
-    }
-)
+# Requirements are accepted as written but these, of PDDL+ and of other formalisms, refused naming the construct.
 UNSUPPORTED_REQUIREMENTS = {
     ":continuous-effects": "continuous effects (PDDL+)",
     ":processes": "processes (PDDL+)",

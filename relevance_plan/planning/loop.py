@@ -522,7 +522,7 @@ def _prune_and_plan(
         call_planner,
         options,
         started=started,
-        model=scoring.model if scoring else None,
+        model=scoring.knowledge_model if scoring else None,
         progress=progress,
         race=race,
         budgets=budgets,

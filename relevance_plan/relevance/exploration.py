@@ -248,8 +248,8 @@ def _relaxed_schemas(task: PlanningTask) -> list[_Schema]:
     def implied(predicate: str, type_name: str) -> bool:
         if type_name not in members:
             members[type_name] = [o for o, t in typed.items() if domain.is_subtype(t, type_name)]
-        held = holders[predicate]
-        return all(o in held for o in members[type_name])
+        holding = holders[predicate]
+        return all(o in holding for o in members[type_name])
 
     result = []
     for schema in _schemas(domain):

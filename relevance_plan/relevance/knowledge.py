@@ -1,7 +1,7 @@
 """The knowledge model: the offline stand-in for the paper's GPT-4o answers.
 
 One YAML file per domain (``domains/<name>/relevance.yaml``), schema version 1,
-documented in ``docs/knowledge-model.md``.  It is validated on load; every
+documented in ``docs/knowledge-knowledge_model.md``.  It is validated on load; every
 error names the file and the line of the offending entry.
 """
 
@@ -208,7 +208,7 @@ class _Checker:
                 )
 
 
-def parse_model(text: str, path: str = "<model>") -> KnowledgeModel:
+def parse_knowledge_model(text: str, path: str = "<model>") -> KnowledgeModel:
     """Validate and build a knowledge model from YAML text."""
     data = _load_yaml(text, path)
     check = _Checker(path)
@@ -494,13 +494,13 @@ def _check_distribution(check: _Checker, section: _LineDict, probabilities: Mapp
         check.fail(f"{what} sums to {total:.3f}, not 1", section)
 
 
-def load_model(path: str | os.PathLike[str]) -> KnowledgeModel:
+def load_knowledge_model(path: str | os.PathLike[str]) -> KnowledgeModel:
     from relevance_plan.io import read_text
 
-    return parse_model(read_text(path, "knowledge model"), str(path))
+    return parse_knowledge_model(read_text(path, "knowledge model"), str(path))
 
 
-def shipped_models() -> dict[str, Path]:
+def shipped_knowledge_models() -> dict[str, Path]:
     """Domain name -> the knowledge model shipped for it (``data/domains/<world>/relevance.yaml``)."""
     return {
         folder.name: folder / "relevance.yaml"
@@ -509,7 +509,7 @@ def shipped_models() -> dict[str, Path]:
     }
 
 
-def find_model(domain_name: str, domain_path: str | None) -> Path | None:
+def find_knowledge_model(domain_name: str, domain_path: str | None) -> Path | None:
     """The model next to the domain file, else the one shipped for a domain of that name.
 
     The name is only ever a key of :func:`shipped_models`, never part of a path:
@@ -519,24 +519,26 @@ def find_model(domain_name: str, domain_path: str | None) -> Path | None:
         beside = Path(domain_path).resolve().parent / "relevance.yaml"
         if beside.is_file():
             return beside
-    return shipped_models().get(domain_name)
+    return shipped_knowledge_models().get(domain_name)
 
 
-def check_model_applies(model: KnowledgeModel, domain: Domain) -> None:
+def check_knowledge_model_applies(knowledge_model: KnowledgeModel, domain: Domain) -> None:
     """Refuse a model for another domain, or one whose scene predicates or dependencies the domain lacks."""
-    if model.domain != domain.name:
-        raise ModelError(f"model is for domain '{model.domain}', not '{domain.name}'", path=model.path)
-    for role, predicate in vars(model.scene).items():
+    if knowledge_model.domain != domain.name:
+        raise ModelError(
+            f"model is for domain '{knowledge_model.domain}', not '{domain.name}'", path=knowledge_model.path
+        )
+    for role, predicate in vars(knowledge_model.scene).items():
         if predicate not in domain.predicates and role != "human_location":
             raise ModelError(
-                f"scene.{role} '{predicate}' is not a predicate of domain '{domain.name}'", path=model.path
+                f"scene.{role} '{predicate}' is not a predicate of domain '{domain.name}'", path=knowledge_model.path
             )
-    for dependency in model.dependencies:
+    for dependency in knowledge_model.dependencies:
         params = domain.predicates.get(dependency.predicate)
         if params is None:
             raise ModelError(
                 f"dependency on '{dependency.predicate}', which is not a predicate of domain '{domain.name}'",
-                path=model.path,
+                path=knowledge_model.path,
                 line=dependency.line,
             )
         for position in (dependency.when_kept, dependency.restore):
@@ -544,7 +546,7 @@ def check_model_applies(model: KnowledgeModel, domain: Domain) -> None:
                 raise ModelError(
                     f"dependency on '{dependency.predicate}': position {position + 1} is beyond its"
                     f" {len(params)} argument(s)",
-                    path=model.path,
+                    path=knowledge_model.path,
                     line=dependency.line,
                 )
 

@@ -34,7 +34,7 @@ from relevance_plan.relevance.closure import ConstraintClosure, Restored
 from relevance_plan.relevance.knowledge import KnowledgeModel, check_threshold
 from relevance_plan.relevance.repair import repair_selection
 from relevance_plan.relevance.scorers import ScoreResult
-from relevance_plan.relevance.scorers.model import UNKNOWN_CLASS
+from relevance_plan.relevance.scorers.knowledge_model import UNKNOWN_CLASS
 from relevance_plan.relevance.task import PlanningTask
 from relevance_plan.relevance.types import static_predicates
 

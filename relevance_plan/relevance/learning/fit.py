@@ -27,7 +27,7 @@ from relevance_plan.relevance.learning.features import (
     Features,
     hub_predicates,
 )
-from relevance_plan.relevance.learning.model import LearnedModel, domain_signature
+from relevance_plan.relevance.learning.learned_model import LearnedModel, domain_signature
 from relevance_plan.relevance.task import PlanningTask
 
 L2 = 1.0  # ridge penalty of the logistic fit (on the summed, per-problem-balanced loss)
@@ -58,7 +58,7 @@ def with_hubs(config: FeatureConfig, domain: Domain, problems: Iterable[Problem]
     return replace(config, hubs=frozenset(hubs))
 
 
-def fit_model(
+def fit_learned_model(
     domain: Domain, problems: Sequence[LabelledProblem], config: FeatureConfig, labels: str, seed: int
 ) -> LearnedModel:
     """A logistic model of P(needed | features) fitted on ``problems``, with its keep threshold."""
@@ -87,7 +87,7 @@ def fit_model(
     theta = _newton(x, y, w, L2)
     named = tuple(float(v) for v in theta[:NAMED])
     hashed = {index: float(theta[column[index]]) for index in used if abs(theta[column[index]]) > 1e-9}
-    model = LearnedModel(
+    learned_model = LearnedModel(
         domain=domain_signature(domain),
         config=config,
         named_weights=named,
@@ -97,10 +97,10 @@ def fit_model(
         seen_predicates=frozenset(),
         labels=labels,
     )
-    threshold = choose_threshold(model, problems)
+    threshold = choose_threshold(learned_model, problems)
     seen_types, seen_predicates = _seen(problems)
     return replace(
-        model,
+        learned_model,
         threshold=threshold,
         seen_types=seen_types,
         seen_predicates=seen_predicates,
@@ -136,15 +136,15 @@ def _newton(x: Any, y: Any, w: Any, l2: float, iterations: int = 30) -> Any:
     return theta
 
 
-def choose_threshold(model: LearnedModel, problems: Sequence[LabelledProblem]) -> float:
+def choose_threshold(learned_model: LearnedModel, problems: Sequence[LabelledProblem]) -> float:
     """The probability the first attempt keeps from: each training problem's lowest probability of a
     needed object; the threshold keeps every needed object on ``COVERAGE`` of the problems."""
     lowest = []
     for problem in problems:
         needed = [
-            model.probability(vector)
+            learned_model.probability(vector)
             for name in problem.positives
-            if (vector := problem.vectors.get(name)) is not None and _judged(model, vector)
+            if (vector := problem.vectors.get(name)) is not None and _judged(learned_model, vector)
         ]
         if needed:
             lowest.append(min(needed))
@@ -156,11 +156,11 @@ def choose_threshold(model: LearnedModel, problems: Sequence[LabelledProblem]) -
     return min(max(value, MIN_THRESHOLD), MAX_THRESHOLD)
 
 
-def _judged(model: LearnedModel, vector: Features) -> bool:
+def _judged(learned_model: LearnedModel, vector: Features) -> bool:
     """Whether the scorer scores this object by the model (not a goal object, not ruled out)."""
     if vector.get(GOAL_NAMED):
         return False
-    return not (model.respect_goal_zero and vector.get(GOAL_ZERO))
+    return not (learned_model.respect_goal_zero and vector.get(GOAL_ZERO))
 
 
 def _seen(problems: Sequence[LabelledProblem]) -> tuple[frozenset[str], frozenset[str]]:

@@ -10,7 +10,7 @@ from collections.abc import Callable
 
 from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult
 from relevance_plan.relevance.scorers.goal import score_by_goal
-from relevance_plan.relevance.scorers.model import score_by_model
+from relevance_plan.relevance.scorers.knowledge_model import score_by_knowledge_model
 from relevance_plan.relevance.scorers.oracle import score_by_oracle
 from relevance_plan.relevance.scorers.random import score_randomly
 from relevance_plan.relevance.task import PlanningTask
@@ -18,7 +18,7 @@ from relevance_plan.relevance.task import PlanningTask
 Scorer = Callable[[PlanningTask, ScoreRequest], ScoreResult]
 
 SCORERS: dict[str, Scorer] = {
-    "model": score_by_model,
+    "model": score_by_knowledge_model,
     "goal": score_by_goal,
     "random": score_randomly,
     "oracle": score_by_oracle,

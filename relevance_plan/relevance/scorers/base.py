@@ -10,7 +10,7 @@ from relevance_plan.relevance.knowledge import KnowledgeModel
 
 @dataclass(frozen=True)
 class ScoreRequest:
-    model: KnowledgeModel | None = None
+    knowledge_model: KnowledgeModel | None = None
     objective: str | None = None
     model_task: str | None = None  # the knowledge model's task (a kind of activity), not the planning task
     human: str | None = None
