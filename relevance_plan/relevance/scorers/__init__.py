@@ -2,6 +2,14 @@
 
 A scorer is a function ``score(task, request) -> ScoreResult`` registered in
 ``SCORERS``; the CLI's ``--scorer`` choices come from this dict.
+
+    base.py             ScoreRequest and ScoreResult, shared by every scorer
+    goal.py             ``goal``: roles found by regressing the goal through the actions
+    knowledge_model.py  ``model``: the paper's relevance model over a knowledge model
+    random.py           ``random``: the paper's baseline
+    oracle.py           ``oracle``: the generator's necessary set (evaluation only)
+
+The learned scorer (``learned:MODEL``) is in ``relevance.learning``.
 """
 
 from __future__ import annotations
