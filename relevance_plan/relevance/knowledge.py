@@ -10,7 +10,7 @@ from __future__ import annotations
 import functools
 import math
 import os
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Collection, Iterator, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from types import MappingProxyType
@@ -406,15 +406,32 @@ def _read_humans(
     return humans
 
 
+def _human_tables(
+    check: _Checker,
+    name: str,
+    entry: _LineDict,
+    section: str,
+    known: tuple[str, Collection[str]] | None,
+    not_a_table: str,
+) -> Iterator[tuple[str, _LineDict]]:
+    """(key, table) of each entry of the human's ``section``, in order; a key not among ``known``
+    (what they are, and their names) or a value that is not a table fails (``not_a_table`` says
+    what it must be, ``{}`` standing for the key)."""
+    for key, table in check.mapping(entry, section, required=False).items():
+        if known is not None and key not in known[1]:
+            check.fail(f"human '{name}' names unknown {known[0]} '{key}'", entry, section)
+        if not isinstance(table, _LineDict):
+            check.fail(f"human '{name}': {not_a_table.format(key)}", entry, section)
+        yield key, table
+
+
 def _human_objectives(
     check: _Checker, name: str, entry: _LineDict, task_classes: Mapping[str, Any], objectives: Mapping[str, Any]
 ) -> dict[str, Mapping[str, float]]:
     found = {}
-    for objective, tasks in check.mapping(entry, "objectives", required=False).items():
-        if objective not in objectives:
-            check.fail(f"human '{name}' names unknown objective '{objective}'", entry, "objectives")
-        if not isinstance(tasks, _LineDict):
-            check.fail(f"human '{name}': objective '{objective}' must map tasks to probabilities", entry, "objectives")
+    for objective, tasks in _human_tables(
+        check, name, entry, "objectives", ("objective", objectives), "objective '{}' must map tasks to probabilities"
+    ):
         probabilities = check.probabilities(tasks, f"{name}: P(task | {objective})")
         _check_distribution(check, tasks, probabilities, f"{name}: P(task | {objective})")
         for task in probabilities:
@@ -428,9 +445,9 @@ def _human_tasks(
     check: _Checker, name: str, entry: _LineDict, classes: Mapping[str, Any]
 ) -> dict[str, Mapping[str, float]]:
     found = {}
-    for task, entry_classes in check.mapping(entry, "tasks", required=False).items():
-        if not isinstance(entry_classes, _LineDict):
-            check.fail(f"human '{name}': task '{task}' must map classes to probabilities", entry, "tasks")
+    for task, entry_classes in _human_tables(
+        check, name, entry, "tasks", None, "task '{}' must map classes to probabilities"
+    ):
         for class_name in entry_classes:
             if class_name not in classes:
                 check.fail(f"human '{name}' names unknown class '{class_name}'", entry_classes, class_name)
@@ -441,14 +458,10 @@ def _human_tasks(
 def _human_kinds(
     check: _Checker, name: str, entry: _LineDict, classes: Mapping[str, Any]
 ) -> dict[str, Mapping[str, float]]:
-    found = {}
-    for class_name, entry_kinds in check.mapping(entry, "kind_relevance", required=False).items():
-        if class_name not in classes:
-            check.fail(f"human '{name}' names unknown class '{class_name}'", entry, "kind_relevance")
-        if not isinstance(entry_kinds, _LineDict):
-            check.fail(f"human '{name}': kind relevance of '{class_name}' must be a mapping", entry, "kind_relevance")
-        found[class_name] = check.probabilities(entry_kinds, f"{name}: P(kind | {class_name})")
-    return found
+    tables = _human_tables(
+        check, name, entry, "kind_relevance", ("class", classes), "kind relevance of '{}' must be a mapping"
+    )
+    return {class_name: check.probabilities(kinds, f"{name}: P(kind | {class_name})") for class_name, kinds in tables}
 
 
 # A dependency's argument position: PDDL predicates with more arguments than this do not exist.

@@ -214,17 +214,9 @@ def _finish(
         why = f"the selection kept {len(draft.kept)} of {total} objects (more than {full_above:.0%}): the full problem"
         return full_problem(task, scores, thresholds, draft.selected, draft.restored, why)
     task.check_time("checking the selection")
-    return Selection(
-        task=task,
-        scores=scores,
-        thresholds=thresholds,
-        selected=draft.selected,
-        kept=draft.kept,
-        restored=draft.restored,
-        text=write_pruned_problem(task.problem, draft.kept),
-        set_aside=draft.set_aside,
-        unpruned_reason=_why_nothing_pruned(task, draft.kept, draft.restored),
-    )
+    kept, text = draft.kept, write_pruned_problem(task.problem, draft.kept)
+    why = _why_nothing_pruned(task, kept, draft.restored)
+    return Selection(task, scores, thresholds, draft.selected, kept, draft.restored, text, draft.set_aside, why)
 
 
 def can_serve_goal(task: PlanningTask, name: str) -> bool:
@@ -314,16 +306,8 @@ def full_problem(
     why: str = "",
 ) -> Selection:
     """The result that keeps every object (``why`` says why): the attempt loop plans on the user's own file."""
-    return Selection(
-        task=task,
-        scores=scores,
-        thresholds=thresholds,
-        selected=frozenset(selected),
-        kept=frozenset(task.problem.objects),
-        restored=tuple(restored),
-        text=task.problem.text,
-        unpruned_reason=why,
-    )
+    kept, text = frozenset(task.problem.objects), task.problem.text
+    return Selection(task, scores, thresholds, frozenset(selected), kept, tuple(restored), text, unpruned_reason=why)
 
 
 @dataclass(frozen=True)

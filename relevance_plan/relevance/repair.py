@@ -102,10 +102,10 @@ def repair_selection(
     if not check.reachable:
         # Nothing short of the whole problem reaches the goal (or the check gave up): let the planner decide.
         return current, tuple(Restored(n, "", "reachability", ("goal",)) for n in sorted(current - kept)), check
-    rank = {name: i for i, name in enumerate(added)}
+    grown = _Grown({name: i for i, name in enumerate(added)}, order, exploration.facts)
     used = {name for name in check.plan_objects if name in task.problem.objects and name not in kept}
-    used, check = _economize(repair, used, rank, check, order, exploration.facts)
-    closed, reasons = _restore_used(repair, used, rank, check)
+    used, check = _economize(repair, grown, used, check)
+    closed, reasons = _restore_used(repair, used, grown.rank, check)
     return _sharpen(repair, closed, reasons, check)
 
 
@@ -379,41 +379,42 @@ class RepairOrder:
         )
 
 
-def _economize(
-    repair: _Repair,
-    used: set[str],
-    rank: Mapping[str, int],
-    check: Reachability,
-    order: RepairOrder,
-    reached: Mapping[GroundAtom, object],
-) -> tuple[set[str], Reachability]:
+@dataclass(frozen=True)
+class _Grown:
+    """What growing the kept set leaves for economizing it."""
+
+    rank: Mapping[str, int]  # each added object's place in the order it came
+    order: RepairOrder  # the order that chose them, to tell which member stands in for which
+    reached: Mapping[GroundAtom, object]  # the facts the exploration reached
+
+
+def _economize(repair: _Repair, grown: _Grown, used: set[str], check: Reachability) -> tuple[set[str], Reachability]:
     """Fewer added objects of one class where fewer do: a relaxed plan takes the first airplane it
     meets for each package, when one airplane carries them all.  Class by class (most members
     first), keep the member the current relaxed plan uses most, alone, if the goal stays
     relaxed-reachable, else drop the less used half while it does; what the last relaxed plan no
     longer uses goes too.  A few checks, each on the small kept set.  In a class none of whose
     members can stand in for most others (a truck in each city), only those another member can
-    stand in for go (a second truck in one city, added in the same round as the first).
-    ``reached``: what the repair's exploration reached, for telling which member stands in for which."""
+    stand in for go (a second truck in one city, added in the same round as the first)."""
     classes = repair.task.typing.problem.objects
     by_class: dict[str, list[str]] = {}
     for name in used:
         by_class.setdefault(classes.get(name, "object"), []).append(name)
     for cls in sorted((c for c in by_class if len(by_class[c]) > 1), key=lambda c: (-len(by_class[c]), c)):
-        if order.interchangeable(sorted(by_class[cls]), reached):
-            used, check = _fewest_of_class(repair, by_class[cls], used, rank, check)
+        if grown.order.interchangeable(sorted(by_class[cls]), grown.reached):
+            used, check = _fewest_of_class(repair, grown, by_class[cls], used, check)
         else:
-            used, check = _without_stood_in_for(repair, by_class[cls], used, rank, check, order, reached)
+            used, check = _without_stood_in_for(repair, grown, by_class[cls], used, check)
     return used, check
 
 
 def _fewest_of_class(
-    repair: _Repair, members: list[str], used: set[str], rank: Mapping[str, int], check: Reachability
+    repair: _Repair, grown: _Grown, members: list[str], used: set[str], check: Reachability
 ) -> tuple[set[str], Reachability]:
     """``used`` with the most used of ``members`` alone if the goal stays relaxed-reachable, else
     without the less used half while it does."""
     while True:
-        ordered = _by_use([m for m in members if m in used], check, rank)
+        ordered = _by_use([m for m in members if m in used], check, grown.rank)
         if len(ordered) < 2:
             break
         trial_used, trial = _without(repair, used, ordered[1:])
@@ -426,22 +427,16 @@ def _fewest_of_class(
 
 
 def _without_stood_in_for(
-    repair: _Repair,
-    members: list[str],
-    used: set[str],
-    rank: Mapping[str, int],
-    check: Reachability,
-    order: RepairOrder,
-    reached: Mapping[GroundAtom, object],
+    repair: _Repair, grown: _Grown, members: list[str], used: set[str], check: Reachability
 ) -> tuple[set[str], Reachability]:
     """``used`` without the ``members`` another member can stand in for (the least used first), if
     the goal stays relaxed-reachable; past ``PAIRWISE_UP_TO`` members they are not compared."""
-    ordered = _by_use(members, check, rank)
+    ordered = _by_use(members, check, grown.rank)
     if len(ordered) > PAIRWISE_UP_TO:
         return used, check
     dropped: list[str] = []
     for name in reversed(ordered):  # the least used first
-        if order.stood_in_for(name, [m for m in ordered if m != name and m not in dropped], reached):
+        if grown.order.stood_in_for(name, [m for m in ordered if m != name and m not in dropped], grown.reached):
             dropped.append(name)
     if dropped:
         trial_used, trial = _without(repair, used, dropped)
