@@ -30,7 +30,7 @@ The generator never depends on the pruning code; it writes problems with
 """
 
 from relevance_plan.generators.catalog import CATALOG, CATALOG_TYPES, KITCHENWARE_TYPES
-from relevance_plan.generators.classic import CLASSIC_WORLDS, generate_classic_problem, generate_classic_suite
+from relevance_plan.generators.classic import CLASSIC_WORLDS, generate_classic_problem
 from relevance_plan.generators.generate import (
     CONSTRAINT_COUNTS,
     DISTRACTOR_RANGES,
@@ -52,7 +52,6 @@ from relevance_plan.generators.sized import SIZED_WORLDS, generate_sized_problem
 __all__ = [
     "CLASSIC_WORLDS",
     "generate_classic_problem",
-    "generate_classic_suite",
     "CATALOG",
     "CATALOG_TYPES",
     "CONSTRAINT_COUNTS",

@@ -15,6 +15,7 @@ with a ``.json`` sidecar per problem, and a ``suite.json`` manifest.
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import json
 import os
@@ -344,9 +345,28 @@ def generate_suite(
     does; return the ``.pddl`` paths.  Raises ``UsageError`` for bad arguments,
     ``InputFileError`` when the directory cannot be written."""
     check_suite_arguments(world, difficulty, count, seed, distractors)
+    make = functools.partial(generate_problem, world, difficulty, seed, distractors=distractors)
+    return write_kitchen_suite(
+        world, difficulty, GENERATOR_VERSION, make, count, seed, distractors, out_dir, progress, force
+    )
+
+
+def write_kitchen_suite(
+    world: str,
+    difficulty: str,
+    version: str,
+    make_problem: Callable[[int], GeneratedProblem],
+    count: int,
+    seed: int,
+    distractors: int | None,
+    out_dir: Path,
+    progress: ProgressCallback | None = None,
+    force: bool = False,
+) -> list[Path]:
+    """A suite of a kitchen world or variant (``write_suite``'s layout); problem ``i`` is ``make_problem(i)``."""
     manifest = {
         "generator": GENERATOR,
-        "generator_version": GENERATOR_VERSION,
+        "generator_version": version,
         "world": world,
         "difficulty": difficulty,
         "count": count,
@@ -355,13 +375,9 @@ def generate_suite(
     }
 
     def make(index: int) -> SuiteEntry:
-        problem = generate_problem(world, difficulty, seed, index, distractors)
-        return SuiteEntry(
-            problem.name,
-            problem.pddl_text,
-            problem.sidecar_text,
-            {"distractor_count": problem.sidecar["distractor_count"]},
-        )
+        problem = make_problem(index)
+        entry = {"distractor_count": problem.sidecar["distractor_count"]}
+        return SuiteEntry(problem.name, problem.pddl_text, problem.sidecar_text, entry)
 
     names = [problem_name(world, difficulty, index) for index in range(1, count + 1)]
     return write_suite(out_dir, DOMAINS_DIR / world / "domain.pddl", names, make, manifest, progress, force)
