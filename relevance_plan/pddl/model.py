@@ -233,6 +233,23 @@ def all_objects(domain: Domain, problem: Problem) -> Mapping[str, str]:
     return everything
 
 
+class ObjectsOfType:
+    """``objects_of(type_name)``: the objects of a type or of its subtypes, in ``objects``' order, each
+    tuple computed on first use (a cache: the one mutable piece of this module)."""
+
+    def __init__(self, domain: Domain, objects: Mapping[str, str]):
+        self._domain = domain
+        self._objects = objects
+        self._found: dict[str, tuple[str, ...]] = {}
+
+    def __call__(self, type_name: str) -> tuple[str, ...]:
+        found = self._found.get(type_name)
+        if found is None:
+            is_subtype = self._domain.is_subtype
+            found = self._found[type_name] = tuple(o for o, t in self._objects.items() if is_subtype(t, type_name))
+        return found
+
+
 def goal_objects(problem: Problem, domain: Domain) -> frozenset[str]:
     """Objects named in the goal (constants excluded: they are never pruned)."""
     return frozenset(name for name in names_in(problem.goal) if name in problem.objects) - set(domain.constants)

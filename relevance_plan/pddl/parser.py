@@ -113,6 +113,15 @@ class _Reader:
             return node.items[0].text.lower()
         return None
 
+    def opened(self, node: Item, what: str) -> tuple[Node, str | None, list[Item]] | None:
+        """A list, its head keyword (None: not a keyword) and its arguments; None for ``()``, which
+        is true; a symbol where ``what`` is expected fails."""
+        if isinstance(node, Symbol):
+            self.fail(f"expected {what}, found '{node.text}'", node)
+        if not node.items:
+            return None
+        return node, self.keyword_of(node), node.items[1:]
+
     def header(self, root: Node, kind: str) -> tuple[str, list[Item]]:
         items = root.items
         if not items or self.keyword_of(root) != "define":
@@ -279,14 +288,12 @@ class _Reader:
     # ---------------------------------------------------------------- conditions
 
     def condition(self, node: Item, scope: _Scope) -> f.Formula:
-        if isinstance(node, Symbol):
-            self.fail(f"expected a condition, found '{node.text}'", node)
-        if not node.items:
+        opened = self.opened(node, "a condition")
+        if opened is None:
             return f.TRUE
-        head = self.keyword_of(node)
+        node, head, args = opened
         if head is None:
             self.fail("expected a condition", node)
-        args = node.items[1:]
         if head in ("and", "or"):
             parts = tuple(self.condition(part, scope) for part in args)
             return f.And(parts) if head == "and" else f.Or(parts)
@@ -381,12 +388,10 @@ class _Reader:
     # ---------------------------------------------------------------- effects
 
     def effect(self, node: Item, scope: _Scope) -> f.Formula:
-        if isinstance(node, Symbol):
-            self.fail(f"expected an effect, found '{node.text}'", node)
-        if not node.items:
+        opened = self.opened(node, "an effect")
+        if opened is None:
             return f.TRUE
-        head = self.keyword_of(node)
-        args = node.items[1:]
+        node, head, args = opened
         if head == "and":
             return f.And(tuple(self.effect(part, scope) for part in args))
         if head == "not":
