@@ -340,7 +340,10 @@ def _kitchen(
     )
 
 
-HARD_CONTAINERS = ("cabinet_1", "cabinet_2", "fridge_1", "drawer_1")  # the hard scenes' closed places
+def _hard_kitchen(world: str, table: str, items: Mapping[str, tuple[tuple[str, ...], ...]]) -> SceneLayout:
+    """A hard scene's kitchen: two counters, the human's table and a shelf; two cabinets, a fridge, a drawer."""
+    surfaces = ("kitchen_counter_1", "kitchen_counter_2", table, "shelf_1")
+    return _kitchen(world, "hard", surfaces, ("cabinet_1", "cabinet_2", "fridge_1", "drawer_1"), table, items)
 
 
 COFFEE_SIMPLE = _kitchen(
@@ -373,13 +376,10 @@ COFFEE_SIMPLE = _kitchen(
 )
 
 
-COFFEE_HARD = _kitchen(
+COFFEE_HARD = _hard_kitchen(
     "coffee",
-    "hard",
-    surfaces=("kitchen_counter_1", "kitchen_counter_2", "serving_table_1", "shelf_1"),
-    containers=HARD_CONTAINERS,
-    table="serving_table_1",
-    items={
+    "serving_table_1",
+    {
         "kitchen_counter_1": (
             ("coffee_pot_1", "coffee-source"),
             ("cutting_board_1", "board"),
@@ -431,13 +431,10 @@ CEREAL_SIMPLE = _kitchen(
 )
 
 
-CEREAL_HARD = _kitchen(
+CEREAL_HARD = _hard_kitchen(
     "cereal",
-    "hard",
-    surfaces=("kitchen_counter_1", "kitchen_counter_2", "dining_table_1", "shelf_1"),
-    containers=HARD_CONTAINERS,
-    table="dining_table_1",
-    items={
+    "dining_table_1",
+    {
         "kitchen_counter_1": (("banana_1", "fruit"), ("cutting_board_1", "board")),
         "kitchen_counter_2": (("cereal_bowl_3", "bowl"),),
         "dining_table_1": (("napkin_1", "napkin"),),
