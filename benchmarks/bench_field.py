@@ -174,8 +174,8 @@ def track(domain: Domain) -> str:
 
 
 def accept(roots: list[str]) -> int:
-    from relevance_plan.relevance.scorers import PlanningTask
     from relevance_plan.relevance.setup import ScoringOptions, score_problem
+    from relevance_plan.relevance.task import PlanningTask
 
     totals: dict[str, list[int]] = {}
     failures = 0

@@ -90,9 +90,9 @@ from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task  # n
 from relevance_plan.planning.planners.base import PlannerStatus  # noqa: E402
 from relevance_plan.planning.planners.registry import DEFAULT_PLANNER_CONFIG  # noqa: E402
 from relevance_plan.planning.results import PlanResult  # noqa: E402
-from relevance_plan.relevance.learning.model import model_text  # noqa: E402
-from relevance_plan.relevance.scorers import PlanningTask  # noqa: E402
+from relevance_plan.relevance.learning.learned_model import learned_model_text  # noqa: E402
 from relevance_plan.relevance.setup import ScoringOptions, score_problem  # noqa: E402
+from relevance_plan.relevance.task import PlanningTask  # noqa: E402
 
 PLOI_DOMAINS = (
     "manyblockssmallpiles",
@@ -198,7 +198,7 @@ def train(
         report = learn(domain_path, training, time_limit=args.train_limit, labels=kind, seed=args.seed)
         seconds = time.perf_counter() - started
         run = "learned" if len(args.labels) == 1 else f"learned-{kind}"
-        models[run] = write_text_atomic(scratch / f"{name}-{kind}.json", model_text(report.model))
+        models[run] = write_text_atomic(scratch / f"{name}-{kind}.json", learned_model_text(report.model))
         runs = sum(p.planner_runs for p in report.problems)
         needed = statistics.mean(len(p.positives) for p in report.problems)
         size = statistics.mean(p.objects for p in report.problems)

@@ -27,9 +27,9 @@ sys.path.insert(0, str(REPO))
 
 from relevance_plan.generators.generate import generate_problem  # noqa: E402
 from relevance_plan.io import load_domain, load_problem, write_text_atomic  # noqa: E402
-from relevance_plan.relevance.knowledge import load_model  # noqa: E402
-from relevance_plan.relevance.scorers import PlanningTask  # noqa: E402
+from relevance_plan.relevance.knowledge import load_knowledge_model  # noqa: E402
 from relevance_plan.relevance.setup import ScoringOptions, score_problem  # noqa: E402
+from relevance_plan.relevance.task import PlanningTask  # noqa: E402
 
 TARGETS = {500: 0.3, 2000: 1.5}
 
@@ -41,9 +41,9 @@ def stages(domain_path: Path, problem_path: Path, out: Path, scorer: str) -> dic
     problem = load_problem(problem_path, domain)
     times["parse"] = time.perf_counter() - start
     mark = time.perf_counter()
-    model = load_model(REPO / "domains" / "coffee" / "relevance.yaml") if scorer == "model" else None
+    model = load_knowledge_model(REPO / "domains" / "coffee" / "relevance.yaml") if scorer == "model" else None
     task = PlanningTask(domain, problem)
-    scoring = score_problem(task, ScoringOptions(scorer=scorer), model=model)
+    scoring = score_problem(task, ScoringOptions(scorer=scorer), knowledge_model=model)
     times["score"] = time.perf_counter() - mark
     mark = time.perf_counter()
     result = scoring.prune(ScoringOptions().thresholds)

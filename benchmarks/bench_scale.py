@@ -72,8 +72,8 @@ from relevance_plan.io import load_domain, load_problem, write_text_atomic  # no
 from relevance_plan.pddl.sexpr import collection_paused  # noqa: E402
 from relevance_plan.planning.loop import PlanOptions, plan_task  # noqa: E402
 from relevance_plan.planning.results import PlanStatus  # noqa: E402
-from relevance_plan.relevance.scorers import PlanningTask  # noqa: E402
 from relevance_plan.relevance.setup import ScoringOptions, score_problem  # noqa: E402
+from relevance_plan.relevance.task import PlanningTask  # noqa: E402
 
 SIZES = {
     "scenegraph": (200, 500, 1000),

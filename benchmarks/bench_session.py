@@ -36,8 +36,8 @@ sys.path.insert(0, str(REPO))
 from relevance_plan.data import DOMAINS_DIR, PROBLEMS_DIR  # noqa: E402
 from relevance_plan.io import load_task  # noqa: E402
 from relevance_plan.pddl.parser import read_problem  # noqa: E402
-from relevance_plan.relevance.scorers import PlanningTask  # noqa: E402
 from relevance_plan.relevance.setup import ScoringOptions, score_problem  # noqa: E402
+from relevance_plan.relevance.task import PlanningTask  # noqa: E402
 from relevance_plan.session import Session  # noqa: E402
 
 TARGET_OBJECTS = 1000
@@ -140,7 +140,7 @@ def from_scratch(session: Session):
     text = session.scene.problem_text()
     started = time.perf_counter()
     problem = read_problem(text, session.domain)
-    scoring = score_problem(PlanningTask(session.domain, problem), session.options, model=session.model)
+    scoring = score_problem(PlanningTask(session.domain, problem), session.options, knowledge_model=session.model)
     result = scoring.prune(session.options.thresholds), scoring.first_selection()
     return time.perf_counter() - started, scoring.scores, result
 

@@ -274,8 +274,8 @@ def test_a_failed_first_attempt_costs_no_more_than_its_share(coffee_files):
     # every pruned attempt fails: each may use only its share of the time left, the full problem the rest
     from relevance_plan.planning.loop import run_attempts
     from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome
-    from relevance_plan.relevance.scorers import PlanningTask
     from relevance_plan.relevance.setup import ScoringOptions, score_problem
+    from relevance_plan.relevance.task import PlanningTask
 
     domain_path, problem_path = coffee_files
     task = PlanningTask(*load_task(domain_path, problem_path))

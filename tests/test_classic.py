@@ -13,9 +13,10 @@ from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.planning.loop import PlanOptions, plan_task
 from relevance_plan.planning.results import PlanStatus
 from relevance_plan.planning.validate import ValidationStatus, validate_plan
-from relevance_plan.relevance.prune import prune_with_scores, widen
-from relevance_plan.relevance.reachability import relaxed_reachability
-from relevance_plan.relevance.scorers import SCORERS, PlanningTask, ScoreRequest
+from relevance_plan.relevance.exploration import relaxed_reachability
+from relevance_plan.relevance.prune import PruneSettings, Widening, prune_with_scores, widen
+from relevance_plan.relevance.scorers import SCORERS, ScoreRequest
+from relevance_plan.relevance.task import PlanningTask
 
 # Two cities, a truck in each, one airplane; the goal moves a package from city a to city b.
 LOGISTICS_PROBLEM = """(define (problem tiny) (:domain logistics)
@@ -89,7 +90,7 @@ def test_relaxed_check_rejects_a_set_without_a_vehicle_and_repair_adds_one_with_
     everything = relaxed_reachability(task, frozenset(task.problem.objects))
     assert everything.reachable and {"truck-a", "truck-b", "plane"} <= everything.plan_objects
 
-    result = prune_with_scores(task, goal_scores(task), extra=without_vehicles, full_above=1.0)
+    result = prune_with_scores(task, goal_scores(task), extra=without_vehicles, settings=PruneSettings(full_above=1.0))
     assert relaxed_reachability(task, result.kept).reachable
     assert {"plane", "truck-a", "truck-b"} <= result.kept
     reasons = {r.name: r for r in result.restored}
@@ -103,22 +104,22 @@ def test_relaxed_check_rejects_a_set_without_a_vehicle_and_repair_adds_one_with_
 def test_widening_at_least_doubles_the_kept_set():
     problem = generate_classic_problem("logistics", seed=3, index=1, size=200)
     task = classic_task("logistics", problem.pddl_text)
-    first = prune_with_scores(task, goal_scores(task), goal_filter=True)
+    first = prune_with_scores(task, goal_scores(task), settings=PruneSettings(goal_filter=True))
     assert len(first.kept) < 0.2 * len(task.problem.objects)
-    second, extra = widen(first, 0.5, goal_filter=True)
+    second, extra = widen(first, Widening(0.5, goal_filter=True))
     assert len(second.kept) >= 2 * len(first.kept)
     assert first.kept <= second.kept
-    third, _ = widen(second, 0.5, extra, goal_filter=True)
+    third, _ = widen(second, Widening(0.5, goal_filter=True), extra)
     assert len(third.kept) >= 2 * len(second.kept)
 
 
 def test_widening_goes_to_the_full_problem_when_it_would_keep_most_objects():
     problem = generate_classic_problem("logistics", seed=3, index=1, size=200)
     task = classic_task("logistics", problem.pddl_text)
-    result = prune_with_scores(task, goal_scores(task), goal_filter=True)
+    result = prune_with_scores(task, goal_scores(task), settings=PruneSettings(goal_filter=True))
     while len(result.kept) < len(task.problem.objects):
         before = len(result.kept)
-        result, _ = widen(result, 0.5, goal_filter=True)
+        result, _ = widen(result, Widening(0.5, goal_filter=True))
         assert len(result.kept) == len(task.problem.objects) or len(result.kept) >= 2 * before
         if 2 * before > 0.8 * len(task.problem.objects):
             assert result.kept == frozenset(task.problem.objects)
@@ -129,7 +130,7 @@ def test_widening_goes_to_the_full_problem_when_it_would_keep_most_objects():
 def test_an_unpruneable_problem_goes_straight_to_the_full_problem(tmp_path):
     problem = generate_classic_problem("gripper", seed=1, index=1, size=30, dense=True)
     task = classic_task("gripper", problem.pddl_text)
-    result = prune_with_scores(task, goal_scores(task), goal_filter=True)
+    result = prune_with_scores(task, goal_scores(task), settings=PruneSettings(goal_filter=True))
     assert result.kept == frozenset(task.problem.objects)
     domain_path, problem_path = tmp_path / "domain.pddl", tmp_path / "problem.pddl"
     domain_path.write_bytes((DOMAINS_DIR / "gripper" / "domain.pddl").read_bytes())

@@ -9,9 +9,9 @@ from support import REPO
 from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.io import load_domain
 from relevance_plan.pddl.parser import read_problem
-from relevance_plan.relevance.prune import ranked_names, widen
-from relevance_plan.relevance.scorers import PlanningTask
+from relevance_plan.relevance.prune import Widening, ranked_names, widen
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
+from relevance_plan.relevance.task import PlanningTask
 
 
 def many_goal_logistics(seed: int, cities: int = 6, packages: int = 12, airplanes: int = 20) -> str:
@@ -74,14 +74,14 @@ def test_a_second_truck_in_one_city_goes_when_the_first_can_stand_in_for_it(monk
     """Trucks are needed one per city, so no truck stands in for most others; but when one round
     adds two trucks of one city and the relaxed plan uses both, the one the other can replace goes."""
     from relevance_plan.generators.sized import NEW_WORLDS, generate_sized_problem
-    from relevance_plan.relevance import reachability
+    from relevance_plan.relevance import repair
 
-    pairwise = reachability.PAIRWISE_UP_TO
+    pairwise = repair.PAIRWISE_UP_TO
     generated = generate_sized_problem("logistics-manygoals", 5, 1, 200)
     domain = load_domain(DOMAINS_DIR / NEW_WORLDS["logistics-manygoals"].domain / "domain.pddl")
 
     def trucks_of_city_eight(pairwise: int) -> set[str]:
-        monkeypatch.setattr(reachability, "PAIRWISE_UP_TO", pairwise)
+        monkeypatch.setattr(repair, "PAIRWISE_UP_TO", pairwise)
         task = PlanningTask(domain, read_problem(generated.pddl_text, domain))
         selection = score_problem(task, ScoringOptions(), method="relevance").first_selection(narrow=True)
         return {name for name in selection.kept if name.startswith("truck8-")}
@@ -106,7 +106,7 @@ def test_widening_keeps_set_aside_alternatives_aside_and_brings_them_back_last()
     assert len(aside) > 10 and all(name.startswith("xtruck") for name in aside)
     instance_objects = {name for name in task.problem.objects if not name.startswith("x")}
     assert not instance_objects <= first.kept
-    widened, _ = widen(first, 0.5, frozenset(), scoring.model, goal_filter=True)
+    widened, _ = widen(first, Widening(0.5, goal_filter=True), frozenset(), scoring.knowledge_model)
     # the instance's own objects come back first, but for an idle twin of a kept one (package4,
     # at s1 like package3, is in no goal)
     profiles = task.object_profiles

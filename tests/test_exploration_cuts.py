@@ -11,11 +11,11 @@ import pytest
 from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.generators.sized import NEW_WORLDS, generate_sized_problem
 from relevance_plan.pddl.parser import read_domain, read_problem
-from relevance_plan.relevance import reachability
+from relevance_plan.relevance import exploration, repair
 from relevance_plan.relevance.analysis import fan_in, object_distances
-from relevance_plan.relevance.reachability import relaxed_reachability
-from relevance_plan.relevance.scorers import PlanningTask
+from relevance_plan.relevance.exploration import relaxed_reachability
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
+from relevance_plan.relevance.task import PlanningTask
 
 
 def task_of(world: str, size: int, seed: int = 2) -> tuple[PlanningTask, dict]:
@@ -47,18 +47,18 @@ def trials(task: PlanningTask, sidecar: dict, seed: str) -> list[set[str]]:
 def test_passing_over_saturated_schemas_changes_no_answer(monkeypatch, world):
     task, sidecar = task_of(world, 150)
     passed_over = []
-    saturated = reachability._Exploration._saturated
+    saturated = exploration.Exploration._saturated
 
     def counting(self, schema):
         answer = saturated(self, schema)
         passed_over.append(answer)
         return answer
 
-    monkeypatch.setattr(reachability._Exploration, "_saturated", counting)
+    monkeypatch.setattr(exploration.Exploration, "_saturated", counting)
     for kept in trials(task, sidecar, world):
         with_cut = relaxed_reachability(task, kept)
         with monkeypatch.context() as patch:
-            patch.setattr(reachability._Exploration, "_saturated", lambda self, schema: False)
+            patch.setattr(exploration.Exploration, "_saturated", lambda self, schema: False)
             without = relaxed_reachability(PlanningTask(task.domain, task.problem), kept)
         assert with_cut.complete and without.complete
         assert with_cut.reachable == without.reachable, sorted(kept)
@@ -71,15 +71,15 @@ def test_passing_over_saturated_schemas_changes_no_answer(monkeypatch, world):
 
 def test_a_schema_is_saturated_only_when_every_atom_it_adds_is_reached():
     task, sidecar = task_of("miconic", 60)
-    exploration = reachability._Exploration(task, set(sidecar["necessary"]), reachability._Work(10**6))
-    up = next(s for s in exploration.schemas if s.name == "up")
-    floors = exploration.objects_of(dict(zip(up.parameters, up.types))["?f2"])
-    reached = {f for f in floors if ("lift-at", f) in exploration.facts}
+    explored = exploration.Exploration(task, set(sidecar["necessary"]), exploration.Work(10**6))
+    up = next(s for s in explored.schemas if s.name == "up")
+    floors = explored.objects_of(dict(zip(up.parameters, up.types))["?f2"])
+    reached = {f for f in floors if ("lift-at", f) in explored.facts}
     # before the run only the lift's floor is reached: not saturated
-    assert len(reached) < len(floors) and not exploration._saturated(up)
-    exploration.run()
-    reached = {f for f in floors if ("lift-at", f) in exploration.facts}
-    assert exploration._saturated(up) == (reached == set(floors))
+    assert len(reached) < len(floors) and not explored._saturated(up)
+    explored.run()
+    reached = {f for f in floors if ("lift-at", f) in explored.facts}
+    assert explored._saturated(up) == (reached == set(floors))
 
 
 def reference_hops(task: PlanningTask, sources, hub, max_fan) -> dict[str, int]:
@@ -111,7 +111,7 @@ def test_object_distances_are_breadth_first_hops(world):
     names = sorted(task.problem.objects)
     for _ in range(10):
         sources = rng.sample(names, rng.randint(1, 5))
-        for hub, max_fan in [(None, None), (reachability.hub_degree(task), None), (3, reachability.REPAIR_MAX_FAN)]:
+        for hub, max_fan in [(None, None), (task.hub_degree, None), (3, repair.REPAIR_MAX_FAN)]:
             assert object_distances(task.init_index, sources, hub, max_fan) == reference_hops(
                 task, sources, hub, max_fan
             )
@@ -119,7 +119,7 @@ def test_object_distances_are_breadth_first_hops(world):
 
 def test_picking_up_while_holding_is_passed_over_once_the_arm_has_been_empty():
     task, _ = task_of("grid", 150)
-    compiled = reachability._compiled(task)
+    compiled = exploration.relaxed_task(task)
     dominated = {
         schema.name: compiled.dominated[id(schema)] for schema in compiled.schemas if id(schema) in compiled.dominated
     }
@@ -134,7 +134,7 @@ def test_passing_over_dominated_schemas_changes_no_answer(monkeypatch, world):
     for kept in trials(task, sidecar, world):
         with_cut = relaxed_reachability(task, kept)
         with monkeypatch.context() as patch:
-            patch.setattr(reachability, "_dominated", lambda *args: {})
+            patch.setattr(exploration, "_dominated", lambda *args: {})
             without = relaxed_reachability(PlanningTask(task.domain, task.problem), kept)
         assert with_cut.complete and without.complete
         assert with_cut.reachable == without.reachable, sorted(kept)
@@ -148,7 +148,7 @@ def test_the_repair_grows_a_corridor_from_the_robot_not_discs_around_the_keys(mo
     shortest way of cells from there toward the goal's key, which keeps fewer objects than ranking
     every cell between them."""
     task, _ = task_of("grid", 2000, seed=1)
-    toward = reachability._Toward(task, {})
+    toward = repair.RepairOrder(task, {})
     (robot,) = [atom[1] for atom in task.init_index.by_predicate["at-robot"]]
     assert robot in toward.agents
 
@@ -157,7 +157,7 @@ def test_the_repair_grows_a_corridor_from_the_robot_not_discs_around_the_keys(mo
         return score_problem(fresh, ScoringOptions(), method="relevance").first_selection(narrow=True).kept
 
     with_corridor = first_kept()
-    monkeypatch.setattr(reachability._Toward, "_path", lambda self, targets, sources, current: [])
+    monkeypatch.setattr(repair.RepairOrder, "_path", lambda self, targets, sources, current: [])
     without = first_kept()
     assert len(with_corridor) < len(without)
 
@@ -173,7 +173,7 @@ def test_the_repairs_selection_is_the_same_in_every_process():
         "from relevance_plan.data import DOMAINS_DIR\n"
         "from relevance_plan.generators.sized import generate_sized_problem\n"
         "from relevance_plan.pddl.parser import read_domain, read_problem\n"
-        "from relevance_plan.relevance.scorers import PlanningTask\n"
+        "from relevance_plan.relevance.task import PlanningTask\n"
         "from relevance_plan.relevance.setup import ScoringOptions, score_problem\n"
         "for world, domain in (('grid', 'grid'), ('scenegraph', 'scenegraph'), ('logistics-manygoals', 'logistics')):\n"
         "    problem = generate_sized_problem(world, 3, 1, 500)\n"

@@ -10,7 +10,11 @@ from support import COFFEE_DOMAIN, COFFEE_MODEL, PROBLEMS, one_line_error, run
 from relevance_plan.errors import ModelError
 from relevance_plan.exitcodes import ExitCode
 from relevance_plan.io import load_domain
-from relevance_plan.relevance.knowledge import check_model_applies, find_model, parse_model
+from relevance_plan.relevance.knowledge import (
+    check_knowledge_model_applies,
+    find_knowledge_model,
+    parse_knowledge_model,
+)
 
 MODEL_TEXT = COFFEE_MODEL.read_text()
 NO_DEPENDENCIES = MODEL_TEXT.replace("dependencies: []\n", "")
@@ -45,7 +49,7 @@ def _with(replacements: dict[str, str]) -> str:
 )
 def test_malformed_models_are_refused_naming_the_entry(text, message):
     with pytest.raises(ModelError) as caught:
-        parse_model(text, "m.yaml")
+        parse_knowledge_model(text, "m.yaml")
     assert message in caught.value.message
     assert "\n" not in str(caught.value) and caught.value.path == "m.yaml"
 
@@ -58,16 +62,16 @@ def test_malformed_models_are_refused_naming_the_entry(text, message):
     ],
 )
 def test_a_model_that_does_not_fit_the_domain_is_refused(extra, message):
-    model = parse_model(NO_DEPENDENCIES + extra, "m.yaml")
+    model = parse_knowledge_model(NO_DEPENDENCIES + extra, "m.yaml")
     with pytest.raises(ModelError, match=message) as caught:
-        check_model_applies(model, load_domain(COFFEE_DOMAIN))
+        check_knowledge_model_applies(model, load_domain(COFFEE_DOMAIN))
     assert caught.value.line is not None
 
 
 def test_a_scene_predicate_the_domain_lacks_is_refused():
-    model = parse_model(_with({"location: at": "location: located"}), "m.yaml")
+    model = parse_knowledge_model(_with({"location: at": "location: located"}), "m.yaml")
     with pytest.raises(ModelError, match="scene.location 'located' is not a predicate"):
-        check_model_applies(model, load_domain(COFFEE_DOMAIN))
+        check_knowledge_model_applies(model, load_domain(COFFEE_DOMAIN))
 
 
 def test_every_bad_model_is_exit_35_in_one_line_through_the_cli(tmp_path):
@@ -87,6 +91,6 @@ def test_a_broken_model_next_to_the_domain_does_not_stop_the_goal_scorer(tmp_pat
 
 
 def test_a_domain_name_is_never_a_path_to_a_model(tmp_path):
-    assert find_model("coffee", None) is not None  # shipped
+    assert find_knowledge_model("coffee", None) is not None  # shipped
     for name in ("../..", "../coffee", "coffee/../coffee", "/etc", "."):
-        assert find_model(name, None) is None
+        assert find_knowledge_model(name, None) is None

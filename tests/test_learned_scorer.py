@@ -9,16 +9,16 @@ from pathlib import Path
 
 import pytest
 
-from relevance_plan.batch.learn import LabelledProblem, fit_model, with_hubs
 from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.errors import ModelError
 from relevance_plan.generators.classic import generate_classic_problem
 from relevance_plan.io import load_domain
 from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.relevance.learning.features import NAMED, FeatureConfig, hub_predicates, object_features
-from relevance_plan.relevance.learning.model import load_learned_model, model_text
+from relevance_plan.relevance.learning.fit import LabelledProblem, fit_learned_model, with_hubs
+from relevance_plan.relevance.learning.learned_model import learned_model_text, load_learned_model
 from relevance_plan.relevance.learning.scorer import KEEP_AT, calibrated, score_learned
-from relevance_plan.relevance.scorers import PlanningTask
+from relevance_plan.relevance.task import PlanningTask
 from tests.support import one_line_error, run, write_file
 
 FERRY = Path(DOMAINS_DIR) / "ferry-typed" / "domain.pddl"
@@ -62,9 +62,9 @@ def labelled(index: int) -> LabelledProblem:
 
 @pytest.fixture(scope="module")
 def model_file(tmp_path_factory) -> Path:
-    model = fit_model(load_domain(FERRY), [labelled(i) for i in range(6)], CONFIG, "plan", 0)
+    model = fit_learned_model(load_domain(FERRY), [labelled(i) for i in range(6)], CONFIG, "plan", 0)
     path = tmp_path_factory.mktemp("model") / "ferry.json"
-    path.write_text(model_text(model), encoding="utf-8")
+    path.write_text(learned_model_text(model), encoding="utf-8")
     return path
 
 
@@ -79,7 +79,7 @@ def test_features_do_not_depend_on_the_order_of_objects_or_facts():
 
 def test_a_model_round_trips_through_its_file(model_file):
     model = load_learned_model(model_file)
-    again = load_learned_model(write_file(model_file.parent, "again.json", model_text(model)))
+    again = load_learned_model(write_file(model_file.parent, "again.json", learned_model_text(model)))
     task = ferry_task(ferry_text(20, size=30)[0])
     vectors = object_features(task, model.config).vectors
     assert {n: model.probability(v) for n, v in vectors.items()} == {
@@ -245,7 +245,7 @@ def test_learning_marks_a_hub_of_any_training_problem_on_every_problem(model_fil
     assert config.hubs == {"different"}
     # the model file keeps them
     model = replace(load_learned_model(model_file), config=config)
-    assert load_learned_model(write_file(tmp_path, "hubs.json", model_text(model))).config == config
+    assert load_learned_model(write_file(tmp_path, "hubs.json", learned_model_text(model))).config == config
 
 
 def test_describing_only_the_judged_objects_leaves_their_features_as_they_were():

@@ -192,8 +192,8 @@ def test_a_task_past_its_deadline_stops_every_analysis_naming_the_step(copied_co
     from relevance_plan.io import load_task
     from relevance_plan.relevance.analysis import analyse_goal, index_init
     from relevance_plan.relevance.scene import build_scene
-    from relevance_plan.relevance.scorers import PlanningTask
     from relevance_plan.relevance.setup import ScoringOptions, score_problem
+    from relevance_plan.relevance.task import PlanningTask
 
     domain, problem = load_task(*copied_coffee_files)
     past = time.monotonic() - 1

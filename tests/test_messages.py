@@ -80,7 +80,7 @@ def test_model_messages_name_the_class(copied_coffee_files, tmp_path):
     model.write_text(text)
     import yaml
 
-    from relevance_plan.relevance.knowledge import parse_model
+    from relevance_plan.relevance.knowledge import parse_knowledge_model
 
     data = yaml.safe_load(text)
     task = next(iter(data["tasks"]))
@@ -91,7 +91,7 @@ def test_model_messages_name_the_class(copied_coffee_files, tmp_path):
     assert code == ExitCode.MODEL
     line = one_line_error(stderr)
     assert "{class}" not in line and f"P({class_name} | {task})" in line
-    assert parse_model  # imported for the schema's error path
+    assert parse_knowledge_model  # imported for the schema's error path
 
 
 def test_generate_errors_have_no_progress_line(tmp_path):

@@ -18,10 +18,11 @@ from relevance_plan.relevance.analysis import (
     single_valued_predicates,
 )
 from relevance_plan.relevance.closure import close_over_constraints
-from relevance_plan.relevance.knowledge import parse_model
-from relevance_plan.relevance.prune import Thresholds, prune_with_scores, select_relevant
-from relevance_plan.relevance.scorers import SCORERS, PlanningTask, ScoreRequest
-from relevance_plan.relevance.scorers.model import task_entropy
+from relevance_plan.relevance.knowledge import parse_knowledge_model
+from relevance_plan.relevance.prune import PruneSettings, Thresholds, prune_with_scores, select_relevant
+from relevance_plan.relevance.scorers import SCORERS, ScoreRequest
+from relevance_plan.relevance.scorers.knowledge_model import task_entropy
+from relevance_plan.relevance.task import PlanningTask
 
 MODEL = """
 version: 1
@@ -71,11 +72,11 @@ def task(coffee_domain_path):
 
 @pytest.fixture
 def model():
-    return parse_model(MODEL, "m.yaml")
+    return parse_knowledge_model(MODEL, "m.yaml")
 
 
 def score(planning_task, model, **kwargs):
-    return SCORERS["model"](planning_task, ScoreRequest(model=model, **kwargs))
+    return SCORERS["model"](planning_task, ScoreRequest(knowledge_model=model, **kwargs))
 
 
 def test_class_relevance_sums_over_tasks(task, model):
@@ -175,7 +176,7 @@ def test_blocked_alternatives_are_set_aside_when_a_free_one_is_kept(task, model)
     scores = score(task, model)
     plain = prune_with_scores(task, scores, Thresholds(), model)
     assert {"plastic_cup_1", "paper_cup_1", "dinner_plate_1"} <= plain.kept and plain.set_aside == frozenset()
-    narrowed = prune_with_scores(task, scores, Thresholds(), model, prefer_free=True)
+    narrowed = prune_with_scores(task, scores, Thresholds(), model, settings=PruneSettings(prefer_free=True))
     # the plate stands on the plastic cup; the paper cup stands free and serves as well
     assert narrowed.set_aside == {"plastic_cup_1"}
     assert "paper_cup_1" in narrowed.kept
@@ -185,7 +186,9 @@ def test_blocked_alternatives_are_set_aside_when_a_free_one_is_kept(task, model)
 
 def test_a_blocked_object_without_a_free_alternative_stays(task, model):
     # tau_e = 0.4 selects the plastic cup (R = 0.65) but not the paper cup (R = 0.36)
-    result = prune_with_scores(task, score(task, model), Thresholds(0.2, 0.4), model, prefer_free=True)
+    result = prune_with_scores(
+        task, score(task, model), Thresholds(0.2, 0.4), model, settings=PruneSettings(prefer_free=True)
+    )
     assert "paper_cup_1" not in result.selected
     assert result.set_aside == frozenset()
     assert {"plastic_cup_1", "dinner_plate_1"} <= result.kept
@@ -194,7 +197,9 @@ def test_a_blocked_object_without_a_free_alternative_stays(task, model):
 def test_types_are_not_treated_as_alternatives(task):
     # the goal scorer's classes are PDDL types: every block of a tower may be needed
     scores = SCORERS["goal"](task, ScoreRequest())
-    assert prune_with_scores(task, scores, Thresholds(), prefer_free=True).set_aside == frozenset()
+    assert (
+        prune_with_scores(task, scores, Thresholds(), settings=PruneSettings(prefer_free=True)).set_aside == frozenset()
+    )
 
 
 def test_closure_rules_are_inferred_from_schemas(task):
@@ -220,7 +225,7 @@ def test_closure_is_transitive_and_pure():
 
 def test_model_dependencies_extend_closure(task):
     text = MODEL + "dependencies:\n  - {predicate: human-at, when_kept: 2, restore: 1, reason: who sits there}\n"
-    model = parse_model(text, "m.yaml")
+    model = parse_knowledge_model(text, "m.yaml")
     result = prune_with_scores(task, score(task, model), Thresholds(), model)
     assert "alice" in result.kept
 
@@ -309,7 +314,7 @@ def test_oracle_needs_a_sidecar(task):
 )
 def test_invalid_models_name_file_and_line(mutate, match, line):
     with pytest.raises(ModelError, match=match) as caught:
-        parse_model(mutate(MODEL), "bad.yaml")
+        parse_knowledge_model(mutate(MODEL), "bad.yaml")
     assert caught.value.path == "bad.yaml"
     if line is not None:
         assert caught.value.line == line

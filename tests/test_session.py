@@ -19,8 +19,8 @@ from relevance_plan.planning.loop import PlanOptions
 from relevance_plan.planning.planners.registry import make_planner
 from relevance_plan.planning.results import PlanStatus
 from relevance_plan.planning.validate import validate_plan
-from relevance_plan.relevance.scorers import PlanningTask
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
+from relevance_plan.relevance.task import PlanningTask
 from relevance_plan.session import TRIGGERS, Session
 
 COFFEE_DOMAIN = DOMAINS_DIR / "coffee" / "domain.pddl"
@@ -37,7 +37,7 @@ def from_scratch(session: Session):
     """Determination from scratch on the current state: write it out, read it back, score, prune
     (the paper's relevance, and the first selection ``prune`` writes)."""
     problem = read_problem(session.scene.problem_text(), session.domain)
-    scoring = score_problem(PlanningTask(session.domain, problem), session.options, model=session.model)
+    scoring = score_problem(PlanningTask(session.domain, problem), session.options, knowledge_model=session.model)
     return scoring.scores, scoring.prune(session.options.thresholds), scoring.first_selection()
 
 
@@ -68,7 +68,7 @@ def assert_relevant_covers_kept(session: Session) -> None:
     """Every kept object is relevant or was put back (closure, soundness, the reachability repair)."""
     selection = session.selection
     assert selection is not None
-    if not selection.unpruned:
+    if not selection.unpruned_reason:
         assert session.kept - {r.name for r in selection.restored} <= session.relevant
 
 

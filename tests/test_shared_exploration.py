@@ -10,10 +10,10 @@ import pytest
 from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.generators.sized import NEW_WORLDS, generate_sized_problem
 from relevance_plan.pddl.parser import read_domain, read_problem
-from relevance_plan.relevance import reachability
-from relevance_plan.relevance.reachability import relaxed_reachability
-from relevance_plan.relevance.scorers import PlanningTask
+from relevance_plan.relevance import exploration, repair
+from relevance_plan.relevance.exploration import relaxed_reachability
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
+from relevance_plan.relevance.task import PlanningTask
 
 WORLDS = ("logistics-manygoals", "logistics-manygoals-typed", "miconic-manygoals", "miconic-manygoals-typed")
 
@@ -24,18 +24,18 @@ def task_of(world: str, seed: int, size: int) -> tuple[PlanningTask, dict]:
     return PlanningTask(domain, read_problem(problem.pddl_text, domain)), problem.sidecar
 
 
-def plain_check(monkeypatch, task: PlanningTask, kept: set[str]) -> reachability.Reachability:
+def plain_check(monkeypatch, task: PlanningTask, kept: set[str]) -> exploration.Reachability:
     """The same check with sharing off (a new task object: the compiled schemas are cached per task)."""
     with monkeypatch.context() as patch:
-        patch.setattr(reachability, "SHARED_FROM", 10**9)
+        patch.setattr(exploration, "SHARED_FROM", 10**9)
         fresh = PlanningTask(task.domain, task.problem)
         return relaxed_reachability(fresh, kept)
 
 
-def holds_relaxed(task: PlanningTask, check: reachability.Reachability) -> bool:
+def holds_relaxed(task: PlanningTask, check: exploration.Reachability) -> bool:
     """The relaxed plan's steps, applied in any order their conditions allow (deletes ignored), all
     apply, from the initial facts, and reach the goal's atoms."""
-    schemas = {schema.name: schema for schema in reachability._compiled(task).schemas}
+    schemas = {schema.name: schema for schema in exploration.relaxed_task(task).schemas}
     facts = set(task.typing.problem.init)
     waiting = list(check.plan)
     while waiting:
@@ -50,15 +50,15 @@ def holds_relaxed(task: PlanningTask, check: reachability.Reachability) -> bool:
         for step, schema, binding in ready:
             facts.update((p, *(binding.get(a, a) for a in args)) for p, args, _ in schema.add)
             waiting.remove(step)
-    goal = [(p, *args) for p, args in reachability._required_atoms(task.problem.goal)]
+    goal = [(p, *args) for p, args in exploration.required_atoms(task.problem.goal)]
     return all(atom in facts for atom in goal)
 
 
 @pytest.mark.parametrize("world", WORLDS)
 def test_the_shared_class_is_found_and_decides_as_the_plain_check(monkeypatch, world):
     task, sidecar = task_of(world, 4, 240)
-    shared = reachability._compiled(task).shared
-    assert shared is not None and len(shared.members) >= reachability.SHARED_FROM
+    shared = exploration.relaxed_task(task).shared
+    assert shared is not None and len(shared.members) >= exploration.SHARED_FROM
     necessary = set(sidecar["necessary"])
     rng = random.Random(world)
     others = sorted(set(task.problem.objects) - necessary)
@@ -94,7 +94,7 @@ def test_no_shared_class_where_goal_objects_meet():
         + ")))"
     )
     task = PlanningTask(domain, read_problem(text, domain))
-    assert reachability._compiled(task).shared is None
+    assert exploration.relaxed_task(task).shared is None
     assert relaxed_reachability(task, set(blocks)).reachable
 
 
@@ -119,13 +119,13 @@ def test_a_second_airplane_is_passed_over_while_trucks_are_missing():
     places = {n for n, c in classes.items() if c in ("location", "city")} | airports
     packages = {n for n, c in classes.items() if c == "package"}
     kept = places | packages | {"plane1"}
-    exploration = reachability._Exploration(task, kept, reachability._Work(10**7))
-    exploration.run()
-    assert exploration.missing  # the trucks are missing
-    unreached = {arg for atom in exploration.missing for arg in atom[1:]}
-    toward = reachability._Toward(task, {})
-    chosen = toward.nearest(kept, unreached, 10, exploration.facts)
+    explored = exploration.Exploration(task, kept, exploration.Work(10**7))
+    explored.run()
+    assert explored.missing  # the trucks are missing
+    unreached = {arg for atom in explored.missing for arg in atom[1:]}
+    toward = repair.RepairOrder(task, {})
+    chosen = toward.nearest(kept, unreached, 10, explored.facts)
     assert chosen and all(classes[n] == "truck" for n in chosen), chosen
     # and with the check off every airplane parked at an airport counts as near as a truck
     parked = [n for n in classes if classes[n] == "airplane" and n != "plane1"]
-    assert any(toward.stood_in_for(n, ["plane1"], exploration.facts) for n in parked)
+    assert any(toward.stood_in_for(n, ["plane1"], explored.facts) for n in parked)

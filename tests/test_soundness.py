@@ -29,9 +29,9 @@ from relevance_plan.io import load_task
 from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.planning.loop import PlanOptions
 from relevance_plan.planning.validate import validate_plan
-from relevance_plan.relevance.scorers import PlanningTask
 from relevance_plan.relevance.setup import score_problem
 from relevance_plan.relevance.soundness import KeptObjects
+from relevance_plan.relevance.task import PlanningTask
 
 
 def first_kept(domain_text: str, problem_text: str) -> tuple[PlanningTask, frozenset, tuple]:
@@ -141,9 +141,7 @@ def test_a_plan_of_the_pruned_problem_is_valid_on_the_original(tmp_path, world):
 @pytest.mark.planner
 def test_without_the_soundness_rule_pruning_breaks_plans(tmp_path, monkeypatch):
     """The worlds above are hard enough: switch the rule off and plans become invalid on the original."""
-    from relevance_plan.relevance.scorers import base
-
-    monkeypatch.setattr(base.PlanningTask, "kept_for_soundness", property(lambda self: KeptObjects({}, {})))
+    monkeypatch.setattr(PlanningTask, "kept_for_soundness", property(lambda self: KeptObjects({}, {})))
     broken = [
         (world, seed)
         for world in sorted(WORLDS)

@@ -8,8 +8,8 @@ import relevance_plan as rp
 from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.generators.sized import generate_sized_problem
 from relevance_plan.io import load_sources
-from relevance_plan.relevance.reachability import relaxed_reachability
-from relevance_plan.relevance.scorers import PlanningTask
+from relevance_plan.relevance.exploration import relaxed_reachability
+from relevance_plan.relevance.task import PlanningTask
 from relevance_plan.relevance.timed_relaxation import timed_relaxed_reachability
 
 ROVER_DOMAIN = """(define (domain rover)

@@ -9,7 +9,7 @@ from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.generators.generate import generate_problem
 from relevance_plan.generators.kitchen_variants import KITCHEN_VARIANTS, NUMERIC, generate_variant_problem
 from relevance_plan.pddl.parser import read_domain, read_problem
-from relevance_plan.relevance.knowledge import check_model_applies, find_model, load_model
+from relevance_plan.relevance.knowledge import check_knowledge_model_applies, find_knowledge_model, load_knowledge_model
 
 CASES = [(world, difficulty) for world in KITCHEN_VARIANTS for difficulty in ("simple", "hard")]
 
@@ -54,7 +54,7 @@ def test_the_battery_always_allows_a_trip_through_the_dock():
 @pytest.mark.parametrize("world", sorted(KITCHEN_VARIANTS))
 def test_the_base_worlds_knowledge_model_is_shipped_for_the_variant(world):
     base = KITCHEN_VARIANTS[world].base
-    path = find_model(world, None)
+    path = find_knowledge_model(world, None)
     assert path == DOMAINS_DIR / world / "relevance.yaml"
     # A copy with its own domain name: every other line is the base world's.
     lines = path.read_text().splitlines()
@@ -64,7 +64,7 @@ def test_the_base_worlds_knowledge_model_is_shipped_for_the_variant(world):
     ]
     assert f"domain: {world}" in lines
     domain = read_domain((DOMAINS_DIR / world / "domain.pddl").read_text())
-    check_model_applies(load_model(path), domain)
+    check_knowledge_model_applies(load_knowledge_model(path), domain)
 
 
 def test_a_variant_needs_a_known_difficulty_and_a_non_negative_distractor_count():

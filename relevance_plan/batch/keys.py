@@ -22,7 +22,7 @@ from relevance_plan.errors import InputFileError, RelevancePlanError
 from relevance_plan.io import load_domain, read_bytes
 from relevance_plan.planning.loop import PLAN_OPTION_FIELDS, PlanOptions
 from relevance_plan.planning.planners.registry import DEFAULT_PLANNER_CONFIG, make_planner
-from relevance_plan.relevance.knowledge import find_model
+from relevance_plan.relevance.knowledge import find_knowledge_model
 from relevance_plan.relevance.sidecar import sidecar_path
 
 
@@ -64,7 +64,7 @@ def planner_version(planner: str = "fast-downward", config: str = DEFAULT_PLANNE
 
 
 def _model_file(options: PlanOptions, domain_path: str | None) -> str | None:
-    """The knowledge-model file the run would use (as ``relevance.setup.resolve_model`` finds it)."""
+    """The knowledge-model file the run would use (as ``relevance.setup.resolve_knowledge_model`` finds it)."""
     if options.model_path is not None:
         return options.model_path
     if domain_path is None:
@@ -73,7 +73,7 @@ def _model_file(options: PlanOptions, domain_path: str | None) -> str | None:
         name = load_domain(domain_path).name
     except RelevancePlanError:
         return None  # the job itself will report the bad domain
-    found = find_model(name, domain_path)
+    found = find_knowledge_model(name, domain_path)
     return str(found) if found is not None else None
 
 

@@ -23,9 +23,9 @@ from relevance_plan.pddl.model import Domain
 from relevance_plan.relevance.knowledge import KnowledgeModel
 from relevance_plan.relevance.metrics import SetMetrics, mean_metrics, set_metrics
 from relevance_plan.relevance.prune import Thresholds
-from relevance_plan.relevance.scorers import PlanningTask
-from relevance_plan.relevance.setup import ScoringOptions, resolve_model, score_problem
+from relevance_plan.relevance.setup import ScoringOptions, resolve_knowledge_model, score_problem
 from relevance_plan.relevance.sidecar import read_sidecar_for
+from relevance_plan.relevance.task import PlanningTask
 
 METRICS = ("recall", "precision", "f1", "N")
 N_MEANING = "N = objects chosen / objects in the ground truth (1 = the right number)"
@@ -102,7 +102,7 @@ def _sweep_problem(entry: SuiteProblem, domain: Domain, model, options: ScoringO
     started = time.perf_counter()
     truth = _truth(entry.problem)
     task = PlanningTask(domain, load_problem(entry.problem, domain))
-    scoring = score_problem(task, options, domain_path=entry.domain, problem_path=entry.problem, model=model)
+    scoring = score_problem(task, options, domain_path=entry.domain, problem_path=entry.problem, knowledge_model=model)
     tally.scoring_times.append(time.perf_counter() - started)
     tally.scorer = scoring.scorer
     if not scoring.scores.sufficient:
@@ -139,7 +139,7 @@ def sweep_suite(suite_dir: Path, taus: Sequence[float], options: ScoringOptions 
             raise InputFileError(entry.error or "no domain file found for this problem", path=str(entry.problem))
         if entry.domain not in domains:
             domain = load_domain(entry.domain)
-            domains[entry.domain] = (domain, resolve_model(domain, str(entry.domain), options.model_path))
+            domains[entry.domain] = (domain, resolve_knowledge_model(domain, str(entry.domain), options.model_path))
         _sweep_problem(entry, *domains[entry.domain], options, tally)
     if not tally.totals:
         raise UsageError(f"no problem in {suite_dir} could be scored (insufficient cues on all {tally.insufficient})")

@@ -37,8 +37,8 @@ from relevance_plan.pddl.formatter import format_number
 from relevance_plan.planning.loop import plan_task
 from relevance_plan.planning.results import PlanResult, PlanStatus
 from relevance_plan.relevance.prune import Selection
-from relevance_plan.relevance.scorers import PlanningTask
 from relevance_plan.relevance.setup import Scoring, ScoringOptions, score_problem
+from relevance_plan.relevance.task import PlanningTask
 
 
 def _score_and_prune(domain_path, problem_path, options: ScoringOptions) -> tuple[Scoring, Selection]:
@@ -229,7 +229,7 @@ def _inquiries(scoring: Scoring, result: Selection) -> dict:
     from relevance_plan.relevance.prune import select_relevant
     from relevance_plan.relevance.scene import kind_of
 
-    task, model, scores = scoring.task, scoring.model, scoring.scores
+    task, model, scores = scoring.task, scoring.knowledge_model, scoring.scores
     structural = set()
     if model is not None:
         structural = {c.name for c in model.classes.values() if c.fixed_relevance is not None or c.from_contents}

@@ -253,7 +253,7 @@ def learn(domain_path, problem_paths, output_path, time_limit, labels, seed, sto
     from relevance_plan.batch.learn import learn_from_store
     from relevance_plan.cli.files import check_output_file, write_output
     from relevance_plan.io import check_input_file
-    from relevance_plan.relevance.learning.model import model_text
+    from relevance_plan.relevance.learning.learned_model import learned_model_text
 
     if time_limit <= 0:
         raise UsageError(f"--time-limit must be a positive number of seconds, got {time_limit:g}")
@@ -272,7 +272,7 @@ def learn(domain_path, problem_paths, output_path, time_limit, labels, seed, sto
         if not problem_paths:
             raise UsageError("give the training PROBLEMs (or --store STORE)")
         report = learn_model(domain_path, problem_paths, time_limit=time_limit, labels=labels, seed=seed, say=say)
-    where = write_output(output_path, model_text(report.model))
+    where = write_output(output_path, learned_model_text(report.model))
     model = report.model
     click.echo(
         f"learned from {len(report.problems)} problems ({len(report.skipped)} skipped) in {report.seconds:.1f} s:"

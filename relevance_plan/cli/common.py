@@ -175,7 +175,7 @@ def take_scoring(values: dict) -> ScoringOptions:
     thresholds = Thresholds(taken.pop("tau_class"), taken.pop("tau_element"))
     options = ScoringOptions(thresholds=thresholds, **taken)
     if options.learned_model_path is not None:
-        from relevance_plan.relevance.learning.model import load_learned_model
+        from relevance_plan.relevance.learning.learned_model import load_learned_model
 
         load_learned_model(options.learned_model_path)  # a damaged file stops the command before any planning
     return options

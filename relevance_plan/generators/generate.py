@@ -15,6 +15,7 @@ with a ``.json`` sidecar per problem, and a ``suite.json`` manifest.
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import json
 import os
@@ -24,7 +25,7 @@ import tempfile
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, Protocol
 
 from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.errors import InputFileError, UsageError
@@ -344,51 +345,73 @@ def generate_suite(
     does; return the ``.pddl`` paths.  Raises ``UsageError`` for bad arguments,
     ``InputFileError`` when the directory cannot be written."""
     check_suite_arguments(world, difficulty, count, seed, distractors)
-    manifest = {
+    make = functools.partial(generate_problem, world, difficulty, seed, distractors=distractors)
+    return write_kitchen_suite(
+        world, difficulty, GENERATOR_VERSION, make, count, seed, distractors, out_dir, progress, force
+    )
+
+
+def write_kitchen_suite(
+    world: str,
+    difficulty: str,
+    version: str,
+    make_problem: Callable[[int], GeneratedProblem],
+    count: int,
+    seed: int,
+    distractors: int | None,
+    out_dir: Path,
+    progress: ProgressCallback | None = None,
+    force: bool = False,
+) -> list[Path]:
+    """A suite of a kitchen world or variant (``write_suite``'s layout); problem ``i`` is ``make_problem(i)``."""
+    manifest = suite_manifest(version, world, difficulty, count, seed, distractors=distractors)
+    names = [problem_name(world, difficulty, index) for index in range(1, count + 1)]
+    domain = DOMAINS_DIR / world / "domain.pddl"
+    return write_suite(out_dir, domain, names, make_problem, manifest, "distractor_count", progress, force)
+
+
+def suite_manifest(
+    version: str, world: str, difficulty: str | None, count: int, seed: int, **settings: object
+) -> dict[str, object]:
+    """What a suite's ``suite.json`` says of how it was made (``settings``: the generator's own)."""
+    return {
         "generator": GENERATOR,
-        "generator_version": GENERATOR_VERSION,
+        "generator_version": version,
         "world": world,
         "difficulty": difficulty,
         "count": count,
         "seed": seed,
-        "distractors": distractors,
+        **settings,
     }
 
-    def make(index: int) -> SuiteEntry:
-        problem = generate_problem(world, difficulty, seed, index, distractors)
-        return SuiteEntry(
-            problem.name,
-            problem.pddl_text,
-            problem.sidecar_text,
-            {"distractor_count": problem.sidecar["distractor_count"]},
-        )
 
-    names = [problem_name(world, difficulty, index) for index in range(1, count + 1)]
-    return write_suite(out_dir, DOMAINS_DIR / world / "domain.pddl", names, make, manifest, progress, force)
+class Generated(Protocol):
+    """A generated problem as a suite stores it: its name, its text and its sidecar."""
 
+    @property
+    def name(self) -> str: ...
 
-@dataclass(frozen=True)
-class SuiteEntry:
-    """One problem as a suite stores it: its files' texts and its manifest entry's extra fields."""
+    @property
+    def pddl_text(self) -> str: ...
 
-    name: str
-    pddl_text: str
-    sidecar_text: str
-    entry: dict
+    @property
+    def sidecar(self) -> dict[str, Any]: ...
 
 
 def write_suite(
     out_dir: Path,
     domain_path: Path,
     names: list[str],
-    make: Callable[[int], SuiteEntry],
-    manifest: dict,
+    make_problem: Callable[[int], Generated],
+    manifest: dict[str, object],
+    entry_field: str,
     progress: ProgressCallback | None = None,
     force: bool = False,
 ) -> list[Path]:
     """Write a suite (every generator's layout): ``domain.pddl``, ``NAME.pddl`` and
-    ``NAME.json`` for each of ``names`` (problem ``i`` made by ``make(i)``, 1-based),
-    and ``suite.json`` (``manifest`` plus the file list); return the ``.pddl`` paths.
+    ``NAME.json`` for each of ``names`` (problem ``i`` made by ``make_problem(i)``, 1-based),
+    and ``suite.json`` (``manifest`` plus the file list, each problem's entry with its
+    sidecar's ``entry_field``); return the ``.pddl`` paths.
 
     The suite is built in a temporary sibling directory, so a failure leaves
     no partial suite.  Into an existing directory only the generator's own
@@ -418,11 +441,12 @@ def write_suite(
         (staging / "domain.pddl").write_bytes(domain_bytes)
         entries = []
         for index, name in enumerate(names, start=1):
-            problem = make(index)
+            problem = make_problem(index)
             assert problem.name == name, (problem.name, name)
             _write_text(staging / f"{name}.pddl", problem.pddl_text)
-            _write_text(staging / f"{name}.json", problem.sidecar_text)
-            entries.append({"name": name, "problem": f"{name}.pddl", "sidecar": f"{name}.json", **problem.entry})
+            _write_text(staging / f"{name}.json", sidecar_json(problem.sidecar))
+            entry = {"name": name, "problem": f"{name}.pddl", "sidecar": f"{name}.json"}
+            entries.append({**entry, entry_field: problem.sidecar[entry_field]})
             if progress is not None:
                 progress(ProgressEvent(done=index, total=len(names)))
         full_manifest = {**manifest, "domain": "domain.pddl", "problems": entries}

@@ -20,23 +20,21 @@ of the base world's knowledge model with its own domain name.
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import math
 import random
 from dataclasses import dataclass
 from pathlib import Path
 
-from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.errors import UsageError
 from relevance_plan.generators.generate import (
     GENERATOR,
     GeneratedProblem,
-    SuiteEntry,
     check_suite_arguments,
     generate_problem,
     problem_name,
-    sidecar_json,
-    write_suite,
+    write_kitchen_suite,
 )
 from relevance_plan.generators.problem import goal_objects, problem_goal, problem_init, problem_objects
 from relevance_plan.generators.scenes import SceneLayout
@@ -147,20 +145,7 @@ def generate_variant_suite(
     """Write ``count`` problems of a variant into ``out_dir`` (the kitchen suites' layout and rules)."""
     variant = _variant(world)
     check_suite_arguments(variant.base, difficulty, count, seed, distractors)
-    manifest = {
-        "generator": GENERATOR,
-        "generator_version": VARIANT_VERSION,
-        "world": world,
-        "difficulty": difficulty,
-        "count": count,
-        "seed": seed,
-        "distractors": distractors,
-    }
-
-    def make(index: int) -> SuiteEntry:
-        problem = generate_variant_problem(world, difficulty, seed, index, distractors)
-        entry = {"distractor_count": problem.sidecar["distractor_count"]}
-        return SuiteEntry(problem.name, problem.pddl_text, sidecar_json(problem.sidecar), entry)
-
-    names = [problem_name(world, difficulty, index) for index in range(1, count + 1)]
-    return write_suite(out_dir, DOMAINS_DIR / world / "domain.pddl", names, make, manifest, progress, force)
+    make = functools.partial(generate_variant_problem, world, difficulty, seed, distractors=distractors)
+    return write_kitchen_suite(
+        world, difficulty, VARIANT_VERSION, make, count, seed, distractors, out_dir, progress, force
+    )

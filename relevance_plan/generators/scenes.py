@@ -32,6 +32,7 @@ Coffee-simple has none; cereal-simple and cereal-hard have exactly 20.
 from __future__ import annotations
 
 import re
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from functools import cached_property
 
@@ -315,30 +316,44 @@ def compute_dependencies(scene: SceneLayout) -> tuple[Dependency, ...]:
 # --- the four base scenes ----------------------------------------------------
 
 
-def _surface(name: str) -> Place:
-    return Place(name, SURFACE)
+def _kitchen(
+    world: str,
+    difficulty: str,
+    surfaces: tuple[str, ...],
+    containers: tuple[str, ...],
+    table: str,
+    items: Mapping[str, tuple[tuple[str, ...], ...]],
+) -> SceneLayout:
+    """A base scene: the robot starts at the first kitchen counter and the human waits at ``table``;
+    ``items`` by place, each ``(name, type)`` or ``(name, type, the item it stands on)``."""
+    return SceneLayout(
+        world=world,
+        difficulty=difficulty,
+        places=(*(Place(name, SURFACE) for name in surfaces), *(Place(name, CONTAINER) for name in containers)),
+        items=tuple(
+            Item(spec[0], spec[1], place, spec[2] if len(spec) > 2 else None)
+            for place, specs in items.items()
+            for spec in specs
+        ),
+        humans=(HumanPlacement("person_1", table),),
+        robot_start="kitchen_counter_1",
+    )
 
 
-def _container(name: str) -> Place:
-    return Place(name, CONTAINER)
+def _hard_kitchen(world: str, table: str, items: Mapping[str, tuple[tuple[str, ...], ...]]) -> SceneLayout:
+    """A hard scene's kitchen: two counters, the human's table and a shelf; two cabinets, a fridge, a drawer."""
+    surfaces = ("kitchen_counter_1", "kitchen_counter_2", table, "shelf_1")
+    return _kitchen(world, "hard", surfaces, ("cabinet_1", "cabinet_2", "fridge_1", "drawer_1"), table, items)
 
 
-def _items(place: str, *specs: tuple) -> tuple[Item, ...]:
-    """``(name, type)`` or ``(name, type, on)`` for items at ``place``."""
-    return tuple(Item(spec[0], spec[1], place, spec[2] if len(spec) > 2 else None) for spec in specs)
-
-
-COFFEE_SIMPLE = SceneLayout(
-    world="coffee",
-    difficulty="simple",
-    places=(
-        _surface("kitchen_counter_1"),
-        _surface("serving_table_1"),
-        _container("cabinet_1"),
-    ),
-    items=(
-        *_items(
-            "kitchen_counter_1",
+COFFEE_SIMPLE = _kitchen(
+    "coffee",
+    "simple",
+    surfaces=("kitchen_counter_1", "serving_table_1"),
+    containers=("cabinet_1",),
+    table="serving_table_1",
+    items={
+        "kitchen_counter_1": (
             ("cold_brew_coffee_1", "coffee-source"),
             ("whole_milk_1", "whitener"),
             ("reduced_milk_1", "whitener"),
@@ -346,8 +361,7 @@ COFFEE_SIMPLE = SceneLayout(
             ("ice_bucket_1", "ice-holder"),
             ("cutting_board_1", "board"),
         ),
-        *_items(
-            "serving_table_1",
+        "serving_table_1": (
             ("creamer_1", "whitener"),
             ("paper_cup_1", "cup"),
             ("stir_stick_1", "stirrer"),
@@ -357,40 +371,22 @@ COFFEE_SIMPLE = SceneLayout(
             ("water_bottle_1", "drink"),
             ("serving_tray_1", "tray"),
         ),
-        *_items("cabinet_1", ("dinner_plate_1", "plate")),
-    ),
-    humans=(HumanPlacement("person_1", "serving_table_1"),),
-    robot_start="kitchen_counter_1",
+        "cabinet_1": (("dinner_plate_1", "plate"),),
+    },
 )
 
-COFFEE_HARD = SceneLayout(
-    world="coffee",
-    difficulty="hard",
-    places=(
-        _surface("kitchen_counter_1"),
-        _surface("kitchen_counter_2"),
-        _surface("serving_table_1"),
-        _surface("shelf_1"),
-        _container("cabinet_1"),
-        _container("cabinet_2"),
-        _container("fridge_1"),
-        _container("drawer_1"),
-    ),
-    items=(
-        *_items(
-            "kitchen_counter_1",
+
+COFFEE_HARD = _hard_kitchen(
+    "coffee",
+    "serving_table_1",
+    {
+        "kitchen_counter_1": (
             ("coffee_pot_1", "coffee-source"),
             ("cutting_board_1", "board"),
             ("toaster_1", "appliance"),
         ),
-        *_items(
-            "kitchen_counter_2",
-            ("plastic_cup_1", "cup"),
-            ("plastic_cup_2", "cup"),
-            ("ice_bucket_1", "ice-holder"),
-        ),
-        *_items(
-            "serving_table_1",
+        "kitchen_counter_2": (("plastic_cup_1", "cup"), ("plastic_cup_2", "cup"), ("ice_bucket_1", "ice-holder")),
+        "serving_table_1": (
             ("paper_cup_1", "cup"),
             ("creamer_1", "whitener"),
             ("stir_stick_1", "stirrer"),
@@ -399,41 +395,29 @@ COFFEE_HARD = SceneLayout(
             ("sugar_packet_1", "sweetener"),
             ("serving_tray_1", "tray"),
         ),
-        *_items("shelf_1", ("tea_bag_1", "tea"), ("honey_1", "sweetener")),
-        *_items("cabinet_1", ("mug_1", "cup"), ("ceramic_cup_1", "cup")),
-        *_items("cabinet_2", ("dinner_plate_1", "plate"), ("saucepan_1", "cookware")),
-        *_items(
-            "fridge_1",
+        "shelf_1": (("tea_bag_1", "tea"), ("honey_1", "sweetener")),
+        "cabinet_1": (("mug_1", "cup"), ("ceramic_cup_1", "cup")),
+        "cabinet_2": (("dinner_plate_1", "plate"), ("saucepan_1", "cookware")),
+        "fridge_1": (
             ("cold_brew_coffee_1", "coffee-source"),
             ("whole_milk_1", "whitener"),
             ("reduced_milk_1", "whitener"),
             ("water_bottle_1", "drink"),
             ("orange_juice_1", "drink"),
         ),
-        *_items(
-            "drawer_1",
-            ("teaspoon_1", "stirrer"),
-            ("napkin_2", "napkin"),
-            ("tea_towel_1", "linen"),
-        ),
-    ),
-    humans=(HumanPlacement("person_1", "serving_table_1"),),
-    robot_start="kitchen_counter_1",
+        "drawer_1": (("teaspoon_1", "stirrer"), ("napkin_2", "napkin"), ("tea_towel_1", "linen")),
+    },
 )
 
-CEREAL_SIMPLE = SceneLayout(
-    world="cereal",
-    difficulty="simple",
-    places=(
-        _surface("kitchen_counter_1"),
-        _surface("dining_table_1"),
-        _container("cabinet_1"),
-        _container("fridge_1"),
-        _container("drawer_1"),
-    ),
-    items=(
-        *_items(
-            "cabinet_1",
+
+CEREAL_SIMPLE = _kitchen(
+    "cereal",
+    "simple",
+    surfaces=("kitchen_counter_1", "dining_table_1"),
+    containers=("cabinet_1", "fridge_1", "drawer_1"),
+    table="dining_table_1",
+    items={
+        "cabinet_1": (
             ("corn_flakes_1", "cereal"),
             ("granola_1", "cereal"),
             ("cereal_bowl_1", "bowl"),
@@ -441,64 +425,30 @@ CEREAL_SIMPLE = SceneLayout(
             ("cereal_bowl_3", "bowl", "cereal_bowl_2"),
             ("brown_sugar_1", "sweetener"),
         ),
-        *_items(
-            "fridge_1",
-            ("whole_milk_1", "milk"),
-            ("oat_milk_1", "milk"),
-            ("strawberries_1", "fruit"),
-        ),
-        *_items(
-            "drawer_1",
-            ("spoon_1", "spoon"),
-            ("spoon_2", "spoon"),
-            ("napkin_1", "napkin"),
-        ),
-    ),
-    humans=(HumanPlacement("person_1", "dining_table_1"),),
-    robot_start="kitchen_counter_1",
+        "fridge_1": (("whole_milk_1", "milk"), ("oat_milk_1", "milk"), ("strawberries_1", "fruit")),
+        "drawer_1": (("spoon_1", "spoon"), ("spoon_2", "spoon"), ("napkin_1", "napkin")),
+    },
 )
 
-CEREAL_HARD = SceneLayout(
-    world="cereal",
-    difficulty="hard",
-    places=(
-        _surface("kitchen_counter_1"),
-        _surface("kitchen_counter_2"),
-        _surface("dining_table_1"),
-        _surface("shelf_1"),
-        _container("cabinet_1"),
-        _container("cabinet_2"),
-        _container("fridge_1"),
-        _container("drawer_1"),
-    ),
-    items=(
-        *_items("kitchen_counter_1", ("banana_1", "fruit"), ("cutting_board_1", "board")),
-        *_items("kitchen_counter_2", ("cereal_bowl_3", "bowl")),
-        *_items("dining_table_1", ("napkin_1", "napkin")),
-        *_items("shelf_1", ("bran_flakes_1", "cereal")),
-        *_items(
-            "cabinet_1",
-            ("corn_flakes_1", "cereal"),
-            ("granola_1", "cereal"),
-            ("honey_1", "sweetener"),
-        ),
-        *_items(
-            "cabinet_2",
+
+CEREAL_HARD = _hard_kitchen(
+    "cereal",
+    "dining_table_1",
+    {
+        "kitchen_counter_1": (("banana_1", "fruit"), ("cutting_board_1", "board")),
+        "kitchen_counter_2": (("cereal_bowl_3", "bowl"),),
+        "dining_table_1": (("napkin_1", "napkin"),),
+        "shelf_1": (("bran_flakes_1", "cereal"),),
+        "cabinet_1": (("corn_flakes_1", "cereal"), ("granola_1", "cereal"), ("honey_1", "sweetener")),
+        "cabinet_2": (
             ("cereal_bowl_1", "bowl"),
             ("cereal_bowl_2", "bowl", "cereal_bowl_1"),
             ("dinner_plate_1", "plate", "cereal_bowl_2"),
             ("plastic_cup_1", "cup"),
         ),
-        *_items(
-            "fridge_1",
-            ("whole_milk_1", "milk"),
-            ("almond_milk_1", "milk"),
-            ("blueberries_1", "fruit"),
-        ),
-        *_items("drawer_1", ("spoon_1", "spoon"), ("spoon_2", "spoon")),
-    ),
-    humans=(HumanPlacement("person_1", "dining_table_1"),),
-    robot_start="kitchen_counter_1",
+        "fridge_1": (("whole_milk_1", "milk"), ("almond_milk_1", "milk"), ("blueberries_1", "fruit")),
+        "drawer_1": (("spoon_1", "spoon"), ("spoon_2", "spoon")),
+    },
 )
 
 SCENES: dict[str, SceneLayout] = {

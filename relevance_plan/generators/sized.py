@@ -19,6 +19,7 @@ the classic worlds' layout.
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import random
 from collections.abc import Callable
@@ -28,6 +29,7 @@ from pathlib import Path
 from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.errors import UsageError
 from relevance_plan.generators.classic import (
+    CLASSIC_VERSION,
     CLASSIC_WORLDS,
     GENERATOR,
     ClassicProblem,
@@ -38,10 +40,9 @@ from relevance_plan.generators.classic import (
     classic_problem_name,
     format_instance,
     generate_classic_problem,
-    generate_classic_suite,
     instance_sidecar,
-    write_sized_suite,
 )
+from relevance_plan.generators.generate import suite_manifest, write_suite
 from relevance_plan.generators.manygoals import build_logistics_manygoals, build_miconic_manygoals
 from relevance_plan.generators.scenegraph import build_scenegraph
 from relevance_plan.generators.temporal_numeric import build_driverlog_temporal, build_zenotravel_numeric
@@ -148,18 +149,13 @@ def generate_sized_suite(
     force: bool = False,
 ) -> list[Path]:
     """Write ``count`` problems of any sized world into ``out_dir`` (the kitchen suites' layout and rules)."""
-    if world in CLASSIC_WORLDS:
-        return generate_classic_suite(world, count, seed, out_dir, size, progress, force)
     check_sized_arguments(world, count, seed, size)
-    return write_sized_suite(
-        world,
-        DOMAINS_DIR / _world(world).domain / "domain.pddl",
-        SIZED_VERSION,
-        lambda index: generate_sized_problem(world, seed, index, size),
-        count=count,
-        seed=seed,
-        size=size,
-        out_dir=out_dir,
-        progress=progress,
-        force=force,
-    )
+    if world in CLASSIC_WORLDS:
+        domain, version = world, CLASSIC_VERSION
+    else:
+        domain, version = _world(world).domain, SIZED_VERSION
+    make = functools.partial(generate_sized_problem, world, seed, size=size)
+    manifest = suite_manifest(version, world, None, count, seed, size=size)
+    names = [classic_problem_name(world, index) for index in range(1, count + 1)]
+    domain_path = DOMAINS_DIR / domain / "domain.pddl"
+    return write_suite(out_dir, domain_path, names, make, manifest, "objects_total", progress, force)

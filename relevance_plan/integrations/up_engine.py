@@ -71,10 +71,11 @@ from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome
 from relevance_plan.planning.planners.up.adapter import UP_STATUS, up_status_name
 from relevance_plan.planning.results import Attempt, PlanStatus
 from relevance_plan.planning.validate import validate_plan
-from relevance_plan.relevance.knowledge import KnowledgeModel, load_model
-from relevance_plan.relevance.prune import DEFAULT_TAU, Selection, Thresholds, widen
-from relevance_plan.relevance.scorers import SCORERS, PlanningTask
-from relevance_plan.relevance.setup import Scoring, resolve_model, score_problem
+from relevance_plan.relevance.knowledge import KnowledgeModel, load_knowledge_model
+from relevance_plan.relevance.prune import DEFAULT_TAU, Selection, Thresholds, Widening, widen
+from relevance_plan.relevance.scorers import SCORERS
+from relevance_plan.relevance.setup import Scoring, resolve_knowledge_model, score_problem
+from relevance_plan.relevance.task import PlanningTask
 
 ENGINE_NAME = "relevance"
 
@@ -140,7 +141,7 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin, AnytimePlannerMixin):
             raise UsageError(f"widen_factor must be in (0, 1), got {widen_factor}")
         if not 0.0 < float(first_share) <= 1.0:
             raise UsageError(f"first_share must be in (0, 1], got {first_share}")
-        self._model: KnowledgeModel | None = load_model(model) if model is not None else None
+        self._model: KnowledgeModel | None = load_knowledge_model(model) if model is not None else None
         self._domain = domain
         # The same options object `plan` builds: the same loop makes the same choices.
         self._options = PlanOptions(
@@ -231,7 +232,7 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin, AnytimePlannerMixin):
             selection = stage.scoring.first_selection(options.narrows_first)
             relevance_time = time.perf_counter() - started
             attempts, widening_time = run_attempts(
-                stage.scoring.task, selection, inner, options, started=started, model=stage.scoring.model
+                stage.scoring.task, selection, inner, options, started=started, model=stage.scoring.knowledge_model
             )
             relevance_time += widening_time
         for attempt in attempts:
@@ -310,7 +311,7 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin, AnytimePlannerMixin):
             return self._model
         # The writer names the domain '<problem name>-domain'.
         names = [self._domain] if self._domain is not None else [domain.name.removesuffix("-domain")]
-        return resolve_model(domain, None, None, names)
+        return resolve_knowledge_model(domain, None, None, names)
 
 
 def _anytime_when_inner_is(cls) -> bool:
@@ -351,15 +352,15 @@ class _RelevanceStage:
         if scoring_options.scorer == "model" and model is None:
             warnings.append("no knowledge model applies to this problem: using the goal scorer")
             scoring_options = dataclasses.replace(scoring_options, scorer="goal")
-        scoring = score_problem(task, scoring_options, model=model)
+        scoring = score_problem(task, scoring_options, knowledge_model=model)
         if not scoring.scores.sufficient:
             # An engine cannot ask the human: fall back to what the goal alone says.
             warnings.append(
                 f"the {scoring.scorer} scorer has too little to go on ({scoring.scores.insufficiency}):"
                 " using the goal scorer"
             )
-            scoring = score_problem(task, dataclasses.replace(scoring_options, scorer="goal"), model=None)
-            scoring = dataclasses.replace(scoring, model=None)
+            scoring = score_problem(task, dataclasses.replace(scoring_options, scorer="goal"), knowledge_model=None)
+            scoring = dataclasses.replace(scoring, knowledge_model=None)
         return cls(scoring, up_names, action_names)
 
     def removed_objects(self, selection: Selection | None) -> frozenset:
@@ -470,7 +471,9 @@ class _AnytimeSearch:
                 break
             assert self.stage is not None and selection is not None
             goal_filter = self.options.goal_filter and self.options.narrows_first
-            selection, extra = widen(selection, self.options.widen_factor, extra, self.stage.scoring.model, goal_filter)
+            selection, extra = widen(
+                selection, Widening(self.options.widen_factor, goal_filter), extra, self.stage.scoring.knowledge_model
+            )
         yield self._final()
 
     def _limit(self, final: bool) -> float | None:

@@ -69,7 +69,7 @@ from relevance_plan.pddl.formulas import (
     substitute,
     walk,
 )
-from relevance_plan.pddl.model import Action, DerivedPredicate, Domain, Problem, all_objects, frozen
+from relevance_plan.pddl.model import Action, DerivedPredicate, Domain, ObjectsOfType, Problem, all_objects, frozen
 from relevance_plan.pddl.plans import Plan, PlanStep
 
 FALSE = Or(())
@@ -137,7 +137,7 @@ class _Task:
         self.domain = domain
         self.problem = problem
         self.objects = all_objects(domain, problem)
-        self._of_type: dict[str, tuple[str, ...]] = {}
+        self.of_type = ObjectsOfType(domain, self.objects)
         self.taken = {
             *domain.predicates,
             *domain.functions,
@@ -145,13 +145,6 @@ class _Task:
             *self.objects,
             *(action.name for action in domain.actions),
         }
-
-    def of_type(self, type_name: str) -> tuple[str, ...]:
-        found = self._of_type.get(type_name)
-        if found is None:
-            found = tuple(name for name, kind in self.objects.items() if self.domain.is_subtype(kind, type_name))
-            self._of_type[type_name] = found
-        return found
 
     def bindings(self, parameters: Parameters) -> Iterator[dict[str, str]]:
         names = [variable for variable, _ in parameters]
@@ -170,23 +163,23 @@ class _Task:
 
 def _conjoin(parts: Iterable[Formula]) -> Formula:
     """The conjunction of ``parts``, nested conjunctions flattened, true parts dropped, false absorbing."""
-    flat: list[Formula] = []
-    for part in parts:
-        if part == FALSE:
-            return FALSE
-        flat.extend(part.parts if isinstance(part, And) else (part,))
-    unique = tuple(dict.fromkeys(flat))
-    return unique[0] if len(unique) == 1 else And(unique)
+    return _junction(And, FALSE, parts)
 
 
 def _disjoin(parts: Iterable[Formula]) -> Formula:
+    """The disjunction of ``parts``, nested disjunctions flattened, false parts dropped, true absorbing."""
+    return _junction(Or, TRUE, parts)
+
+
+def _junction(kind: type[And] | type[Or], absorbing: Formula, parts: Iterable[Formula]) -> Formula:
+    """``kind`` of ``parts`` flattened (each once), or ``absorbing`` when one of them is; one part is itself."""
     flat: list[Formula] = []
     for part in parts:
-        if part == TRUE:
-            return TRUE
-        flat.extend(part.parts if isinstance(part, Or) else (part,))
+        if part == absorbing:
+            return absorbing
+        flat.extend(part.parts if isinstance(part, kind) else (part,))
     unique = tuple(dict.fromkeys(flat))
-    return unique[0] if len(unique) == 1 else Or(unique)
+    return unique[0] if len(unique) == 1 else kind(unique)
 
 
 def _conjuncts(formula: Formula) -> tuple[Formula, ...]:
@@ -644,17 +637,6 @@ def _compose(first: Origin | None, then: Origin | None) -> Origin | None:
     return Origin(first.action, tuple(a if isinstance(a, str) else then.args[a] for a in first.args))
 
 
-def _whens(effect: Formula) -> Iterator[When]:
-    if isinstance(effect, And):
-        for part in effect.parts:
-            yield from _whens(part)
-    elif isinstance(effect, Forall):
-        yield from _whens(effect.body)
-    elif isinstance(effect, When):
-        yield effect
-        yield from _whens(effect.effect)
-
-
 def _negated_predicates(conditions: Iterable[Formula]) -> set[str]:
     found: set[str] = set()
 
@@ -744,7 +726,12 @@ class _Complementer:
                 [
                     *conditions,
                     *(a.precondition for a, _ in actions),
-                    *(negation_normal_form(w.condition) for a, _ in actions for w in _whens(a.effect)),
+                    *(
+                        negation_normal_form(w.condition)
+                        for a, _ in actions
+                        for w in walk(a.effect)
+                        if isinstance(w, When)
+                    ),
                 ]
             )
             for predicate in sorted(negated - set(self.complement)):

@@ -1,4 +1,4 @@
-"""Turn model values back into PDDL text: any formula node, whole domains and problems.
+"""Turn PDDL values back into text: any formula node, whole domains and problems (``Domain``, ``Problem``).
 
 The pruning path never re-formats a user's file (``writer.py`` cuts it);
 this formatter writes what we create ourselves (generated suites, the live

@@ -1,4 +1,4 @@
-"""The immutable PDDL model: domains, problems, actions, derived predicates, metrics.
+"""Immutable PDDL values: ``Domain``, ``Problem``, actions, derived predicates, metrics.
 
 Built by ``parser.py``, written back by ``formatter.py`` (whole files) and
 ``writer.py`` (the user's own file minus pruned objects).  Names are
@@ -231,6 +231,23 @@ def all_objects(domain: Domain, problem: Problem) -> Mapping[str, str]:
     everything = dict(domain.constants)
     everything.update(problem.objects)
     return everything
+
+
+class ObjectsOfType:
+    """``objects_of(type_name)``: the objects of a type or of its subtypes, in ``objects``' order, each
+    tuple computed on first use (a cache: the one mutable piece of this module)."""
+
+    def __init__(self, domain: Domain, objects: Mapping[str, str]):
+        self._domain = domain
+        self._objects = objects
+        self._found: dict[str, tuple[str, ...]] = {}
+
+    def __call__(self, type_name: str) -> tuple[str, ...]:
+        found = self._found.get(type_name)
+        if found is None:
+            is_subtype = self._domain.is_subtype
+            found = self._found[type_name] = tuple(o for o, t in self._objects.items() if is_subtype(t, type_name))
+        return found
 
 
 def goal_objects(problem: Problem, domain: Domain) -> frozenset[str]:

@@ -1,4 +1,4 @@
-"""Read PDDL text into the model of ``model.py``: PDDL 3.1 without PDDL+.
+"""Read PDDL text into ``Domain`` and ``Problem`` values (``model.py``): PDDL 3.1 without PDDL+.
 
 Typed STRIPS and ADL, action costs and numeric fluents, durative actions
 (with duration inequalities), derived predicates, timed initial literals,
@@ -44,44 +44,7 @@ from relevance_plan.pddl.model import (
 )
 from relevance_plan.pddl.sexpr import Item, Node, Symbol, check_deadline, collection_paused, parse_sexpr
 
-# Accepted as written; PDDL+ is refused (see UNSUPPORTED_REQUIREMENTS).
-KNOWN_REQUIREMENTS = frozenset(
-    {
-        ":strips",
-        ":typing",
-        ":negative-preconditions",
-        ":disjunctive-preconditions",
-        ":equality",
-        ":existential-preconditions",
-        ":universal-preconditions",
-        ":quantified-preconditions",
-        ":conditional-effects",
-        ":adl",
-        ":action-costs",
-        ":fluents",
-        ":numeric-fluents",
-        ":durative-actions",
-        ":duration-inequalities",
-        ":derived-predicates",
-        ":timed-initial-literals",
-        ":preferences",
-        ":constraints",
-        ":goal-utilities",
-        ":domain-axioms",
-        ":safety-constraints",
-        ":expression-evaluation",
-        ":open-world",
-        ":true-negation",
-        ":ucpop",
-        ":foralls",
-        ":action-expansions",
-        ":foreach-expansions",
-        ":dag-expansions",
-        ":subgoals-through-axioms",
-        ":numbers",
-        ":timed-initial-fluents",
-    }
-)
+# Requirements are accepted as written but these, of PDDL+ and of other formalisms, refused naming the construct.
 UNSUPPORTED_REQUIREMENTS = {
     ":continuous-effects": "continuous effects (PDDL+)",
     ":processes": "processes (PDDL+)",
@@ -149,6 +112,15 @@ class _Reader:
         if isinstance(node, Node) and node.items and isinstance(node.items[0], Symbol):
             return node.items[0].text.lower()
         return None
+
+    def opened(self, node: Item, what: str) -> tuple[Node, str | None, list[Item]] | None:
+        """A list, its head keyword (None: not a keyword) and its arguments; None for ``()``, which
+        is true; a symbol where ``what`` is expected fails."""
+        if isinstance(node, Symbol):
+            self.fail(f"expected {what}, found '{node.text}'", node)
+        if not node.items:
+            return None
+        return node, self.keyword_of(node), node.items[1:]
 
     def header(self, root: Node, kind: str) -> tuple[str, list[Item]]:
         items = root.items
@@ -316,14 +288,12 @@ class _Reader:
     # ---------------------------------------------------------------- conditions
 
     def condition(self, node: Item, scope: _Scope) -> f.Formula:
-        if isinstance(node, Symbol):
-            self.fail(f"expected a condition, found '{node.text}'", node)
-        if not node.items:
+        opened = self.opened(node, "a condition")
+        if opened is None:
             return f.TRUE
-        head = self.keyword_of(node)
+        node, head, args = opened
         if head is None:
             self.fail("expected a condition", node)
-        args = node.items[1:]
         if head in ("and", "or"):
             parts = tuple(self.condition(part, scope) for part in args)
             return f.And(parts) if head == "and" else f.Or(parts)
@@ -418,12 +388,10 @@ class _Reader:
     # ---------------------------------------------------------------- effects
 
     def effect(self, node: Item, scope: _Scope) -> f.Formula:
-        if isinstance(node, Symbol):
-            self.fail(f"expected an effect, found '{node.text}'", node)
-        if not node.items:
+        opened = self.opened(node, "an effect")
+        if opened is None:
             return f.TRUE
-        head = self.keyword_of(node)
-        args = node.items[1:]
+        node, head, args = opened
         if head == "and":
             return f.And(tuple(self.effect(part, scope) for part in args))
         if head == "not":
@@ -890,55 +858,13 @@ def _read_problem_from(
 ) -> Problem:
     reader = _Reader(path)
     name, sections = reader.header(root, "problem")
-    found: dict[str, Any] = {"init": []}
-    requirements: frozenset[str] = frozenset()
-    for section in sections:
-        key = reader.keyword_of(section)
-        if key is None or not isinstance(section, Node):
-            reader.fail("expected a '(:section ...)'", section)
-        if key in found and key != ":init":
-            reader.fail(f"section '{key}' appears twice", section)
-        body = section.items[1:]
-        if key == ":domain":
-            if len(body) != 1:
-                reader.fail("expected '(:domain NAME)'", section)
-            domain_name = reader.symbol(body[0], "a domain name")
-            if domain_name != domain.name:
-                reader.fail(
-                    f"problem is for domain '{domain_name}', but the domain file defines '{domain.name}'",
-                    section,
-                    DomainMismatchError,
-                )
-            found[key] = domain_name
-        elif key == ":requirements":
-            requirements = reader.requirements(body)
-            found[key] = True
-        elif key == ":init":
-            found["init"].extend(body)
-        elif key in (":objects", ":goal", ":constraints", ":metric"):
-            found[key] = section
-        elif key == ":length":
-            found[key] = True  # PDDL 1.2's plan-length hint: planners ignore it
-        else:
-            reader.fail(f"unknown problem section '{key}'", section)
-    if ":domain" not in found:
-        reader.fail("missing '(:domain NAME)'", root)
-    if ":goal" not in found and ":constraints" not in found:
-        reader.fail("missing '(:goal ...)'", root)
+    found, requirements = _problem_sections(reader, root, sections, domain)
     objects, display, groups = _read_objects(reader, found.get(":objects"), domain)
     check_deadline(deadline, "reading the objects", path)
     known = dict(domain.constants)
     known.update(objects)
     scope = _Scope(domain.types, domain.predicates, domain.functions, MappingProxyType(known), {}, in_problem=True)
-    if atoms is None:
-        init = _read_init(reader, found["init"], scope, objects, deadline)
-    else:
-        init = _read_flat_init(atoms, scope, objects, path, deadline)
-        if found["init"]:  # the entries between the stretches: numeric values, negative and timed literals
-            entries = _read_init(reader, found["init"], scope, objects, deadline)
-            if entries.facts:
-                raise PDDLParseError("a fact among the entries")  # none holds one: read in full if it did
-            init = _InitParts(init.facts, entries.numeric, entries.timed, sorted(init.spans + entries.spans))
+    init = _read_problem_init(reader, found["init"], scope, objects, deadline, atoms)
     goal = _read_goal(reader, found.get(":goal"), replace(scope, preferences=True))
     constraints = None
     if ":constraints" in found:
@@ -961,6 +887,75 @@ def _read_problem_from(
         init_spans=tuple(init.spans),
         init_order=MappingProxyType(init.facts),
     )
+
+
+def _problem_sections(
+    reader: _Reader, root: Node, sections: list[Item], domain: Domain
+) -> tuple[dict[str, Any], frozenset[str]]:
+    """The problem's sections by keyword (``init``: the entries of every ``:init``), and its requirements."""
+    found: dict[str, Any] = {"init": []}
+    requirements: frozenset[str] = frozenset()
+    for section in sections:
+        key = reader.keyword_of(section)
+        if key is None or not isinstance(section, Node):
+            reader.fail("expected a '(:section ...)'", section)
+        if key in found and key != ":init":
+            reader.fail(f"section '{key}' appears twice", section)
+        body = section.items[1:]
+        if key == ":domain":
+            found[key] = _domain_name(reader, section, domain)
+        elif key == ":requirements":
+            requirements = reader.requirements(body)
+            found[key] = True
+        elif key == ":init":
+            found["init"].extend(body)
+        elif key in (":objects", ":goal", ":constraints", ":metric"):
+            found[key] = section
+        elif key == ":length":
+            found[key] = True  # PDDL 1.2's plan-length hint: planners ignore it
+        else:
+            reader.fail(f"unknown problem section '{key}'", section)
+    if ":domain" not in found:
+        reader.fail("missing '(:domain NAME)'", root)
+    if ":goal" not in found and ":constraints" not in found:
+        reader.fail("missing '(:goal ...)'", root)
+    return found, requirements
+
+
+def _domain_name(reader: _Reader, section: Node, domain: Domain) -> str:
+    """The name of ``(:domain NAME)``; DomainMismatchError unless it is ``domain``'s."""
+    body = section.items[1:]
+    if len(body) != 1:
+        reader.fail("expected '(:domain NAME)'", section)
+    domain_name = reader.symbol(body[0], "a domain name")
+    if domain_name != domain.name:
+        reader.fail(
+            f"problem is for domain '{domain_name}', but the domain file defines '{domain.name}'",
+            section,
+            DomainMismatchError,
+        )
+    return domain_name
+
+
+def _read_problem_init(
+    reader: _Reader,
+    entries: list[Item],
+    scope: _Scope,
+    objects: Mapping[str, str],
+    deadline: float | None,
+    atoms: _PlainAtoms | None,
+) -> _InitParts:
+    """The initial state: every entry read, or (``atoms``) the plain atoms read flat and the other entries in full."""
+    if atoms is None:
+        return _read_init(reader, entries, scope, objects, deadline)
+    init = _read_flat_init(atoms, scope, objects, reader.path, deadline)
+    if not entries:
+        return init
+    # the entries between the stretches: numeric values, negative and timed literals
+    others = _read_init(reader, entries, scope, objects, deadline)
+    if others.facts:
+        raise PDDLParseError("a fact among the entries")  # none holds one: read in full if it did
+    return _InitParts(init.facts, others.numeric, others.timed, sorted(init.spans + others.spans))
 
 
 def _single(reader: _Reader, section: Node, key: str, scope: _Scope) -> f.Formula:

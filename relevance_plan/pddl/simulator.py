@@ -48,7 +48,15 @@ from dataclasses import dataclass, field
 
 from relevance_plan.errors import SimulationTimeout
 from relevance_plan.pddl import formulas as f
-from relevance_plan.pddl.model import Action, DerivedPredicate, Domain, Problem, TimedLiteral, all_objects
+from relevance_plan.pddl.model import (
+    Action,
+    DerivedPredicate,
+    Domain,
+    ObjectsOfType,
+    Problem,
+    TimedLiteral,
+    all_objects,
+)
 from relevance_plan.pddl.plans import Plan, PlanStep
 
 DURATION_TOLERANCE = 1e-3  # planners print durations with three decimals
@@ -93,7 +101,7 @@ class Simulator:
         self.problem = problem
         self.objects = all_objects(domain, problem)
         self.deadline = deadline
-        self._by_type: dict[str, tuple[str, ...]] = {}
+        self.objects_of = ObjectsOfType(domain, self.objects)
         self._member_sets: dict[str, frozenset[str]] = {}
         # per derived rule (by id: self.domain keeps it alive): the atoms its body needs, the variables' types
         # per derived rule or quantifier (by id: self.domain keeps it alive): what its body needs
@@ -107,13 +115,6 @@ class Simulator:
         self._condition_quantified: dict[int, bool] = {}
 
     # ---------------------------------------------------------------- bindings
-
-    def objects_of(self, type_name: str) -> tuple[str, ...]:
-        cached = self._by_type.get(type_name)
-        if cached is None:
-            cached = tuple(o for o, t in self.objects.items() if self.domain.is_subtype(t, type_name))
-            self._by_type[type_name] = cached
-        return cached
 
     def tick(self) -> None:
         self._work += 1

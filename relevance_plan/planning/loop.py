@@ -76,9 +76,9 @@ from relevance_plan.planning.validate import (
 )
 from relevance_plan.progress import ProgressCallback, ProgressEvent
 from relevance_plan.relevance.knowledge import KnowledgeModel
-from relevance_plan.relevance.prune import Selection, Thresholds, widen
-from relevance_plan.relevance.scorers import PlanningTask
+from relevance_plan.relevance.prune import Selection, Thresholds, Widening, widen
 from relevance_plan.relevance.setup import Scoring, ScoringOptions, score_problem
+from relevance_plan.relevance.task import PlanningTask
 from relevance_plan.supervision.process import CancelScope, cancel_scope
 
 METHODS = ("relevance", "pure", "random", "oracle")
@@ -225,7 +225,7 @@ class _Attempting:
 
 
 @dataclass(frozen=True)
-class _Widening:
+class _AttemptState:
     """Where the loop stands between attempts: the next selection (None: the full problem), the
     objects widening added back, how many pruned attempts ran, and their budgets."""
 
@@ -260,7 +260,7 @@ def run_attempts(
     """
     deadline = None if options.timeout is None else started + options.timeout
     loop = _Attempting(task, call_planner, options, deadline, model, race, _teller(progress))
-    state = _Widening(selection, budgets=budgets)
+    state = _AttemptState(selection, budgets=budgets)
     attempts: list[Attempt] = []
     widening_time = 0.0
     while loop.time_left() and not (race is not None and race.won):
@@ -293,7 +293,9 @@ def run_attempts(
         assert pruned is not None  # _decided ends the loop after the full problem
         widen_started = time.perf_counter()
         try:
-            widened, added_back = widen(pruned, options.widen_factor, state.added_back, model, _goal_filter(options))
+            widened, added_back = widen(
+                pruned, Widening(options.widen_factor, _goal_filter(options)), state.added_back, model
+            )
         except OutOfTimeError:
             break  # the --timeout ran out while widening: as when it runs out between attempts
         finally:
@@ -313,7 +315,7 @@ def _ran_out_of_budget(attempts: Sequence[Attempt]) -> bool:
     return bool(attempts) and attempts[-1].selection is not None and attempts[-1].status is AttemptStatus.OUT_OF_TIME
 
 
-def _time_limit(loop: _Attempting, pruned: Selection | None, state: _Widening) -> float | None:
+def _time_limit(loop: _Attempting, pruned: Selection | None, state: _AttemptState) -> float | None:
     """The attempt's time limit: a share of what is left for a pruned attempt that may widen (all of
     it beside a race), all of it for the last; a pruned attempt's budget when it has one."""
     final = pruned is None or not loop.options.widen
@@ -328,7 +330,7 @@ def _time_limit(loop: _Attempting, pruned: Selection | None, state: _Widening) -
     return limit
 
 
-def _attempt(loop: _Attempting, number: int, pruned: Selection | None, state: _Widening) -> Attempt:
+def _attempt(loop: _Attempting, number: int, pruned: Selection | None, state: _AttemptState) -> Attempt:
     """One attempt on ``pruned`` (None: the full problem), its plan validated on the original."""
     kept = loop.total if pruned is None else len(pruned.kept)
     loop.say(
@@ -477,7 +479,7 @@ class _FirstSelection:
 
     @property
     def model(self) -> KnowledgeModel | None:
-        return self.scoring.model if self.scoring is not None else None
+        return self.scoring.knowledge_model if self.scoring is not None else None
 
     @property
     def scorer(self) -> str | None:
@@ -661,7 +663,7 @@ def _say_selection(say: Callable[[str], None], selection: Selection, total: int)
         + (f", {len(selection.set_aside)} blocked alternatives set aside)" if selection.set_aside else ")")
     )
     if not selection.removed:
-        say(f"pruned: no ({selection.unpruned})")
+        say(f"pruned: no ({selection.unpruned_reason})")
 
 
 def _plan_unread(

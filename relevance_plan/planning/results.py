@@ -158,7 +158,7 @@ class PlanResult:
         if self.refusal:
             return self.refusal
         if self.selection is not None:
-            return self.selection.unpruned or None
+            return self.selection.unpruned_reason or None
         return "method 'pure' plans the full problem" if self.method == "pure" else None
 
     @property

@@ -5,6 +5,10 @@ moved first), whatever a kept object stands on or sits in (its place, the
 container that must be opened), the objects of a predicate with a single
 initial fact (the robot's only position), and the dependencies a knowledge
 model declares.  Every object put back carries the fact that brought it.
+
+``close_over_constraints`` is the worklist itself; ``ConstraintClosure`` runs
+it on one task with that task's rules, and keeps besides what a quantifier
+ranges over (``soundness``): the closure every pruning stage and the repair call.
 """
 
 from __future__ import annotations
@@ -13,7 +17,16 @@ from collections import defaultdict
 from collections.abc import Iterable, Set
 from dataclasses import dataclass
 
-from relevance_plan.relevance.analysis import ConstraintRule, FactIndex
+from relevance_plan.pddl.model import Domain
+from relevance_plan.relevance.analysis import (
+    ConstraintRule,
+    FactIndex,
+    infer_constraint_rules,
+    single_valued_predicates,
+)
+from relevance_plan.relevance.knowledge import KnowledgeModel
+from relevance_plan.relevance.soundness import KeptForSoundness
+from relevance_plan.relevance.task import PlanningTask
 
 
 @dataclass(frozen=True)
@@ -82,3 +95,63 @@ def close_over_constraints(
                 if fact[1 + rule.when_kept] == name:
                     keep(fact[1 + rule.restore], name, rule.kind, fact, worklist)
     return frozenset(result), tuple(restored)
+
+
+def constraint_rules(
+    domain: Domain, index: FactIndex, knowledge_model: KnowledgeModel | None
+) -> tuple[ConstraintRule, ...]:
+    """The rules inferred from the domain's schemas, and the dependencies the knowledge model declares."""
+    rules = list(infer_constraint_rules(domain, index))
+    if knowledge_model is not None:
+        for dependency in knowledge_model.dependencies:
+            rules.append(
+                ConstraintRule(
+                    dependency.predicate, dependency.when_kept, dependency.restore, "model", dependency.reason
+                )
+            )
+    return tuple(rules)
+
+
+@dataclass(frozen=True)
+class ConstraintClosure:
+    """Closure over constraints on one task, keeping what soundness needs; called as
+    ``closure(names, already)`` -> (the closed set, what it put back and why)."""
+
+    task: PlanningTask
+    rules: tuple[ConstraintRule, ...]
+    singletons: frozenset[str]  # predicates with a single initial fact
+
+    @classmethod
+    def of(cls, task: PlanningTask, knowledge_model: KnowledgeModel | None) -> ConstraintClosure:
+        domain, index = task.domain, task.init_index
+        return cls(task, constraint_rules(domain, index, knowledge_model), single_valued_predicates(domain, index))
+
+    def __call__(self, names: Set[str], already: Set[str] = frozenset()) -> tuple[frozenset[str], tuple[Restored, ...]]:
+        """``names`` closed (``already``: a part of them this closure closed before, whose links were followed)."""
+        # what a quantifier ranges over stays, so that a plan of the pruned problem is one of the original
+        sound = self.task.kept_for_soundness
+        missing = sorted(sound.always.keys() - set(names))
+        closed, found = self._over_constraints(set(names) | set(missing), already)
+        reasons = [soundness_reason(name, sound.always[name]) for name in missing]
+        added = closed - already
+        while sound.linked:
+            linked = sound.admitted(closed, added)
+            if not linked:
+                break
+            reasons += (soundness_reason(name, requirement) for name, requirement in sorted(linked.items()))
+            grown, more = self._over_constraints(closed | linked.keys(), closed)
+            found += more
+            added, closed = grown - closed, grown
+        return closed, tuple(reasons) + found
+
+    def _over_constraints(self, names: Set[str], already: Set[str]) -> tuple[frozenset[str], tuple[Restored, ...]]:
+        task = self.task
+        return close_over_constraints(
+            names, self.rules, task.init_index, task.problem.objects.keys(), self.singletons, already
+        )
+
+
+def soundness_reason(name: str, requirement: KeptForSoundness) -> Restored:
+    admitted = f" with ({requirement.guard} ...)" if requirement.guard else ""
+    note = f"{requirement.where} quantifies over every {requirement.type_name}{admitted}: {requirement.formula}"
+    return Restored(name, "", "soundness", (), note)

@@ -1,7 +1,7 @@
 """The knowledge model: the offline stand-in for the paper's GPT-4o answers.
 
 One YAML file per domain (``domains/<name>/relevance.yaml``), schema version 1,
-documented in ``docs/knowledge-model.md``.  It is validated on load; every
+documented in ``docs/knowledge-knowledge_model.md``.  It is validated on load; every
 error names the file and the line of the offending entry.
 """
 
@@ -10,7 +10,7 @@ from __future__ import annotations
 import functools
 import math
 import os
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Collection, Iterator, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from types import MappingProxyType
@@ -21,7 +21,7 @@ from relevance_plan.errors import ModelError, UsageError, printable
 from relevance_plan.pddl.model import Domain
 from relevance_plan.relevance.scene import PLACEMENT_CONDITIONS, ScenePredicates
 
-if TYPE_CHECKING:
+if TYPE_CHECKING:  # for the annotations only: yaml itself is imported on first use (_yaml_loader)
     import yaml
 
 SCHEMA_VERSION = 1
@@ -208,7 +208,7 @@ class _Checker:
                 )
 
 
-def parse_model(text: str, path: str = "<model>") -> KnowledgeModel:
+def parse_knowledge_model(text: str, path: str = "<model>") -> KnowledgeModel:
     """Validate and build a knowledge model from YAML text."""
     data = _load_yaml(text, path)
     check = _Checker(path)
@@ -406,15 +406,32 @@ def _read_humans(
     return humans
 
 
+def _human_tables(
+    check: _Checker,
+    name: str,
+    entry: _LineDict,
+    section: str,
+    known: tuple[str, Collection[str]] | None,
+    not_a_table: str,
+) -> Iterator[tuple[str, _LineDict]]:
+    """(key, table) of each entry of the human's ``section``, in order; a key not among ``known``
+    (what they are, and their names) or a value that is not a table fails (``not_a_table`` says
+    what it must be, ``{}`` standing for the key)."""
+    for key, table in check.mapping(entry, section, required=False).items():
+        if known is not None and key not in known[1]:
+            check.fail(f"human '{name}' names unknown {known[0]} '{key}'", entry, section)
+        if not isinstance(table, _LineDict):
+            check.fail(f"human '{name}': {not_a_table.format(key)}", entry, section)
+        yield key, table
+
+
 def _human_objectives(
     check: _Checker, name: str, entry: _LineDict, task_classes: Mapping[str, Any], objectives: Mapping[str, Any]
 ) -> dict[str, Mapping[str, float]]:
     found = {}
-    for objective, tasks in check.mapping(entry, "objectives", required=False).items():
-        if objective not in objectives:
-            check.fail(f"human '{name}' names unknown objective '{objective}'", entry, "objectives")
-        if not isinstance(tasks, _LineDict):
-            check.fail(f"human '{name}': objective '{objective}' must map tasks to probabilities", entry, "objectives")
+    for objective, tasks in _human_tables(
+        check, name, entry, "objectives", ("objective", objectives), "objective '{}' must map tasks to probabilities"
+    ):
         probabilities = check.probabilities(tasks, f"{name}: P(task | {objective})")
         _check_distribution(check, tasks, probabilities, f"{name}: P(task | {objective})")
         for task in probabilities:
@@ -428,9 +445,9 @@ def _human_tasks(
     check: _Checker, name: str, entry: _LineDict, classes: Mapping[str, Any]
 ) -> dict[str, Mapping[str, float]]:
     found = {}
-    for task, entry_classes in check.mapping(entry, "tasks", required=False).items():
-        if not isinstance(entry_classes, _LineDict):
-            check.fail(f"human '{name}': task '{task}' must map classes to probabilities", entry, "tasks")
+    for task, entry_classes in _human_tables(
+        check, name, entry, "tasks", None, "task '{}' must map classes to probabilities"
+    ):
         for class_name in entry_classes:
             if class_name not in classes:
                 check.fail(f"human '{name}' names unknown class '{class_name}'", entry_classes, class_name)
@@ -441,14 +458,10 @@ def _human_tasks(
 def _human_kinds(
     check: _Checker, name: str, entry: _LineDict, classes: Mapping[str, Any]
 ) -> dict[str, Mapping[str, float]]:
-    found = {}
-    for class_name, entry_kinds in check.mapping(entry, "kind_relevance", required=False).items():
-        if class_name not in classes:
-            check.fail(f"human '{name}' names unknown class '{class_name}'", entry, "kind_relevance")
-        if not isinstance(entry_kinds, _LineDict):
-            check.fail(f"human '{name}': kind relevance of '{class_name}' must be a mapping", entry, "kind_relevance")
-        found[class_name] = check.probabilities(entry_kinds, f"{name}: P(kind | {class_name})")
-    return found
+    tables = _human_tables(
+        check, name, entry, "kind_relevance", ("class", classes), "kind relevance of '{}' must be a mapping"
+    )
+    return {class_name: check.probabilities(kinds, f"{name}: P(kind | {class_name})") for class_name, kinds in tables}
 
 
 # A dependency's argument position: PDDL predicates with more arguments than this do not exist.
@@ -494,13 +507,13 @@ def _check_distribution(check: _Checker, section: _LineDict, probabilities: Mapp
         check.fail(f"{what} sums to {total:.3f}, not 1", section)
 
 
-def load_model(path: str | os.PathLike[str]) -> KnowledgeModel:
+def load_knowledge_model(path: str | os.PathLike[str]) -> KnowledgeModel:
     from relevance_plan.io import read_text
 
-    return parse_model(read_text(path, "knowledge model"), str(path))
+    return parse_knowledge_model(read_text(path, "knowledge model"), str(path))
 
 
-def shipped_models() -> dict[str, Path]:
+def shipped_knowledge_models() -> dict[str, Path]:
     """Domain name -> the knowledge model shipped for it (``data/domains/<world>/relevance.yaml``)."""
     return {
         folder.name: folder / "relevance.yaml"
@@ -509,34 +522,36 @@ def shipped_models() -> dict[str, Path]:
     }
 
 
-def find_model(domain_name: str, domain_path: str | None) -> Path | None:
+def find_knowledge_model(domain_name: str, domain_path: str | None) -> Path | None:
     """The model next to the domain file, else the one shipped for a domain of that name.
 
-    The name is only ever a key of :func:`shipped_models`, never part of a path:
+    The name is only ever a key of :func:`shipped_knowledge_models`, never part of a path:
     a domain called ``../..`` finds nothing.
     """
     if domain_path:
         beside = Path(domain_path).resolve().parent / "relevance.yaml"
         if beside.is_file():
             return beside
-    return shipped_models().get(domain_name)
+    return shipped_knowledge_models().get(domain_name)
 
 
-def check_model_applies(model: KnowledgeModel, domain: Domain) -> None:
+def check_knowledge_model_applies(knowledge_model: KnowledgeModel, domain: Domain) -> None:
     """Refuse a model for another domain, or one whose scene predicates or dependencies the domain lacks."""
-    if model.domain != domain.name:
-        raise ModelError(f"model is for domain '{model.domain}', not '{domain.name}'", path=model.path)
-    for role, predicate in vars(model.scene).items():
+    if knowledge_model.domain != domain.name:
+        raise ModelError(
+            f"model is for domain '{knowledge_model.domain}', not '{domain.name}'", path=knowledge_model.path
+        )
+    for role, predicate in vars(knowledge_model.scene).items():
         if predicate not in domain.predicates and role != "human_location":
             raise ModelError(
-                f"scene.{role} '{predicate}' is not a predicate of domain '{domain.name}'", path=model.path
+                f"scene.{role} '{predicate}' is not a predicate of domain '{domain.name}'", path=knowledge_model.path
             )
-    for dependency in model.dependencies:
+    for dependency in knowledge_model.dependencies:
         params = domain.predicates.get(dependency.predicate)
         if params is None:
             raise ModelError(
                 f"dependency on '{dependency.predicate}', which is not a predicate of domain '{domain.name}'",
-                path=model.path,
+                path=knowledge_model.path,
                 line=dependency.line,
             )
         for position in (dependency.when_kept, dependency.restore):
@@ -544,7 +559,7 @@ def check_model_applies(model: KnowledgeModel, domain: Domain) -> None:
                 raise ModelError(
                     f"dependency on '{dependency.predicate}': position {position + 1} is beyond its"
                     f" {len(params)} argument(s)",
-                    path=model.path,
+                    path=knowledge_model.path,
                     line=dependency.line,
                 )
 

@@ -1,25 +1,41 @@
-"""Score -> threshold -> closure -> pruned problem text, as one result value."""
+"""Pruning: from scores to the objects an attempt keeps, in five stages, as one result value.
+
+    select -> close -> set aside -> repair -> finish
+
+* **select** (:func:`select_relevant`): the objects whose class and score pass
+  the thresholds, the pinned ones always, and the ``extra`` objects a widening
+  adds; with the goal filter, relevant objects no action toward the goal can
+  use stay out;
+* **close** (``closure.ConstraintClosure``): what the selected objects depend
+  on comes back, each with its reason, and what a quantifier ranges over stays;
+* **set aside**: alternatives the first attempt bets it can do without, left
+  for a later one: blocked ones while a free one of their class is kept
+  (:func:`free_alternatives`), and the spare candidates of a populous role,
+  which the repair brings back as a relaxed plan needs them;
+* **repair** (``repair.repair_selection``): a kept set on which the goal is
+  unreachable even ignoring deletes gets what a relaxed plan needs;
+* **finish**: the pruned problem's text, or the full problem when the
+  selection keeps most of it.
+
+Each stage takes the selection so far (``_Draft``, immutable) and returns the
+next; :class:`PruneSettings` holds the knobs.  :func:`widen` grows a failed
+selection, adding objects in the order of :func:`ranked_names`.
+"""
 
 from __future__ import annotations
 
 from collections import Counter, defaultdict
 from collections.abc import Sequence, Set
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
-from relevance_plan.pddl.model import Domain
 from relevance_plan.pddl.writer import write_pruned_problem
-from relevance_plan.relevance.analysis import (
-    ConstraintRule,
-    FactIndex,
-    infer_constraint_rules,
-    single_valued_predicates,
-)
-from relevance_plan.relevance.closure import Restored, close_over_constraints
+from relevance_plan.relevance.closure import ConstraintClosure, Restored
 from relevance_plan.relevance.knowledge import KnowledgeModel, check_threshold
-from relevance_plan.relevance.reachability import repair_selection
-from relevance_plan.relevance.scorers import PlanningTask, ScoreResult
-from relevance_plan.relevance.soundness import KeptForSoundness
+from relevance_plan.relevance.repair import repair_selection
+from relevance_plan.relevance.scorers import ScoreResult
+from relevance_plan.relevance.scorers.knowledge_model import UNKNOWN_CLASS
+from relevance_plan.relevance.task import PlanningTask
 from relevance_plan.relevance.types import static_predicates
 
 DEFAULT_TAU = 0.2
@@ -49,6 +65,33 @@ class Thresholds:
 
 
 @dataclass(frozen=True)
+class PruneSettings:
+    """How a selection is narrowed and checked; the defaults are thresholds and closure alone."""
+
+    goal_filter: bool = False  # leave out relevant objects no action toward the goal can use
+    prefer_free: bool = False  # set aside blocked alternatives while a free one of their class is kept
+    # (with the repair) set aside the selected candidates of a populous role (ScoreResult.alternatives):
+    # the repair brings back, best ranked first, those a relaxed plan needs (one airplane carries every package)
+    economical: bool = False
+    repair: bool | None = None  # None: for REPAIR_SCORERS at the default thresholds or lower
+    # keeping more than this share of the objects means the full problem: pruning would save little and
+    # risk a second attempt (None: FULL_ABOVE for REPAIR_SCORERS; 1 for the others, kept as chosen)
+    full_above: float | None = None
+    set_aside: frozenset[str] = frozenset()  # what earlier selections set aside: stays out unless given as extra
+
+    def repairs(self, scorer: str, thresholds: Thresholds) -> bool:
+        if self.repair is not None:
+            return self.repair
+        # A stricter selection than the defaults, asked for explicitly, is tried as given.
+        return scorer in REPAIR_SCORERS and max(thresholds.tau_class, thresholds.tau_element) <= DEFAULT_TAU
+
+    def full_share(self, scorer: str) -> float:
+        if self.full_above is not None:
+            return self.full_above
+        return FULL_ABOVE if scorer in REPAIR_SCORERS else 1.0
+
+
+@dataclass(frozen=True)
 class Selection:
     task: PlanningTask
     scores: ScoreResult
@@ -58,7 +101,7 @@ class Selection:
     restored: tuple[Restored, ...]  # in the order closure found them
     text: str = field(repr=False)  # the pruned problem in the user's own layout
     set_aside: frozenset[str] = frozenset()  # relevant alternatives left for a later attempt (see free_alternatives)
-    unpruned: str = ""  # why every object is kept, when one is ("" when the selection prunes)
+    unpruned_reason: str = ""  # why every object is kept, when one is ("" when the selection prunes)
 
     @property
     def removed(self) -> tuple[str, ...]:
@@ -73,7 +116,7 @@ class Selection:
         problem = self.task.problem
         return {
             "pruned": bool(self.removed),
-            "unpruned_reason": self.unpruned or None,
+            "unpruned_reason": self.unpruned_reason or None,
             "objects_total": len(problem.objects),
             "objects_kept": len(self.kept),
             "kept": [problem.display(n) for n in problem.objects if n in self.kept],
@@ -86,16 +129,94 @@ class Selection:
         }
 
 
-def constraint_rules(domain: Domain, index: FactIndex, model: KnowledgeModel | None) -> tuple[ConstraintRule, ...]:
-    rules = list(infer_constraint_rules(domain, index))
-    if model is not None:
-        for dependency in model.dependencies:
-            rules.append(
-                ConstraintRule(
-                    dependency.predicate, dependency.when_kept, dependency.restore, "model", dependency.reason
-                )
-            )
-    return tuple(rules)
+@dataclass(frozen=True)
+class _Draft:
+    """The selection so far, as one pruning stage hands it to the next."""
+
+    selected: frozenset[str]  # passed the thresholds, and the extra objects
+    set_aside: frozenset[str]
+    kept: frozenset[str] = frozenset()  # the selected ones closed, and what the repair added
+    restored: tuple[Restored, ...] = ()  # why each kept object that was not selected is kept
+
+
+def prune_with_scores(
+    task: PlanningTask,
+    scores: ScoreResult,
+    thresholds: Thresholds = Thresholds(),
+    knowledge_model: KnowledgeModel | None = None,
+    extra: Set[str] = frozenset(),
+    settings: PruneSettings = PruneSettings(),
+) -> Selection:
+    """The selection ``settings`` ask for: select -> close -> set aside -> repair -> finish (see the
+    module's docstring).  ``extra`` objects are kept whatever their scores; ``knowledge_model``
+    adds the dependencies it declares to closure's rules."""
+    extra = frozenset(extra) & task.problem.objects.keys()
+    draft = _select(task, scores, thresholds, settings, extra)
+    task.check_time("choosing the objects")
+    closure = ConstraintClosure.of(task, knowledge_model)
+    draft = _close(draft, closure)
+    task.check_time("closing the selection over constraints")
+    if settings.prefer_free:
+        draft = _set_aside_blocked(task, scores, draft, closure)
+    repair = settings.repairs(scores.scorer, thresholds)
+    if repair and settings.economical:
+        draft = _set_aside_spare(task, scores, draft, closure, extra)
+    full_above = settings.full_share(scores.scorer)
+    if repair and len(draft.kept) <= full_above * len(task.problem.objects):
+        draft = _repair(task, scores, draft, closure)
+    return _finish(task, scores, thresholds, draft, full_above)
+
+
+def _select(
+    task: PlanningTask, scores: ScoreResult, thresholds: Thresholds, settings: PruneSettings, extra: frozenset[str]
+) -> _Draft:
+    """The relevant objects and the extra ones, without what earlier selections set aside."""
+    set_aside = settings.set_aside - extra
+    selected = (select_relevant(task, scores, thresholds, settings.goal_filter) - set_aside) | extra
+    return _Draft(selected, set_aside)
+
+
+def _close(draft: _Draft, closure: ConstraintClosure) -> _Draft:
+    kept, restored = closure(draft.selected)
+    return replace(draft, kept=kept, restored=restored)
+
+
+def _set_aside_blocked(task: PlanningTask, scores: ScoreResult, draft: _Draft, closure: ConstraintClosure) -> _Draft:
+    """Without the blocked alternatives (``free_alternatives``), closed again."""
+    narrowed = free_alternatives(task, scores, draft.selected, draft.restored)
+    if narrowed == draft.selected:
+        return draft
+    return _close(replace(draft, selected=narrowed, set_aside=draft.set_aside | (draft.selected - narrowed)), closure)
+
+
+def _set_aside_spare(
+    task: PlanningTask, scores: ScoreResult, draft: _Draft, closure: ConstraintClosure, extra: frozenset[str]
+) -> _Draft:
+    """Without the spare alternatives (``_spare_alternatives``; never the extra ones), closed again."""
+    spare = _spare_alternatives(task, scores, draft.selected - extra)
+    if not spare:
+        return draft
+    return _close(replace(draft, selected=draft.selected - spare, set_aside=draft.set_aside | spare), closure)
+
+
+def _repair(task: PlanningTask, scores: ScoreResult, draft: _Draft, closure: ConstraintClosure) -> _Draft:
+    """With what a relaxed plan needs; what the repair brought back is no longer set aside."""
+    kept, repaired, _ = repair_selection(task, draft.kept, scores.element_scores, closure)
+    return replace(draft, kept=kept, restored=draft.restored + repaired, set_aside=draft.set_aside - kept)
+
+
+def _finish(
+    task: PlanningTask, scores: ScoreResult, thresholds: Thresholds, draft: _Draft, full_above: float
+) -> Selection:
+    """The pruned problem, or the full one when the draft keeps more than ``full_above`` of the objects."""
+    total = len(task.problem.objects)
+    if len(draft.kept) > full_above * total:
+        why = f"the selection kept {len(draft.kept)} of {total} objects (more than {full_above:.0%}): the full problem"
+        return full_problem(task, scores, thresholds, draft.selected, draft.restored, why)
+    task.check_time("checking the selection")
+    kept, text = draft.kept, write_pruned_problem(task.problem, draft.kept)
+    why = _why_nothing_pruned(task, kept, draft.restored)
+    return Selection(task, scores, thresholds, draft.selected, kept, draft.restored, text, draft.set_aside, why)
 
 
 def can_serve_goal(task: PlanningTask, name: str) -> bool:
@@ -133,8 +254,6 @@ def free_alternatives(
     knowledge model are treated as interchangeable (a PDDL type is not: all
     blocks of a tower are needed); goal objects always stay.
     """
-    from relevance_plan.relevance.scorers.model import UNKNOWN_CLASS
-
     if scores.scorer != "model":
         return selected
     encumbered = {item.because_of for item in restored if item.rule == "blocker"}
@@ -148,107 +267,6 @@ def free_alternatives(
         if members - encumbered:
             set_aside |= members & encumbered
     return selected - set_aside
-
-
-def prune_with_scores(
-    task: PlanningTask,
-    scores: ScoreResult,
-    thresholds: Thresholds = Thresholds(),
-    model: KnowledgeModel | None = None,
-    extra: Set[str] = frozenset(),
-    goal_filter: bool = False,
-    prefer_free: bool = False,
-    *,
-    repair: bool | None = None,
-    full_above: float | None = None,
-    economical: bool = False,
-    held_aside: Set[str] = frozenset(),
-) -> Selection:
-    """Threshold the scores, add ``extra`` objects, close over constraints, check, write the text.
-
-    With ``prefer_free``, blocked alternatives are set aside (``free_alternatives``)
-    and closure runs again on what is left.  With ``repair`` (default: for the
-    goal scorer at the default thresholds or lower), a kept set on which the goal is unreachable even ignoring
-    deletes gets what a relaxed plan needs (``reachability.repair_selection``).
-    A selection that keeps more than ``full_above`` of the objects (default:
-    ``FULL_ABOVE`` for the scorers repaired by default, never for the others,
-    whose first selection is kept as chosen) becomes the full problem: pruning
-    it would save little and risk a second attempt.  With ``economical`` (and
-    ``repair``), the selected alternatives of a populous role
-    (``ScoreResult.alternatives``: fifty airplanes near the goal's objects)
-    are set aside and the repair brings back, best ranked first, only those
-    a relaxed plan needs: one airplane carries every package.  ``held_aside``
-    (a widening's: what earlier selections set aside) stays out unless in ``extra``.
-    """
-    extra = frozenset(extra) & task.problem.objects.keys()
-    held = frozenset(held_aside) - extra
-    selected = (select_relevant(task, scores, thresholds, goal_filter) - held) | extra
-    task.check_time("choosing the objects")
-    rules = constraint_rules(task.domain, task.init_index, model)
-    singletons = single_valued_predicates(task.domain, task.init_index)
-
-    sound = task.kept_for_soundness
-
-    def over_constraints(names: Set[str], already: Set[str]) -> tuple[frozenset[str], tuple[Restored, ...]]:
-        candidates = task.problem.objects.keys()
-        return close_over_constraints(names, rules, task.init_index, candidates, singletons, already)
-
-    def close(names: Set[str], already: Set[str] = frozenset()) -> tuple[frozenset[str], tuple[Restored, ...]]:
-        # what a quantifier ranges over stays, so that a plan of the pruned problem is one of the original
-        missing = sorted(sound.always.keys() - set(names))
-        closed, found = over_constraints(set(names) | set(missing), already)
-        reasons = [soundness_reason(name, sound.always[name]) for name in missing]
-        added = closed - already  # ``already`` was closed by this function: its links were followed
-        while sound.linked:
-            linked = sound.admitted(closed, added)
-            if not linked:
-                break
-            reasons += (soundness_reason(name, requirement) for name, requirement in sorted(linked.items()))
-            grown, more = over_constraints(closed | linked.keys(), closed)
-            found += more
-            added, closed = grown - closed, grown
-        return closed, tuple(reasons) + found
-
-    kept, restored = close(selected)
-    task.check_time("closing the selection over constraints")
-    set_aside: frozenset[str] = held
-    if prefer_free:
-        narrowed = free_alternatives(task, scores, selected, restored)
-        if narrowed != selected:
-            set_aside |= selected - narrowed
-            selected = narrowed
-            kept, restored = close(selected)
-    if repair is None:
-        # A stricter selection than the defaults, asked for explicitly, is tried as given.
-        repair = scores.scorer in REPAIR_SCORERS and max(thresholds.tau_class, thresholds.tau_element) <= DEFAULT_TAU
-    if full_above is None:
-        full_above = FULL_ABOVE if scores.scorer in REPAIR_SCORERS else 1.0
-    total = len(task.problem.objects)
-    if repair and economical:
-        spare = _spare_alternatives(task, scores, selected - frozenset(extra))
-        if spare:
-            set_aside |= spare
-            selected = selected - spare
-            kept, restored = close(selected)
-    if repair and len(kept) <= full_above * total:
-        kept, repaired, _ = repair_selection(task, kept, scores.element_scores, close)
-        restored = tuple(restored) + repaired
-        set_aside -= kept
-    if len(kept) > full_above * total:
-        why = f"the selection kept {len(kept)} of {total} objects (more than {full_above:.0%}): the full problem"
-        return full_problem(task, scores, thresholds, selected, restored, why)
-    task.check_time("checking the selection")
-    return Selection(
-        task=task,
-        scores=scores,
-        thresholds=thresholds,
-        selected=selected,
-        kept=kept,
-        restored=restored,
-        text=write_pruned_problem(task.problem, kept),
-        set_aside=set_aside,
-        unpruned=_why_nothing_pruned(task, kept, restored),
-    )
 
 
 def _spare_alternatives(task: PlanningTask, scores: ScoreResult, selected: frozenset[str]) -> frozenset[str]:
@@ -279,12 +297,6 @@ def _why_nothing_pruned(task: PlanningTask, kept: Set[str], restored: Sequence[R
     return "every object is relevant or needed by a relevant one" + (f" ({', '.join(rules)})" if rules else "")
 
 
-def soundness_reason(name: str, requirement: KeptForSoundness) -> Restored:
-    admitted = f" with ({requirement.guard} ...)" if requirement.guard else ""
-    note = f"{requirement.where} quantifies over every {requirement.type_name}{admitted}: {requirement.formula}"
-    return Restored(name, "", "soundness", (), note)
-
-
 def full_problem(
     task: PlanningTask,
     scores: ScoreResult,
@@ -294,66 +306,60 @@ def full_problem(
     why: str = "",
 ) -> Selection:
     """The result that keeps every object (``why`` says why): the attempt loop plans on the user's own file."""
-    return Selection(
-        task=task,
-        scores=scores,
-        thresholds=thresholds,
-        selected=frozenset(selected),
-        kept=frozenset(task.problem.objects),
-        restored=tuple(restored),
-        text=task.problem.text,
-        unpruned=why,
-    )
+    kept, text = frozenset(task.problem.objects), task.problem.text
+    return Selection(task, scores, thresholds, frozenset(selected), kept, tuple(restored), text, unpruned_reason=why)
+
+
+@dataclass(frozen=True)
+class Widening:
+    """How one widening step grows a selection after a failed attempt."""
+
+    factor: float  # the thresholds are multiplied by it
+    goal_filter: bool = False
+    growth: float = GROWTH  # the kept set grows at least this many times (and by four objects)
+    full_above: float = FULL_ABOVE  # past this share of the objects, the full problem
 
 
 def widen(
     result: Selection,
-    factor: float,
+    widening: Widening,
     extra: Set[str] = frozenset(),
-    model: KnowledgeModel | None = None,
-    goal_filter: bool = False,
-    *,
-    growth: float = GROWTH,
-    full_above: float = FULL_ABOVE,
+    knowledge_model: KnowledgeModel | None = None,
 ) -> tuple[Selection, frozenset[str]]:
-    """One widening step after a failed attempt; returns the new result and the extra set.
+    """One widening step after a failed attempt; returns the new selection and the extra set.
 
-    The thresholds shrink by ``factor`` and the best-ranked removed objects
-    (``ranked_names``) are put back until the kept
-    set has at least ``growth`` times as many objects, so all failed attempts
-    together cost about as much as the last one.  When that would keep more
-    than ``full_above`` of the objects, the result is the full problem.
+    The thresholds shrink by ``widening.factor`` and the best-ranked removed
+    objects (``ranked_names``) are put back until the kept set has at least
+    ``growth`` times as many objects, so all failed attempts together cost
+    about as much as the last one.  When that would keep more than
+    ``full_above`` of the objects, the result is the full problem.  The
+    alternatives set aside stay aside, and come back late.
     """
-    task = result.task
+    task, kept = result.task, result.kept
     total = len(task.problem.objects)
-    target = max(len(result.kept) + 4, int(growth * len(result.kept) + 0.999))
-    if target > full_above * total:
-        everything = frozenset(task.problem.objects)
-        why = f"widening would keep more than {full_above:.0%} of the objects: the full problem"
-        return full_problem(task, result.scores, result.thresholds.scaled(factor), result.selected, (), why), everything
-    held = result.set_aside  # alternatives set aside stay aside, and come back late
-    ranked = widening_order(result, held)
-    extra = frozenset(extra) | frozenset(ranked[: target - len(result.kept)])
-    thresholds = result.thresholds.scaled(factor)
-    widened = prune_with_scores(
-        task, result.scores, thresholds, model, extra, goal_filter, full_above=full_above, held_aside=held
+    target = max(len(kept) + 4, int(widening.growth * len(kept) + 0.999))
+    thresholds = result.thresholds.scaled(widening.factor)
+    if target > widening.full_above * total:
+        why = f"widening would keep more than {widening.full_above:.0%} of the objects: the full problem"
+        return full_problem(task, result.scores, thresholds, result.selected, (), why), frozenset(task.problem.objects)
+    settings = PruneSettings(
+        goal_filter=widening.goal_filter, full_above=widening.full_above, set_aside=result.set_aside
     )
-    while len(widened.kept) < target and len(widened.kept) < total:
-        # closure or the thresholds cannot account for every addition: add more by rank
-        missing = widening_order(widened, held)
-        extra = extra | frozenset(missing[: target - len(widened.kept)])
-        widened = prune_with_scores(
-            task, result.scores, thresholds, model, extra, goal_filter, full_above=full_above, held_aside=held
-        )
+    extra, widened = frozenset(extra), result
+    while len(widened.kept) < min(target, total):
+        # closure or the thresholds may not account for every addition: add more by rank until the target
+        ranked = ranked_names(task, result.scores, widened.kept, result.set_aside)
+        extra |= frozenset(ranked[: target - len(widened.kept)])
+        widened = prune_with_scores(task, result.scores, thresholds, knowledge_model, extra, settings)
     return widened, extra
 
 
 def ranked_names(
-    task: PlanningTask, scores: ScoreResult, kept: Set[str] = frozenset(), aside: Set[str] = frozenset()
+    task: PlanningTask, scores: ScoreResult, kept: Set[str] = frozenset(), set_aside: Set[str] = frozenset()
 ) -> list[str]:
     """Objects outside ``kept``, in the order widening adds them back: one of each set of
     interchangeable objects (``PlanningTask.object_profiles``) before a second of any, the
-    alternatives set ``aside`` after the others, then by score and by hops from the goal's objects.
+    alternatives ``set_aside`` after the others, then by score and by hops from the goal's objects.
 
     A copy rarely does what its twin, kept or tried, could not: among fifty copies of a truck and
     one market that sells, the market comes second, not fifty-first.  Set-aside alternatives come
@@ -364,7 +370,7 @@ def ranked_names(
     far = len(task.problem.objects) + 1
 
     def rank(name: str) -> tuple[bool, float, int, str]:
-        return name in aside, -values.get(name, 0.0), distance.get(name, far), name
+        return name in set_aside, -values.get(name, 0.0), distance.get(name, far), name
 
     candidates = sorted((name for name in task.problem.objects if name not in kept), key=rank)
     profiles = task.object_profiles
@@ -376,21 +382,16 @@ def ranked_names(
     return sorted(candidates, key=lambda name: (earlier[name], *rank(name)))
 
 
-def widening_order(result: Selection, aside: Set[str] = frozenset()) -> Sequence[str]:
-    """Pruned objects in the order widening adds them back (``ranked_names``)."""
-    return ranked_names(result.task, result.scores, result.kept, aside)
-
-
 __all__ = [
     "DEFAULT_TAU",
+    "PruneSettings",
     "Selection",
     "Restored",
     "Thresholds",
-    "constraint_rules",
+    "Widening",
     "full_problem",
     "ranked_names",
     "prune_with_scores",
-    "widening_order",
     "widen",
     "select_relevant",
 ]

@@ -1,8 +1,8 @@
-"""One scoring set-up for every front end: find the model, pick the scorer, score.
+"""One scoring set-up for every front end: find the knowledge model, pick the scorer, score.
 
 ``score``, ``prune``, ``plan``, ``sweep``, ``compare``, the live session and
 the unified-planning engine all call :func:`score_problem` with a
-:class:`ScoringOptions`, so they choose models and scorers the same way.
+:class:`ScoringOptions`, so they choose knowledge models and scorers the same way.
 """
 
 from __future__ import annotations
@@ -10,16 +10,21 @@ from __future__ import annotations
 import os
 from collections.abc import Iterable
 from dataclasses import dataclass, field, replace
-from typing import Any
 
 from relevance_plan.errors import UsageError
 from relevance_plan.pddl.model import Domain
-from relevance_plan.relevance.knowledge import KnowledgeModel, check_model_applies, find_model, load_model
-from relevance_plan.relevance.learning.model import load_learned_model
+from relevance_plan.relevance.knowledge import (
+    KnowledgeModel,
+    check_knowledge_model_applies,
+    find_knowledge_model,
+    load_knowledge_model,
+)
+from relevance_plan.relevance.learning.learned_model import load_learned_model
 from relevance_plan.relevance.learning.scorer import score_learned
-from relevance_plan.relevance.prune import Selection, Thresholds, prune_with_scores
-from relevance_plan.relevance.scorers import SCORERS, PlanningTask, ScoreRequest, ScoreResult
+from relevance_plan.relevance.prune import PruneSettings, Selection, Thresholds, prune_with_scores
+from relevance_plan.relevance.scorers import SCORERS, ScoreRequest, ScoreResult
 from relevance_plan.relevance.sidecar import necessary_objects
+from relevance_plan.relevance.task import PlanningTask
 
 
 @dataclass(frozen=True)
@@ -34,7 +39,7 @@ class ScoringOptions:
     thresholds: Thresholds = field(default_factory=Thresholds)
     seed: int = 0
     goal_filter: bool = True  # the first selection leaves out relevant objects no goal-directed action can use
-    prefer_free: bool = True  # ... and, with a model, alternatives something stands on when a free one exists
+    prefer_free: bool = True  # ... and, with a knowledge model, alternatives something stands on when a free one exists
     economical: bool = True  # ... and, of many candidates for one role, only those a relaxed plan needs
 
     def __post_init__(self) -> None:
@@ -65,10 +70,10 @@ def check_scorer(scorer: str) -> None:
 
 @dataclass(frozen=True)
 class Scoring:
-    """What scoring one problem produced: the task, the model used (if any), the scores."""
+    """What scoring one problem produced: the task, the knowledge model used (if any), the scores."""
 
     task: PlanningTask
-    model: KnowledgeModel | None
+    knowledge_model: KnowledgeModel | None
     scores: ScoreResult
     options: ScoringOptions = field(default_factory=ScoringOptions)
 
@@ -76,48 +81,48 @@ class Scoring:
     def scorer(self) -> str:
         return self.scores.scorer
 
-    def prune(self, thresholds: Thresholds, **how: Any) -> Selection:
-        return prune_with_scores(self.task, self.scores, thresholds, self.model, **how)
+    def prune(self, thresholds: Thresholds, settings: PruneSettings = PruneSettings()) -> Selection:
+        return prune_with_scores(self.task, self.scores, thresholds, self.knowledge_model, settings=settings)
 
     def first_selection(self, narrow: bool = True) -> Selection:
         """The objects ``prune`` writes and ``plan`` tries first: thresholds and closure, and when
-        ``narrow`` (the relevance method) the goal filter, the set-aside of blocked alternatives and of
-        the alternatives no relaxed plan needs (a bet on the first attempt only: widening never sets
-        aside, so it brings them back)."""
-        return self.prune(
-            self.options.thresholds,
+        ``narrow`` (the relevance method) the goal filter, and blocked alternatives and those no
+        relaxed plan needs set aside (a bet on the first attempt only: widening sets nothing more
+        aside, and brings these back last)."""
+        settings = PruneSettings(
             goal_filter=self.options.goal_filter and narrow,
             prefer_free=self.options.prefer_free and narrow,
             economical=self.options.economical and narrow,
         )
+        return self.prune(self.options.thresholds, settings)
 
 
-def resolve_model(
+def resolve_knowledge_model(
     domain: Domain, domain_path: str | None, model_path: str | None, names: Iterable[str] = ()
 ) -> KnowledgeModel | None:
     """The explicit ``--model``, else one found next to the domain or shipped for the domain's name
-    (or one of ``names``); an explicit model that does not fit the domain is an error."""
+    (or one of ``names``); an explicit knowledge model that does not fit the domain is an error."""
     if model_path is not None:
-        model = load_model(model_path)
-        check_model_applies(model, domain)
-        return model
+        knowledge_model = load_knowledge_model(model_path)
+        check_knowledge_model_applies(knowledge_model, domain)
+        return knowledge_model
     for name in (domain.name, *names):
-        found = find_model(name, domain_path)
+        found = find_knowledge_model(name, domain_path)
         if found is None:
             continue
-        model = load_model(found)
-        if model.domain == name:
-            check_model_applies(replace(model, domain=domain.name), domain)
-            return model
+        knowledge_model = load_knowledge_model(found)
+        if knowledge_model.domain == name:
+            check_knowledge_model_applies(replace(knowledge_model, domain=domain.name), domain)
+            return knowledge_model
     return None
 
 
-def choose_scorer(method: str, model: KnowledgeModel | None, override: str | None) -> str:
-    """The scorer a method uses: the override, else the model when one applies, else the goal scorer."""
+def choose_scorer(method: str, knowledge_model: KnowledgeModel | None, override: str | None) -> str:
+    """The scorer a method uses: the override, else the knowledge model's when one applies, else the goal scorer."""
     if override:
         return override
     if method == "relevance":
-        return "model" if model is not None else "goal"
+        return "model" if knowledge_model is not None else "goal"
     return method
 
 
@@ -128,16 +133,18 @@ def score_problem(
     method: str = "relevance",
     domain_path: str | os.PathLike[str] | None = None,
     problem_path: str | os.PathLike[str] | None = None,
-    model: KnowledgeModel | None = None,
+    knowledge_model: KnowledgeModel | None = None,
 ) -> Scoring:
     """Score every object of ``task``.
 
-    ``model`` skips the model look-up (a front end that found it already);
+    ``knowledge_model`` skips the look-up (a front end that found it already);
     ``problem_path`` locates the sidecar the oracle needs.
     """
-    if model is None and options.scorer in (None, "model"):
-        # Only the model scorer reads a model: a broken file next to the domain must not stop the others.
-        model = resolve_model(task.domain, None if domain_path is None else str(domain_path), options.model_path)
+    if knowledge_model is None and options.scorer in (None, "model"):
+        # Only the model scorer reads a knowledge model: a broken file next to the domain must not stop the others.
+        knowledge_model = resolve_knowledge_model(
+            task.domain, None if domain_path is None else str(domain_path), options.model_path
+        )
     learned_path = options.learned_model_path
     if learned_path is not None:
         learned = load_learned_model(learned_path)
@@ -146,14 +153,14 @@ def score_problem(
         scores = score_learned(task, learned)
         task.check_time("scoring the objects")
         return Scoring(task, None, scores, options)
-    scorer = choose_scorer(method, model, options.scorer)
-    if scorer == "model" and model is None:
+    scorer = choose_scorer(method, knowledge_model, options.scorer)
+    if scorer == "model" and knowledge_model is None:
         raise UsageError(f"no knowledge model found for domain '{task.domain.name}': give --model or use --scorer goal")
     necessary = None
     if scorer == "oracle" and problem_path is not None:
         necessary = necessary_objects(problem_path)
     request = ScoreRequest(
-        model=model,
+        knowledge_model=knowledge_model,
         objective=options.objective,
         model_task=options.model_task,
         human=options.human,
@@ -163,7 +170,7 @@ def score_problem(
     task.check_time("scoring the objects")
     scores = SCORERS[scorer](task, request)
     task.check_time("scoring the objects")
-    return Scoring(task, model, scores, options)
+    return Scoring(task, knowledge_model, scores, options)
 
 
 __all__ = [
@@ -172,6 +179,6 @@ __all__ = [
     "ScoringOptions",
     "check_scorer",
     "choose_scorer",
-    "resolve_model",
+    "resolve_knowledge_model",
     "score_problem",
 ]

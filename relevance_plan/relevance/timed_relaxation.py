@@ -1,6 +1,6 @@
 """A sharper relaxed check for temporal and numeric problems, on a small kept set.
 
-``relaxed_reachability`` (``reachability.py``) reads a durative action as one
+``relaxed_reachability`` (``exploration.py``) reads a durative action as one
 action with all its conditions and ignores numbers.  Here, on the kept
 objects only:
 
@@ -30,7 +30,6 @@ import math
 import time
 from collections.abc import Iterator, Mapping, Set
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
 from relevance_plan.pddl.formulas import (
     Arithmetic,
@@ -48,10 +47,8 @@ from relevance_plan.pddl.formulas import (
     numeric_effects,
 )
 from relevance_plan.pddl.model import Action
+from relevance_plan.relevance.task import PlanningTask
 from relevance_plan.relevance.types import static_predicates
-
-if TYPE_CHECKING:
-    from relevance_plan.relevance.scorers.base import PlanningTask
 
 GROUND_BUDGET = 200_000  # candidate bindings tried before the check gives up (None: unknown)
 SECONDS = 1.0  # and the whole check's bound (grounding and fixpoint): it must stay cheaper than a planner run

@@ -1,10 +1,10 @@
 """Scores kept current event by event.
 
 :class:`LiveModelScores` follows the knowledge-model scorer stage by stage
-(``scorers/model.py``: context, one element, contents) and re-scores only
+(``scorers/knowledge_model.py``: context, one element, contents) and re-scores only
 the elements an event can affect: the objects a fact names, the items of a
 place that was opened or where a human stands, a place whose contents
-changed.  Its :meth:`~LiveModelScores.result` equals ``score_by_model`` on
+changed.  Its :meth:`~LiveModelScores.result` equals ``score_by_knowledge_model`` on
 the current state.
 
 :class:`FullScores` is the fallback for every other scorer (goal, random):
@@ -20,19 +20,20 @@ from dataclasses import replace
 from relevance_plan.relevance.knowledge import KnowledgeModel
 from relevance_plan.relevance.prune import Thresholds
 from relevance_plan.relevance.scene import Element, build_scene
-from relevance_plan.relevance.scorers import PlanningTask, ScoreRequest, ScoreResult
-from relevance_plan.relevance.scorers.model import (
+from relevance_plan.relevance.scorers import ScoreRequest, ScoreResult
+from relevance_plan.relevance.scorers.knowledge_model import (
     UNKNOWN_CLASS,
-    ModelContext,
+    KnowledgeContext,
     class_of,
     contents_explanation,
     insufficient_result,
-    model_context,
+    knowledge_context,
     score_element,
     scored_by_contents,
     unknown_share_problem,
 )
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
+from relevance_plan.relevance.task import PlanningTask
 from relevance_plan.session.state import LiveScene
 
 ALL = None  # "every element may have changed"
@@ -41,7 +42,11 @@ ALL = None  # "every element may have changed"
 def request_for(options: ScoringOptions, model: KnowledgeModel | None) -> ScoreRequest:
     """The request ``score_problem`` builds from the options (no oracle in a live session)."""
     return ScoreRequest(
-        model=model, objective=options.objective, model_task=options.model_task, human=options.human, seed=options.seed
+        knowledge_model=model,
+        objective=options.objective,
+        model_task=options.model_task,
+        human=options.human,
+        seed=options.seed,
     )
 
 
@@ -58,7 +63,7 @@ class LiveModelScores:
         self.contents: dict[str, dict[str, float]] = {}  # place -> item -> score
         self.place_of: dict[str, str] = {}  # scored item -> the place its score counts for
         self.class_scores: dict[str, float] = {}
-        self.context: ModelContext = model_context(scene.goal, request_for(options, model))
+        self.context: KnowledgeContext = knowledge_context(scene.goal, request_for(options, model))
         self._dirty: set = set()  # places and classes that lost a member
         self.describe_all()
         self.rescore_all()
@@ -67,7 +72,7 @@ class LiveModelScores:
 
     def set_options(self, options: ScoringOptions) -> None:
         """A new goal, human or cue: a new context, and every score again."""
-        self.context = model_context(self.scene.goal, request_for(options, self.model))
+        self.context = knowledge_context(self.scene.goal, request_for(options, self.model))
         self.rescore_all()
 
     @property
@@ -275,7 +280,9 @@ class FullScores:
     def result(self) -> ScoreResult:
         if self._result is None:
             task = PlanningTask(self.scene.domain, self.scene.snapshot_problem())
-            self._result = score_problem(task, self.options, model=self.model, domain_path=self.domain_path).scores
+            self._result = score_problem(
+                task, self.options, knowledge_model=self.model, domain_path=self.domain_path
+            ).scores
         return self._result
 
 

@@ -51,10 +51,12 @@ from relevance_plan.planning.planners.base import RunOutcome
 from relevance_plan.planning.results import PlanResult, PlanStatus
 from relevance_plan.planning.validate import validate_plan
 from relevance_plan.relevance.analysis import ConstraintRule, FactIndex, single_valued_predicates
+from relevance_plan.relevance.closure import constraint_rules
 from relevance_plan.relevance.knowledge import KnowledgeModel
-from relevance_plan.relevance.prune import Selection, constraint_rules, prune_with_scores
-from relevance_plan.relevance.scorers import PlanningTask, ScoreResult
-from relevance_plan.relevance.setup import Scoring, ScoringOptions, choose_scorer, resolve_model
+from relevance_plan.relevance.prune import Selection, prune_with_scores
+from relevance_plan.relevance.scorers import ScoreResult
+from relevance_plan.relevance.setup import Scoring, ScoringOptions, choose_scorer, resolve_knowledge_model
+from relevance_plan.relevance.task import PlanningTask
 from relevance_plan.session.events import Event, EventError, check_event, parse_event_line
 from relevance_plan.session.rescoring import ALL, FullScores, LiveModelScores, restrict
 from relevance_plan.session.state import LiveScene
@@ -182,7 +184,7 @@ class Session:
         self.domain = domain
         self.options = options
         if model is None and options.scorer in (None, "model"):
-            model = resolve_model(domain, domain_path, options.model_path)
+            model = resolve_knowledge_model(domain, domain_path, options.model_path)
         self.model = model
         self.scene = LiveScene(domain, problem)
         scorer = choose_scorer("relevance", self.model, options.scorer)

@@ -23,12 +23,13 @@ from __future__ import annotations
 import hashlib
 import math
 from collections import Counter, defaultdict
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 
 from relevance_plan.pddl.formulas import literals
-from relevance_plan.relevance.scorers.base import PlanningTask, ScoreRequest
+from relevance_plan.relevance.scorers.base import ScoreRequest
 from relevance_plan.relevance.scorers.goal import score_by_goal
+from relevance_plan.relevance.task import PlanningTask
 
 Features = dict[int, float]  # feature index -> value (absent: 0)
 
@@ -121,20 +122,53 @@ def _facts(task: PlanningTask, hubs: frozenset[str] = frozenset()) -> Iterable[t
     yield from goal_facts(task)
 
 
+@dataclass(frozen=True)
+class _FactGraph:
+    """Objects and constants as nodes, linked by the facts that name two of them (see the module's docstring)."""
+
+    nodes: frozenset[str]
+    unary: Mapping[str, set[str]]  # node -> the labels of its unary facts and of the hub positions it fills
+    links: Mapping[str, set[tuple[int, str]]]  # node -> {(link label, neighbour)}
+    predicates: Mapping[str, set[str]]  # node -> the predicates of the facts naming it
+
+
 def object_features(task: PlanningTask, config: FeatureConfig, only_judged: bool = False) -> ObjectFeatures:
     """The features of every object of ``task`` (``FeatureConfig`` says how many rounds and slots).
 
     With ``only_judged``, the objects a model never judges (the goal's, and those the goal scorer
     rules out) get their named features only: the scorer decides them without the model.
     """
-    domain, problem = task.typing.domain, task.typing.problem
-    objects = problem.objects
-    nodes = set(objects) | set(domain.constants)
+    objects = task.typing.problem.objects
+    graph = _fact_graph(task, config.hubs | hub_predicates(task))
+    task.check_time("describing the objects")
+    types = _types_and_ancestors(task, graph.nodes)
+    goal_result = score_by_goal(task, ScoreRequest())
+    goal_scores = goal_result.element_scores
+    described = [
+        name
+        for name in objects
+        if not only_judged or (name not in task.goal_objects and goal_scores.get(name, 0.0) != 0.0)
+    ]
+    vectors: dict[str, Features] = {name: {} for name in objects}
+    _add_type_features(vectors, described, types, config)
+    _add_colour_features(task, vectors, described, graph, _first_colours(task, graph, types), config)
+    _add_named_features(task, vectors, goal_scores)
+    return ObjectFeatures(
+        vectors,
+        goal_scores,
+        goal_result.alternatives,
+        {name: types[name] for name in objects},
+        {name: frozenset(graph.predicates.get(name, ())) for name in objects},
+    )
+
+
+def _fact_graph(task: PlanningTask, hubs: frozenset[str]) -> _FactGraph:
+    """The graph of initial and goal facts; a hub predicate marks the positions each object fills."""
+    nodes = frozenset(task.typing.problem.objects) | frozenset(task.typing.domain.constants)
     unary: dict[str, set[str]] = defaultdict(set)
-    links: dict[str, set[tuple[int, str]]] = defaultdict(set)  # node -> {(label, neighbour)}
+    links: dict[str, set[tuple[int, str]]] = defaultdict(set)
     predicates: dict[str, set[str]] = defaultdict(set)
     labels: dict[tuple[str, str, int, int], int] = {}
-    hubs = config.hubs | hub_predicates(task)
     for predicate in sorted(hubs & task.init_index.by_predicate.keys()):
         # a hub's facts link (nearly) every pair: which positions an object fills says all they say
         atoms = task.init_index.by_predicate[predicate]
@@ -159,30 +193,38 @@ def object_features(task: PlanningTask, config: FeatureConfig, only_judged: bool
                     if label is None:
                         label = labels[key] = stable_hash(f"{kind}:{atom[0]}:{i}:{j}")
                     links[here].add((label, there))
-    task.check_time("describing the objects")
-    goal_named = task.goal_objects
+    return _FactGraph(nodes, unary, links, predicates)
+
+
+def _types_and_ancestors(task: PlanningTask, nodes: Iterable[str]) -> dict[str, tuple[str, ...]]:
+    """Each node's declared type and its ancestors."""
+    domain, objects = task.typing.domain, task.typing.problem.objects
     ancestors: dict[str, tuple[str, ...]] = {}
     types = {}
     for name in nodes:
         declared = objects[name] if name in objects else domain.constants[name]
         types[name] = ancestors.get(declared) or ancestors.setdefault(declared, domain.ancestors(declared))
+    return types
+
+
+def _first_colours(task: PlanningTask, graph: _FactGraph, types: Mapping[str, tuple[str, ...]]) -> dict[str, int]:
+    """Each node's colour before any round: its type, its unary facts, whether the goal names it."""
+    goal_named, constants = task.goal_objects, task.typing.domain.constants
     # a constant is the same object in every problem of the domain: its name is part of its colour
-    colour = {
+    return {
         name: stable_hash(
-            f"{types[name][0]}|{','.join(sorted(unary[name]))}|{'goal' if name in goal_named else ''}"
-            + (f"|{name}" if name in domain.constants else "")
+            f"{types[name][0]}|{','.join(sorted(graph.unary.get(name, ())))}|{'goal' if name in goal_named else ''}"
+            + (f"|{name}" if name in constants else "")
         )
-        for name in nodes
+        for name in graph.nodes
     }
-    goal_result = score_by_goal(task, ScoreRequest())
-    goal_scores = goal_result.element_scores
-    # Objects alike so far get the same features and the same next colour: each distinct
-    # (colour, neighbourhood) is hashed once, which on large problems is most of the work saved.
-    described = [
-        name for name in objects if not only_judged or (name not in goal_named and goal_scores.get(name, 0.0) != 0.0)
-    ]
+
+
+def _add_type_features(
+    vectors: dict[str, Features], described: Iterable[str], types: Mapping[str, tuple[str, ...]], config: FeatureConfig
+) -> None:
+    """A slot for each described object's type and one for each of its ancestors."""
     type_slots: dict[tuple[str, ...], tuple[int, ...]] = {}
-    vectors: dict[str, Features] = {name: {} for name in objects}
     for name in described:
         slots = type_slots.get(types[name])
         if slots is None:
@@ -194,46 +236,77 @@ def object_features(task: PlanningTask, config: FeatureConfig, only_judged: bool
         vector = vectors[name]
         for slot in slots:
             _add(vector, slot, 1.0)
-    adjacent = {name: sorted(links[name]) for name in nodes}
-    contributions: dict[tuple[int, tuple[tuple[int, int], ...]], tuple[tuple[int, float], ...]] = {}
-    refined: dict[tuple[int, tuple[tuple[int, int], ...]], int] = {}
+
+
+Neighbourhood = tuple[tuple[int, int], ...]  # sorted (link label, neighbour colour) pairs, repeats kept
+
+
+def _add_colour_features(
+    task: PlanningTask,
+    vectors: dict[str, Features],
+    described: Sequence[str],
+    graph: _FactGraph,
+    colour: dict[str, int],
+    config: FeatureConfig,
+) -> None:
+    """The Weisfeiler-Leman rounds: each described object's colour at each round and, but in the last
+    round, its neighbours' colours by link label."""
+    adjacent = {name: sorted(graph.links.get(name, ())) for name in graph.nodes}
+    refined: dict[tuple[int, Neighbourhood], int] = {}
     for round_number in range(config.iterations + 1):
-        last = round_number == config.iterations
-        # each node's neighbourhood: the sorted (link label, neighbour colour) pairs, repeats kept
-        seen = {
-            name: tuple(sorted([(label, colour[other]) for label, other in adjacent[name]]))
-            for name in (described if last else nodes)
-        }
-        contributions.clear()
-        for name in described:
-            seen_key = (colour[name], () if last else seen[name])
-            found = contributions.get(seen_key)
-            if found is None:
-                found = contributions[seen_key] = (
-                    (_bucket(f"wl{round_number}:{colour[name]}", config), 1.0),
-                    *(
-                        (_bucket(f"nb{round_number}:{label}:{shade}", config), math.log1p(count))
-                        for (label, shade), count in Counter(seen_key[1]).items()
-                    ),
-                )
-            vector = vectors[name]
-            for slot, value in found:
-                _add(vector, slot, value)
-        if last:
+        if round_number == config.iterations:
+            _add_round(vectors, described, colour, {}, round_number, config)
             break
-        new_colour = {}
-        for name in nodes:
-            seen_key = (colour[name], seen[name])
-            shade = refined.get(seen_key)
-            if shade is None:
-                # the set of pairs, not their counts: forty packages at a place look like four
-                shade = refined[seen_key] = stable_hash(repr((seen_key[0], sorted(set(seen_key[1])))))
-            new_colour[name] = shade
-        colour = new_colour
+        seen = {
+            name: tuple(sorted([(label, colour[other]) for label, other in adjacent[name]])) for name in graph.nodes
+        }
+        _add_round(vectors, described, colour, seen, round_number, config)
+        colour = {name: _refined(colour[name], seen[name], refined) for name in graph.nodes}
         task.check_time("describing the objects")
-    distance = task.goal_distance
-    pinned = task.pinned_objects
-    for name in objects:
+
+
+def _add_round(
+    vectors: dict[str, Features],
+    described: Sequence[str],
+    colour: Mapping[str, int],
+    seen: Mapping[str, Neighbourhood],
+    round_number: int,
+    config: FeatureConfig,
+) -> None:
+    """One round's slots for each described object (``seen`` empty: its colour only)."""
+    # Objects alike so far get the same features and the same next colour: each distinct
+    # (colour, neighbourhood) is hashed once, which on large problems is most of the work saved.
+    contributions: dict[tuple[int, Neighbourhood], tuple[tuple[int, float], ...]] = {}
+    for name in described:
+        seen_key = (colour[name], seen.get(name, ()))
+        found = contributions.get(seen_key)
+        if found is None:
+            found = contributions[seen_key] = (
+                (_bucket(f"wl{round_number}:{colour[name]}", config), 1.0),
+                *(
+                    (_bucket(f"nb{round_number}:{label}:{shade}", config), math.log1p(count))
+                    for (label, shade), count in Counter(seen_key[1]).items()
+                ),
+            )
+        vector = vectors[name]
+        for slot, value in found:
+            _add(vector, slot, value)
+
+
+def _refined(colour: int, seen: Neighbourhood, refined: dict[tuple[int, Neighbourhood], int]) -> int:
+    """The next colour of a node of ``colour`` whose neighbourhood is ``seen`` (``refined`` caches them)."""
+    seen_key = (colour, seen)
+    shade = refined.get(seen_key)
+    if shade is None:
+        # the set of pairs, not their counts: forty packages at a place look like four
+        shade = refined[seen_key] = stable_hash(repr((colour, sorted(set(seen)))))
+    return shade
+
+
+def _add_named_features(task: PlanningTask, vectors: dict[str, Features], goal_scores: Mapping[str, float]) -> None:
+    """The named features: bias, goal-named, the goal scorer's score (or its zero), pinned, hops."""
+    goal_named, pinned, distance = task.goal_objects, task.pinned_objects, task.goal_distance
+    for name in task.typing.problem.objects:
         vector = vectors[name]
         vector[BIAS] = 1.0
         if name in goal_named:
@@ -247,13 +320,6 @@ def object_features(task: PlanningTask, config: FeatureConfig, only_judged: bool
             vector[PINNED] = 1.0
         hops = distance.get(name)
         vector[DISTANCE + (5 if hops is None else min(hops, 4))] = 1.0
-    return ObjectFeatures(
-        vectors,
-        goal_scores,
-        goal_result.alternatives,
-        {name: types[name] for name in objects},
-        {name: frozenset(predicates.get(name, ())) for name in objects},
-    )
 
 
 def _add(vector: Features, index: int, value: float) -> None:

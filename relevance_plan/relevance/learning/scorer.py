@@ -16,8 +16,9 @@ are left to closure, as the goal scorer leaves them; goal objects score 1.
 from __future__ import annotations
 
 from relevance_plan.relevance.learning.features import object_features
-from relevance_plan.relevance.learning.model import LearnedModel
-from relevance_plan.relevance.scorers.base import PlanningTask, ScoreResult
+from relevance_plan.relevance.learning.learned_model import LearnedModel
+from relevance_plan.relevance.scorers.base import ScoreResult
+from relevance_plan.relevance.task import PlanningTask
 
 # The default element threshold (relevance.prune.DEFAULT_TAU, which imports the scorers): the model's
 # own threshold maps onto it.
@@ -31,26 +32,26 @@ def calibrated(probability: float, threshold: float) -> float:
     return KEEP_AT + (1.0 - KEEP_AT) * (probability - threshold) / (1.0 - threshold)
 
 
-def score_learned(task: PlanningTask, model: LearnedModel) -> ScoreResult:
-    features = object_features(task, model.config, only_judged=model.respect_goal_zero)
+def score_learned(task: PlanningTask, learned_model: LearnedModel) -> ScoreResult:
+    features = object_features(task, learned_model.config, only_judged=learned_model.respect_goal_zero)
     task.check_time("scoring the objects")
     goal_objects = task.goal_objects
     scores: dict[str, float] = {}
     explanations: dict[str, str] = {}
     for name, vector in features.vectors.items():
-        unseen_type = [t for t in features.types[name] if t not in model.seen_types and t != "object"]
-        unseen_predicates = sorted(features.predicates[name] - model.seen_predicates)
+        unseen_type = [t for t in features.types[name] if t not in learned_model.seen_types and t != "object"]
+        unseen_predicates = sorted(features.predicates[name] - learned_model.seen_predicates)
         if name in goal_objects:
             scores[name], explanations[name] = 1.0, "named in the goal"
         elif unseen_type or unseen_predicates:
             what = f"type {unseen_type[0]}" if unseen_type else f"predicate {unseen_predicates[0]}"
             scores[name], explanations[name] = 1.0, f"the model never saw its {what}: kept"
-        elif model.respect_goal_zero and features.goal_scores.get(name, 0.0) == 0.0:
+        elif learned_model.respect_goal_zero and features.goal_scores.get(name, 0.0) == 0.0:
             scores[name], explanations[name] = 0.0, "no role in reaching the goal (goal scorer)"
         else:
-            probability = model.probability(vector)
-            scores[name] = calibrated(probability, model.threshold)
-            explanations[name] = f"learned: P(needed) = {probability:.3f} (keeps above {model.threshold:.3f})"
+            probability = learned_model.probability(vector)
+            scores[name] = calibrated(probability, learned_model.threshold)
+            explanations[name] = f"learned: P(needed) = {probability:.3f} (keeps above {learned_model.threshold:.3f})"
     problem = task.typing.problem
     return ScoreResult(
         "learned",

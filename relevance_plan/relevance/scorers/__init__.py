@@ -2,25 +2,34 @@
 
 A scorer is a function ``score(task, request) -> ScoreResult`` registered in
 ``SCORERS``; the CLI's ``--scorer`` choices come from this dict.
+
+    base.py             ScoreRequest and ScoreResult, shared by every scorer
+    goal.py             ``goal``: roles found by regressing the goal through the actions
+    knowledge_model.py  ``model``: the paper's relevance model over a knowledge model
+    random.py           ``random``: the paper's baseline
+    oracle.py           ``oracle``: the generator's necessary set (evaluation only)
+
+The learned scorer (``learned:MODEL``) is in ``relevance.learning``.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
 
-from relevance_plan.relevance.scorers.base import PlanningTask, ScoreRequest, ScoreResult
+from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult
 from relevance_plan.relevance.scorers.goal import score_by_goal
-from relevance_plan.relevance.scorers.model import score_by_model
+from relevance_plan.relevance.scorers.knowledge_model import score_by_knowledge_model
 from relevance_plan.relevance.scorers.oracle import score_by_oracle
 from relevance_plan.relevance.scorers.random import score_randomly
+from relevance_plan.relevance.task import PlanningTask
 
 Scorer = Callable[[PlanningTask, ScoreRequest], ScoreResult]
 
 SCORERS: dict[str, Scorer] = {
-    "model": score_by_model,
+    "model": score_by_knowledge_model,
     "goal": score_by_goal,
     "random": score_randomly,
     "oracle": score_by_oracle,
 }
 
-__all__ = ["SCORERS", "Scorer", "ScoreRequest", "ScoreResult", "PlanningTask"]
+__all__ = ["SCORERS", "Scorer", "ScoreRequest", "ScoreResult"]

@@ -23,7 +23,8 @@ needed.
 
 from __future__ import annotations
 
-from relevance_plan.relevance.scorers.base import PlanningTask, ScoreRequest, ScoreResult
+from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult
+from relevance_plan.relevance.task import PlanningTask
 
 ROLE_DECAY = 0.6
 NEIGHBOUR_SCORE = 0.3

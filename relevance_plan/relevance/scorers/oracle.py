@@ -3,7 +3,8 @@
 from __future__ import annotations
 
 from relevance_plan.errors import UsageError
-from relevance_plan.relevance.scorers.base import PlanningTask, ScoreRequest, ScoreResult
+from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult
+from relevance_plan.relevance.task import PlanningTask
 
 
 def score_by_oracle(task: PlanningTask, request: ScoreRequest) -> ScoreResult:

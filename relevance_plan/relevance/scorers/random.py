@@ -9,7 +9,8 @@ from __future__ import annotations
 
 import random as _random
 
-from relevance_plan.relevance.scorers.base import PlanningTask, ScoreRequest, ScoreResult
+from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult
+from relevance_plan.relevance.task import PlanningTask
 
 
 def _rng(seed: int, problem_name: str) -> _random.Random:

@@ -95,8 +95,8 @@ class LearnedModel:
         }
 
 
-def model_text(model: LearnedModel) -> str:
-    return json.dumps(model.to_json(), indent=1, sort_keys=False) + "\n"
+def learned_model_text(learned_model: LearnedModel) -> str:
+    return json.dumps(learned_model.to_json(), indent=1, sort_keys=False) + "\n"
 
 
 def load_learned_model(path: str | os.PathLike[str]) -> LearnedModel:

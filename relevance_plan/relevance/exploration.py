@@ -1,17 +1,12 @@
-"""A cheap sufficiency check before any planner call: relaxed reachability on the kept objects.
+"""The cheap sufficiency check before any planner call: relaxed reachability on the kept objects.
 
 ``relaxed_reachability`` grounds the actions on the kept objects only (joins
 over the positive preconditions, as Fast Downward's translator explores the
 delete relaxation) and runs them to a fixpoint, ignoring deletes.  If the
 goal's atoms are not reached, no plan exists on that object set.  When they
 are, it returns the objects of a relaxed plan: what at least one way of
-reaching the goal uses.
-
-``repair_selection`` is the step ``prune_with_scores`` runs after closure:
-when the kept set fails the check, it adds the best-ranked missing objects in
-doubling batches until the goal is relaxed-reachable, then keeps only the
-added objects some relaxed plan uses (a truck, an airplane, the cells of a
-path), each with the plan step that needs it as its reason.
+reaching the goal uses.  :class:`Exploration` is the same exploration on an
+object set that may grow (the repair's, in ``repair.py``).
 
 Many goal objects of one class that never meet in an action (packages,
 passengers) share one exploration through a placeholder and then advance
@@ -33,26 +28,16 @@ import math
 import time
 import weakref
 from collections import defaultdict, deque
-from collections.abc import Callable, Collection, Iterable, Iterator, Mapping, Sequence, Set
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence, Set
 from dataclasses import dataclass, field, replace
-from typing import TYPE_CHECKING
 
 from relevance_plan.pddl.formulas import Atom, Formula, GroundAtom, Or, conjuncts, effect_literals
 from relevance_plan.pddl.model import Domain
-from relevance_plan.relevance.analysis import ObjectGraph, fan_in, graph_distances
-from relevance_plan.relevance.closure import Restored
+from relevance_plan.relevance.task import PlanningTask
 from relevance_plan.relevance.types import static_predicates
-
-if TYPE_CHECKING:  # the scorers' package imports this module's users
-    from relevance_plan.relevance.scorers.base import PlanningTask
 
 DEFAULT_BUDGET = 400_000  # bindings tried before the check gives up
 DISJUNCTIVE_WAYS = 16  # ways through an action's disjunctive conditions the check splits it into
-BUDGET_PER_OBJECT = 5_000  # the budget grows with the problem, as the planner's own grounding does
-REPAIR_SECONDS = 5.0  # and the repair's checks together stop after this long
-REPAIR_MAX_FAN = 4.0  # repair candidates are ranked by hops that do not pass from a class-like value to its members
-DOMINANCE_TRIES = 8  # kept objects of its class a repair candidate is compared with
-PAIRWISE_UP_TO = 64  # added objects of one class compared each with all others after the repair
 SHARED_FROM = 8  # goal objects of one interchangeable class before they share one exploration
 MEMBER = "#member"  # stands for every kept object of that class in the shared exploration (not a PDDL name)
 
@@ -72,7 +57,7 @@ class Reachability:
     plan_objects: frozenset[str] = frozenset()
 
 
-def _required_atoms(formula: Formula) -> Iterator[Condition]:
+def required_atoms(formula: Formula) -> Iterator[Condition]:
     """Positive atoms that must hold (top-level conjunction only; the rest is ignored: a relaxation)."""
     for part in conjuncts(formula):
         if isinstance(part, Atom):
@@ -147,7 +132,7 @@ class _Shared:
 
 
 @dataclass(frozen=True)
-class _Compiled:
+class RelaxedTask:
     """What every check on one task shares (cached per task: a repair runs several checks)."""
 
     schemas: list[_Schema]
@@ -159,10 +144,19 @@ class _Compiled:
     shared: _Shared | None = None
     # id(schema) -> the atoms without arguments that, once reached, make it add nothing new (see _dominated)
     dominated: Mapping[int, frozenset[GroundAtom]] = field(default_factory=dict)
+    # predicate -> (schema, the condition it matches, the schema's other conditions with their types)
+    triggers: Mapping[str, list[tuple[_Schema, int, list[_Typed]]]] = field(default_factory=dict)
+    conditions: Mapping[int, list[_Typed]] = field(default_factory=dict)  # id(schema) -> its typed conditions
+    # id(schema) -> the schemas the exploration may pass over once every atom they add is reached
+    # (every floor reached: no more joins of ``up``); the placeholder's steps are never passed over,
+    # as each member follows them
+    saturable: Mapping[int, _Schema] = field(default_factory=dict)
+    counted: frozenset[str] = frozenset()  # the predicates the saturable schemas add: their facts are counted
 
 
-def _compiled(task: PlanningTask) -> _Compiled:
-    cached = _COMPILED.get(task)
+def relaxed_task(task: PlanningTask) -> RelaxedTask:
+    """The task's relaxed actions and what the exploration reads besides the facts (computed once per task)."""
+    cached = _RELAXED.get(task)
     if cached is None:
         problem = task.typing.problem
         timed = frozenset(
@@ -171,38 +165,72 @@ def _compiled(task: PlanningTask) -> _Compiled:
         static = static_predicates(task.typing.domain) - {
             literal.atom[0] for literal in problem.timed_literals if literal.atom
         }
-        by_predicate = task.init_index.by_predicate
-        nullary = frozenset(
-            atom
-            for predicate, parameters in task.typing.domain.predicates.items()
-            if not parameters
-            for atom in by_predicate.get(predicate, ())
-            if atom in problem.init
-        ) | frozenset(atom for atom in timed if len(atom) == 1)
-        timed_by_object: dict[str, list[GroundAtom]] = defaultdict(list)
-        for atom in sorted(timed):
-            for name in dict.fromkeys(atom[1:]):
-                timed_by_object[name].append(atom)
-        schemas = _compiled_schemas(task)
+        schemas = _relaxed_schemas(task)
         shared = None if problem.timed_literals else _shared_class(task, schemas)
-        dominated = _dominated(task.typing.domain, schemas, shared.variable if shared else {})
-        cached = _Compiled(
+        shared_steps = shared.variable if shared else {}
+        triggers, conditions = _triggers(schemas)
+        saturable = {id(s): s for s in schemas if s.saturable and id(s) not in shared_steps}
+        cached = RelaxedTask(
             schemas,
             frozenset(static),
             timed,
-            {name: tuple(atoms) for name, atoms in timed_by_object.items()},
-            nullary,
+            _timed_by_object(timed),
+            _nullary(task, timed),
             shared,
-            dominated,
+            _dominated(task.typing.domain, schemas, shared_steps),
+            triggers,
+            conditions,
+            saturable,
+            frozenset(predicate for s in saturable.values() for predicate, _, _ in s.add),
         )
-        _COMPILED[task] = cached
+        _RELAXED[task] = cached
     return cached
 
 
-_COMPILED: weakref.WeakKeyDictionary[PlanningTask, _Compiled] = weakref.WeakKeyDictionary()
+def _nullary(task: PlanningTask, timed: Set[GroundAtom]) -> frozenset[GroundAtom]:
+    """The initial and timed atoms without arguments."""
+    by_predicate = task.init_index.by_predicate
+    return frozenset(
+        atom
+        for predicate, parameters in task.typing.domain.predicates.items()
+        if not parameters
+        for atom in by_predicate.get(predicate, ())
+        if atom in task.typing.problem.init
+    ) | frozenset(atom for atom in timed if len(atom) == 1)
 
 
-def _compiled_schemas(task: PlanningTask) -> list[_Schema]:
+def _timed_by_object(timed: Set[GroundAtom]) -> dict[str, tuple[GroundAtom, ...]]:
+    """Object -> the timed atoms that mention it, each once, in sorted order."""
+    found: dict[str, list[GroundAtom]] = defaultdict(list)
+    for atom in sorted(timed):
+        for name in dict.fromkeys(atom[1:]):
+            found[name].append(atom)
+    return {name: tuple(atoms) for name, atoms in found.items()}
+
+
+def _triggers(
+    schemas: Sequence[_Schema],
+) -> tuple[dict[str, list[tuple[_Schema, int, list[_Typed]]]], dict[int, list[_Typed]]]:
+    """Predicate -> (schema, the condition a fact of it matches, the schema's other conditions), and
+    each schema's conditions, each with its arguments' types (None: a name)."""
+    triggers: dict[str, list[tuple[_Schema, int, list[_Typed]]]] = defaultdict(list)
+    conditions: dict[int, list[_Typed]] = {}
+    for schema in schemas:
+        type_of = dict(zip(schema.parameters, schema.types))
+        typed = [
+            (predicate, args, tuple(type_of.get(a) if a[0] == "?" else None for a in args))
+            for predicate, args in schema.pre
+        ]
+        conditions[id(schema)] = typed
+        for i, (predicate, _) in enumerate(schema.pre):
+            triggers[predicate].append((schema, i, typed[:i] + typed[i + 1 :]))
+    return dict(triggers), conditions
+
+
+_RELAXED: weakref.WeakKeyDictionary[PlanningTask, RelaxedTask] = weakref.WeakKeyDictionary()
+
+
+def _relaxed_schemas(task: PlanningTask) -> list[_Schema]:
     """The task's join schemas without the static one-argument conditions its parameters' types
     imply: in an untyped domain ``(truck ?t)`` is the type of ``?t`` and every candidate binding
     passes it, so joining on it only repeats the type check (the bulk of the work on the IPC's
@@ -220,8 +248,8 @@ def _compiled_schemas(task: PlanningTask) -> list[_Schema]:
     def implied(predicate: str, type_name: str) -> bool:
         if type_name not in members:
             members[type_name] = [o for o, t in typed.items() if domain.is_subtype(t, type_name)]
-        held = holders[predicate]
-        return all(o in held for o in members[type_name])
+        holding = holders[predicate]
+        return all(o in holding for o in members[type_name])
 
     result = []
     for schema in _schemas(domain):
@@ -333,7 +361,7 @@ def _shared_class(task: PlanningTask, schemas: Sequence[_Schema]) -> _Shared | N
     of a many-goal exploration)."""
     domain, problem = task.typing.domain, task.typing.problem
     classes = problem.objects
-    goal = [(p, *args) for p, args in _required_atoms(problem.goal)]
+    goal = [(p, *args) for p, args in required_atoms(problem.goal)]
     in_goal: dict[str, set[str]] = defaultdict(set)
     for atom in goal:
         for arg in atom[1:]:
@@ -380,12 +408,12 @@ class _Achiever:
     binding: Binding
 
 
-class _OutOfBudget(Exception):
+class OutOfBudget(Exception):
     pass
 
 
 @dataclass
-class _Work:
+class Work:
     """Bindings tried by one check, against its budget and its deadline (``time.monotonic()``)."""
 
     limit: int
@@ -396,7 +424,7 @@ class _Work:
         self.done += 1
         # the clock is read once every 4,096 bindings: cheap, and still within milliseconds
         if self.done > self.limit or (not self.done & 4095 and time.monotonic() > self.deadline):
-            raise _OutOfBudget
+            raise OutOfBudget
 
 
 def relaxed_reachability(
@@ -410,14 +438,14 @@ def relaxed_reachability(
     Fast Downward's translator).
     """
     try:
-        exploration = _Exploration(task, kept, _Work(budget, deadline))
+        exploration = Exploration(task, kept, Work(budget, deadline))
         exploration.run()
-    except _OutOfBudget:
+    except OutOfBudget:
         return Reachability(False, False)
     return exploration.outcome()
 
 
-class _Exploration:
+class Exploration:
     """The delete-relaxed exploration of :func:`relaxed_reachability`, on an object set that may grow.
 
     :meth:`add` brings in more objects and :meth:`run` carries on from where
@@ -425,23 +453,39 @@ class _Exploration:
     exploration of the final set.
     """
 
-    def __init__(self, task: PlanningTask, kept: Set[str], work: _Work):
-        domain, problem = task.typing.domain, task.typing.problem
-        compiled = _compiled(task)
-        self.domain = domain
+    def __init__(self, task: PlanningTask, kept: Set[str], work: Work):
+        relaxed = relaxed_task(task)
+        self.domain = task.typing.domain
         self.work = work
-        self.shared = compiled.shared
-        self.dominated = compiled.dominated
-        self.members = self.shared.members if self.shared else frozenset()  # of the shared class, kept or not
+        self.schemas = relaxed.schemas
+        self.triggers, self.conditions, self.dominated = relaxed.triggers, relaxed.conditions, relaxed.dominated
+        self.saturable, self.counted = relaxed.saturable, relaxed.counted
+        self._take_objects(task, relaxed.shared, kept)
+        self._prepare_placeholder()
+        self._prepare_facts(task, relaxed)
+        self._prepare_joins()
+        self._reach_start(relaxed)
+
+    def _take_objects(self, task: PlanningTask, shared: _Shared | None, kept: Set[str]) -> None:
+        """The objects the exploration may use, and their types."""
+        domain = self.domain
+        self.shared = shared
+        self.members = shared.members if shared else frozenset()  # of the shared class, kept or not
         # with a shared class, its kept members are not objects of the exploration: MEMBER stands for them
         self.kept_members: set[str] = set(kept) & self.members
         self.allowed = set(kept) - self.kept_members | set(domain.constants)
         self.types_of = dict(domain.constants)
-        self.types_of.update(problem.objects)
-        if self.shared is not None:
+        self.types_of.update(task.typing.problem.objects)
+        if shared is not None:
             self.allowed.add(MEMBER)
-            self.types_of[MEMBER] = self.shared.name
-        # the placeholder's steps, each with its conditions on the placeholder (shared class only)
+            self.types_of[MEMBER] = shared.name
+        self.of_type: dict[str, list[str]] = {}
+        self.fits: dict[str, frozenset[str]] = {}
+        self.variable_fits: dict[int, dict[str, frozenset[str]]] = {}
+
+    def _prepare_placeholder(self) -> None:
+        """The placeholder's steps and the members' bits (used with a shared class only)."""
+        # the placeholder's steps, each with its conditions on the placeholder
         self.edges: list[tuple[tuple[GroundAtom, ...], tuple[GroundAtom, ...], Step, _Schema, Binding]] = []
         self.edges_from: dict[GroundAtom, list[int]] = defaultdict(list)
         self.edge_steps: set[Step] = set()
@@ -453,7 +497,12 @@ class _Exploration:
         self.spreading: deque[GroundAtom] = deque()
         self.seeds: list[tuple[GroundAtom, str]] = []  # (pattern, member): a member's initial fact not yet spread
         self.edges_spread = 0  # the placeholder's steps fired at least once
-        self.goal = [(p, *args) for p, args in _required_atoms(problem.goal) if not any(a[0] == "?" for a in args)]
+
+    def _prepare_facts(self, task: PlanningTask, relaxed: RelaxedTask) -> None:
+        """The goal, the facts reached (none yet) and what the initial ones are read from."""
+        problem = task.typing.problem
+        self.goal = [(p, *args) for p, args in required_atoms(problem.goal) if not any(a[0] == "?" for a in args)]
+        self.missing = set(self.goal)
         self.facts: dict[GroundAtom, _Achiever | None] = {}  # the step that first reached each fact
         self.queue: deque[GroundAtom] = deque()
         self.by_object = task.init_index.by_object
@@ -461,24 +510,11 @@ class _Exploration:
         # the index also holds numeric terms, (distance a b), which are not facts
         self.numeric_terms = bool(problem.numeric_init)
         # timed initial literals that make a fact true count as reached: a plan may wait for them
-        self.timed = compiled.timed
-        self.timed_by_object = compiled.timed_by_object
-        self.of_type: dict[str, list[str]] = {}
-        self.fits: dict[str, frozenset[str]] = {}
-        self.schemas = compiled.schemas
-        # predicate -> (schema, the condition it matches, the schema's other conditions with their types)
-        self.triggers: dict[str, list[tuple[_Schema, int, list[_Typed]]]] = defaultdict(list)
-        self.conditions: dict[int, list[_Typed]] = {}
-        for schema in self.schemas:
-            type_of = dict(zip(schema.parameters, schema.types))
-            typed = [
-                (predicate, args, tuple(type_of.get(a) if a[0] == "?" else None for a in args))
-                for predicate, args in schema.pre
-            ]
-            self.conditions[id(schema)] = typed
-            for i, (predicate, _) in enumerate(schema.pre):
-                self.triggers[predicate].append((schema, i, typed[:i] + typed[i + 1 :]))
-        self.variable_fits: dict[int, dict[str, frozenset[str]]] = {}
+        self.timed = relaxed.timed
+        self.timed_by_object = relaxed.timed_by_object
+
+    def _prepare_joins(self) -> None:
+        """The indexes the joins read, and the counts that tell a saturated schema."""
         # Processed facts by (predicate, signature) and (predicate, position, value, signature), where
         # the signature is the classes of the fact's objects: a condition on a truck's place looks only
         # at the facts that place a truck, not at the hundred packages that may be there too.
@@ -489,23 +525,20 @@ class _Exploration:
         self.effects_added: set[tuple[object, ...]] = set()
         # applications that ranged over every kept object of some types: run again when those grow
         self.ranging: list[tuple[_Schema, Binding, frozenset[str]]] = []
-        self.missing = set(self.goal)
-        # How many reached facts of each (predicate, signature) a saturable schema adds, to pass over
-        # the schemas that have nothing left to add (every floor reached: no more joins of ``up``).
-        # The placeholder's steps are never passed over: each member follows them.
-        shared_steps = self.shared.variable if self.shared else {}
-        self.saturable = {id(s): s for s in self.schemas if s.saturable and id(s) not in shared_steps}
-        self.counted = {predicate for s in self.saturable.values() for predicate, _, _ in s.add}
+        # how many reached facts of each (predicate, signature) the saturable schemas add
         self.reached: dict[tuple[str, tuple[str, ...]], int] = {}
         self.reached_signatures: dict[str, list[tuple[str, ...]]] = defaultdict(list)
         self.reached_total: dict[str, int] = {}
         self.saturated: set[int] = set()
         self.saturation_needs: dict[int, list[tuple[str, tuple[str, ...], int]]] = {}  # until objects are added
+
+    def _reach_start(self, relaxed: RelaxedTask) -> None:
+        """The initial facts over the kept objects, and the steps that need no dynamic fact."""
         # The initial static facts (a map, the floors above each other) are indexed at once and trigger
         # nothing: every dynamic fact is processed after them, and its joins find them.  Only the
         # schemas whose conditions are all static need a join of their own.
-        static = compiled.static
-        self._reach_initial(self.allowed | self.kept_members, compiled.nullary, static)
+        static = relaxed.static
+        self._reach_initial(self.allowed | self.kept_members, relaxed.nullary, static)
         for schema in self.schemas:
             if not schema.pre:
                 self.apply(schema, {})
@@ -920,7 +953,7 @@ def _match(args: Args, fact: GroundAtom, binding: Binding, fits: Mapping[str, fr
 
 
 def _fill(
-    binding: Binding, free: list[tuple[str, str]], objects_of: Callable[[str], list[str]], work: _Work
+    binding: Binding, free: list[tuple[str, str]], objects_of: Callable[[str], list[str]], work: Work
 ) -> Iterator[Binding]:
     if not free:
         yield binding
@@ -937,7 +970,7 @@ def _fill_fresh(
     binding: Binding,
     free: list[tuple[str, str]],
     objects_of: Callable[[str], list[str]],
-    work: _Work,
+    work: Work,
     fresh: Set[str],
 ) -> Iterator[Binding]:
     """The bindings of :func:`_fill` with at least one value from ``fresh``: the ``i``-th free variable
@@ -955,7 +988,7 @@ def _fill_parts(
     free: list[tuple[str, str]],
     values: list[list[str]],
     objects_of: Callable[[str], list[str]],
-    work: _Work,
+    work: Work,
 ) -> Iterator[Binding]:
     """Bindings of ``free`` taking the given ``values`` for the first variables, any object of its
     type for the rest."""
@@ -997,407 +1030,3 @@ def _relaxed_plan(
             stack.append((predicate,) + tuple(binding.get(a, a) for a in args))
     plan.reverse()
     return plan, objects
-
-
-# closure over constraints: (names, a subset of them already closed) -> (closed set, what it put back and why)
-CloseFn = Callable[[Set[str], Set[str]], tuple[frozenset[str], tuple[Restored, ...]]]
-
-
-def repair_selection(
-    task: PlanningTask,
-    kept: frozenset[str],
-    scores: Mapping[str, float],
-    close: CloseFn,
-    budget: int | None = None,
-    give_up_above: int | None = None,
-) -> tuple[frozenset[str], tuple[Restored, ...], Reachability]:
-    """Add what the relaxed goal needs to ``kept``; returns (kept, what was put back and why, the last check).
-
-    Candidates are tried best first: one member of every class the kept set
-    lacks, then by score, then by hops from the kept objects in the initial
-    state; ``close`` is closure over constraints (it returns the closed set
-    and its own reasons).  ``budget`` bounds each check (default: grows with
-    the problem); past ``give_up_above`` kept objects the search stops and
-    returns what it has.
-    """
-    total = len(task.problem.objects)
-    if budget is None:
-        budget = max(DEFAULT_BUDGET, BUDGET_PER_OBJECT * total)
-    if give_up_above is None:
-        give_up_above = total
-    deadline = min(time.monotonic() + REPAIR_SECONDS, math.inf if task.deadline is None else task.deadline)
-    try:
-        exploration = _Exploration(task, kept, _Work(budget, deadline))
-        exploration.run()
-    except _OutOfBudget:
-        task.check_time("checking the selection")  # the --timeout, not the repair's own bound
-        return kept, (), Reachability(False, False)
-    check = exploration.outcome()
-    if check.reachable:
-        return _sharpen(task, kept, kept, (), check, scores, close, give_up_above)
-    # One member of every class the kept set lacks first (no airplane at all), together; then, round by
-    # round, the objects between what is reached and the goal atoms still unreached: one at a time at
-    # first (one airplane may carry every package), then a quarter of what was added, or as many as
-    # the last round's rate of goal atoms says are needed.  The exploration carries on from where it
-    # stopped, so the whole growth costs about one exploration of the final set.
-    toward = _Toward(task, scores)
-    take = toward.missing_classes(kept)
-    current = kept
-    added: list[str] = []
-    estimate = 0  # objects still needed, judged by what the last round's objects reached
-    try:
-        while exploration.missing:
-            if not take:
-                batch = max(1, (len(current) - len(kept)) // 4, min(estimate, 2 * (len(current) - len(kept))))
-                unreached = {arg for atom in exploration.missing for arg in atom[1:]}
-                take = toward.nearest(current, unreached, batch, exploration.facts)
-                if not take:
-                    break
-            grown, _ = close(current | frozenset(take), current)
-            added += take + sorted(grown - current - set(take))
-            if len(grown) > give_up_above:
-                current = grown
-                break  # it would keep most of the problem anyway: checking costs more than it saves
-            before = len(exploration.missing)
-            exploration.add(grown - current)
-            current = grown
-            exploration.run()
-            brought = before - len(exploration.missing)
-            toward.learn(take, brought > 0)
-            # one truck brought its city's packages home: about as many more as cities still waiting
-            estimate = -(-len(take) * len(exploration.missing) // brought) if brought > 0 else 0
-            take = []
-        check = exploration.outcome()
-    except _OutOfBudget:
-        task.check_time("checking the selection")
-        check = Reachability(False, False)
-    rank = {name: i for i, name in enumerate(added)}
-    if not check.reachable:
-        # Nothing short of the whole problem reaches the goal (or the check gave up): let the planner decide.
-        unchecked = frozenset(current) - kept
-        return frozenset(current), tuple(Restored(n, "", "reachability", ("goal",)) for n in sorted(unchecked)), check
-    classes = task.typing.problem.objects
-    used = {name for name in check.plan_objects if name in task.problem.objects and name not in kept}
-    reached = exploration.facts
-    used, check = _economize(
-        task,
-        kept,
-        used,
-        classes,
-        rank,
-        check,
-        close,
-        budget,
-        deadline,
-        lambda members: toward.interchangeable(members, reached),
-        lambda name, others: toward.stood_in_for(name, others, reached),
-    )
-    step_of: dict[str, Step] = {}
-    for step in check.plan:
-        for arg in step[1:]:
-            step_of.setdefault(arg, step)
-    reasons = [
-        Restored(name, "", "reachability", step_of.get(name, ("goal",)))
-        for name in sorted(used, key=lambda n: (rank.get(n, len(rank)), n))
-    ]
-    closed, closure_reasons = close(kept | frozenset(used), kept)
-    reasons.extend(r for r in closure_reasons if r.name not in used and r.name not in kept)
-    return _sharpen(task, kept, closed, tuple(reasons), check, scores, close, give_up_above)
-
-
-def _sharpen(
-    task: PlanningTask,
-    kept: frozenset[str],
-    closed: frozenset[str],
-    reasons: tuple[Restored, ...],
-    check: Reachability,
-    scores: Mapping[str, float],
-    close: CloseFn,
-    give_up_above: int,
-) -> tuple[frozenset[str], tuple[Restored, ...], Reachability]:
-    """On a temporal or numeric problem, a selection the delete relaxation admits but the sharper
-    relaxation of ``timed_relaxation`` refutes (fuel no kept action can give, a durative action's end
-    out of reach) has no plan: add the best-ranked objects, a doubling batch at a time, until it is
-    admitted (or the planner decides, past ``give_up_above``)."""
-    from relevance_plan.relevance.timed_relaxation import applies, timed_relaxed_reachability
-
-    if not applies(task) or timed_relaxed_reachability(task, closed) is not False:
-        return closed, reasons, check
-    distance = task.goal_distance
-    far = len(task.problem.objects) + 1
-    ranked = _lacking_classes_first(
-        sorted(
-            (name for name in task.problem.objects if name not in closed),
-            key=lambda name: (-scores.get(name, 0.0), distance.get(name, far), name),
-        ),
-        closed,
-        task.typing.problem.objects,
-    )
-    current, added, batch = closed, list(reasons), 1
-    while ranked and len(current) <= give_up_above:
-        take, ranked = ranked[:batch], ranked[batch:]
-        grown, more = close(current | frozenset(take), current)
-        added += [Restored(name, "", "reachability", ("goal",)) for name in take]
-        added += [r for r in more if r.name not in current and r.name not in take]
-        current = grown
-        ranked = [name for name in ranked if name not in current]
-        task.check_time("checking the selection")
-        if timed_relaxed_reachability(task, current) is not False:
-            break
-        batch = max(1, len(current) - len(kept))
-    return current, tuple(added), check
-
-
-def _lacking_classes_first(ranked: Sequence[str], selected: Set[str], classes: Mapping[str, str]) -> list[str]:
-    """``ranked`` with the best candidate of each class ``selected`` has no member of moved to the front.
-
-    The sharper check says only that the selection fails, not what it lacks: as the repair does,
-    one member of every missing class comes first, so sixty agents tied at score 0 do not all come
-    before the one tap the agents need to fill up."""
-    present = {classes.get(name, "object") for name in selected}
-    first: dict[str, str] = {}
-    for name in ranked:
-        first.setdefault(classes.get(name, "object"), name)
-    front = [name for cls, name in first.items() if cls not in present]
-    chosen = set(front)
-    return front + [name for name in ranked if name not in chosen]
-
-
-class _Toward:
-    """The order in which the repair adds objects (see :func:`repair_selection`)."""
-
-    def __init__(self, task: PlanningTask, scores: Mapping[str, float]):
-        self.task = task
-        self.scores = scores
-        self.hub = hub_degree(task)
-        # the initial facts' links, walked once or twice a round
-        self.graph = ObjectGraph(task.init_index, REPAIR_MAX_FAN, fan_in(task.init_index))
-        self.toward_unreached: tuple[frozenset[str], dict[str, int]] = (frozenset(), {})
-        self.classes = task.typing.problem.objects
-        self.timed = bool(task.typing.problem.timed_literals)
-        self.static = _compiled(task).static
-        # where the one agent is (the robot's place: the objects of a changing predicate's only
-        # initial fact): what it reaches grows from there before any step is found
-        self.agents = {
-            arg
-            for predicate in task.init_index.singletons
-            if predicate not in self.static
-            for atom in task.init_index.by_predicate[predicate]
-            for arg in atom[1:]
-        }
-        # class -> rounds in a row its objects brought no goal atom nearer: a second airplane adds
-        # nothing to a relaxed plan that has one, a truck in another city does
-        self.fruitless: dict[str, int] = {}
-
-    def learn(self, taken: Sequence[str], progress: bool) -> None:
-        for cls in {self.classes.get(name, "object") for name in taken}:
-            self.fruitless[cls] = 0 if progress else self.fruitless.get(cls, 0) + 1
-
-    def missing_classes(self, kept: Set[str]) -> list[str]:
-        """The best-ranked member (score, then hops from ``kept``) of every class ``kept`` has none of."""
-        present = {self.classes[name] for name in kept if name in self.classes}
-        distance = graph_distances(self.task.init_index, self.graph, kept, self.hub)
-        best: dict[str, tuple[float, int, str]] = {}
-        far = len(self.classes) + 1
-        for name, cls in self.classes.items():
-            if cls in present or name in kept:
-                continue
-            key = (-self.scores.get(name, 0.0), distance.get(name, far), name)
-            if cls not in best or key < best[cls]:
-                best[cls] = key
-        return sorted(key[2] for key in best.values())
-
-    def nearest(
-        self, current: Set[str], unreached: Set[str], count: int, reached: Mapping[GroundAtom, object]
-    ) -> list[str]:
-        """While a goal object is named by no reached fact, the objects of one shortest way toward it
-        (:meth:`_path`).  Otherwise the ``count`` objects outside ``current`` on the shortest ways
-        in the initial state between the objects of facts a step reached (and the agent's place)
-        and ``unreached`` (objects of goal atoms not reached yet): fewest hops from the one plus
-        to the other, then nearest to ``unreached``, classes that helped before those that did
-        not, then best scored.  Passed over, as they add
-        nothing: an object a kept one of its class can stand in for (an airplane at an airport
-        another kept airplane flies to), and one whose every link is to objects not kept while a
-        kept one has its properties (an airplane parked at an airport not kept); when nothing else
-        is left, the latter, then any."""
-        index = self.task.init_index
-        if self.toward_unreached[0] != unreached:  # the same goal atoms stay unreached for many rounds
-            self.toward_unreached = (frozenset(unreached), graph_distances(index, self.graph, unreached, self.hub))
-        distance = self.toward_unreached[1]
-        far = len(self.classes) + 1
-        sources = {arg for fact, achiever in reached.items() if achiever is not None for arg in fact[1:]}
-        sources.update(self.agents)
-        sources.discard(MEMBER)
-        path = self._path(unreached - sources, sources - unreached, current)
-        if path:
-            return path
-        between = graph_distances(index, self.graph, sources, self.hub) if sources else {}
-        fruitless, classes = self.fruitless, self.classes
-        ranked = sorted(
-            (name for name in classes if name not in current),
-            key=lambda name: (
-                distance.get(name, far) + between.get(name, far if sources else 0),
-                distance.get(name, far),
-                fruitless.get(classes[name], 0),
-                -self.scores.get(name, 0.0),
-                name,
-            ),
-        )
-        kept_of: dict[str, list[str]] = {}
-        chosen: list[str] = []
-        detached: list[str] = []
-        for name in ranked:
-            if len(chosen) == count:
-                break
-            cls = classes[name]
-            if cls not in kept_of:
-                kept_of[cls] = sorted(n for n in current if classes.get(n) == cls)[:DOMINANCE_TRIES]
-            if self.stood_in_for(name, kept_of[cls], reached):
-                continue
-            if self._detached(name, kept_of[cls], reached, current):
-                detached.append(name)
-            else:
-                chosen.append(name)
-        return chosen or detached[:count] or ranked[:count]
-
-    def _path(self, targets: Set[str], sources: Set[str], current: Set[str]) -> list[str]:
-        """The objects outside ``current`` on one shortest way in the initial state from the source
-        nearest to ``targets`` (goal objects no reached fact names yet) down to one of them: a
-        corridor of cells from where the robot can go to the goal's place, not every cell of the
-        rectangle between them."""
-        if not targets or not sources:
-            return []
-        distance = graph_distances(self.task.init_index, self.graph, targets, self.hub)
-        start = min((name for name in sources if name in distance), key=lambda n: (distance[n], n), default=None)
-        walk: list[str] = []
-        name = start
-        while name is not None and distance[name] > 0:
-            lower = distance[name] - 1
-            # the first by name: the facts' order, and so the neighbours', changes from run to run
-            name = min((o for o in self.graph.neighbours(name) if distance.get(o) == lower), default=None)
-            if name is not None and name not in current and name in self.classes:
-                walk.append(name)
-        return walk
-
-    def _detached(self, name: str, others: Sequence[str], reached: Mapping[GroundAtom, object], kept: Set[str]) -> bool:
-        """Whether ``name``'s links to other objects are all where it is now (facts that change) and
-        name objects not ``kept``, and one of ``others`` has reached its facts about itself alone:
-        alone, it adds nothing."""
-        atoms = self.task.init_index.by_object.get(name, ())
-        classes = self.classes
-        linked = [atom for atom in atoms if len(atom) > 2]
-        if not linked or any(
-            atom[0] in self.static or all(a == name or a in kept or a not in classes for a in atom[1:])
-            for atom in linked
-        ):
-            return False  # a static link (a road, a door) is part of a way that may be needed
-        return self.stood_in_for(name, others, reached, [atom for atom in atoms if len(atom) <= 2])
-
-    def interchangeable(self, members: Sequence[str], reached: Mapping[GroundAtom, object]) -> bool:
-        """Whether one of ``members`` (of one class) can stand in for another (``reached``: what the
-        exploration of them all reached)."""
-        return any(
-            self.stood_in_for(name, [o for o in members if o != name][:DOMINANCE_TRIES], reached) for name in members
-        )
-
-    def stood_in_for(
-        self,
-        name: str,
-        others: Sequence[str],
-        reached: Mapping[GroundAtom, object],
-        atoms: Collection[GroundAtom] | None = None,
-    ) -> bool:
-        """Whether one of ``others`` (kept, of ``name``'s class) has reached every initial fact of
-        ``name`` (or every one of ``atoms``) with ``name`` renamed to it: then whatever ``name`` could
-        do in the relaxation, it can do too (an airplane parked at an airport another kept airplane
-        can fly to)."""
-        if self.timed:
-            return False  # a timed fact of ``name`` is not among the initial ones
-        facts = self.task.init_index.by_object.get(name, ()) if atoms is None else atoms
-        return any(
-            all(tuple(other if arg == name else arg for arg in atom) in reached for atom in facts) for other in others
-        )
-
-
-def _economize(
-    task: PlanningTask,
-    kept: frozenset[str],
-    used: set[str],
-    classes: Mapping[str, str],
-    rank: Mapping[str, int],
-    check: Reachability,
-    close: CloseFn,
-    budget: int,
-    deadline: float,
-    interchangeable: Callable[[Sequence[str]], bool],
-    stood_in_for: Callable[[str, Sequence[str]], bool],
-) -> tuple[set[str], Reachability]:
-    """Fewer added objects of one class where fewer do: a relaxed plan takes the first airplane it
-    meets for each package, when one airplane carries them all.  Class by class (most members
-    first), keep the member the current relaxed plan uses most, alone, if the goal stays
-    relaxed-reachable, else drop the less used half while it does; what the last relaxed plan no
-    longer uses goes too.  A few checks, each on the small kept set.  In a class none of whose
-    members can stand in for most others (a truck in each city), only those another member can
-    stand in for go (a second truck in one city, added in the same round as the first)."""
-    by_class: dict[str, list[str]] = {}
-    for name in used:
-        by_class.setdefault(classes.get(name, "object"), []).append(name)
-    for cls in sorted((c for c in by_class if len(by_class[c]) > 1), key=lambda c: (-len(by_class[c]), c)):
-        if not interchangeable(sorted(by_class[cls])):
-            members = _by_use(by_class[cls], check, rank)
-            if len(members) <= PAIRWISE_UP_TO:
-                dropped: list[str] = []
-                for name in reversed(members):  # the least used first
-                    if stood_in_for(name, [m for m in members if m != name and m not in dropped]):
-                        dropped.append(name)
-                if dropped:
-                    trial_used, trial = _without(task, kept, used, dropped, close, budget, deadline)
-                    if trial is not None and len(trial_used) < len(used):
-                        used, check = trial_used, trial
-            continue
-        while True:
-            members = _by_use([m for m in by_class[cls] if m in used], check, rank)
-            if len(members) < 2:
-                break
-            trial_used, trial = _without(task, kept, used, members[1:], close, budget, deadline)
-            if trial is None and len(members) > 3:
-                trial_used, trial = _without(task, kept, used, members[len(members) // 2 :], close, budget, deadline)
-            if trial is None or len(trial_used) >= len(used):
-                break  # no smaller set reaches the goal (closure may bring the dropped ones back)
-            used, check = trial_used, trial
-    return used, check
-
-
-def _by_use(members: list[str], check: Reachability, rank: Mapping[str, int]) -> list[str]:
-    uses: dict[str, int] = {}
-    for step in check.plan:
-        for arg in step[1:]:
-            uses[arg] = uses.get(arg, 0) + 1
-    return sorted(members, key=lambda n: (-uses.get(n, 0), rank.get(n, len(rank)), n))
-
-
-def _without(
-    task: PlanningTask,
-    kept: frozenset[str],
-    used: set[str],
-    dropped: list[str],
-    close: CloseFn,
-    budget: int,
-    deadline: float,
-) -> tuple[set[str], Reachability | None]:
-    """``used`` without ``dropped`` (and without what its relaxed plan then leaves unused), if the goal
-    stays relaxed-reachable."""
-    trial = used - set(dropped)
-    closed, _ = close(kept | frozenset(trial), kept)
-    attempt = relaxed_reachability(task, closed, budget, deadline)
-    if not attempt.reachable:
-        return used, None
-    # what the relaxed plan uses, closure's additions included (they stay only through their cause)
-    needed = {n for n in attempt.plan_objects if n in closed and n not in kept}
-    return needed or trial, attempt
-
-
-def hub_degree(task: PlanningTask) -> int:
-    """Objects in more initial facts than this (a shape every key has, a floor above all others) link
-    everything to everything: distances do not pass through them."""
-    return max(16, int(2 * len(task.problem.objects) ** 0.5))

@@ -20,7 +20,8 @@ from relevance_plan.errors import ModelError
 from relevance_plan.pddl.formulas import Formula, predicates_in
 from relevance_plan.relevance.knowledge import Human, KnowledgeModel, ModelClass
 from relevance_plan.relevance.scene import Element, build_scene
-from relevance_plan.relevance.scorers.base import PlanningTask, ScoreRequest, ScoreResult
+from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult
+from relevance_plan.relevance.task import PlanningTask
 
 UNKNOWN_CLASS = "(unknown)"
 # More than this share of objects of unknown class: the model is not about this scene.
@@ -31,41 +32,42 @@ def task_entropy(distribution: Mapping[str, float]) -> float:
     return -sum(p * math.log(p) for p in distribution.values() if p > 0)
 
 
-def classify(element: Element, model: KnowledgeModel) -> ModelClass | None:
+def classify(element: Element, knowledge_model: KnowledgeModel) -> ModelClass | None:
     """Kind names decide first (a 'mug' is a cup whatever its type), then the most specific type."""
-    for model_class in model.classes.values():
+    for model_class in knowledge_model.classes.values():
         if element.kind in model_class.kinds:
             return model_class
     for type_name in element.types:
-        for model_class in model.classes.values():
+        for model_class in knowledge_model.classes.values():
             if type_name in model_class.types:
                 return model_class
     return None
 
 
-def _choose_objective(goal: Formula, model: KnowledgeModel, request: ScoreRequest) -> tuple[str | None, str]:
+def _choose_objective(goal: Formula, knowledge_model: KnowledgeModel, request: ScoreRequest) -> tuple[str | None, str]:
     if request.objective is not None:
-        if request.objective not in model.objectives:
+        if request.objective not in knowledge_model.objectives:
             raise ModelError(
-                f"unknown objective '{request.objective}' (model has: {', '.join(model.objectives)})", path=model.path
+                f"unknown objective '{request.objective}' (model has: {', '.join(knowledge_model.objectives)})",
+                path=knowledge_model.path,
             )
         return request.objective, ""
     goal_predicates = predicates_in(goal)
-    matches = model.objective_for_goal(goal_predicates)
+    matches = knowledge_model.objective_for_goal(goal_predicates)
     if not matches:
         return None, (
             f"no objective of the model matches the goal predicates ({', '.join(sorted(goal_predicates))})"
-            f" — give --objective ({', '.join(model.objectives)})"
+            f" — give --objective ({', '.join(knowledge_model.objectives)})"
         )
-    most = max(len(model.objectives[name].goal_predicates) for name in matches)
-    best = [name for name in matches if len(model.objectives[name].goal_predicates) == most]
+    most = max(len(knowledge_model.objectives[name].goal_predicates) for name in matches)
+    best = [name for name in matches if len(knowledge_model.objectives[name].goal_predicates) == most]
     if len(best) > 1:
         return None, f"the goal fits several objectives ({', '.join(best)}) — give --objective"
     return best[0], ""
 
 
 @dataclass
-class ModelContext:
+class KnowledgeContext:
     """What the scene-independent part of the model says for one goal and one request:
     the objective, P(task | objective), and how relevant each class and kind is.
 
@@ -75,7 +77,7 @@ class ModelContext:
     is what lets the live session re-score one element at a time.
     """
 
-    model: KnowledgeModel
+    knowledge_model: KnowledgeModel
     human: Human | None
     objective: str | None
     distribution: dict[str, float]
@@ -89,7 +91,7 @@ class ModelContext:
             if class_name in preferred:
                 return preferred[class_name]
         # A class a task does not mention is irrelevant to it.
-        return self.model.task_classes[task_name].get(class_name, 0.0)
+        return self.knowledge_model.task_classes[task_name].get(class_name, 0.0)
 
     def kind_relevance(self, model_class: ModelClass, kind: str) -> float:
         human = self.human
@@ -104,9 +106,9 @@ class ModelContext:
         value = self._class_values.get(class_name)
         if value is None:
             if class_name == UNKNOWN_CLASS:
-                value = self.model.unknown_class_relevance
+                value = self.knowledge_model.unknown_class_relevance
             else:
-                model_class = self.model.classes[class_name]
+                model_class = self.knowledge_model.classes[class_name]
                 if model_class.fixed_relevance is not None:
                     value = model_class.fixed_relevance
                 else:
@@ -115,63 +117,67 @@ class ModelContext:
         return value
 
 
-def model_context(goal: Formula, request: ScoreRequest) -> ModelContext:
+def knowledge_context(goal: Formula, request: ScoreRequest) -> KnowledgeContext:
     """The objective and P(task | objective) for ``goal`` (a formula) under ``request``."""
-    model = request.model
-    if model is None:
+    knowledge_model = request.knowledge_model
+    if knowledge_model is None:
         raise ModelError("the model scorer needs a knowledge model (--model FILE)")
     human = None
     if request.human is not None:
-        human = model.humans.get(request.human)
+        human = knowledge_model.humans.get(request.human)
         if human is None:
-            known = ", ".join(model.humans) or "none"
-            raise ModelError(f"unknown human '{request.human}' (model has: {known})", path=model.path)
-    objective, problem_with_objective = _choose_objective(goal, model, request)
+            known = ", ".join(knowledge_model.humans) or "none"
+            raise ModelError(f"unknown human '{request.human}' (model has: {known})", path=knowledge_model.path)
+    objective, problem_with_objective = _choose_objective(goal, knowledge_model, request)
     if objective is None:
-        return ModelContext(model, human, None, {}, None, problem_with_objective)
+        return KnowledgeContext(knowledge_model, human, None, {}, None, problem_with_objective)
     if request.model_task is not None:
-        if request.model_task not in model.task_classes:
+        if request.model_task not in knowledge_model.task_classes:
             raise ModelError(
-                f"unknown task '{request.model_task}' (model has: {', '.join(model.task_classes)})", path=model.path
+                f"unknown task '{request.model_task}' (model has: {', '.join(knowledge_model.task_classes)})",
+                path=knowledge_model.path,
             )
         distribution = {request.model_task: 1.0}
     elif human is not None and objective in human.objective_tasks:
         distribution = dict(human.objective_tasks[objective])
     else:
-        distribution = dict(model.objectives[objective].tasks)
+        distribution = dict(knowledge_model.objectives[objective].tasks)
     entropy = task_entropy(distribution)
     insufficiency = ""
-    if entropy > model.entropy_bound:
+    if entropy > knowledge_model.entropy_bound:
         leading = sorted(distribution.items(), key=lambda item: -item[1])[:3]
         shown = ", ".join(f"{name} {p:.2f}" for name, p in leading)
         insufficiency = (
-            f"objective ambiguous: {shown} (entropy {entropy:.2f} > {model.entropy_bound:.2f} nats)"
+            f"objective ambiguous: {shown} (entropy {entropy:.2f} > {knowledge_model.entropy_bound:.2f} nats)"
             " — give --task or --human"
         )
-    return ModelContext(model, human, objective, distribution, entropy, insufficiency)
+    return KnowledgeContext(knowledge_model, human, objective, distribution, entropy, insufficiency)
 
 
-def class_of(element: Element, model: KnowledgeModel) -> str:
-    found = classify(element, model)
+def class_of(element: Element, knowledge_model: KnowledgeModel) -> str:
+    found = classify(element, knowledge_model)
     return found.name if found is not None else UNKNOWN_CLASS
 
 
-def scored_by_contents(class_name: str, model: KnowledgeModel) -> bool:
-    return class_name != UNKNOWN_CLASS and model.classes[class_name].from_contents
+def scored_by_contents(class_name: str, knowledge_model: KnowledgeModel) -> bool:
+    return class_name != UNKNOWN_CLASS and knowledge_model.classes[class_name].from_contents
 
 
-def score_element(context: ModelContext, element: Element, class_name: str) -> tuple[float, str]:
+def score_element(context: KnowledgeContext, element: Element, class_name: str) -> tuple[float, str]:
     """R(e) and its explanation for an element whose class is not scored by its contents."""
-    model = context.model
+    knowledge_model = context.knowledge_model
     if class_name == UNKNOWN_CLASS:
-        return model.unknown_class_relevance, f"class unknown to the model: default {model.unknown_class_relevance:g}"
-    model_class = model.classes[class_name]
+        return (
+            knowledge_model.unknown_class_relevance,
+            f"class unknown to the model: default {knowledge_model.unknown_class_relevance:g}",
+        )
+    model_class = knowledge_model.classes[class_name]
     class_relevance = context.class_relevance(class_name)
     kind_p = context.kind_relevance(model_class, element.kind)
     placement = 1.0
     factors = []
     for condition in sorted(element.conditions):
-        factor = model.placement.get(condition)
+        factor = knowledge_model.placement.get(condition)
         if factor is not None:
             placement *= factor
             factors.append(f"{condition} {factor:g}")
@@ -195,7 +201,7 @@ def unknown_share_problem(known: int, total: int) -> str:
     return ""
 
 
-def insufficient_result(objects: Iterable[str], context: ModelContext, message: str) -> ScoreResult:
+def insufficient_result(objects: Iterable[str], context: KnowledgeContext, message: str) -> ScoreResult:
     return ScoreResult(
         "model",
         {name: 0.0 for name in objects},
@@ -207,15 +213,17 @@ def insufficient_result(objects: Iterable[str], context: ModelContext, message: 
     )
 
 
-def score_by_model(task: PlanningTask, request: ScoreRequest) -> ScoreResult:
-    context = model_context(task.problem.goal, request)
-    model = context.model
+def score_by_knowledge_model(task: PlanningTask, request: ScoreRequest) -> ScoreResult:
+    context = knowledge_context(task.problem.goal, request)
+    knowledge_model = context.knowledge_model
     if context.insufficiency:
         return insufficient_result(task.problem.objects, context, context.insufficiency)
     facts = task.problem.facts_in_order()  # an object's first place is the file's first
-    scene = build_scene(task.domain, task.problem.objects, facts, model.scene, task.deadline)
+    scene = build_scene(task.domain, task.problem.objects, facts, knowledge_model.scene, task.deadline)
     task.check_time("describing the scene")
-    element_class: dict[str, str] = {name: class_of(element, model) for name, element in scene.elements.items()}
+    element_class: dict[str, str] = {
+        name: class_of(element, knowledge_model) for name, element in scene.elements.items()
+    }
     task.check_time("classifying the objects")
     unknown = tuple(sorted(name for name, c in element_class.items() if c == UNKNOWN_CLASS))
     problem = unknown_share_problem(len(scene.elements) - len(unknown), len(scene.elements))
@@ -224,7 +232,7 @@ def score_by_model(task: PlanningTask, request: ScoreRequest) -> ScoreResult:
 
     class_scores: dict[str, float] = {}
     for class_name in sorted(set(element_class.values())):
-        if not scored_by_contents(class_name, model):
+        if not scored_by_contents(class_name, knowledge_model):
             class_scores[class_name] = context.class_relevance(class_name)
 
     scores: dict[str, float] = {}
@@ -233,7 +241,7 @@ def score_by_model(task: PlanningTask, request: ScoreRequest) -> ScoreResult:
         if not count & 0xFFF:
             task.check_time("scoring the objects")
         class_name = element_class[name]
-        if not scored_by_contents(class_name, model):
+        if not scored_by_contents(class_name, knowledge_model):
             scores[name], explanations[name] = score_element(context, element, class_name)
     # Places (and other classes scored by contents) are as relevant as the best
     # item they hold whose class is relevant; the class threshold is applied later.
@@ -247,7 +255,7 @@ def score_by_model(task: PlanningTask, request: ScoreRequest) -> ScoreResult:
         scores[name] = contents.get(name, 0.0)
         explanations[name] = contents_explanation(scores[name])
     for class_name in class_scores.keys() | set(element_class.values()):
-        if scored_by_contents(class_name, model):
+        if scored_by_contents(class_name, knowledge_model):
             members = [scores[name] for name, c in element_class.items() if c == class_name]
             class_scores[class_name] = max(members, default=0.0)
     return ScoreResult(

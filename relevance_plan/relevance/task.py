@@ -1,0 +1,90 @@
+"""The planning task every stage reads: a domain and a problem, with the analyses they share.
+
+``PlanningTask`` sits at the bottom of ``relevance``: the scorers, the closure,
+the relaxed exploration, its repair and the pruning all take one, and each
+analysis (the initial facts' index, inferred types, the goal's roles,
+distances, what soundness keeps) is computed once, on first use.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from functools import cached_property
+
+from relevance_plan.pddl.model import Domain, Problem, goal_objects, pinned_objects
+from relevance_plan.pddl.sexpr import check_deadline
+from relevance_plan.relevance.analysis import (
+    FactIndex,
+    GoalAnalysis,
+    analyse_goal,
+    index_init,
+    object_distances,
+    object_profiles,
+)
+from relevance_plan.relevance.soundness import KeptObjects, objects_to_keep, soundness_requirements
+from relevance_plan.relevance.types import InferredTypes, infer_types
+
+
+@dataclass(frozen=True, eq=False)
+class PlanningTask:
+    """A domain and problem with the analyses several stages share, computed once."""
+
+    domain: Domain
+    problem: Problem
+    # time.monotonic() by which scoring and pruning end (``plan``'s --timeout): past it, the
+    # analyses stop with OutOfTimeError instead of running on until the CLI's last alarm
+    deadline: float | None = field(default=None, kw_only=True)
+
+    def check_time(self, what: str) -> None:
+        """OutOfTimeError naming ``what`` when the task's deadline has passed."""
+        check_deadline(self.deadline, what, self.problem.path)
+
+    @cached_property
+    def init_index(self) -> FactIndex:
+        return index_init(self.problem, self.deadline)
+
+    @cached_property
+    def typing(self) -> InferredTypes:
+        """The domain and problem with types inferred where the domain declares none."""
+        typing = infer_types(self.domain, self.problem, self.init_index.by_predicate)
+        self.check_time("inferring the objects' classes")
+        return typing
+
+    @cached_property
+    def goal_analysis(self) -> GoalAnalysis:
+        return analyse_goal(self.typing.domain, self.typing.problem, self.init_index, self.deadline)
+
+    @cached_property
+    def goal_distance(self) -> dict[str, int]:
+        """Hops from the goal's objects through initial facts (unreached objects are absent)."""
+        return object_distances(self.init_index, self.goal_objects, self.hub_degree)
+
+    @cached_property
+    def hub_degree(self) -> int:
+        """Objects in more initial facts than this (a shape every key has, a floor above all others) link
+        everything to everything: distances do not pass through them."""
+        return max(16, int(2 * len(self.problem.objects) ** 0.5))
+
+    @cached_property
+    def object_profiles(self) -> dict[str, tuple[object, ...]]:
+        """Each object's class and initial facts, its own name blanked out: equal for interchangeable objects."""
+        facts = object_profiles(self.init_index, self.problem.numeric_init)
+        return {name: (self.object_type(name), *facts.get(name, ())) for name in self.problem.objects}
+
+    def object_type(self, name: str) -> str:
+        """The declared type of an object, or its inferred class in an untyped domain."""
+        return self.typing.problem.objects[name]
+
+    @cached_property
+    def goal_objects(self) -> frozenset[str]:
+        return goal_objects(self.problem, self.domain)
+
+    @cached_property
+    def pinned_objects(self) -> frozenset[str]:
+        """Objects named in the goal, the trajectory constraints or the metric: never pruned."""
+        return pinned_objects(self.problem, self.domain)
+
+    @cached_property
+    def kept_for_soundness(self) -> KeptObjects:
+        """Objects a quantifier ranges over where pruning them could change a verdict (``soundness``)."""
+        return objects_to_keep(self.domain, self.problem, soundness_requirements(self.domain, self.problem))
