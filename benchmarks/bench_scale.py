@@ -33,7 +33,8 @@ Tables go to standard output, one row per problem or pruning cell as it
 finishes; a note per planner run and per timed pruning run goes to standard
 error.  ``kept`` is what the first attempt planned on (``a->b``: widening
 went on to b objects); kept = objects means relevance planned the full
-problem.
+problem.  Every planning run is stored in a results store (``--store``;
+one suite per world and size), which ``relevance-plan report`` shows.
 
 With the defaults (one problem per cell) the run takes about 2 minutes on 2
 quiet cores: about 100 s of planning and 20 s of pruning time, most of it
@@ -56,24 +57,32 @@ from __future__ import annotations
 
 import argparse
 import json
-import math
 import statistics
-import sys
 import tempfile
 import time
+from dataclasses import asdict
 from pathlib import Path
 
-REPO = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(REPO))
+from base import (
+    DOMAINS,
+    Laps,
+    Measured,
+    Store,
+    add_store_option,
+    geometric_mean,
+    median,
+    progress,
+    run_method,
+    show_ratio,
+    show_time,
+)
 
-from relevance_plan.data import DOMAINS_DIR  # noqa: E402
-from relevance_plan.generators.sized import CLASSIC_WORLDS, generate_sized_problem  # noqa: E402
-from relevance_plan.io import load_domain, load_problem, write_text_atomic  # noqa: E402
-from relevance_plan.pddl.sexpr import collection_paused  # noqa: E402
-from relevance_plan.planning.loop import PlanOptions, plan_task  # noqa: E402
-from relevance_plan.planning.results import PlanStatus  # noqa: E402
-from relevance_plan.relevance.scorers import PlanningTask  # noqa: E402
-from relevance_plan.relevance.setup import ScoringOptions, score_problem  # noqa: E402
+from relevance_plan.generators.sized import CLASSIC_WORLDS, generate_sized_problem
+from relevance_plan.io import load_domain, load_problem, write_text_atomic
+from relevance_plan.pddl.sexpr import collection_paused
+from relevance_plan.planning.loop import PlanOptions
+from relevance_plan.relevance.scorers import PlanningTask
+from relevance_plan.relevance.setup import ScoringOptions, score_problem
 
 SIZES = {
     "scenegraph": (200, 500, 1000),
@@ -100,23 +109,7 @@ def write_problem(world: str, seed: int, index: int, size: int, folder: Path) ->
     domain = problem.sidecar["domain"]
     if world in CLASSIC_WORLDS and problem.sidecar["form"] == "typed":
         domain += "-typed"  # a classic world's sidecar names the domain and its form apart
-    return DOMAINS_DIR / domain / "domain.pddl", path, problem.sidecar
-
-
-def run(domain_path: Path, problem_path: Path, method: str, timeout: float) -> dict:
-    result = plan_task(domain_path, problem_path, PlanOptions(method=method, timeout=timeout, race=False))
-    return {
-        "status": result.status.value,
-        "solved": result.status is PlanStatus.SOLVED,
-        "timed_out": result.status is PlanStatus.OUT_OF_TIME,
-        "valid": result.valid,
-        "time": result.wall_time,
-        "kept": result.objects_kept,
-        "first_kept": len(result.selection.kept) if result.selection is not None else result.objects_total,
-        "total": result.objects_total,
-        "attempts": len(result.attempts),
-        "relevance_time": result.relevance_time,
-    }
+    return DOMAINS / domain / "domain.pddl", path, problem.sidecar
 
 
 def prune_stages(domain_path: Path, problem_path: Path, out: Path) -> dict:
@@ -127,33 +120,17 @@ def prune_stages(domain_path: Path, problem_path: Path, out: Path) -> dict:
 
 
 def _prune_stages(domain_path: Path, problem_path: Path, out: Path) -> dict:
-    times = {}
-    start = time.perf_counter()
+    laps = Laps()
     domain = load_domain(domain_path)
     task = PlanningTask(domain, load_problem(problem_path, domain))
-    times["read"] = time.perf_counter() - start
-    mark = time.perf_counter()
+    laps.lap("read")
     scoring = score_problem(task, ScoringOptions(), method="relevance", domain_path=domain_path)
-    times["score"] = time.perf_counter() - mark
-    mark = time.perf_counter()
+    laps.lap("score")
     selection = scoring.first_selection(narrow=True)
-    times["select"] = time.perf_counter() - mark
-    mark = time.perf_counter()
+    laps.lap("select")
     write_text_atomic(out, selection.text)
-    times["write"] = time.perf_counter() - mark
-    times["total"] = time.perf_counter() - start
-    times["kept"] = len(selection.kept)
-    times["objects"] = len(task.problem.objects)
-    return times
-
-
-def median(values):
-    values = [v for v in values if v is not None]
-    return statistics.median(values) if values else None
-
-
-def geomean(values):
-    return math.exp(sum(math.log(v) for v in values) / len(values)) if values else None
+    laps.lap("write")
+    return {**laps.end(), "kept": len(selection.kept), "objects": len(task.problem.objects)}
 
 
 def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
@@ -193,6 +170,7 @@ def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
         help="sizes of the pruning-time table (default: 500 and 5000; targets are printed for those)",
     )
     parser.add_argument("--json", type=Path, default=None, help="also write the raw rows here")
+    add_store_option(parser)
     args = parser.parse_args(argv)
     if args.count < 1:
         parser.error("--count must be at least 1")
@@ -213,7 +191,7 @@ def planning_cells(args: argparse.Namespace) -> list[tuple[str, int]]:
     return cells
 
 
-def plan_all(args: argparse.Namespace, scratch: Path) -> list[dict]:
+def plan_all(args: argparse.Namespace, scratch: Path, store: Store) -> list[dict]:
     """Plan every cell, one row per problem as it goes."""
     rows = []
     cells = planning_cells(args)
@@ -227,23 +205,22 @@ def plan_all(args: argparse.Namespace, scratch: Path) -> list[dict]:
         " oracle (s) | oracle kept | valid |"
     )
     print("|---|---|---|---|---|---|---|---|---|---|---|")
-    done = 0
     for world, size in cells:
         for index in range(1, args.count + 1):
             domain_path, problem_path, sidecar = write_problem(world, args.seed, index, size, scratch)
             row = {"world": world, "size": size, "problem": problem_path.stem, "objects": sidecar["objects_total"]}
             for method in METHODS:
-                row[method] = run(domain_path, problem_path, method, args.timeout)
-                _progress(f"{row['problem']}: {method} {row[method]['status']} in {row[method]['time']:.1f} s")
+                options = PlanOptions(method=method, timeout=args.timeout, race=False)
+                row[method] = run = run_method(domain_path, problem_path, options, store, f"{world}-{size}")[1]
+                progress(f"{row['problem']}: {method} {run.status} in {run.time:.1f} s")
             rows.append(row)
-            done += 1
             rel, oracle = row["relevance"], row["oracle"]
-            valid = all(row[m]["valid"] for m in METHODS if row[m]["solved"])
+            valid = all(row[m].valid for m in METHODS if row[m].solved)
             print(
-                f"| {done}/{runs} | {row['problem']} | {row['objects']} | {_time(row['pure'], args.timeout)} |"
-                f" {_time(rel, args.timeout)} | {rel['relevance_time']:.2f} | {_kept(rel)} | {rel['attempts']} |"
-                f" {_time(oracle, args.timeout)} |"
-                f" {oracle['first_kept']} | {'yes' if valid else 'NO'} |",
+                f"| {len(rows)}/{runs} | {row['problem']} | {row['objects']} | {show_time(row['pure'], args.timeout)} |"
+                f" {show_time(rel, args.timeout)} | {rel.relevance_time:.2f} | {_kept(rel)} | {rel.attempts} |"
+                f" {show_time(oracle, args.timeout)} |"
+                f" {oracle.first_kept} | {'yes' if valid else 'NO'} |",
                 flush=True,
             )
     return rows
@@ -270,31 +247,30 @@ def summarise_planning(rows: list[dict]) -> None:
             if world == "scenegraph":
                 scene_ratios.append(speedup[0])
         if to_oracle[0] is None or to_oracle[0] > ORACLE_TARGET:
-            over_oracle.append(f"{world} {size} ({_show_ratio(to_oracle)})")
-        failures = sum(not r["relevance"]["solved"] or not r["relevance"]["valid"] for r in mine)
+            over_oracle.append(f"{world} {size} ({show_ratio(*to_oracle)})")
+        failures = sum(not r["relevance"].solved or not r["relevance"].valid for r in mine)
         print(
-            f"| {world} | {size} | {median([r['objects'] for r in mine]):.0f} | {len(mine)} |"
+            f"| {world} | {size} | {median(r['objects'] for r in mine):.0f} | {len(mine)} |"
             f" {'>' if pure_low else ''}{pure_t:.2f} | {'>' if rel_low else ''}{rel_t:.2f} |"
-            f" {_show_ratio(speedup)} | {'>' if oracle_low else ''}{oracle_t:.2f} | {_show_ratio(to_oracle)} |"
-            f" {median([r['relevance']['first_kept'] for r in mine]):.0f} |"
-            f" {median([r['oracle']['first_kept'] for r in mine]):.0f} |"
-            f" {median([r['relevance']['attempts'] for r in mine]):.0f} | {failures} |"
+            f" {show_ratio(*speedup)} | {'>' if oracle_low else ''}{oracle_t:.2f} | {show_ratio(*to_oracle)} |"
+            f" {median(r['relevance'].first_kept for r in mine):.0f} |"
+            f" {median(r['oracle'].first_kept for r in mine):.0f} |"
+            f" {median(r['relevance'].attempts for r in mine):.0f} | {failures} |"
         )
-    invalid = [f"{r['problem']} ({m})" for r in rows for m in METHODS if r[m]["solved"] and not r[m]["valid"]]
-    failed = [f"{r['problem']} ({r['relevance']['status']})" for r in rows if not r["relevance"]["solved"]]
+    invalid = [f"{r['problem']} ({m})" for r in rows for m in METHODS if r[m].solved and not r[m].valid]
+    failed = [f"{r['problem']} ({r['relevance'].status})" for r in rows if not r["relevance"].solved]
     slower = [
-        f"{r['problem']} ({r['relevance']['time']:.1f} s vs {r['pure']['time']:.1f} s)"
+        f"{r['problem']} ({r['relevance'].time:.1f} s vs {r['pure'].time:.1f} s)"
         for r in rows
-        if r["pure"]["solved"] and r["relevance"]["time"] > r["pure"]["time"]
+        if r["pure"].solved and r["relevance"].time > r["pure"].time
     ]
     print()
-    scene = geomean(scene_ratios)
-    bound = " (a lower bound: some pure run timed out)" if any(r["pure"]["timed_out"] for r in rows) else ""
+    bound = " (a lower bound: some pure run timed out)" if any(r["pure"].timed_out for r in rows) else ""
     print(
-        f"geometric mean pure/relevance over {len(scene_ratios)} scene-graph cell(s): {_times(scene)}{bound}"
-        f" (target >= {SPEEDUP_TARGET:g}x)"
+        f"geometric mean pure/relevance over {len(scene_ratios)} scene-graph cell(s):"
+        f" {show_ratio(geometric_mean(scene_ratios))}{bound} (target >= {SPEEDUP_TARGET:g}x)"
     )
-    print(f"geometric mean pure/relevance over all {len(all_ratios)} cell(s): {_times(geomean(all_ratios))}")
+    print(f"geometric mean pure/relevance over all {len(all_ratios)} cell(s): {show_ratio(geometric_mean(all_ratios))}")
     print(f"relevance <= {ORACLE_TARGET:g}x the oracle in every cell: {_missed(over_oracle)}")
     print(f"every plan valid on the original: {_missed(invalid)}")
     print(f"no relevance failure: {_missed(failed)}")
@@ -314,7 +290,7 @@ def time_pruning(args: argparse.Namespace, scratch: Path) -> list[dict]:
             runs = []
             for attempt in range(1, 4):
                 runs.append(prune_stages(domain_path, problem_path, out))
-                _progress(f"pruning {world} at {size}: run {attempt}/3 {runs[-1]['total']:.2f} s")
+                progress(f"pruning {world} at {size}: run {attempt}/3 {runs[-1]['total']:.2f} s")
             times = {stage: statistics.median(r[stage] for r in runs) for stage in STAGES}
             target = PRUNE_TARGETS.get(size)
             row = {"world": world, "size": size, "objects": runs[0]["objects"], "kept": runs[0]["kept"], **times}
@@ -343,8 +319,10 @@ def main(argv: list[str] | None = None) -> int:
     with tempfile.TemporaryDirectory(prefix="bench-scale-") as folder:
         scratch = Path(folder)
         if not args.prune_only:
-            raw["planning"] = plan_all(args, scratch)
-            summarise_planning(raw["planning"])
+            with Store(args.store, "bench_scale") as store:
+                rows = plan_all(args, scratch, store)
+            summarise_planning(rows)
+            raw["planning"] = [{key: asdict(v) if key in METHODS else v for key, v in r.items()} for r in rows]
         if not args.no_prune_timing:
             if not args.prune_only:
                 print()
@@ -357,7 +335,7 @@ def main(argv: list[str] | None = None) -> int:
 
 def _median_time(rows: list[dict], method: str) -> tuple[float, bool]:
     """The median wall time of ``method``, and whether it is a lower bound (some run hit the time limit)."""
-    return median([r[method]["time"] for r in rows]), any(r[method]["timed_out"] for r in rows)
+    return median(r[method].time for r in rows), any(r[method].timed_out for r in rows)
 
 
 def _ratio(top: float, top_low: bool, bottom: float, bottom_low: bool) -> tuple[float | None, str]:
@@ -366,34 +344,14 @@ def _ratio(top: float, top_low: bool, bottom: float, bottom_low: bool) -> tuple[
     return (top / bottom if bottom else None), (">" if top_low else "<" if bottom_low else "")
 
 
-def _show_ratio(ratio: tuple[float | None, str]) -> str:
-    value, bound = ratio
-    return "–" if value is None else f"{bound}{value:.1f}x"
-
-
-def _progress(message: str) -> None:
-    """A note on standard error while a long cell runs (the tables stay on standard output)."""
-    print(f"  ... {message}", file=sys.stderr, flush=True)
-
-
 def _missed(misses: list[str]) -> str:
     return f"missed by {', '.join(misses)}" if misses else "met"
 
 
-def _times(value: float | None) -> str:
-    return "–" if value is None else f"{value:.1f}x"
-
-
-def _kept(result: dict) -> str:
-    if result["first_kept"] == result["kept"]:
-        return f"{result['kept']}/{result['total']}"
-    return f"{result['first_kept']}->{result['kept']}/{result['total']}"
-
-
-def _time(result: dict, timeout: float) -> str:
-    if result["timed_out"]:
-        return f">{timeout:g}"
-    return f"{result['time']:.2f}" if result["solved"] else f"{result['status']} ({result['time']:.0f})"
+def _kept(run: Measured) -> str:
+    if run.first_kept == run.kept:
+        return f"{run.kept}/{run.total}"
+    return f"{run.first_kept}->{run.kept}/{run.total}"
 
 
 if __name__ == "__main__":
