@@ -174,6 +174,11 @@ def measure(result: PlanResult) -> Measured:
     )
 
 
+def median_run(runs: Sequence[PlanResult]) -> PlanResult:
+    """Of repeated runs, the one of median wall time (the lower of the middle two for an even count)."""
+    return sorted(runs, key=lambda run: run.wall_time)[(len(runs) - 1) // 2]
+
+
 def show_time(run: Measured | None, timeout: float | None = None) -> str:
     """A run's seconds; ">T" when it hit ``timeout`` (given), else its status and seconds when unsolved."""
     if run is None:

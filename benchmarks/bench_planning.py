@@ -27,7 +27,7 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from base import Store, add_store_option, median, ratio
+from base import Store, add_store_option, median, median_run, ratio
 
 from relevance_plan.generators.generate import generate_suite
 from relevance_plan.planning.loop import PlanOptions, plan_task
@@ -51,11 +51,6 @@ class Cell:
         self.times.setdefault(method, []).append(statistics.median(r.wall_time for r in runs) if ok else timeout)
         self.kept.setdefault(method, []).append(runs[-1].objects_kept)
         self.objects = runs[-1].objects_total
-
-
-def median_run(runs: list[PlanResult]) -> PlanResult:
-    """The run of median wall time (the lower one of the middle two for an even count)."""
-    return sorted(runs, key=lambda r: r.wall_time)[(len(runs) - 1) // 2]
 
 
 def run_cell(world: str, size: int, args: argparse.Namespace, scratch: Path, store: Store) -> Cell:
