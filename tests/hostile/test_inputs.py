@@ -1,4 +1,4 @@
-"""Hostile inputs in bulk, run through every command.
+"""Hostile inputs in bulk, run through every command in this process (click's runner).
 
 Each case must end with an exit code from the documented table, no
 traceback, one stderr line when it fails, and every file the user owns
@@ -16,6 +16,7 @@ import pytest
 from click.testing import CliRunner
 from support import COFFEE_DOMAIN, COFFEE_MODEL, alias_bomb, coffee_problem, goal_of, replace_goal, write_file
 
+from hostile.harness import fingerprint
 from relevance_plan.cli import main
 from relevance_plan.exitcodes import ExitCode
 
@@ -119,20 +120,6 @@ def hostile_stores() -> dict[str, bytes]:
 # --------------------------------------------------------------------------- checking one run
 
 
-def snapshot(root: Path) -> dict:
-    """Bytes, mode and kind of every file under ``root`` (links not followed)."""
-    found = {}
-    for path in sorted(root.rglob("*")):
-        info = path.lstat()
-        if stat.S_ISREG(info.st_mode):
-            found[path] = ("file", stat.S_IMODE(info.st_mode), path.read_bytes())
-        elif stat.S_ISLNK(info.st_mode):
-            found[path] = ("link", os.readlink(path))
-        else:
-            found[path] = ("other", stat.S_IFMT(info.st_mode), stat.S_IMODE(info.st_mode))
-    return found
-
-
 class Checker:
     def __init__(self, user: Path):
         self.user = user
@@ -140,7 +127,7 @@ class Checker:
         self.codes: list = []
 
     def __call__(self, *args, allowed: set | None = None):
-        before = snapshot(self.user)
+        before = fingerprint(self.user)
         result = self.runner.invoke(main, [str(a) for a in args])
         where = " ".join(str(a)[:80] for a in args)
         if result.exception is not None and not isinstance(result.exception, SystemExit):
@@ -154,7 +141,7 @@ class Checker:
             assert len(lines[0]) < 2000, f"{where}: a {len(lines[0])}-character line"
         if allowed is not None:
             assert code in allowed, f"{where}: exit code {code}, expected one of {sorted(allowed)}: {result.stderr}"
-        assert snapshot(self.user) == before, f"{where}: a user file changed"
+        assert fingerprint(self.user) == before, f"{where}: a user file changed"
         self.codes.append(code)
         return code
 
@@ -172,6 +159,16 @@ def workspace(tmp_path):
     model = user / "model.yaml"
     model.write_bytes(COFFEE_MODEL.read_bytes())
     return Checker(user), user, out, domain, problem, model
+
+
+def user_suite(user: Path, domain: Path, problem: Path | None = None) -> Path:
+    """The user's folder ``suite``: the domain, and a copy of ``problem`` as ``p.pddl`` when given."""
+    suite = user / "suite"
+    suite.mkdir()
+    (suite / "domain.pddl").write_bytes(domain.read_bytes())
+    if problem is not None:
+        (suite / "p.pddl").write_bytes(problem.read_bytes())
+    return suite
 
 
 # --------------------------------------------------------------------------- the runs
@@ -212,9 +209,7 @@ def test_hostile_models(workspace):
 @pytest.mark.planner
 def test_hostile_suites_through_sweep_compare_and_report(workspace):
     check, user, out, domain, problem, _ = workspace
-    suite = user / "suite"
-    suite.mkdir()
-    (suite / "domain.pddl").write_bytes(domain.read_bytes())
+    suite = user_suite(user, domain)
     problems = hostile_problems()
     for name in ("deep-and", "binary", "bom", "non-ascii-name", "empty", "huge-object-name"):
         write_file(suite, f"{name}.pddl", problems[name])
@@ -232,30 +227,30 @@ def test_hostile_suites_through_sweep_compare_and_report(workspace):
             check("compare", suite, "--methods", "pure", "--store", path, "-q", allowed={ExitCode.STORE})
 
 
+NUMBERS = [
+    ("--timeout", "inf"),
+    ("--timeout", "-inf"),
+    ("--timeout", "nan"),
+    ("--timeout", "0"),
+    ("--timeout", "1e308"),
+    ("--timeout", "1e12"),
+    ("--memory-limit", "0"),
+    ("--memory-limit", "-1"),
+    ("--memory-limit", str(10**15)),
+    ("--tau-class", "nan"),
+    ("--tau-class", "inf"),
+    ("--tau-element", "-0.5"),
+    ("--tau-element", "1e308"),
+]
+
+
 @pytest.mark.planner
-def test_hostile_numbers(workspace):
+def test_hostile_numbers_for_plan_compare_score_and_sweep(workspace):
     check, user, out, domain, problem, _ = workspace
-    suite = user / "suite"
-    suite.mkdir()
-    (suite / "domain.pddl").write_bytes(domain.read_bytes())
-    (suite / "p.pddl").write_bytes(problem.read_bytes())
+    suite = user_suite(user, domain, problem)
     plan = ["plan", domain, problem, "-q", "--plan-file", out / "plan"]
     compare = ["compare", suite, "--store", out / "s.sqlite", "-q"]
-    for option, value in [
-        ("--timeout", "inf"),
-        ("--timeout", "-inf"),
-        ("--timeout", "nan"),
-        ("--timeout", "0"),
-        ("--timeout", "1e308"),
-        ("--timeout", "1e12"),
-        ("--memory-limit", "0"),
-        ("--memory-limit", "-1"),
-        ("--memory-limit", str(10**15)),
-        ("--tau-class", "nan"),
-        ("--tau-class", "inf"),
-        ("--tau-element", "-0.5"),
-        ("--tau-element", "1e308"),
-    ]:
+    for option, value in NUMBERS:
         check(*plan, option, value, allowed={ExitCode.USAGE})
         check(*compare, option, value, allowed={ExitCode.USAGE})
     for value in ("0", "-1", str(10**6)):
@@ -265,6 +260,10 @@ def test_hostile_numbers(workspace):
     check("score", domain, problem, "--seed", str(10**40), "--scorer", "random", allowed={0})
     for value in ("nan", "inf", "", "0.1,,x", "-1", "1e400"):
         check("sweep", suite, "--taus", value, allowed={ExitCode.USAGE, ExitCode.INPUT_FILE})
+
+
+def test_hostile_numbers_for_generate_and_demo(workspace):
+    check, _, out, _, _, _ = workspace
     for args in (
         ["--count", "0"],
         ["--count", str(10**12)],
@@ -286,18 +285,14 @@ def test_hostile_numbers(workspace):
         check("demo", "--workdir", out / "demo", *args, allowed={ExitCode.USAGE})
         assert not (out / "demo").exists()
     check("generate", "tea\x00pot", "--out", out / "tea", allowed={ExitCode.USAGE})
-    check(
-        "plan",
-        domain,
-        problem,
-        "-q",
-        "--planner-config",
-        "no-such-alias",
-        "--plan-file",
-        out / "p",
-        allowed={ExitCode.USAGE},
-    )
-    check("plan", domain, problem, "-q", "--planner-config", "   ", "--plan-file", out / "p", allowed={ExitCode.USAGE})
+
+
+@pytest.mark.planner
+def test_hostile_planner_names_and_configurations(workspace):
+    check, _, out, domain, problem, _ = workspace
+    plan = ["plan", domain, problem, "-q", "--plan-file", out / "p"]
+    check(*plan, "--planner-config", "no-such-alias", allowed={ExitCode.USAGE})
+    check(*plan, "--planner-config", "   ", allowed={ExitCode.USAGE})
     for planner in (
         "cmd:",
         "up:no-such-engine",
@@ -306,27 +301,14 @@ def test_hostile_numbers(workspace):
         "cmd:echo {nosuch}",
         "cmd:/no/such/planner {domain} {problem}",
     ):
-        check(
-            "plan",
-            domain,
-            problem,
-            "-q",
-            "--planner",
-            planner,
-            "--plan-file",
-            out / "p",
-            allowed={ExitCode.USAGE, ExitCode.PLANNER},
-        )
+        check(*plan, "--planner", planner, allowed={ExitCode.USAGE, ExitCode.PLANNER})
     check("exit-codes", allowed={0})
     check("--help", allowed={0})
 
 
 def test_self_overwrites_and_odd_targets(workspace):
     check, user, out, domain, problem, model = workspace
-    suite = user / "suite"
-    suite.mkdir()
-    (suite / "domain.pddl").write_bytes(domain.read_bytes())
-    (suite / "p.pddl").write_bytes(problem.read_bytes())
+    suite = user_suite(user, domain, problem)
     link = user / "link-to-problem"
     link.symlink_to(problem)
     readonly = user / "readonly.plan"
