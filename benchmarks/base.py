@@ -18,7 +18,8 @@ script's own folder is on the path, so ``import base`` needs no set-up).
   so ``relevance-plan report STORE`` (``--html``, ``--plots DIR``) shows a
   benchmark's comparison of methods; ``add_store_option`` gives a script its
   ``--store FILE`` option;
-- ratios: ``ratio`` and ``show_ratio`` print "12.3x", "–" for no value.
+- tables: ``ratio`` and ``show_ratio`` print "12.3x", "–" for no value;
+  ``table_header`` and ``table_row`` print a markdown table row by row.
 """
 
 from __future__ import annotations
@@ -91,6 +92,17 @@ def show_ratio(value: float | None, bound: str = "", digits: int = 1) -> str:
     if value is None or math.isnan(value):
         return MISSING
     return f"{bound}{value:.{digits}f}x"
+
+
+def table_header(columns: str) -> None:
+    """The head of a markdown table: its columns ("a | b | c") and the line under them."""
+    print(f"| {columns} |")
+    print("|" + "---|" * len(columns.split(" | ")))
+
+
+def table_row(*cells: object) -> None:
+    """One row of a markdown table, printed at once (a long run shows each row as it finishes)."""
+    print("| " + " | ".join(str(cell) for cell in cells) + " |", flush=True)
 
 
 # --------------------------------------------------------------------------- timing
@@ -179,6 +191,18 @@ def median_run(runs: Sequence[PlanResult]) -> PlanResult:
     return sorted(runs, key=lambda run: run.wall_time)[(len(runs) - 1) // 2]
 
 
+def speedup(pure: Measured, relevance: Measured, validated: bool = False) -> str:
+    """pure / relevance as "12.3x"; ">12.3x" when pure found no plan (a lower bound), "–" when relevance found
+    none (``validated``: only a valid plan counts as found)."""
+
+    def found(run: Measured) -> bool:
+        return run.solved and (run.valid or not validated)
+
+    if not found(relevance):
+        return MISSING
+    return f"{'' if found(pure) else '>'}{pure.time / relevance.time:.1f}x"
+
+
 def show_time(run: Measured | None, timeout: float | None = None) -> str:
     """A run's seconds; ">T" when it hit ``timeout`` (given), else its status and seconds when unsolved."""
     if run is None:
@@ -241,6 +265,12 @@ class Store:
 
     def __exit__(self, *error: object) -> None:
         self.close()
+
+
+def add_worlds_option(
+    parser: argparse.ArgumentParser, worlds: Sequence[str], default: Sequence[str], help: str
+) -> None:
+    parser.add_argument("--worlds", nargs="+", default=list(default), choices=list(worlds), metavar="WORLD", help=help)
 
 
 def add_store_option(parser: argparse.ArgumentParser) -> None:

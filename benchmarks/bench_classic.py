@@ -32,7 +32,18 @@ import tempfile
 from dataclasses import asdict
 from pathlib import Path
 
-from base import DOMAINS, Store, add_store_option, geometric_mean, median, run_method, show_time
+from base import (
+    DOMAINS,
+    Store,
+    add_store_option,
+    add_worlds_option,
+    geometric_mean,
+    median,
+    run_method,
+    show_time,
+    table_header,
+    table_row,
+)
 
 from relevance_plan.generators.classic import BUILDERS, generate_classic_problem
 from relevance_plan.planning.loop import PlanOptions
@@ -43,14 +54,7 @@ METHODS = ("pure", "relevance", "oracle")
 
 def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument(
-        "--worlds",
-        nargs="*",
-        default=list(BUILDERS),
-        choices=list(BUILDERS),
-        metavar="WORLD",
-        help=f"classic worlds to run (default: all of {', '.join(BUILDERS)})",
-    )
+    add_worlds_option(parser, BUILDERS, BUILDERS, f"classic worlds to run (default: all of {', '.join(BUILDERS)})")
     parser.add_argument("--typed", action="store_true", help="use the typed variants")
     parser.add_argument("--unpadded", action="store_true", help="every movable object in the goal, small sizes")
     parser.add_argument("--count", type=int, default=1, help="problems per world (default: 1)")
@@ -69,8 +73,7 @@ def plan_all(args: argparse.Namespace, scratch: Path, store: Store) -> list[dict
         f"lama-first, timeout {args.timeout:g} s, seed {args.seed}, {args.count} problem(s) per world"
         f"{', typed' if args.typed else ', untyped'}{', unpadded' if args.unpadded else ''}; relevance = goal scorer"
     )
-    print("| problem | objects | pure (s) | relevance (s) | kept | attempts | oracle (s) | valid |")
-    print("|---|---|---|---|---|---|---|---|")
+    table_header("problem | objects | pure (s) | relevance (s) | kept | attempts | oracle (s) | valid")
     for base in args.worlds:
         world = f"{base}-typed" if args.typed else base
         domain_path = DOMAINS / world / "domain.pddl"
@@ -90,21 +93,25 @@ def plan_all(args: argparse.Namespace, scratch: Path, store: Store) -> list[dict
             rows.append(row)
             pure, rel, oracle = row["pure"], row["relevance"], row["oracle"]
             valid = all(r.valid for r in (pure, rel, oracle) if r is not None and r.solved)
-            print(
-                f"| {problem.name} | {row['objects']} | {show_time(pure)} | {show_time(rel)} |"
-                f" {rel.kept} | {rel.attempts} | {show_time(oracle)} | {valid} |",
-                flush=True,
+            table_row(
+                problem.name,
+                row["objects"],
+                show_time(pure),
+                show_time(rel),
+                rel.kept,
+                rel.attempts,
+                show_time(oracle),
+                valid,
             )
     return rows
 
 
 def summarise(rows: list[dict]) -> None:
     print()
-    print(
-        "| domain | problems | objects | pure median (s) | relevance median (s) | pure/relevance |"
-        " kept median | attempts median | oracle median (s) | failures |"
+    table_header(
+        "domain | problems | objects | pure median (s) | relevance median (s) | "
+        "pure/relevance | kept median | attempts median | oracle median (s) | failures"
     )
-    print("|---|---|---|---|---|---|---|---|---|---|")
     ratios = []
     for world in dict.fromkeys(r["world"] for r in rows):
         mine = [r for r in rows if r["world"] == world]
@@ -116,12 +123,17 @@ def summarise(rows: list[dict]) -> None:
         failures = sum(not r["relevance"].solved or not r["relevance"].valid for r in mine)
         if ratio:
             ratios.append(ratio)
-        print(
-            f"| {world} | {len(mine)} | {median(r['objects'] for r in mine):.0f} |"
-            f" {pure_t:.2f}{' (timeouts)' if unsolved_pure else ''} | {rel_t:.2f} |"
-            f" {'>' if unsolved_pure else ''}{ratio:.1f}x | {median(r['relevance'].kept for r in mine):.0f} |"
-            f" {median(r['relevance'].attempts for r in mine):.0f} |"
-            f" {f'{oracle_t:.2f}' if oracle_t is not None else '–'} | {failures} |"
+        table_row(
+            world,
+            len(mine),
+            f"{median(r['objects'] for r in mine):.0f}",
+            f"{pure_t:.2f}{' (timeouts)' if unsolved_pure else ''}",
+            f"{rel_t:.2f}",
+            f"{'>' if unsolved_pure else ''}{ratio:.1f}x",
+            f"{median(r['relevance'].kept for r in mine):.0f}",
+            f"{median(r['relevance'].attempts for r in mine):.0f}",
+            f"{oracle_t:.2f}" if oracle_t is not None else "–",
+            failures,
         )
     slower = [r["problem"] for r in rows if r["relevance"].time > 1.25 * r["pure"].time + 1.0]
     within = [r["problem"] for r in rows if r["relevance"].time > 1.1 * r["pure"].time + 0.5]

@@ -22,7 +22,7 @@ import argparse
 import tempfile
 from pathlib import Path
 
-from base import Store, add_store_option, run_method
+from base import Store, add_store_option, run_method, show_time, speedup, table_header, table_row
 
 from relevance_plan.generators.padded import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
 from relevance_plan.planning.loop import PlanOptions
@@ -43,8 +43,7 @@ def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
 def main(argv: list[str] | None = None) -> int:
     args = parse_args(argv)
     print(f"timeout {args.timeout:g} s, lama-first; relevance = goal scorer (no knowledge model)")
-    print("| domain | extra objects | pure (s) | relevance (s) | pure/relevance | kept | plan valid |")
-    print("|---|---|---|---|---|---|---|")
+    table_header("domain | extra objects | pure (s) | relevance (s) | pure/relevance | kept | plan valid")
     with tempfile.TemporaryDirectory(prefix="bench-domains-") as scratch, Store(args.store, "bench_domains") as store:
         for name, domain_text, make, sizes in CASES:
             domain_path = Path(scratch) / f"{name}-domain.pddl"
@@ -59,15 +58,8 @@ def main(argv: list[str] | None = None) -> int:
                     )[1]
                     for method in ("pure", "relevance")
                 )
-                shown_pure = f"{pure.time:.2f}" if pure.solved else f"{pure.status} ({pure.time:.0f})"
-                ratio = f"{pure.time / relevance.time:.1f}x" if relevance.solved else "–"
-                if not pure.solved and relevance.solved:
-                    ratio = ">" + ratio
-                print(
-                    f"| {name} | {size} | {shown_pure} | {relevance.time:.2f} | {ratio} |"
-                    f" {relevance.kept}/{relevance.total} | {relevance.valid} |",
-                    flush=True,
-                )
+                shown = (show_time(pure), f"{relevance.time:.2f}", speedup(pure, relevance))
+                table_row(name, size, *shown, f"{relevance.kept}/{relevance.total}", relevance.valid)
     return 0
 
 

@@ -25,7 +25,7 @@ import argparse
 import tempfile
 from pathlib import Path
 
-from base import Measured, Store, add_store_option, run_method
+from base import Measured, Store, add_store_option, run_method, speedup, table_header, table_row
 
 from relevance_plan.generators.generate import generate_suite
 from relevance_plan.generators.padded import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
@@ -75,8 +75,7 @@ def main(argv: list[str] | None = None) -> int:
     for name in planners:
         make_planner(name, check=True)
     print(f"timeout {args.timeout:g} s per run; relevance = knowledge model (coffee) or goal scorer (classic)")
-    print("| planner | problem | objects | pure (s) | relevance (s) | pure/relevance | kept | attempts |")
-    print("|---|---|---|---|---|---|---|---|")
+    table_header("planner | problem | objects | pure (s) | relevance (s) | pure/relevance | kept | attempts")
     with tempfile.TemporaryDirectory(prefix="bench-planners-") as scratch, Store(args.store, "bench_planners") as store:
         cases = problems(Path(scratch))
         for planner in planners:
@@ -87,13 +86,9 @@ def main(argv: list[str] | None = None) -> int:
                     )[1]
                     for method in ("pure", "relevance")
                 )
-                both = all(run.solved and run.valid for run in (pure, relevance))
-                ratio = f"{pure.time / relevance.time:.1f}x"
-                ratio = ratio if both else (f">{ratio}" if relevance.valid else "–")
-                print(
-                    f"| {planner} | {label} | {relevance.total} | {seconds(pure)} | {seconds(relevance)}"
-                    f" | {ratio} | {relevance.kept}/{relevance.total} | {relevance.attempts} |",
-                    flush=True,
+                shown = (seconds(pure), seconds(relevance), speedup(pure, relevance, validated=True))
+                table_row(
+                    planner, label, relevance.total, *shown, f"{relevance.kept}/{relevance.total}", relevance.attempts
                 )
     return 0
 

@@ -69,12 +69,15 @@ from base import (
     Measured,
     Store,
     add_store_option,
+    add_worlds_option,
     geometric_mean,
     median,
     progress,
     run_method,
     show_ratio,
     show_time,
+    table_header,
+    table_row,
 )
 
 from relevance_plan.generators.sized import CLASSIC_WORLDS, generate_sized_problem
@@ -135,13 +138,11 @@ def _prune_stages(domain_path: Path, problem_path: Path, out: Path) -> dict:
 
 def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument(
-        "--worlds",
-        nargs="+",
-        default=list(DEFAULT_WORLDS),
-        choices=list(SIZES),
-        metavar="WORLD",
-        help=f"worlds to run (default: {', '.join(DEFAULT_WORLDS)}; also: the -typed many-goal forms)",
+    add_worlds_option(
+        parser,
+        SIZES,
+        DEFAULT_WORLDS,
+        f"worlds to run (default: {', '.join(DEFAULT_WORLDS)}; also: the -typed many-goal forms)",
     )
     parser.add_argument(
         "--sizes", nargs="+", type=int, default=None, metavar="N", help="planning sizes for every world chosen"
@@ -200,11 +201,10 @@ def plan_all(args: argparse.Namespace, scratch: Path, store: Store) -> list[dict
         f"## Planning: lama-first, timeout {args.timeout:g} s per run, seed {args.seed},"
         f" {args.count} problem(s) per cell, no race; relevance = goal scorer"
     )
-    print(
-        "| # | problem | objects | pure (s) | relevance (s) | of which pruning (s) | kept | attempts |"
-        " oracle (s) | oracle kept | valid |"
+    table_header(
+        "# | problem | objects | pure (s) | relevance (s) | "
+        "of which pruning (s) | kept | attempts | oracle (s) | oracle kept | valid"
     )
-    print("|---|---|---|---|---|---|---|---|---|---|---|")
     for world, size in cells:
         for index in range(1, args.count + 1):
             domain_path, problem_path, sidecar = write_problem(world, args.seed, index, size, scratch)
@@ -216,23 +216,28 @@ def plan_all(args: argparse.Namespace, scratch: Path, store: Store) -> list[dict
             rows.append(row)
             rel, oracle = row["relevance"], row["oracle"]
             valid = all(row[m].valid for m in METHODS if row[m].solved)
-            print(
-                f"| {len(rows)}/{runs} | {row['problem']} | {row['objects']} | {show_time(row['pure'], args.timeout)} |"
-                f" {show_time(rel, args.timeout)} | {rel.relevance_time:.2f} | {_kept(rel)} | {rel.attempts} |"
-                f" {show_time(oracle, args.timeout)} |"
-                f" {oracle.first_kept} | {'yes' if valid else 'NO'} |",
-                flush=True,
+            table_row(
+                f"{len(rows)}/{runs}",
+                row["problem"],
+                row["objects"],
+                show_time(row["pure"], args.timeout),
+                show_time(rel, args.timeout),
+                f"{rel.relevance_time:.2f}",
+                _kept(rel),
+                rel.attempts,
+                show_time(oracle, args.timeout),
+                oracle.first_kept,
+                "yes" if valid else "NO",
             )
     return rows
 
 
 def summarise_planning(rows: list[dict]) -> None:
     print()
-    print(
-        "| world | size | objects | problems | pure median (s) | relevance median (s) | pure/relevance |"
-        " oracle median (s) | relevance/oracle | kept median | oracle kept | attempts median | failures |"
+    table_header(
+        "world | size | objects | problems | pure median (s) | relevance median (s) | "
+        "pure/relevance | oracle median (s) | relevance/oracle | kept median | oracle kept | attempts median | failures"
     )
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     scene_ratios, all_ratios, over_oracle = [], [], []
     for world, size in dict.fromkeys((r["world"], r["size"]) for r in rows):
         mine = [r for r in rows if (r["world"], r["size"]) == (world, size)]
@@ -249,13 +254,20 @@ def summarise_planning(rows: list[dict]) -> None:
         if to_oracle[0] is None or to_oracle[0] > ORACLE_TARGET:
             over_oracle.append(f"{world} {size} ({show_ratio(*to_oracle)})")
         failures = sum(not r["relevance"].solved or not r["relevance"].valid for r in mine)
-        print(
-            f"| {world} | {size} | {median(r['objects'] for r in mine):.0f} | {len(mine)} |"
-            f" {'>' if pure_low else ''}{pure_t:.2f} | {'>' if rel_low else ''}{rel_t:.2f} |"
-            f" {show_ratio(*speedup)} | {'>' if oracle_low else ''}{oracle_t:.2f} | {show_ratio(*to_oracle)} |"
-            f" {median(r['relevance'].first_kept for r in mine):.0f} |"
-            f" {median(r['oracle'].first_kept for r in mine):.0f} |"
-            f" {median(r['relevance'].attempts for r in mine):.0f} | {failures} |"
+        table_row(
+            world,
+            size,
+            f"{median(r['objects'] for r in mine):.0f}",
+            len(mine),
+            f"{'>' if pure_low else ''}{pure_t:.2f}",
+            f"{'>' if rel_low else ''}{rel_t:.2f}",
+            show_ratio(*speedup),
+            f"{'>' if oracle_low else ''}{oracle_t:.2f}",
+            show_ratio(*to_oracle),
+            f"{median(r['relevance'].first_kept for r in mine):.0f}",
+            f"{median(r['oracle'].first_kept for r in mine):.0f}",
+            f"{median(r['relevance'].attempts for r in mine):.0f}",
+            failures,
         )
     invalid = [f"{r['problem']} ({m})" for r in rows for m in METHODS if r[m].solved and not r[m].valid]
     failed = [f"{r['problem']} ({r['relevance'].status})" for r in rows if not r["relevance"].solved]
@@ -280,8 +292,7 @@ def summarise_planning(rows: list[dict]) -> None:
 def time_pruning(args: argparse.Namespace, scratch: Path) -> list[dict]:
     sizes = args.prune_sizes or (list(PRUNE_TARGETS)[:1] if args.quick else list(PRUNE_TARGETS))
     print("## Pruning time in-process: read + score + select (closure, repair) + write, median of 3, no planner")
-    print("| world | size | objects | read | score | select | write | total (s) | target (s) | kept | within |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    table_header("world | size | objects | read | score | select | write | total (s) | target (s) | kept | within")
     rows = []
     out = scratch / "pruned.pddl"
     for world in args.prune_worlds or args.worlds:
@@ -296,11 +307,14 @@ def time_pruning(args: argparse.Namespace, scratch: Path) -> list[dict]:
             row = {"world": world, "size": size, "objects": runs[0]["objects"], "kept": runs[0]["kept"], **times}
             rows.append(row)
             within = "–" if target is None else "yes" if times["total"] <= target else "NO"
-            print(
-                f"| {world} | {size} | {row['objects']} | {times['read']:.3f} | {times['score']:.3f} |"
-                f" {times['select']:.3f} | {times['write']:.3f} | {times['total']:.3f} |"
-                f" {'–' if target is None else f'{target:g}'} | {row['kept']} | {within} |",
-                flush=True,
+            table_row(
+                world,
+                size,
+                row["objects"],
+                *(f"{times[stage]:.3f}" for stage in STAGES),
+                "–" if target is None else f"{target:g}",
+                row["kept"],
+                within,
             )
     over = [
         f"{r['world']} {r['size']} ({r['total']:.2f} s)"

@@ -11,10 +11,9 @@ import time
 from collections.abc import Callable
 from pathlib import Path
 
-from support import REPO, TOOL, make_row
+from support import REPO, TOOL, make_row, write_store
 
 from hostile.scenario import Result
-from relevance_plan.batch.store import ResultStore
 
 
 def write(work: Path, name: str, data: str | bytes, mode: int | None = None) -> Path:
@@ -245,8 +244,10 @@ def suite(work: Path, problems: int = 1) -> None:
         shutil.copy(work / "P.pddl", work / "suite" / f"p{number:02d}.pddl")
 
 
+METHODS_AND_TIMES = (("relevance", 1.5), ("pure", 4.0))
+
+
 def store(work: Path, name: str = "s.sqlite") -> None:
     """A results store with a relevance and a pure row, made with the tool's own store module."""
-    with ResultStore(work / name) as results:
-        results.add(make_row("suite", "p01", "relevance", wall=1.5, relevance=0.1, kept=8))
-        results.add(make_row("suite", "p01", "pure", wall=4.0, relevance=0.1, kept=8))
+    rows = [make_row("suite", "p01", method, wall=wall, relevance=0.1, kept=8) for method, wall in METHODS_AND_TIMES]
+    write_store(work / name, rows)
