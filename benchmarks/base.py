@@ -26,7 +26,6 @@ from __future__ import annotations
 
 import argparse
 import math
-import os
 import statistics
 import subprocess
 import sys
@@ -236,8 +235,7 @@ class Store:
 
     def __init__(self, path: Path | None, script: str):
         if path is None:
-            OUT.mkdir(exist_ok=True)
-            path = OUT / f"{script}-{time.strftime('%Y%m%d-%H%M%S')}-{os.getpid()}.sqlite"
+            path = new_store_path(script)
         self.path = path
         self.stored = 0
         self._store = ResultStore(path)
@@ -265,6 +263,17 @@ class Store:
 
     def __exit__(self, *error: object) -> None:
         self.close()
+
+
+def new_store_path(script: str) -> Path:
+    """``out/SCRIPT-DATE-TIME.sqlite`` (``-2``, ``-3``, ... when that file is there already)."""
+    OUT.mkdir(exist_ok=True)
+    stamp = time.strftime("%Y%m%d-%H%M%S")
+    path, number = OUT / f"{script}-{stamp}.sqlite", 1
+    while path.exists():
+        number += 1
+        path = OUT / f"{script}-{stamp}-{number}.sqlite"
+    return path
 
 
 def add_worlds_option(
