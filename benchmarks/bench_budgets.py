@@ -27,44 +27,36 @@ from __future__ import annotations
 
 import argparse
 import json
-import subprocess
 import sys
 import tempfile
-import time
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(ROOT))
+import corpus
+from base import REPO, run_timed
 
-from relevance_plan.generators.padded import padded_driverlog  # noqa: E402
+from relevance_plan.generators.padded import padded_driverlog
 
-FOLDER = ROOT / "benchmarks" / "corpus" / "potassco" / "ipc-2002" / "driverlog-time-automatic"
+FOLDER = corpus.corpus_root() / "potassco" / "ipc-2002" / "driverlog-time-automatic"
 DOMAIN = FOLDER / "domain.pddl"
 PROBLEM = FOLDER / "instances" / "instance-3.pddl"
-
-
-def timed(command: list[str]) -> tuple[float, str]:
-    started = time.perf_counter()
-    done = subprocess.run(command, capture_output=True, text=True, cwd=ROOT)
-    return time.perf_counter() - started, done.stdout
 
 
 def engine_alone(engine: str, problem: Path, folder: Path, timeout: float) -> tuple[float, str]:
     command = [sys.executable, "-m", "relevance_plan.planning.planners.up.child", engine, str(DOMAIN)]
     command += [str(problem), str(folder / "plan"), str(folder / "verdict"), f"{timeout:g}"]
-    seconds, _ = timed(command)
+    run = run_timed(command, cwd=REPO)
     verdict = (folder / "verdict").read_text().strip() if (folder / "verdict").exists() else "none"
-    return seconds, verdict
+    return run.seconds, verdict
 
 
 def tool(problem: Path, planner: str, extra: list[str], folder: Path, timeout: float) -> tuple[float, dict]:
     command = [sys.executable, "-m", "relevance_plan", "plan", str(DOMAIN), str(problem), "--planner", planner]
     command += ["--timeout", f"{timeout:g}", "--json", "--plan-file", str(folder / "sas_plan"), *extra]
-    seconds, out = timed(command)
+    run = run_timed(command, cwd=REPO)
     try:
-        return seconds, json.loads(out)
+        return run.seconds, json.loads(run.stdout)
     except ValueError:
-        return seconds, {"status": "no-json", "attempt_log": []}
+        return run.seconds, {"status": "no-json", "attempt_log": []}
 
 
 def describe(result: dict) -> str:

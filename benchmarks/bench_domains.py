@@ -5,7 +5,9 @@ Blocksworld with extra towers and blocks stacked on the goal's blocks (100,
 in one run.  The relevance method here uses the domain-independent goal
 scorer (no model applies to these domains).  Prints one row per problem:
 pure and relevance wall times, their ratio, objects kept, and whether the
-plan is valid on the original problem.
+plan is valid on the original problem.  Every run is stored in a results
+store (``--store``; one suite per domain and size), which ``relevance-plan
+report`` shows.
 
 Takes about a minute on 2 cores (pure planning on the 300-block problem is
 most of it).
@@ -17,17 +19,13 @@ most of it).
 from __future__ import annotations
 
 import argparse
-import sys
 import tempfile
 from pathlib import Path
 
+from base import Store, add_store_option, run_method, show_time, speedup, table_header, table_row
+
 from relevance_plan.generators.padded import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
-
-REPO = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(REPO))
-
-from relevance_plan.planning.loop import PlanOptions, plan_task  # noqa: E402
-from relevance_plan.planning.results import PlanStatus  # noqa: E402
+from relevance_plan.planning.loop import PlanOptions
 
 CASES = [
     ("blocksworld", BLOCKSWORLD_DOMAIN, lambda n: blocksworld_problem(n, seed=1, in_the_way=3), (100, 200, 300)),
@@ -38,33 +36,30 @@ CASES = [
 def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("timeout", nargs="?", type=float, default=120.0, help="seconds per planning run (default: 120)")
+    add_store_option(parser)
     return parser.parse_args(argv)
 
 
-def main() -> int:
-    timeout = parse_args().timeout
-    print(f"timeout {timeout:g} s, lama-first; relevance = goal scorer (no knowledge model)")
-    print("| domain | extra objects | pure (s) | relevance (s) | pure/relevance | kept | plan valid |")
-    print("|---|---|---|---|---|---|---|")
-    with tempfile.TemporaryDirectory(prefix="bench-domains-") as scratch:
+def main(argv: list[str] | None = None) -> int:
+    args = parse_args(argv)
+    print(f"timeout {args.timeout:g} s, lama-first; relevance = goal scorer (no knowledge model)")
+    table_header("domain | extra objects | pure (s) | relevance (s) | pure/relevance | kept | plan valid")
+    with tempfile.TemporaryDirectory(prefix="bench-domains-") as scratch, Store(args.store, "bench_domains") as store:
         for name, domain_text, make, sizes in CASES:
             domain_path = Path(scratch) / f"{name}-domain.pddl"
             domain_path.write_text(domain_text)
             for size in sizes:
                 problem_path = Path(scratch) / f"{name}-{size}.pddl"
                 problem_path.write_text(make(size))
-                pure = plan_task(domain_path, problem_path, PlanOptions(method="pure", timeout=timeout))
-                relevance = plan_task(domain_path, problem_path, PlanOptions(method="relevance", timeout=timeout))
-                pure_time = pure.wall_time if pure.status is PlanStatus.SOLVED else None
-                shown_pure = f"{pure.wall_time:.2f}" if pure_time else f"{pure.status.value} ({pure.wall_time:.0f})"
-                ratio = f"{pure.wall_time / relevance.wall_time:.1f}x" if relevance.status is PlanStatus.SOLVED else "–"
-                if pure_time is None and relevance.status is PlanStatus.SOLVED:
-                    ratio = ">" + ratio
-                print(
-                    f"| {name} | {size} | {shown_pure} | {relevance.wall_time:.2f} | {ratio} |"
-                    f" {relevance.objects_kept}/{relevance.objects_total} | {relevance.valid} |",
-                    flush=True,
+                suite = f"{name} +{size}"
+                pure, relevance = (
+                    run_method(
+                        domain_path, problem_path, PlanOptions(method=method, timeout=args.timeout), store, suite
+                    )[1]
+                    for method in ("pure", "relevance")
                 )
+                shown = (show_time(pure), f"{relevance.time:.2f}", speedup(pure, relevance))
+                table_row(name, size, *shown, f"{relevance.kept}/{relevance.total}", relevance.valid)
     return 0
 
 

@@ -47,26 +47,24 @@ from __future__ import annotations
 
 import argparse
 import importlib.util
+import json
 import math
 import os
 import statistics
-import subprocess
 import sys
-import time
+import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
-REPO = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(REPO))
+from base import REPO, Laps, geometric_mean, run_timed, suite_entries
+from corpus import folders as corpus_folders
+from installed import compiled_checkout, installed_environment, installed_tool
 
-from corpus import folders as corpus_folders  # noqa: E402
-from installed import compiled_checkout, installed_environment, installed_tool  # noqa: E402
-
-from relevance_plan.batch.suites import SuiteProblem, find_suite_problems  # noqa: E402
-from relevance_plan.errors import PDDLParseError, RelevancePlanError  # noqa: E402
-from relevance_plan.io import load_domain, load_problem  # noqa: E402
-from relevance_plan.pddl.model import Domain  # noqa: E402
-from relevance_plan.planning.planners.requirements import NUMERIC_FLUENTS, domain_features  # noqa: E402
+from relevance_plan.batch.suites import SuiteProblem
+from relevance_plan.errors import PDDLParseError, RelevancePlanError
+from relevance_plan.io import load_domain, load_problem
+from relevance_plan.pddl.model import Domain
+from relevance_plan.planning.planners.requirements import NUMERIC_FLUENTS, domain_features
 
 DEFAULT_CORPUS = REPO / "benchmarks" / "corpus"
 PDDLGYM_DOMAINS = (
@@ -125,7 +123,7 @@ def folders(roots: list[str]) -> list[Folder]:
     for root in roots:
         for directory in _directories(Path(root)):
             try:
-                entries = [e for e in find_suite_problems(directory) if e.domain is not None and e.error is None]
+                entries = suite_entries(Path(directory))
             except RelevancePlanError:
                 continue
             if entries:
@@ -230,24 +228,13 @@ def _guess_track(domain_path: Path) -> str:
     return "classical"
 
 
-def timed(command: list[str], timeout: float, folder: Path) -> tuple[int, float]:
-    """Exit code and seconds of ``command`` run in ``folder`` (Fast Downward's translator writes
-    ``output.sas`` where it runs)."""
-    started = time.perf_counter()
-    try:
-        completed = subprocess.run(command, capture_output=True, timeout=timeout + 30, cwd=folder)
-        code = completed.returncode
-    except subprocess.TimeoutExpired:
-        code = -1
-    return code, time.perf_counter() - started
-
-
 def speed(roots: list[str], per_folder: int, timeout: float, in_process: bool, installed: bool, repeat: int) -> int:
     from relevance_plan.planning.planners.fast_downward.adapter import find_fast_downward
 
     driver = str(find_fast_downward())
     rows = []
-    with _scratch() as scratch:
+    with tempfile.TemporaryDirectory(prefix="bench-field-") as folder:
+        scratch = Path(folder)
         if installed:
             tool, env = installed_tool(scratch), installed_environment()
             print(f"relevance-plan as installed from a wheel of this checkout; medians of {repeat} run(s)\n")
@@ -281,10 +268,11 @@ def speed(roots: list[str], per_folder: int, timeout: float, in_process: bool, i
                 pure_times: list[float] = []
                 relevance_times: list[float] = []
                 for _ in range(repeat):
-                    pure_code, seconds = timed(pure_command, timeout, scratch)
-                    if pure_code != 0:
+                    # in the scratch folder: Fast Downward's translator writes output.sas where it runs
+                    pure_run = run_timed(pure_command, cwd=scratch, timeout=timeout + 30)
+                    if pure_run.code != 0:
                         break
-                    pure_times.append(seconds)
+                    pure_times.append(pure_run.seconds)
                     kept, attempts, relevance = _relevance(entry, timeout, scratch, in_process, tool, env)
                     if relevance is None:
                         break
@@ -314,15 +302,13 @@ def _domain_name(problem: Path) -> str:
 
 
 def _relevance(entry: SuiteProblem, timeout: float, scratch: Path, in_process: bool, tool: list[str], env: dict):
-    import json
-
     if in_process:
         from relevance_plan.planning.loop import PlanOptions, plan_task
         from relevance_plan.planning.results import PlanStatus
 
-        started = time.perf_counter()
+        laps = Laps()
         result = plan_task(entry.domain, entry.problem, PlanOptions(timeout=timeout, scorer="goal"))
-        elapsed = time.perf_counter() - started
+        elapsed = laps.end()["total"]
         solved = result.status is PlanStatus.SOLVED
         return result.objects_kept, len(result.attempts), elapsed if solved else None
     command = [
@@ -338,13 +324,11 @@ def _relevance(entry: SuiteProblem, timeout: float, scratch: Path, in_process: b
         "--plan-file",
         str(scratch / "plan"),
     ]
-    started = time.perf_counter()
-    completed = subprocess.run(command, capture_output=True, timeout=timeout + 60, env=env, cwd=scratch)
-    elapsed = time.perf_counter() - started
-    if completed.returncode != 0:
+    run = run_timed(command, cwd=scratch, env=env, timeout=timeout + 60)
+    if run.code != 0:
         return None, None, None
-    data = json.loads(completed.stdout)
-    return data["objects_kept"], data["attempts"], elapsed
+    data = json.loads(run.stdout)
+    return data["objects_kept"], data["attempts"], run.seconds
 
 
 def _speed_summary(rows: list) -> int:
@@ -352,35 +336,18 @@ def _speed_summary(rows: list) -> int:
     if not rows:
         print("no classical problem that Fast Downward solves was found")
         return 1
-    gmean = math.exp(statistics.fmean(math.log(r) for r in ratios)) if ratios else 0.0
+    gmean = geometric_mean(ratios) if ratios else 0.0
     slow = [(p, pure, rel) for p, pure, rel in rows if rel > pure * 1.25 + 0.5]
     print(f"\n{len(rows)} problems; geometric mean pure/relevance {gmean:.2f} (target >= 0.95)")
     longer = [pure / rel for _, pure, rel in rows if pure >= 1.0 and rel not in (None, math.inf)]
     if longer:
-        print(
-            f"where pure takes >= 1 s: {len(longer)} problems, geometric mean"
-            f" {math.exp(statistics.fmean(math.log(r) for r in longer)):.2f}"
-        )
+        print(f"where pure takes >= 1 s: {len(longer)} problems, geometric mean {geometric_mean(longer):.2f}")
     extra = sorted(rel - pure for _, pure, rel in rows if rel not in (None, math.inf))
     print(f"median extra time of relevance over pure: {statistics.median(extra):+.2f} s")
     print(f"slower than pure x 1.25 + 0.5 s: {len(slow)} (target 0)")
     for problem, pure, rel in slow:
         print(f"  {shown(problem)}: pure {pure:.2f} s, relevance {rel:.2f} s")
     return 0
-
-
-def _scratch():
-    import tempfile
-
-    class _Folder:
-        def __enter__(self):
-            self.tmp = tempfile.TemporaryDirectory(prefix="bench-field-")
-            return Path(self.tmp.name)
-
-        def __exit__(self, *exc):
-            self.tmp.cleanup()
-
-    return _Folder()
 
 
 def main() -> int:

@@ -34,6 +34,12 @@ planner.
 turns, median time (at a second or less, other work on a shared machine
 moves a single run's time by half).
 
+Every run is stored in a results store (``--store``; one suite per domain;
+the goal scorer's runs under the method ``relevance``, the learned model's
+under ``learned`` (``learned-plan``, ``learned-minimal`` with several
+label kinds), of repeated runs the one of median time), which
+``relevance-plan report`` shows.
+
 Scoring cost: on each test problem, ``score_problem`` with the goal and with
 the learned scorer (in-process CPU seconds, median of 5); the difference is
 what applying the model adds.  The same on a problem of at least
@@ -69,7 +75,6 @@ from __future__ import annotations
 
 import argparse
 import importlib.util
-import math
 import statistics
 import sys
 import tempfile
@@ -77,22 +82,22 @@ import time
 from collections import Counter
 from pathlib import Path
 
-REPO = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(REPO))
+from base import Store, add_store_option, median_run
+from base import geometric_mean as geomean
 
-from relevance_plan.batch.learn import LABEL_KINDS, Solver, learn, minimal_objects, plan_objects  # noqa: E402
-from relevance_plan.io import load_domain, load_problem, write_text_atomic  # noqa: E402
-from relevance_plan.pddl.formulas import literals  # noqa: E402
-from relevance_plan.pddl.model import Problem  # noqa: E402
-from relevance_plan.pddl.plans import Plan  # noqa: E402
-from relevance_plan.pddl.writer import write_pruned_problem  # noqa: E402
-from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task  # noqa: E402
-from relevance_plan.planning.planners.base import PlannerStatus  # noqa: E402
-from relevance_plan.planning.planners.registry import DEFAULT_PLANNER_CONFIG  # noqa: E402
-from relevance_plan.planning.results import PlanResult  # noqa: E402
-from relevance_plan.relevance.learning.learned_model import learned_model_text  # noqa: E402
-from relevance_plan.relevance.setup import ScoringOptions, score_problem  # noqa: E402
-from relevance_plan.relevance.task import PlanningTask  # noqa: E402
+from relevance_plan.batch.learn import LABEL_KINDS, Solver, learn, minimal_objects, plan_objects
+from relevance_plan.io import load_domain, load_problem, write_text_atomic
+from relevance_plan.pddl.formulas import literals
+from relevance_plan.pddl.model import Problem
+from relevance_plan.pddl.plans import Plan
+from relevance_plan.pddl.writer import write_pruned_problem
+from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task
+from relevance_plan.planning.planners.base import PlannerStatus
+from relevance_plan.planning.planners.registry import DEFAULT_PLANNER_CONFIG
+from relevance_plan.planning.results import PlanResult
+from relevance_plan.relevance.learning.learned_model import learned_model_text
+from relevance_plan.relevance.setup import ScoringOptions, score_problem
+from relevance_plan.relevance.task import PlanningTask
 
 PLOI_DOMAINS = (
     "manyblockssmallpiles",
@@ -105,6 +110,7 @@ PLOI_DOMAINS = (
 )
 DOMAINS = ",".join(PLOI_DOMAINS)
 RUNS = ("pure", "goal", "learned", "random")
+STORED_AS = {"goal": "relevance"}  # the method column of a run's store row (the others: the run's name)
 SHORT = 10.0  # seconds: a pruned run shorter than this is repeated with --repeat
 
 
@@ -184,10 +190,6 @@ def scaled_text(problem: Problem, least: int) -> str:
     )
 
 
-def geomean(values: list[float]) -> float:
-    return math.exp(sum(math.log(v) for v in values) / len(values)) if values else float("nan")
-
-
 def train(
     domain_path: Path, training: list[Path], args: argparse.Namespace, scratch: Path, name: str
 ) -> tuple[dict[str, Path], dict[str, dict]]:
@@ -212,7 +214,7 @@ def train(
     return models, training_figures
 
 
-def run_domain(folder: Path, spec: str, args: argparse.Namespace, scratch: Path) -> dict:
+def run_domain(folder: Path, spec: str, args: argparse.Namespace, scratch: Path, store: Store) -> dict:
     name, _, count = spec.partition(":")
     domain_path = folder / f"{name}.pddl"
     training = numbered(folder / name)[: int(count) if count else args.train]
@@ -223,18 +225,15 @@ def run_domain(folder: Path, spec: str, args: argparse.Namespace, scratch: Path)
     rows = []
     for number, problem in enumerate(tests):
         row: dict = {"problem": problem.name}
-        first_kept: dict[str, frozenset[str]] = {}
-        plans: dict[str, Plan] = {}
-        for run in runs:
-            result = plan_task(domain_path, problem, options_for(run, models, args.timeout))
-            row[run] = measured(result)
-            solved = row[run][0]
-            row["objects"] = result.objects_total
-            if result.selection is not None:
-                first_kept[run] = result.selection.kept
-            if solved:
-                plans[run] = result.plan
-        repeat_short_runs(row, runs, domain_path, problem, models, args)
+        results = {run: [plan_task(domain_path, problem, options_for(run, models, args.timeout))] for run in runs}
+        repeat_short_runs(results, domain_path, problem, models, args)
+        for run, each in results.items():
+            options = options_for(run, models, args.timeout)
+            store.add(name, domain_path, problem, options, median_run(each), STORED_AS.get(run, run))
+            row[run] = measured(each)
+            row["objects"] = each[0].objects_total
+        first_kept = {run: each[0].selection.kept for run, each in results.items() if each[0].selection is not None}
+        plans = {run: each[0].plan for run, each in results.items() if measured(each[:1])[0]}
         row["first"] = {run: len(kept) for run, kept in first_kept.items()}
         domain = load_domain(domain_path)
         task = PlanningTask(domain, load_problem(problem, domain))
@@ -279,32 +278,26 @@ def run_domain(folder: Path, spec: str, args: argparse.Namespace, scratch: Path)
     return {"name": name, "training": training_figures, "rows": rows, "scale": scale, "runs": runs}
 
 
-def measured(result: PlanResult) -> tuple[bool, float, int, int, float]:
-    """(solved with a valid plan, wall seconds, objects kept, attempts, planner seconds)."""
-    solved = result.status is PlanStatus.SOLVED and result.valid
-    return solved, result.wall_time, result.objects_kept, len(result.attempts), result.planner_time
+def measured(results: list[PlanResult]) -> tuple[bool, float, int, int, float]:
+    """(solved with a valid plan every time, median wall seconds, objects kept and attempts of the first run,
+    median planner seconds)."""
+    solved = all(result.status is PlanStatus.SOLVED and result.valid for result in results)
+    first = results[0]
+    wall = statistics.median(result.wall_time for result in results)
+    planner = statistics.median(result.planner_time for result in results)
+    return solved, wall, first.objects_kept, len(first.attempts), planner
 
 
 def repeat_short_runs(
-    row: dict, runs: list[str], domain_path: Path, problem: Path, models: dict[str, Path], args: argparse.Namespace
+    results: dict[str, list[PlanResult]], domain_path: Path, problem: Path, models: dict[str, Path], args
 ) -> None:
     """With ``--repeat N``, the goal and learned runs that took under ``SHORT`` seconds run N times in
-    all, in turns, and keep the median wall and planner times: at a second or less, other work on
-    the machine moves one run's time by half."""
-    short = [run for run in runs if run != "pure" and run != "random" and row[run][1] < SHORT]
-    times = {run: [row[run]] for run in short}
+    all, in turns (their medians count): at a second or less, other work on the machine moves one
+    run's time by half."""
+    short = [run for run, each in results.items() if run not in ("pure", "random") and each[0].wall_time < SHORT]
     for _ in range(args.repeat - 1):
         for run in short:
-            times[run].append(measured(plan_task(domain_path, problem, options_for(run, models, args.timeout))))
-    for run, each in times.items():
-        solved, _, kept, attempts, _ = each[0]
-        row[run] = (
-            solved and all(m[0] for m in each),
-            statistics.median(m[1] for m in each),
-            kept,
-            attempts,
-            statistics.median(m[4] for m in each),
-        )
+            results[run].append(plan_task(domain_path, problem, options_for(run, models, args.timeout)))
 
 
 def oracle(
@@ -488,6 +481,7 @@ def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
         default=1000,
         help="Also time scoring on copies of a test problem, this many objects (0: not).",
     )
+    add_store_option(parser)
     args = parser.parse_args(argv)
     args.runs = [run for run in RUNS if run in args.runs.split(",")]
     args.oracle_skip = set(filter(None, args.oracle_skip.split(",")))
@@ -502,9 +496,9 @@ def main(argv: list[str] | None = None) -> None:
     args = parse_args(argv)
     folder = args.folder or pddlgym_folder()
     results = []
-    with tempfile.TemporaryDirectory(prefix="bench-learned-") as scratch:
+    with tempfile.TemporaryDirectory(prefix="bench-learned-") as scratch, Store(args.store, "bench_learned") as store:
         for spec in args.domains.split(","):
-            results.append(run_domain(folder, spec, args, Path(scratch)))
+            results.append(run_domain(folder, spec, args, Path(scratch), store))
     summary(results, args.timeout)
 
 

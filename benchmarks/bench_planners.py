@@ -8,6 +8,8 @@ attempt loop and prints their times and the ratio.  Every reported plan was
 validated on the original problem; a run without a valid plan is shown with
 its status.  ``up:`` planners need their packages (``pip install -e
 '.[planners]'``); a planner that is not installed is refused before any run.
+Every run is stored in a results store (``--store``; one suite per problem,
+one block per planner in the report), which ``relevance-plan report`` shows.
 
 Takes about 11 minutes on 2 cores with the defaults: pure SymK runs out of
 the 120 s timeout on four of the five problems.  Fast Downward alone
@@ -20,19 +22,15 @@ the 120 s timeout on four of the five problems.  Fast Downward alone
 from __future__ import annotations
 
 import argparse
-import sys
 import tempfile
 from pathlib import Path
 
+from base import Measured, Store, add_store_option, run_method, speedup, table_header, table_row
+
+from relevance_plan.generators.generate import generate_suite
 from relevance_plan.generators.padded import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
-
-REPO = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(REPO))
-
-from relevance_plan.generators.generate import generate_suite  # noqa: E402
-from relevance_plan.planning.loop import PlanOptions, plan_task  # noqa: E402
-from relevance_plan.planning.planners.registry import make_planner, split_planner_names  # noqa: E402
-from relevance_plan.planning.results import PlanStatus  # noqa: E402
+from relevance_plan.planning.loop import PlanOptions
+from relevance_plan.planning.planners.registry import make_planner, split_planner_names
 
 
 def problems(scratch: Path) -> list[tuple[str, Path, Path]]:
@@ -53,10 +51,10 @@ def problems(scratch: Path) -> list[tuple[str, Path, Path]]:
     return found
 
 
-def seconds(result) -> str:
-    if result.status is PlanStatus.SOLVED and result.valid:
-        return f"{result.wall_time:.2f}"
-    return f"{result.status.value} ({result.wall_time:.0f} s)"
+def seconds(run: Measured) -> str:
+    if run.solved and run.valid:
+        return f"{run.time:.2f}"
+    return f"{run.status} ({run.time:.0f} s)"
 
 
 def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
@@ -67,41 +65,33 @@ def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
         help="comma-separated planner names, as for --planner (default: fast-downward,up:symk,up:lpg)",
     )
     parser.add_argument("--timeout", type=float, default=120.0, help="seconds per planning run (default: 120)")
+    add_store_option(parser)
     return parser.parse_args(argv)
 
 
-def main() -> int:
-    args = parse_args()
+def main(argv: list[str] | None = None) -> int:
+    args = parse_args(argv)
     planners = split_planner_names(args.planners)
     for name in planners:
         make_planner(name, check=True)
     print(f"timeout {args.timeout:g} s per run; relevance = knowledge model (coffee) or goal scorer (classic)")
-    print("| planner | problem | objects | pure (s) | relevance (s) | pure/relevance | kept | attempts |")
-    print("|---|---|---|---|---|---|---|---|")
-    with tempfile.TemporaryDirectory(prefix="bench-planners-") as scratch:
+    table_header("planner | problem | objects | pure (s) | relevance (s) | pure/relevance | kept | attempts")
+    with tempfile.TemporaryDirectory(prefix="bench-planners-") as scratch, Store(args.store, "bench_planners") as store:
         cases = problems(Path(scratch))
         for planner in planners:
             for label, domain, problem in cases:
-                results = {
-                    method: plan_task(
-                        domain, problem, PlanOptions(method=method, planner=planner, timeout=args.timeout)
-                    )
+                pure, relevance = (
+                    run_method(
+                        domain, problem, PlanOptions(method=method, planner=planner, timeout=args.timeout), store, label
+                    )[1]
                     for method in ("pure", "relevance")
-                }
-                pure, relevance = results["pure"], results["relevance"]
-                both = all(r.status is PlanStatus.SOLVED and r.valid for r in results.values())
-                ratio = (
-                    f"{pure.wall_time / relevance.wall_time:.1f}x"
-                    if both
-                    else (f">{pure.wall_time / relevance.wall_time:.1f}x" if relevance.valid else "–")
                 )
-                print(
-                    f"| {planner} | {label} | {relevance.objects_total} | {seconds(pure)} | {seconds(relevance)}"
-                    f" | {ratio} | {relevance.objects_kept}/{relevance.objects_total} | {len(relevance.attempts)} |",
-                    flush=True,
+                shown = (seconds(pure), seconds(relevance), speedup(pure, relevance, validated=True))
+                table_row(
+                    planner, label, relevance.total, *shown, f"{relevance.kept}/{relevance.total}", relevance.attempts
                 )
     return 0
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    raise SystemExit(main())

@@ -16,45 +16,36 @@ from __future__ import annotations
 
 import argparse
 import statistics
-import subprocess
 import sys
 import tempfile
-import time
 from pathlib import Path
 
-REPO = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(REPO))
+from base import REPO, Laps, median, run_timed
 
-from relevance_plan.generators.generate import generate_problem  # noqa: E402
-from relevance_plan.io import load_domain, load_problem, write_text_atomic  # noqa: E402
-from relevance_plan.relevance.knowledge import load_knowledge_model  # noqa: E402
-from relevance_plan.relevance.setup import ScoringOptions, score_problem  # noqa: E402
-from relevance_plan.relevance.task import PlanningTask  # noqa: E402
+from relevance_plan.generators.generate import generate_problem
+from relevance_plan.io import load_domain, load_problem, write_text_atomic
+from relevance_plan.relevance.knowledge import load_knowledge_model
+from relevance_plan.relevance.setup import ScoringOptions, score_problem
+from relevance_plan.relevance.task import PlanningTask
 
 TARGETS = {500: 0.3, 2000: 1.5}
+STAGES = ("parse", "score", "closure", "write", "total")
 
 
 def stages(domain_path: Path, problem_path: Path, out: Path, scorer: str) -> dict:
-    times = {}
-    start = time.perf_counter()
+    laps = Laps()
     domain = load_domain(domain_path)
     problem = load_problem(problem_path, domain)
-    times["parse"] = time.perf_counter() - start
-    mark = time.perf_counter()
+    laps.lap("parse")
     model = load_knowledge_model(REPO / "domains" / "coffee" / "relevance.yaml") if scorer == "model" else None
     task = PlanningTask(domain, problem)
     scoring = score_problem(task, ScoringOptions(scorer=scorer), knowledge_model=model)
-    times["score"] = time.perf_counter() - mark
-    mark = time.perf_counter()
+    laps.lap("score")
     result = scoring.prune(ScoringOptions().thresholds)
-    times["closure"] = time.perf_counter() - mark
-    mark = time.perf_counter()
+    laps.lap("closure")
     write_text_atomic(out, result.text)
-    times["write"] = time.perf_counter() - mark
-    times["total"] = time.perf_counter() - start
-    times["kept"] = len(result.kept)
-    times["objects"] = len(problem.objects)
-    return times
+    laps.lap("write")
+    return {**laps.end(), "kept": len(result.kept), "objects": len(problem.objects)}
 
 
 def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
@@ -62,8 +53,19 @@ def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
     return parser.parse_args(argv)
 
 
-def main() -> int:
-    parse_args()
+def whole_command(domain_path: Path, problem_path: Path, out: Path, scorer: str) -> float:
+    """`relevance-plan prune` as a fresh process, median of 3 runs."""
+    command = [sys.executable, "-m", "relevance_plan", "prune", str(domain_path), str(problem_path)]
+    command += ["-o", str(out), "--scorer", scorer]
+    runs = [run_timed(command) for _ in range(3)]
+    failed = [run.code for run in runs if run.code != 0]
+    if failed:
+        raise SystemExit(f"bench_prune: `{' '.join(command)}` exited {failed[0]}")
+    return statistics.median(run.seconds for run in runs)
+
+
+def main(argv: list[str] | None = None) -> int:
+    parse_args(argv)
     domain_path = REPO / "domains" / "coffee" / "domain.pddl"
     print("| objects | scorer | parse | score | closure | write | total (in-process) | whole command | target | kept |")
     print("|---|---|---|---|---|---|---|---|---|---|")
@@ -75,33 +77,12 @@ def main() -> int:
             out = Path(scratch) / "pruned.pddl"
             for scorer in ("model", "goal"):
                 runs = [stages(domain_path, problem_path, out, scorer) for _ in range(5)]
-                median = {
-                    k: statistics.median(r[k] for r in runs) for k in ("parse", "score", "closure", "write", "total")
-                }
-                commands = []
-                for _ in range(3):
-                    started = time.perf_counter()
-                    subprocess.run(
-                        [
-                            sys.executable,
-                            "-m",
-                            "relevance_plan",
-                            "prune",
-                            str(domain_path),
-                            str(problem_path),
-                            "-o",
-                            str(out),
-                            "--scorer",
-                            scorer,
-                        ],
-                        check=True,
-                        capture_output=True,
-                    )
-                    commands.append(time.perf_counter() - started)
+                times = {stage: median(r[stage] for r in runs) for stage in STAGES}
+                command = whole_command(domain_path, problem_path, out, scorer)
                 print(
-                    f"| {runs[0]['objects']} | {scorer} | {median['parse']:.3f} | {median['score']:.3f} |"
-                    f" {median['closure']:.3f} | {median['write']:.3f} | {median['total']:.3f} s |"
-                    f" {statistics.median(commands):.2f} s | {target} s | {runs[0]['kept']} |"
+                    f"| {runs[0]['objects']} | {scorer} | {times['parse']:.3f} | {times['score']:.3f} |"
+                    f" {times['closure']:.3f} | {times['write']:.3f} | {times['total']:.3f} s |"
+                    f" {command:.2f} s | {target} s | {runs[0]['kept']} |"
                 )
     return 0
 

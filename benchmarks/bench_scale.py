@@ -33,7 +33,8 @@ Tables go to standard output, one row per problem or pruning cell as it
 finishes; a note per planner run and per timed pruning run goes to standard
 error.  ``kept`` is what the first attempt planned on (``a->b``: widening
 went on to b objects); kept = objects means relevance planned the full
-problem.
+problem.  Every planning run is stored in a results store (``--store``;
+one suite per world and size), which ``relevance-plan report`` shows.
 
 With the defaults (one problem per cell) the run takes about 2 minutes on 2
 quiet cores: about 100 s of planning and 20 s of pruning time, most of it
@@ -56,24 +57,35 @@ from __future__ import annotations
 
 import argparse
 import json
-import math
 import statistics
-import sys
 import tempfile
 import time
+from dataclasses import asdict
 from pathlib import Path
 
-REPO = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(REPO))
+from base import (
+    DOMAINS,
+    Laps,
+    Measured,
+    Store,
+    add_store_option,
+    add_worlds_option,
+    geometric_mean,
+    median,
+    progress,
+    run_method,
+    show_ratio,
+    show_time,
+    table_header,
+    table_row,
+)
 
-from relevance_plan.data import DOMAINS_DIR  # noqa: E402
-from relevance_plan.generators.sized import CLASSIC_WORLDS, generate_sized_problem  # noqa: E402
-from relevance_plan.io import load_domain, load_problem, write_text_atomic  # noqa: E402
-from relevance_plan.pddl.sexpr import collection_paused  # noqa: E402
-from relevance_plan.planning.loop import PlanOptions, plan_task  # noqa: E402
-from relevance_plan.planning.results import PlanStatus  # noqa: E402
-from relevance_plan.relevance.setup import ScoringOptions, score_problem  # noqa: E402
-from relevance_plan.relevance.task import PlanningTask  # noqa: E402
+from relevance_plan.generators.sized import CLASSIC_WORLDS, generate_sized_problem
+from relevance_plan.io import load_domain, load_problem, write_text_atomic
+from relevance_plan.pddl.sexpr import collection_paused
+from relevance_plan.planning.loop import PlanOptions
+from relevance_plan.relevance.setup import ScoringOptions, score_problem
+from relevance_plan.relevance.task import PlanningTask
 
 SIZES = {
     "scenegraph": (200, 500, 1000),
@@ -100,23 +112,7 @@ def write_problem(world: str, seed: int, index: int, size: int, folder: Path) ->
     domain = problem.sidecar["domain"]
     if world in CLASSIC_WORLDS and problem.sidecar["form"] == "typed":
         domain += "-typed"  # a classic world's sidecar names the domain and its form apart
-    return DOMAINS_DIR / domain / "domain.pddl", path, problem.sidecar
-
-
-def run(domain_path: Path, problem_path: Path, method: str, timeout: float) -> dict:
-    result = plan_task(domain_path, problem_path, PlanOptions(method=method, timeout=timeout, race=False))
-    return {
-        "status": result.status.value,
-        "solved": result.status is PlanStatus.SOLVED,
-        "timed_out": result.status is PlanStatus.OUT_OF_TIME,
-        "valid": result.valid,
-        "time": result.wall_time,
-        "kept": result.objects_kept,
-        "first_kept": len(result.selection.kept) if result.selection is not None else result.objects_total,
-        "total": result.objects_total,
-        "attempts": len(result.attempts),
-        "relevance_time": result.relevance_time,
-    }
+    return DOMAINS / domain / "domain.pddl", path, problem.sidecar
 
 
 def prune_stages(domain_path: Path, problem_path: Path, out: Path) -> dict:
@@ -127,44 +123,26 @@ def prune_stages(domain_path: Path, problem_path: Path, out: Path) -> dict:
 
 
 def _prune_stages(domain_path: Path, problem_path: Path, out: Path) -> dict:
-    times = {}
-    start = time.perf_counter()
+    laps = Laps()
     domain = load_domain(domain_path)
     task = PlanningTask(domain, load_problem(problem_path, domain))
-    times["read"] = time.perf_counter() - start
-    mark = time.perf_counter()
+    laps.lap("read")
     scoring = score_problem(task, ScoringOptions(), method="relevance", domain_path=domain_path)
-    times["score"] = time.perf_counter() - mark
-    mark = time.perf_counter()
+    laps.lap("score")
     selection = scoring.first_selection(narrow=True)
-    times["select"] = time.perf_counter() - mark
-    mark = time.perf_counter()
+    laps.lap("select")
     write_text_atomic(out, selection.text)
-    times["write"] = time.perf_counter() - mark
-    times["total"] = time.perf_counter() - start
-    times["kept"] = len(selection.kept)
-    times["objects"] = len(task.problem.objects)
-    return times
-
-
-def median(values):
-    values = [v for v in values if v is not None]
-    return statistics.median(values) if values else None
-
-
-def geomean(values):
-    return math.exp(sum(math.log(v) for v in values) / len(values)) if values else None
+    laps.lap("write")
+    return {**laps.end(), "kept": len(selection.kept), "objects": len(task.problem.objects)}
 
 
 def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument(
-        "--worlds",
-        nargs="+",
-        default=list(DEFAULT_WORLDS),
-        choices=list(SIZES),
-        metavar="WORLD",
-        help=f"worlds to run (default: {', '.join(DEFAULT_WORLDS)}; also: the -typed many-goal forms)",
+    add_worlds_option(
+        parser,
+        SIZES,
+        DEFAULT_WORLDS,
+        f"worlds to run (default: {', '.join(DEFAULT_WORLDS)}; also: the -typed many-goal forms)",
     )
     parser.add_argument(
         "--sizes", nargs="+", type=int, default=None, metavar="N", help="planning sizes for every world chosen"
@@ -193,6 +171,7 @@ def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
         help="sizes of the pruning-time table (default: 500 and 5000; targets are printed for those)",
     )
     parser.add_argument("--json", type=Path, default=None, help="also write the raw rows here")
+    add_store_option(parser)
     args = parser.parse_args(argv)
     if args.count < 1:
         parser.error("--count must be at least 1")
@@ -213,7 +192,7 @@ def planning_cells(args: argparse.Namespace) -> list[tuple[str, int]]:
     return cells
 
 
-def plan_all(args: argparse.Namespace, scratch: Path) -> list[dict]:
+def plan_all(args: argparse.Namespace, scratch: Path, store: Store) -> list[dict]:
     """Plan every cell, one row per problem as it goes."""
     rows = []
     cells = planning_cells(args)
@@ -222,40 +201,43 @@ def plan_all(args: argparse.Namespace, scratch: Path) -> list[dict]:
         f"## Planning: lama-first, timeout {args.timeout:g} s per run, seed {args.seed},"
         f" {args.count} problem(s) per cell, no race; relevance = goal scorer"
     )
-    print(
-        "| # | problem | objects | pure (s) | relevance (s) | of which pruning (s) | kept | attempts |"
-        " oracle (s) | oracle kept | valid |"
+    table_header(
+        "# | problem | objects | pure (s) | relevance (s) | "
+        "of which pruning (s) | kept | attempts | oracle (s) | oracle kept | valid"
     )
-    print("|---|---|---|---|---|---|---|---|---|---|---|")
-    done = 0
     for world, size in cells:
         for index in range(1, args.count + 1):
             domain_path, problem_path, sidecar = write_problem(world, args.seed, index, size, scratch)
             row = {"world": world, "size": size, "problem": problem_path.stem, "objects": sidecar["objects_total"]}
             for method in METHODS:
-                row[method] = run(domain_path, problem_path, method, args.timeout)
-                _progress(f"{row['problem']}: {method} {row[method]['status']} in {row[method]['time']:.1f} s")
+                options = PlanOptions(method=method, timeout=args.timeout, race=False)
+                row[method] = run = run_method(domain_path, problem_path, options, store, f"{world}-{size}")[1]
+                progress(f"{row['problem']}: {method} {run.status} in {run.time:.1f} s")
             rows.append(row)
-            done += 1
             rel, oracle = row["relevance"], row["oracle"]
-            valid = all(row[m]["valid"] for m in METHODS if row[m]["solved"])
-            print(
-                f"| {done}/{runs} | {row['problem']} | {row['objects']} | {_time(row['pure'], args.timeout)} |"
-                f" {_time(rel, args.timeout)} | {rel['relevance_time']:.2f} | {_kept(rel)} | {rel['attempts']} |"
-                f" {_time(oracle, args.timeout)} |"
-                f" {oracle['first_kept']} | {'yes' if valid else 'NO'} |",
-                flush=True,
+            valid = all(row[m].valid for m in METHODS if row[m].solved)
+            table_row(
+                f"{len(rows)}/{runs}",
+                row["problem"],
+                row["objects"],
+                show_time(row["pure"], args.timeout),
+                show_time(rel, args.timeout),
+                f"{rel.relevance_time:.2f}",
+                _kept(rel),
+                rel.attempts,
+                show_time(oracle, args.timeout),
+                oracle.first_kept,
+                "yes" if valid else "NO",
             )
     return rows
 
 
 def summarise_planning(rows: list[dict]) -> None:
     print()
-    print(
-        "| world | size | objects | problems | pure median (s) | relevance median (s) | pure/relevance |"
-        " oracle median (s) | relevance/oracle | kept median | oracle kept | attempts median | failures |"
+    table_header(
+        "world | size | objects | problems | pure median (s) | relevance median (s) | "
+        "pure/relevance | oracle median (s) | relevance/oracle | kept median | oracle kept | attempts median | failures"
     )
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     scene_ratios, all_ratios, over_oracle = [], [], []
     for world, size in dict.fromkeys((r["world"], r["size"]) for r in rows):
         mine = [r for r in rows if (r["world"], r["size"]) == (world, size)]
@@ -270,31 +252,37 @@ def summarise_planning(rows: list[dict]) -> None:
             if world == "scenegraph":
                 scene_ratios.append(speedup[0])
         if to_oracle[0] is None or to_oracle[0] > ORACLE_TARGET:
-            over_oracle.append(f"{world} {size} ({_show_ratio(to_oracle)})")
-        failures = sum(not r["relevance"]["solved"] or not r["relevance"]["valid"] for r in mine)
-        print(
-            f"| {world} | {size} | {median([r['objects'] for r in mine]):.0f} | {len(mine)} |"
-            f" {'>' if pure_low else ''}{pure_t:.2f} | {'>' if rel_low else ''}{rel_t:.2f} |"
-            f" {_show_ratio(speedup)} | {'>' if oracle_low else ''}{oracle_t:.2f} | {_show_ratio(to_oracle)} |"
-            f" {median([r['relevance']['first_kept'] for r in mine]):.0f} |"
-            f" {median([r['oracle']['first_kept'] for r in mine]):.0f} |"
-            f" {median([r['relevance']['attempts'] for r in mine]):.0f} | {failures} |"
+            over_oracle.append(f"{world} {size} ({show_ratio(*to_oracle)})")
+        failures = sum(not r["relevance"].solved or not r["relevance"].valid for r in mine)
+        table_row(
+            world,
+            size,
+            f"{median(r['objects'] for r in mine):.0f}",
+            len(mine),
+            f"{'>' if pure_low else ''}{pure_t:.2f}",
+            f"{'>' if rel_low else ''}{rel_t:.2f}",
+            show_ratio(*speedup),
+            f"{'>' if oracle_low else ''}{oracle_t:.2f}",
+            show_ratio(*to_oracle),
+            f"{median(r['relevance'].first_kept for r in mine):.0f}",
+            f"{median(r['oracle'].first_kept for r in mine):.0f}",
+            f"{median(r['relevance'].attempts for r in mine):.0f}",
+            failures,
         )
-    invalid = [f"{r['problem']} ({m})" for r in rows for m in METHODS if r[m]["solved"] and not r[m]["valid"]]
-    failed = [f"{r['problem']} ({r['relevance']['status']})" for r in rows if not r["relevance"]["solved"]]
+    invalid = [f"{r['problem']} ({m})" for r in rows for m in METHODS if r[m].solved and not r[m].valid]
+    failed = [f"{r['problem']} ({r['relevance'].status})" for r in rows if not r["relevance"].solved]
     slower = [
-        f"{r['problem']} ({r['relevance']['time']:.1f} s vs {r['pure']['time']:.1f} s)"
+        f"{r['problem']} ({r['relevance'].time:.1f} s vs {r['pure'].time:.1f} s)"
         for r in rows
-        if r["pure"]["solved"] and r["relevance"]["time"] > r["pure"]["time"]
+        if r["pure"].solved and r["relevance"].time > r["pure"].time
     ]
     print()
-    scene = geomean(scene_ratios)
-    bound = " (a lower bound: some pure run timed out)" if any(r["pure"]["timed_out"] for r in rows) else ""
+    bound = " (a lower bound: some pure run timed out)" if any(r["pure"].timed_out for r in rows) else ""
     print(
-        f"geometric mean pure/relevance over {len(scene_ratios)} scene-graph cell(s): {_times(scene)}{bound}"
-        f" (target >= {SPEEDUP_TARGET:g}x)"
+        f"geometric mean pure/relevance over {len(scene_ratios)} scene-graph cell(s):"
+        f" {show_ratio(geometric_mean(scene_ratios))}{bound} (target >= {SPEEDUP_TARGET:g}x)"
     )
-    print(f"geometric mean pure/relevance over all {len(all_ratios)} cell(s): {_times(geomean(all_ratios))}")
+    print(f"geometric mean pure/relevance over all {len(all_ratios)} cell(s): {show_ratio(geometric_mean(all_ratios))}")
     print(f"relevance <= {ORACLE_TARGET:g}x the oracle in every cell: {_missed(over_oracle)}")
     print(f"every plan valid on the original: {_missed(invalid)}")
     print(f"no relevance failure: {_missed(failed)}")
@@ -304,8 +292,7 @@ def summarise_planning(rows: list[dict]) -> None:
 def time_pruning(args: argparse.Namespace, scratch: Path) -> list[dict]:
     sizes = args.prune_sizes or (list(PRUNE_TARGETS)[:1] if args.quick else list(PRUNE_TARGETS))
     print("## Pruning time in-process: read + score + select (closure, repair) + write, median of 3, no planner")
-    print("| world | size | objects | read | score | select | write | total (s) | target (s) | kept | within |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    table_header("world | size | objects | read | score | select | write | total (s) | target (s) | kept | within")
     rows = []
     out = scratch / "pruned.pddl"
     for world in args.prune_worlds or args.worlds:
@@ -314,17 +301,20 @@ def time_pruning(args: argparse.Namespace, scratch: Path) -> list[dict]:
             runs = []
             for attempt in range(1, 4):
                 runs.append(prune_stages(domain_path, problem_path, out))
-                _progress(f"pruning {world} at {size}: run {attempt}/3 {runs[-1]['total']:.2f} s")
+                progress(f"pruning {world} at {size}: run {attempt}/3 {runs[-1]['total']:.2f} s")
             times = {stage: statistics.median(r[stage] for r in runs) for stage in STAGES}
             target = PRUNE_TARGETS.get(size)
             row = {"world": world, "size": size, "objects": runs[0]["objects"], "kept": runs[0]["kept"], **times}
             rows.append(row)
             within = "–" if target is None else "yes" if times["total"] <= target else "NO"
-            print(
-                f"| {world} | {size} | {row['objects']} | {times['read']:.3f} | {times['score']:.3f} |"
-                f" {times['select']:.3f} | {times['write']:.3f} | {times['total']:.3f} |"
-                f" {'–' if target is None else f'{target:g}'} | {row['kept']} | {within} |",
-                flush=True,
+            table_row(
+                world,
+                size,
+                row["objects"],
+                *(f"{times[stage]:.3f}" for stage in STAGES),
+                "–" if target is None else f"{target:g}",
+                row["kept"],
+                within,
             )
     over = [
         f"{r['world']} {r['size']} ({r['total']:.2f} s)"
@@ -343,8 +333,10 @@ def main(argv: list[str] | None = None) -> int:
     with tempfile.TemporaryDirectory(prefix="bench-scale-") as folder:
         scratch = Path(folder)
         if not args.prune_only:
-            raw["planning"] = plan_all(args, scratch)
-            summarise_planning(raw["planning"])
+            with Store(args.store, "bench_scale") as store:
+                rows = plan_all(args, scratch, store)
+            summarise_planning(rows)
+            raw["planning"] = [{key: asdict(v) if key in METHODS else v for key, v in r.items()} for r in rows]
         if not args.no_prune_timing:
             if not args.prune_only:
                 print()
@@ -357,7 +349,7 @@ def main(argv: list[str] | None = None) -> int:
 
 def _median_time(rows: list[dict], method: str) -> tuple[float, bool]:
     """The median wall time of ``method``, and whether it is a lower bound (some run hit the time limit)."""
-    return median([r[method]["time"] for r in rows]), any(r[method]["timed_out"] for r in rows)
+    return median(r[method].time for r in rows), any(r[method].timed_out for r in rows)
 
 
 def _ratio(top: float, top_low: bool, bottom: float, bottom_low: bool) -> tuple[float | None, str]:
@@ -366,34 +358,14 @@ def _ratio(top: float, top_low: bool, bottom: float, bottom_low: bool) -> tuple[
     return (top / bottom if bottom else None), (">" if top_low else "<" if bottom_low else "")
 
 
-def _show_ratio(ratio: tuple[float | None, str]) -> str:
-    value, bound = ratio
-    return "–" if value is None else f"{bound}{value:.1f}x"
-
-
-def _progress(message: str) -> None:
-    """A note on standard error while a long cell runs (the tables stay on standard output)."""
-    print(f"  ... {message}", file=sys.stderr, flush=True)
-
-
 def _missed(misses: list[str]) -> str:
     return f"missed by {', '.join(misses)}" if misses else "met"
 
 
-def _times(value: float | None) -> str:
-    return "–" if value is None else f"{value:.1f}x"
-
-
-def _kept(result: dict) -> str:
-    if result["first_kept"] == result["kept"]:
-        return f"{result['kept']}/{result['total']}"
-    return f"{result['first_kept']}->{result['kept']}/{result['total']}"
-
-
-def _time(result: dict, timeout: float) -> str:
-    if result["timed_out"]:
-        return f">{timeout:g}"
-    return f"{result['time']:.2f}" if result["solved"] else f"{result['status']} ({result['time']:.0f})"
+def _kept(run: Measured) -> str:
+    if run.first_kept == run.kept:
+        return f"{run.kept}/{run.total}"
+    return f"{run.first_kept}->{run.kept}/{run.total}"
 
 
 if __name__ == "__main__":

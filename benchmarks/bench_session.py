@@ -26,19 +26,17 @@ import argparse
 import os
 import random
 import statistics
-import sys
 import time
-from pathlib import Path
+from dataclasses import dataclass
 
-REPO = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(REPO))
+from base import Laps, percentile
 
-from relevance_plan.data import DOMAINS_DIR, PROBLEMS_DIR  # noqa: E402
-from relevance_plan.io import load_task  # noqa: E402
-from relevance_plan.pddl.parser import read_problem  # noqa: E402
-from relevance_plan.relevance.setup import ScoringOptions, score_problem  # noqa: E402
-from relevance_plan.relevance.task import PlanningTask  # noqa: E402
-from relevance_plan.session import Session  # noqa: E402
+from relevance_plan.data import DOMAINS_DIR, PROBLEMS_DIR
+from relevance_plan.io import load_task
+from relevance_plan.pddl.parser import read_problem
+from relevance_plan.relevance.setup import ScoringOptions, score_problem
+from relevance_plan.relevance.task import PlanningTask
+from relevance_plan.session import Session
 
 TARGET_OBJECTS = 1000
 MIXED_EVENTS = 1000
@@ -64,15 +62,6 @@ USEFUL = [
     ("napkin", "napkin"),
     ("sweetener", "sugar_packet"),
 ]
-
-
-def percentile(values, share):
-    values = sorted(values)
-    return values[min(len(values) - 1, int(round(share * (len(values) - 1))))] if values else float("nan")
-
-
-def ms(seconds: float) -> str:
-    return f"{seconds * 1000:7.3f} ms"
 
 
 class Stream:
@@ -138,11 +127,11 @@ class Stream:
 
 def from_scratch(session: Session):
     text = session.scene.problem_text()
-    started = time.perf_counter()
+    laps = Laps()
     problem = read_problem(text, session.domain)
     scoring = score_problem(PlanningTask(session.domain, problem), session.options, knowledge_model=session.model)
     result = scoring.prune(session.options.thresholds), scoring.first_selection()
-    return time.perf_counter() - started, scoring.scores, result
+    return laps.end()["total"], scoring.scores, result
 
 
 def same(session: Session, scores, result) -> bool:
@@ -169,89 +158,117 @@ def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
     return parser.parse_args(argv)
 
 
-def main() -> None:
-    args = parse_args()
-    rng = random.Random(args.seed)
-    domain_path = DOMAINS_DIR / "coffee" / "domain.pddl"
-    domain, problem = load_task(domain_path, PROBLEMS_DIR / "coffee-simple.pddl")
-    session = Session(domain, problem, ScoringOptions(), domain_path=str(domain_path))
-    stream = Stream(session, rng)
+@dataclass(frozen=True)
+class Event:
+    """One mixed event: its kind, whether it triggered, the session's and the from-scratch seconds."""
 
-    grow_started = time.perf_counter()
+    kind: str
+    triggered: bool
+    incremental: float
+    scratch: float
+    same: bool
+    cpu: float  # the session's CPU seconds for it
+
+
+def grow(session: Session, stream: Stream) -> tuple[int, float]:
+    """Add events until the scene has ``TARGET_OBJECTS`` objects: (events, seconds)."""
+    laps = Laps()
     grown = 0
     while len(session.scene.objects) < TARGET_OBJECTS:
         session.handle(stream.add())
         grown += 1
-    grow_time = time.perf_counter() - grow_started
+    return grown, laps.end()["total"]
 
-    rows = []  # (kind, triggered, incremental seconds, scratch seconds, same, incremental CPU seconds)
-    handled = 0.0
-    while len(rows) < MIXED_EVENTS:
-        for event in stream.mixed(len(rows)):
+
+def mixed_events(session: Session, stream: Stream) -> list[Event]:
+    """``MIXED_EVENTS`` mixed events, each state determined from scratch too."""
+    events: list[Event] = []
+    while len(events) < MIXED_EVENTS:
+        for event in stream.mixed(len(events)):
             cpu = time.process_time()
             report = session.handle(event)
             cpu = time.process_time() - cpu
             assert report.error is None, (event, report.error)
-            handled += report.seconds
             scratch_time, scores, result = from_scratch(session)
-            rows.append(
-                (event["event"], report.triggered, report.seconds, scratch_time, same(session, scores, result), cpu)
+            events.append(
+                Event(
+                    event["event"], report.triggered, report.seconds, scratch_time, same(session, scores, result), cpu
+                )
             )
-    rows = rows[:MIXED_EVENTS]
+    return events[:MIXED_EVENTS]
 
-    objects = len(session.scene.objects)
-    triggered = [r for r in rows if r[1]]
-    untriggered = [r for r in rows if not r[1]]
-    element = [r for r in triggered if r[0] in ("add", "remove")]
-    identical = sum(r[4] for r in rows)
-    print(
-        f"grew the scene from {len(problem.objects)} to {TARGET_OBJECTS} objects with {grown} add events"
-        f" in {grow_time:.2f} s ({grown / grow_time:,.0f} events/s)"
-    )
-    print(
-        f"mixed events: {len(rows)} at {objects} objects at the end; kept {len(session.kept)};"
-        f" {handled:.3f} s in the session = {len(rows) / handled:,.0f} events/s"
-    )
-    kinds = sorted({r[0] for r in rows})
-    print(
-        "events by kind: "
-        + ", ".join(
-            f"{k} {sum(r[0] == k for r in rows)} ({sum(r[0] == k and r[1] for r in rows)} triggered)" for k in kinds
-        )
-    )
-    print(f"triggered: {len(triggered)} of {len(rows)} ({len(triggered) / len(rows):.1%})")
+
+def ms(seconds: float) -> str:
+    return f"{seconds * 1000:7.3f} ms"
+
+
+def line(label: str, values: list[float]) -> None:
+    print(f"{label:<34}{ms(statistics.median(values))} {ms(percentile(values, 0.95))} {ms(max(values))}")
+
+
+def print_times(events: list[Event]) -> None:
+    triggered = [e for e in events if e.triggered]
+    untriggered = [e for e in events if not e.triggered]
+    element = [e for e in triggered if e.kind in ("add", "remove")]
     print("")
     print(f"{'':34}{'median':>10} {'p95':>10} {'max':>10}")
-
-    def line(label, values):
-        print(f"{label:<34}{ms(statistics.median(values))} {ms(percentile(values, 0.95))} {ms(max(values))}")
-
-    line(f"untriggered events ({len(untriggered)})", [r[2] for r in untriggered])
-    line(f"triggered, incremental ({len(triggered)})", [r[2] for r in triggered])
-    line("triggered, from scratch", [r[3] for r in triggered])
-    line(f"element events, incremental ({len(element)})", [r[2] for r in element])
-    line("element events, from scratch", [r[3] for r in element])
-    line("all events, from scratch", [r[3] for r in rows])
-    ratio_median = statistics.median(r[2] for r in element) / statistics.median(r[3] for r in element)
-    ratio_p95 = percentile([r[2] for r in element], 0.95) / percentile([r[3] for r in element], 0.95)
+    line(f"untriggered events ({len(untriggered)})", [e.incremental for e in untriggered])
+    line(f"triggered, incremental ({len(triggered)})", [e.incremental for e in triggered])
+    line("triggered, from scratch", [e.scratch for e in triggered])
+    line(f"element events, incremental ({len(element)})", [e.incremental for e in element])
+    line("element events, from scratch", [e.scratch for e in element])
+    line("all events, from scratch", [e.scratch for e in events])
+    ratio_median = statistics.median(e.incremental for e in element) / statistics.median(e.scratch for e in element)
+    ratio_p95 = percentile([e.incremental for e in element], 0.95) / percentile([e.scratch for e in element], 0.95)
     print("")
-    worst_untriggered = max(r[2] for r in untriggered)
+    quick = [e.incremental for e in untriggered]
     print(
-        f"untriggered under 1 ms: {sum(r[2] < 0.001 for r in untriggered)} of {len(untriggered)}"
-        f" (p95 {ms(percentile([r[2] for r in untriggered], 0.95)).strip()}, max {ms(worst_untriggered).strip()})"
+        f"untriggered under 1 ms: {sum(t < 0.001 for t in quick)} of {len(untriggered)}"
+        f" (p95 {ms(percentile(quick, 0.95)).strip()}, max {ms(max(quick)).strip()})"
         f"  target: every one under 1 ms"
     )
     print(
         f"element event, incremental / from scratch: {ratio_median:.3f} (median), {ratio_p95:.3f} (p95)  target: <= 0.1"
     )
-    cpu_untriggered = [r[5] for r in untriggered]
+    cpu = [e.cpu for e in untriggered]
     print(
         "untriggered, CPU time of the process (no preemption):"
-        f" median {ms(statistics.median(cpu_untriggered)).strip()},"
-        f" p95 {ms(percentile(cpu_untriggered, 0.95)).strip()}, max {ms(max(cpu_untriggered)).strip()};"
+        f" median {ms(statistics.median(cpu)).strip()},"
+        f" p95 {ms(percentile(cpu, 0.95)).strip()}, max {ms(max(cpu)).strip()};"
         f" load average {os.getloadavg()[0]:.2f} on {os.cpu_count()} CPUs"
     )
-    print(f"identical to from scratch: {identical} of {len(rows)} states")
+
+
+def main(argv: list[str] | None = None) -> None:
+    args = parse_args(argv)
+    rng = random.Random(args.seed)
+    domain_path = DOMAINS_DIR / "coffee" / "domain.pddl"
+    domain, problem = load_task(domain_path, PROBLEMS_DIR / "coffee-simple.pddl")
+    session = Session(domain, problem, ScoringOptions(), domain_path=str(domain_path))
+    stream = Stream(session, rng)
+    grown, grow_time = grow(session, stream)
+    events = mixed_events(session, stream)
+    triggered = sum(e.triggered for e in events)
+    print(
+        f"grew the scene from {len(problem.objects)} to {TARGET_OBJECTS} objects with {grown} add events"
+        f" in {grow_time:.2f} s ({grown / grow_time:,.0f} events/s)"
+    )
+    handled = sum(e.incremental for e in events)
+    print(
+        f"mixed events: {len(events)} at {len(session.scene.objects)} objects at the end; kept {len(session.kept)};"
+        f" {handled:.3f} s in the session = {len(events) / handled:,.0f} events/s"
+    )
+    kinds = sorted({e.kind for e in events})
+    print(
+        "events by kind: "
+        + ", ".join(
+            f"{k} {sum(e.kind == k for e in events)} ({sum(e.kind == k and e.triggered for e in events)} triggered)"
+            for k in kinds
+        )
+    )
+    print(f"triggered: {triggered} of {len(events)} ({triggered / len(events):.1%})")
+    print_times(events)
+    print(f"identical to from scratch: {sum(e.same for e in events)} of {len(events)} states")
 
 
 if __name__ == "__main__":

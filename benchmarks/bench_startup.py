@@ -38,28 +38,18 @@ from __future__ import annotations
 import argparse
 import json
 import statistics
-import subprocess
 import sys
 import tempfile
-import time
 from pathlib import Path
 
-REPO = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(REPO))
+from base import DOMAINS, geometric_mean, run_timed
+from installed import compiled_checkout, installed_environment, installed_tool
+from relevance_plan.planning.planners.fast_downward.command import find_fast_downward
 
-from installed import compiled_checkout, installed_environment, installed_tool  # noqa: E402
-
-from relevance_plan.generators.classic import generate_classic_problem  # noqa: E402
-from relevance_plan.planning.planners.fast_downward.command_line import find_fast_downward  # noqa: E402
+from relevance_plan.generators.classic import generate_classic_problem
 
 # Sizes where the bare driver takes from a few tenths of a second to a few seconds.
 SIZES = {"blocksworld": 20, "logistics": 40, "gripper": 40, "ferry": 40, "grid": 40, "miconic": 40}
-
-
-def timed(command: list[str], cwd: Path, env: dict[str, str]) -> tuple[float, int, str]:
-    started = time.perf_counter()
-    done = subprocess.run(command, cwd=cwd, env=env, capture_output=True, text=True, timeout=600)
-    return time.perf_counter() - started, done.returncode, done.stdout
 
 
 def main() -> int:
@@ -83,7 +73,7 @@ def main() -> int:
         print(f"{'problem':<24} {'bare':>7} {'pure':>7} {'relev.':>7} {'overhead':>9} {'target':>7}  rel<=pure*1.1+0.3")
         for world in args.worlds:
             problem = generate_classic_problem(world, args.seed, 1, SIZES[world], dense=True)
-            domain_path = REPO / "relevance_plan" / "data" / "domains" / world / "domain.pddl"
+            domain_path = DOMAINS / world / "domain.pddl"
             problem_path = work / f"{problem.name}.pddl"
             problem_path.write_text(problem.pddl_text)
             commands = {
@@ -96,12 +86,12 @@ def main() -> int:
             kept = ""
             for _ in range(args.repeat):
                 for name, command in commands.items():
-                    seconds, code, out = timed([*command, str(domain_path), str(problem_path)], work, env)
-                    times[name].append(seconds)
-                    if code != 0:
-                        failed.append(f"{name} exit {code}")
+                    run = run_timed([*command, str(domain_path), str(problem_path)], cwd=work, env=env, timeout=600)
+                    times[name].append(run.seconds)
+                    if run.code != 0:
+                        failed.append(f"{name} exit {run.code}")
                     elif name == "relevance":
-                        report = json.loads(out)
+                        report = json.loads(run.stdout)
                         kept = f"{report['objects_kept']}/{report['objects_total']} {report.get('raced') or ''}"
             bare, pure, relevance = (statistics.median(times[name]) for name in commands)
             overhead = pure - bare
@@ -122,7 +112,7 @@ def main() -> int:
     )
     print(f"relevance within pure x 1.1 + 0.3 s: {sum(row[6] for row in rows)} of {len(rows)}")
     ratios = [row[1] / row[3] for row in rows]
-    print(f"bare / relevance, geometric mean: {statistics.geometric_mean(ratios):.2f}")
+    print(f"bare / relevance, geometric mean: {geometric_mean(ratios):.2f}")
     return 1 if any(row[7] for row in rows) else 0
 
 

@@ -46,17 +46,18 @@ from __future__ import annotations
 
 import argparse
 import json
-import math
 import shutil
 import subprocess
 import sys
 import tempfile
-import time
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any
 
-from relevance_plan.batch.suites import SuiteProblem, find_suite_problems
+import corpus
+from base import Laps, Store, add_store_option, geometric_mean, smallest_problems
+
+from relevance_plan.batch.suites import SuiteProblem
 from relevance_plan.errors import RelevancePlanError
 from relevance_plan.generators.padded import pad_with_clones
 from relevance_plan.io import load_domain, load_problem, write_text_atomic
@@ -65,6 +66,7 @@ from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.planning.loop import PlanOptions, plan_task
 from relevance_plan.planning.planners.preparation import prepare_planner
 from relevance_plan.planning.planners.registry import make_planner
+from relevance_plan.planning.race import race_by_default
 from relevance_plan.planning.results import PlanResult, PlanStatus
 
 # (world, how its size is given, sizes, planners)
@@ -92,18 +94,21 @@ def planner_available(name: str) -> str | None:
     if name == "up:enhsp" and shutil.which("java") is None:
         return "no Java runtime"
     try:
-        from relevance_plan.planning.planners.registry import make_planner
-
         make_planner(name, check=True)
     except Exception as error:  # a missing engine: the row says why
         return str(error)
     return None
 
 
-def run(domain: Path, problem: Path, method: str, planner: str, timeout: float):
-    started = time.perf_counter()
-    result = plan_task(domain, problem, PlanOptions(method=method, planner=planner, timeout=timeout, race=False))
-    return result, time.perf_counter() - started
+def timed_plan(
+    domain: Path, problem: Path, options: PlanOptions, store: Store, suite: str, method: str = ""
+) -> tuple[PlanResult, float]:
+    """``plan_task`` timed from outside, the run stored under ``suite`` (and ``method`` when given)."""
+    laps = Laps()
+    result = plan_task(domain, problem, options)
+    seconds = laps.end()["total"]
+    store.add(suite, domain, problem, options, result, method)
+    return result, seconds
 
 
 def run_worlds(argv: list[str]) -> int:
@@ -115,44 +120,55 @@ def run_worlds(argv: list[str]) -> int:
     parser.add_argument("--timeout", type=float, default=60.0)
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--quick", action="store_true", help="the smallest size of each world only")
+    add_store_option(parser)
     args = parser.parse_args(argv)
 
     ratios: dict[str, list[float]] = {}
     print(f"{'world':20} {'planner':9} {'objects':>7} {'pure s':>8} {'relevance s':>11} {'kept':>9} {'pure/rel':>8}")
-    with tempfile.TemporaryDirectory(prefix="bench-temporal-") as scratch:
+    with tempfile.TemporaryDirectory(prefix="bench-temporal-") as scratch, Store(args.store, "bench_temporal") as store:
         for world, flag, sizes, planners in GRID:
             for size in sizes[:1] if args.quick else sizes:
                 domain, problem = generate(world, flag, size, args.seed, Path(scratch))
                 for planner in planners:
-                    missing = planner_available(planner)
-                    if missing:
-                        print(f"{world:20} {planner:9} skipped: {missing}")
-                        continue
-                    try:
-                        pure, pure_time = run(domain, problem, "pure", planner, args.timeout)
-                        rel, rel_time = run(domain, problem, "relevance", planner, args.timeout)
-                    except RelevancePlanError as error:
-                        print(f"{world:20} {planner:9} refused: {error}")
-                        continue
-                    solved = (pure.status is PlanStatus.SOLVED, rel.status is PlanStatus.SOLVED)
-                    pure_cell = f"{pure_time:8.2f}" if solved[0] else f"{pure.status.value:>8}"
-                    rel_cell = f"{rel_time:11.2f}" if solved[1] else f"{rel.status.value:>11}"
-                    kept = f"{rel.objects_kept}/{rel.objects_total}"
-                    ratio = (pure_time if solved[0] else args.timeout) / (rel_time if solved[1] else args.timeout)
-                    if any(solved):
+                    ratio = world_row(world, f"{world}-{size}", domain, problem, planner, args.timeout, store)
+                    if ratio is not None:
                         ratios.setdefault(planner, []).append(ratio)
-                    valid = all(r.valid for r, ok in zip((pure, rel), solved) if ok)
-                    note = "" if valid else "  PLAN NOT VALIDATED"
-                    print(
-                        f"{world:20} {planner:9} {rel.objects_total:7} {pure_cell} {rel_cell} {kept:>9} "
-                        f"{ratio:8.2f}{note}",
-                        flush=True,
-                    )
     print()
     for planner, values in ratios.items():
-        mean = math.exp(sum(math.log(v) for v in values) / len(values))
-        print(f"{planner}: pure / relevance geometric mean {mean:.2f} over {len(values)} problems")
+        print(f"{planner}: pure / relevance geometric mean {geometric_mean(values):.2f} over {len(values)} problems")
     return 0
+
+
+def world_row(
+    world: str, suite: str, domain: Path, problem: Path, planner: str, timeout: float, store: Store
+) -> float | None:
+    """Pure and relevance (no race) on one generated problem, one row printed; pure/relevance when either solved."""
+    missing = planner_available(planner)
+    if missing:
+        print(f"{world:20} {planner:9} skipped: {missing}")
+        return None
+    try:
+        runs = [
+            timed_plan(
+                domain, problem, PlanOptions(method=method, planner=planner, timeout=timeout, race=False), store, suite
+            )
+            for method in ("pure", "relevance")
+        ]
+    except RelevancePlanError as error:
+        print(f"{world:20} {planner:9} refused: {error}")
+        return None
+    (pure, pure_time), (rel, rel_time) = runs
+    solved = (pure.status is PlanStatus.SOLVED, rel.status is PlanStatus.SOLVED)
+    pure_cell = f"{pure_time:8.2f}" if solved[0] else f"{pure.status.value:>8}"
+    rel_cell = f"{rel_time:11.2f}" if solved[1] else f"{rel.status.value:>11}"
+    kept = f"{rel.objects_kept}/{rel.objects_total}"
+    ratio = (pure_time if solved[0] else timeout) / (rel_time if solved[1] else timeout)
+    valid = all(r.valid for r, ok in zip((pure, rel), solved) if ok)
+    note = "" if valid else "  PLAN NOT VALIDATED"
+    print(
+        f"{world:20} {planner:9} {rel.objects_total:7} {pure_cell} {rel_cell} {kept:>9} {ratio:8.2f}{note}", flush=True
+    )
+    return ratio if any(solved) else None
 
 
 # --------------------------------------------------------------------------- the IPC corpus
@@ -163,65 +179,16 @@ CORPUS_PLANNERS = ("lpg", "up:aries", "up:tamer", "up:enhsp", "up:kairos")
 SLOWER_FACTOR = 1.25
 SLOWER_SLACK = 0.5
 LABEL = 52  # the width of the folder column: year/folder
-# Words that begin the part of a folder's name that names a form of its domain (the competition's
-# variants: durations, numbers, STRIPS or ADL, compiled time windows): --one-per-family keeps one
-# folder per track and the name before the first of them.
-FORM_WORDS = frozenset(
-    {
-        "time",
-        "temporal",
-        "metric",
-        "numeric",
-        "complex",
-        "strips",
-        "adl",
-        "fluents",
-        "automatic",
-        "hand",
-        "satisficing",
-        "constraints",
-        "compiled",
-    }
-)
-
-
-def family_of(folder: Path) -> str:
-    """The domain a folder holds a form of: its name up to the first form word, hyphens and a
-    plural 's' dropped (``driver-log-temporal-satisficing`` and ``driverlog-time-automatic`` are
-    both ``driverlog``)."""
-    words = []
-    for word in folder.name.split("-"):
-        if word in FORM_WORDS:
-            break
-        words.append(word)
-    return "".join(words).rstrip("s") or folder.name
-
-
-def one_per_family(chosen: list[tuple[str, Path]]) -> list[tuple[str, Path]]:
-    """Of the (track, folder) pairs in manifest order (oldest competition first), the last of each
-    track and family: the newest competition's form."""
-    newest = {(track, family_of(folder)): (track, folder) for track, folder in chosen}
-    kept = set(newest.values())
-    return [pair for pair in chosen if pair in kept]
 
 
 def corpus_folders(filters: list[str], families: bool) -> list[Path]:
     """The corpus folders of the temporal, numeric and timed-literals tracks, in manifest order,
-    whose path contains one of ``filters`` (all when none)."""
-    sys.path.insert(0, str(Path(__file__).resolve().parent))
-    import corpus
-
+    whose path contains one of ``filters`` (all when none); ``families``: the newest of each domain."""
     chosen = [(track, folder) for track in TRACKS for folder in corpus.folders(track)]
     if families:
-        chosen = one_per_family(chosen)
+        chosen = corpus.newest_of_each_family(chosen)
     root = corpus.corpus_root()
     return [f for _, f in chosen if not filters or any(text in str(f.relative_to(root)) for text in filters)]
-
-
-def smallest_problems(folder: Path, count: int) -> list[SuiteProblem]:
-    """The folder's ``count`` smallest problems (by file size, then name) that have a domain."""
-    found = [entry for entry in find_suite_problems(folder) if entry.domain is not None and entry.error is None]
-    return sorted(found, key=lambda entry: (entry.problem.stat().st_size, entry.problem.name))[:count]
 
 
 @dataclass
@@ -279,12 +246,6 @@ def compact(result: dict[str, Any]) -> dict[str, Any]:
     return {**{key: value for key, value in result.items() if key != "plan"}, "attempt_log": attempts}
 
 
-def timed_plan(domain: Path, problem: Path, options: PlanOptions) -> tuple[PlanResult, float]:
-    started = time.perf_counter()
-    result = plan_task(domain, problem, options)
-    return result, time.perf_counter() - started
-
-
 def accepts(planner: str, domain: Domain, problem: Problem, path: Path) -> str | None:
     """Why ``planner`` refuses this problem (its declared features, through the registry), or None."""
     try:
@@ -298,7 +259,7 @@ def note(message: str) -> None:
     print(message, file=sys.stderr, flush=True)
 
 
-def run_corpus(argv: list[str]) -> int:
+def corpus_arguments(argv: list[str]) -> argparse.Namespace:
     parser = argparse.ArgumentParser(
         prog="bench_temporal.py corpus",
         description="Pure vs relevance (as users get it) on the IPC temporal, numeric and timed-literals "
@@ -329,20 +290,31 @@ def run_corpus(argv: list[str]) -> int:
         metavar="JSON",
         help="only the (problem, planner) pairs whose pure run solved in this earlier --json output",
     )
+    add_store_option(parser)
     args = parser.parse_args(argv)
     if args.oracle and not args.extra:
         parser.error("--oracle needs --extra: the oracle is the problem without its padding")
-    wanted = None
+    args.wanted = None
     if args.pure_solved_in:
         earlier = json.loads(args.pure_solved_in.read_text(encoding="utf-8"))
-        wanted = {(row["folder"], row["problem"], row["planner"]) for row in earlier if row["pure_solved"]}
+        args.wanted = {(row["folder"], row["problem"], row["planner"]) for row in earlier if row["pure_solved"]}
+    args.race = race_by_default("relevance") and not args.no_race
+    return args
 
-    from relevance_plan.planning.race import race_by_default
 
-    race = race_by_default("relevance") and not args.no_race
-    planners = [name.strip() for name in args.planners.split(",") if name.strip()]
+@dataclass
+class Tally:
+    """What the corpus run found besides its rows: refusals, unreadable and unpaddable problems."""
+
+    refused: dict[str, int]
+    unreadable: list[str] = field(default_factory=list)
+    unpaddable: list[str] = field(default_factory=list)
+
+
+def run_corpus(argv: list[str]) -> int:
+    args = corpus_arguments(argv)
     usable = []
-    for name in planners:
+    for name in (name.strip() for name in args.planners.split(",") if name.strip()):
         missing = planner_available(name)
         if missing:
             print(f"# {name} skipped: {missing}")
@@ -351,97 +323,114 @@ def run_corpus(argv: list[str]) -> int:
     folders = corpus_folders(args.folders, args.one_per_family)
     print(
         f"# {len(folders)} folders, planners {', '.join(usable)}; --extra {args.extra} (seed {args.seed}),"
-        f" --timeout {args.timeout:g}, relevance {'with' if race else 'without'} the race"
+        f" --timeout {args.timeout:g}, relevance {'with' if args.race else 'without'} the race"
     )
     header = (
         f"{'folder':58} {'planner':9} {'objects':>7} {'pure s':>8} {'relev. s':>8} {'kept':>7} {'att':>3} {'ratio':>6}"
     )
     print(header, flush=True)
     rows: list[Row] = []
-    refused: dict[str, int] = {name: 0 for name in usable}
-    unreadable: list[str] = []
-    unpaddable: list[str] = []
-    with tempfile.TemporaryDirectory(prefix="bench-temporal-corpus-") as scratch:
+    tally = Tally({name: 0 for name in usable})
+    with (
+        tempfile.TemporaryDirectory(prefix="bench-temporal-corpus-") as scratch,
+        Store(args.store, "bench_temporal") as store,
+    ):
         for folder in folders:
             label = f"{folder.parent.name}/{folder.name}"
             for entry in smallest_problems(folder, args.per_folder):
-                assert entry.domain is not None
-                if wanted is not None and not any(key[:2] == (label, entry.problem.name) for key in wanted):
+                if args.wanted is not None and not any(key[:2] == (label, entry.problem.name) for key in args.wanted):
                     continue
-                try:
-                    domain = load_domain(entry.domain)
-                    problem = load_problem(entry.problem, domain)
-                except RelevancePlanError as error:
-                    unreadable.append(label)
-                    print(f"{label:{LABEL}} our reader refuses it: {error.message[:80]}")
+                read = read_corpus_problem(
+                    entry, label, args, Path(scratch) / f"{len(rows)}-{entry.problem.name}", tally
+                )
+                if read is None:
                     continue
-                path = entry.problem
-                if args.extra:
-                    try:
-                        problem = pad_with_clones(domain, problem, args.extra, seed=args.seed)
-                    except RelevancePlanError as error:
-                        unpaddable.append(label)
-                        print(f"{label:{LABEL}} not padded: {error.message[:80]}")
-                        continue
-                    path = write_text_atomic(
-                        Path(scratch) / f"{len(rows)}-{entry.problem.name}", format_problem(problem)
-                    )
                 for planner in usable:
-                    if wanted is not None and (label, entry.problem.name, planner) not in wanted:
-                        continue
-                    why = accepts(planner, domain, problem, path)
-                    if why is not None:
-                        refused[planner] += 1
-                        note(f"{label} {planner}: refused ({why[:100]})")
-                        continue
-                    note(f"{label} {planner}: pure")
-                    pure, pure_time = timed_plan(
-                        entry.domain, path, PlanOptions(method="pure", planner=planner, timeout=args.timeout)
-                    )
-                    note(f"{label} {planner}: relevance")
-                    rel, rel_time = timed_plan(
-                        entry.domain, path, PlanOptions(planner=planner, timeout=args.timeout, race=race)
-                    )
-                    oracle = oracle_time = None
-                    if args.oracle:
-                        note(f"{label} {planner}: oracle (the problem as published)")
-                        oracle, oracle_time = timed_plan(
-                            entry.domain,
-                            entry.problem,
-                            PlanOptions(method="pure", planner=planner, timeout=args.timeout),
-                        )
-                    row = Row(
-                        folder=label,
-                        problem=entry.problem.name,
-                        planner=planner,
-                        objects=len(problem.objects),
-                        extra=args.extra,
-                        pure=compact(pure.to_json()),
-                        relevance=compact(rel.to_json()),
-                        pure_seconds=pure_time,
-                        relevance_seconds=rel_time,
-                        pure_solved=pure.status is PlanStatus.SOLVED,
-                        relevance_solved=rel.status is PlanStatus.SOLVED,
-                        unvalidated=[
-                            method
-                            for method, r in (("pure", pure), ("relevance", rel), ("oracle", oracle))
-                            if r is not None and r.status is PlanStatus.SOLVED and not r.valid
-                        ],
-                        oracle=None if oracle is None else compact(oracle.to_json()),
-                        oracle_seconds=oracle_time,
-                        oracle_solved=oracle is not None and oracle.status is PlanStatus.SOLVED,
-                    )
-                    rows.append(row)
-                    print(format_row(row, args.timeout), flush=True)
-    print_summary(rows, usable, refused, unreadable, unpaddable, args.timeout)
+                    if args.wanted is None or (label, entry.problem.name, planner) in args.wanted:
+                        row = corpus_row(entry, label, read, planner, args, store, tally)
+                        if row is not None:
+                            rows.append(row)
+                            print(format_row(row, args.timeout), flush=True)
+    print_summary(rows, usable, tally, args.timeout)
     if args.json:
         lines = ",\n".join(json.dumps(asdict(row)) for row in rows)
         args.json.write_text(f"[\n{lines}\n]\n", encoding="utf-8")
     return 1 if any(row.unvalidated for row in rows) else 0
 
 
-def geometric_mean(values: list[float]) -> float:
-    return math.exp(sum(math.log(v) for v in values) / len(values)) if values else float("nan")
+def read_corpus_problem(
+    entry: SuiteProblem, label: str, args: argparse.Namespace, padded: Path, tally: Tally
+) -> tuple[Domain, Problem, Path] | None:
+    """(domain, problem, the file to plan): the problem as published, or padded into ``padded``; None
+    (and a line saying why) when our reader refuses it or it has nothing to clone."""
+    assert entry.domain is not None
+    try:
+        domain = load_domain(entry.domain)
+        problem = load_problem(entry.problem, domain)
+    except RelevancePlanError as error:
+        tally.unreadable.append(label)
+        print(f"{label:{LABEL}} our reader refuses it: {error.message[:80]}")
+        return None
+    if not args.extra:
+        return domain, problem, entry.problem
+    try:
+        problem = pad_with_clones(domain, problem, args.extra, seed=args.seed)
+    except RelevancePlanError as error:
+        tally.unpaddable.append(label)
+        print(f"{label:{LABEL}} not padded: {error.message[:80]}")
+        return None
+    return domain, problem, write_text_atomic(padded, format_problem(problem))
+
+
+def corpus_row(
+    entry: SuiteProblem,
+    label: str,
+    read: tuple[Domain, Problem, Path],
+    planner: str,
+    args: argparse.Namespace,
+    store: Store,
+    tally: Tally,
+) -> Row | None:
+    """Pure, then relevance (and with --oracle the problem as published) with one planner; None when its
+    features refuse the problem."""
+    assert entry.domain is not None
+    domain, problem, path = read
+    why = accepts(planner, domain, problem, path)
+    if why is not None:
+        tally.refused[planner] += 1
+        note(f"{label} {planner}: refused ({why[:100]})")
+        return None
+    note(f"{label} {planner}: pure")
+    pure_options = PlanOptions(method="pure", planner=planner, timeout=args.timeout)
+    pure, pure_time = timed_plan(entry.domain, path, pure_options, store, label)
+    note(f"{label} {planner}: relevance")
+    relevance_options = PlanOptions(planner=planner, timeout=args.timeout, race=args.race)
+    rel, rel_time = timed_plan(entry.domain, path, relevance_options, store, label)
+    oracle = oracle_time = None
+    if args.oracle:
+        note(f"{label} {planner}: oracle (the problem as published)")
+        oracle, oracle_time = timed_plan(entry.domain, entry.problem, pure_options, store, label, "oracle")
+    return Row(
+        folder=label,
+        problem=entry.problem.name,
+        planner=planner,
+        objects=len(problem.objects),
+        extra=args.extra,
+        pure=compact(pure.to_json()),
+        relevance=compact(rel.to_json()),
+        pure_seconds=pure_time,
+        relevance_seconds=rel_time,
+        pure_solved=pure.status is PlanStatus.SOLVED,
+        relevance_solved=rel.status is PlanStatus.SOLVED,
+        unvalidated=[
+            method
+            for method, r in (("pure", pure), ("relevance", rel), ("oracle", oracle))
+            if r is not None and r.status is PlanStatus.SOLVED and not r.valid
+        ],
+        oracle=None if oracle is None else compact(oracle.to_json()),
+        oracle_seconds=oracle_time,
+        oracle_solved=oracle is not None and oracle.status is PlanStatus.SOLVED,
+    )
 
 
 def format_row(row: Row, timeout: float) -> str:
@@ -471,30 +460,21 @@ def _first_kept(result: dict[str, Any]) -> int:
     return int(result["objects_total"])
 
 
-def print_summary(
-    rows: list[Row],
-    planners: list[str],
-    refused: dict[str, int],
-    unreadable: list[str],
-    unpaddable: list[str],
-    timeout: float,
-) -> None:
+def print_summary(rows: list[Row], planners: list[str], tally: Tally, timeout: float) -> None:
     print()
-    if unreadable:
-        print(f"# our reader refuses {len(unreadable)} problems: {', '.join(unreadable)}")
-    if unpaddable:
-        print(f"# {len(unpaddable)} problems have no object to clone: {', '.join(unpaddable)}")
+    if tally.unreadable:
+        print(f"# our reader refuses {len(tally.unreadable)} problems: {', '.join(tally.unreadable)}")
+    if tally.unpaddable:
+        print(f"# {len(tally.unpaddable)} problems have no object to clone: {', '.join(tally.unpaddable)}")
     for planner in planners:
         mine = [row for row in rows if row.planner == planner]
         counted = [row for row in mine if row.counted]
-        mean = (
-            math.exp(sum(math.log(row.ratio(timeout)) for row in counted) / len(counted)) if counted else float("nan")
-        )
+        mean = geometric_mean(row.ratio(timeout) for row in counted)
         slower = [row for row in counted if row.slower(timeout)]
         pure_only = sum(1 for row in counted if row.pure_solved and not row.relevance_solved)
         rel_only = sum(1 for row in counted if row.relevance_solved and not row.pure_solved)
         print(
-            f"{planner}: {len(mine)} rows ({refused[planner]} problems refused by its features),"
+            f"{planner}: {len(mine)} rows ({tally.refused[planner]} problems refused by its features),"
             f" {len(mine) - len(counted)} solved by neither; pure/relevance geometric mean {mean:.2f}"
             f" over {len(counted)}; relevance slower (> {SLOWER_FACTOR}x + {SLOWER_SLACK} s) on {len(slower)};"
             f" solved by pure only {pure_only}, by relevance only {rel_only}"

@@ -35,11 +35,12 @@ import argparse
 import json
 import random
 import sys
-import time
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
-from relevance_plan.batch.suites import find_suite_problems
+import corpus
+from base import Laps, suite_entries
+
 from relevance_plan.errors import RelevancePlanError
 from relevance_plan.io import load_task
 from relevance_plan.pddl.model import Domain, Problem, all_objects
@@ -54,7 +55,7 @@ from relevance_plan.planning.validate import (
     validate_with_val,
 )
 
-DEFAULT_ROOT = Path(__file__).resolve().parent / "corpus"
+DEFAULT_ROOT = corpus.corpus_root()
 # Fast Downward first for numeric domains too: it takes action costs read from static functions.
 PLANNERS = {
     "classical": ("fast-downward",),
@@ -111,11 +112,7 @@ class Case:
 
 def manifest_tracks(root: Path) -> dict[Path, str]:
     """Folder -> track, from the corpus manifest when ``root`` has one (``benchmarks/corpus``)."""
-    manifest = root / "MANIFEST.json"
-    if not manifest.is_file():
-        return {}
-    entries = json.loads(manifest.read_text(encoding="utf-8")).get("folders", [])
-    return {(root / entry["path"]).resolve(): entry["track"] for entry in entries}
+    return corpus.tracks(root) if (root / corpus.MANIFEST).is_file() else {}
 
 
 def domain_folders(roots: list[Path]) -> list[tuple[str, str, list]]:
@@ -128,7 +125,7 @@ def domain_folders(roots: list[Path]) -> list[tuple[str, str, list]]:
             if folder.name in ("instances", "problems", "domains"):
                 continue
             try:
-                problems = [p for p in find_suite_problems(folder) if p.domain is not None and p.error is None]
+                problems = suite_entries(folder)
             except RelevancePlanError:
                 continue
             if problems:
@@ -229,7 +226,7 @@ def run(args) -> dict:
         folders = folders[: args.limit]
     for track, name, problems in folders:
         item = choose_problem(problems, args.problem)
-        started = time.monotonic()
+        laps = Laps()
         try:
             domain, problem = load_task(item.domain, item.problem)
         except RelevancePlanError as error:
@@ -268,7 +265,7 @@ def run(args) -> dict:
         print(
             f"[{track}] {name} ({item.problem.name}, {planner}, {len(plan)} steps):"
             f" {sum(c.agrees() is True for c in mine)} of {len(mine)} cases agree"
-            f" ({time.monotonic() - started:.1f} s)",
+            f" ({laps.end()['total']:.1f} s)",
             file=sys.stderr,
         )
     return summarize(cases, skipped, plans)

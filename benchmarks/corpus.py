@@ -9,9 +9,10 @@ sha256, size and track (``corpus/README.md`` says more).
     python benchmarks/corpus.py verify --json     # {"files": N, "domains": N, "tracks": {...}}
     python benchmarks/corpus.py list --track temporal
 
-Other benchmarks import ``corpus_root()`` and ``folders(track)``: a folder
-is a path ``relevance_plan.io.find_suite_problems`` reads as it is.
-Standard library only.
+Other benchmarks import ``corpus_root()``, ``folders(track)`` and
+``newest_of_each_family``: a folder is a path
+``relevance_plan.io.find_suite_problems`` reads as it is.  Standard library
+only.
 """
 
 from __future__ import annotations
@@ -61,6 +62,53 @@ def folders(track: str | None = None, root: Path | None = None) -> list[Path]:
     """The domain folders of the corpus (of ``track`` when given), in manifest order."""
     root = root or corpus_root()
     return [root / entry["path"] for entry in manifest(root)["folders"] if track is None or entry["track"] == track]
+
+
+# Words that begin the part of a folder's name that names a form of its domain (the competition's
+# variants: durations, numbers, STRIPS or ADL, compiled time windows).
+FORM_WORDS = frozenset(
+    {
+        "time",
+        "temporal",
+        "metric",
+        "numeric",
+        "complex",
+        "strips",
+        "adl",
+        "fluents",
+        "automatic",
+        "hand",
+        "satisficing",
+        "constraints",
+        "compiled",
+    }
+)
+
+
+def family_of(folder: Path) -> str:
+    """The domain a folder holds a form of: its name up to the first form word, hyphens and a
+    plural 's' dropped (``driver-log-temporal-satisficing`` and ``driverlog-time-automatic`` are
+    both ``driverlog``)."""
+    words = []
+    for word in folder.name.split("-"):
+        if word in FORM_WORDS:
+            break
+        words.append(word)
+    return "".join(words).rstrip("s") or folder.name
+
+
+def newest_of_each_family(chosen: list[tuple[str, Path]]) -> list[tuple[str, Path]]:
+    """Of (track, folder) pairs in manifest order (oldest competition first), the last of each
+    track and family: the newest competition's form."""
+    newest = {(track, family_of(folder)): (track, folder) for track, folder in chosen}
+    kept = set(newest.values())
+    return [pair for pair in chosen if pair in kept]
+
+
+def tracks(root: Path | None = None) -> dict[Path, str]:
+    """Folder (resolved) -> its track, for every domain folder of the manifest."""
+    root = root or corpus_root()
+    return {(root / entry["path"]).resolve(): entry["track"] for entry in manifest(root)["folders"]}
 
 
 def known_unreadable(root: Path | None = None) -> dict[str, str]:

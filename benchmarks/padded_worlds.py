@@ -15,12 +15,8 @@ look at or to hand to a planner; it measures nothing and takes no time.
 from __future__ import annotations
 
 import argparse
-import sys
-from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
-
-from relevance_plan.generators.padded import (  # noqa: E402
+from relevance_plan.generators.padded import (
     BLOCKSWORLD_DOMAIN,
     GRIPPER_DOMAIN,
     blocksworld_problem,

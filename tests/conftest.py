@@ -7,6 +7,10 @@ import sys
 import pytest
 from support import COFFEE_DOMAIN, DOMAINS, REPO
 
+# The benchmarks' shared module and scripts are run from their folder; the tests that import them find
+# them here (the one place that puts benchmarks/ on the path).
+sys.path.insert(0, str(REPO / "benchmarks"))
+
 
 def pytest_addoption(parser):
     parser.addoption("--runslow", action="store_true", default=False, help="run tests marked slow")

@@ -18,6 +18,8 @@ import textwrap
 import time
 from pathlib import Path
 
+import pytest
+
 REPO = Path(__file__).resolve().parent.parent
 DOMAINS = REPO / "domains"
 PROBLEMS = REPO / "problems"
@@ -67,6 +69,21 @@ def write_file(directory: Path, name: str, data: str | bytes) -> Path:
     else:
         path.write_text(data)
     return path
+
+
+def write_task(directory: Path, name: str, domain: str, problem: str) -> tuple[Path, Path]:
+    """(``NAME.pddl``, ``NAME-1.pddl``) in ``directory``, holding the domain and the problem text."""
+    return write_file(directory, f"{name}.pddl", domain), write_file(directory, f"{name}-1.pddl", problem)
+
+
+def task_fixture(name: str, domain: str, problem: str):
+    """A fixture giving ``write_task``'s two files in the test's ``tmp_path``."""
+
+    @pytest.fixture
+    def files(tmp_path: Path) -> tuple[Path, Path]:
+        return write_task(tmp_path, name, domain, problem)
+
+    return files
 
 
 def alias_bomb(levels: int = 9) -> bytes:
@@ -148,6 +165,16 @@ def make_row(
         "finished_at": "2026-11-22T00:00:00.000+00:00",
         "result_json": "{}",
     }
+
+
+def write_store(path: Path, rows) -> Path:
+    """A new results store at ``path`` holding ``rows`` (each stored: no two share a key)."""
+    from relevance_plan.batch.store import ResultStore
+
+    with ResultStore(path) as store:
+        for row in rows:
+            assert store.add(row)
+    return path
 
 
 # --------------------------------------------------------------------------- other processes
@@ -339,6 +366,11 @@ NOISE = """(define (domain noise)
 """
 
 
+def define_problem(name: str, domain: str, objects: str, init: str, goal: str) -> str:
+    """A problem's text on one line, from its parts' texts."""
+    return f"(define (problem {name}) (:domain {domain}) (:objects {objects}) (:init {init}) (:goal {goal}))"
+
+
 def lift_problem(seed: int, untyped: bool = False) -> str:
     rng = random.Random(seed)
     passengers, floors = 12, 24
@@ -358,8 +390,7 @@ def lift_problem(seed: int, untyped: bool = False) -> str:
         objects = " ".join(f"p{i}" for i in range(passengers)) + " - passenger "
         objects += " ".join(f"f{i}" for i in range(floors)) + " - floor"
         goal = "(forall (?p - passenger) (served ?p))"
-    header = f"(define (problem lift-{seed}) (:domain lift-adl)"
-    return f"{header} (:objects {objects}) (:init {' '.join(init)}) (:goal {goal}))"
+    return define_problem(f"lift-{seed}", "lift-adl", objects, " ".join(init), goal)
 
 
 def rooms_problem(seed: int) -> str:
@@ -368,10 +399,8 @@ def rooms_problem(seed: int) -> str:
     doors = [f"(door r{i} r{i + 1}) (door r{i + 1} r{i})" for i in range(7)]
     items = [f"(in i{k} r{rng.randrange(8)})" for k in range(6)]
     objects = f"bot - robot {' '.join(rooms)} - room {' '.join(f'i{k}' for k in range(6))} - item"
-    return (
-        f"(define (problem rooms-{seed}) (:domain rooms) (:objects {objects})"
-        f" (:init (at bot r0) {' '.join(doors)} {' '.join(items)}) (:goal (sealed r{rng.randrange(2, 8)})))"
-    )
+    init = f"(at bot r0) {' '.join(doors)} {' '.join(items)}"
+    return define_problem(f"rooms-{seed}", "rooms", objects, init, f"(sealed r{rng.randrange(2, 8)})")
 
 
 def scene_problem(seed: int, timed: str = "") -> str:
@@ -390,10 +419,8 @@ def scene_problem(seed: int, timed: str = "") -> str:
             init.append(f"(item-at i{k} p{rng.randrange(10)})")
     objects = f"bot - agent {' '.join(places)} - place {' '.join(where)} - receptacle"
     objects += " " + " ".join(f"i{k}" for k in range(8)) + " - item"
-    return (
-        f"(define (problem scene-{seed}) (:domain scene) (:objects {objects})"
-        f" (:init {' '.join(init)} {timed}) (:goal (holding bot i{2 * rng.randrange(4)})))"
-    )
+    goal = f"(holding bot i{2 * rng.randrange(4)})"
+    return define_problem(f"scene-{seed}", "scene", objects, f"{' '.join(init)} {timed}", goal)
 
 
 def noise_problem(seed: int) -> str:
@@ -406,10 +433,7 @@ def noise_problem(seed: int) -> str:
     adj = " ".join(f"(adj {a} {b}) (adj {b} {a})" for a, b in links)
     near = " ".join(f"(near s{k} c{rng.randrange(2, 8)})" for k in range(3))
     objects = f"a - agent {' '.join(cells)} - cell s0 s1 s2 z0 - sleeper"
-    return (
-        f"(define (problem noise-{seed}) (:domain noise) (:objects {objects})"
-        f" (:init (at a c0) {adj} {near}) (:goal (and (at a c9) (not (woken)))))"
-    )
+    return define_problem(f"noise-{seed}", "noise", objects, f"(at a c0) {adj} {near}", "(and (at a c9) (not (woken)))")
 
 
 def guarded_problem(seed: int) -> str:
@@ -419,9 +443,8 @@ def guarded_problem(seed: int) -> str:
     adj += [f"(adj c{j} c{i})" for i in range(20) for j in (i + 1, i + 5) if j < 20]
     guards = [f"(watch g{k} c{rng.randrange(1, 19)})" for k in range(6)]
     objects = f"a - agent {' '.join(cells)} - cell {' '.join(f'g{k}' for k in range(6))} - guard"
-    return (
-        f"(define (problem guarded-{seed}) (:domain guarded) (:objects {objects})"
-        f" (:init (at a c0) {' '.join(adj)} {' '.join(guards)}) (:goal (at a c19)))"
+    return define_problem(
+        f"guarded-{seed}", "guarded", objects, f"(at a c0) {' '.join(adj)} {' '.join(guards)}", "(at a c19)"
     )
 
 
@@ -431,10 +454,8 @@ def alarm_problem(seed: int) -> str:
     links = [f"(link s{i} s{i + 1})" for i in range(9)] + ["(link s0 s9)"]
     alarms = [f"(armed a{k}) (covers a{k} s{rng.randrange(1, 9)})" for k in range(5)]
     objects = f"t - thief {' '.join(spots)} - spot {' '.join(f'a{k}' for k in range(5))} - alarm"
-    return (
-        f"(define (problem alarm-{seed}) (:domain alarm) (:objects {objects})"
-        f" (:init (at t s0) {' '.join(links)} {' '.join(alarms)}) (:goal (and (took t) (at t s9))))"
-    )
+    init = f"(at t s0) {' '.join(links)} {' '.join(alarms)}"
+    return define_problem(f"alarm-{seed}", "alarm", objects, init, "(and (took t) (at t s9))")
 
 
 WORLDS = {

@@ -15,7 +15,7 @@ import time
 from pathlib import Path
 
 import pytest
-from support import REPO, TOOL, invoke, make_row, process_gone
+from support import REPO, TOOL, invoke, make_row, process_gone, write_store
 
 from relevance_plan.batch.compare import compare
 from relevance_plan.batch.executors import connect_scheduler
@@ -47,10 +47,7 @@ def suite(tmp_path):
 @pytest.fixture
 def populated_store(tmp_path):
     """A valid store holding one hand-made row."""
-    path = tmp_path / "results.sqlite"
-    with ResultStore(path) as store:
-        store.add(make_row("old", "a", "pure"))
-    return path
+    return write_store(tmp_path / "results.sqlite", [make_row("old", "a", "pure")])
 
 
 def assert_one_line_error(result, code, fragment):
@@ -292,6 +289,11 @@ def start_compare(suite, store, *extra, env=None):
     )
 
 
+def run_compare(suite, store, *extra, timeout: float) -> subprocess.CompletedProcess:
+    command = [*TOOL, "compare", str(suite), "--store", str(store), *map(str, extra)]
+    return subprocess.run(command, cwd=REPO, capture_output=True, text=True, timeout=timeout)
+
+
 @pytest.mark.planner
 def test_resume_after_kill_9_loses_nothing_and_repeats_nothing(tmp_path):
     suite = tiny_suite(tmp_path / "coffee-simple", count=3)
@@ -314,13 +316,7 @@ def test_resume_after_kill_9_loses_nothing_and_repeats_nothing(tmp_path):
     survivors = read_store(store)
     assert 2 <= len(survivors) < 12, "the first run should have been killed half-way"
 
-    finished = subprocess.run(
-        [*TOOL, "compare", str(suite), "--store", str(store), *map(str, arguments)],
-        cwd=REPO,
-        capture_output=True,
-        text=True,
-        timeout=300,
-    )
+    finished = run_compare(suite, store, *arguments, timeout=300)
     assert finished.returncode == 0, finished.stderr
     done = len(survivors)
     assert f"12 jobs: {done} already stored, {12 - done} run" in finished.stdout
@@ -334,13 +330,7 @@ def test_resume_after_kill_9_loses_nothing_and_repeats_nothing(tmp_path):
     # The rows committed before the kill are untouched: same rowid, same finish time, same result.
     assert rows[:done] == survivors
 
-    third = subprocess.run(
-        [*TOOL, "compare", str(suite), "--store", str(store), *map(str, arguments)],
-        cwd=REPO,
-        capture_output=True,
-        text=True,
-        timeout=120,
-    )
+    third = run_compare(suite, store, *arguments, timeout=120)
     assert "12 jobs: 12 already stored, 0 run" in third.stdout
     assert read_store(store) == rows
 

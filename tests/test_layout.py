@@ -113,6 +113,37 @@ def test_plan_compare_and_the_up_engine_make_the_same_attempts(hard_gripper, tmp
     assert result.metrics["objects_kept"] == str(planned.objects_kept)
 
 
+# --------------------------------------------------------------------------- function lengths
+
+
+def long_functions(*folders: str) -> list[str]:
+    """What ``.ci/function_lengths.py`` (the check ``.ci/run`` makes) reports for ``folders``."""
+    done = subprocess.run(
+        [sys.executable, str(REPO / ".ci" / "function_lengths.py"), *folders],
+        cwd=REPO,
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
+    assert done.returncode in (0, 1), done.stderr
+    return done.stdout.splitlines()
+
+
+def test_no_function_of_the_package_is_over_80_lines():
+    offenders = long_functions("relevance_plan")
+    assert offenders == [], "functions over 80 lines:\n" + "\n".join(offenders)
+
+
+def test_no_function_of_the_tests_or_the_benchmarks_is_over_80_lines():
+    offenders = long_functions("tests", "benchmarks")
+    assert offenders == [], "functions over 80 lines:\n" + "\n".join(offenders)
+
+
+def test_the_length_check_finds_a_long_function(tmp_path):
+    (tmp_path / "long.py").write_text("def long():\n" + "    x = 1\n" * 80 + "\n\ndef short():\n    pass\n")
+    assert long_functions(str(tmp_path)) == [f"{tmp_path / 'long.py'}:1 long (81 lines)"]
+
+
 # --------------------------------------------------------------------------- a regular install
 
 

@@ -14,7 +14,7 @@ import textwrap
 from pathlib import Path
 
 import pytest
-from support import one_line_error, run
+from support import one_line_error, run, task_fixture
 
 from relevance_plan.errors import PlannerError, UnsupportedFeatureError
 from relevance_plan.exitcodes import ExitCode
@@ -71,20 +71,10 @@ def stub(tmp_path: Path, *steps: str) -> str:
     return "cmd:" + script(tmp_path, "stub-planner", lines) + " {domain} {problem}"
 
 
-@pytest.fixture
-def tank_files(tmp_path):
-    domain, problem = tmp_path / "tank.pddl", tmp_path / "tank-1.pddl"
-    domain.write_text(TANK_DOMAIN)
-    problem.write_text(TANK_PROBLEM)
-    return domain, problem
+tank_files = task_fixture("tank", TANK_DOMAIN, TANK_PROBLEM)
 
 
-@pytest.fixture
-def move_files(tmp_path):
-    domain, problem = tmp_path / "move.pddl", tmp_path / "move-1.pddl"
-    domain.write_text(MOVE_DOMAIN)
-    problem.write_text(MOVE_PROBLEM)
-    return domain, problem
+move_files = task_fixture("move", MOVE_DOMAIN, MOVE_PROBLEM)
 
 
 # --------------------------------------------------------------------------- plan: input the reader refuses

@@ -270,22 +270,20 @@ def test_an_external_command_is_classified_by_its_exit_and_output():
 
 
 @pytest.mark.planner
-def test_external_command_plan_is_validated_on_the_original(tmp_path, coffee_files):
-    domain, problem = coffee_files
-    planner = "cmd:" + planner_script(tmp_path, "fd-stdout", FD_ON_STDOUT) + " {domain} {problem}"
+@pytest.mark.parametrize(
+    "files, body, arguments",
+    [
+        ("coffee_files", FD_ON_STDOUT, "{domain} {problem}"),  # the plan on standard output
+        ("gripper_files", FD_TO_FILE, "{domain} {problem} {plan}"),  # a classic problem, the plan in a file
+    ],
+)
+def test_an_external_command_s_plan_is_validated_on_the_original(tmp_path, request, files, body, arguments):
+    domain, problem = request.getfixturevalue(files)
+    planner = f"cmd:{planner_script(tmp_path, 'external', body)} {arguments}"
     result = plan_task(domain, problem, PlanOptions(planner=planner, timeout=60))
     assert result.status is PlanStatus.SOLVED, result.message
     assert result.valid and result.planner == planner
     assert result.objects_kept < result.objects_total
-
-
-@pytest.mark.planner
-def test_external_command_on_a_classic_problem_with_a_plan_file(tmp_path, gripper_files):
-    domain, problem = gripper_files
-    planner = "cmd:" + planner_script(tmp_path, "fd-file", FD_TO_FILE) + " {domain} {problem} {plan}"
-    result = plan_task(domain, problem, PlanOptions(planner=planner, timeout=60))
-    assert result.status is PlanStatus.SOLVED, result.message
-    assert result.valid and result.objects_kept < result.objects_total
 
 
 @pytest.mark.planner

@@ -83,20 +83,25 @@ def _start_plan(long_problem, tmp_path):
     return process, workdir
 
 
-@pytest.mark.planner
-@pytest.mark.parametrize("signum", [signal.SIGTERM, signal.SIGHUP, signal.SIGINT])
-def test_a_signal_during_plan_stops_every_process_and_cleans_up(long_problem, tmp_path, signum):
-    process, workdir = _start_plan(long_problem, tmp_path)
-    planners = _planner_processes(str(long_problem[1].parent))
-    assert planners
+def _interrupt(process: subprocess.Popen, signum: int, planners: list[int], workdir: Path, wait: float) -> None:
+    """Send ``signum`` to the tool: it ends interrupted, in one line, its planners and working folder gone."""
     os.kill(process.pid, signum)
-    _, stderr = process.communicate(timeout=20)
+    _, stderr = process.communicate(timeout=wait)
     assert process.returncode == ExitCode.INTERRUPTED
     assert "interrupted" in one_line_error(stderr.decode())
     time.sleep(0.2)
     # Killed processes may stay zombies until init reaps them; none may still run.
     assert [p for p in _session_processes(process.pid) + planners if running(p)] == []
     assert not workdir.exists()
+
+
+@pytest.mark.planner
+@pytest.mark.parametrize("signum", [signal.SIGTERM, signal.SIGHUP, signal.SIGINT])
+def test_a_signal_during_plan_stops_every_process_and_cleans_up(long_problem, tmp_path, signum):
+    process, workdir = _start_plan(long_problem, tmp_path)
+    planners = _planner_processes(str(long_problem[1].parent))
+    assert planners
+    _interrupt(process, signum, planners, workdir, wait=20)
     assert not (tmp_path / "plan").exists()
 
 
@@ -118,13 +123,7 @@ def test_sighup_during_compare_stops_the_batch_and_its_planners(long_problem, tm
     planners = _planner_processes(marker)
     (workdir,) = _planner_workdirs(marker)
     assert planners
-    os.kill(process.pid, signal.SIGHUP)
-    _, stderr = process.communicate(timeout=40)
-    assert process.returncode == ExitCode.INTERRUPTED
-    assert "interrupted" in one_line_error(stderr.decode())
-    time.sleep(0.2)
-    assert [p for p in _session_processes(process.pid) + planners if running(p)] == []
-    assert not workdir.exists()
+    _interrupt(process, signal.SIGHUP, planners, workdir, wait=40)
 
 
 @pytest.mark.planner

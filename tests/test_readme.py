@@ -79,7 +79,16 @@ def test_every_package_path_the_docs_name_exists():
             assert (REPO / "relevance_plan" / path).exists(), f"{document.name}: {path}"
 
 
-@pytest.mark.parametrize("script", sorted(p.name for p in (REPO / "benchmarks").glob("*.py")))
+BENCHMARK_SCRIPTS = sorted(
+    path.name for path in (REPO / "benchmarks").glob("*.py") if 'if __name__ == "__main__"' in path.read_text()
+)
+
+
+def test_the_benchmarks_shared_module_is_the_only_one_that_is_not_a_script():
+    assert set(BENCHMARK_SCRIPTS) == {path.name for path in (REPO / "benchmarks").glob("*.py")} - {"base.py"}
+
+
+@pytest.mark.parametrize("script", BENCHMARK_SCRIPTS)
 def test_every_benchmark_script_answers_help_without_running(script):
     done = subprocess.run(
         [sys.executable, str(REPO / "benchmarks" / script), "--help"],

@@ -8,7 +8,7 @@ import json
 import sys
 
 import pytest
-from support import TIMEOUT, invoke, make_row
+from support import TIMEOUT, invoke, make_row, write_store
 
 from relevance_plan.batch.plots import write_plots
 from relevance_plan.batch.report import JOB_FIELDS, build_report, format_report, job_time
@@ -58,11 +58,7 @@ def known_rows():
 
 @pytest.fixture
 def known_store(tmp_path):
-    path = tmp_path / "known.sqlite"
-    with ResultStore(path) as store:
-        for row in known_rows():
-            assert store.add(row)
-    return path
+    return write_store(tmp_path / "known.sqlite", known_rows())
 
 
 def stored_rows(path):
@@ -295,11 +291,7 @@ def per_job_store(tmp_path):
     rows[0] = {**rows[0], "result_json": json.dumps({"validation_time": 0.125})}
     config = json.loads(rows[1]["config_json"])
     rows[1] = {**rows[1], "config_json": json.dumps({**config, "planner": "up:pyperplan"}, sort_keys=True)}
-    path = tmp_path / "jobs.sqlite"
-    with ResultStore(path) as store:
-        for row in rows:
-            store.add(row)
-    return path
+    return write_store(tmp_path / "jobs.sqlite", rows)
 
 
 def test_report_json_rows_round_trip_to_the_store_rows(tmp_path):

@@ -10,10 +10,9 @@ import sys
 from html.parser import HTMLParser
 
 import pytest
-from support import invoke, make_row
+from support import invoke, make_row, write_store
 
 from relevance_plan.batch.html_report import format_html
-from relevance_plan.batch.store import ResultStore
 from relevance_plan.exitcodes import ExitCode
 
 HOSTILE = "<script>alert('x')</script> & co"
@@ -64,11 +63,7 @@ def parsed(text: str) -> Page:
 
 @pytest.fixture
 def page_store(tmp_path):
-    path = tmp_path / "results.sqlite"
-    with ResultStore(path) as store:
-        for row in page_rows():
-            store.add(row)
-    return path
+    return write_store(tmp_path / "results.sqlite", page_rows())
 
 
 def test_the_page_holds_a_table_per_suite_with_escaped_text_and_no_outside_reference():

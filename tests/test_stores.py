@@ -120,19 +120,21 @@ def read_only_store(tmp_path: Path) -> tuple[Path, Path | None]:
     return store, None
 
 
-def store_in_read_only_folder(tmp_path: Path) -> tuple[Path, Path | None]:
+def _locked_folder(tmp_path: Path, store: bool) -> tuple[Path, Path | None]:
+    """A read-only folder, holding a store (``store``) or where a new one would go."""
     folder = tmp_path / "locked"
     folder.mkdir()
-    store = populated_store(folder / "results.sqlite")
+    path = populated_store(folder / "results.sqlite") if store else folder / "results.sqlite"
     folder.chmod(0o555)
-    return store, None
+    return path, None
+
+
+def store_in_read_only_folder(tmp_path: Path) -> tuple[Path, Path | None]:
+    return _locked_folder(tmp_path, store=True)
 
 
 def new_store_in_read_only_folder(tmp_path: Path) -> tuple[Path, Path | None]:
-    folder = tmp_path / "locked"
-    folder.mkdir()
-    folder.chmod(0o555)
-    return folder / "results.sqlite", None
+    return _locked_folder(tmp_path, store=False)
 
 
 def store_on_read_only_file_system(tmp_path: Path) -> tuple[Path, Path | None]:

@@ -43,80 +43,51 @@ def write_layout(root: Path, files: dict[str, str]) -> None:
         path.write_text(GRIPPER if kind == "domain" else gripper_problem(int(kind), name))
 
 
-# (files, the folder given, expected suite name, expected (problem, domain) pairs relative to the root)
+def layout(given: str, name: str, *pairs: tuple[str, str]) -> tuple:
+    """(files, the folder given, expected suite name, expected (problem, domain) pairs relative to the root):
+    the files are each pair's domain and problem (the n-th problem a gripper problem of n balls)."""
+    files = {}
+    for number, (problem, domain) in enumerate(pairs, 1):
+        files[domain] = "domain"
+        files[problem] = str(number)
+    return files, given, name, list(pairs)
+
+
 LAYOUTS = {
-    "one-domain-per-suite": (
-        {"s/domain.pddl": "domain", "s/p01.pddl": "1", "s/p02.pddl": "2"},
-        "s",
-        "s",
-        [("s/p01.pddl", "s/domain.pddl"), ("s/p02.pddl", "s/domain.pddl")],
-    ),
-    "problem-domain-suffix": (
-        {"s/p01-domain.pddl": "domain", "s/p01.pddl": "1", "s/p02_domain.pddl": "domain", "s/p02.pddl": "2"},
-        "s",
-        "s",
-        [("s/p01.pddl", "s/p01-domain.pddl"), ("s/p02.pddl", "s/p02_domain.pddl")],
-    ),
-    "domain-problem-prefix": (
-        {"s/domain_p01.pddl": "domain", "s/p01.pddl": "1", "s/domain-p02.pddl": "domain", "s/p02.pddl": "2"},
-        "s",
-        "s",
-        [("s/p01.pddl", "s/domain_p01.pddl"), ("s/p02.pddl", "s/domain-p02.pddl")],
-    ),
-    "numbered-domains": (
-        {"s/domain-01.pddl": "domain", "s/p01.pddl": "1", "s/domain-02.pddl": "domain", "s/p02.pddl": "2"},
-        "s",
-        "s",
-        [("s/p01.pddl", "s/domain-01.pddl"), ("s/p02.pddl", "s/domain-02.pddl")],
-    ),
-    "d-and-p-by-content": (
-        {"s/d01.pddl": "domain", "s/p01.pddl": "1", "s/d02.pddl": "domain", "s/p02.pddl": "2"},
-        "s",
-        "s",
-        [("s/p01.pddl", "s/d01.pddl"), ("s/p02.pddl", "s/d02.pddl")],
-    ),
-    "potassco-numbered": (
-        {"t/domains/domain-1.pddl": "domain", "t/instances/instance-1.pddl": "1", "t/domains/domain-2.pddl": "domain"}
-        | {"t/instances/instance-2.pddl": "2"},
+    "one-domain-per-suite": layout("s", "s", ("s/p01.pddl", "s/domain.pddl"), ("s/p02.pddl", "s/domain.pddl")),
+    "problem-domain-suffix": layout("s", "s", ("s/p01.pddl", "s/p01-domain.pddl"), ("s/p02.pddl", "s/p02_domain.pddl")),
+    "domain-problem-prefix": layout("s", "s", ("s/p01.pddl", "s/domain_p01.pddl"), ("s/p02.pddl", "s/domain-p02.pddl")),
+    "numbered-domains": layout("s", "s", ("s/p01.pddl", "s/domain-01.pddl"), ("s/p02.pddl", "s/domain-02.pddl")),
+    "d-and-p-by-content": layout("s", "s", ("s/p01.pddl", "s/d01.pddl"), ("s/p02.pddl", "s/d02.pddl")),
+    "potassco-numbered": layout(
         "t",
         "t",
-        [
-            ("t/instances/instance-1.pddl", "t/domains/domain-1.pddl"),
-            ("t/instances/instance-2.pddl", "t/domains/domain-2.pddl"),
-        ],
+        ("t/instances/instance-1.pddl", "t/domains/domain-1.pddl"),
+        ("t/instances/instance-2.pddl", "t/domains/domain-2.pddl"),
     ),
-    "potassco-one-domain": (
-        {"t/domain.pddl": "domain", "t/instances/instance-1.pddl": "1", "t/instances/instance-2.pddl": "2"},
-        "t",
-        "t",
-        [("t/instances/instance-1.pddl", "t/domain.pddl"), ("t/instances/instance-2.pddl", "t/domain.pddl")],
+    "potassco-one-domain": layout(
+        "t", "t", ("t/instances/instance-1.pddl", "t/domain.pddl"), ("t/instances/instance-2.pddl", "t/domain.pddl")
     ),
-    "instances-folder-given": (
-        {"t/domain.pddl": "domain", "t/instances/instance-1.pddl": "1", "t/instances/instance-2.pddl": "2"},
+    "instances-folder-given": layout(
         "t/instances",
         "t",
-        [("t/instances/instance-1.pddl", "t/domain.pddl"), ("t/instances/instance-2.pddl", "t/domain.pddl")],
+        ("t/instances/instance-1.pddl", "t/domain.pddl"),
+        ("t/instances/instance-2.pddl", "t/domain.pddl"),
     ),
-    "domain-in-parent": (
-        {"w/domain.pddl": "domain", "w/easy/p01.pddl": "1", "w/easy/p02.pddl": "2"},
-        "w/easy",
-        "easy",
-        [("w/easy/p01.pddl", "w/domain.pddl"), ("w/easy/p02.pddl", "w/domain.pddl")],
+    "domain-in-parent": layout(
+        "w/easy", "easy", ("w/easy/p01.pddl", "w/domain.pddl"), ("w/easy/p02.pddl", "w/domain.pddl")
     ),
-    "pddlgym": (
-        {"pddl/gripper.pddl": "domain", "pddl/gripper/problem1.pddl": "1", "pddl/gripper/problem2.pddl": "2"},
+    "pddlgym": layout(
         "pddl/gripper",
         "gripper",
-        [("pddl/gripper/problem1.pddl", "pddl/gripper.pddl"), ("pddl/gripper/problem2.pddl", "pddl/gripper.pddl")],
+        ("pddl/gripper/problem1.pddl", "pddl/gripper.pddl"),
+        ("pddl/gripper/problem2.pddl", "pddl/gripper.pddl"),
     ),
-    "pddlgym-test-problems": (
-        {"pddl/gripper.pddl": "domain", "pddl/gripper_test/problem1.pddl": "1", "pddl/gripper_test/problem2.pddl": "2"},
+    "pddlgym-test-problems": layout(
         "pddl/gripper_test",
         "gripper_test",
-        [
-            ("pddl/gripper_test/problem1.pddl", "pddl/gripper.pddl"),
-            ("pddl/gripper_test/problem2.pddl", "pddl/gripper.pddl"),
-        ],
+        ("pddl/gripper_test/problem1.pddl", "pddl/gripper.pddl"),
+        ("pddl/gripper_test/problem2.pddl", "pddl/gripper.pddl"),
     ),
 }
 

@@ -12,7 +12,7 @@ import shutil
 from pathlib import Path
 
 import pytest
-from support import run
+from support import run, task_fixture
 
 from relevance_plan.errors import UnsupportedFeatureError
 from relevance_plan.io import load_task
@@ -126,20 +126,18 @@ def needs(planner: str) -> None:
         pytest.skip(JAVA_MISSING)
 
 
-@pytest.fixture
-def haul_files(tmp_path):
-    domain, problem = tmp_path / "haul.pddl", tmp_path / "haul-1.pddl"
-    domain.write_text(HAUL_DOMAIN)
-    problem.write_text(HAUL_PROBLEM)
-    return domain, problem
+haul_files = task_fixture("haul", HAUL_DOMAIN, HAUL_PROBLEM)
 
 
-@pytest.fixture
-def fuel_files(tmp_path):
-    domain, problem = tmp_path / "fuel-haul.pddl", tmp_path / "fuel-haul-1.pddl"
-    domain.write_text(FUEL_DOMAIN)
-    problem.write_text(FUEL_PROBLEM)
-    return domain, problem
+fuel_files = task_fixture("fuel-haul", FUEL_DOMAIN, FUEL_PROBLEM)
+
+
+def planned(files: tuple[Path, Path], planner: str):
+    """``plan_task`` with ``planner`` (skipped when not installed), its plan cross-checked."""
+    needs(planner)
+    result = plan_task(*files, PlanOptions(planner=planner, timeout=60))
+    cross_checked(*files, result)
+    return result
 
 
 def cross_checked(domain_path: Path, problem_path: Path, result) -> None:
@@ -158,9 +156,7 @@ def cross_checked(domain_path: Path, problem_path: Path, result) -> None:
 @pytest.mark.planner
 @pytest.mark.parametrize("planner", ["lpg", "up:aries", "up:tamer"])
 def test_temporal_planners_give_timed_plans_valid_on_the_original(haul_files, planner):
-    needs(planner)
-    result = plan_task(*haul_files, PlanOptions(planner=planner, timeout=60))
-    cross_checked(*haul_files, result)
+    result = planned(haul_files, planner)
     assert result.plan.timed and all(step.duration is not None for step in result.plan)
     assert result.pruned and result.objects_kept < result.objects_total  # the yard and what is in it went
     assert result.planner == planner
@@ -169,9 +165,7 @@ def test_temporal_planners_give_timed_plans_valid_on_the_original(haul_files, pl
 @pytest.mark.planner
 @pytest.mark.parametrize("planner", ["up:enhsp", "lpg", "up:tamer"])
 def test_numeric_planners_give_plans_valid_on_the_original(fuel_files, planner):
-    needs(planner)
-    result = plan_task(*fuel_files, PlanOptions(planner=planner, timeout=60))
-    cross_checked(*fuel_files, result)
+    result = planned(fuel_files, planner)
     assert not result.plan.timed  # LPG's parallel levels are read as the sequence they list
     assert any(step.action == "refuel" for step in result.plan)  # the fuel is counted
 

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 import os
 import signal
 import subprocess
@@ -26,6 +27,19 @@ from relevance_plan.planning.results import PlanStatus
 needs_pyperplan = pytest.mark.skipif(not engine_module_installed("pyperplan"), reason="up-pyperplan not installed")
 
 
+def runs_pyperplan(test):
+    """A test that starts up:pyperplan's worker (skipped without the engine)."""
+    return pytest.mark.planner(needs_pyperplan(test))
+
+
+@contextlib.contextmanager
+def warm_pool(planner, beside: bool = False):
+    """A run's pool of workers (``beside``: the race's second pool), ``planner``'s warmed in it."""
+    with warm_planners(None, beside=beside):
+        warm_up(planner)
+        yield
+
+
 def _files(tmp_path, domain: str, problem: str):
     (tmp_path / "domain.pddl").write_text(domain)
     (tmp_path / "problem.pddl").write_text(problem)
@@ -40,12 +54,10 @@ def gripper(tmp_path):
     return planner, lambda: planner.run(*files, time_limit=60, memory_limit_mb=None)
 
 
-@pytest.mark.planner
-@needs_pyperplan
+@runs_pyperplan
 def test_the_attempts_of_a_run_are_served_by_one_worker(gripper):
     planner, solve = gripper
-    with warm_planners(None):
-        warm_up(planner)
+    with warm_pool(planner):
         first = solve()
         second = solve()
     assert first.status is second.status is PlannerStatus.SOLVED
@@ -56,15 +68,13 @@ def test_the_attempts_of_a_run_are_served_by_one_worker(gripper):
     assert alone.status is PlannerStatus.SOLVED and alone.process_group != first.process_group
 
 
-@pytest.mark.planner
-@needs_pyperplan
+@runs_pyperplan
 def test_an_attempt_that_overruns_kills_the_worker_and_the_next_gets_a_new_one(tmp_path):
     (tmp_path / "hard").mkdir()
     hard = _files(tmp_path / "hard", BIG_DOMAIN, big_problem(60))
     easy = _files(tmp_path, SMALL_GRIPPER_DOMAIN, small_gripper_problem())
     planner = make_planner("up:pyperplan")
-    with warm_planners(None):
-        warm_up(planner)
+    with warm_pool(planner):
         warm = planner.run(*easy, time_limit=60, memory_limit_mb=None)
         started = time.monotonic()
         overrun = planner.run(*hard, time_limit=1.0, memory_limit_mb=None)
@@ -90,8 +100,7 @@ def _served_by(monkeypatch) -> list[tuple[str, EngineWorker]]:
     return served
 
 
-@pytest.mark.planner
-@needs_pyperplan
+@runs_pyperplan
 def test_a_race_plans_the_full_problem_in_the_runs_warm_worker_and_the_pruned_attempts_in_another(
     tmp_path, monkeypatch
 ):
@@ -106,8 +115,7 @@ def test_a_race_plans_the_full_problem_in_the_runs_warm_worker_and_the_pruned_at
     assert not full_side & pruned_side  # one worker never serves both sides
 
 
-@pytest.mark.planner
-@needs_pyperplan
+@runs_pyperplan
 def test_a_race_copies_the_runs_warm_worker_for_the_pruned_attempts(tmp_path, monkeypatch):
     # a second worker would import unified-planning again, on the core the full problem needs
     served = _served_by(monkeypatch)
@@ -124,15 +132,12 @@ def test_a_race_copies_the_runs_warm_worker_for_the_pruned_attempts(tmp_path, mo
     assert all(group is None or process_gone(group) for group in groups)  # nothing left running
 
 
-@pytest.mark.planner
-@needs_pyperplan
+@runs_pyperplan
 def test_a_copy_serves_its_own_requests_and_is_killed_alone(gripper):
     planner, solve = gripper
-    with warm_planners(None):
-        warm_up(planner)
+    with warm_pool(planner):
         parent = current_pool().start("pyperplan", None)
-        with warm_planners(None, beside=True):
-            warm_up(planner)
+        with warm_pool(planner, beside=True):
             copy = current_pool().start("pyperplan", None)
             assert isinstance(copy, ForkedWorker) and copy.parent is parent
             copied = solve()
@@ -149,23 +154,19 @@ def test_a_copy_serves_its_own_requests_and_is_killed_alone(gripper):
     assert process_gone(own.process_group)
 
 
-@pytest.mark.planner
-@needs_pyperplan
+@runs_pyperplan
 def test_a_worker_that_has_served_a_request_is_not_copied(gripper):
     # an engine may leave threads behind after a request, and a fork copies none of them
     planner, solve = gripper
-    with warm_planners(None):
-        warm_up(planner)
+    with warm_pool(planner):
         assert solve().status is PlannerStatus.SOLVED
-        with warm_planners(None, beside=True):
-            warm_up(planner)
+        with warm_pool(planner, beside=True):
             worker = current_pool().start("pyperplan", None)
             assert type(worker) is EngineWorker
             assert solve().status is PlannerStatus.SOLVED
 
 
-@pytest.mark.planner
-@needs_pyperplan
+@runs_pyperplan
 def test_a_race_with_nothing_to_prune_plans_once_in_the_warm_worker(tmp_path, monkeypatch):
     served = _served_by(monkeypatch)
     every_object_needed = small_gripper_problem().replace("rooma roomb roomc - room", "rooma roomb - room")
@@ -188,8 +189,7 @@ WORKER_OWNER = """
 """
 
 
-@pytest.mark.planner
-@needs_pyperplan
+@runs_pyperplan
 def test_the_worker_dies_when_the_tool_is_killed():
     owner = subprocess.Popen(
         [sys.executable, "-c", textwrap.dedent(WORKER_OWNER)],

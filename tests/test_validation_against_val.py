@@ -253,20 +253,14 @@ def test_a_strict_comparison_between_equal_values_fails_where_val_lets_it_pass(t
     # VAL reads > as >= and < as <= (settlers' load with no space left, openstacks' start-order
     # with every stack in use); the builtin simulator keeps PDDL's strict comparison.
     domain_path = write_file(tmp_path, "domain.pddl", STRICT_DOMAIN)
-    problem_path = write_file(
-        tmp_path,
-        "problem.pddl",
-        "(define (problem p) (:domain strict) (:init (= (space) 0) (= (limit) 0)) (:goal (done)))",
-    )
-    domain, problem = load_task(domain_path, problem_path)
-    builtin, val = verdicts(domain, problem, read_plan(step))
+
+    def judged(space: int, limit: int):
+        text = f"(define (problem p) (:domain strict) (:init (= (space) {space}) (= (limit) {limit})) (:goal (done)))"
+        domain, problem = load_task(domain_path, write_file(tmp_path, f"problem-{space}-{limit}.pddl", text))
+        return verdicts(domain, problem, read_plan(step))
+
+    builtin, val = judged(0, 0)
     assert not builtin.valid and builtin.failed_step == 1
     assert val.valid  # a VAL quirk, documented in docs/validation.md
-    positive = write_file(
-        tmp_path,
-        "positive.pddl",
-        "(define (problem p) (:domain strict) (:init (= (space) 1) (= (limit) 2)) (:goal (done)))",
-    )
-    _, problem = load_task(domain_path, positive)
-    builtin, val = verdicts(domain, problem, read_plan(step))
+    builtin, val = judged(1, 2)
     assert builtin.valid and val.valid

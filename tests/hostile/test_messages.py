@@ -1,0 +1,173 @@
+"""Messages and exit codes: a domain's own mistakes named, odd files, planners that fail, closed and full streams."""
+
+from __future__ import annotations
+
+from support import REPO
+
+from hostile.inputs import PLAN_PURE, big_problem, files, planner, quiet_code, says
+from hostile.scenario import INPUT, MISMATCH, OK, PDDL, PLANNER, Check, Scenario, scenario_test
+
+
+def _domain_edit(old: str, new: str, count: int = 1) -> str:
+    text = (REPO / "domains" / "coffee" / "domain.pddl").read_text()
+    assert old in text, old
+    return text.replace(old, new, count)
+
+
+def bad_domains() -> dict[str, tuple[str, str]]:
+    """A domain with one mistake of its own, and what the message must name."""
+    text = (REPO / "domains" / "coffee" / "domain.pddl").read_text()
+    first = text.index("(:action")
+    second = text.index("(:action", first + 1)
+    return {
+        "action-defined-twice": (text[:second] + text[first:second] + text[second:], "defined twice"),
+        "predicate-declared-twice": (_domain_edit("(:predicates", "(:predicates (hand-empty)"), "declared twice"),
+        "undeclared-predicate": (_domain_edit("(hand-empty)", "(hand-emptyx)"), "unknown predicate"),
+        "undeclared-type-in-parameters": (_domain_edit("?c - cup", "?c - mug"), "unknown type"),
+        "undeclared-type-in-predicates": (
+            _domain_edit("(:predicates", "(:predicates (owns ?x - gizmo)"),
+            "unknown type",
+        ),
+        "constant-of-unknown-type": (
+            _domain_edit("(:predicates", "(:constants k1 - gizmo) (:predicates"),
+            "unknown type",
+        ),
+        "unknown-section": (_domain_edit("(:predicates", "(:gadgets) (:predicates"), "unknown domain section"),
+        "unknown-variable": (
+            _domain_edit("(robot-at ?c) (hand-empty)", "(robot-at ?nowhere) (hand-empty)"),
+            "unknown variable",
+        ),
+        "wrong-arity": (_domain_edit("(hand-empty)", "(hand-empty ?c)"), "arguments"),
+        "undeclared-function": (
+            _domain_edit("(robot-at ?c) (hand-empty)", "(robot-at ?c) (> (weight ?c) 3)"),
+            "function",
+        ),
+    }
+
+
+BAD_DOMAINS = [
+    Scenario(
+        f"messages/domain-{label}",
+        args=("score", "bad.pddl", "P.pddl"),
+        setup=files(bad_dot_pddl=text),
+        codes=(PDDL,),
+        check=says("bad.pddl:", needle),
+        quick=label == "action-defined-twice",
+    )
+    for label, (text, needle) in bad_domains().items()
+]
+
+
+def _scored(name: str, text: str, codes: tuple, check: Check | None = None) -> Scenario:
+    """``score`` of the domain with ``text`` as the problem."""
+    return Scenario(
+        f"messages/{name}", args=("score", "D.pddl", "x.pddl"), setup=files(x_dot_pddl=text), codes=codes, check=check
+    )
+
+
+PROBLEM = (REPO / "problems" / "coffee-simple.pddl").read_text()
+NO_INIT = PROBLEM[: PROBLEM.index("(:init")] + PROBLEM[PROBLEM.index("(:goal") :]
+BAD_FILES = [
+    Scenario(
+        "messages/no-init-ends-with-the-translators-complaint",
+        args=PLAN_PURE[:2] + ("noinit.pddl",) + PLAN_PURE[3:],
+        setup=files(noinit_dot_pddl=NO_INIT),
+        codes=(PDDL,),
+        check=lambda r: None if r.stderr.strip().endswith(":init") else f"ends so: {r.stderr[-120:]!r}",
+    ),
+    _scored("cr-line-endings-with-a-comment", ("; a comment\n" + PROBLEM).replace("\n", "\r"), (OK,)),
+    _scored("only-whitespace", "\r\n \t\r", (PDDL,), says("empty")),
+    _scored("only-comments-is-not-empty", "; one\r; two\r", (PDDL,), says("only comments")),
+    _scored("problem-of-another-domain", PROBLEM.replace("(:domain coffee)", "(:domain cereal)"), (MISMATCH,)),
+]
+
+# the planner's own failures, told as what they are
+PLANNERS = [
+    Scenario(
+        "messages/planner-deletes-its-folder",
+        args=PLAN_PURE + ("--planner", planner("remove_workdir.py")),
+        codes=(PLANNER,),
+        check=says("removed its working folder"),
+    ),
+    Scenario(
+        "messages/planner-deletes-its-folder-and-plan",
+        args=PLAN_PURE + ("--planner", planner("remove_workdir.py", True)),
+        codes=(PLANNER,),
+    ),
+    Scenario(
+        "messages/full-temporary-folder-is-not-a-crash",
+        args=PLAN_PURE + ("--planner", planner("no_space.py")),
+        codes=(INPUT,),
+        check=says("no space left"),
+    ),
+]
+
+# standard streams closed, full, cut short or given as files
+STREAMS = [
+    Scenario(
+        "messages/exit-codes-to-dev-full",
+        shell="$TOOL exit-codes > /dev/full; echo exit=$?",
+        check=quiet_code(INPUT, one_line=True),
+        quick=True,
+    ),
+    Scenario(
+        "messages/score-to-dev-full",
+        shell="$TOOL score D.pddl P.pddl > /dev/full; echo exit=$?",
+        check=quiet_code(INPUT, one_line=True),
+    ),
+    Scenario(
+        "messages/score-into-head",
+        shell="$TOOL score D.pddl big.pddl --scorer goal | head -1 > /dev/null; echo exit=${PIPESTATUS[0]}",
+        setup=files(big_dot_pddl=lambda: big_problem(3000)),
+        check=quiet_code(0, 141),
+    ),
+    Scenario(
+        "messages/exit-codes-into-head",
+        shell="$TOOL exit-codes | head -1 > /dev/null; echo exit=${PIPESTATUS[0]}",
+        check=quiet_code(0, 141),
+    ),
+    Scenario(
+        "messages/stdout-closed",
+        shell="$TOOL score D.pddl P.pddl >&-; echo exit=$? >&2",
+        check=lambda r: None if "exit=31" in r.stderr else f"not refused: {r.stderr[-100:]!r}",
+    ),
+    Scenario(
+        "messages/stdin-closed-for-watch",
+        shell="$TOOL watch D.pddl P.pddl <&-; echo exit=$?",
+        check=quiet_code(0, INPUT, one_line=True),
+    ),
+    Scenario("messages/process-substitution-for-score", shell="$TOOL score <(cat D.pddl) P.pddl > /dev/null"),
+    Scenario(
+        "messages/process-substitution-refused-by-plan",
+        shell="$TOOL plan <(cat D.pddl) P.pddl -q; echo exit=$?",
+        check=quiet_code(INPUT, one_line=True),
+    ),
+    Scenario("messages/dev-stdin-for-prune", shell="$TOOL prune D.pddl /dev/stdin -o - < P.pddl > /dev/null"),
+    Scenario(
+        "messages/dev-stdin-refused-by-plan",
+        shell="$TOOL plan D.pddl /dev/stdin -q --method pure < P.pddl; echo exit=$?",
+        check=quiet_code(INPUT, one_line=True),
+    ),
+]
+
+# odd files and surroundings
+SURROUNDINGS = [
+    Scenario("messages/directory-as-domain", args=("score", "planners", "P.pddl"), codes=(INPUT,)),
+    Scenario("messages/device-as-problem", args=("score", "D.pddl", "/dev/zero"), codes=(INPUT,)),
+    Scenario(
+        "messages/tool-out-of-memory",
+        shell="ulimit -v 400000; $TOOL score D.pddl big.pddl > /dev/null; echo exit=$?",
+        setup=files(big_dot_pddl=lambda: big_problem(150_000)),
+        check=quiet_code(21, one_line=True),
+    ),
+    Scenario(
+        "messages/no-home-and-c-locale",
+        args=("score", "D.pddl", "P.pddl"),
+        env=(("HOME", "/nonexistent"), ("LC_ALL", "C")),
+    ),
+]
+
+SCENARIOS = BAD_DOMAINS + BAD_FILES + PLANNERS + STREAMS + SURROUNDINGS
+
+
+test_messages = scenario_test(SCENARIOS)
