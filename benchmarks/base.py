@@ -245,7 +245,7 @@ class Store:
     ) -> None:
         """Store one run; ``method`` labels it when the options' method does not name it (a scorer, an oracle)."""
         job = Job(str(domain), str(problem), suite, options.method, options.seed, options)
-        row = result_row(job, result)
+        row = result_row(job.columns(), result)
         if method:
             row["method"] = method
         self.stored += self._store.add(row)

@@ -44,7 +44,7 @@ from pathlib import Path
 
 from base import DOMAINS, geometric_mean, run_timed
 from installed import compiled_checkout, installed_environment, installed_tool
-from relevance_plan.planning.planners.fast_downward.command import find_fast_downward
+from relevance_plan.planning.planners.fast_downward.command_line import find_fast_downward
 
 from relevance_plan.generators.classic import generate_classic_problem
 
