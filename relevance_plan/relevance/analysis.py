@@ -156,16 +156,19 @@ class ObjectGraph:
         self.found: dict[str, list[str]] = {}
 
     def neighbours(self, name: str) -> list[str]:
+        """The other objects of the facts a walk follows from ``name``, each once."""
         found = self.found.get(name)
         if found is None:
-            found = self.found[name] = []
+            linked: dict[str, None] = {}
             max_fan, fans = self.max_fan, self.fans
             for atom in self.index.by_object.get(name, ()):
                 if len(atom) < 3:
                     continue
                 if max_fan is not None and fans.get((atom[0], atom.index(name) - 1), 0.0) > max_fan:
                     continue
-                found.extend(atom[1:])
+                linked.update(dict.fromkeys(atom[1:]))
+            linked.pop(name, None)
+            found = self.found[name] = list(linked)
         return found
 
 
@@ -175,21 +178,50 @@ def graph_distances(
     """Breadth-first hops from ``sources`` over ``graph``; an object in more than ``hub_degree``
     facts gets a distance but is not passed through."""
     distance = {name: 0 for name in sources}
-    frontier = list(distance)
-    hops = 0
-    by_object = index.by_object
+    _walk(index, graph, distance, list(distance), 0, hub_degree)
+    return distance
+
+
+def _walk(
+    index: FactIndex, graph: ObjectGraph, distance: dict[str, int], frontier: list[str], hops: int, hub: int | None
+) -> None:
+    """Breadth-first from ``frontier`` (at ``hops``), giving each object its hops where they are fewer."""
+    by_object, found, neighbours = index.by_object, graph.found, graph.neighbours
     while frontier:
         hops += 1
         following = []
         for name in frontier:
-            if hub_degree is not None and hops > 1 and len(by_object.get(name, ())) > hub_degree:
+            if hub is not None and hops > 1 and len(by_object.get(name, ())) > hub:
                 continue
-            for other in graph.neighbours(name):
-                if other not in distance:
+            near = found.get(name)
+            for other in neighbours(name) if near is None else near:
+                if distance.get(other, hops + 1) > hops:
                     distance[other] = hops
                     following.append(other)
         frontier = following
-    return distance
+
+
+class GrowingDistances:
+    """:func:`graph_distances` from a set of sources that only grows (the objects a growing
+    exploration reached): each call walks from the new sources only, where they bring objects nearer."""
+
+    def __init__(self, index: FactIndex, graph: ObjectGraph, hub_degree: int | None = None):
+        self.index = index
+        self.graph = graph
+        self.hub = hub_degree
+        self.sources: frozenset[str] = frozenset()
+        self.distance: dict[str, int] = {}
+
+    def __call__(self, sources: Iterable[str]) -> dict[str, int]:
+        sources = frozenset(sources)
+        if not sources >= self.sources:
+            self.sources, self.distance = frozenset(), {}
+        new = [name for name in sources - self.sources if self.distance.get(name) != 0]
+        self.sources = sources
+        for name in new:
+            self.distance[name] = 0
+        _walk(self.index, self.graph, self.distance, sorted(new), 0, self.hub)
+        return self.distance
 
 
 # --------------------------------------------------------------------------- constraint rules
@@ -453,6 +485,63 @@ class _Regression:
                 )
                 found.append(((predicate_name, new_args), next_depth))
         return found, roles
+
+
+@dataclass(frozen=True)
+class GoalReads:
+    """What :func:`analyse_goal` read of the facts: the patterns it asked whether some fact satisfies
+    (by predicate), and the predicates whose single fact or functional positions can decide a role
+    (those of the conditions of the achievers it regressed through).  While no fact that fits one
+    of those patterns comes or goes and those predicates keep their single facts and functional
+    positions, the analysis of the same goal comes out the same."""
+
+    patterns: Mapping[str, tuple[Pattern, ...]]
+    role_predicates: frozenset[str]
+
+    def fits(self, domain: Domain, objects: Mapping[str, str], fact: GroundAtom) -> bool:
+        """Whether ``fact`` fits a pattern the analysis asked about (``objects``: every object's type)."""
+        for _, args in self.patterns.get(fact[0], ()):
+            if len(args) == len(fact) - 1 and all(
+                value == name if kind == "obj" else domain.is_subtype(objects.get(value, "object"), name)
+                for (kind, name), value in zip(args, fact[1:])
+            ):
+                return True
+        return False
+
+
+class _ReadingRegression(_Regression):
+    """The regression of :func:`analyse_goal`, noting each pattern it asks about."""
+
+    def __init__(self, domain: Domain, problem: Problem, index: FactIndex, deadline: float | None = None):
+        super().__init__(domain, problem, index, deadline)
+        self.asked: dict[Pattern, bool] = {}
+
+    def initially_satisfiable(self, pattern: Pattern) -> bool:
+        answer = self.asked[pattern] = super().initially_satisfiable(pattern)
+        return answer
+
+    def reads(self) -> GoalReads:
+        patterns: dict[str, list[Pattern]] = defaultdict(list)
+        for pattern in self.asked:
+            patterns[pattern[0]].append(pattern)
+        regressed = {pattern[0] for pattern, satisfied in self.asked.items() if not satisfied}
+        role_predicates = {
+            atom.predicate
+            for predicate in regressed
+            for action, _, condition in self.achievers.get(predicate, ())
+            for part in (action.precondition, condition)
+            for atom, _ in literals(part)
+        }
+        return GoalReads({p: tuple(found) for p, found in patterns.items()}, frozenset(role_predicates))
+
+
+def analyse_goal_reading(
+    domain: Domain, problem: Problem, index: FactIndex, deadline: float | None = None
+) -> tuple[GoalAnalysis, GoalReads]:
+    """:func:`analyse_goal`, and what it read of the facts (for a caller that keeps the analysis
+    while the facts change)."""
+    regression = _ReadingRegression(domain, problem, index, deadline)
+    return regression.run(), regression.reads()
 
 
 def single_valued_predicates(domain: Domain, index: FactIndex) -> frozenset[str]:

@@ -13,13 +13,14 @@ for; ``_sharpen`` asks the sharper temporal and numeric check
 
 from __future__ import annotations
 
+import itertools
 import math
 import time
-from collections.abc import Callable, Collection, Mapping, Sequence, Set
+from collections.abc import Callable, Collection, Iterator, Mapping, Sequence, Set
 from dataclasses import dataclass
 
 from relevance_plan.pddl.formulas import GroundAtom
-from relevance_plan.relevance.analysis import ObjectGraph, fan_in, graph_distances
+from relevance_plan.relevance.analysis import GrowingDistances, ObjectGraph, fan_in, graph_distances
 from relevance_plan.relevance.closure import Restored
 from relevance_plan.relevance.exploration import (
     DEFAULT_BUDGET,
@@ -88,25 +89,53 @@ def repair_selection(
         min(time.monotonic() + REPAIR_SECONDS, math.inf if task.deadline is None else task.deadline),
         total if give_up_above is None else give_up_above,
     )
+    reads = RepairReads(set(kept), set())
     try:
         exploration = Exploration(task, kept, repair.work())
         exploration.run()
     except OutOfBudget:
         task.check_time("checking the selection")  # the --timeout, not the repair's own bound
-        return kept, (), Reachability(False, False)
+        return _observed(task, kept, (kept, (), Reachability(False, False)), RepairReads(None, set()))
     check = exploration.outcome()
     if check.reachable:
-        return _sharpen(repair, kept, (), check)
-    order = RepairOrder(task, scores)
+        return _observed(task, kept, _sharpen(repair, kept, (), check), reads)
+    order = RepairOrder(task, scores, reads)
     current, added, check = _grow(repair, exploration, order)
+    if reads.objects is not None:
+        reads.objects |= current  # the explorations read their facts
     if not check.reachable:
         # Nothing short of the whole problem reaches the goal (or the check gave up): let the planner decide.
-        return current, tuple(Restored(n, "", "reachability", ("goal",)) for n in sorted(current - kept)), check
+        reasons = tuple(Restored(n, "", "reachability", ("goal",)) for n in sorted(current - kept))
+        return _observed(task, kept, (current, reasons, check), reads)
     grown = _Grown({name: i for i, name in enumerate(added)}, order, exploration.facts)
     used = {name for name in check.plan_objects if name in task.problem.objects and name not in kept}
     used, check = _economize(repair, grown, used, check)
     closed, reasons = _restore_used(repair, used, grown.rank, check)
-    return _sharpen(repair, closed, reasons, check)
+    return _observed(task, kept, _sharpen(repair, closed, reasons, check), reads)
+
+
+@dataclass
+class RepairReads:
+    """What one repair read beyond the links between objects: the objects whose facts or rank a
+    choice read (``None``: it ranked every object, even those no link reaches), and the classes whose
+    every member a choice compared.  A caller that keeps the repair's result (the live session) keeps
+    it while none of these, the links a ranking followed and the scores stay as they were."""
+
+    objects: set[str] | None
+    classes: set[str]
+    ranked: bool = False  # whether a choice ranked objects by the links between them
+
+
+def _observed(task: PlanningTask, kept: frozenset[str], repaired: Repaired, reads: RepairReads) -> Repaired:
+    """``repaired``, shown first to the task's ``repair_observer`` (when it has one) with what the repair read."""
+    if task.repair_observer is not None:
+        from relevance_plan.relevance.timed_relaxation import applies
+
+        if applies(task) or not repaired[2].complete:
+            # the sharper check ranks every object; a check that gave up stopped where time ran out
+            reads = RepairReads(None, reads.classes)
+        task.repair_observer(kept, repaired, reads)
+    return repaired
 
 
 def _grow(
@@ -226,13 +255,19 @@ def _lacking_classes_first(ranked: Sequence[str], selected: Set[str], classes: M
 class RepairOrder:
     """The order in which the repair adds objects (see :func:`repair_selection`)."""
 
-    def __init__(self, task: PlanningTask, scores: Mapping[str, float]):
+    def __init__(self, task: PlanningTask, scores: Mapping[str, float], reads: RepairReads | None = None):
         self.task = task
         self.scores = scores
+        # what the choices read (see RepairReads); each choice adds to it
+        self.reads = RepairReads(set(), set()) if reads is None else reads
+        self.reads.ranked = True
         self.hub = task.hub_degree
         # the initial facts' links, walked once or twice a round
         self.graph = ObjectGraph(task.init_index, REPAIR_MAX_FAN, fan_in(task.init_index))
         self.toward_unreached: tuple[frozenset[str], dict[str, int]] = (frozenset(), {})
+        self.toward_targets: tuple[frozenset[str], dict[str, int]] = (frozenset(), {})
+        # hops from what the exploration reached, which only grows: each round walks from what is new
+        self.from_reached = GrowingDistances(task.init_index, self.graph, self.hub)
         self.classes = task.typing.problem.objects
         self.timed = bool(task.typing.problem.timed_literals)
         self.static = relaxed_task(task).static
@@ -256,6 +291,7 @@ class RepairOrder:
     def missing_classes(self, kept: Set[str]) -> list[str]:
         """The best-ranked member (score, then hops from ``kept``) of every class ``kept`` has none of."""
         present = {self.classes[name] for name in kept if name in self.classes}
+        self.reads.classes.update(set(self.classes.values()) - present)
         distance = graph_distances(self.task.init_index, self.graph, kept, self.hub)
         best: dict[str, tuple[float, int, str]] = {}
         far = len(self.classes) + 1
@@ -291,24 +327,30 @@ class RepairOrder:
         path = self._path(unreached - sources, sources - unreached, current)
         if path:
             return path
-        between = graph_distances(index, self.graph, sources, self.hub) if sources else {}
+        between = self.from_reached(sources) if sources else {}
         fruitless, classes = self.fruitless, self.classes
-        ranked = sorted(
-            (name for name in classes if name not in current),
-            key=lambda name: (
+
+        def rank(name: str) -> tuple[int, int, int, float, str]:
+            return (
                 distance.get(name, far) + between.get(name, far if sources else 0),
                 distance.get(name, far),
                 fruitless.get(classes[name], 0),
                 -self.scores.get(name, 0.0),
                 name,
-            ),
-        )
+            )
+
+        # The objects the distances reach rank first; the others, ranked alike after them, only
+        # when those run out (most of a building's items: no link leads from their receptacle to them).
+        linked = [name for name in distance.keys() | between.keys() if name in classes and name not in current]
+        ranked = sorted(linked, key=rank)
+        rest = len(classes) - sum(1 for name in current if name in classes) - len(ranked)
         kept_of: dict[str, list[str]] = {}
         chosen: list[str] = []
         detached: list[str] = []
-        for name in ranked:
+        for position, name in enumerate(self._ranked(ranked, current, rank, rest)):
             if len(chosen) == count:
                 break
+            self._read(name, position < len(ranked))
             cls = classes[name]
             if cls not in kept_of:
                 kept_of[cls] = sorted(n for n in current if classes.get(n) == cls)[:DOMINANCE_TRIES]
@@ -318,7 +360,25 @@ class RepairOrder:
                 detached.append(name)
             else:
                 chosen.append(name)
-        return chosen or detached[:count] or ranked[:count]
+        else:
+            self.reads.objects = None  # every object was ranked: one more would be too
+        return chosen or detached[:count] or list(itertools.islice(self._ranked(ranked, current, rank, rest), count))
+
+    def _ranked(
+        self, linked: list[str], current: Set[str], rank: Callable[[str], tuple[int, int, int, float, str]], rest: int
+    ) -> Iterator[str]:
+        """``linked`` (ranked), then the ``rest`` of the objects outside ``current``, ranked, made only when reached."""
+        yield from linked
+        if rest:
+            seen = set(linked)
+            yield from sorted((n for n in self.classes if n not in current and n not in seen), key=rank)
+
+    def _read(self, name: str, linked: bool) -> None:
+        """Note that a choice read ``name`` (past the objects a link reaches: it read every object)."""
+        if not linked:
+            self.reads.objects = None
+        elif self.reads.objects is not None:
+            self.reads.objects.add(name)
 
     def _path(self, targets: Set[str], sources: Set[str], current: Set[str]) -> list[str]:
         """The objects outside ``current`` on one shortest way in the initial state from the source
@@ -327,7 +387,12 @@ class RepairOrder:
         rectangle between them."""
         if not targets or not sources:
             return []
-        distance = graph_distances(self.task.init_index, self.graph, targets, self.hub)
+        if self.toward_targets[0] != targets:  # the same goal objects stay unnamed for many rounds
+            self.toward_targets = (
+                frozenset(targets),
+                graph_distances(self.task.init_index, self.graph, targets, self.hub),
+            )
+        distance = self.toward_targets[1]
         start = min((name for name in sources if name in distance), key=lambda n: (distance[n], n), default=None)
         walk: list[str] = []
         name = start

@@ -8,6 +8,7 @@ distances, what soundness keeps) is computed once, on first use.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from functools import cached_property
 
@@ -34,6 +35,9 @@ class PlanningTask:
     # time.monotonic() by which scoring and pruning end (``plan``'s --timeout): past it, the
     # analyses stop with OutOfTimeError instead of running on until the CLI's last alarm
     deadline: float | None = field(default=None, kw_only=True)
+    # shown, after each reachability repair on this task, its input, its result and what it read
+    # (``repair.RepairReads``): how the live session keeps a result while nothing it read changes
+    repair_observer: Callable[..., None] | None = field(default=None, kw_only=True)
 
     def check_time(self, what: str) -> None:
         """OutOfTimeError naming ``what`` when the task's deadline has passed."""
@@ -63,7 +67,7 @@ class PlanningTask:
     def hub_degree(self) -> int:
         """Objects in more initial facts than this (a shape every key has, a floor above all others) link
         everything to everything: distances do not pass through them."""
-        return max(16, int(2 * len(self.problem.objects) ** 0.5))
+        return hub_degree(len(self.problem.objects))
 
     @cached_property
     def object_profiles(self) -> dict[str, tuple[object, ...]]:
@@ -88,3 +92,8 @@ class PlanningTask:
     def kept_for_soundness(self) -> KeptObjects:
         """Objects a quantifier ranges over where pruning them could change a verdict (``soundness``)."""
         return objects_to_keep(self.domain, self.problem, soundness_requirements(self.domain, self.problem))
+
+
+def hub_degree(objects: int) -> int:
+    """:attr:`PlanningTask.hub_degree` for a problem of ``objects`` objects."""
+    return max(16, int(2 * objects**0.5))

@@ -23,6 +23,11 @@ needed.
 
 from __future__ import annotations
 
+from collections import Counter
+from collections.abc import Callable, Collection, Iterable, Mapping, Set
+
+from relevance_plan.pddl.formulas import GroundAtom
+from relevance_plan.pddl.model import Domain
 from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult
 from relevance_plan.relevance.task import PlanningTask
 
@@ -37,46 +42,23 @@ def score_by_goal(task: PlanningTask, request: ScoreRequest) -> ScoreResult:
     domain, problem = task.typing.domain, task.typing.problem
     analysis = task.goal_analysis
     goal_objects = task.goal_objects
-    neighbours: dict[str, str] = {}
-    # sorted: the same fact explains a neighbour whatever order the sets were built in
-    for name in sorted(goal_objects):
-        for atom in sorted(task.init_index.by_object.get(name, ())):
-            if atom[0] in analysis.relevant_predicates:
-                for other in atom[1:]:
-                    if other != name:
-                        neighbours.setdefault(other, "(" + " ".join(atom) + ")")
-    candidates: dict[str, int] = {}
-    for type_name in problem.objects.values():
-        for ancestor in domain.ancestors(type_name):
-            if ancestor in analysis.role_depth:
-                candidates[ancestor] = candidates.get(ancestor, 0) + 1
-    distance = task.goal_distance
+    neighbours = goal_neighbours(task.init_index.by_object, goal_objects, analysis.relevant_predicates)
+    candidates = role_candidates(domain, analysis.role_depth, problem.objects.values())
     scores: dict[str, float] = {}
     explanations: dict[str, str] = {}
     alternatives: set[str] = set()
     for name, type_name in problem.objects.items():
-        if name in goal_objects:
-            scores[name], explanations[name] = 1.0, "named in the goal"
-            continue
-        best, why, populous = 0.0, "no role in reaching the goal", False
-        for ancestor in domain.ancestors(type_name):
-            depth = analysis.role_depth.get(ancestor)
-            if depth is None:
-                continue
-            value = ROLE_DECAY ** max(depth, 1)
-            role = f"can serve as {ancestor} (role {depth} step(s) from the goal)"
-            many = candidates.get(ancestor, 0) > POPULOUS
-            if many:
-                hops = distance.get(name, FAR)
-                value *= DISTANCE_DECAY ** max(hops - 1, 0)
-                role += f", one of {candidates[ancestor]}, " + (
-                    f"{hops} hop(s) from the goal's objects" if name in distance else "not linked to the goal's objects"
-                )
-            if value > best:
-                best, why, populous = value, role, many
-        if name in neighbours and NEIGHBOUR_SCORE > best:
-            best, why, populous = NEIGHBOUR_SCORE, f"shares {neighbours[name]} with a goal object", False
-        scores[name], explanations[name] = best, why
+        score, why, populous = goal_score(
+            domain,
+            analysis.role_depth,
+            candidates,
+            lambda: task.goal_distance,
+            name,
+            type_name,
+            goal_objects,
+            neighbours,
+        )
+        scores[name], explanations[name] = score, why
         if populous:
             alternatives.add(name)
     return ScoreResult(
@@ -86,3 +68,64 @@ def score_by_goal(task: PlanningTask, request: ScoreRequest) -> ScoreResult:
         explanations=explanations,
         alternatives=frozenset(alternatives),
     )
+
+
+def goal_neighbours(
+    by_object: Mapping[str, Collection[GroundAtom]], goal_objects: Set[str], relevant_predicates: Set[str]
+) -> dict[str, str]:
+    """Object -> the first relevant fact (written) it shares with a goal object."""
+    neighbours: dict[str, str] = {}
+    # sorted: the same fact explains a neighbour whatever order the sets were built in
+    for name in sorted(goal_objects):
+        for atom in sorted(by_object.get(name, ())):
+            if atom[0] in relevant_predicates:
+                for other in atom[1:]:
+                    if other != name:
+                        neighbours.setdefault(other, "(" + " ".join(atom) + ")")
+    return neighbours
+
+
+def role_candidates(domain: Domain, role_depth: Mapping[str, int], types: Iterable[str]) -> dict[str, int]:
+    """Role type -> how many objects (of these types) can fill it."""
+    candidates: dict[str, int] = {}
+    for type_name, count in Counter(types).items():
+        for ancestor in domain.ancestors(type_name):
+            if ancestor in role_depth:
+                candidates[ancestor] = candidates.get(ancestor, 0) + count
+    return candidates
+
+
+def goal_score(
+    domain: Domain,
+    role_depth: Mapping[str, int],
+    candidates: Mapping[str, int],
+    distances: Callable[[], Mapping[str, int]],
+    name: str,
+    type_name: str,
+    goal_objects: Set[str],
+    neighbours: Mapping[str, str],
+) -> tuple[float, str, bool]:
+    """One object's score, its explanation, and whether it is one of a populous role's candidates
+    (``distances``: hops from the goal's objects, asked for only for those)."""
+    if name in goal_objects:
+        return 1.0, "named in the goal", False
+    best, why, populous = 0.0, "no role in reaching the goal", False
+    for ancestor in domain.ancestors(type_name):
+        depth = role_depth.get(ancestor)
+        if depth is None:
+            continue
+        value = ROLE_DECAY ** max(depth, 1)
+        role = f"can serve as {ancestor} (role {depth} step(s) from the goal)"
+        many = candidates.get(ancestor, 0) > POPULOUS
+        if many:
+            distance = distances()
+            hops = distance.get(name, FAR)
+            value *= DISTANCE_DECAY ** max(hops - 1, 0)
+            role += f", one of {candidates[ancestor]}, " + (
+                f"{hops} hop(s) from the goal's objects" if name in distance else "not linked to the goal's objects"
+            )
+        if value > best:
+            best, why, populous = value, role, many
+    if name in neighbours and NEIGHBOUR_SCORE > best:
+        best, why, populous = NEIGHBOUR_SCORE, f"shares {neighbours[name]} with a goal object", False
+    return best, why, populous
