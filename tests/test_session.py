@@ -176,6 +176,7 @@ def test_trigger_registry_names():
         "kept-touched",
         "relevance-crossed",
         "closure-rules-changed",
+        "selection-read",
     }
 
 

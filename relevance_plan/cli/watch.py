@@ -1,7 +1,8 @@
 """``relevance-plan watch``: a live session over JSON-lines events, one JSON line out per event.
 
 Each event is answered as soon as its line arrives (a live pipe is read line
-by line, never to its end first).  A line that is not valid UTF-8, not JSON,
+by line, never to its end first), and nothing of an event is kept once its
+line is written: a session of any length holds the current scene only.  A line that is not valid UTF-8, not JSON,
 too long or not a valid event gets its error line and the session carries
 on.  The snapshot files are checked before the first event and written
 after the last, also when the session is interrupted (exit 130) or its
@@ -124,6 +125,7 @@ def watch(domain_path, problem_path, events_path, plan_in_loop, snapshot_dir, **
     session = Session(
         domain, problem, options.scoring, domain_path=domain_path, plan_options=options, plan_in_loop=plan_in_loop
     )
+    del problem  # the session holds the scene: the file as read (its text, every span) can go
     ending = None
     try:
         for line in read_event_lines(events):

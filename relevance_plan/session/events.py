@@ -22,7 +22,7 @@ from __future__ import annotations
 import json
 import math
 import re
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from collections.abc import Set as AbstractSet
 from dataclasses import dataclass
 
@@ -88,58 +88,89 @@ def check_event(data: dict, scene: LiveScene, model: KnowledgeModel | None) -> E
     kind = data.get("event")
     if kind not in EVENT_KINDS:
         raise EventError(f"unknown event {kind!r} (expected one of: {', '.join(EVENT_KINDS)})")
-    if kind == "add":
-        display = check_name(_text(data, "object"), "object name")
-        name = display.lower()
-        if name in scene.objects or name in scene.domain.constants:
-            raise EventError(f"object '{display}' is already in the scene")
-        type_name = _text(data, "type").lower()
-        if type_name not in scene.domain.types:
-            raise EventError(f"unknown type '{data['type']}'")
-        facts = data.get("facts", [])
-        if not isinstance(facts, list):
-            raise EventError("'facts' must be a list of facts")
-        known = {name}
-        checked = tuple(_fact(item, scene, known) for item in facts)
-        return Event("add", name=name, display=display, type=type_name, facts=checked)
-    if kind == "remove":
-        display = _text(data, "object")
-        name = _object(display, scene)
-        if name in _goal_names(scene.goal):
-            raise EventError(f"object '{display}' is named in the goal: change the goal first")
-        return Event("remove", name=name, display=display)
+    return CHECKS[kind](data, scene, model)
+
+
+def _check_add(data: dict, scene: LiveScene, model: KnowledgeModel | None) -> Event:
+    display = check_name(_text(data, "object"), "object name")
+    name = display.lower()
+    if name in scene.objects or name in scene.domain.constants:
+        raise EventError(f"object '{display}' is already in the scene")
+    type_name = _text(data, "type").lower()
+    if type_name not in scene.domain.types:
+        raise EventError(f"unknown type '{data['type']}'")
+    facts = data.get("facts", [])
+    if not isinstance(facts, list):
+        raise EventError("'facts' must be a list of facts")
+    known = {name}
+    checked = tuple(_fact(item, scene, known) for item in facts)
+    return Event("add", name=name, display=display, type=type_name, facts=checked)
+
+
+def _check_remove(data: dict, scene: LiveScene, model: KnowledgeModel | None) -> Event:
+    display = _text(data, "object")
+    name = _object(display, scene)
+    if name in _goal_names(scene.goal):
+        raise EventError(f"object '{display}' is named in the goal: change the goal first")
+    return Event("remove", name=name, display=display)
+
+
+def _check_fact(data: dict, scene: LiveScene, model: KnowledgeModel | None) -> Event:
+    kind = data["event"]
     if kind == "set" and "fluent" in data:
         return Event("set", fluent=_fluent(data["fluent"], scene), value=_number(data.get("value")))
-    if kind in ("set", "unset"):
-        if "fact" not in data:
-            hint = " (a numeric fluent is set, never unset)" if "fluent" in data else ""
-            raise EventError(f"'{kind}' needs a 'fact'{hint}")
-        return Event(kind, facts=(_fact(data["fact"], scene),))
-    if kind == "goal":
-        return Event("goal", goal=parse_goal(_text(data, "goal"), scene))
-    if kind == "human":
-        display = _text(data, "name")
-        name = _object(display, scene)
-        profile = data.get("preferences")
-        if profile is not None:
-            if not isinstance(profile, str):
-                raise EventError("'preferences' must be a profile name or null")
-            if model is None or profile not in model.humans:
-                profiles = ", ".join(model.humans) if model is not None and model.humans else "none"
-                raise EventError(f"unknown preference profile '{profile}' (the model has: {profiles})")
-        return Event("human", name=name, display=display, profile=profile)
-    if kind == "cue":
-        task, objective = data.get("task"), data.get("objective")
-        if (task is None) == (objective is None):
-            raise EventError("a cue gives either 'task' or 'objective'")
-        if model is None:
-            raise EventError("cues need a knowledge model (this session has none)")
-        if task is not None and (not isinstance(task, str) or task not in model.task_classes):
-            raise EventError(f"unknown task {task!r} (the model has: {', '.join(model.task_classes)})")
-        if objective is not None and (not isinstance(objective, str) or objective not in model.objectives):
-            raise EventError(f"unknown objective {objective!r} (the model has: {', '.join(model.objectives)})")
-        return Event("cue", task=task, objective=objective)
+    if "fact" not in data:
+        hint = " (a numeric fluent is set, never unset)" if "fluent" in data else ""
+        raise EventError(f"'{kind}' needs a 'fact'{hint}")
+    return Event(kind, facts=(_fact(data["fact"], scene),))
+
+
+def _check_goal(data: dict, scene: LiveScene, model: KnowledgeModel | None) -> Event:
+    return Event("goal", goal=parse_goal(_text(data, "goal"), scene))
+
+
+def _check_human(data: dict, scene: LiveScene, model: KnowledgeModel | None) -> Event:
+    display = _text(data, "name")
+    name = _object(display, scene)
+    profile = data.get("preferences")
+    if profile is not None:
+        if not isinstance(profile, str):
+            raise EventError("'preferences' must be a profile name or null")
+        if model is None or profile not in model.humans:
+            profiles = ", ".join(model.humans) if model is not None and model.humans else "none"
+            raise EventError(f"unknown preference profile '{profile}' (the model has: {profiles})")
+    return Event("human", name=name, display=display, profile=profile)
+
+
+def _check_cue(data: dict, scene: LiveScene, model: KnowledgeModel | None) -> Event:
+    """A cue names the model's task or objective (one field of the cue per way of giving it)."""
+    task, objective = data.get("task"), data.get("objective")
+    if (task is None) == (objective is None):
+        raise EventError("a cue gives either 'task' or 'objective'")
+    if model is None:
+        raise EventError("cues need a knowledge model (this session has none)")
+    if task is not None and (not isinstance(task, str) or task not in model.task_classes):
+        raise EventError(f"unknown task {task!r} (the model has: {', '.join(model.task_classes)})")
+    if objective is not None and (not isinstance(objective, str) or objective not in model.objectives):
+        raise EventError(f"unknown objective {objective!r} (the model has: {', '.join(model.objectives)})")
+    return Event("cue", task=task, objective=objective)
+
+
+def _check_plan(data: dict, scene: LiveScene, model: KnowledgeModel | None) -> Event:
     return Event("plan")
+
+
+# One check per kind of event: a new kind is a new entry (and its handling in the session).
+CHECKS: dict[str, Callable[[dict, LiveScene, KnowledgeModel | None], Event]] = {
+    "add": _check_add,
+    "remove": _check_remove,
+    "set": _check_fact,
+    "unset": _check_fact,
+    "goal": _check_goal,
+    "human": _check_human,
+    "cue": _check_cue,
+    "plan": _check_plan,
+}
 
 
 def check_name(text: str, what: str) -> str:

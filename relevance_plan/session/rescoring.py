@@ -1,4 +1,5 @@
-"""Scores kept current event by event.
+"""Scores kept current event by event: each scorer's live form takes what an event changed
+(``state.SceneDelta``) and says whose scores may differ.
 
 :class:`LiveModelScores` follows the knowledge-model scorer stage by stage
 (``scorers/knowledge_model.py``: context, one element, contents) and re-scores only
@@ -7,9 +8,15 @@ place that was opened or where a human stands, a place whose contents
 changed.  Its :meth:`~LiveModelScores.result` equals ``score_by_knowledge_model`` on
 the current state.
 
-:class:`FullScores` is the fallback for every other scorer (goal, random):
-their scores can depend on the whole state (the goal scorer regresses the
-goal through the initial state), so each change re-scores everything through
+:class:`LiveGoalScores` follows the goal scorer (``scorers/goal.py``): the goal's
+analysis is kept while no fact it read changes (``analysis.GoalReads``); an
+object's score changes only when it is added, when it comes to share a fact
+with a goal object or stops, when its role's number of candidates crosses
+the populous mark (or changes while past it), or, for a populous role's
+candidates, when the links that give their hops from the goal change.
+
+:class:`FullScores` is the fallback for every other scorer (random,
+learned, oracle): each change re-scores everything through
 ``relevance.setup.score_problem``.
 """
 
@@ -17,10 +24,13 @@ from __future__ import annotations
 
 from dataclasses import replace
 
+from relevance_plan.pddl.model import goal_objects
+from relevance_plan.relevance.analysis import GoalAnalysis, GoalReads, analyse_goal_reading, object_distances
 from relevance_plan.relevance.knowledge import KnowledgeModel
 from relevance_plan.relevance.prune import Thresholds
 from relevance_plan.relevance.scene import Element, build_scene
 from relevance_plan.relevance.scorers import ScoreRequest, ScoreResult
+from relevance_plan.relevance.scorers.goal import POPULOUS, goal_neighbours, goal_score, role_candidates
 from relevance_plan.relevance.scorers.knowledge_model import (
     UNKNOWN_CLASS,
     KnowledgeContext,
@@ -33,8 +43,9 @@ from relevance_plan.relevance.scorers.knowledge_model import (
     unknown_share_problem,
 )
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
-from relevance_plan.relevance.task import PlanningTask
-from relevance_plan.session.state import LiveScene
+from relevance_plan.relevance.task import PlanningTask, hub_degree
+from relevance_plan.relevance.types import InferredTypes, infer_types
+from relevance_plan.session.state import LiveScene, SceneDelta
 
 ALL = None  # "every element may have changed"
 
@@ -51,8 +62,13 @@ def request_for(options: ScoringOptions, model: KnowledgeModel | None) -> ScoreR
 
 
 class LiveModelScores:
+    """The knowledge-model scorer kept current (see the module's docstring)."""
+
+    scorer = "model"
+
     def __init__(self, scene: LiveScene, model: KnowledgeModel, options: ScoringOptions):
         self.scene = scene
+        self._result: ScoreResult | None = None
         self.model = model
         self.predicates = model.scene
         self.elements: dict[str, Element] = {}
@@ -70,10 +86,36 @@ class LiveModelScores:
 
     # ------------------------------------------------------------------ context
 
-    def set_options(self, options: ScoringOptions) -> None:
-        """A new goal, human or cue: a new context, and every score again."""
+    def set_options(self, options: ScoringOptions):
+        """A new goal, human or cue: a new context, and every score again (returns ``ALL``)."""
         self.context = knowledge_context(self.scene.goal, request_for(options, self.model))
         self.rescore_all()
+        return ALL
+
+    def update(self, delta: SceneDelta):
+        """Re-score what the scene's changes can affect; returns the elements whose score may differ
+        (``ALL``: any)."""
+        self._result = None
+        if delta.goal:
+            return ALL  # the caller sets the options again: a new goal is a new context
+        for name in delta.objects_removed:
+            self.forget(name)
+        names = self._affected(delta.atoms) | set(delta.objects_added)
+        names.update(arg for fluent in delta.values for arg in fluent[1:])
+        names = {n for n in names if n in self.scene.objects}
+        self.describe(names)
+        return self.refresh(names)
+
+    def _affected(self, facts) -> set:
+        """Objects whose description a change of these facts can alter: the objects they name, and
+        the items of a place opened (or where a human stands)."""
+        names: set = set()
+        predicates = self.predicates
+        for fact in facts:
+            names.update(fact[1:])
+            if fact[0] in (predicates.access, predicates.human_location) and len(fact) > 1:
+                names |= self.items_at(fact[-1])
+        return names
 
     @property
     def decided(self) -> bool:
@@ -140,6 +182,7 @@ class LiveModelScores:
     # ------------------------------------------------------------------ scores
 
     def rescore_all(self) -> None:
+        self._result = None
         self.scores.clear()
         self.explanations.clear()
         self.contents.clear()
@@ -219,6 +262,13 @@ class LiveModelScores:
         return thresholds.admits(class_score, self.scores.get(name, 0.0))
 
     def result(self) -> ScoreResult:
+        """The scores of the current state, as ``score_by_knowledge_model`` gives them (the same value
+        until something changes)."""
+        if self._result is None:
+            self._result = self._make_result()
+        return self._result
+
+    def _make_result(self) -> ScoreResult:
         context = self.context
         if context.insufficiency:
             return insufficient_result(self.scene.objects, context, context.insufficiency)
@@ -239,8 +289,204 @@ class LiveModelScores:
         )
 
 
+class LiveGoalScores:
+    """The goal scorer kept current (see the module's docstring); :meth:`result` equals
+    ``score_by_goal`` on the current state."""
+
+    scorer = "goal"
+    sufficient = True  # the goal scorer always decides
+
+    def __init__(self, scene: LiveScene):
+        self.scene = scene
+        self.scores: dict[str, float] = {}
+        self.explanations: dict[str, str] = {}
+        self.alternatives: set[str] = set()
+        self._result: ScoreResult | None = None
+        self.rescore_all()
+
+    # ------------------------------------------------------------------ the goal's analysis
+
+    def rescore_all(self) -> None:
+        """A new analysis of the goal, and every object's score again."""
+        self._analyse()
+        self._rescore_all()
+
+    def _analyse(self) -> None:
+        scene = self.scene
+        self.typing: InferredTypes = infer_types(scene.domain, scene.snapshot_problem(), scene.index.by_predicate)
+        self.analysis: GoalAnalysis
+        self.reads: GoalReads
+        self.analysis, self.reads = analyse_goal_reading(self.typing.domain, self.typing.problem, scene.index)
+        self._role_shape = self._roles_read()
+
+    def _rescore_all(self) -> None:
+        scene = self.scene
+        problem = scene.snapshot_problem()
+        self.goal_objects = goal_objects(problem, scene.domain)
+        self.neighbours = self._neighbours()
+        self.candidates = role_candidates(self.typing.domain, self.analysis.role_depth, self._types().values())
+        self._distance: dict[str, int] | None = None
+        self._result = None
+        self.scores.clear()
+        self.explanations.clear()
+        self.alternatives.clear()
+        # An object the goal does not name and that shares no fact with a goal object scores as its
+        # type does, unless a role of its type is populous (then its hops count): score each type once.
+        special = self.goal_objects | self.neighbours.keys()
+        populous = {role for role, count in self.candidates.items() if count > POPULOUS}
+        ancestors = self.typing.domain.ancestors
+        by_type: dict[str, str] = {}  # type -> an object that scored for it
+        for name, type_name in self._types().items():
+            first = by_type.get(type_name)
+            if first is None or name in special:
+                self._score(name)
+                if name not in special and populous.isdisjoint(ancestors(type_name)):
+                    by_type[type_name] = name
+            else:
+                self.scores[name], self.explanations[name] = self.scores[first], self.explanations[first]
+
+    def _types(self):
+        """Each object's type, as the scorer reads it (an untyped domain's inferred classes)."""
+        return self.typing.problem.objects if self.typing.inferred else self.scene.objects
+
+    def _roles_read(self) -> tuple[frozenset, frozenset]:
+        """The single-fact and functional predicates among those that decided the goal's roles."""
+        index, predicates = self.scene.index, self.reads.role_predicates
+        return (
+            frozenset(p for p in index.singletons if p in predicates),
+            frozenset(f for f in index.functional if f[0] in predicates),
+        )
+
+    def _neighbours(self) -> dict[str, str]:
+        return goal_neighbours(self.scene.index.by_object, self.goal_objects, self.analysis.relevant_predicates)
+
+    def _distances(self) -> dict[str, int]:
+        """Hops from the goal's objects (``PlanningTask.goal_distance``), found when first needed."""
+        if self._distance is None:
+            hub = hub_degree(len(self.scene.objects))
+            self._distance = object_distances(self.scene.index, self.goal_objects, hub)
+        return self._distance
+
+    def _score(self, name: str) -> bool:
+        """Score one object again; whether its score or its being an alternative changed."""
+        score, why, populous = goal_score(
+            self.typing.domain,
+            self.analysis.role_depth,
+            self.candidates,
+            self._distances,
+            name,
+            self._types()[name],
+            self.goal_objects,
+            self.neighbours,
+        )
+        changed = self.scores.get(name) != score or (name in self.alternatives) != populous
+        self.scores[name], self.explanations[name] = score, why
+        (self.alternatives.add if populous else self.alternatives.discard)(name)
+        return changed
+
+    # ------------------------------------------------------------------ events
+
+    def set_options(self, options: ScoringOptions) -> set:
+        """The human and the cues do not enter the goal scorer: nothing changes."""
+        return set()
+
+    def update(self, delta: SceneDelta):
+        """Score again what the scene's changes can affect; returns the objects whose score (or
+        being an alternative) changed, or ``ALL``."""
+        if not delta:
+            return set()
+        scene = self.scene
+        everything = dict(scene.domain.constants)
+        everything.update(scene.objects)
+        if delta.goal or self.typing.inferred:  # a fact or an object can change the inferred classes
+            self.rescore_all()
+            return ALL
+        if any(self.reads.fits(self.typing.domain, everything, atom) for atom in delta.atoms) or (
+            delta.atoms and self._roles_read() != self._role_shape
+        ):
+            before = self.analysis
+            self._analyse()  # it read what changed: only analysing again tells whether it still holds
+            if self.analysis != before:
+                self._rescore_all()
+                return ALL
+        changed: set = set()
+        for name in delta.objects_removed:
+            self.scores.pop(name, None)
+            self.explanations.pop(name, None)
+            self.alternatives.discard(name)
+            changed.add(name)
+        changed |= self._recount(delta)
+        if any(
+            atom[0] in self.analysis.relevant_predicates and not self.goal_objects.isdisjoint(atom[1:])
+            for atom in delta.atoms
+        ):
+            shared, self.neighbours = self.neighbours, self._neighbours()
+            changed |= {n for n in shared.keys() ^ self.neighbours.keys() if n in scene.objects}
+            changed |= {n for n in shared.keys() & self.neighbours.keys() if shared[n] != self.neighbours[n]}
+        changed |= self._redistance(delta)
+        for name in set(delta.objects_added) | changed:
+            if name in scene.objects and self._score(name):
+                changed.add(name)
+        if changed:
+            self._result = None
+        return changed
+
+    def _recount(self, delta: SceneDelta) -> set:
+        """New role counts after objects came or went; the candidates of each role whose count changed
+        while populous, or that became or stopped being populous (their explanations name the count)."""
+        if not (delta.objects_added or delta.objects_removed) or not self.candidates:
+            return set()
+        before = self.candidates
+        self.candidates = role_candidates(self.typing.domain, self.analysis.role_depth, self._types().values())
+        roles = {
+            role
+            for role in before.keys() | self.candidates.keys()
+            if before.get(role, 0) != self.candidates.get(role, 0)
+            and max(before.get(role, 0), self.candidates.get(role, 0)) > POPULOUS
+        }
+        if not roles:
+            return set()
+        ancestors = self.typing.domain.ancestors
+        return {name for name, type_name in self._types().items() if not roles.isdisjoint(ancestors(type_name))}
+
+    def _redistance(self, delta: SceneDelta) -> set:
+        """Hops from the goal again when a link came or went (or the scene's size moved the hub mark);
+        the populous roles' candidates whose hops changed."""
+        if self._distance is None:
+            return set()
+        if not (delta.objects_added or delta.objects_removed or any(len(atom) > 2 for atom in delta.atoms)):
+            return set()
+        before, self._distance = self._distance, None
+        after = self._distances()
+        populous = {role for role, count in self.candidates.items() if count > POPULOUS}
+        ancestors = self.typing.domain.ancestors
+        return {
+            name
+            for name, type_name in self._types().items()
+            if before.get(name) != after.get(name) and not populous.isdisjoint(ancestors(type_name))
+        }
+
+    # ------------------------------------------------------------------ views
+
+    def passes(self, name: str, thresholds: Thresholds) -> bool:
+        """Whether the object passes the thresholds (``prune.select_relevant`` for one object)."""
+        return thresholds.admits(None, self.scores.get(name, 0.0))
+
+    def result(self) -> ScoreResult:
+        if self._result is None:
+            types = self._types()
+            self._result = ScoreResult(
+                "goal",
+                dict(self.scores),
+                element_class={name: types[name] for name in self.scores},
+                explanations=dict(self.explanations),
+                alternatives=frozenset(self.alternatives),
+            )
+        return self._result
+
+
 class FullScores:
-    """Any scorer, re-scored in full on every change (used when no incremental form exists)."""
+    """Any scorer, re-scored in full on every change (used when no live form exists)."""
 
     def __init__(self, scene: LiveScene, model: KnowledgeModel | None, options: ScoringOptions, domain_path=None):
         self.scene = scene
@@ -249,18 +495,20 @@ class FullScores:
         self.options = options
         self._result: ScoreResult | None = None
 
-    def set_options(self, options: ScoringOptions) -> None:
+    @property
+    def scorer(self) -> str:
+        return self.result().scorer
+
+    def set_options(self, options: ScoringOptions):
         self.options = options
         self._result = None
+        return ALL
 
-    def describe(self, names) -> None:
+    def update(self, delta: SceneDelta):
+        if not delta:
+            return set()
         self._result = None
-
-    def describe_all(self) -> None:
-        self._result = None
-
-    def forget(self, name: str) -> None:
-        self._result = None
+        return ALL
 
     def items_at(self, place: str) -> set:
         return set()
@@ -272,10 +520,6 @@ class FullScores:
     def passes(self, name: str, thresholds: Thresholds) -> bool:
         scores = self.result()
         return thresholds.admits(scores.class_score(name), scores.element_scores.get(name, 0.0))
-
-    def refresh(self, names):
-        self._result = None
-        return ALL
 
     def result(self) -> ScoreResult:
         if self._result is None:

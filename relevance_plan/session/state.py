@@ -1,17 +1,19 @@
 """The live scene: objects, true facts and the goal, changed one event at a time.
 
-Kept in memory only.  :class:`LiveIndex` mirrors ``analysis.InitIndex``
-(facts by predicate and by object, which argument positions are functional)
-but is updated fact by fact, so closure and the constraint rules can run on
-the current state without re-indexing it.  :meth:`LiveScene.problem_text`
-renders the current state as a PDDL problem in the user's spelling, for
-determining from scratch, planning and snapshots.
+Kept in memory only.  :class:`LiveIndex` holds the current facts exactly as
+``analysis.index_init`` indexes the written current state (the same lists in
+the same order), but is updated fact by fact, so every stage of pruning reads
+the live state as it would read a snapshot, without re-indexing it.
+:meth:`LiveScene.snapshot_problem` is the current state as a Problem value
+(built once per change, on first use); :meth:`LiveScene.problem_text`
+renders it as PDDL in the user's spelling, for planning and snapshots.
 """
 
 from __future__ import annotations
 
-from collections import defaultdict
-from collections.abc import Callable, Iterable
+from bisect import bisect_left, insort
+from collections.abc import Iterable, Iterator
+from dataclasses import dataclass, field
 from types import MappingProxyType
 
 from relevance_plan.pddl.formatter import format_problem
@@ -20,34 +22,117 @@ from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.parser import read_problem
 
 
-class LiveIndex:
-    """The current facts, indexed for closure; duck-types ``analysis.InitIndex``."""
+def atom_objects(atom: tuple) -> Iterator[str]:
+    """The distinct objects of a fact or a numeric term, each once (as ``index_init`` files them)."""
+    if len(atom) == 3:
+        yield atom[1]
+        if atom[2] != atom[1]:
+            yield atom[2]
+    else:
+        yield from dict.fromkeys(atom[1:])
 
-    def __init__(self, facts: Iterable[tuple] = ()):
-        self.by_predicate: dict[str, set] = defaultdict(set)
-        self.by_object: dict[str, set] = defaultdict(set)
-        self._by_object_predicate: dict[tuple[str, str], set] = defaultdict(set)
-        # (predicate, position) -> value -> number of facts; a position is functional
-        # when no value occurs in two facts (see analysis.index_init).
-        self._counts: dict[tuple[str, int], dict[str, int]] = defaultdict(dict)
-        self._clashes: dict[tuple[str, int], int] = defaultdict(int)
-        for fact in facts:
+
+class LiveIndex:
+    """The current facts, indexed as ``analysis.index_init`` indexes the written state (a ``FactIndex``).
+
+    Each predicate's and each object's list holds its facts sorted (the
+    order of the written state), then its numeric terms (``(distance a b)``,
+    linking objects like a fact) in the order their values were first set.
+    Which argument positions are functional, which predicates have a single
+    fact, and how many facts share each value (``fan``) are kept by counts,
+    so asking costs nothing like a pass over the facts.
+    """
+
+    def __init__(self, facts: Iterable[tuple] = (), terms: Iterable[tuple] = ()):
+        self.by_predicate: dict[str, list[tuple]] = {}
+        self.by_object: dict[str, list[tuple]] = {}
+        # how many numeric terms end each predicate's and each object's list
+        self._predicate_terms: dict[str, int] = {}
+        self._object_terms: dict[str, int] = {}
+        # (predicate, position) -> value -> number of facts; a position is functional when no value
+        # occurs in two facts (``index_init``'s test, for distinct facts)
+        self._counts: dict[tuple[str, int], dict[str, int]] = {}
+        self._clashes: dict[tuple[str, int], int] = {}
+        self._singletons: set[str] = set()
+        self._functional: frozenset | None = None
+        self._degrees: dict[int, int] = {}  # degree -> how many objects have it
+        for fact in sorted(facts):  # in order: each insertion lands at the end of its lists
             self.add(fact)
+        for term in terms:
+            self.add_term(term)
+
+    # ------------------------------------------------------------------ changes
 
     def add(self, fact: tuple) -> None:
-        self._change(fact, set.add, 1)
+        self._insert(self.by_predicate, self._predicate_terms, fact[0], fact)
+        for name in atom_objects(fact):
+            self._insert(self.by_object, self._object_terms, name, fact)
+        self._count(fact, 1)
 
     def discard(self, fact: tuple) -> None:
         """Remove a fact that is there (the caller checks)."""
-        self._change(fact, set.discard, -1)
+        self._delete(self.by_predicate, self._predicate_terms, fact[0], fact)
+        for name in atom_objects(fact):
+            self._delete(self.by_object, self._object_terms, name, fact)
+        self._count(fact, -1)
 
-    def _change(self, fact: tuple, change: Callable[[set, tuple], None], step: int) -> None:
-        change(self.by_predicate[fact[0]], fact)
-        for arg in set(fact[1:]):
-            change(self.by_object[arg], fact)
-            change(self._by_object_predicate[arg, fact[0]], fact)
-        for position, value in enumerate(fact[1:]):
-            counts = self._counts[fact[0], position]
+    def add_term(self, term: tuple) -> None:
+        """A numeric term ``(function, args...)`` whose value was set for the first time."""
+        self._append(self.by_predicate, self._predicate_terms, term[0], term)
+        for name in atom_objects(term):
+            self._append(self.by_object, self._object_terms, name, term)
+        self._count(term, 1)
+
+    def discard_term(self, term: tuple) -> None:
+        for table, terms, key in (
+            (self.by_predicate, self._predicate_terms, term[0]),
+            *((self.by_object, self._object_terms, name) for name in atom_objects(term)),
+        ):
+            self._move_degree(table, len(table[key]), -1)
+            table[key].remove(term)
+            terms[key] -= 1
+            self._drop_if_empty(table, terms, key)
+        self._count(term, -1)
+
+    def _insert(self, table: dict, terms: dict, key: str, fact: tuple) -> None:
+        items = table.get(key)
+        if items is None:
+            items = table[key] = []
+        self._move_degree(table, len(items), 1)
+        insort(items, fact, 0, len(items) - terms.get(key, 0))
+
+    def _append(self, table: dict, terms: dict, key: str, term: tuple) -> None:
+        items = table.setdefault(key, [])
+        self._move_degree(table, len(items), 1)
+        items.append(term)
+        terms[key] = terms.get(key, 0) + 1
+
+    def _delete(self, table: dict, terms: dict, key: str, fact: tuple) -> None:
+        items = table[key]
+        self._move_degree(table, len(items), -1)
+        del items[bisect_left(items, fact, 0, len(items) - terms.get(key, 0))]
+        self._drop_if_empty(table, terms, key)
+
+    def _move_degree(self, table: dict, degree: int, step: int) -> None:
+        """An object's degree moves by ``step`` from ``degree`` (predicates' lists are not counted)."""
+        if table is not self.by_object:
+            return
+        degrees = self._degrees
+        if degree:
+            degrees[degree] -= 1
+        if degree + step:
+            degrees[degree + step] = degrees.get(degree + step, 0) + 1
+
+    @staticmethod
+    def _drop_if_empty(table: dict, terms: dict, key: str) -> None:
+        if not table[key]:  # index_init has no entry for what has no fact
+            del table[key]
+            terms.pop(key, None)
+
+    def _count(self, atom: tuple, step: int) -> None:
+        predicate = atom[0]
+        for position, value in enumerate(atom[1:]):
+            counts = self._counts.setdefault((predicate, position), {})
             before = counts.get(value, 0)
             after = before + step
             if after:
@@ -55,72 +140,147 @@ class LiveIndex:
             else:
                 del counts[value]
             # a value in two facts or more makes the position not functional
-            self._clashes[fact[0], position] += (after >= 2) - (before >= 2)
+            change = (after >= 2) - (before >= 2)
+            if change:
+                self._clashes[predicate, position] = self._clashes.get((predicate, position), 0) + change
+                self._functional = None
+        if len(self.by_predicate.get(predicate, ())) == 1:
+            self._singletons.add(predicate)
+        else:
+            self._singletons.discard(predicate)
+        if len(self.by_predicate.get(predicate, ())) <= 1:  # a predicate came or went
+            self._functional = None
 
-    def facts_of(self, name: str, predicate: str) -> set:
-        return self._by_object_predicate.get((name, predicate), set())
+    # ------------------------------------------------------------------ views
+
+    def facts_of(self, name: str, predicate: str) -> list[tuple]:
+        return [atom for atom in self.by_object.get(name, ()) if atom[0] == predicate]
+
+    def degree(self, name: str) -> int:
+        """How many facts and terms name the object (what ``hub_degree`` is compared with)."""
+        return len(self.by_object.get(name, ()))
+
+    def any_degree_between(self, low: int, high: int) -> bool:
+        """Whether some object is named by more than ``low`` and at most ``high`` facts and terms."""
+        return any(self._degrees.get(degree) for degree in range(low + 1, high + 1))
+
+    def fan(self, predicate: str, position: int) -> float:
+        """Facts per distinct object at ``position`` of ``predicate`` (``analysis.fan_in``'s value)."""
+        atoms = len(self.by_predicate.get(predicate, ()))
+        return atoms / max(1, len(self._counts.get((predicate, position), ())))
 
     @property
     def functional(self) -> frozenset:
-        found: set[tuple[str, int, int]] = set()
-        for predicate, facts in self.by_predicate.items():
-            if not facts:
-                continue
-            arity = len(next(iter(facts))) - 1
-            for key in range(arity):
-                if not self._clashes.get((predicate, key)):
-                    found.update((predicate, key, other) for other in range(arity) if other != key)
-        return frozenset(found)
+        if self._functional is None:
+            found: set[tuple[str, int, int]] = set()
+            for predicate, atoms in self.by_predicate.items():
+                arity = len(atoms[0]) - 1
+                for key in range(arity):
+                    if not self._clashes.get((predicate, key)):
+                        found.update((predicate, key, other) for other in range(arity) if other != key)
+            self._functional = frozenset(found)
+        return self._functional
 
     @property
     def singletons(self) -> frozenset:
-        return frozenset(p for p, facts in self.by_predicate.items() if len(facts) == 1)
+        return frozenset(self._singletons)
+
+
+@dataclass
+class SceneDelta:
+    """What one event changed in the scene (see :meth:`LiveScene.take_delta`)."""
+
+    added: list[tuple] = field(default_factory=list)  # facts and numeric terms the index gained
+    removed: list[tuple] = field(default_factory=list)  # ... and lost
+    objects_added: list[str] = field(default_factory=list)
+    objects_removed: list[str] = field(default_factory=list)
+    removed_types: dict[str, str] = field(default_factory=dict)  # each removed object's type
+    values: list[tuple] = field(default_factory=list)  # numeric fluents whose value changed
+    goal: bool = False
+
+    def __bool__(self) -> bool:
+        return bool(
+            self.added or self.removed or self.objects_added or self.objects_removed or self.values or self.goal
+        )
+
+    @property
+    def atoms(self) -> list[tuple]:
+        """Every fact and numeric term that came or went."""
+        return self.added + self.removed
 
 
 class LiveScene:
-    """Objects (in the order they appeared), true facts and the goal of the current scene."""
+    """Objects (in the order they appeared), true facts, numeric values and the goal of the current scene."""
 
     def __init__(self, domain: Domain, problem: Problem):
         self.domain = domain
         self.name = problem.name
         self.objects: dict[str, str] = dict(problem.objects)
+        # the objects by type, types in order of first appearance: the order of the written state
+        self._by_type: dict[str, dict[str, None]] = {}
+        for name, type_name in self.objects.items():
+            self._by_type.setdefault(type_name, {})[name] = None
         self.display: dict[str, str] = {name: problem.display(name) for name in problem.objects}
         self.facts: set = set(problem.init)
-        self.index = LiveIndex(self.facts)
-        self.goal: Formula = problem.goal
         self.values: dict[tuple, float] = dict(problem.numeric_init)  # (function, args...) -> value
+        self.index = LiveIndex(self.facts, (term for term in self.values if len(term) > 1))
+        self.goal: Formula = problem.goal
         # carried into every written problem unchanged, minus what mentions a removed object
         self.timed_literals = problem.timed_literals
         self.constraints = problem.constraints
         self.metric = problem.metric
+        self._snapshot: Problem | None = None
+        self.delta = SceneDelta()  # what changed since the last take_delta
+
+    def take_delta(self) -> SceneDelta:
+        """What changed since the last call (an event's changes: the session takes them once per event)."""
+        delta, self.delta = self.delta, SceneDelta()
+        return delta
 
     # ------------------------------------------------------------------ changes
 
     def add_object(self, name: str, type_name: str, display: str) -> None:
         self.objects[name] = type_name
+        self._by_type.setdefault(type_name, {})[name] = None
         self.display[name] = display
+        self._snapshot = None
+        self.delta.objects_added.append(name)
 
     def remove_object(self, name: str) -> list[tuple]:
-        """Remove the object and every fact that mentions it; returns those facts."""
-        gone = list(self.index.by_object.get(name, ()))
+        """Remove the object and every fact and value that mentions it; returns those facts."""
+        gone = [atom for atom in self.index.by_object.get(name, ()) if atom in self.facts]
         for fact in gone:
             self.unset(fact)
-        del self.objects[name]
+        type_name = self.objects.pop(name)
+        del self._by_type[type_name][name]
+        if not self._by_type[type_name]:
+            del self._by_type[type_name]
         del self.display[name]
-        self.index.by_object.pop(name, None)
-        self.values = {fluent: value for fluent, value in self.values.items() if name not in fluent[1:]}
+        for fluent in [fluent for fluent in self.values if name in fluent[1:]]:
+            del self.values[fluent]
+            if len(fluent) > 1:
+                self.index.discard_term(fluent)
+                self.delta.removed.append(fluent)
         self.timed_literals = tuple(
             timed
             for timed in self.timed_literals
             if name not in (timed.atom or ())[1:] and name not in (timed.fluent or ())[1:]
         )
+        self._snapshot = None
+        self.delta.objects_removed.append(name)
+        self.delta.removed_types[name] = type_name
         return gone
 
     def set_value(self, fluent: tuple, value: float) -> bool:
         """A numeric fluent takes ``value``; False when it had it already."""
         if self.values.get(fluent) == value:
             return False
+        if fluent not in self.values and len(fluent) > 1:
+            self.index.add_term(fluent)
+            self.delta.added.append(fluent)
         self.values[fluent] = value
+        self._snapshot = None
+        self.delta.values.append(fluent)
         return True
 
     def set(self, fact: tuple) -> bool:
@@ -128,6 +288,8 @@ class LiveScene:
             return False
         self.facts.add(fact)
         self.index.add(fact)
+        self._snapshot = None
+        self.delta.added.append(fact)
         return True
 
     def unset(self, fact: tuple) -> bool:
@@ -135,7 +297,14 @@ class LiveScene:
             return False
         self.facts.discard(fact)
         self.index.discard(fact)
+        self._snapshot = None
+        self.delta.removed.append(fact)
         return True
+
+    def set_goal(self, goal: Formula) -> None:
+        self.goal = goal
+        self._snapshot = None
+        self.delta.goal = True
 
     # ------------------------------------------------------------------ views
 
@@ -146,26 +315,26 @@ class LiveScene:
 
     def ordered_objects(self) -> dict:
         """The objects grouped by type, types in order of first appearance (the order of :meth:`problem_text`)."""
-        by_type: dict[str, list[str]] = {}
-        for name, type_name in self.objects.items():
-            by_type.setdefault(type_name, []).append(name)
-        return {name: type_name for type_name, names in by_type.items() for name in names}
+        return {name: type_name for type_name, names in self._by_type.items() for name in names}
 
     def snapshot_problem(self) -> Problem:
-        """The current state as a Problem value without source text (for pruning in memory)."""
-        return Problem(
-            name=self.name,
-            domain_name=self.domain.name,
-            objects=MappingProxyType(self.ordered_objects()),
-            init=frozenset(self.facts),
-            goal=self.goal,
-            text="",
-            display_names=MappingProxyType(dict(self.display)),
-            numeric_init=MappingProxyType(dict(self.values)),
-            timed_literals=self.timed_literals,
-            constraints=self.constraints,
-            metric=self.metric,
-        )
+        """The current state as a Problem value without source text (for pruning in memory); the
+        same value until the scene changes."""
+        if self._snapshot is None:
+            self._snapshot = Problem(
+                name=self.name,
+                domain_name=self.domain.name,
+                objects=MappingProxyType(self.ordered_objects()),
+                init=frozenset(self.facts),
+                goal=self.goal,
+                text="",
+                display_names=MappingProxyType(dict(self.display)),
+                numeric_init=MappingProxyType(dict(self.values)),
+                timed_literals=self.timed_literals,
+                constraints=self.constraints,
+                metric=self.metric,
+            )
+        return self._snapshot
 
     def problem_text(self) -> str:
         """The current state as PDDL in the user's spelling (objects grouped by type, facts sorted)."""

@@ -7,10 +7,11 @@ fires.  While the session is idle (nobody to serve: no goal and no human),
 element and fact events fire nothing.
 
 A fact change among objects that stay irrelevant fires nothing, and that is
-safe: such a change cannot alter the kept set (closure follows a fact only
-from a kept object in a rule's position, the rules did not change, and no
-score crossed a threshold), so the previous determination is still the one a
-determination from scratch would give.
+safe: such a change cannot alter the relevant set (no score crossed a
+threshold) nor the first selection (closure follows a fact only from a
+watched object in a rule's position, the rules did not change, and nothing
+else the selection read changed: ``reuse.selection_read``), so the selection
+in force is still the one a determination from scratch would give.
 """
 
 from __future__ import annotations
@@ -27,10 +28,11 @@ class Change:
     idle: bool  # nobody to serve: element and fact events fire nothing
     changed: bool  # the event changed the scene, goal, human or cues
     touched: frozenset  # objects the event names (fact arguments, the object added or removed)
-    kept: frozenset  # kept (selected + restored) by the determination in force before the event
-    linked: frozenset  # kept objects from which closure follows the changed fact
+    kept: frozenset  # watched before the event: the first selection's kept set and its closure
+    linked: frozenset  # watched objects from which closure follows the changed fact
     crossed: frozenset  # elements whose score crossed the thresholds, either way
     rules_changed: bool  # the inferred closure rules (functional / single-valued predicates) changed
+    read: str = ""  # what else the event changed that the first selection read ("" when nothing)
     show: Callable[[str], str] = str  # the user's spelling of a name
 
 
@@ -100,6 +102,14 @@ def closure_rules_changed(change: Change) -> str | None:
     return None
 
 
+def selection_read(change: Change) -> str | None:
+    """A fact the first selection read besides closure's (the reachability repair explored the
+    object, a link its rankings follow, a static fact): see ``reuse.selection_read``."""
+    if change.event.kind in ("set", "unset") and change.read and not change.idle:
+        return f"selection read: {change.read}"
+    return None
+
+
 Trigger = Callable[[Change], "str | None"]
 
 TRIGGERS: dict[str, Trigger] = {
@@ -111,6 +121,7 @@ TRIGGERS: dict[str, Trigger] = {
     "kept-touched": kept_touched,
     "relevance-crossed": relevance_crossed,
     "closure-rules-changed": closure_rules_changed,
+    "selection-read": selection_read,
 }
 
 
