@@ -13,6 +13,10 @@ receptacles.  One agent with one hand starts at a random place.
 other receptacles and, for a third of the problems, brings the agent back
 to where it started.
 
+``SceneGraphEvents`` makes seeded event streams for such a scene (items
+moved, added and removed, receptacles and doors opened and closed, new
+goals, plan requests), for the live session's tests and benchmark.
+
 A sufficient set (``necessary``): the agent, the goal items, their
 receptacles and their target receptacles, and the places, rooms and doors on
 shortest routes from the agent's place through each item's place and its
@@ -23,6 +27,7 @@ stay open, so a plan can visit these places in any order.
 from __future__ import annotations
 
 import random
+from collections.abc import Iterable, Mapping
 
 from relevance_plan.generators.classic import Instance
 from relevance_plan.generators.graphs import Graph, add_edge, shortest_path, spanning_tree
@@ -126,3 +131,113 @@ def build_scenegraph(rng: random.Random, size: int) -> Instance:
     needed.add(room_of[start])
     inst.necessary = sorted(needed)
     return inst
+
+
+# --------------------------------------------------------------------------- event streams
+
+EVENT_KINDS = ("move", "move-goal", "receptacle", "door", "agent", "add", "remove", "goal", "plan")
+
+
+class SceneGraphEvents:
+    """Seeded scene events for a scene-graph problem, as ``watch`` reads them (dictionaries).
+
+    It follows the scene itself (where each item is, which receptacles and
+    doors are open, the goal), so every event it makes is valid when the
+    events are applied in order.  :meth:`make` gives the events of one kind:
+
+    * ``move``: an item the goal does not name is taken out of its receptacle
+      and put into another (two events: ``unset``, then ``set``);
+    * ``move-goal``: the same for an item the goal names, seen in its new
+      receptacle before it is gone from the old one;
+    * ``receptacle`` / ``door``: an openable receptacle or a door is opened
+      or closed (``set`` the new state, then ``unset`` the old one); ``among``
+      chooses from the given objects when it names some of that kind;
+    * ``agent``: the agent is seen at another place (then no longer at the old one);
+
+    What the goal needs is seen in its new state before its old state goes:
+    between the two events the goal stays reachable (a goal item in no
+    receptacle, a door neither open nor closed, would make it unreachable
+    until the second event, and the reachability repair searches the whole
+    scene before it says so).
+    * ``add``: a new item in some receptacle; ``remove``: an item the goal
+      does not name leaves the scene;
+    * ``goal``: a new goal, one to three items into other receptacles;
+    * ``plan``: a plan request.
+    """
+
+    def __init__(self, objects: Mapping[str, str], facts: Iterable[tuple], goal: Iterable[tuple], rng: random.Random):
+        self.rng = rng
+        self.items = sorted(name for name, kind in objects.items() if kind == "item")
+        self.places = sorted(name for name, kind in objects.items() if kind == "place")
+        self.agent_at: dict[str, str] = {}
+        self.receptacles = sorted(name for name, kind in objects.items() if kind == "receptacle")
+        self.doors = sorted(name for name, kind in objects.items() if kind == "door")
+        self.holder: dict[str, str] = {}
+        self.openable: set[str] = set()
+        self.open: set[str] = set()
+        for fact in facts:
+            if fact[0] == "in":
+                self.holder[fact[1]] = fact[2]
+            elif fact[0] == "openable":
+                self.openable.add(fact[1])
+            elif fact[0] in ("opened", "door-open"):
+                self.open.add(fact[1])
+            elif fact[0] == "agent-at":
+                self.agent_at[fact[1]] = fact[2]
+        self.goal_items = sorted({atom[1] for atom in goal if atom[0] == "in"})
+        self.added = 0
+
+    def make(self, kind: str, among: Iterable[str] = ()) -> list[dict]:
+        """The events of one change of ``kind`` (one of ``EVENT_KINDS``)."""
+        rng = self.rng
+        if kind in ("move", "move-goal", "remove"):
+            goal = set(self.goal_items)
+            pool = [i for i in self.items if (i in goal) == (kind == "move-goal") and i in self.holder]
+            item = rng.choice(pool)
+            if kind == "remove":
+                self.items.remove(item)
+                del self.holder[item]
+                return [{"event": "remove", "object": item}]
+            there = rng.choice([r for r in self.receptacles if r != self.holder[item]])
+            events = [_fact("unset", "in", item, self.holder[item]), _fact("set", "in", item, there)]
+            self.holder[item] = there
+            return events[::-1] if kind == "move-goal" else events
+        if kind in ("receptacle", "door"):
+            return self._toggle(kind, set(among))
+        if kind == "agent":
+            agent = rng.choice(sorted(self.agent_at))
+            there = rng.choice([p for p in self.places if p != self.agent_at[agent]])
+            events = [_fact("set", "agent-at", agent, there), _fact("unset", "agent-at", agent, self.agent_at[agent])]
+            self.agent_at[agent] = there
+            return events
+        if kind == "add":
+            self.added += 1
+            name = f"{rng.choice(ITEM_KINDS)}_new_{self.added}"
+            self.items.append(name)
+            self.holder[name] = rng.choice(self.receptacles)
+            return [{"event": "add", "object": name, "type": "item", "facts": [["in", name, self.holder[name]]]}]
+        if kind == "goal":
+            return [{"event": "goal", "goal": self._goal()}]
+        if kind == "plan":
+            return [{"event": "plan"}]
+        raise ValueError(f"unknown kind of scene event {kind!r} (expected one of: {', '.join(EVENT_KINDS)})")
+
+    def _toggle(self, kind: str, among: set[str]) -> list[dict]:
+        pool = sorted(self.openable) if kind == "receptacle" else self.doors
+        chosen = [name for name in pool if name in among] or pool
+        name = self.rng.choice(chosen)
+        opened, closed = ("opened", "closed") if kind == "receptacle" else ("door-open", "door-closed")
+        old, new = (opened, closed) if name in self.open else (closed, opened)
+        (self.open.discard if name in self.open else self.open.add)(name)
+        return [_fact("set", new, name), _fact("unset", old, name)]
+
+    def _goal(self) -> str:
+        rng = self.rng
+        chosen = rng.sample([i for i in self.items if i in self.holder], rng.randint(1, 3))
+        atoms = [(item, rng.choice([r for r in self.receptacles if r != self.holder[item]])) for item in chosen]
+        self.goal_items = sorted(chosen)
+        return "(and " + " ".join(f"(in {item} {target})" for item, target in atoms) + ")"
+
+
+def _fact(event: str, *fact: str) -> dict:
+    return {"event": event, "fact": list(fact)}
