@@ -22,6 +22,7 @@ from relevance_plan.relevance.analysis import (
 from relevance_plan.relevance.repair import REPAIR_MAX_FAN
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
 from relevance_plan.relevance.task import PlanningTask
+from relevance_plan.session.state import LiveIndex
 
 
 def scenegraph_task(size: int, seed: int, **fields) -> PlanningTask:
@@ -63,12 +64,16 @@ def test_the_analysis_says_which_patterns_it_asked_about():
     typing = task.typing
     analysis, reads = analyse_goal_reading(typing.domain, typing.problem, task.init_index)
     assert analysis == analyse_goal(typing.domain, typing.problem, task.init_index)
-    objects = dict(task.problem.objects)
+    objects, index, domain = task.problem.objects, task.init_index, typing.domain
     goal_item = sorted(task.goal_objects & {n for n, t in objects.items() if t == "item"})[0]
-    holder = next(atom[2] for atom in task.init_index.by_object[goal_item] if atom[0] == "in")
-    assert reads.fits(typing.domain, objects, ("in", goal_item, holder))  # where a goal item is
-    other = next(n for n, t in objects.items() if t == "item" and n not in task.goal_objects)
-    assert not reads.fits(typing.domain, objects, ("in", other, holder))  # an item the goal does not name
+    holder = next(atom for atom in index.by_object[goal_item] if atom[0] == "in")
+    elsewhere = next(atom for atom in index.by_predicate["in"] if atom[2] != holder[2])
+    other = (elsewhere[0], elsewhere[1], holder[2])  # an item the goal does not name, put where the goal item is
+    assert not reads.answers_change(domain, objects.__getitem__, index, [other], [])
+    # the goal item gone from its receptacle: nothing satisfies "it is in some receptacle" any more
+    live = LiveIndex(task.problem.init)
+    live.discard(holder)
+    assert reads.answers_change(domain, objects.__getitem__, live, [], [holder])
     assert {"agent-at", "in"} <= reads.role_predicates
 
 

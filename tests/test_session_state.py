@@ -89,3 +89,16 @@ def test_the_snapshot_is_made_once_per_change_and_each_change_is_recorded_once()
     delta = scene.take_delta()
     assert delta.objects_removed == ["cup_new"] and delta.removed == [("in", "cup_new", receptacle)]
     assert delta.removed_types == {"cup_new": "item"}
+
+
+def test_the_objects_are_written_grouped_by_type_in_the_order_they_came():
+    domain = load_domain(DOMAINS_DIR / "scenegraph" / "domain.pddl")
+    scene = LiveScene(domain, read_problem(generate_sized_problem("scenegraph", 2, 1, 60).pddl_text, domain))
+    scene.add_object("cup_new", "item", "cup_new")  # items come last: the order stays the scene's own
+    scene.add_object("sink_new", "receptacle", "sink_new")  # a receptacle after the items: written with its type
+    scene.add_object("lamp_new", "item", "lamp_new")
+    written = read_problem(scene.problem_text(), domain).objects
+    assert list(scene.snapshot_problem().objects) == list(written)
+    types = list(dict.fromkeys(written.values()))
+    assert types == list(dict.fromkeys(scene.objects.values()))[: len(types)]
+    assert list(written).index("sink_new") < list(written).index("cup_new")

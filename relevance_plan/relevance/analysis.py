@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import itertools
 from collections import defaultdict
-from collections.abc import Collection, Iterable, Mapping
+from collections.abc import Callable, Collection, Iterable, Mapping
 from dataclasses import dataclass
 from typing import Protocol
 
@@ -490,23 +490,51 @@ class _Regression:
 @dataclass(frozen=True)
 class GoalReads:
     """What :func:`analyse_goal` read of the facts: the patterns it asked whether some fact satisfies
-    (by predicate), and the predicates whose single fact or functional positions can decide a role
-    (those of the conditions of the achievers it regressed through).  While no fact that fits one
-    of those patterns comes or goes and those predicates keep their single facts and functional
-    positions, the analysis of the same goal comes out the same."""
+    (by predicate) with the answers, and the predicates whose single fact or functional positions
+    can decide a role (those of the conditions of the achievers it regressed through).  While no
+    answer changes and those predicates keep their single facts and functional positions, the
+    analysis of the same goal comes out the same."""
 
-    patterns: Mapping[str, tuple[Pattern, ...]]
+    patterns: Mapping[str, tuple[tuple[Pattern, bool], ...]]  # predicate -> (pattern, answer)
     role_predicates: frozenset[str]
 
-    def fits(self, domain: Domain, objects: Mapping[str, str], fact: GroundAtom) -> bool:
-        """Whether ``fact`` fits a pattern the analysis asked about (``objects``: every object's type)."""
-        for _, args in self.patterns.get(fact[0], ()):
-            if len(args) == len(fact) - 1 and all(
-                value == name if kind == "obj" else domain.is_subtype(objects.get(value, "object"), name)
-                for (kind, name), value in zip(args, fact[1:])
+    def answers_change(
+        self,
+        domain: Domain,
+        type_of: Callable[[str], str],
+        index: FactIndex,
+        added: Iterable[GroundAtom],
+        removed: Iterable[GroundAtom],
+    ) -> bool:
+        """Whether facts that came (``added``) or went (``removed``, from ``index`` already) change
+        an answer: a pattern now satisfied that was not, or one no fact satisfies any more
+        (``type_of``: an object's type)."""
+        for fact in added:
+            if any(
+                not answer and _fits(domain, type_of, pattern, fact)
+                for pattern, answer in self.patterns.get(fact[0], ())
             ):
                 return True
+        for fact in removed:
+            for pattern, answer in self.patterns.get(fact[0], ()):
+                if answer and _fits(domain, type_of, pattern, fact) and not _satisfied(domain, type_of, index, pattern):
+                    return True
         return False
+
+
+def _fits(domain: Domain, type_of: Callable[[str], str], pattern: Pattern, fact: GroundAtom) -> bool:
+    args = pattern[1]
+    return len(args) == len(fact) - 1 and all(
+        value == name if kind == "obj" else domain.is_subtype(type_of(value), name)
+        for (kind, name), value in zip(args, fact[1:])
+    )
+
+
+def _satisfied(domain: Domain, type_of: Callable[[str], str], index: FactIndex, pattern: Pattern) -> bool:
+    """Whether some fact satisfies ``pattern`` (the facts of an object it names, when it names one)."""
+    named = [name for kind, name in pattern[1] if kind == "obj"]
+    facts = index.by_object.get(named[0], ()) if named else index.by_predicate.get(pattern[0], ())
+    return any(fact[0] == pattern[0] and _fits(domain, type_of, pattern, fact) for fact in facts)
 
 
 class _ReadingRegression(_Regression):
@@ -521,9 +549,9 @@ class _ReadingRegression(_Regression):
         return answer
 
     def reads(self) -> GoalReads:
-        patterns: dict[str, list[Pattern]] = defaultdict(list)
-        for pattern in self.asked:
-            patterns[pattern[0]].append(pattern)
+        patterns: dict[str, list[tuple[Pattern, bool]]] = defaultdict(list)
+        for pattern, answer in self.asked.items():
+            patterns[pattern[0]].append((pattern, answer))
         regressed = {pattern[0] for pattern, satisfied in self.asked.items() if not satisfied}
         role_predicates = {
             atom.predicate

@@ -342,7 +342,13 @@ class RepairOrder:
         # The objects the distances reach rank first; the others, ranked alike after them, only
         # when those run out (most of a building's items: no link leads from their receptacle to them).
         linked = [name for name in distance.keys() | between.keys() if name in classes and name not in current]
-        ranked = sorted(linked, key=rank)
+        to, back, off, score = distance.get, between.get, far if sources else 0, self.scores.get
+        ranked = [  # sorted by rank(name), its parts looked up here: thousands of objects, a dozen rounds
+            key[-1]
+            for key in sorted(
+                (to(n, far) + back(n, off), to(n, far), fruitless.get(classes[n], 0), -score(n, 0.0), n) for n in linked
+            )
+        ]
         rest = len(classes) - sum(1 for name in current if name in classes) - len(ranked)
         kept_of: dict[str, list[str]] = {}
         chosen: list[str] = []

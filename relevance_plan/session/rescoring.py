@@ -396,12 +396,11 @@ class LiveGoalScores:
         if not delta:
             return set()
         scene = self.scene
-        everything = dict(scene.domain.constants)
-        everything.update(scene.objects)
         if delta.goal or self.typing.inferred:  # a fact or an object can change the inferred classes
             self.rescore_all()
             return ALL
-        if any(self.reads.fits(self.typing.domain, everything, atom) for atom in delta.atoms) or (
+        domain, index = self.typing.domain, scene.index
+        if self.reads.answers_change(domain, scene.type_of, index, delta.added, delta.removed) or (
             delta.atoms and self._roles_read() != self._role_shape
         ):
             before = self.analysis
@@ -478,7 +477,7 @@ class LiveGoalScores:
             self._result = ScoreResult(
                 "goal",
                 dict(self.scores),
-                element_class={name: types[name] for name in self.scores},
+                element_class=dict(types),  # every object is scored
                 explanations=dict(self.explanations),
                 alternatives=frozenset(self.alternatives),
             )

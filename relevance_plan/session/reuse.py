@@ -166,15 +166,13 @@ def rules_by_predicate(rules: Iterable[ConstraintRule]) -> dict[str, tuple[Const
 
 
 def analysis_read(basis: SelectionBasis, scene: LiveScene, delta: SceneDelta) -> bool:
-    """Whether the event changed a fact the goal's analysis read (a fact that fits a pattern it asked
-    about, or a predicate's single fact or functional position it may have read): then only analysing
-    the goal again tells whether the analysis still holds."""
+    """Whether the event changed what the goal's analysis read (an answer about a pattern, or a
+    predicate's single fact or functional position it may have read): then only analysing the goal
+    again tells whether the analysis still holds."""
     if not delta.atoms:
         return False
     reads = basis.analysed[1]
-    everything = dict(scene.domain.constants)
-    everything.update(scene.objects)
-    if any(reads.fits(scene.domain, everything, atom) for atom in delta.atoms):
+    if reads.answers_change(scene.domain, scene.type_of, scene.index, delta.added, delta.removed):
         return True
     return goal_shape(reads, scene.index) != basis.goal_shape
 

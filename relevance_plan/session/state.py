@@ -12,7 +12,7 @@ renders it as PDDL in the user's spelling, for planning and snapshots.
 from __future__ import annotations
 
 from bisect import bisect_left, insort
-from collections.abc import Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 from types import MappingProxyType
 
@@ -64,35 +64,25 @@ class LiveIndex:
     # ------------------------------------------------------------------ changes
 
     def add(self, fact: tuple) -> None:
-        self._insert(self.by_predicate, self._predicate_terms, fact[0], fact)
-        for name in atom_objects(fact):
-            self._insert(self.by_object, self._object_terms, name, fact)
-        self._count(fact, 1)
+        self._file(fact, self._insert, 1)
 
     def discard(self, fact: tuple) -> None:
         """Remove a fact that is there (the caller checks)."""
-        self._delete(self.by_predicate, self._predicate_terms, fact[0], fact)
-        for name in atom_objects(fact):
-            self._delete(self.by_object, self._object_terms, name, fact)
-        self._count(fact, -1)
+        self._file(fact, self._delete, -1)
 
     def add_term(self, term: tuple) -> None:
         """A numeric term ``(function, args...)`` whose value was set for the first time."""
-        self._append(self.by_predicate, self._predicate_terms, term[0], term)
-        for name in atom_objects(term):
-            self._append(self.by_object, self._object_terms, name, term)
-        self._count(term, 1)
+        self._file(term, self._append, 1)
 
     def discard_term(self, term: tuple) -> None:
-        for table, terms, key in (
-            (self.by_predicate, self._predicate_terms, term[0]),
-            *((self.by_object, self._object_terms, name) for name in atom_objects(term)),
-        ):
-            self._move_degree(table, len(table[key]), -1)
-            table[key].remove(term)
-            terms[key] -= 1
-            self._drop_if_empty(table, terms, key)
-        self._count(term, -1)
+        self._file(term, self._remove_term, -1)
+
+    def _file(self, atom: tuple, change: Callable[[dict, dict, str, tuple], None], step: int) -> None:
+        """``change`` the lists of ``atom``'s predicate and of each of its objects, and the counts."""
+        change(self.by_predicate, self._predicate_terms, atom[0], atom)
+        for name in atom_objects(atom):
+            change(self.by_object, self._object_terms, name, atom)
+        self._count(atom, step)
 
     def _insert(self, table: dict, terms: dict, key: str, fact: tuple) -> None:
         items = table.get(key)
@@ -106,6 +96,12 @@ class LiveIndex:
         self._move_degree(table, len(items), 1)
         items.append(term)
         terms[key] = terms.get(key, 0) + 1
+
+    def _remove_term(self, table: dict, terms: dict, key: str, term: tuple) -> None:
+        self._move_degree(table, len(table[key]), -1)
+        table[key].remove(term)
+        terms[key] -= 1
+        self._drop_if_empty(table, terms, key)
 
     def _delete(self, table: dict, terms: dict, key: str, fact: tuple) -> None:
         items = table[key]
@@ -220,6 +216,8 @@ class LiveScene:
         self._by_type: dict[str, dict[str, None]] = {}
         for name, type_name in self.objects.items():
             self._by_type.setdefault(type_name, {})[name] = None
+        # whether ``objects`` lists the objects grouped by type already (then a copy is the written order)
+        self._grouped = list(self._by_type) == list(dict.fromkeys(self.objects.values()))
         self.display: dict[str, str] = {name: problem.display(name) for name in problem.objects}
         self.facts: set = set(problem.init)
         self.values: dict[tuple, float] = dict(problem.numeric_init)  # (function, args...) -> value
@@ -240,6 +238,8 @@ class LiveScene:
     # ------------------------------------------------------------------ changes
 
     def add_object(self, name: str, type_name: str, display: str) -> None:
+        if type_name in self._by_type and self.objects[next(reversed(self.objects))] != type_name:
+            self._grouped = False  # one more of a type whose group is not the last
         self.objects[name] = type_name
         self._by_type.setdefault(type_name, {})[name] = None
         self.display[name] = display
@@ -308,6 +308,10 @@ class LiveScene:
 
     # ------------------------------------------------------------------ views
 
+    def type_of(self, name: str) -> str:
+        """An object's (or a constant's) type."""
+        return self.objects.get(name) or self.domain.constants.get(name, "object")
+
     @property
     def idle_goal(self) -> bool:
         """Whether the goal asks for nothing (``(and)``)."""
@@ -315,6 +319,8 @@ class LiveScene:
 
     def ordered_objects(self) -> dict:
         """The objects grouped by type, types in order of first appearance (the order of :meth:`problem_text`)."""
+        if self._grouped:
+            return dict(self.objects)
         return {name: type_name for type_name, names in self._by_type.items() for name in names}
 
     def snapshot_problem(self) -> Problem:
