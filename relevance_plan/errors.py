@@ -51,6 +51,10 @@ class UsageError(RelevancePlanError):
     """A bad argument value: threshold outside [0, 1], negative count, unknown name."""
 
 
+class MissingExtraError(UsageError):
+    """An optional extra that is not installed; the message says what to install."""
+
+
 class InputFileError(RelevancePlanError):
     """A file or directory that is missing, unreadable or unwritable."""
 
