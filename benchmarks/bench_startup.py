@@ -44,9 +44,9 @@ from pathlib import Path
 
 from base import DOMAINS, geometric_mean, run_timed
 from installed import compiled_checkout, installed_environment, installed_tool
-from relevance_plan.planning.planners.fast_downward.command_line import find_fast_downward
 
 from relevance_plan.generators.classic import generate_classic_problem
+from relevance_plan.planning.planners.fast_downward.command_line import find_fast_downward
 
 # Sizes where the bare driver takes from a few tenths of a second to a few seconds.
 SIZES = {"blocksworld": 20, "logistics": 40, "gripper": 40, "ferry": 40, "grid": 40, "miconic": 40}
