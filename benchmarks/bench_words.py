@@ -38,7 +38,7 @@ import yaml
 REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))
 
-from relevance_plan.relevance.knowledge import load_model, shipped_models  # noqa: E402
+from relevance_plan.relevance.knowledge import load_knowledge_model, shipped_knowledge_models  # noqa: E402
 from relevance_plan.relevance.text import Vocabulary, match_text, place_kinds  # noqa: E402
 from relevance_plan.relevance.text.cache import CACHE_ENV  # noqa: E402
 
@@ -52,8 +52,8 @@ started = time.perf_counter()
 import numpy
 from relevance_plan.relevance.text import Vocabulary, load_text_model, match_text, place_kinds
 from relevance_plan.relevance.text.matching import vocabulary_phrases
-from relevance_plan.relevance.knowledge import load_model, shipped_models
-model = load_model(shipped_models()["coffee"])
+from relevance_plan.relevance.knowledge import load_knowledge_model, shipped_knowledge_models
+model = load_knowledge_model(shipped_knowledge_models()["coffee"])
 imported = time.perf_counter()
 load_text_model()
 loaded = time.perf_counter()
@@ -74,7 +74,7 @@ print(json.dumps({
 
 def understanding(half: str, items: list[list[str]]) -> dict[str, list[int]]:
     """Print each item; return right / asked / wrong counts for sentences and kinds (and `ask` items)."""
-    models = {name: load_model(shipped_models()[name]) for name in ("coffee", "cereal")}
+    models = {name: load_knowledge_model(shipped_knowledge_models()[name]) for name in ("coffee", "cereal")}
     tally = {"sentences": [0, 0, 0], "kinds": [0, 0, 0], "should ask": [0, 0, 0]}
     print(f"\n{half}: {len(items)} items")
     for model_name, vocabulary, text, intended in items:

