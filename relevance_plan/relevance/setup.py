@@ -88,13 +88,22 @@ class Scoring:
         """The objects ``prune`` writes and ``plan`` tries first: thresholds and closure, and when
         ``narrow`` (the relevance method) the goal filter, and blocked alternatives and those no
         relaxed plan needs set aside (a bet on the first attempt only: widening sets nothing more
-        aside, and brings these back last)."""
+        aside, and brings these back last); with a knowledge model that asks for it
+        (``sufficiency_check``), the sufficiency check as without a model, negative preconditions
+        counted (``completion``)."""
+        checked = narrow and self.knowledge_model is not None and self.knowledge_model.sufficiency_check
         settings = PruneSettings(
             goal_filter=self.options.goal_filter and narrow,
             prefer_free=self.options.prefer_free and narrow,
             economical=self.options.economical and narrow,
+            repair=True if checked and self.scorer == "model" else None,
         )
-        return self.prune(self.options.thresholds, settings)
+        selection = self.prune(self.options.thresholds, settings)
+        if checked and self.scorer == "model":
+            from relevance_plan.relevance.completion import complete_selection
+
+            return complete_selection(selection, self.knowledge_model)
+        return selection
 
 
 def resolve_knowledge_model(
@@ -103,17 +112,15 @@ def resolve_knowledge_model(
     """The explicit ``--model``, else one found next to the domain or shipped for the domain's name
     (or one of ``names``); an explicit knowledge model that does not fit the domain is an error."""
     if model_path is not None:
-        knowledge_model = load_knowledge_model(model_path)
-        check_knowledge_model_applies(knowledge_model, domain)
-        return knowledge_model
+        return check_knowledge_model_applies(load_knowledge_model(model_path), domain)
     for name in (domain.name, *names):
         found = find_knowledge_model(name, domain_path)
         if found is None:
             continue
         knowledge_model = load_knowledge_model(found)
         if knowledge_model.domain == name:
-            check_knowledge_model_applies(replace(knowledge_model, domain=domain.name), domain)
-            return knowledge_model
+            applies = check_knowledge_model_applies(replace(knowledge_model, domain=domain.name), domain)
+            return replace(applies, domain=knowledge_model.domain)
     return None
 
 

@@ -102,11 +102,12 @@ class LiveModelScores:
             own = index.by_object.get(name, ())
             facts.update(own)
             for fact in own:
-                if fact[0] in (p.location, p.human_location) and len(fact) == 3 and fact[1] == name:
-                    facts.update(index.facts_of(fact[2], p.access))
-                    facts.update(index.facts_of(fact[2], p.human_location))
+                if fact[0] in (p.location, p.containment, p.human_location) and len(fact) == 3 and fact[1] == name:
+                    for role in (p.access, p.closed, p.human_location):
+                        facts.update(index.facts_of(fact[2], role))
         described = {name: self.scene.objects[name] for name in names}
-        for name, element in build_scene(self.scene.domain, described, facts, p).elements.items():
+        scene = build_scene(self.scene.domain, described, facts, p, types=self.scene.objects)
+        for name, element in scene.elements.items():
             self._set_element(name, element)
 
     def _set_element(self, name: str, element: Element) -> None:
@@ -133,9 +134,12 @@ class LiveModelScores:
 
     def items_at(self, place: str) -> set:
         index, p = self.scene.index, self.predicates
-        found = {f[1] for f in index.facts_of(place, p.location) if len(f) == 3 and f[2] == place}
-        found |= {f[1] for f in index.facts_of(place, p.human_location) if len(f) == 3 and f[2] == place}
-        return found
+        return {
+            f[1]
+            for role in (p.location, p.containment, p.human_location)
+            for f in index.facts_of(place, role)
+            if len(f) == 3 and f[2] == place
+        }
 
     # ------------------------------------------------------------------ scores
 

@@ -406,7 +406,11 @@ class Session:
         predicates = self.model.scene if self.model is not None else None
         for fact in facts:
             names.update(fact[1:])
-            if predicates is not None and fact[0] in (predicates.access, predicates.human_location) and len(fact) > 1:
+            if (
+                predicates is not None
+                and fact[0] in (predicates.access, predicates.closed, predicates.human_location)
+                and len(fact) > 1
+            ):
                 names |= self.scores.items_at(fact[-1])
         return {n for n in names if n in self.scene.objects}
 
