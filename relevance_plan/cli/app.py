@@ -53,30 +53,6 @@ def _score_and_prune(domain_path, problem_path, options: ScoringOptions) -> tupl
         return scoring, scoring.first_selection()
 
 
-def _prune_json(result: Selection) -> dict:
-    problem = result.task.problem
-    scores = result.scores
-    return {
-        **result.describe(),
-        "scorer": scores.scorer,
-        "sufficient": scores.sufficient,
-        "insufficiency": scores.insufficiency or None,
-        "objective": scores.objective,
-        "tasks": scores.task_distribution,
-        "task_entropy": scores.task_entropy,
-        "tau_class": result.thresholds.tau_class,
-        "tau_element": result.thresholds.tau_element,
-        "selected": [problem.display(n) for n in problem.objects if n in result.selected],
-        "scores": {problem.display(n): round(s, 6) for n, s in scores.element_scores.items()},
-        "classes": {
-            c: {"relevance": round(s, 6), "kept": s > result.thresholds.tau_class}
-            for c, s in scores.class_scores.items()
-        },
-        "element_class": {problem.display(n): c for n, c in scores.element_class.items()},
-        "unknown_class": [problem.display(n) for n in scores.unknown],
-    }
-
-
 # Commands in modules of their own, imported when one of them is asked for: ``plan`` does without them.
 LAZY_COMMANDS = {
     "compare": "relevance_plan.cli.batch",
@@ -86,6 +62,7 @@ LAZY_COMMANDS = {
     "watch": "relevance_plan.cli.watch",
     "learn": "relevance_plan.cli.batch",
     "validate": "relevance_plan.cli.validate",
+    "draft-model": "relevance_plan.cli.draft",
 }
 
 
@@ -99,7 +76,7 @@ class _Commands(ToolGroup):
         if cmd_name not in self.commands and cmd_name in LAZY_COMMANDS:
             from relevance_plan.cli.paths import own_command_path_checks
 
-            command = getattr(importlib.import_module(LAZY_COMMANDS[cmd_name]), cmd_name)
+            command = getattr(importlib.import_module(LAZY_COMMANDS[cmd_name]), cmd_name.replace("-", "_"))
             own_command_path_checks(command)
             self.add_command(command)
         return super().get_command(ctx, cmd_name)
@@ -183,20 +160,36 @@ def generate(world, difficulty, count, seed, out_dir, distractors, size, force):
 @task_arguments
 @scoring_options
 @click.option("--inquiries", is_flag=True, help="List what the robot would ask the human.")
+@click.option(
+    "--why",
+    "why_object",
+    metavar="OBJECT",
+    default=None,
+    help="Explain one object: its scores, the step that kept or dropped it, and what brought it back.",
+)
 @json_option("Machine-readable output.")
 @handle_errors
-def score(domain_path, problem_path, inquiries, as_json, **values):
-    """Print the class and element relevance table for PROBLEM."""
+def score(domain_path, problem_path, inquiries, why_object, as_json, **values):
+    """Print the class and element relevance table for PROBLEM, each object with the step that kept or dropped it."""
+    from relevance_plan.cli.explain import print_score_table, print_why, selection_json, why_json
+
     scoring, result = _score_and_prune(domain_path, problem_path, take_scoring(values))
     scores = scoring.scores
+    if why_object is not None:
+        click.echo(json.dumps(why_json(result, why_object), indent=2) if as_json else None, nl=as_json)
+        if not as_json:
+            print_why(result, why_object)
+        if not scores.sufficient:
+            fail(f"insufficient cues: {scores.insufficiency}", ExitCode.INSUFFICIENT_CUES)
+        return
     inquiry = _inquiries(scoring, result) if inquiries and scores.sufficient else None
     if as_json:
-        data = _prune_json(result)
+        data = selection_json(result)
         if inquiry is not None:
             data["inquiries"] = inquiry
         click.echo(json.dumps(data, indent=2))
     else:
-        _print_score_table(result)
+        print_score_table(result)
         if inquiry is not None:
             click.echo("")
             click.echo(f"served without asking: {', '.join(inquiry['necessary']) or '-'}")
@@ -247,54 +240,6 @@ def _inquiries(scoring: Scoring, result: Selection) -> dict:
     }
 
 
-def _print_score_table(result: Selection) -> None:
-    scores = result.scores
-    problem = result.task.problem
-    if not scores.sufficient:
-        click.echo(f"insufficient cues: {scores.insufficiency}")
-        return
-    header = f"scorer: {scores.scorer}"
-    if scores.objective:
-        tasks = ", ".join(f"{t} {p:.2f}" for t, p in sorted(scores.task_distribution.items(), key=lambda i: -i[1]))
-        header += f"   objective: {scores.objective}   tasks: {tasks}   H = {scores.task_entropy:.2f} nats"
-    click.echo(header)
-    if scores.class_scores:
-        click.echo("")
-        click.echo(f"{'class':<18} {'R(C)':>6}  kept")
-        for class_name, value in sorted(scores.class_scores.items(), key=lambda i: (-i[1], i[0])):
-            click.echo(f"{class_name:<18} {value:6.3f}  {'yes' if value > result.thresholds.tau_class else 'no'}")
-    click.echo("")
-    restored = {r.name: r for r in result.restored}
-    width = max((len(problem.display(n)) for n in problem.objects), default=10)
-    click.echo(f"{'element':<{width}} {'class':<16} {'R(e)':>6}  {'kept':<8} why")
-    order = sorted(problem.objects, key=lambda n: (-scores.element_scores.get(n, 0.0), n))
-    for name in order:
-        if name in result.selected:
-            kept = "yes"
-            why = scores.explanations.get(name, "")
-            if name in result.task.goal_objects:
-                why = "named in the goal"
-        elif name in restored:
-            kept, why = "restored", restored[name].reason
-        elif name in result.set_aside:
-            kept = "aside"
-            why = "something stands on it and a free object of its class is kept (plan brings it back if needed)"
-        else:
-            kept, why = "no", scores.explanations.get(name, "")
-        click.echo(
-            f"{problem.display(name):<{width}} {scores.element_class.get(name, '-'):<16}"
-            f" {scores.element_scores.get(name, 0.0):6.3f}  {kept:<8} {why}"
-        )
-    click.echo("")
-    click.echo(
-        f"kept {len(result.kept)} of {len(problem.objects)} objects ({len(result.restored)} restored by closure)"
-    )
-    if scores.unknown:
-        click.echo(
-            f"class unknown to the model (default relevance): {', '.join(problem.display(n) for n in scores.unknown)}"
-        )
-
-
 @main.command()
 @task_arguments
 @file_option("-o", "--output", "output", required=True, help="Pruned problem file ('-': standard output).")
@@ -324,23 +269,23 @@ def prune(domain_path, problem_path, output, pass_through, as_json, **values):
             raise
         _pass_through(problem_path, output, refused, as_json)
         return
+    from relevance_plan.cli.explain import scores_header, selection_json
+    from relevance_plan.relevance.decisions import kept_summary
+
     scores = scoring.scores
     if not scores.sufficient:
         if as_json:
-            click.echo(json.dumps(_prune_json(result), indent=2))
+            click.echo(json.dumps(selection_json(result), indent=2))
         fail(f"insufficient cues: {scores.insufficiency}", ExitCode.INSUFFICIENT_CUES)
     written = write_output(output, result.text)
     if as_json:
-        data = _prune_json(result)
+        data = selection_json(result)
         data["output"] = str(output)
         click.echo(json.dumps(data, indent=2))
     else:
-        total = len(result.task.problem.objects)
-        click.echo(
-            f"kept {len(result.kept)} of {total} objects ({len(result.restored)} restored by closure);"
-            f" wrote {written if to_stdout else output}",
-            err=to_stdout,
-        )
+        for line in scores_header(scores)[1:]:  # what free text was understood as
+            click.echo(line, err=to_stdout)
+        click.echo(f"{kept_summary(result)}; wrote {written if to_stdout else output}", err=to_stdout)
 
 
 # --------------------------------------------------------------------------- plan
@@ -447,12 +392,15 @@ def _print_plan_summary(result: PlanResult, plan_file, err: bool = False) -> Non
     if result.refusal and not result.objects_total:
         echo(f"objects:     all (pruned: no, {unpruned})")
     else:
+        decided = " (the full problem, which won the race)" if result.deciding_side == "full" else ""
         echo(
-            f"objects:     {result.objects_kept} kept of {result.objects_total}"
+            f"objects:     {result.objects_kept} kept of {result.objects_total}{decided}"
             + (f" (pruned: no, {unpruned})" if unpruned else "")
         )
-    if result.pruned and result.selection is not None:
-        echo(f"pruning:     kept {len(result.selection.kept)} of {result.objects_total} objects first")
+    if result.selection is not None:
+        from relevance_plan.relevance.decisions import kept_summary
+
+        echo(f"pruning:     {kept_summary(result.selection)} first")
     echo(f"attempts:    {len(result.attempts)} (first: {result.first_attempt_status})")
     if result.deciding_side:
         stopped = [a for a in result.attempts if a.stopped]

@@ -74,7 +74,7 @@ from relevance_plan.planning.validate import validate_plan
 from relevance_plan.relevance.knowledge import KnowledgeModel, load_knowledge_model
 from relevance_plan.relevance.prune import DEFAULT_TAU, Selection, Thresholds, Widening, widen
 from relevance_plan.relevance.scorers import SCORERS
-from relevance_plan.relevance.setup import Scoring, resolve_knowledge_model, score_problem
+from relevance_plan.relevance.setup import Scoring, given_cues, resolve_knowledge_model, score_problem, without_cues
 from relevance_plan.relevance.task import PlanningTask
 
 ENGINE_NAME = "relevance"
@@ -352,6 +352,12 @@ class _RelevanceStage:
         if scoring_options.scorer == "model" and model is None:
             warnings.append("no knowledge model applies to this problem: using the goal scorer")
             scoring_options = dataclasses.replace(scoring_options, scorer="goal")
+        if model is None and given_cues(scoring_options):
+            # An engine cannot stop to say so: the warning is the visible fallback.
+            warnings.append(
+                f"no knowledge model applies to this problem: {', '.join(given_cues(scoring_options))} unused"
+            )
+            scoring_options = without_cues(scoring_options)
         scoring = score_problem(task, scoring_options, knowledge_model=model)
         if not scoring.scores.sufficient:
             # An engine cannot ask the human: fall back to what the goal alone says.
@@ -359,7 +365,9 @@ class _RelevanceStage:
                 f"the {scoring.scorer} scorer has too little to go on ({scoring.scores.insufficiency}):"
                 " using the goal scorer"
             )
-            scoring = score_problem(task, dataclasses.replace(scoring_options, scorer="goal"), knowledge_model=None)
+            scoring = score_problem(
+                task, dataclasses.replace(without_cues(scoring_options), scorer="goal"), knowledge_model=None
+            )
             scoring = dataclasses.replace(scoring, knowledge_model=None)
         return cls(scoring, up_names, action_names)
 

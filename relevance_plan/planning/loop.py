@@ -75,6 +75,7 @@ from relevance_plan.planning.validate import (
     validate_unread,
 )
 from relevance_plan.progress import ProgressCallback, ProgressEvent
+from relevance_plan.relevance.decisions import kept_summary
 from relevance_plan.relevance.knowledge import KnowledgeModel
 from relevance_plan.relevance.prune import Selection, Thresholds, Widening, widen
 from relevance_plan.relevance.setup import Scoring, ScoringOptions, score_problem
@@ -137,6 +138,7 @@ class PlanOptions:
     objective: str | None = None
     model_task: str | None = None
     human: str | None = None
+    place_kinds: bool = False
     seed: int = 0
     validators: tuple[str, ...] | None = None
     planner_args: tuple[str, ...] = ()  # appended to the planner's command line (--planner-args)
@@ -658,9 +660,10 @@ def _score(run: _Run) -> tuple[Scoring | None, str]:
 
 
 def _say_selection(say: Callable[[str], None], selection: Selection, total: int) -> None:
+    aside = len(selection.set_aside)
     say(
-        f"kept {len(selection.kept)} of {total} objects ({len(selection.restored)} restored by closure"
-        + (f", {len(selection.set_aside)} blocked alternatives set aside)" if selection.set_aside else ")")
+        kept_summary(selection)
+        + (f", {aside} {'alternative' if aside == 1 else 'alternatives'} set aside" if aside else "")
     )
     if not selection.removed:
         say(f"pruned: no ({selection.unpruned_reason})")

@@ -36,6 +36,7 @@ class ScoringOptions:
     objective: str | None = None
     model_task: str | None = None  # the knowledge model's task (P(task | objective) = 1)
     human: str | None = None
+    place_kinds: bool = False  # kinds and types the model does not list go under their nearest class (free text)
     thresholds: Thresholds = field(default_factory=Thresholds)
     seed: int = 0
     goal_filter: bool = True  # the first selection leaves out relevant objects no goal-directed action can use
@@ -124,6 +125,38 @@ def resolve_knowledge_model(
     return None
 
 
+# The options only a knowledge model reads, as the command line spells them.
+CUE_OPTIONS = {"objective": "--objective", "model_task": "--task", "human": "--human", "place_kinds": "--place-kinds"}
+
+
+def given_cues(options: ScoringOptions) -> list[str]:
+    """The command-line names of the knowledge-model options ``options`` sets."""
+    return [flag for field_name, flag in CUE_OPTIONS.items() if getattr(options, field_name) not in (None, False)]
+
+
+def without_cues(options: ScoringOptions) -> ScoringOptions:
+    """``options`` without the knowledge-model options (for a fallback to another scorer that says so)."""
+    return replace(options, objective=None, model_task=None, human=None, place_kinds=False)
+
+
+def check_cues_used(options: ScoringOptions, scorer: str, domain_name: str) -> None:
+    """UsageError when options only a knowledge model reads are given to another scorer: never ignored."""
+    given = given_cues(options)
+    if not given or scorer == "model":
+        return
+    why = (
+        f"no knowledge model applies to domain '{domain_name}'"
+        if options.scorer is None
+        else f"--scorer {scorer} is chosen"
+    )
+    raise UsageError(
+        f"{' and '.join(given)} {'needs' if len(given) == 1 else 'need'} the knowledge-model scorer, but {why}:"
+        " give --model FILE ('relevance-plan draft-model' drafts one), or leave "
+        + ("it" if len(given) == 1 else "them")
+        + " out"
+    )
+
+
 def choose_scorer(method: str, knowledge_model: KnowledgeModel | None, override: str | None) -> str:
     """The scorer a method uses: the override, else the knowledge model's when one applies, else the goal scorer."""
     if override:
@@ -163,6 +196,8 @@ def score_problem(
     scorer = choose_scorer(method, knowledge_model, options.scorer)
     if scorer == "model" and knowledge_model is None:
         raise UsageError(f"no knowledge model found for domain '{task.domain.name}': give --model or use --scorer goal")
+    if method == "relevance":
+        check_cues_used(options, scorer, task.domain.name)
     necessary = None
     if scorer == "oracle" and problem_path is not None:
         necessary = necessary_objects(problem_path)
@@ -173,6 +208,7 @@ def score_problem(
         human=options.human,
         seed=options.seed,
         necessary=necessary,
+        place_kinds=options.place_kinds,
     )
     task.check_time("scoring the objects")
     scores = SCORERS[scorer](task, request)
@@ -184,8 +220,11 @@ __all__ = [
     "SCORER_CHOICES",
     "Scoring",
     "ScoringOptions",
+    "check_cues_used",
+    "given_cues",
     "check_scorer",
     "choose_scorer",
     "resolve_knowledge_model",
     "score_problem",
+    "without_cues",
 ]

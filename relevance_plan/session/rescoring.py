@@ -17,6 +17,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
+from relevance_plan.pddl.formulas import names_in
 from relevance_plan.relevance.knowledge import KnowledgeModel
 from relevance_plan.relevance.prune import Thresholds
 from relevance_plan.relevance.scene import Element, build_scene
@@ -31,6 +32,7 @@ from relevance_plan.relevance.scorers.knowledge_model import (
     score_element,
     scored_by_contents,
     unknown_share_problem,
+    with_goal_objects,
 )
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
 from relevance_plan.relevance.task import PlanningTask
@@ -47,6 +49,7 @@ def request_for(options: ScoringOptions, model: KnowledgeModel | None) -> ScoreR
         model_task=options.model_task,
         human=options.human,
         seed=options.seed,
+        place_kinds=options.place_kinds,
     )
 
 
@@ -230,16 +233,19 @@ class LiveModelScores:
         problem = unknown_share_problem(len(self.scene.objects) - len(unknown), len(self.scene.objects))
         if problem:
             return insufficient_result(self.scene.objects, context, problem)
+        goal_objects = set(names_in(self.scene.goal)) & self.scene.objects.keys()
+        scores, explanations = with_goal_objects(dict(self.scores), dict(self.explanations), goal_objects)
         return ScoreResult(
             "model",
-            dict(self.scores),
+            scores,
             element_class=dict(self.element_class),
             class_scores=dict(self.class_scores),
-            explanations=dict(self.explanations),
+            explanations=explanations,
             unknown=unknown,
             objective=context.objective,
             task_distribution=context.distribution,
             task_entropy=context.entropy,
+            understood=context.understood,
         )
 
 
