@@ -24,6 +24,7 @@ from relevance_plan.cli.common import (
     method_option,
     planning_options,
     quiet_option,
+    race_option,
     scoring_options,
     take_plan_options,
     take_scoring,
@@ -31,7 +32,7 @@ from relevance_plan.cli.common import (
     write_plan_files,
 )
 from relevance_plan.cli.exits import ToolGroup
-from relevance_plan.errors import UnsupportedFeatureError, UsageError
+from relevance_plan.errors import RelevancePlanError, UnsupportedFeatureError, UsageError, counted
 from relevance_plan.exitcodes import EXIT_CODE_DESCRIPTIONS, ExitCode, exit_code_for_status
 from relevance_plan.pddl.formatter import format_number
 from relevance_plan.planning.loop import plan_task
@@ -93,7 +94,13 @@ class _Commands(ToolGroup):
 @click.group(cls=_Commands, context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, prog_name="relevance-plan")
 def main():
-    """Relevance-based pruning for PDDL planning: score, prune, plan, validate."""
+    """Relevance-based pruning for PDDL planning: score, prune, plan, validate.
+
+    Fast Downward, the default planner, comes compiled inside the up-fast-downward
+    wheel (its downward/fast-downward.py; $RELEVANCE_PLAN_FAST_DOWNWARD names another):
+    'relevance-plan planners' prints where.  Shell completion:
+    eval "$(_RELEVANCE_PLAN_COMPLETE=bash_source relevance-plan)" (zsh_source, fish_source).
+    """
 
 
 # --------------------------------------------------------------------------- generate
@@ -104,7 +111,9 @@ def main():
 @click.option("--difficulty", default="simple", show_default=True, help="Kitchen worlds: simple or hard.")
 @click.option("--count", type=int, default=10, show_default=True, help="Number of problems.")
 @click.option("--seed", type=int, default=0, show_default=True)
-@file_option("--out", "out_dir", folder=True, required=True, help="Suite directory to write.")
+@file_option(
+    "--out", "-o", "--output", "out_dir", folder=True, required=True, help="Suite directory to write (-o as elsewhere)."
+)
 @click.option("--distractors", type=int, default=None, help="Kitchen worlds: override the paper's distractor count.")
 @click.option(
     "--size",
@@ -150,7 +159,7 @@ def generate(world, difficulty, count, seed, out_dir, distractors, size, force):
             paths = write(
                 world, difficulty, count, seed, Path(out_dir), distractors=distractors, progress=bar, force=force
             )
-    click.echo(f"wrote {len(paths)} problems to {out_dir}")
+    click.echo(f"wrote {counted(len(paths), 'problem')} to {out_dir}")
 
 
 # --------------------------------------------------------------------------- score / prune
@@ -298,12 +307,7 @@ def prune(domain_path, problem_path, output, pass_through, as_json, **values):
 @planning_options()
 @file_option("--plan-file", default="sas_plan", show_default=True, help="Where the plan goes ('-': standard output).")
 @keep_work_option
-@click.option(
-    "--race/--no-race",
-    default=None,
-    help="Plan the full problem beside the pruned attempts and take the first valid plan"
-    " (default: on for relevance with two or more usable cores).",
-)
+@race_option
 @json_option("Print one JSON object.")
 @quiet_option()
 @handle_errors
@@ -414,7 +418,7 @@ def _print_plan_summary(result: PlanResult, plan_file, err: bool = False) -> Non
         f" {result.planner_time:.2f} s planner, {result.validation_time:.2f} s validation"
     )
     if result.status is PlanStatus.SOLVED:
-        size = f"{len(result.plan)} steps" + (
+        size = counted(len(result.plan), "step") + (
             f", cost {format_number(result.plan_cost)}" if result.plan_cost is not None else ""
         )
         if result.validation is not None and result.valid:
@@ -431,7 +435,7 @@ def _print_plan_summary(result: PlanResult, plan_file, err: bool = False) -> Non
 @click.argument("folder", metavar="DIR", type=click.Path(file_okay=False))
 @handle_errors
 def examples(folder):
-    """Copy the shipped worlds into DIR (DIR/domains, DIR/problems), as in a clone's root.
+    """Copy the shipped worlds into DIR (DIR/domains, DIR/problems, DIR/examples), as in a clone's root.
 
     After a regular install, `relevance-plan examples kitchen && cd kitchen`
     makes the README's first-look commands work as written.  A file that
@@ -441,7 +445,34 @@ def examples(folder):
     from relevance_plan.generators.examples import write_examples
 
     written = write_examples(folder)
-    click.echo(f"wrote {len(written)} files to {folder} (domains/, problems/)")
+    tops = sorted({path.relative_to(folder).parts[0] + "/" for path in written})
+    click.echo(f"wrote {counted(len(written), 'file')} to {folder} ({', '.join(tops)})")
+
+
+# --------------------------------------------------------------------------- planners
+
+
+@main.command()
+@handle_errors
+def planners():
+    """Say where the planners are: the bundled Fast Downward, LPG, and how to name the others."""
+    from relevance_plan.planning.planners.fast_downward.command_line import FAST_DOWNWARD_ENV, driver_location
+    from relevance_plan.planning.planners.lpg import lpg_binary
+
+    try:
+        found = f"{driver_location()} (the up-fast-downward wheel; ${FAST_DOWNWARD_ENV} names another)"
+    except RelevancePlanError as error:
+        found = f"not found: {error.message}"
+    lpg = lpg_binary()
+    rows = [
+        ("auto", "the default: Fast Downward for classical problems, a temporal or numeric planner otherwise"),
+        ("fast-downward", found),
+        ("lpg", str(lpg) if lpg is not None else "not installed: pip install 'relevance-plan[planners]'"),
+        ("up:NAME", "a unified-planning engine: aries, tamer, enhsp, kairos, pyperplan, symk (the planners extra)"),
+        ("cmd:'TEMPLATE'", "any planner binary, run without a shell: {domain} {problem} [{plan}]"),
+    ]
+    for name, where in rows:
+        click.echo(f"{name:<15} {where}")
 
 
 # --------------------------------------------------------------------------- exit codes

@@ -341,4 +341,11 @@ def write_plan_files(result: PlanResult, plan_file: str) -> list[str]:
     return written
 
 
+race_option = click.option(
+    "--race/--no-race",
+    default=None,
+    help="Plan the full problem beside the pruned attempts and take the first valid plan"
+    " (default: on for relevance with two or more usable cores).",
+)
+
 method_option = click.option("--method", type=click.Choice(METHODS), default="relevance", show_default=True)

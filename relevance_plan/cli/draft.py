@@ -7,6 +7,7 @@ import json
 import click
 
 from relevance_plan.cli.common import file_option, handle_errors, json_option, quiet_option
+from relevance_plan.errors import counted
 
 
 @click.command("draft-model")
@@ -65,11 +66,11 @@ def _summary(drafted, where: str) -> str:
     model = drafted.model
     count = len(model.dependencies)
     said = (
-        f"wrote {where}: {len(model.classes)} classes, {len(model.objectives)} objectives,"
-        f" {count} {'dependency' if count == 1 else 'dependencies'}"
+        f"wrote {where}: {counted(len(model.classes), 'class', 'classes')},"
+        f" {counted(len(model.objectives), 'objective')}, {counted(count, 'dependency', 'dependencies')}"
     )
     if drafted.adjustments:
-        said += f"; the check changed {len(drafted.adjustments)} entries (see the file's header)"
+        said += f"; the check changed {counted(len(drafted.adjustments), 'entry', 'entries')} (see the file's header)"
     if not drafted.matched:
         said += f"; not matched on {len(drafted.unmatched)} of {len(drafted.checks)} problems: review it"
     return said

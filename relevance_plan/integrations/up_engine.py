@@ -62,7 +62,7 @@ from unified_planning.model import Problem, ProblemKind
 from unified_planning.model.problem_kind_versioning import LATEST_PROBLEM_KIND_VERSION
 from unified_planning.plans import ActionInstance, SequentialPlan
 
-from relevance_plan.errors import RelevancePlanError, UsageError
+from relevance_plan.errors import RelevancePlanError, UsageError, counted
 from relevance_plan.pddl.model import Domain
 from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.pddl.plans import Plan, PlanStep
@@ -256,7 +256,8 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin, AnytimePlannerMixin):
         final_kept = attempts[-1].objects_kept if attempts else total
         first_kept = attempts[0].objects_kept if attempts else total
         messages.append(
-            f"{summary}; kept {final_kept} of {total} objects (first attempt {first_kept}), {len(attempts)} attempt(s)"
+            f"{summary}; kept {final_kept} of {total} objects (first attempt {first_kept}),"
+            f" {counted(len(attempts), 'attempt')}"
         )
         metrics = {
             "objects_total": str(total),
@@ -503,7 +504,9 @@ class _AnytimeSearch:
             if lifted is None or measure is None or measure >= self.best_measure:
                 continue
             self.best, self.best_measure, found = lifted, measure, True
-            yield self._result(PlanGenerationResultStatus.INTERMEDIATE, f"plan of {len(lifted.actions)} steps")
+            yield self._result(
+                PlanGenerationResultStatus.INTERMEDIATE, f"plan of {counted(len(lifted.actions), 'step')}"
+            )
         return found
 
     def _measure(self, plan: SequentialPlan) -> float | None:
@@ -607,7 +610,7 @@ def _solve_whole(inner: _InnerPlanner, options: PlanOptions, started: float) -> 
 
 def _final_status(result, found, attempts) -> tuple[PlanGenerationResultStatus, str]:
     if result.status is PlanStatus.SOLVED:
-        summary = f"plan of {len(found.actions)} steps validated on the original problem"
+        summary = f"plan of {counted(len(found.actions), 'step')} validated on the original problem"
         if attempts[-1].full and attempts[-1].outcome.optimal:
             return PlanGenerationResultStatus.SOLVED_OPTIMALLY, summary
         return PlanGenerationResultStatus.SOLVED_SATISFICING, summary
@@ -646,7 +649,7 @@ def _final_status_whole(problem: Problem, found, attempts) -> tuple[PlanGenerati
         if validator.validate(problem, found).status is ValidationResultStatus.VALID:
             return (
                 PlanGenerationResultStatus.SOLVED_SATISFICING,
-                f"plan of {len(found.actions)} steps validated on the original problem",
+                f"plan of {counted(len(found.actions), 'step')} validated on the original problem",
             )
         return PlanGenerationResultStatus.INTERNAL_ERROR, "the inner planner's plan does not validate"
     return up_status(last.outcome.status), f"the inner planner reported {last.outcome.raw_status} on the whole problem"

@@ -44,7 +44,7 @@ from dataclasses import dataclass, field, fields, replace
 from pathlib import Path
 from typing import Any
 
-from relevance_plan.errors import OutOfTimeError, UnsupportedFeatureError, UsageError
+from relevance_plan.errors import OutOfTimeError, UnsupportedFeatureError, UsageError, counted
 from relevance_plan.io import load_domain, load_problem, scratch_directory, write_text_atomic
 from relevance_plan.limits import DEFAULT_TIMEOUT, MAX_TIMEOUT
 from relevance_plan.pddl.model import Problem
@@ -843,7 +843,8 @@ def _validated(last: Attempt, common: dict[str, Any]) -> PlanResult:
             plan_cost=cost,
             plans=last.outcome.plans,
             validation=validation,
-            message=f"plan of {len(plan)} steps {checked if validation.valid else 'NOT validated (--validator none)'}",
+            message=f"plan of {counted(len(plan), 'step')} "
+            + (checked if validation.valid else "NOT validated (--validator none)"),
             **common,
         )
     if validation is not None and validation.status is ValidationStatus.OUT_OF_TIME:
