@@ -122,13 +122,17 @@ def _dropped(selection: Selection, name: str, value: float, explanation: str) ->
             name,
             False,
             GOAL_FILTER,
-            f"relevant (R(e)={value:.2f}), but no action toward the goal can use a {task.object_type(name)}",
+            f"relevant (R(e)={value:.2f}), but no action toward the goal can use {_a(task.object_type(name))}",
             value,
         )
     because = f" ({explanation})" if explanation else ""
     return Decision(
         name, False, THRESHOLDS, f"R(e)={value:.2f} is not above tau_e {thresholds.tau_element:g}{because}", value
     )
+
+
+def _a(noun: str) -> str:
+    return ("an " if noun[:1] in "aeiou" else "a ") + noun
 
 
 def kept_summary(selection: Selection) -> str:
