@@ -50,12 +50,12 @@ class ScenePredicates:
 
     def for_domain(self, domain: Domain) -> ScenePredicates:
         """The roles the model left to their defaults and the domain lacks, as none."""
-        missing = {
+        missing: dict[str, str | None] = {
             role: None
             for role, predicate in self.roles().items()
             if role not in self.written and predicate is not None and predicate not in domain.predicates
         }
-        return replace(self, **missing) if missing else self
+        return replace(self, **missing) if missing else self  # type: ignore[arg-type]
 
 
 SCENE_ROLES = ("location", "containment", "support", "access", "closed", "human_location")

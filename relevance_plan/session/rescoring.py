@@ -107,7 +107,8 @@ class LiveModelScores:
             for fact in own:
                 if fact[0] in (p.location, p.containment, p.human_location) and len(fact) == 3 and fact[1] == name:
                     for role in (p.access, p.closed, p.human_location):
-                        facts.update(index.facts_of(fact[2], role))
+                        if role is not None:
+                            facts.update(index.facts_of(fact[2], role))
         described = {name: self.scene.objects[name] for name in names}
         scene = build_scene(self.scene.domain, described, facts, p, types=self.scene.objects)
         for name, element in scene.elements.items():
@@ -140,6 +141,7 @@ class LiveModelScores:
         return {
             f[1]
             for role in (p.location, p.containment, p.human_location)
+            if role is not None
             for f in index.facts_of(place, role)
             if len(f) == 3 and f[2] == place
         }

@@ -14,6 +14,7 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 from types import MappingProxyType
+from typing import NamedTuple
 
 from relevance_plan.pddl.model import Domain
 from relevance_plan.relevance.drafting.evidence import ProblemEvidence, describe_goal, members_by_class
@@ -25,14 +26,17 @@ LOW = 0.1  # one they say is not (below the default thresholds, with any kind an
 UNSEEN_KIND = 0.5  # a kind of a wanted class no given problem shows
 
 
-@dataclass(frozen=True)
-class Prior:
+class Prior(NamedTuple):
+    """A drafted probability and where it came from (its comment in the file)."""
+
     value: float
     why: str
 
 
 @dataclass(frozen=True)
 class ClassDraft:
+    """A drafted class: which objects belong, and how its relevance is found."""
+
     name: str
     types: tuple[str, ...]  # empty for a class inferred in an untyped domain (its kinds say who belongs)
     kinds: tuple[str, ...]
@@ -42,10 +46,12 @@ class ClassDraft:
 
 @dataclass(frozen=True)
 class ObjectiveDraft:
+    """A drafted objective: the goal predicates of some of the given problems, and those problems."""
+
     name: str
-    description: str
+    description: str  # the goals in plain words: what free text is matched against
     goal_predicates: tuple[str, ...]
-    problems: tuple[str, ...]
+    problems: tuple[str, ...] = ()  # the file names, for the comment
 
 
 @dataclass(frozen=True)

@@ -167,25 +167,23 @@ def _placement_roles(
         "containment": _best(containment, "things are taken out of it", "no action takes a thing out of a container"),
     }
     # access is judged where it matters most: inside containers, else at the places themselves
-    chosen = (
-        roles["containment"].predicate
-        if access.get(roles["containment"].predicate or "") or closed.get(roles["containment"].predicate or "")
-        else roles["location"].predicate
-    )
-    opens_here = access.get(chosen or "", Counter())
-    shuts_here = closed.get(chosen or "", Counter())
+    inside = roles["containment"].predicate or ""
+    chosen = inside if access.get(inside) or closed.get(inside) else roles["location"].predicate or ""
+    opens_here = access.get(chosen, Counter())
+    shuts_here = closed.get(chosen, Counter())
     roles["access"] = _best(opens_here, f"taking from '{chosen}' needs it", "nothing must hold of a place to reach it")
     roles["closed"] = _best(shuts_here, f"taking from '{chosen}' needs it false", "nothing keeps a place shut")
     for role in ("location", "containment"):
-        predicate = roles[role].predicate
-        if predicate is not None:
-            roles[role] = Finding(predicate, f"{roles[role].why} ({_users(domain, predicate)})")
+        found = roles[role].predicate
+        if found is not None:
+            roles[role] = Finding(found, f"{roles[role].why} ({_users(domain, found)})")
     return roles
 
 
 def _access_conditions(taking: _Taking, ignored: frozenset[str]) -> tuple[list[str], list[str]]:
     """Unary fluents the taking action needs of the place: true (``open``) and false (``locked``)."""
-    opens, shuts = [], []
+    opens: list[str] = []
+    shuts: list[str] = []
     for atom, positive in literals(taking.action.precondition):
         if atom.args == (taking.place,) and atom.predicate not in ignored:
             (opens if positive else shuts).append(atom.predicate)
