@@ -59,6 +59,16 @@ def test_a_name_of_the_model_needs_no_text_model(monkeypatch):
 
 
 @needs_weights
+@pytest.mark.planner
+def test_plan_says_what_the_words_were_taken_for(tmp_path):
+    args = ("--objective", "make me a white coffee", "--no-race", "--plan-file", tmp_path / "plan")
+    output = invoke("plan", COFFEE_DOMAIN, COFFEE_HARD, *args, "-q").stdout
+    assert "understood:  'make me a white coffee' as objective serve-coffee-with-creamer (similarity 0." in output
+    data = json.loads(invoke("plan", COFFEE_DOMAIN, COFFEE_HARD, *args, "--json").stdout)
+    assert data["status"] == "solved" and data["understood"][0]["chosen"] == "serve-coffee-with-creamer"
+
+
+@needs_weights
 def test_words_like_nothing_in_the_model_are_a_question_not_a_guess():
     result = invoke("score", COFFEE_DOMAIN, COFFEE_HARD, "--objective", "fix my bicycle")
     assert result.exit_code == ExitCode.INSUFFICIENT_CUES
@@ -83,17 +93,21 @@ def test_a_cue_in_words_in_watch_is_understood_or_asked_about(tmp_path):
             for event in (
                 {"event": "cue", "text": "a cup of tea please"},
                 {"event": "cue", "text": "fix my bicycle"},
+                {"event": "cue", "text": "we are on a break between the conference talks"},
             )
         )
         + "\n"
     )
     result = invoke("watch", COFFEE_DOMAIN, SCENE, "--objective", "drink-at-break", "--events", events)
-    first, second = (json.loads(line) for line in result.output.splitlines())
+    first, second, third = (json.loads(line) for line in result.output.splitlines())
     assert first["triggered"] and first["reason"] == "cue: task tea" and first["understood"][0]["chosen"] == "tea"
     assert "tea_bag_1" in first["relevant"]
     assert not second["triggered"] and second["understood"][0]["chosen"] is None
     assert second["ask"]["cue"] == "task" and "fix my bicycle" in second["ask"]["question"]
     assert second["ask"]["options"]
+    # words that name no task but an objective are taken as the objective (the one in force: nothing changes)
+    assert third["understood"][0]["vocabulary"] == "objective" and third["understood"][0]["chosen"] == "drink-at-break"
+    assert not third["triggered"] and third["ask"] is None
 
 
 def test_a_cue_in_words_without_the_extra_is_a_rejected_event(tmp_path, monkeypatch):

@@ -336,6 +336,8 @@ def plan(domain_path, problem_path, method, plan_file, keep_work, race, as_json,
         data = result.to_json()
         data["plan_file"] = str(plan_file) if result.status is PlanStatus.SOLVED else None
         data["plan_files"] = numbered
+        understood = result.selection.scores.understood if result.selection is not None else ()
+        data["understood"] = [match.as_json() for match in understood]
         click.echo(json.dumps(data, indent=2))
     else:
         # With the plan on stdout, the summary goes to stderr.
@@ -392,6 +394,11 @@ def _print_plan_summary(result: PlanResult, plan_file, err: bool = False) -> Non
     echo(f"method:      {result.method}")
     echo(f"planner:     {result.planner}" + (f" (auto: {result.planner_choice})" if result.planner_choice else ""))
     echo(f"status:      {result.status.value}")
+    if result.selection is not None:
+        from relevance_plan.cli.explain import scores_header
+
+        for line in scores_header(result.selection.scores)[1:]:  # free text, and what it was taken for
+            echo(f"{line.split(':')[0] + ':':<13}{line.split(':', 1)[1].strip()}")
     unpruned = result.unpruned_reason
     if result.refusal and not result.objects_total:
         echo(f"objects:     all (pruned: no, {unpruned})")

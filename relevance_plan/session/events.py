@@ -150,22 +150,22 @@ def check_event(data: dict, scene: LiveScene, model: KnowledgeModel | None) -> E
 
 
 def _understood_cue(text: str, model: KnowledgeModel) -> Event:
-    """A cue in words, as the model's nearest task or objective (the clearer of the two), or a question."""
+    """A cue in words, as the model's nearest task (a cue is about what to make, as a task cue is),
+    else its nearest objective, else a question about the tasks."""
     from relevance_plan.errors import MissingExtraError
     from relevance_plan.relevance.text.matching import Vocabulary
     from relevance_plan.relevance.text.understanding import understand
 
     try:
-        matches = [understand(text, model, vocabulary) for vocabulary in (Vocabulary.TASK, Vocabulary.OBJECTIVE)]
+        task = understand(text, model, Vocabulary.TASK)
+        if task.chosen is not None:
+            return Event("cue", task=task.chosen, understood=task)
+        objective = understand(text, model, Vocabulary.OBJECTIVE)
     except MissingExtraError as error:
         raise EventError(f"a cue in words needs the 'text' extra: {error.message}") from None
-    resolved = [match for match in matches if match.chosen is not None]
-    if not resolved:
-        return Event("cue", understood=max(matches, key=lambda match: match.similarity))
-    best = max(resolved, key=lambda match: match.similarity)
-    if best.vocabulary is Vocabulary.TASK:
-        return Event("cue", task=best.chosen, understood=best)
-    return Event("cue", objective=best.chosen, understood=best)
+    if objective.chosen is not None:
+        return Event("cue", objective=objective.chosen, understood=objective)
+    return Event("cue", understood=task)
 
 
 def check_name(text: str, what: str) -> str:
