@@ -200,18 +200,34 @@ def test_planning_with_a_drafted_model_solves_at_the_first_attempt(drafted, tmp_
         assert data["first_attempt_status"] == "solved" and data["attempts"] == 1, problem.name
 
 
-def test_watch_with_a_drafted_model_reports_relevance_for_an_objective_before_any_goal(drafted, tmp_path):
+def watch_without_goal(drafted, tmp_path, name: str, goal: str, events: list[dict], *options: str) -> list[dict]:
+    """``watch``'s lines for ``events`` on the first problem of ``name`` with its goal (``goal``) taken away."""
     model = tmp_path / "relevance.yaml"
-    model.write_text(drafted["workshop"][0].text)
-    domain_path, problems = world("workshop")
+    model.write_text(drafted[name][0].text)
+    domain_path, problems = world(name)
     scene = tmp_path / "scene.pddl"
-    scene.write_text(problems[0].read_text().replace("(:goal (at torque_wrench_1 workbench_1))", "(:goal (and))"))
-    events = tmp_path / "events.jsonl"
-    events.write_text(json.dumps({"event": "cue", "objective": "goal-at"}) + "\n")
-    result = invoke("watch", domain_path, scene, "--model", model, "--events", events)
-    (line,) = [json.loads(line) for line in result.output.splitlines()]
+    scene.write_text(problems[0].read_text().replace(f"(:goal {goal})", "(:goal (and))"))
+    lines = tmp_path / "events.jsonl"
+    lines.write_text("".join(json.dumps(event) + "\n" for event in events))
+    result = invoke("watch", domain_path, scene, "--model", model, "--events", lines, *options)
+    return [json.loads(line) for line in result.output.splitlines()]
+
+
+def test_watch_with_a_drafted_model_reports_relevance_for_an_objective_before_any_goal(drafted, tmp_path):
+    goal = "(at torque_wrench_1 workbench_1)"
+    (line,) = watch_without_goal(drafted, tmp_path, "workshop", goal, [{"event": "cue", "objective": "goal-at"}])
     assert line["triggered"] and line["sufficient"], line
     assert "torque_wrench_1" in line["relevant"] and "claw_hammer_1" not in line["relevant"]
+
+
+def test_a_cue_repeating_the_objective_given_determines_relevance_when_none_was_made(drafted, tmp_path):
+    cue = {"event": "cue", "objective": "goal-spun"}
+    first, second = watch_without_goal(
+        drafted, tmp_path, "laboratory", "(spun blood_sample_2)", [cue, cue], "--objective", "goal-spun"
+    )
+    assert first["triggered"] and "blood_sample_2" in first["relevant"] and "centrifuge_1" in first["relevant"]
+    assert "saline_tube_1" not in first["relevant"]
+    assert not second["triggered"]  # the same cue again changes nothing
 
 
 # --------------------------------------------------------------------------- the format's additions

@@ -185,8 +185,9 @@ def score(domain_path, problem_path, inquiries, why_object, as_json, **values):
     scoring, result = _score_and_prune(domain_path, problem_path, take_scoring(values))
     scores = scoring.scores
     if why_object is not None:
-        click.echo(json.dumps(why_json(result, why_object), indent=2) if as_json else None, nl=as_json)
-        if not as_json:
+        if as_json:
+            click.echo(json.dumps(why_json(result, why_object), indent=2))
+        else:
             print_why(result, why_object)
         if not scores.sufficient:
             fail(f"insufficient cues: {scores.insufficiency}", ExitCode.INSUFFICIENT_CUES)

@@ -11,7 +11,7 @@ from __future__ import annotations
 import click
 
 from relevance_plan.errors import UsageError
-from relevance_plan.relevance.decisions import Decision, decide, kept_summary, why
+from relevance_plan.relevance.decisions import decide, kept_summary, why
 from relevance_plan.relevance.prune import Selection
 from relevance_plan.relevance.scorers import ScoreResult
 
@@ -150,7 +150,3 @@ def _object_named(result: Selection, shown: str) -> str:
     near = get_close_matches(name, list(problem.objects), n=3)
     hint = f" (did you mean: {', '.join(problem.display(n) for n in near)}?)" if near else ""
     raise UsageError(f"--why: no object '{shown}' in the problem{hint}")
-
-
-def decision_line(decision: Decision) -> str:
-    return f"{decision.step}: {decision.reason}"

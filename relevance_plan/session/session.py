@@ -408,7 +408,8 @@ class Session:
             else:
                 options = replace(self.options, objective=event.objective)
             if options == self.options:
-                return False, set()
+                # the cue in force, said again: worth a determination only if none was made yet
+                return self.determination is None, ALL if self.determination is None else set()
             self._set_options(options)
             return True, ALL
         return False, set()  # plan
