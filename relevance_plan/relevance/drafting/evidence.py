@@ -62,15 +62,15 @@ def read_evidence(tasks: Sequence[PlanningTask]) -> list[ProblemEvidence]:
     return found
 
 
-def describe_goal(task: PlanningTask) -> str:
-    """The goal in plain words, objects by their kinds: ``torque wrench at workbench``."""
+def describe_goal(task: PlanningTask) -> list[str]:
+    """The goal's atoms in plain words, objects by their kinds: ``torque wrench at workbench``."""
     parts = []
     for atom, positive, _ in scoped_literals(task.problem.goal):
         words = [kind_of(arg).replace("_", " ") if not arg.startswith("?") else "any" for arg in atom.args]
         predicate = atom.predicate.replace("-", " ").replace("_", " ")
         said = f"{words[0]} {predicate} {words[1]}" if len(words) == 2 else " ".join([*words, predicate])
         parts.append(said if positive else f"not {said}")
-    return ", ".join(dict.fromkeys(parts))
+    return list(dict.fromkeys(parts))
 
 
 def members_by_class(evidence: Sequence[ProblemEvidence]) -> Mapping[str, dict[str, set[str]]]:

@@ -135,7 +135,7 @@ def _classes(draft: Draft) -> list[str]:
 def _dependencies(draft: Draft) -> list[str]:
     lines = ["", "# Keeping the object at when_kept of an initial fact keeps the one at restore (1-based)."]
     if draft.left_out:
-        lines.append("# Found in the schemas but left out by the check (uncomment to keep all of them):")
+        lines.append("# Found in the schemas, left out by the check (to use one, write it under 'dependencies:'):")
         for dependency, why in draft.left_out:
             lines += [f"#  - {line}" if i == 0 else f"#    {line}" for i, line in enumerate(_entry(dependency))]
             lines.append(f"#    ({why})")
