@@ -197,3 +197,22 @@ def test_words_reach_the_objectives_of_a_drafted_model(tmp_path):
     # relevant to the objective; with no goal yet, no action toward it can use the centrifuge
     assert data["scores"]["centrifuge_1"] > 0.5 and data["decisions"]["centrifuge_1"]["step"] == "goal filter"
     assert data["scores"]["saline_tube_1"] < 0.2
+
+
+@needs_weights
+def test_watch_places_the_kinds_of_objects_that_arrive(tmp_path):
+    arrivals = [
+        {"event": "add", "object": "Alice", "type": "human", "facts": [["human-at", "Alice", "serving_table_1"]]},
+        {"event": "human", "name": "Alice", "preferences": None},
+        {
+            "event": "add",
+            "object": "oat_milk_carton_1",
+            "type": "item",
+            "facts": [["at", "oat_milk_carton_1", "serving_table_1"]],
+        },
+    ]
+    events = tmp_path / "events.jsonl"
+    events.write_text("".join(json.dumps(event) + "\n" for event in arrivals))
+    args = ("--objective", "serve-coffee-with-creamer", "--place-kinds", "--events", events)
+    last = json.loads(invoke("watch", COFFEE_DOMAIN, SCENE, *args).output.splitlines()[-1])
+    assert last["triggered"] and "oat_milk_carton_1" in last["relevant"], last

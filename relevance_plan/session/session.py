@@ -195,7 +195,8 @@ class Session:
         self.scene = LiveScene(domain, problem)
         scorer = choose_scorer("relevance", self.model, options.scorer)
         self.scores: LiveModelScores | FullScores
-        if scorer == "model" and self.model is not None:
+        # placing unknown kinds (--place-kinds) is the scorer's own step: scored in full on each change
+        if scorer == "model" and self.model is not None and not options.place_kinds:
             self.scores = LiveModelScores(self.scene, self.model, options)
         else:
             self.scores = FullScores(self.scene, self.model, options, domain_path)
