@@ -7,7 +7,6 @@ from __future__ import annotations
 
 import functools
 import importlib
-import json
 import sys
 import time
 from pathlib import Path
@@ -20,6 +19,7 @@ from relevance_plan.cli.common import (
     file_option,
     handle_errors,
     json_option,
+    json_text,
     keep_work_option,
     method_option,
     planning_options,
@@ -31,6 +31,7 @@ from relevance_plan.cli.common import (
     write_plan_files,
 )
 from relevance_plan.cli.exits import ToolGroup
+from relevance_plan.cli.numbers import DISTRACTORS, OBJECTS, SEED, SUITE_SIZE
 from relevance_plan.errors import UnsupportedFeatureError, UsageError
 from relevance_plan.exitcodes import EXIT_CODE_DESCRIPTIONS, ExitCode, exit_code_for_status
 from relevance_plan.pddl.formatter import format_number
@@ -125,13 +126,18 @@ def main():
 @main.command()
 @click.argument("world", type=str)
 @click.option("--difficulty", default="simple", show_default=True, help="Kitchen worlds: simple or hard.")
-@click.option("--count", type=int, default=10, show_default=True, help="Number of problems.")
-@click.option("--seed", type=int, default=0, show_default=True)
+@click.option("--count", type=SUITE_SIZE, default=10, show_default=True, help="Number of problems.")
+@click.option("--seed", type=SEED, default=0, show_default=True)
 @file_option("--out", "out_dir", folder=True, required=True, help="Suite directory to write.")
-@click.option("--distractors", type=int, default=None, help="Kitchen worlds: override the paper's distractor count.")
+@click.option(
+    "--distractors",
+    type=DISTRACTORS,
+    default=None,
+    help="Kitchen worlds: override the paper's distractor count.",
+)
 @click.option(
     "--size",
-    type=int,
+    type=OBJECTS,
     default=None,
     help="Classic and other sized worlds: about how many objects per problem"
     " (default: a size where pure planning takes seconds to a minute).",
@@ -194,7 +200,7 @@ def score(domain_path, problem_path, inquiries, as_json, **values):
         data = _prune_json(result)
         if inquiry is not None:
             data["inquiries"] = inquiry
-        click.echo(json.dumps(data, indent=2))
+        click.echo(json_text(data))
     else:
         _print_score_table(result)
         if inquiry is not None:
@@ -218,7 +224,7 @@ def _pass_through(problem_path, output, refused: UnsupportedFeatureError, as_jso
     reason = f"cannot be pruned: {refused}"
     written = write_output(output, read_text(problem_path, "problem file"))
     if as_json:
-        click.echo(json.dumps({"pruned": False, "unpruned_reason": reason, "output": str(output)}, indent=2))
+        click.echo(json_text({"pruned": False, "unpruned_reason": reason, "output": str(output)}))
     else:
         where = written if output == STDOUT else output
         click.echo(f"pruned: no ({reason}); wrote the problem unchanged to {where}", err=output == STDOUT)
@@ -327,13 +333,13 @@ def prune(domain_path, problem_path, output, pass_through, as_json, **values):
     scores = scoring.scores
     if not scores.sufficient:
         if as_json:
-            click.echo(json.dumps(_prune_json(result), indent=2))
+            click.echo(json_text(_prune_json(result)))
         fail(f"insufficient cues: {scores.insufficiency}", ExitCode.INSUFFICIENT_CUES)
     written = write_output(output, result.text)
     if as_json:
         data = _prune_json(result)
         data["output"] = str(output)
-        click.echo(json.dumps(data, indent=2))
+        click.echo(json_text(data))
     else:
         total = len(result.task.problem.objects)
         click.echo(
@@ -387,7 +393,7 @@ def plan(domain_path, problem_path, method, plan_file, keep_work, race, as_json,
         data = result.to_json()
         data["plan_file"] = str(plan_file) if result.status is PlanStatus.SOLVED else None
         data["plan_files"] = numbered
-        click.echo(json.dumps(data, indent=2))
+        click.echo(json_text(data))
     else:
         # With the plan on stdout, the summary goes to stderr.
         _print_plan_summary(result, plan_file, err=to_stdout)

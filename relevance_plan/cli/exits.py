@@ -22,6 +22,7 @@ from typing import NoReturn
 
 import click
 
+from relevance_plan.errors import MAX_MESSAGE, printable
 from relevance_plan.exitcodes import ExitCode
 
 # What a shell reports for a process killed by SIGPIPE (128 + 13); Python ignores SIGPIPE, so we exit so.
@@ -87,15 +88,48 @@ def stdout_is_closed() -> bool:
     return False
 
 
-class ToolGroup(click.Group):
-    """The command group, with the endings above around every command (click's own included)."""
+def quit_on_usage_error(error: click.ClickException) -> NoReturn:
+    """click refused the command line: one line naming what is wrong (click's own block is four),
+    and its exit code (2 for a malformed command line, 30 for a number out of range)."""
+    context = getattr(error, "ctx", None)
+    if isinstance(error, click.exceptions.NoArgsIsHelpError) and context is not None:
+        click.echo(context.get_help())  # no command at all: the help, then the line
+        message = f"no command given; the commands are listed above ('{context.command_path} COMMAND --help')"
+        click.echo(_PREFIX + message, err=True)
+        sys.exit(int(ExitCode.COMMAND_LINE))
+    message = printable(" ".join(error.format_message().split()), MAX_MESSAGE)
+    if isinstance(error, click.UsageError) and context is not None:
+        message += f" (see '{context.command_path} --help')"
+    click.echo(_PREFIX + message, err=True)
+    if isinstance(error, click.FileError):
+        sys.exit(int(ExitCode.INPUT_FILE))
+    sys.exit(error.exit_code if error.exit_code in _CLICK_CODES else int(ExitCode.USAGE))
 
-    def main(self, *args, **kwargs):
+
+_CLICK_CODES = (int(ExitCode.COMMAND_LINE), int(ExitCode.USAGE))
+
+
+class ToolGroup(click.Group):
+    """The command group, with the endings above around every command (click's own included).
+
+    click runs it outside its standalone mode, so that its usage errors and what
+    ends a run while the command line is read come here and end in one line.
+    """
+
+    def main(self, *args, standalone_mode: bool = True, **kwargs):
+        if not standalone_mode:  # a caller that handles click's exceptions itself
+            return super().main(*args, standalone_mode=False, **kwargs)
         if stdout_is_closed():
             _say("standard output is closed; give the command somewhere to write (e.g. > /dev/null)")
             sys.exit(int(ExitCode.INPUT_FILE))
         try:
-            result = super().main(*args, **kwargs)
+            result = super().main(*args, standalone_mode=False, **kwargs)
+        except click.ClickException as error:
+            _flush_stdout()
+            quit_on_usage_error(error)
+        except (click.Abort, KeyboardInterrupt):  # Ctrl-C while click read the command line
+            _say("interrupted")
+            sys.exit(int(ExitCode.INTERRUPTED))
         except SystemExit:
             _flush_stdout()
             raise
@@ -108,7 +142,8 @@ class ToolGroup(click.Group):
             _say(f"{error.filename}: {error.strerror or error}")
             sys.exit(int(ExitCode.INPUT_FILE))
         _flush_stdout()
-        return result
+        # click's --help and --version end with their code; a command that returns has succeeded
+        sys.exit(result if isinstance(result, int) else int(ExitCode.SUCCESS))
 
 
 def _flush_stdout() -> None:

@@ -2,12 +2,11 @@
 
 from __future__ import annotations
 
-import json
 import sys
 
 import click
 
-from relevance_plan.cli.common import handle_errors, json_option, task_arguments
+from relevance_plan.cli.common import handle_errors, json_option, json_text, task_arguments
 from relevance_plan.exitcodes import ExitCode
 from relevance_plan.pddl.formatter import format_number
 from relevance_plan.planning.validate import VALIDATORS
@@ -41,7 +40,7 @@ def validate(domain_path, problem_path, plan_path, validator, as_json):
     check = check_plan_file(domain_path, problem_path, plan_path, validator)
     result = check.result
     if as_json:
-        click.echo(json.dumps(check.to_json(), indent=2))
+        click.echo(json_text(check.to_json()))
     else:
         kind = "timed plan" if check.timed else "plan"
         metric = "" if check.metric is None else f", metric {format_number(check.metric)}"
