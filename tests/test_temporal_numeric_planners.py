@@ -12,7 +12,7 @@ import shutil
 from pathlib import Path
 
 import pytest
-from support import run, task_fixture
+from support import run, task_fixture, write_task
 
 from relevance_plan.errors import UnsupportedFeatureError
 from relevance_plan.io import load_task
@@ -431,3 +431,18 @@ def test_broken_timed_plans_are_invalid_for_both_validators(haul_files):
 
 def _text(plan) -> str:
     return format_plan(plan)
+
+
+@pytest.mark.planner
+@pytest.mark.parametrize("planner", ["up:tamer", "auto"])
+def test_a_number_the_planners_reader_refuses_is_unsupported_not_malformed(tmp_path, planner):
+    """Our reader takes a timed literal at 1e308; unified-planning's grammar has no exponent: the
+    planner does not take that input (33), which is not malformed PDDL (32)."""
+    pytest.importorskip("up_tamer")
+    domain = HAUL_DOMAIN.replace(":durative-actions", ":durative-actions :timed-initial-literals")
+    problem = HAUL_PROBLEM.replace("(:init", "(:init (at 1e308 (road depot farm))", 1)
+    domain, problem = write_task(tmp_path, "haul", domain, problem)
+    code, _, stderr = run("plan", domain, problem, "--planner", planner, "-q", "--timeout", "60",
+                          "--plan-file", tmp_path / "plan")  # fmt: skip
+    assert code == 33, stderr
+    assert "its reader refuses the problem, which the tool's reader takes" in stderr
