@@ -404,14 +404,15 @@ def plan(domain_path, problem_path, method, plan_file, keep_work, race, as_json,
         sys.exit(int(code))
 
 
-# The backstop past --timeout: the loop holds the limit itself; this stops whatever step overruns it.
-DEADLINE_SLACK = 0.8
+# The backstop past --timeout, counted from the process's start: the loop holds the limit itself; this
+# stops whatever step overruns it, leaving time to stop the planners and say so within a second.
+DEADLINE_SLACK = 0.6
 
 
 def _plan_within_timeout(domain_path, problem_path, options, quiet: bool, keep_work=None) -> PlanResult:
     """``plan_task``, or, if it runs past ``--timeout``, an out-of-time result naming the step it
     was in (reported as any other result: exit 20, and one JSON object with ``--json``)."""
-    from relevance_plan.signals import DEADLINE_SIGNAL, Interrupted, deadline_alarm
+    from relevance_plan.signals import DEADLINE_SIGNAL, Interrupted, deadline_alarm, process_age
 
     steps: list[str] = []  # the first report comes once scoring is done
 
@@ -423,7 +424,7 @@ def _plan_within_timeout(domain_path, problem_path, options, quiet: bool, keep_w
     timeout = options.timeout
     started = time.monotonic()
     try:
-        with deadline_alarm(None if timeout is None else timeout + DEADLINE_SLACK):
+        with deadline_alarm(None if timeout is None else timeout + DEADLINE_SLACK - process_age()):
             return plan_task(domain_path, problem_path, options, progress=progress, keep_work=keep_work)
     except Interrupted as error:
         if error.signum != DEADLINE_SIGNAL:
