@@ -272,8 +272,7 @@ def learn(domain_path, problem_paths, output_path, timeout, time_limit, labels, 
     """
     from relevance_plan.batch.learn import learn as learn_model
     from relevance_plan.batch.learn import learn_from_store
-    from relevance_plan.cli.files import check_output_file, names_stdout, write_output
-    from relevance_plan.io import check_input_file
+    from relevance_plan.cli.files import names_stdout, write_output
     from relevance_plan.relevance.learning.learned_model import learned_model_text
 
     if time_limit is not None:
@@ -281,10 +280,6 @@ def learn(domain_path, problem_paths, output_path, timeout, time_limit, labels, 
             raise UsageError("give --timeout only (--time-limit is its old, deprecated name)")
         click.echo("relevance-plan: --time-limit is deprecated: use --timeout", err=True)
         timeout = time_limit
-    check_input_file(domain_path, "domain file")
-    for path in problem_paths:
-        check_input_file(path, "problem file")
-    check_output_file(output_path, "model file", [domain_path, *problem_paths, store_path])
 
     def say(message: str) -> None:
         if not quiet:

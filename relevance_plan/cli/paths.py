@@ -19,11 +19,13 @@ import click
 INPUT_FILES = {
     "domain_path": "domain file",
     "problem_path": "problem file",
+    "problem_paths": "problem file",
     "model_path": "knowledge model",
     "plan_path": "plan file",
 }
 OUTPUT_FILES = {
     "output": "output file",
+    "output_path": "model file",
     "plan_file": "plan file",
     "heatmap": "heatmap file",
     "html_path": "HTML report",
@@ -43,7 +45,7 @@ NOT_STDOUT = {
 # Read, never created, by these commands.
 INPUT_STORES = {"report", "learn"}
 # Inputs these commands hand to a planner, which reads them again: a pipe (``<(...)``, /dev/stdin) gives its text once.
-REREAD = {"plan": ("domain_path", "problem_path"), "watch": ("domain_path",)}
+REREAD = {"plan": ("domain_path", "problem_path"), "watch": ("domain_path",), "learn": ("domain_path", "problem_paths")}
 
 
 class _UncheckedPath(click.Path):
@@ -81,11 +83,11 @@ def _check(command: click.Command, values: dict) -> None:
     _check_not_stdout(command, values)
     inputs = []
     for name, what in INPUT_FILES.items():
-        if values.get(name) is not None:
-            check_input_file(values[name], what)
+        for path in _as_list(values.get(name)):
+            check_input_file(path, what)
             if name in REREAD.get(command_name, ()):
-                check_regular_file(values[name], what, f"{command_name} gives it to the planner")
-            inputs.append(values[name])
+                check_regular_file(path, what, f"{command_name} gives it to the planner")
+            inputs.append(path)
     if values.get("domain_path") is not None and values.get("model_path") is None:
         # The model found next to the domain is an input too.
         found = Path(values["domain_path"]).parent / "relevance.yaml"
