@@ -244,6 +244,14 @@ def test_a_training_problem_proved_unsolvable_is_reported_so(tmp_path):
     assert not (tmp_path / "m.json").exists()
 
 
+@pytest.mark.planner
+def test_solved_training_problems_without_objects_are_nothing_to_learn_from(tmp_path):
+    domain = write_file(tmp_path, "gate.pddl", GATE_DOMAIN)
+    problem = write_file(tmp_path, "open.pddl", GATE_PROBLEM.replace("(:init)", "(:init (open))"))
+    code, _, err = run("learn", domain, problem, "-o", tmp_path / "m.json", "-q", "--timeout", "10")
+    assert code == 30 and "no objects" in one_line_error(err)
+
+
 SHUTTLE_DOMAIN = """(define (domain shuttle)
   (:requirements :strips :typing)
   (:types place crate)

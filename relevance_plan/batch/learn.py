@@ -232,6 +232,8 @@ def _report(
         path, why = skipped[0] if skipped else ("", "")
         more = f" (and {len(skipped) - 1} more)" if len(skipped) > 1 else ""
         raise UsageError(f"no training problem was solved, nothing to learn from: {path}: {why}{more}")
+    if not any(problem.vectors for problem in labelled):
+        raise UsageError("the solved training problems have no objects: nothing to learn from")
     model = fit_learned_model(domain, labelled, config, labels, seed)
     seconds = time.perf_counter() - started
     training = dict(model.training, seconds=round(seconds, 2))
