@@ -84,6 +84,9 @@ def test_no_numeric_option_takes_a_number_out_of_its_range(name, param, argument
         (["no-such-command"], "no-such-command"),
         (["report"], "STORE"),
         ([], "no command"),
+        (["prune", COFFEE_DOMAIN, COFFEE_DOMAIN], "--output"),
+        (["learn", COFFEE_DOMAIN, COFFEE_DOMAIN], "--output"),
+        (["generate", "coffee"], "--out"),
     ],
 )
 def test_usage_errors_are_one_line_naming_what_is_wrong(args, needle):

@@ -137,7 +137,9 @@ def task_arguments(command):
 def file_option(*names: str, help: str, folder: bool = False, default: str | None = None, **more):
     """An option naming a file (``folder``: a directory); ``paths`` checks it before the command runs."""
     kind = click.Path(file_okay=False) if folder else click.Path(dir_okay=False)
-    return click.option(*names, type=kind, default=default, help=help, **more)
+    if default is not None:  # click counts an explicit default of None as given: a required option would pass
+        more["default"] = default
+    return click.option(*names, type=kind, help=help, **more)
 
 
 def json_option(help: str | None = None):
