@@ -105,12 +105,10 @@ def connect_scheduler(address: str, timeout: float = DEFAULT_SCHEDULER_TIMEOUT):
     check_scheduler_greeting(address, timeout)
     left = max(timeout - (time.monotonic() - started), 0.1)
     try:
-        return Client(address, timeout=left, set_as_default=False)
+        return _closed_on_failure(Client)(address, timeout=left, set_as_default=False)
     except MemoryError:  # an answer read as a message of exabytes
-        _forget_clients(Client)
         raise SchedulerError(f"the server at {address} is not a Dask scheduler (its answer is not Dask's)") from None
     except Exception as error:  # whatever else Dask's client makes of the answer, it is one line here
-        _forget_clients(Client)
         detail = " ".join(str(error).split()) or type(error).__name__
         raise SchedulerError(f"cannot reach the Dask scheduler at {address}: {detail}") from None
 
@@ -153,14 +151,21 @@ def check_scheduler_greeting(address: str, timeout: float) -> None:
         raise SchedulerError(f"the server at {address} is not a Dask scheduler (it answers {greeting!r}...)")
 
 
-def _forget_clients(client_class) -> None:
-    """A client whose start failed is closed without a word: left as it is, it would try to close
-    again when collected, and say so on stderr after the tool's own line."""
-    for client in list(getattr(client_class, "_instances", ())):
-        if getattr(client, "status", "") != "running":
-            with contextlib.suppress(Exception):
-                client.status = "closed"
-                client._loop_runner.stop()
+def _closed_on_failure(client_class):
+    """Dask's client, made to end closed when its start fails: collected later, it has nothing left to
+    close (Dask's own would try again, time out, and print a traceback after the tool's line)."""
+
+    class Client(client_class):
+        def start(self, **kwargs):
+            try:
+                return super().start(**kwargs)
+            except BaseException:
+                with contextlib.suppress(Exception):
+                    self._loop_runner.stop()
+                self.status = "closed"
+                raise
+
+    return Client
 
 
 def _terminate_worker_runs() -> None:
