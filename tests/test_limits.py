@@ -89,6 +89,29 @@ def test_memory_running_out_again_on_the_way_out_is_still_one_line(monkeypatch, 
     assert len(leaving) == 2  # the outer handler ran too, and kept quiet
 
 
+def test_memory_running_out_as_a_system_error_is_out_of_memory(monkeypatch, copied_coffee_files, capfd):
+    """Under ``ulimit -v`` a C function may fail an allocation without saying so; the interpreter then
+    raises SystemError, not MemoryError.  Any other SystemError is not the tool's to explain."""
+    from relevance_plan.cli import exits
+    from relevance_plan.pddl import parser
+
+    def silent_failure(*args, **kwargs):
+        raise SystemError("<function score at 0x7f> returned NULL without setting an exception")
+
+    monkeypatch.setattr(parser, "_read_problem", silent_failure)
+    monkeypatch.setattr(exits, "_said_out_of_memory", False)
+    code, _, _ = run("score", *copied_coffee_files)
+    assert code == ExitCode.OUT_OF_MEMORY
+    assert "out of memory" in one_line_error(capfd.readouterr().err)
+
+    def bug(*args, **kwargs):
+        raise SystemError("a bug")
+
+    monkeypatch.setattr(parser, "_read_problem", bug)
+    with pytest.raises(SystemError, match="a bug"):
+        run("score", *copied_coffee_files)
+
+
 def test_the_loaders_messages_are_out_of_memory():
     from relevance_plan.planning.planners.base import PlannerStatus
     from relevance_plan.planning.planners.fast_downward.adapter import classify as _classify

@@ -404,15 +404,26 @@ def plan(domain_path, problem_path, method, plan_file, keep_work, race, as_json,
         sys.exit(int(code))
 
 
-# The backstop past --timeout, counted from the process's start: the loop holds the limit itself; this
+# The backstop past --timeout, counted from the tool's start: the loop holds the limit itself; this
 # stops whatever step overruns it, leaving time to stop the planners and say so within a second.
 DEADLINE_SLACK = 0.6
+# click's context object when the console script (``launch``) runs the commands: the process is the tool's
+# own, so its age is the time the tool has spent (run inside another program, a command counts from its start).
+LAUNCHED = "launched"
+
+
+def _time_spent() -> float:
+    """Seconds since the tool started: the process's age when it is the tool's own, else none."""
+    from relevance_plan.signals import process_age
+
+    context = click.get_current_context(silent=True)
+    return process_age() if context is not None and context.find_root().obj == LAUNCHED else 0.0
 
 
 def _plan_within_timeout(domain_path, problem_path, options, quiet: bool, keep_work=None) -> PlanResult:
     """``plan_task``, or, if it runs past ``--timeout``, an out-of-time result naming the step it
     was in (reported as any other result: exit 20, and one JSON object with ``--json``)."""
-    from relevance_plan.signals import DEADLINE_SIGNAL, Interrupted, deadline_alarm, process_age
+    from relevance_plan.signals import DEADLINE_SIGNAL, Interrupted, deadline_alarm
 
     steps: list[str] = []  # the first report comes once scoring is done
 
@@ -424,7 +435,7 @@ def _plan_within_timeout(domain_path, problem_path, options, quiet: bool, keep_w
     timeout = options.timeout
     started = time.monotonic()
     try:
-        with deadline_alarm(None if timeout is None else timeout + DEADLINE_SLACK - process_age()):
+        with deadline_alarm(None if timeout is None else timeout + DEADLINE_SLACK - _time_spent()):
             return plan_task(domain_path, problem_path, options, progress=progress, keep_work=keep_work)
     except Interrupted as error:
         if error.signum != DEADLINE_SIGNAL:

@@ -84,7 +84,12 @@ def handled(function):
 
     @functools.wraps(function)
     def wrapper(*args, **kwargs):
-        from relevance_plan.cli.exits import quit_on_broken_pipe, quit_on_output_error, quit_out_of_memory
+        from relevance_plan.cli.exits import (
+            quit_if_memory_ran_out,
+            quit_on_broken_pipe,
+            quit_on_output_error,
+            quit_out_of_memory,
+        )
         from relevance_plan.signals import DEADLINE_SIGNAL, interrupt_on_signals
 
         try:
@@ -104,6 +109,9 @@ def handled(function):
         except MemoryError as error:
             error.__traceback__ = None  # its frames hold what filled the memory: free it before saying anything
             quit_out_of_memory()
+        except SystemError as error:
+            quit_if_memory_ran_out(error)
+            raise
         except KeyboardInterrupt as error:
             if getattr(error, "signum", None) == DEADLINE_SIGNAL:
                 fail("out of time: the run went past its --timeout", ExitCode.OUT_OF_TIME)

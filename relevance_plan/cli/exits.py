@@ -9,7 +9,7 @@ ever reaches the user:
 * standard output is closed (``>&-``): refused before any work (exit 31),
   rather than running with every line thrown away;
 * standard output cannot take the text (``> /dev/full``): one line, exit 31;
-* the tool itself runs out of memory (``ulimit -v``): one line, exit 21.
+* the tool itself runs out of memory (``ulimit -v``), however the interpreter says so: one line, exit 21.
 """
 
 from __future__ import annotations
@@ -64,6 +64,18 @@ def quit_out_of_memory() -> NoReturn:
     sys.exit(int(ExitCode.OUT_OF_MEMORY))
 
 
+# How the interpreter reports a C function that failed an allocation and did not say so: the same
+# out of memory, in other words ("<function score> returned NULL without setting an exception").
+_SILENT_FAILURES = ("without setting an exception", "without exception set")
+
+
+def quit_if_memory_ran_out(error: SystemError) -> None:
+    """One line and exit 21 when ``error`` is how memory running out surfaced; else return."""
+    if any(words in str(error) for words in _SILENT_FAILURES):
+        error.__traceback__ = None
+        quit_out_of_memory()
+
+
 def quit_on_output_error(error: OSError) -> NoReturn:
     """Standard output refused the text (a full disk, /dev/full, an I/O error)."""
     if error.errno == errno.EPIPE:
@@ -116,14 +128,14 @@ class ToolGroup(click.Group):
     ends a run while the command line is read come here and end in one line.
     """
 
-    def main(self, *args, standalone_mode: bool = True, **kwargs):
+    def main(self, args=None, prog_name=None, complete_var=None, standalone_mode: bool = True, **extra):
         if not standalone_mode:  # a caller that handles click's exceptions itself
-            return super().main(*args, standalone_mode=False, **kwargs)
+            return super().main(args, prog_name, complete_var, standalone_mode=False, **extra)
         if stdout_is_closed():
             _say("standard output is closed; give the command somewhere to write (e.g. > /dev/null)")
             sys.exit(int(ExitCode.INPUT_FILE))
         try:
-            result = super().main(*args, standalone_mode=False, **kwargs)
+            result = super().main(args, prog_name, complete_var, standalone_mode=False, **extra)
         except click.ClickException as error:
             _flush_stdout()
             quit_on_usage_error(error)
@@ -136,6 +148,9 @@ class ToolGroup(click.Group):
         except MemoryError as error:
             error.__traceback__ = None  # its frames hold what filled the memory: free it before saying anything
             quit_out_of_memory()
+        except SystemError as error:
+            quit_if_memory_ran_out(error)
+            raise
         except OSError as error:  # outside any command's own handling (click's help, its usage lines)
             if error.filename is None:
                 quit_on_output_error(error)

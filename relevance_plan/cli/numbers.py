@@ -75,8 +75,11 @@ class Numbers(Number):
         parts = [part.strip() for part in str(value).split(",")]
         if not any(parts):
             raise OutOfRange(f"must be {self.describe()}, got '{value}'", ctx, param)
-        numbers = [self.check(self.parse(part, param, ctx), part, param, ctx) for part in parts if part]
-        return tuple(dict.fromkeys(numbers))
+        try:
+            numbers = [self.parse(part, param, ctx) for part in parts if part]
+        except click.BadParameter:  # a list is read by the option itself: a bad value in it is a bad value
+            raise OutOfRange(f"must be {self.describe()}, got '{value}'", ctx, param) from None
+        return tuple(dict.fromkeys(self.check(number, number, param, ctx) for number in numbers))
 
     def describe(self) -> str:
         return "comma-separated values, each " + super().describe()

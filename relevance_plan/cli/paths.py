@@ -79,7 +79,7 @@ def _check(command: click.Command, values: dict) -> None:
     from relevance_plan.cli.files import check_output_file, check_regular_file
     from relevance_plan.io import check_input_file
 
-    command_name = command.name
+    command_name = command.name or ""
     _check_not_stdout(command, values)
     inputs = []
     for name, what in INPUT_FILES.items():

@@ -33,7 +33,7 @@ from dataclasses import dataclass, replace
 from relevance_plan import errors
 from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.planning.planners.auto import AutoPlanner, FallbackPlanner
-from relevance_plan.planning.planners.base import Planner, PlannerStatus, RunOutcome
+from relevance_plan.planning.planners.base import READER_REFUSED, Planner, PlannerStatus, RunOutcome
 from relevance_plan.planning.planners.fast_downward import head_start
 from relevance_plan.planning.planners.fast_downward.head_start import HeadStart
 from relevance_plan.planning.planners.preparation import PreparedPlanner, prepare_planner, with_planner_args
@@ -202,9 +202,10 @@ def died_of_memory(outcome: RunOutcome, memory_limit_mb: int | None) -> RunOutco
 
 
 def refused_by_its_reader(outcome: RunOutcome) -> RunOutcome:
-    """A planner that cannot read the user's problem, which the tool's reader has read: the planner
-    does not take that input (a number written 1e308, say), which is not malformed PDDL."""
-    if outcome.status is not PlannerStatus.INPUT_ERROR:
+    """A planner whose own reader, which takes less than PDDL, cannot read the user's problem that the
+    tool's reader has read: the planner does not take that input (a number written 1e308, say), which is
+    not malformed PDDL.  (Fast Downward's translator refusing the input is still malformed PDDL.)"""
+    if outcome.status is not PlannerStatus.INPUT_ERROR or outcome.raw_status != READER_REFUSED:
         return outcome
     refused = "its reader refuses the problem, which the tool's reader takes"
     return replace(outcome, status=PlannerStatus.UNSUPPORTED, reason=f"{outcome.reason}; {refused}".lstrip("; "))

@@ -119,7 +119,7 @@ def load_learned_model(path: str | os.PathLike[str]) -> LearnedModel:
 _REQUIRED = object()
 
 
-def _field(data: dict, key: str, kind: type | tuple[type, ...], default: Any = _REQUIRED) -> Any:
+def _field(data: dict[str, Any], key: str, kind: type | tuple[type, ...], default: Any = _REQUIRED) -> Any:
     """``data[key]`` (``default`` when absent, if given), which must be of ``kind``: a number is finite
     and never a bool.  KeyError or TypeError naming the field if not."""
     if key not in data:
@@ -134,7 +134,7 @@ def _field(data: dict, key: str, kind: type | tuple[type, ...], default: Any = _
     return value
 
 
-def _names(data: dict, key: str, default: Any = _REQUIRED) -> frozenset[str]:
+def _names(data: dict[str, Any], key: str, default: Any = _REQUIRED) -> frozenset[str]:
     names = _field(data, key, list, default)
     if not all(isinstance(name, str) for name in names):
         raise TypeError(f'"{key}" must list names')
