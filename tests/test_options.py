@@ -46,6 +46,7 @@ def arguments(tmp_path):
         "sweep": [tmp_path],
         "demo": ["--workdir", tmp_path / "demo"],
         "learn": [COFFEE_DOMAIN, problem, "-o", tmp_path / "m.json"],
+        "validate": [COFFEE_DOMAIN, problem, problem],
     }
 
 

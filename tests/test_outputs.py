@@ -11,7 +11,19 @@ import threading
 from pathlib import Path
 
 import pytest
-from support import COFFEE_MODEL, DOMAINS, TOOL, make_row, one_line_error, planner_script, run, write_file, write_store
+from support import (
+    COFFEE_MODEL,
+    DOMAINS,
+    PAYING_DOMAIN,
+    PAYING_PROBLEM,
+    TOOL,
+    make_row,
+    one_line_error,
+    planner_script,
+    run,
+    write_file,
+    write_store,
+)
 
 from relevance_plan.exitcodes import ExitCode
 
@@ -163,22 +175,6 @@ def test_json_output_is_strict_json(tmp_path):
 
     assert code == 0 and json.loads(stdout, parse_constant=refuse)["metric"] is None
     assert run("validate", domain, problem, plan)[1].startswith("valid: plan of 2 steps, metric inf")
-
-
-PAYING_DOMAIN = """(define (domain pay)
-  (:requirements :typing :action-costs)
-  (:types coin)
-  (:predicates (spent ?c - coin))
-  (:functions (total-cost) - number (price) - number)
-  (:action spend :parameters (?c - coin) :precondition (and)
-    :effect (and (spent ?c) (increase (total-cost) (price)))))
-"""
-PAYING_PROBLEM = """(define (problem pay-1) (:domain pay)
-  (:objects a b - coin)
-  (:init (= (total-cost) 0) (= (price) 1e308))
-  (:goal (and (spent a) (spent b)))
-  (:metric minimize (total-cost)))
-"""
 
 
 # --------------------------------------------------------------------------- the user's files

@@ -132,10 +132,10 @@ haul_files = task_fixture("haul", HAUL_DOMAIN, HAUL_PROBLEM)
 fuel_files = task_fixture("fuel-haul", FUEL_DOMAIN, FUEL_PROBLEM)
 
 
-def planned(files: tuple[Path, Path], planner: str):
+def planned(files: tuple[Path, Path], planner: str, widen: bool = True):
     """``plan_task`` with ``planner`` (skipped when not installed), its plan cross-checked."""
     needs(planner)
-    result = plan_task(*files, PlanOptions(planner=planner, timeout=60))
+    result = plan_task(*files, PlanOptions(planner=planner, timeout=60, widen=widen))
     cross_checked(*files, result)
     return result
 
@@ -156,7 +156,9 @@ def cross_checked(domain_path: Path, problem_path: Path, result) -> None:
 @pytest.mark.planner
 @pytest.mark.parametrize("planner", ["lpg", "up:aries", "up:tamer"])
 def test_temporal_planners_give_timed_plans_valid_on_the_original(haul_files, planner):
-    result = planned(haul_files, planner)
+    # one attempt, with all the time: a planner that proves nothing gets a short first budget, and whether
+    # that is enough (LPG's start under load) would decide whether the pruned problem is the one solved
+    result = planned(haul_files, planner, widen=False)
     assert result.plan.timed and all(step.duration is not None for step in result.plan)
     assert result.pruned and result.objects_kept < result.objects_total  # the yard and what is in it went
     assert result.planner == planner

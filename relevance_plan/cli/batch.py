@@ -16,6 +16,7 @@ from relevance_plan.cli.common import (
     scoring_options,
     take_plan_options,
     take_scoring,
+    timeout_option,
 )
 from relevance_plan.cli.display import progress_bar
 from relevance_plan.cli.numbers import DISTRACTORS, DPI, JOBS, SEED, SEEDS, SUITE_SIZE, THRESHOLDS, seconds
@@ -209,7 +210,7 @@ def sweep(suite_dir, taus, heatmap, as_json, **values):
     help="Where suites and results go, kept (default: a temporary folder, removed at the end).",
 )
 @click.option("--count", type=SUITE_SIZE, default=3, show_default=True, help="Problems per world.")
-@click.option("--timeout", type=seconds(), default=60.0, show_default=True, help="Seconds per job.")
+@timeout_option(60.0, "Seconds per job.")
 @click.option("--jobs", "-j", type=JOBS, default=2, show_default=True, help="Jobs run at once.")
 @click.option("--distractors", type=DISTRACTORS, default=None, help="Distractors per problem (default 30).")
 @click.option("--tiny", is_flag=True, help="1 problem per world with 5 distractors (a quick check).")
@@ -240,13 +241,7 @@ def demo(workdir, count, timeout, jobs, distractors, tiny, quiet):
 @click.argument("domain_path", metavar="DOMAIN", type=click.Path(dir_okay=False))
 @click.argument("problem_paths", metavar="PROBLEM...", nargs=-1, type=click.Path(dir_okay=False))
 @file_option("-o", "--output", "output_path", required=True, help="Model file (JSON).")
-@click.option(
-    "--timeout",
-    type=seconds(),
-    default=LEARN_TIMEOUT,
-    show_default=True,
-    help="Seconds for each planner run on a problem.",
-)
+@timeout_option(LEARN_TIMEOUT, "Seconds for each planner run on a problem.")
 # The option's name until 0.12, kept for a release: hidden, said to be deprecated when used.
 @click.option("--time-limit", "time_limit", type=seconds(), default=None, hidden=True)
 @click.option(

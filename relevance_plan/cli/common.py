@@ -170,6 +170,11 @@ def _finite(data: Any) -> Any:
     return data
 
 
+def timeout_option(default: float, help: str):
+    """``--timeout`` in seconds: every command's time limit has this one name, and one check (``seconds``)."""
+    return click.option("--timeout", type=seconds(), default=default, show_default=True, help=help)
+
+
 def quiet_option(help: str = "No progress messages."):
     return click.option("--quiet", "-q", is_flag=True, help=help)
 
@@ -284,13 +289,7 @@ def planning_options(per_job: bool = False):
                     "one); Fast Downward: after the inputs, e.g. '--translate-options "
                     "--invariant-generation-max-candidates 1000'.",
                 ),
-                click.option(
-                    "--timeout",
-                    type=seconds(),
-                    default=DEFAULT_TIMEOUT,
-                    show_default=True,
-                    help=f"Seconds for {per}.",
-                ),
+                timeout_option(DEFAULT_TIMEOUT, f"Seconds for {per}."),
                 click.option(
                     "--memory-limit",
                     "memory_limit",

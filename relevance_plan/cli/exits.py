@@ -9,7 +9,10 @@ ever reaches the user:
 * standard output is closed (``>&-``): refused before any work (exit 31),
   rather than running with every line thrown away;
 * standard output cannot take the text (``> /dev/full``): one line, exit 31;
-* the tool itself runs out of memory (``ulimit -v``), however the interpreter says so: one line, exit 21.
+* the tool itself runs out of memory (``ulimit -v``), however the interpreter says so: one line, exit 21;
+* click refuses the command line (an unknown option, a missing argument, a
+  number out of its range): one line naming what is wrong, not click's
+  four, exit 2 (30 for a number out of range, ``cli.numbers``).
 """
 
 from __future__ import annotations

@@ -6,8 +6,7 @@ import sys
 
 import click
 
-from relevance_plan.cli.common import handle_errors, json_option, json_text, task_arguments
-from relevance_plan.cli.numbers import seconds
+from relevance_plan.cli.common import handle_errors, json_option, json_text, task_arguments, timeout_option
 from relevance_plan.exitcodes import ExitCode
 from relevance_plan.pddl.formatter import format_number
 from relevance_plan.planning.validate import VALIDATORS
@@ -27,13 +26,7 @@ VALIDATE_TIMEOUT = 60.0
     help="builtin (the simulator the attempt loop uses), val (VAL's Validate: pip install"
     " 'relevance-plan[val]'), up (unified-planning's validators).",
 )
-@click.option(
-    "--timeout",
-    type=seconds(),
-    default=VALIDATE_TIMEOUT,
-    show_default=True,
-    help="Seconds the validator may take to judge the plan.",
-)
+@timeout_option(VALIDATE_TIMEOUT, "Seconds the validator may take to judge the plan.")
 @json_option("Print one JSON object.")
 @handle_errors
 def validate(domain_path, problem_path, plan_path, validator, timeout, as_json):

@@ -128,7 +128,14 @@ def run_val(
     runs: stopped at ``timeout`` (VAL is slow on some input: a name of 100,000 characters takes it
     minutes) and whenever the tool ends, even by ``kill -9``.  ``ValidatorUnavailableError`` when VAL
     is not installed or could not run (not started, out of time)."""
-    from relevance_plan.supervision.process import read_log, run_process_group, watchdog_deadline, work_directory
+    from relevance_plan.supervision.process import (
+        CancelScope,
+        cancel_scope,
+        read_log,
+        run_process_group,
+        watchdog_deadline,
+        work_directory,
+    )
 
     binary = find_validate()
     if binary is None:
@@ -142,14 +149,17 @@ def run_val(
     with work_directory(None, prefix="relevance-plan-val-") as folder:
         (folder / "plan").write_text(plan_text)
         try:
-            run = run_process_group(
-                [str(binary.path), *options, *files],
-                folder,
-                watchdog_deadline(timeout),
-                what="VAL's Validate",
-                program=binary.path,
-                env=environment,
-            )
+            # a scope of its own: VAL judges a plan already found, which the race stopping the other
+            # side's planners (the scope of this thread's runs) must not stop
+            with cancel_scope(CancelScope()):
+                run = run_process_group(
+                    [str(binary.path), *options, *files],
+                    folder,
+                    watchdog_deadline(timeout),
+                    what="VAL's Validate",
+                    program=binary.path,
+                    env=environment,
+                )
         except errors.PlannerError as error:
             raise errors.ValidatorUnavailableError(f"VAL's Validate could not start: {error.message}") from None
         if run.watchdog_fired:

@@ -34,6 +34,20 @@ COUNTER = files(
 BAD_PLAN = files(bad_dot_plan="(pick-up plastic_cup_1 kitchen_counter_1)\n")
 VALIDATE_UP = "exec $TOOL validate D.pddl {problem} bad.plan --validator up"
 
+
+def _long_enhsp(name: str, during, codes: tuple) -> Scenario:
+    """ENHSP counting a long way, without the race, ``during`` doing something to the run."""
+    return Scenario(
+        name,
+        args=("plan", N[0], "numeric/long.pddl", "--planner", "up:enhsp", "--no-race", *PLAN),
+        setup=LONG_COUNT,
+        codes=codes,
+        during=during,
+        writes=OUT,
+        needs=ENHSP,
+    )
+
+
 LEFT_NOTHING = [
     Scenario(
         "engines/aries-temporal", args=("plan", *T, "--planner", "up:aries", *PLAN), writes=OUT, needs=ARIES, quick=True
@@ -50,15 +64,7 @@ LEFT_NOTHING = [
         needs=ENHSP,
     ),
     *(
-        Scenario(
-            f"engines/enhsp-{name}-while-it-searches",
-            args=("plan", N[0], "numeric/long.pddl", "--planner", "up:enhsp", "--no-race", *PLAN),
-            setup=LONG_COUNT,
-            codes=codes,
-            during=after(3.0, signum),
-            writes=OUT,
-            needs=ENHSP,
-        )
+        _long_enhsp(f"engines/enhsp-{name}-while-it-searches", after(3.0, signum), codes)
         for name, signum, codes in (
             ("sigterm", signal.SIGTERM, (INTERRUPTED, OK)),
             ("sigint", signal.SIGINT, (INTERRUPTED, OK)),
@@ -74,14 +80,10 @@ LEFT_NOTHING = [
         needs=ARIES,
     ),
     *(
-        Scenario(
+        _long_enhsp(
             f"engines/enhsp-worker-{whom}-killed",
-            args=("plan", N[0], "numeric/long.pddl", "--planner", "up:enhsp", "--no-race", *PLAN),
-            setup=LONG_COUNT,
-            codes=(OK, PLANNER, NO_VALID, TIME),
-            during=_kill_after(2.5, b"up.worker", depth=depth),
-            writes=OUT,
-            needs=ENHSP,
+            _kill_after(2.5, b"up.worker", depth=depth),
+            (OK, PLANNER, NO_VALID, TIME),
         )
         for whom, depth in (("guard", 0), ("process", 1))
     ),

@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import signal
 
+from support import PAYING_DOMAIN, PAYING_PROBLEM
+
 from hostile.inputs import TIMED_PLAN, after, files, installed, json_only, link, one_line, silent
 from hostile.scenario import INPUT, INTERRUPTED, OK, PDDL, Result, Scenario, scenario_test
 
@@ -72,21 +74,6 @@ NOT_FILES = [
         ("a-dangling-link", link("bad.plan", "nowhere")),
     )
 ]
-PAYING_DOMAIN = """(define (domain pay)
-  (:requirements :typing :action-costs)
-  (:types coin)
-  (:predicates (spent ?c - coin))
-  (:functions (total-cost) - number (price) - number)
-  (:action spend :parameters (?c - coin) :precondition (and)
-    :effect (and (spent ?c) (increase (total-cost) (price)))))
-"""
-PAYING_PROBLEM = """(define (problem pay-1) (:domain pay)
-  (:objects a b - coin)
-  (:init (= (total-cost) 0) (= (price) 1e308))
-  (:goal (and (spent a) (spent b)))
-  (:metric minimize (total-cost)))
-"""
-
 JSON = [
     Scenario(
         f"plans/json-{label}",
