@@ -145,14 +145,17 @@ def report(store_path, fmt, as_json, as_csv, suite, plots_dir, plot_format, dpi,
         check_plot_targets(plots_dir, store_path, plot_format)
     rows = read_rows(store_path, suite)
     if plots_dir is not None:
-        from relevance_plan.batch.plots import write_plots
+        from relevance_plan.batch.plots import unplotted_note, write_plots
 
         # no file this run writes may be the target of another (the page over a plot)
         suites = sorted({row["suite"] for row in rows})
         plots = [("plot", path) for path in check_plot_targets(plots_dir, store_path, plot_format, suites)]
         check_distinct_outputs(plots + ([] if html_path is None or page_on_stdout else [("HTML report", html_path)]))
         written = write_plots(rows, plots_dir, store=store_path, fmt=plot_format, dpi=dpi)
-        click.echo("wrote " + ", ".join(str(path) for path in written), err=True)
+        unplotted = unplotted_note(suites)
+        click.echo(
+            "wrote " + ", ".join(str(path) for path in written) + (f" ({unplotted})" if unplotted else ""), err=True
+        )
     if html_path is not None:
         from relevance_plan.batch.html_report import format_html
 

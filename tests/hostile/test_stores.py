@@ -3,13 +3,14 @@
 from __future__ import annotations
 
 import os
+import signal
 import sqlite3
 from pathlib import Path
 
 from support import REPO
 
-from hostile.inputs import both, files, installed, link, one_line, planner, quiet_code, says, store, suite
-from hostile.scenario import INPUT, MODEL, STORE, USAGE, Scenario, scenario_test
+from hostile.inputs import after, both, files, installed, link, one_line, planner, quiet_code, says, store, suite
+from hostile.scenario import INPUT, INTERRUPTED, MODEL, OK, STORE, USAGE, Scenario, scenario_test
 
 
 def _store_missing_a_column(work: Path) -> None:
@@ -165,6 +166,46 @@ OUTPUTS = [
 ]
 
 
+def _big_store(work: Path, rows: int = 30_000) -> None:
+    """The store of ``store`` grown to ``rows`` rows over many suites (copies of its rows, keyed apart)."""
+    store(work)
+    connection = sqlite3.connect(work / "s.sqlite", isolation_level=None)
+    names = [row[1] for row in connection.execute("PRAGMA table_info(results)")]
+    first = connection.execute("SELECT * FROM results").fetchall()
+    copies = [
+        tuple(f"{value}-{number}" if name in ("problem_hash", "suite") else value for name, value in zip(names, row))
+        for number in range(rows // len(first))
+        for row in first
+    ]
+    marks = ", ".join("?" * len(names))
+    connection.execute("BEGIN")
+    connection.executemany(f"INSERT INTO results ({', '.join(names)}) VALUES ({marks})", copies)
+    connection.execute("COMMIT")
+    connection.close()
+
+
+def _no_temporary_plot(result) -> str | None:
+    """What the interrupted report wrote are whole plots: no temporary file of a plot is left."""
+    folder = result.work / "plots"
+    left = sorted(path.name for path in folder.iterdir() if path.name.endswith(".tmp")) if folder.is_dir() else []
+    return f"temporary plots left: {left[:3]}" if left else None
+
+
+STOPPED = [
+    Scenario(
+        f"stores/report-plots-of-a-big-store-{name}",
+        args=("report", "s.sqlite", "--plots", "plots", "--html", "r.html"),
+        setup=_big_store,
+        codes=(INTERRUPTED, OK),
+        during=after(seconds, signum),
+        check=_no_temporary_plot,
+        writes=("plots", "plots/*", "r.html"),
+        needs=installed("matplotlib"),
+    )
+    for name, signum, seconds in (("sigterm", signal.SIGTERM, 3.0), ("sigint", signal.SIGINT, 5.0))
+]
+
+
 def bad_models() -> dict[str, str]:
     text = (REPO / "domains" / "coffee" / "relevance.yaml").read_text()
     return {
@@ -212,7 +253,7 @@ MODELS = BAD_MODELS + [
     ),
 ]
 
-SCENARIOS = STORES + ROWS + OUTPUTS + MODELS
+SCENARIOS = STORES + ROWS + OUTPUTS + STOPPED + MODELS
 
 
 test_stores_and_models = scenario_test(SCENARIOS)
