@@ -48,6 +48,12 @@ def _figures(rows: Sequence[dict[str, Any]]) -> tuple[dict[str | None, str], str
     return {key: _SVG_METADATA.sub("", svg) for key, svg in report_svgs(rows).items()}, ""
 
 
+def _unplotted(rows: Sequence[dict[str, Any]]) -> str:
+    from relevance_plan.batch.plots import unplotted_note
+
+    return unplotted_note(row["suite"] for row in rows)
+
+
 def _table_html(methods: Sequence[str], label: str, lines: Sequence[tuple[str, Sequence[str]]]) -> list[str]:
     out = [f"<table><caption>{_text(label)}</caption>", '<thead><tr><th scope="col">metric</th>']
     out += [f'<th scope="col">{_text(method)}</th>' for method in methods]
@@ -86,6 +92,8 @@ def format_html(rows: Sequence[dict[str, Any]], title: str = "relevance-plan rep
         out.append("<p>no results</p>")
     if missing:
         out.append(f'<p class="note">No figures: {_text(missing)}</p>')
+    elif svgs and (unplotted := _unplotted(rows)):
+        out.append(f'<p class="note">{_text(unplotted.capitalize())}.</p>')
     if None in svgs:
         out.append("<section><h2>All suites</h2>")
         out += _figure_html(svgs[None], "Solved problems within a time, all suites")

@@ -7,7 +7,6 @@ from __future__ import annotations
 
 import functools
 import importlib
-import json
 import sys
 import time
 from pathlib import Path
@@ -20,6 +19,7 @@ from relevance_plan.cli.common import (
     file_option,
     handle_errors,
     json_option,
+    json_text,
     keep_work_option,
     method_option,
     planning_options,
@@ -32,6 +32,7 @@ from relevance_plan.cli.common import (
     write_plan_files,
 )
 from relevance_plan.cli.exits import ToolGroup
+from relevance_plan.cli.numbers import DISTRACTORS, OBJECTS, SEED, SUITE_SIZE
 from relevance_plan.errors import RelevancePlanError, UnsupportedFeatureError, UsageError, counted
 from relevance_plan.exitcodes import EXIT_CODE_DESCRIPTIONS, ExitCode, exit_code_for_status
 from relevance_plan.pddl.formatter import format_number
@@ -109,15 +110,20 @@ def main():
 @main.command()
 @click.argument("world", type=str)
 @click.option("--difficulty", default="simple", show_default=True, help="Kitchen worlds: simple or hard.")
-@click.option("--count", type=int, default=10, show_default=True, help="Number of problems.")
-@click.option("--seed", type=int, default=0, show_default=True)
+@click.option("--count", type=SUITE_SIZE, default=10, show_default=True, help="Number of problems.")
+@click.option("--seed", type=SEED, default=0, show_default=True)
 @file_option(
     "--out", "-o", "--output", "out_dir", folder=True, required=True, help="Suite directory to write (-o as elsewhere)."
 )
-@click.option("--distractors", type=int, default=None, help="Kitchen worlds: override the paper's distractor count.")
+@click.option(
+    "--distractors",
+    type=DISTRACTORS,
+    default=None,
+    help="Kitchen worlds: override the paper's distractor count.",
+)
 @click.option(
     "--size",
-    type=int,
+    type=OBJECTS,
     default=None,
     help="Classic and other sized worlds: about how many objects per problem"
     " (default: a size where pure planning takes seconds to a minute).",
@@ -186,7 +192,7 @@ def score(domain_path, problem_path, inquiries, why_object, as_json, **values):
     scores = scoring.scores
     if why_object is not None:
         if as_json:
-            click.echo(json.dumps(why_json(result, why_object), indent=2))
+            click.echo(json_text(why_json(result, why_object)))
         else:
             print_why(result, why_object)
         if not scores.sufficient:
@@ -197,7 +203,7 @@ def score(domain_path, problem_path, inquiries, why_object, as_json, **values):
         data = selection_json(result)
         if inquiry is not None:
             data["inquiries"] = inquiry
-        click.echo(json.dumps(data, indent=2))
+        click.echo(json_text(data))
     else:
         print_score_table(result)
         if inquiry is not None:
@@ -221,7 +227,7 @@ def _pass_through(problem_path, output, refused: UnsupportedFeatureError, as_jso
     reason = f"cannot be pruned: {refused}"
     written = write_output(output, read_text(problem_path, "problem file"))
     if as_json:
-        click.echo(json.dumps({"pruned": False, "unpruned_reason": reason, "output": str(output)}, indent=2))
+        click.echo(json_text({"pruned": False, "unpruned_reason": reason, "output": str(output)}))
     else:
         where = written if output == STDOUT else output
         click.echo(f"pruned: no ({reason}); wrote the problem unchanged to {where}", err=output == STDOUT)
@@ -285,13 +291,13 @@ def prune(domain_path, problem_path, output, pass_through, as_json, **values):
     scores = scoring.scores
     if not scores.sufficient:
         if as_json:
-            click.echo(json.dumps(selection_json(result), indent=2))
+            click.echo(json_text(selection_json(result)))
         fail(f"insufficient cues: {scores.insufficiency}", ExitCode.INSUFFICIENT_CUES)
     written = write_output(output, result.text)
     if as_json:
         data = selection_json(result)
         data["output"] = str(output)
-        click.echo(json.dumps(data, indent=2))
+        click.echo(json_text(data))
     else:
         for line in scores_header(scores)[1:]:  # what free text was understood as
             click.echo(line, err=to_stdout)
@@ -339,7 +345,7 @@ def plan(domain_path, problem_path, method, plan_file, keep_work, race, as_json,
         data["plan_files"] = numbered
         understood = result.selection.scores.understood if result.selection is not None else ()
         data["understood"] = [match.as_json() for match in understood]
-        click.echo(json.dumps(data, indent=2))
+        click.echo(json_text(data))
     else:
         # With the plan on stdout, the summary goes to stderr.
         _print_plan_summary(result, plan_file, err=to_stdout)
@@ -350,8 +356,20 @@ def plan(domain_path, problem_path, method, plan_file, keep_work, race, as_json,
         sys.exit(int(code))
 
 
-# The backstop past --timeout: the loop holds the limit itself; this stops whatever step overruns it.
-DEADLINE_SLACK = 0.8
+# The backstop past --timeout, counted from the tool's start: the loop holds the limit itself; this
+# stops whatever step overruns it, leaving time to stop the planners and say so within a second.
+DEADLINE_SLACK = 0.6
+# click's context object when the console script (``launch``) runs the commands: the process is the tool's
+# own, so its age is the time the tool has spent (run inside another program, a command counts from its start).
+LAUNCHED = "launched"
+
+
+def _time_spent() -> float:
+    """Seconds since the tool started: the process's age when it is the tool's own, else none."""
+    from relevance_plan.signals import process_age
+
+    context = click.get_current_context(silent=True)
+    return process_age() if context is not None and context.find_root().obj == LAUNCHED else 0.0
 
 
 def _plan_within_timeout(domain_path, problem_path, options, quiet: bool, keep_work=None) -> PlanResult:
@@ -369,7 +387,7 @@ def _plan_within_timeout(domain_path, problem_path, options, quiet: bool, keep_w
     timeout = options.timeout
     started = time.monotonic()
     try:
-        with deadline_alarm(None if timeout is None else timeout + DEADLINE_SLACK):
+        with deadline_alarm(None if timeout is None else timeout + DEADLINE_SLACK - _time_spent()):
             return plan_task(domain_path, problem_path, options, progress=progress, keep_work=keep_work)
     except Interrupted as error:
         if error.signum != DEADLINE_SIGNAL:

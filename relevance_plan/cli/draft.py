@@ -2,11 +2,10 @@
 
 from __future__ import annotations
 
-import json
 
 import click
 
-from relevance_plan.cli.common import file_option, handle_errors, json_option, quiet_option
+from relevance_plan.cli.common import file_option, handle_errors, json_option, json_text, quiet_option
 from relevance_plan.errors import counted
 
 
@@ -52,7 +51,7 @@ def draft_model(domain_path, problem_paths, output, as_json, quiet):
             "adjustments": list(drafted.adjustments),
             "problems": [_check_json(check) for check in drafted.checks],
         }
-        click.echo(json.dumps(data, indent=2), err=to_stdout)
+        click.echo(json_text(data), err=to_stdout)
     elif not quiet:
         for check in drafted.checks:
             click.echo(f"{'' if check.matched else 'not matched: '}{check.describe()}", err=to_stdout)

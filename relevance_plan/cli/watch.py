@@ -10,7 +10,6 @@ reader goes away.
 
 from __future__ import annotations
 
-import json
 import sys
 from collections.abc import Iterator
 from pathlib import Path
@@ -21,6 +20,7 @@ import click
 from relevance_plan.cli.common import (
     file_option,
     handle_errors,
+    json_text,
     planning_options,
     race_option,
     scoring_options,
@@ -136,7 +136,7 @@ def watch(domain_path, problem_path, events_path, plan_in_loop, snapshot_dir, ra
             if not line.strip():
                 continue
             report = session.handle_line(line)
-            click.echo(json.dumps(report.to_json()))
+            click.echo(json_text(report.to_json(), indent=None))
             sys.stdout.flush()
     except KeyboardInterrupt as error:
         ending = error
