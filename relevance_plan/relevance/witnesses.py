@@ -1,0 +1,315 @@
+"""Witnesses: the objects a goal atom is met through when it names none of them.
+
+``(classrelation vase microwave)`` holds once any vase is in any microwave: the
+goal names two classes, and a plan needs one vase and one microwave, its
+*witnesses*.  Some achievers use their witness up: putting the vase into the
+microwave leaves it there, and taking it out again deletes the goal atom, so a
+second goal atom of the same kind, ``(classrelation vase bench)``, needs a
+second vase.  The delete relaxation does not see this (one vase serves both in
+a relaxed plan), so a selection that keeps one vase passes the relaxed check
+and fails the planner.  This module finds, from the action schemas alone:
+
+* which goal predicates are only ever achieved by actions that use a witness
+  up (:func:`consuming_roles`): the achiever deletes a precondition on the
+  witness (``holds ?a ?i``), and no action can make that precondition true
+  again without deleting the goal atom (picking the vase up deletes the
+  ``classrelation``) or without a fact the achiever made false;
+* for each such goal atom of a problem, the objects that can be its witness
+  (the static facts the achiever requires between the witness and the goal's
+  objects: ``itemclass ?i vase``), best connected first (:func:`witness_needs`);
+* whether a set of usable witnesses gives every goal atom its own
+  (:func:`match_witnesses`, a bipartite matching).
+
+The relaxed check (``exploration``) asks for that matching on top of reaching
+the goal; the repair adds the best next candidate of a goal atom left without
+one; widening tries the next witness before anything else.
+"""
+
+from __future__ import annotations
+
+from collections import defaultdict
+from collections.abc import Callable, Collection, Iterable, Mapping, Sequence
+from dataclasses import dataclass
+
+from relevance_plan.pddl.formulas import Atom, GroundAtom, effect_literals, is_variable, literals
+from relevance_plan.pddl.model import Action, Domain, Problem
+from relevance_plan.relevance.analysis import FactIndex, ObjectGraph, graph_distances
+from relevance_plan.relevance.types import static_predicates
+
+# (predicate, positions): an atom about one object, the other arguments left open
+Pattern = tuple[str, tuple[int, ...]]
+
+
+@dataclass(frozen=True)
+class WitnessRole:
+    """One achiever of a goal predicate and the parameter it uses up."""
+
+    action: str
+    goal_args: tuple[str, ...]  # the achiever's arguments of the goal atom (variables or constants)
+    witness: str  # the parameter used up (``?i``)
+    witness_type: str
+    consumed: tuple[Pattern, ...]  # the witness's preconditions the achiever makes false for good
+    links: tuple[Atom, ...]  # the static preconditions that name the witness
+
+
+@dataclass(frozen=True)
+class WitnessNeed:
+    """A goal atom that needs a witness of its own, and the objects that can be it."""
+
+    goal: GroundAtom
+    candidates: tuple[str, ...]  # best connected first
+    consumed: tuple[Pattern, ...]  # a reached fact of one of these about a candidate makes it usable
+
+
+# --------------------------------------------------------------------------- the lifted analysis
+
+
+def consuming_roles(domain: Domain) -> dict[str, tuple[WitnessRole, ...]]:
+    """Goal predicates every achiever of which uses a witness up -> those achievers' roles.
+
+    A predicate with one achiever that uses nothing up (a truck unloading a
+    package: the truck drives on) is left out: one witness may serve many
+    goal atoms there."""
+    static = static_predicates(domain)
+    roles: dict[str, list[WitnessRole]] = defaultdict(list)
+    free_achiever: set[str] = set()
+    for action in domain.actions:
+        for effect in effect_literals(action.effect):
+            if not effect.is_add or effect.quantified:
+                continue
+            predicate = effect.atom.predicate
+            found = _consumed_role(domain, action, effect.atom, static)
+            if found is None:
+                free_achiever.add(predicate)
+            else:
+                roles[predicate].append(found)
+    return {predicate: tuple(found) for predicate, found in roles.items() if predicate not in free_achiever}
+
+
+def _consumed_role(domain: Domain, action: Action, goal: Atom, static: frozenset[str]) -> WitnessRole | None:
+    """The first parameter of ``action`` outside ``goal`` that achieving ``goal`` uses up, if any."""
+    bound = {arg for arg in goal.args if is_variable(arg)}
+    positive = [atom for atom, polarity in literals(action.precondition) if polarity]
+    deleted = {item.atom for item in effect_literals(action.effect) if not item.is_add}
+    added = [item.atom for item in effect_literals(action.effect) if item.is_add]
+    for witness, witness_type in action.parameters:
+        if witness in bound:
+            continue
+        # a precondition on the witness alone (the other objects are not the goal's) that the achiever deletes
+        spent = [
+            atom
+            for atom in positive
+            if witness in atom.args
+            and atom in deleted
+            and atom not in added
+            and not any(arg in bound for arg in atom.args if arg != witness)
+        ]
+        if not spent:
+            continue
+        after = {_pattern(atom, witness) for atom in added if witness in atom.args}
+        after |= {_pattern(atom, witness) for atom in positive if witness in atom.args and atom not in deleted}
+        reachable = _reachable_after(domain, after, witness_type, goal.predicate, static)
+        consumed = tuple(sorted({_pattern(atom, witness) for atom in spent}))
+        if all(pattern not in reachable for pattern in consumed):
+            links = tuple(atom for atom in positive if witness in atom.args and atom.predicate in static)
+            return WitnessRole(action.name, goal.args, witness, witness_type, consumed, links)
+    return None
+
+
+def _pattern(atom: Atom, variable: str) -> Pattern:
+    return atom.predicate, tuple(i for i, arg in enumerate(atom.args) if arg == variable)
+
+
+def _reachable_after(
+    domain: Domain, true_after: set[Pattern], witness_type: str, goal_predicate: str, static: frozenset[str]
+) -> set[Pattern]:
+    """What can become true of the witness after the achiever, by actions that keep the goal atom.
+
+    Of the witness only what the achiever says is known to hold (its effects,
+    its preconditions it keeps, the static facts); every other fact about it
+    is taken as false.  An action that deletes an atom of the goal's predicate
+    whose every argument its conditions tie to the witness (taking the vase
+    out of the microwave) is taken as deleting the goal atom, and is not used."""
+    true = set(true_after)
+    made_false: set[Pattern] = set()
+    changed = True
+    while changed:
+        changed = False
+        for action in domain.actions:
+            for variable, variable_type in action.parameters:
+                if not _compatible(domain, variable_type, witness_type):
+                    continue
+                if not _applicable(action, variable, true, made_false, static):
+                    continue
+                if _deletes_goal(action, variable, goal_predicate):
+                    continue
+                for item in effect_literals(action.effect):
+                    if variable not in item.atom.args:
+                        continue
+                    pattern = _pattern(item.atom, variable)
+                    target = true if item.is_add else made_false
+                    if pattern not in target:
+                        target.add(pattern)
+                        changed = True
+    return true
+
+
+def _compatible(domain: Domain, one: str, other: str) -> bool:
+    return domain.is_subtype(one, other) or domain.is_subtype(other, one)
+
+
+def _applicable(
+    action: Action, variable: str, true: set[Pattern], made_false: set[Pattern], static: frozenset[str]
+) -> bool:
+    """Whether ``action`` with ``variable`` as the witness can apply, judged by its conditions on the witness."""
+    for atom, polarity in literals(action.precondition):
+        if variable not in atom.args or atom.predicate in static:
+            continue
+        pattern = _pattern(atom, variable)
+        if polarity and pattern not in true:
+            return False
+        if not polarity and pattern in true and pattern not in made_false:
+            return False
+    return True
+
+
+def _deletes_goal(action: Action, variable: str, goal_predicate: str) -> bool:
+    tied = _tied_to(action, variable)
+    return any(
+        not item.is_add
+        and item.atom.predicate == goal_predicate
+        and all(arg in tied for arg in item.atom.args if is_variable(arg))
+        for item in effect_literals(action.effect)
+    )
+
+
+def _tied_to(action: Action, variable: str) -> set[str]:
+    """The parameters the positive conditions of ``action`` tie to ``variable``, through each other."""
+    conditions = [{arg for arg in atom.args if is_variable(arg)} for atom, polarity in literals(action.precondition)]
+    tied = {variable}
+    grown = True
+    while grown:
+        grown = False
+        for variables in conditions:
+            if variables & tied and not variables <= tied:
+                tied |= variables
+                grown = True
+    return tied
+
+
+# --------------------------------------------------------------------------- a problem's needs
+
+
+def witness_needs(
+    domain: Domain,
+    problem: Problem,
+    index: FactIndex,
+    objects: Mapping[str, str],
+    hub_degree: int,
+    goal_atoms: Iterable[GroundAtom],
+) -> tuple[WitnessNeed, ...]:
+    """Each goal atom (not true initially) whose predicate's achievers use a witness up, with its
+    candidates: the objects (of ``objects``: name -> type) the achiever's static conditions admit,
+    nearest first to the goal's other objects and to where the agent is."""
+    roles = consuming_roles(domain)
+    initial = problem.init
+    pending = [atom for atom in goal_atoms if atom[0] in roles and atom not in initial]
+    if not pending:
+        return ()
+    graph = ObjectGraph(index)
+    static = static_predicates(domain)
+    agents = _agents(index, static)
+    from_agents = graph_distances(index, graph, agents, hub_degree) if agents else {}
+    needs = []
+    for atom in pending:
+        pool: dict[str, None] = {}
+        consumed: set[Pattern] = set()
+        for role in roles[atom[0]]:
+            binding = {arg: value for arg, value in zip(role.goal_args, atom[1:]) if is_variable(arg)}
+            pool.update(dict.fromkeys(_candidates(domain, index, objects, role, binding)))
+            consumed.update(role.consumed)
+        anchors = _anchors(index, atom, pool.keys(), static)
+        near = graph_distances(index, graph, anchors, hub_degree) if anchors else {}
+        far = len(objects) + 1
+        ranked = sorted(pool, key=lambda name: (near.get(name, far) + from_agents.get(name, far), name))
+        needs.append(WitnessNeed(atom, tuple(ranked), tuple(sorted(consumed))))
+    return tuple(needs)
+
+
+def _candidates(
+    domain: Domain, index: FactIndex, objects: Mapping[str, str], role: WitnessRole, binding: Mapping[str, str]
+) -> list[str]:
+    """The objects of the witness's type that satisfy every static condition naming it (with the goal's
+    objects put in; other parameters left open)."""
+    names = [name for name, kind in objects.items() if domain.is_subtype(kind, role.witness_type)]
+    for link in role.links:
+        admitted = _admitted_by(index, link, role.witness, binding)
+        names = [name for name in names if name in admitted]
+    return names
+
+
+def _admitted_by(index: FactIndex, link: Atom, witness: str, binding: Mapping[str, str]) -> set[str]:
+    values = set()
+    for fact in index.by_predicate.get(link.predicate, ()):
+        value = None
+        for arg, actual in zip(link.args, fact[1:]):
+            if arg == witness:
+                if value is not None and value != actual:
+                    break
+                value = actual
+            elif binding.get(arg, arg if not is_variable(arg) else actual) != actual:
+                break  # a constant or a goal object that differs
+        else:
+            if value is not None:
+                values.add(value)
+    return values
+
+
+def _anchors(index: FactIndex, atom: GroundAtom, pool: Collection[str], static: frozenset[str]) -> set[str]:
+    """What a witness of ``atom`` must get near: the goal's objects' members (the microwaves of the
+    class ``microwave``), found through their static initial facts, other than the candidates."""
+    anchors: set[str] = set()
+    for name in atom[1:]:
+        for fact in index.by_object.get(name, ()):
+            if fact[0] in static:
+                anchors.update(arg for arg in fact[1:] if arg != name and arg not in pool)
+    return anchors or set(atom[1:])
+
+
+def _agents(index: FactIndex, static: frozenset[str]) -> set[str]:
+    """Where the one agent is: the objects of a changing predicate's only initial fact."""
+    return {
+        arg
+        for predicate in index.singletons
+        if predicate not in static
+        for atom in index.by_predicate[predicate]
+        for arg in atom[1:]
+    }
+
+
+# --------------------------------------------------------------------------- matching
+
+
+def match_witnesses(
+    needs: Sequence[WitnessNeed], usable: Callable[[WitnessNeed, str], bool]
+) -> tuple[dict[GroundAtom, str], tuple[WitnessNeed, ...]]:
+    """Distinct usable witnesses for as many goal atoms as can have one, better-ranked candidates
+    first; returns (goal atom -> witness, the needs left without one)."""
+    owner: dict[str, int] = {}  # witness -> index of the need it serves
+    options = [[name for name in need.candidates if usable(need, name)] for need in needs]
+
+    def assign(i: int, seen: set[str]) -> bool:
+        for name in options[i]:
+            if name in seen:
+                continue
+            seen.add(name)
+            if name not in owner or assign(owner[name], seen):
+                owner[name] = i
+                return True
+        return False
+
+    unmatched = tuple(need for i, need in enumerate(needs) if not assign(i, set()))
+    return {needs[i].goal: name for name, i in owner.items()}, unmatched
+
+
+__all__ = ["WitnessNeed", "WitnessRole", "consuming_roles", "match_witnesses", "witness_needs"]
