@@ -76,7 +76,7 @@ from relevance_plan.planning.validate import (
 )
 from relevance_plan.progress import ProgressCallback, ProgressEvent
 from relevance_plan.relevance.knowledge import KnowledgeModel
-from relevance_plan.relevance.prune import Selection, Thresholds, Widening, widen
+from relevance_plan.relevance.prune import Selection, Thresholds, Widening, next_witnesses, widen
 from relevance_plan.relevance.setup import Scoring, ScoringOptions, score_problem
 from relevance_plan.relevance.task import PlanningTask
 from relevance_plan.supervision.process import CancelScope, cancel_scope
@@ -300,6 +300,7 @@ def run_attempts(
             break  # the --timeout ran out while widening: as when it runs out between attempts
         finally:
             widening_time += time.perf_counter() - widen_started
+        _say_next_witnesses(loop.say, pruned, widened)
         state = replace(state, selection=widened, added_back=added_back)
     if race is not None and race.won and not (attempts and attempts[-1].status is AttemptStatus.SOLVED):
         attempts.append(replace(race.wait(), number=len(attempts) + 1))
@@ -660,10 +661,26 @@ def _score(run: _Run) -> tuple[Scoring | None, str]:
 def _say_selection(say: Callable[[str], None], selection: Selection, total: int) -> None:
     say(
         f"kept {len(selection.kept)} of {total} objects ({len(selection.restored)} restored by closure"
-        + (f", {len(selection.set_aside)} blocked alternatives set aside)" if selection.set_aside else ")")
+        + (f", {len(selection.set_aside)} alternatives set aside)" if selection.set_aside else ")")
     )
     if not selection.removed:
         say(f"pruned: no ({selection.unpruned_reason})")
+    if selection.witnesses:
+        say("witnesses: " + _witness_list(selection))
+
+
+def _witness_list(selection: Selection) -> str:
+    """``item3_vase for (classrelation vase microwave), ...`` (``Selection.witnesses``)."""
+    show = selection.task.problem.display
+    return ", ".join(f"{show(name)} for ({' '.join(goal)})" for goal, name in selection.witnesses)
+
+
+def _say_next_witnesses(say: Callable[[str], None], failed: Selection, widened: Selection) -> None:
+    """Which witnesses a failed attempt had, and the next candidates the widened selection adds."""
+    added = [name for name in next_witnesses(failed.task, failed.kept) if name in widened.kept]
+    if failed.witnesses and added:
+        show = failed.task.problem.display
+        say(f"no plan with the witnesses {_witness_list(failed)}: widening adds {', '.join(map(show, added))}")
 
 
 def _plan_unread(
