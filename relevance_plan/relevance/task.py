@@ -24,7 +24,7 @@ from relevance_plan.relevance.analysis import (
 )
 from relevance_plan.relevance.soundness import KeptObjects, objects_to_keep, soundness_requirements
 from relevance_plan.relevance.types import InferredTypes, infer_types
-from relevance_plan.relevance.witnesses import WitnessNeed, witness_needs
+from relevance_plan.relevance.witnesses import WitnessNeed, shortfall_reason, witness_needs
 
 
 @dataclass(frozen=True, eq=False)
@@ -97,6 +97,11 @@ class PlanningTask:
         needs = witness_needs(typing.domain, problem, self.init_index, problem.objects, self.hub_degree, ground)
         self.check_time("finding the goal's witnesses")
         return needs
+
+    @cached_property
+    def witness_shortfall(self) -> str:
+        """Why even the whole problem has too few witnesses for its goal ("" when it has enough)."""
+        return shortfall_reason(self.witness_needs)
 
     @cached_property
     def kept_for_soundness(self) -> KeptObjects:

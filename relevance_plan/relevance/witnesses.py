@@ -312,4 +312,17 @@ def match_witnesses(
     return {needs[i].goal: name for name, i in owner.items()}, unmatched
 
 
-__all__ = ["WitnessNeed", "WitnessRole", "consuming_roles", "match_witnesses", "witness_needs"]
+def shortfall_reason(needs: Sequence[WitnessNeed]) -> str:
+    """Why the whole problem cannot give every goal atom a witness of its own ("" when it can):
+    the goal atoms that share candidates with one left without, and how many candidates they share."""
+    _, unmatched = match_witnesses(needs, lambda need, name: True)
+    if not unmatched:
+        return ""
+    pool = set(unmatched[0].candidates)
+    group = [need for need in needs if pool & set(need.candidates)]
+    shared = set().union(*(need.candidates for need in group))
+    atoms = ", ".join("(" + " ".join(need.goal) + ")" for need in group)
+    return f"{len(group)} goal atoms need an object of their own ({atoms}) and only {len(shared)} can be one"
+
+
+__all__ = ["WitnessNeed", "WitnessRole", "consuming_roles", "match_witnesses", "shortfall_reason", "witness_needs"]
