@@ -177,3 +177,51 @@ def test_a_goal_atom_true_from_the_start_needs_no_witness(house_task, tmp_path):
     text = house(2, TWO_VASE_GOALS).replace("(at robot r0)", "(at robot r0) (classrelation vase table)")
     task = PlanningTask(*load_task(*write_task(tmp_path, "true-at-start", HOUSE, text)))
     assert [need.goal for need in task.witness_needs] == [("classrelation", "vase", "shelf")]
+
+
+# --------------------------------------------------------------------------- the proof of too few witnesses
+
+
+def test_too_few_vases_is_proved_and_reported_unsolvable_without_a_planner(house_task, tmp_path):
+    task, (domain, problem) = house_task(1)
+    assert "only 1 can be one" in task.proved_unsolvable
+    result = invoke("plan", domain, problem, "--json", "--plan-file", tmp_path / "plan")
+    assert result.exit_code == 10
+    data = json.loads(result.output)
+    assert data["status"] == "unsolvable" and data["attempt_log"] == []
+    assert "proved before planning" in data["message"]
+
+
+# Variants in which one vase can serve both goal atoms: no proof may claim otherwise.
+PUT_BACK_KEEPS_RELATION = HOUSE.replace("                 (not (classrelation ?k ?l))))", "))")
+RELEASE = (
+    HOUSE.rstrip()[:-1]
+    + """
+  (:action release :parameters (?a - agent ?i - item ?c - receptacle)
+    :precondition (on ?i ?c) :effect (and (holds ?a ?i) (busy ?a))))
+"""
+)
+
+
+@pytest.mark.planner
+@pytest.mark.parametrize("domain_text", [PUT_BACK_KEEPS_RELATION, RELEASE], ids=["keeps-relation", "release"])
+def test_a_vase_that_can_serve_twice_is_no_proof_and_the_plan_uses_it(tmp_path, domain_text):
+    domain, problem = write_task(tmp_path, "twice", domain_text, house(1, TWO_VASE_GOALS))
+    task = PlanningTask(*load_task(domain, problem))
+    assert task.proved_unsolvable == ""
+    result = invoke("plan", domain, problem, "--json", "--plan-file", tmp_path / "plan")
+    data = json.loads(result.output)
+    assert data["status"] == "solved" and data["valid"], data["message"]
+
+
+# Taking an item off deletes the relation of its class with a class the action leaves open, not that
+# of the receptacle it was on: nothing ties the deleted atom to the goal atom, so nothing is proved.
+UNTIED = HOUSE.replace(
+    "?c - receptacle ?l - rclass ?r - room)\n    :precondition (and (at ?a ?r) (itemin ?i ?r) (on",
+    "?c - receptacle ?l - rclass ?r - room ?m - rclass)\n    :precondition (and (at ?a ?r) (itemin ?i ?r) (on",
+).replace("(not (classrelation ?k ?l))))", "(not (classrelation ?k ?m))))")
+
+
+def test_a_delete_the_analysis_cannot_tie_to_the_goal_atom_proves_nothing(tmp_path):
+    task = PlanningTask(*load_task(*write_task(tmp_path, "untied", UNTIED, house(1, TWO_VASE_GOALS))))
+    assert task.proved_unsolvable == ""

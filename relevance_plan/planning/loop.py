@@ -596,6 +596,9 @@ def _first_selection(run: _Run) -> _FirstSelection | PlanResult:
                 planner=run.planner.name,
                 scorer=scoring.scorer,
             )
+        proved = _proved_unsolvable(run)
+        if proved is not None:
+            return proved
         try:
             selection = scoring.first_selection(run.options.narrows_first)
         except OutOfTimeError:
@@ -606,6 +609,25 @@ def _first_selection(run: _Run) -> _FirstSelection | PlanResult:
         _say_selection(run.say, selection, run.total)
     # scoring and pruning only: reading came before, and a race's planner only waits beside it
     return _FirstSelection(scoring, selection, unpruned_reason, time.perf_counter() - scoring_started)
+
+
+def _proved_unsolvable(run: _Run) -> PlanResult | None:
+    """The unsolvable result, without a planner, of a problem whose goal needs more witnesses than
+    it has (``relevance.witness_proof``: a proof, not a guess); None for others, and for the
+    baseline methods (they plan as the paper's did)."""
+    if run.options.method != "relevance":
+        return None
+    try:
+        proof = run.task.proved_unsolvable
+    except OutOfTimeError:
+        return _ran_out("proving the goal's witnesses short", run.started, run.options, run.total)
+    if not proof:
+        return None
+    run.say(f"no plan can exist: {proof}")
+    elapsed = time.perf_counter() - run.started
+    message = f"{proof}, so the problem has no plan (proved before planning: no planner ran)"
+    result = _before_planning(PlanStatus.UNSOLVABLE, message, elapsed, run.options, run.total, planner=run.planner.name)
+    return replace(result, objects_kept=run.total)
 
 
 def _budgets(run: _Run, first: _FirstSelection) -> Budgets | None:

@@ -24,6 +24,7 @@ from relevance_plan.relevance.analysis import (
 )
 from relevance_plan.relevance.soundness import KeptObjects, objects_to_keep, soundness_requirements
 from relevance_plan.relevance.types import InferredTypes, infer_types
+from relevance_plan.relevance.witness_proof import unsolvable_by_witnesses
 from relevance_plan.relevance.witnesses import WitnessNeed, shortfall_reason, witness_needs
 
 
@@ -102,6 +103,17 @@ class PlanningTask:
     def witness_shortfall(self) -> str:
         """Why even the whole problem has too few witnesses for its goal ("" when it has enough)."""
         return shortfall_reason(self.witness_needs)
+
+    @cached_property
+    def proved_unsolvable(self) -> str:
+        """Why the problem has no plan, when the witnesses' shortfall is proved (``witness_proof``); ""
+        when it is not (a verdict the tool gives without a planner, so it is given only when proved)."""
+        typing = self.typing
+        proof = unsolvable_by_witnesses(
+            typing.domain, typing.problem, self.init_index, self.witness_needs, self.witness_shortfall
+        )
+        self.check_time("proving the goal's witnesses short")
+        return proof
 
     @cached_property
     def kept_for_soundness(self) -> KeptObjects:

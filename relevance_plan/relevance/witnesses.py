@@ -75,10 +75,10 @@ def consuming_roles(domain: Domain) -> dict[str, tuple[WitnessRole, ...]]:
     free_achiever: set[str] = set()
     for action in domain.actions:
         for effect in effect_literals(action.effect):
-            if not effect.is_add or effect.quantified:
+            if not effect.is_add:
                 continue
             predicate = effect.atom.predicate
-            found = _consumed_role(domain, action, effect.atom, static)
+            found = None if effect.quantified else _consumed_role(domain, action, effect.atom, static)
             if found is None:
                 free_achiever.add(predicate)
             else:
