@@ -52,6 +52,12 @@ class Step:
     deletes: tuple[tuple[Atom, Pattern], ...]  # unconditional deletes about it
     may_change: frozenset[Pattern]  # conditional or quantified effects that may be about it
     distinct: frozenset[frozenset[str]]  # pairs of terms the action requires to differ
+    may_set: frozenset[Pattern] = frozenset()  # quantified effects that may leave any count
+
+    @property
+    def acts(self) -> bool:
+        """Whether the step may change the object at all (a step through quantified variables only may not)."""
+        return self.variable is not None or bool(self.may_change or self.may_set)
 
     def need(self) -> dict[Pattern, int]:
         """How many atoms of each pattern the object must have for the step to apply."""
@@ -91,7 +97,7 @@ class ObjectStates:
             for action in domain.actions
             for variable in [*parameters_of_type(domain, action, type_name), None]
         ]
-        self.steps = [step for step in self.steps if step.variable is not None or step.may_change]
+        self.steps = [step for step in self.steps if step.acts]
         most = max((n for step in self.steps for n in step.need().values()), default=1)
         most = max([most, *(len(step.adds) for step in self.steps)])
         # a count at the cap means "the cap or more"; an atom about the object alone is there or not
@@ -146,6 +152,8 @@ class ObjectStates:
             results = {(min(cap, total), m) for c, m in results for total in range(max(c, least), c + len(adds) + 1)}
         if pattern in step.may_change:
             results |= {(min(cap, c + 1), m) for c, m in results} | {(c - 1, False) for c, _ in results if c > 0}
+        if pattern in step.may_set:
+            results |= {(c, False) for c in range(cap + 1)}
         return results
 
     def explore(
@@ -180,8 +188,9 @@ def step_of(domain: Domain, action: Action, variable: str | None, type_name: str
     requires: list[tuple[Atom, Pattern]] = []
     forbids: set[Pattern] = set()
     distinct: set[frozenset[str]] = set()
+    derived = domain.derived_predicates  # no pattern of the object's: a condition on one is taken as met
     for part in conjuncts(action.precondition):
-        if isinstance(part, Atom) and variable is not None:
+        if isinstance(part, Atom) and variable is not None and part.predicate not in derived:
             requires.extend((part, own) for own in occurrences(part, variable))
         elif isinstance(part, Not) and isinstance(part.body, Atom) and variable and part.body.args == (variable,):
             forbids.add((part.body.predicate, 0))
@@ -189,6 +198,7 @@ def step_of(domain: Domain, action: Action, variable: str | None, type_name: str
     adds: list[tuple[Atom, Pattern]] = []
     deletes: list[tuple[Atom, Pattern]] = []
     may_change: set[Pattern] = set()
+    many: set[Pattern] = set()
     for item in effect_literals(action.effect):
         ranged = [name for name, kind in item.quantified if compatible(domain, kind, type_name)]
         names = ([variable] if variable is not None else []) + ranged
@@ -198,7 +208,7 @@ def step_of(domain: Domain, action: Action, variable: str | None, type_name: str
         if item.condition == TRUE and not item.quantified and item.when is None:
             (adds if item.is_add else deletes).extend((item.atom, own) for own in found)
         else:
-            may_change.update(found)
+            (many if item.quantified else may_change).update(found)  # a quantified one may set any number
     return Step(
         action,
         variable,
@@ -206,8 +216,9 @@ def step_of(domain: Domain, action: Action, variable: str | None, type_name: str
         frozenset(forbids),
         tuple(adds),
         tuple(deletes),
-        frozenset(may_change),
+        frozenset(may_change - many),
         frozenset(distinct),
+        frozenset(many),
     )
 
 

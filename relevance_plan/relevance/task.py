@@ -109,6 +109,8 @@ class PlanningTask:
         """Why the problem has no plan, when the witnesses' shortfall is proved (``witness_proof``); ""
         when it is not (a verdict the tool gives without a planner, so it is given only when proved)."""
         typing = self.typing
+        if typing.inferred:
+            return ""  # inferred classes guide choices; a proof stands on the types the domain declares
         proof = unsolvable_by_witnesses(
             typing.domain, typing.problem, self.init_index, self.witness_needs, self.witness_shortfall
         )
