@@ -63,8 +63,9 @@ def unsolvable_by_witnesses(
     if not reason:
         return ""
     _, unmatched = match_witnesses(needs, lambda need, name: True)
-    roles = consuming_roles(domain)
-    for predicate in sorted({need.goal[0] for need in unmatched}):
+    short = sorted({need.goal[0] for need in unmatched})
+    roles = consuming_roles(domain, short)
+    for predicate in short:
         if not _predicate_proved(domain, problem, index, predicate, roles.get(predicate, ())):
             return ""
     return reason

@@ -27,9 +27,9 @@ one; widening tries the next witness before anything else.
 
 from __future__ import annotations
 
-from collections import defaultdict
+import weakref
 from collections.abc import Callable, Collection, Iterable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from relevance_plan.pddl.formulas import Atom, GroundAtom, effect_literals, is_variable, literals
 from relevance_plan.pddl.model import Action, Domain, Problem
@@ -64,30 +64,102 @@ class WitnessNeed:
 # --------------------------------------------------------------------------- the lifted analysis
 
 
-def consuming_roles(domain: Domain) -> dict[str, tuple[WitnessRole, ...]]:
-    """Goal predicates every achiever of which uses a witness up -> those achievers' roles.
+def consuming_roles(domain: Domain, predicates: Iterable[str]) -> dict[str, tuple[WitnessRole, ...]]:
+    """Of ``predicates``, those every achiever of which uses a witness up -> those achievers' roles.
 
     A predicate with one achiever that uses nothing up (a truck unloading a
     package: the truck drives on) is left out: one witness may serve many
-    goal atoms there."""
-    static = static_predicates(domain)
-    roles: dict[str, list[WitnessRole]] = defaultdict(list)
-    free_achiever: set[str] = set()
-    for action in domain.actions:
+    goal atoms there.  Worked out once per domain and predicate."""
+    analysis = _analysis_of(domain)
+    found = {}
+    for predicate in predicates:
+        if predicate not in analysis.roles:
+            analysis.roles[predicate] = _roles_of(analysis, predicate)
+        roles = analysis.roles[predicate]
+        if roles:
+            found[predicate] = roles
+    return found
+
+
+@dataclass(frozen=True)
+class _OnParameter:
+    """One action's top-level conditions and effects on one of its parameters, as patterns."""
+
+    action: Action
+    variable: str
+    needs: frozenset[Pattern]  # positive conditions of changing predicates
+    forbids: frozenset[Pattern]
+    adds: frozenset[Pattern]
+    deletes: frozenset[Pattern]
+    deleted_whole: frozenset[str]  # predicates it deletes an atom of whose arguments its conditions all tie to it
+
+
+@dataclass
+class _DomainAnalysis:
+    domain: Domain
+    static: frozenset[str]
+    roles: dict[str, tuple[WitnessRole, ...]] = field(default_factory=dict)  # predicate -> roles (() for none)
+    summaries: list[_OnParameter] | None = None
+
+    @property
+    def on_parameters(self) -> list[_OnParameter]:
+        """Every action's conditions and effects on each of its parameters (read when first needed)."""
+        if self.summaries is None:
+            self.summaries = [
+                _on_parameter(action, variable, self.static)
+                for action in self.domain.actions
+                for variable, _ in action.parameters
+            ]
+        return self.summaries
+
+
+_ANALYSES: weakref.WeakKeyDictionary[Domain, _DomainAnalysis] = weakref.WeakKeyDictionary()
+
+
+def _analysis_of(domain: Domain) -> _DomainAnalysis:
+    analysis = _ANALYSES.get(domain)
+    if analysis is None:
+        analysis = _ANALYSES[domain] = _DomainAnalysis(domain, static_predicates(domain))
+    return analysis
+
+
+def _on_parameter(action: Action, variable: str, static: frozenset[str]) -> _OnParameter:
+    needs: set[Pattern] = set()
+    forbids: set[Pattern] = set()
+    for atom, polarity in literals(action.precondition):
+        if variable in atom.args and atom.predicate not in static:
+            (needs if polarity else forbids).add(_pattern(atom, variable))
+    adds: set[Pattern] = set()
+    deletes: set[Pattern] = set()
+    whole: set[str] = set()
+    tied = _tied_to(action, variable)
+    for item in effect_literals(action.effect):
+        if variable in item.atom.args:
+            (adds if item.is_add else deletes).add(_pattern(item.atom, variable))
+        if not item.is_add and all(arg in tied for arg in item.atom.args if is_variable(arg)):
+            whole.add(item.atom.predicate)
+    return _OnParameter(
+        action, variable, frozenset(needs), frozenset(forbids), frozenset(adds), frozenset(deletes), frozenset(whole)
+    )
+
+
+def _roles_of(analysis: _DomainAnalysis, predicate: str) -> tuple[WitnessRole, ...]:
+    """The roles of every achiever of ``predicate``; () when one of them uses nothing up."""
+    roles = []
+    for action in analysis.domain.actions:
         for effect in effect_literals(action.effect):
-            if not effect.is_add:
+            if not effect.is_add or effect.atom.predicate != predicate:
                 continue
-            predicate = effect.atom.predicate
-            found = None if effect.quantified else _consumed_role(domain, action, effect.atom, static)
+            found = None if effect.quantified else _consumed_role(analysis, action, effect.atom)
             if found is None:
-                free_achiever.add(predicate)
-            else:
-                roles[predicate].append(found)
-    return {predicate: tuple(found) for predicate, found in roles.items() if predicate not in free_achiever}
+                return ()
+            roles.append(found)
+    return tuple(roles)
 
 
-def _consumed_role(domain: Domain, action: Action, goal: Atom, static: frozenset[str]) -> WitnessRole | None:
+def _consumed_role(analysis: _DomainAnalysis, action: Action, goal: Atom) -> WitnessRole | None:
     """The first parameter of ``action`` outside ``goal`` that achieving ``goal`` uses up, if any."""
+    static = analysis.static
     bound = {arg for arg in goal.args if is_variable(arg)}
     positive = [atom for atom, polarity in literals(action.precondition) if polarity]
     deleted = {item.atom for item in effect_literals(action.effect) if not item.is_add}
@@ -108,7 +180,7 @@ def _consumed_role(domain: Domain, action: Action, goal: Atom, static: frozenset
             continue
         after = {_pattern(atom, witness) for atom in added if witness in atom.args}
         after |= {_pattern(atom, witness) for atom in positive if witness in atom.args and atom not in deleted}
-        reachable = _reachable_after(domain, after, witness_type, goal.predicate, static)
+        reachable = _reachable_after(analysis, after, witness_type, goal.predicate)
         consumed = tuple(sorted({_pattern(atom, witness) for atom in spent}))
         if all(pattern not in reachable for pattern in consumed):
             links = tuple(atom for atom in positive if witness in atom.args and atom.predicate in static)
@@ -121,7 +193,7 @@ def _pattern(atom: Atom, variable: str) -> Pattern:
 
 
 def _reachable_after(
-    domain: Domain, true_after: set[Pattern], witness_type: str, goal_predicate: str, static: frozenset[str]
+    analysis: _DomainAnalysis, true_after: set[Pattern], witness_type: str, goal_predicate: str
 ) -> set[Pattern]:
     """What can become true of the witness after the achiever, by actions that keep the goal atom.
 
@@ -130,57 +202,31 @@ def _reachable_after(
     is taken as false.  An action that deletes an atom of the goal's predicate
     whose every argument its conditions tie to the witness (taking the vase
     out of the microwave) is taken as deleting the goal atom, and is not used."""
+    domain = analysis.domain
+    types = {summary.action.name: dict(summary.action.parameters) for summary in analysis.on_parameters}
+    usable = [
+        summary
+        for summary in analysis.on_parameters
+        if _compatible(domain, types[summary.action.name][summary.variable], witness_type)
+        and goal_predicate not in summary.deleted_whole
+    ]
     true = set(true_after)
     made_false: set[Pattern] = set()
     changed = True
     while changed:
         changed = False
-        for action in domain.actions:
-            for variable, variable_type in action.parameters:
-                if not _compatible(domain, variable_type, witness_type):
-                    continue
-                if not _applicable(action, variable, true, made_false, static):
-                    continue
-                if _deletes_goal(action, variable, goal_predicate):
-                    continue
-                for item in effect_literals(action.effect):
-                    if variable not in item.atom.args:
-                        continue
-                    pattern = _pattern(item.atom, variable)
-                    target = true if item.is_add else made_false
-                    if pattern not in target:
-                        target.add(pattern)
-                        changed = True
+        for summary in usable:
+            if not summary.needs <= true or any(p in true and p not in made_false for p in summary.forbids):
+                continue
+            if not (summary.adds <= true and summary.deletes <= made_false):
+                true |= summary.adds
+                made_false |= summary.deletes
+                changed = True
     return true
 
 
 def _compatible(domain: Domain, one: str, other: str) -> bool:
     return domain.is_subtype(one, other) or domain.is_subtype(other, one)
-
-
-def _applicable(
-    action: Action, variable: str, true: set[Pattern], made_false: set[Pattern], static: frozenset[str]
-) -> bool:
-    """Whether ``action`` with ``variable`` as the witness can apply, judged by its conditions on the witness."""
-    for atom, polarity in literals(action.precondition):
-        if variable not in atom.args or atom.predicate in static:
-            continue
-        pattern = _pattern(atom, variable)
-        if polarity and pattern not in true:
-            return False
-        if not polarity and pattern in true and pattern not in made_false:
-            return False
-    return True
-
-
-def _deletes_goal(action: Action, variable: str, goal_predicate: str) -> bool:
-    tied = _tied_to(action, variable)
-    return any(
-        not item.is_add
-        and item.atom.predicate == goal_predicate
-        and all(arg in tied for arg in item.atom.args if is_variable(arg))
-        for item in effect_literals(action.effect)
-    )
 
 
 def _tied_to(action: Action, variable: str) -> set[str]:
@@ -211,9 +257,10 @@ def witness_needs(
     """Each goal atom (not true initially) whose predicate's achievers use a witness up, with its
     candidates: the objects (of ``objects``: name -> type) the achiever's static conditions admit,
     nearest first to the goal's other objects and to where the agent is."""
-    roles = consuming_roles(domain)
     initial = problem.init
-    pending = [atom for atom in goal_atoms if atom[0] in roles and atom not in initial]
+    wanted = [atom for atom in goal_atoms if atom not in initial]
+    roles = consuming_roles(domain, {atom[0] for atom in wanted})
+    pending = [atom for atom in wanted if atom[0] in roles]
     if not pending:
         return ()
     graph = ObjectGraph(index)
