@@ -225,3 +225,26 @@ UNTIED = HOUSE.replace(
 def test_a_delete_the_analysis_cannot_tie_to_the_goal_atom_proves_nothing(tmp_path):
     task = PlanningTask(*load_task(*write_task(tmp_path, "untied", UNTIED, house(1, TWO_VASE_GOALS))))
     assert task.proved_unsolvable == ""
+
+
+# A long arm moves an item from one receptacle to another anywhere in the house.
+TRANSFER = """
+  (:action transfer :parameters (?a - agent ?i - item ?k - iclass ?c1 - receptacle ?l1 - rclass ?r1 - room
+                                 ?c2 - receptacle ?l2 - rclass ?r2 - room)
+    :precondition (and (at ?a ?r2) (recin ?c1 ?r1) (recin ?c2 ?r2) (itemin ?i ?r1) (on ?i ?c1) (itemclass ?i ?k)
+                       (recclass ?c1 ?l1) (recclass ?c2 ?l2))
+    :effect (and (not (on ?i ?c1)) (not (itemin ?i ?r1)) (on ?i ?c2) (itemin ?i ?r2) (classrelation ?k ?l2) FORGET)))
+"""
+
+
+@pytest.mark.planner
+@pytest.mark.parametrize(
+    ("forget", "status"), [("(not (classrelation ?k ?l1))", "unsolvable"), ("", "solved")], ids=["forgets", "keeps"]
+)
+def test_a_move_that_keeps_the_shelf_s_relation_lets_one_vase_serve_both(tmp_path, forget, status):
+    domain_text = HOUSE.rstrip()[:-1] + TRANSFER.replace("FORGET", forget)
+    domain, problem = write_task(tmp_path, "transfer", domain_text, house(1, TWO_VASE_GOALS))
+    if not forget:
+        assert PlanningTask(*load_task(domain, problem)).proved_unsolvable == ""
+    result = invoke("plan", domain, problem, "--json", "--plan-file", tmp_path / "plan")
+    assert json.loads(result.output)["status"] == status
