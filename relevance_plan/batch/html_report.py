@@ -15,7 +15,7 @@ from typing import Any
 
 from relevance_plan import __version__
 from relevance_plan.batch.report import build_report, report_notes, report_table, suite_labels
-from relevance_plan.errors import UsageError
+from relevance_plan.errors import UsageError, counted
 
 _STYLE = """
 body { font-family: sans-serif; margin: 2em; color: #222; max-width: 70em; }
@@ -79,7 +79,7 @@ def format_html(rows: Sequence[dict[str, Any]], title: str = "relevance-plan rep
         f"<style>{_STYLE}</style>",
         "</head><body>",
         f"<h1>{_text(title)}</h1>",
-        f'<p class="note">{len(rows)} jobs in {len({r["suite"] for r in rows})} suites;'
+        f'<p class="note">{counted(len(rows), "job")} in {counted(len({r["suite"] for r in rows}), "suite")};'
         f" written by relevance-plan {_text(__version__)}.</p>",
     ]
     if not rows:

@@ -18,7 +18,7 @@ from relevance_plan.cli.common import (
     take_scoring,
 )
 from relevance_plan.cli.display import progress_bar
-from relevance_plan.errors import UsageError
+from relevance_plan.errors import UsageError, counted
 from relevance_plan.planning.loop import METHODS
 
 DEFAULT_METHODS = "relevance,pure,random"
@@ -215,7 +215,7 @@ def demo(workdir, count, timeout, jobs, distractors, tiny, quiet):
     click.echo("")
     if run.workdir is None:
         click.echo(
-            f"{run.summary.ran} jobs run in a temporary folder, now removed; "
+            f"{counted(run.summary.ran, 'job')} run in a temporary folder, now removed; "
             "--workdir DIR keeps the suites and the results store"
         )
         return

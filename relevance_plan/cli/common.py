@@ -26,7 +26,7 @@ from relevance_plan.planning.results import PlanResult
 from relevance_plan.planning.validate import VALIDATOR_CHOICES
 from relevance_plan.relevance.prune import DEFAULT_TAU, Thresholds
 from relevance_plan.relevance.scorers import SCORERS
-from relevance_plan.relevance.setup import ScoringOptions, check_scorer
+from relevance_plan.relevance.setup import ScoringOptions, check_scorer, given_cues
 
 
 def fail(message: str, code: ExitCode) -> None:
@@ -109,7 +109,17 @@ def quiet_option(help: str = "No progress messages."):
 
 # --------------------------------------------------------------------------- scoring
 
-SCORING_KEYS = ("scorer", "model_path", "objective", "model_task", "human", "tau_class", "tau_element", "seed")
+SCORING_KEYS = (
+    "scorer",
+    "model_path",
+    "objective",
+    "model_task",
+    "human",
+    "place_kinds",
+    "tau_class",
+    "tau_element",
+    "seed",
+)
 
 
 class ScorerType(click.ParamType):
@@ -126,7 +136,7 @@ class ScorerType(click.ParamType):
 
 
 def scoring_options(command=None, *, with_seed: bool = True):
-    """--scorer --model --objective --task --human --tau-class --tau-element [--seed]."""
+    """--scorer --model --objective --task --human --place-kinds --tau-class --tau-element [--seed]."""
     if command is None:
         return functools.partial(scoring_options, with_seed=with_seed)
     seed = [click.option("--seed", type=int, default=0, show_default=True, help="Seed of the random scorer.")]
@@ -146,10 +156,24 @@ def scoring_options(command=None, *, with_seed: bool = True):
                 help="Knowledge-model YAML (default: found next to the domain or among the shipped worlds).",
             ),
             click.option(
-                "--objective", default=None, help="Objective from the model (default: matched from the goal)."
+                "--objective",
+                default=None,
+                help="Objective from the model, or what the human wants in their own words (with the 'text' extra);"
+                " default: matched from the goal.",
             ),
-            click.option("--task", "model_task", default=None, help="Fix the model's task: P(task | objective) = 1."),
+            click.option(
+                "--task",
+                "model_task",
+                default=None,
+                help="Fix the model's task, P(task | objective) = 1: its name, or a cue in words (the 'text' extra).",
+            ),
             click.option("--human", default=None, help="Apply this human's recorded preferences."),
+            click.option(
+                "--place-kinds",
+                is_flag=True,
+                help="Place object kinds and types the model does not list under their nearest class (the 'text'"
+                " extra); one that resembles no class stays unknown, and is asked about.",
+            ),
             click.option(
                 "--tau-class",
                 type=float,
@@ -172,6 +196,7 @@ def scoring_options(command=None, *, with_seed: bool = True):
 def take_scoring(values: dict) -> ScoringOptions:
     """ScoringOptions from a command's parsed values (the scoring keys are removed from ``values``)."""
     taken = {key: values.pop(key, 0 if key == "seed" else None) for key in SCORING_KEYS}
+    taken["place_kinds"] = bool(taken["place_kinds"])
     thresholds = Thresholds(taken.pop("tau_class"), taken.pop("tau_element"))
     options = ScoringOptions(thresholds=thresholds, **taken)
     if options.learned_model_path is not None:
@@ -251,6 +276,10 @@ def take_plan_options(values: dict, method: str = "relevance") -> PlanOptions:
     arguments split, and a validator asked for by name can run.
     """
     scoring = take_scoring(values)
+    given = given_cues(scoring)
+    if given and method != "relevance":
+        verb = "applies" if len(given) == 1 else "apply"
+        raise UsageError(f"{' and '.join(given)} {verb} to --method relevance only, not to --method {method}")
     taken = {key: values.pop(key) for key in PLANNING_KEYS}
     require_installed_validators(taken["validators"])
     return PlanOptions.from_scoring(
@@ -311,5 +340,12 @@ def write_plan_files(result: PlanResult, plan_file: str) -> list[str]:
         written.append(write_output(Path(f"{plan_file}.{number}"), format_plan(plan, display)))
     return written
 
+
+race_option = click.option(
+    "--race/--no-race",
+    default=None,
+    help="Plan the full problem beside the pruned attempts and take the first valid plan"
+    " (default: on for relevance with two or more usable cores).",
+)
 
 method_option = click.option("--method", type=click.Choice(METHODS), default="relevance", show_default=True)

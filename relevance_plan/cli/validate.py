@@ -8,6 +8,7 @@ import sys
 import click
 
 from relevance_plan.cli.common import handle_errors, json_option, task_arguments
+from relevance_plan.errors import counted
 from relevance_plan.exitcodes import ExitCode
 from relevance_plan.pddl.formatter import format_number
 from relevance_plan.planning.validate import VALIDATORS
@@ -46,7 +47,7 @@ def validate(domain_path, problem_path, plan_path, validator, as_json):
         kind = "timed plan" if check.timed else "plan"
         metric = "" if check.metric is None else f", metric {format_number(check.metric)}"
         verdict = "valid" if result.valid else "INVALID"
-        click.echo(f"{verdict}: {kind} of {check.steps} steps{metric} ({result.validator})")
+        click.echo(f"{verdict}: {kind} of {counted(check.steps, 'step')}{metric} ({result.validator})")
         if result.failed_step is not None:
             click.echo(f"failed step: {result.failed_step}")
         click.echo(f"reason:      {result.message}")

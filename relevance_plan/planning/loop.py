@@ -44,7 +44,7 @@ from dataclasses import dataclass, field, fields, replace
 from pathlib import Path
 from typing import Any
 
-from relevance_plan.errors import OutOfTimeError, UnsupportedFeatureError, UsageError
+from relevance_plan.errors import OutOfTimeError, UnsupportedFeatureError, UsageError, counted
 from relevance_plan.io import load_domain, load_problem, scratch_directory, write_text_atomic
 from relevance_plan.limits import DEFAULT_TIMEOUT, MAX_TIMEOUT
 from relevance_plan.pddl.model import Problem
@@ -75,6 +75,7 @@ from relevance_plan.planning.validate import (
     validate_unread,
 )
 from relevance_plan.progress import ProgressCallback, ProgressEvent
+from relevance_plan.relevance.decisions import kept_summary
 from relevance_plan.relevance.knowledge import KnowledgeModel
 from relevance_plan.relevance.prune import Selection, Thresholds, Widening, next_witnesses, widen
 from relevance_plan.relevance.setup import Scoring, ScoringOptions, score_problem
@@ -137,6 +138,7 @@ class PlanOptions:
     objective: str | None = None
     model_task: str | None = None
     human: str | None = None
+    place_kinds: bool = False
     seed: int = 0
     validators: tuple[str, ...] | None = None
     planner_args: tuple[str, ...] = ()  # appended to the planner's command line (--planner-args)
@@ -681,9 +683,10 @@ def _score(run: _Run) -> tuple[Scoring | None, str]:
 
 
 def _say_selection(say: Callable[[str], None], selection: Selection, total: int) -> None:
+    aside = len(selection.set_aside)
     say(
-        f"kept {len(selection.kept)} of {total} objects ({len(selection.restored)} restored by closure"
-        + (f", {len(selection.set_aside)} alternatives set aside)" if selection.set_aside else ")")
+        kept_summary(selection)
+        + (f", {aside} {'alternative' if aside == 1 else 'alternatives'} set aside" if aside else "")
     )
     if not selection.removed:
         say(f"pruned: no ({selection.unpruned_reason})")
@@ -879,7 +882,8 @@ def _validated(last: Attempt, common: dict[str, Any]) -> PlanResult:
             plan_cost=cost,
             plans=last.outcome.plans,
             validation=validation,
-            message=f"plan of {len(plan)} steps {checked if validation.valid else 'NOT validated (--validator none)'}",
+            message=f"plan of {counted(len(plan), 'step')} "
+            + (checked if validation.valid else "NOT validated (--validator none)"),
             **common,
         )
     if validation is not None and validation.status is ValidationStatus.OUT_OF_TIME:

@@ -8,6 +8,7 @@ Its modules from the bottom up (each imports only modules listed before it):
     task.py              PlanningTask: a domain and problem with the analyses every stage shares
     scene.py             the scene a knowledge model scores: elements, kinds, places
     knowledge.py         the knowledge model (YAML): classes, tasks, objectives, humans, dependencies
+    text/                free text mapped to a knowledge model's names (the ``text`` extra, loaded on use)
     scorers/             one function per scorer (goal, model, random, oracle), in SCORERS
     learning/            the learned scorer: features, the learned model, its fit
     sidecar.py           the generator's ground truth for a problem (the oracle's answer)
@@ -17,5 +18,8 @@ Its modules from the bottom up (each imports only modules listed before it):
     timed_relaxation.py  the sharper check for temporal and numeric problems
     repair.py            the repair: what a failing selection lacks, found by growing it
     prune.py             select -> close -> set aside -> repair -> finish; widening
+    decisions.py         each object's decision, named by the step that made it
+    completion.py        a first selection completed for the negative preconditions the check passes over
     setup.py             one scoring set-up for every front end
+    drafting/            a knowledge model drafted from a domain's schemas and problems, checked on them
 """

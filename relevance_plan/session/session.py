@@ -38,7 +38,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from types import MappingProxyType
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from relevance_plan.io import Source, is_pddl_text, load_sources, write_text_atomic
 from relevance_plan.pddl.formatter import format_domain
@@ -61,6 +61,9 @@ from relevance_plan.session.events import Event, EventError, check_event, parse_
 from relevance_plan.session.rescoring import ALL, FullScores, LiveModelScores, restrict
 from relevance_plan.session.state import LiveScene
 from relevance_plan.session.triggers import TRIGGERS, Change, Trigger, check_triggers
+
+if TYPE_CHECKING:  # the text package is imported only when free text is given
+    from relevance_plan.relevance.text.matching import WordMatch
 
 # Runs the planner on a problem (PDDL text of the current domain) within a time limit (None: none).
 RunPlanner = Callable[[str, "float | None"], RunOutcome]
@@ -102,6 +105,7 @@ class EventReport:
     seconds: float = 0.0  # trigger check + determination
     plan: PlanReport | None = None
     display: Mapping[str, str] = field(default_factory=dict, repr=False)  # object -> the user's spelling
+    understood: tuple[WordMatch, ...] = ()  # free text (a cue in words, --objective TEXT) and what it was taken for
 
     @property
     def reason(self) -> str:
@@ -146,6 +150,8 @@ class EventReport:
         data["dropped"] = [self.show(n) for n in self.dropped]
         ask = self.ask
         data["ask"] = None if ask is None else {"cue": ask.cue, "question": ask.question, "options": list(ask.options)}
+        if self.understood:
+            data["understood"] = [match.as_json() for match in self.understood]
         data["determination_ms"] = round(self.seconds * 1000, 3)
         if self.plan is not None:
             data["plan_status"] = self.plan.status.value
@@ -189,7 +195,8 @@ class Session:
         self.scene = LiveScene(domain, problem)
         scorer = choose_scorer("relevance", self.model, options.scorer)
         self.scores: LiveModelScores | FullScores
-        if scorer == "model" and self.model is not None:
+        # placing unknown kinds (--place-kinds) is the scorer's own step: scored in full on each change
+        if scorer == "model" and self.model is not None and not options.place_kinds:
             self.scores = LiveModelScores(self.scene, self.model, options)
         else:
             self.scores = FullScores(self.scene, self.model, options, domain_path)
@@ -291,6 +298,8 @@ class Session:
             self._determine()
         seconds = time.perf_counter() - started
         report = self._report(event.kind, reasons, previous, seconds)
+        if event.understood is not None:
+            report = self._with_cue_words(report, event.understood)
         plan = None
         if event.kind == "plan" and self.run_planner is not None:
             plan = self.plan()
@@ -310,6 +319,13 @@ class Session:
         ):
             plan = self.plan()
         return replace(report, plan=plan) if plan is not None else report
+
+    def _with_cue_words(self, report: EventReport, match: WordMatch) -> EventReport:
+        """A cue in words: what it was understood as, or (not understood) the question to ask."""
+        if match.chosen is not None:
+            return replace(report, understood=(match,))
+        options = tuple(candidate.name for candidate in match.candidates)
+        return replace(report, understood=(match,), ask=Ask(match.vocabulary.value, match.insufficiency, options))
 
     def _rejected(self, kind: str, error: EventError) -> EventReport:
         return EventReport(
@@ -386,12 +402,15 @@ class Session:
             self._set_options(options)
             return True, ALL
         if event.kind == "cue":
+            if event.task is None and event.objective is None:
+                return False, set()  # words not understood: nothing changes, the report asks
             if event.task is not None:
                 options = replace(self.options, model_task=event.task)
             else:
                 options = replace(self.options, objective=event.objective)
             if options == self.options:
-                return False, set()
+                # the cue in force, said again: worth a determination only if none was made yet
+                return self.determination is None, ALL if self.determination is None else set()
             self._set_options(options)
             return True, ALL
         return False, set()  # plan
@@ -406,7 +425,11 @@ class Session:
         predicates = self.model.scene if self.model is not None else None
         for fact in facts:
             names.update(fact[1:])
-            if predicates is not None and fact[0] in (predicates.access, predicates.human_location) and len(fact) > 1:
+            if (
+                predicates is not None
+                and fact[0] in (predicates.access, predicates.closed, predicates.human_location)
+                and len(fact) > 1
+            ):
                 names |= self.scores.items_at(fact[-1])
         return {n for n in names if n in self.scene.objects}
 
@@ -492,6 +515,7 @@ class Session:
             ask=self.ask(scores) if (reasons or not scores.sufficient) and not self.idle else None,
             seconds=seconds,
             display=MappingProxyType(self.scene.display),
+            understood=scores.understood if reasons else (),
         )
 
     def ask(self, scores: ScoreResult | None = None) -> Ask | None:
@@ -501,6 +525,10 @@ class Session:
         if not scores.sufficient:
             if model is None:
                 return None
+            unclear = [m for m in scores.understood if m.chosen is None and m.vocabulary.value != "class"]
+            if unclear:  # --objective or --task in words the model did not understand
+                options = tuple(candidate.name for candidate in unclear[0].candidates)
+                return Ask(unclear[0].vocabulary.value, unclear[0].insufficiency, options)
             if scores.objective is None:
                 return Ask("objective", "What would you like to do?", tuple(model.objectives))
             if scores.task_entropy is not None and scores.task_entropy > model.entropy_bound:
