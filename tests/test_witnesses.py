@@ -248,3 +248,23 @@ def test_a_move_that_keeps_the_shelf_s_relation_lets_one_vase_serve_both(tmp_pat
         assert PlanningTask(*load_task(domain, problem)).proved_unsolvable == ""
     result = invoke("plan", domain, problem, "--json", "--plan-file", tmp_path / "plan")
     assert json.loads(result.output)["status"] == status
+
+
+@pytest.mark.planner
+def test_an_existential_goal_gets_a_vase_of_its_own_and_solves_at_the_first_attempt(tmp_path):
+    some_vase_on_shelf1 = "(exists (?v - item) (and (itemclass ?v vase) (on ?v shelf1)))"
+    problem_text = house(4, "(classrelation vase table)", distractors=20).replace(
+        "(:goal (and (classrelation vase table)))", f"(:goal (and (classrelation vase table) {some_vase_on_shelf1}))"
+    )
+    domain_text = HOUSE.replace(":negative-preconditions", ":negative-preconditions :existential-preconditions")
+    domain, problem = write_task(tmp_path, "exists", domain_text, problem_text)
+    task = PlanningTask(*load_task(domain, problem))
+    (need,) = task.exists_needs
+    assert need.variable == "?v" and sorted(need.candidates) == ["vase0", "vase1", "vase2", "vase3"]
+    result = invoke("plan", domain, problem, "--json", "--no-race", "--plan-file", tmp_path / "plan")
+    data = json.loads(result.output)
+    assert data["status"] == "solved" and data["valid"]
+    (first,) = data["attempt_log"]
+    assert first["pruned"] and len(first["kept"]) < data["objects_total"] / 2
+    witnesses = {w["goal"]: w["object"] for w in first["witnesses"]}
+    assert len(set(witnesses.values())) == 2  # one vase for the table, another for the shelf

@@ -507,9 +507,10 @@ class Exploration:
         self.goal = [(p, *args) for p, args in required_atoms(problem.goal) if not any(a[0] == "?" for a in args)]
         self.missing = set(self.goal)
         self.witness_needs = task.witness_needs
+        self.exists_needs = task.exists_needs
         self.witnesses: dict[GroundAtom, str] = {}
         self.stranded: frozenset[str] = frozenset()  # kept candidate witnesses no reached fact makes usable
-        self.witness_facts: list[GroundAtom | None] = []  # what makes each matched witness usable (holds robot vase)
+        self.witness_facts: list[GroundAtom] = []  # what makes each matched witness usable (holds robot vase)
         self.facts: dict[GroundAtom, _Achiever | None] = {}  # the step that first reached each fact
         self.queue: deque[GroundAtom] = deque()
         self.by_object = task.init_index.by_object
@@ -683,24 +684,32 @@ class Exploration:
         unreached = tuple(atom for atom in self.goal if atom not in self.facts)
         if unreached:
             return Reachability(False, True, unreached)
-        shortfall = self.witness_shortfall()
+        shortfall = self.shortfall()
         if shortfall:
             return Reachability(False, True, tuple(need.goal for need in shortfall))
         # the relaxed plan reaches the goal and makes every witness usable: the way to each is kept
-        plan, objects = _relaxed_plan(self.facts, [*self.goal, *(f for f in self.witness_facts if f is not None)])
+        plan, objects = _relaxed_plan(self.facts, [*self.goal, *self.witness_facts])
         objects.update(self.witnesses.values())
         witnesses = tuple(sorted(self.witnesses.items()))
         return Reachability(True, True, (), tuple(plan), frozenset(objects) - set(self.domain.constants), witnesses)
 
-    def witness_shortfall(self) -> tuple[WitnessNeed, ...]:
-        """The goal atoms that need a witness of their own (``witnesses``) and find no usable one
-        distinct from the others' (none while a goal atom is unreached).  The exploration runs to
-        its end first: the goal is reached long before every candidate is."""
-        needs = self.witness_needs
-        if not needs or self.missing:
+    def shortfall(self) -> tuple[WitnessNeed, ...]:
+        """The goal atoms left without a witness of their own and the existentials no kept object
+        satisfies yet (none while a goal atom is unreached); ``witnesses`` and ``stranded`` say
+        what the kept objects give.  The exploration runs to its end first: the goal is reached long
+        before every candidate is."""
+        self.witnesses, self.stranded, self.witness_facts = {}, frozenset(), []
+        if self.missing or not (self.witness_needs or self.exists_needs):
             return ()
         if self.queue:
             self.run(exhaust=True)
+        return self._matched_shortfall()
+
+    def _matched_shortfall(self) -> tuple[WitnessNeed, ...]:
+        """Distinct usable witnesses for the goal atoms that need one of their own and for the
+        existentials (an existential's witness satisfies its body with reached facts); returns the
+        needs left without one, whose kept candidates go to ``stranded``."""
+        needs = self.witness_needs + self.exists_needs
         wanted = {pattern[0] for need in needs for pattern in need.consumed}
         # (predicate, position, object) -> a reached fact with the object there
         reached: dict[tuple[str, int, str], GroundAtom] = {}
@@ -709,28 +718,30 @@ class Exploration:
                 for i, arg in enumerate(fact[1:]):
                     reached.setdefault((fact[0], i, arg), fact)
 
-        def made_usable(need: WitnessNeed, name: str) -> GroundAtom | None:
+        def made_usable(need: WitnessNeed, name: str) -> list[GroundAtom] | None:
+            """The reached facts that make ``name`` usable as the need's witness (None: it is not)."""
             seen = MEMBER if name in self.kept_members else name
             if seen != MEMBER and name not in self.allowed:
                 return None
+            if need.body:
+                grounded = need.grounded(name)
+                return grounded if all(fact in self.facts for fact in grounded) else None
             for predicate, at in need.consumed:
                 facts = {reached.get((predicate, i, seen)) for i in at}
                 if len(facts) == 1 and None not in facts:
-                    return facts.pop()
+                    return [fact for fact in facts if fact is not None]
             return None
 
-        def usable(need: WitnessNeed, name: str) -> bool:
-            return made_usable(need, name) is not None
-
-        self.witnesses, unmatched = match_witnesses(needs, usable)
+        matched, unmatched = match_witnesses(needs, lambda need, name: made_usable(need, name) is not None)
+        self.witnesses = matched
         by_goal = {need.goal: need for need in needs}
-        self.witness_facts = [made_usable(by_goal[goal], name) for goal, name in sorted(self.witnesses.items())]
-        # the kept candidates the goal atoms left without a witness cannot use yet: the way to them is missing
+        self.witness_facts = [fact for goal, name in matched.items() for fact in made_usable(by_goal[goal], name) or ()]
+        # the kept candidates the needs left without a witness cannot use yet: the way to them is missing
         self.stranded = frozenset(
             name
             for need in unmatched
             for name in need.candidates
-            if (name in self.allowed or name in self.kept_members) and not usable(need, name)
+            if (name in self.allowed or name in self.kept_members) and made_usable(need, name) is None
         )
         return unmatched
 

@@ -404,7 +404,8 @@ def ranked_names(
 def next_witnesses(task: PlanningTask, kept: Set[str]) -> list[str]:
     """The best-ranked candidate outside ``kept`` of each goal atom that needs a witness of its own
     (``witnesses``): widening tries another vase before it takes back whole rooms."""
-    chosen = (next((n for n in need.candidates if n not in kept), None) for need in task.witness_needs)
+    needs = task.witness_needs + task.exists_needs
+    chosen = (next((n for n in need.candidates if n not in kept), None) for need in needs)
     return list(dict.fromkeys(name for name in chosen if name is not None))
 
 

@@ -163,7 +163,7 @@ def _next_round(
     batch = max(1, (len(current) - len(kept)) // 4, min(estimate, 2 * (len(current) - len(kept))))
     if not exploration.missing:
         # a goal atom without a witness of its own: its next candidate, and the way to the kept ones it cannot reach
-        take = order.next_witnesses(exploration.witness_shortfall(), current)
+        take = order.next_witnesses(exploration.shortfall(), current)
         if exploration.stranded:
             take += order.nearest(current, exploration.stranded, batch, exploration.facts)
         return list(dict.fromkeys(take))
@@ -274,11 +274,15 @@ class RepairOrder:
         """For each goal atom that needs a witness of its own and has no kept candidate to spare,
         its best-ranked candidate not taken by another (``witnesses.match_witnesses`` over all)."""
         needs = self.task.witness_needs
+        wanted = [
+            need.candidates[0]
+            for need in self.task.exists_needs
+            if need.candidates and not any(name in kept for name in need.candidates)
+        ]
         if not needs:
-            return []
+            return wanted
         chosen, _ = match_witnesses(needs, lambda need, name: True)
         spare = set(kept)
-        wanted = []
         for need in needs:
             own = next((name for name in need.candidates if name in spare), None)
             if own is not None:

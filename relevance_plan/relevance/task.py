@@ -25,7 +25,7 @@ from relevance_plan.relevance.analysis import (
 from relevance_plan.relevance.soundness import KeptObjects, objects_to_keep, soundness_requirements
 from relevance_plan.relevance.types import InferredTypes, infer_types
 from relevance_plan.relevance.witness_proof import unsolvable_by_witnesses
-from relevance_plan.relevance.witnesses import WitnessNeed, shortfall_reason, witness_needs
+from relevance_plan.relevance.witnesses import WitnessNeed, exists_needs, shortfall_reason, witness_needs
 
 
 @dataclass(frozen=True, eq=False)
@@ -98,6 +98,13 @@ class PlanningTask:
         needs = witness_needs(typing.domain, problem, self.init_index, problem.objects, self.hub_degree, ground)
         self.check_time("finding the goal's witnesses")
         return needs
+
+    @cached_property
+    def exists_needs(self) -> tuple[WitnessNeed, ...]:
+        """The goal's top-level existentials, each with the objects that can be its variable (``witnesses``)."""
+        typing = self.typing
+        problem = typing.problem
+        return exists_needs(typing.domain, self.init_index, problem.objects, self.hub_degree, problem.goal)
 
     @cached_property
     def witness_shortfall(self) -> str:

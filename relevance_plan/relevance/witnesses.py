@@ -31,7 +31,17 @@ import weakref
 from collections.abc import Callable, Collection, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 
-from relevance_plan.pddl.formulas import Atom, GroundAtom, effect_literals, is_variable, literals
+from relevance_plan.pddl.formatter import format_formula, format_parameters
+from relevance_plan.pddl.formulas import (
+    Atom,
+    Exists,
+    Formula,
+    GroundAtom,
+    conjuncts,
+    effect_literals,
+    is_variable,
+    literals,
+)
 from relevance_plan.pddl.model import Action, Domain, Problem
 from relevance_plan.relevance.analysis import FactIndex, ObjectGraph, graph_distances
 from relevance_plan.relevance.types import static_predicates
@@ -54,11 +64,18 @@ class WitnessRole:
 
 @dataclass(frozen=True)
 class WitnessNeed:
-    """A goal atom that needs a witness of its own, and the objects that can be it."""
+    """A goal atom that needs a witness of its own, and the objects that can be it; or an existential
+    goal ``(exists (?v - t) body)`` and the objects that can be its ``?v`` (``variable``, ``body``)."""
 
-    goal: GroundAtom
+    goal: GroundAtom  # the goal atom; for an existential, its text in parts ("exists", "(?v - t)", "(body)")
     candidates: tuple[str, ...]  # best connected first
-    consumed: tuple[Pattern, ...]  # a reached fact of one of these about a candidate makes it usable
+    consumed: tuple[Pattern, ...] = ()  # a reached fact of one of these about a candidate makes it usable
+    variable: str = ""  # an existential's variable
+    body: tuple[Atom, ...] = ()  # an existential's conditions: the atoms its witness must reach
+
+    def grounded(self, name: str) -> list[GroundAtom]:
+        """An existential's body with ``name`` for its variable."""
+        return [(atom.predicate, *(name if arg == self.variable else arg for arg in atom.args)) for atom in self.body]
 
 
 # --------------------------------------------------------------------------- the lifted analysis
@@ -283,6 +300,38 @@ def witness_needs(
     return tuple(needs)
 
 
+def exists_needs(
+    domain: Domain, index: FactIndex, objects: Mapping[str, str], hub_degree: int, goal: Formula
+) -> tuple[WitnessNeed, ...]:
+    """Each top-level existential of the goal over one variable whose body is a conjunction of atoms,
+    with the objects that satisfy the body's static atoms, nearest first to the body's objects and
+    to where the agent is."""
+    static = static_predicates(domain)
+    graph = ObjectGraph(index)
+    agents = _agents(index, static)
+    from_agents = graph_distances(index, graph, agents, hub_degree) if agents else {}
+    needs = []
+    for part in conjuncts(goal):
+        if not isinstance(part, Exists) or len(part.parameters) != 1:
+            continue
+        body = list(conjuncts(part.body))
+        if not body or not all(isinstance(atom, Atom) for atom in body):
+            continue
+        atoms = tuple(atom for atom in body if isinstance(atom, Atom))
+        variable, type_name = part.parameters[0]
+        names = {name for name, kind in objects.items() if domain.is_subtype(kind, type_name)}
+        for atom in atoms:
+            if atom.predicate in static and variable in atom.args:
+                names &= _admitted_by(index, atom, variable, {})
+        anchors = {arg for atom in atoms for arg in atom.args if not is_variable(arg)}
+        near = graph_distances(index, graph, anchors, hub_degree) if anchors else {}
+        far = len(objects) + 1
+        ranked = sorted(names, key=lambda name: (near.get(name, far) + from_agents.get(name, far), name))
+        label = ("exists", f"({format_parameters(part.parameters)})", format_formula(part.body))
+        needs.append(WitnessNeed(label, tuple(ranked), variable=variable, body=atoms))
+    return tuple(needs)
+
+
 def _candidates(
     domain: Domain, index: FactIndex, objects: Mapping[str, str], role: WitnessRole, binding: Mapping[str, str]
 ) -> list[str]:
@@ -372,4 +421,12 @@ def shortfall_reason(needs: Sequence[WitnessNeed]) -> str:
     return f"{len(group)} goal atoms need an object of their own ({atoms}) and only {len(shared)} can be one"
 
 
-__all__ = ["WitnessNeed", "WitnessRole", "consuming_roles", "match_witnesses", "shortfall_reason", "witness_needs"]
+__all__ = [
+    "WitnessNeed",
+    "WitnessRole",
+    "consuming_roles",
+    "exists_needs",
+    "match_witnesses",
+    "shortfall_reason",
+    "witness_needs",
+]
