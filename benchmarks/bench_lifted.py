@@ -91,6 +91,7 @@ class Run:
     first_solved: bool = False  # the first attempt (a pruned one) found the plan
     first_kept: int = 0
     total: int = 0
+    proved: bool = False  # unsolvable, proved by the tool before any planner ran
 
     @property
     def solved(self) -> bool:
@@ -132,7 +133,8 @@ def run_tool(domain: Path, problem: Path, timeout: float, extra: list[str], scra
     first_solved = first.get("status") == "solved" and first.get("pruned", False)
     first_kept = first.get("objects_kept", data.get("objects_total", 0))
     valid = bool(data.get("valid")) if data.get("status") == "solved" else None
-    run = Run(data["status"], timed.seconds, valid, first_solved, first_kept, data.get("objects_total", 0))
+    proved = data["status"] == "unsolvable" and "proved before planning" in data.get("message", "")
+    run = Run(data["status"], timed.seconds, valid, first_solved, first_kept, data.get("objects_total", 0), proved)
     return run, data
 
 
@@ -254,6 +256,9 @@ def summarise(name: str, runs: dict[str, list[tuple[str, Run]]], timeout: float)
             continue
         slower = [p for p, run in rows if pure[p].solved and run.solved and run.wall > 1.25 * pure[p].wall + 0.5]
         lost = [p for p, run in rows if pure[p].solved and not run.solved]
+        proved = [p for p, run in rows if run.proved]
+        contradicted = [p for p in proved if pure[p].solved]
+        print(f"\n{method}: proved {len(proved)} unsolvable before planning; pure found a plan for {len(contradicted)}")
         print(
             f"\n{method}: slower than pure by more than 1.25x + 0.5 s on {len(slower)} ({', '.join(slower) or 'none'})"
         )
