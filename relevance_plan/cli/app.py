@@ -302,6 +302,8 @@ def prune(domain_path, problem_path, output, pass_through, as_json, **values):
         for line in scores_header(scores)[1:]:  # what free text was understood as
             click.echo(line, err=to_stdout)
         click.echo(f"{kept_summary(result)}; wrote {written if to_stdout else output}", err=to_stdout)
+        if result.unpruned_reason:
+            click.echo(f"pruned: no ({result.unpruned_reason})", err=to_stdout)
 
 
 # --------------------------------------------------------------------------- plan

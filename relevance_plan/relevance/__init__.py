@@ -4,6 +4,9 @@ Its modules from the bottom up (each imports only modules listed before it):
 
     analysis.py          the initial facts' index, constraint rules, the goal's roles, distances
     types.py             classes inferred for untyped domains; static predicates
+    witnesses.py         class goals: the objects a goal atom or an existential is met through
+    object_states.py     the states one object of a type can be in (a sound over-approximation)
+    witness_proof.py     the proof that a goal needs more witnesses than the problem has
     soundness.py         the objects a quantifier ranges over, which pruning must keep
     task.py              PlanningTask: a domain and problem with the analyses every stage shares
     scene.py             the scene a knowledge model scores: elements, kinds, places
