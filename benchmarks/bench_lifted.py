@@ -144,7 +144,7 @@ def learn_model(name: str, entry: dict, timeout: float, scratch: Path) -> Path:
     model = scratch / f"{name}.json"
     command = ["relevance-plan", "learn", str(training[0].domain), *(str(e.problem) for e in training)]
     learned = run_timed(
-        [*command, "-o", str(model), "--time-limit", f"{timeout:g}"], timeout=timeout * len(training) + 60
+        [*command, "-o", str(model), "--timeout", f"{timeout:g}"], timeout=timeout * len(training) + 60
     )
     if learned.code != 0:
         raise SystemExit(f"learn failed on {name} (exit {learned.code})")
