@@ -248,6 +248,10 @@ class Store:
         row = result_row(job.columns(), result)
         if method:
             row["method"] = method
+        self.add_row(row)
+
+    def add_row(self, row: dict) -> None:
+        """Store a row made by the script (``batch.rows.row_from_json`` of a command's ``--json`` report)."""
         self.stored += self._store.add(row)
 
     def close(self) -> None:

@@ -64,6 +64,21 @@ def folders(track: str | None = None, root: Path | None = None) -> list[Path]:
     return [root / entry["path"] for entry in manifest(root)["folders"] if track is None or entry["track"] == track]
 
 
+def benchmark_sets(root: Path | None = None) -> dict[str, dict]:
+    """The benchmark sets (a set's name, e.g. ``taskographyv4medium5`` -> its manifest entry, paths
+    made absolute): test problems of one benchmark, with their training problems, kept apart from
+    the domain folders so that the field's sweeps do not plan them."""
+    root = root or corpus_root()
+    found = {}
+    for entry in manifest(root).get("sets", []):
+        folder = root / entry["path"]
+        training = dict(entry.get("training", {}))
+        if training:
+            training["path"] = root / training["path"]
+        found[folder.name.removesuffix("_test")] = {**entry, "path": folder, "training": training}
+    return found
+
+
 # Words that begin the part of a folder's name that names a form of its domain (the competition's
 # variants: durations, numbers, STRIPS or ADL, compiled time windows).
 FORM_WORDS = frozenset(
@@ -141,7 +156,7 @@ def mismatches(root: Path | None = None) -> list[str]:
             size = path.stat().st_size
             than = "" if size == entry.get("size") else f" (size {size}, manifest says {entry.get('size')})"
             problems.append(f"{relative}: sha256 differs from the manifest{than}")
-    folder_paths = {entry["path"] for entry in data["folders"]}
+    folder_paths = {entry["path"] for entry in data["folders"] + data.get("sets", [])}
     for relative in sorted({entry.get("folder") for entry in data["files"]} - folder_paths):
         problems.append(f"{relative}: files name this folder, but it is not in the manifest's folders")
     for relative in sorted(folder_paths):
@@ -161,7 +176,8 @@ def summary(root: Path | None = None) -> dict:
     tracks: dict[str, int] = {}
     for entry in data["folders"]:
         tracks[entry["track"]] = tracks.get(entry["track"], 0) + 1
-    return {"files": len(data["files"]), "domains": len(data["folders"]), "tracks": dict(sorted(tracks.items()))}
+    counts = {"files": len(data["files"]), "domains": len(data["folders"]), "tracks": dict(sorted(tracks.items()))}
+    return {**counts, "sets": len(data.get("sets", []))}
 
 
 def _verify(args: argparse.Namespace) -> int:

@@ -43,12 +43,21 @@ def printable(text: str, limit: int | None = None) -> str:
     return text
 
 
+def counted(count: int, noun: str, plural: str | None = None) -> str:
+    """``1 step``, ``2 steps``: a count with its noun in the right number (``plural`` when not noun + s)."""
+    return f"{count} {noun if count == 1 else plural or noun + 's'}"
+
+
 def _rebuild_error(cls, message, path, line):
     return cls(message, path=path, line=line)
 
 
 class UsageError(RelevancePlanError):
     """A bad argument value: threshold outside [0, 1], negative count, unknown name."""
+
+
+class MissingExtraError(UsageError):
+    """An optional extra that is not installed; the message says what to install."""
 
 
 class InputFileError(RelevancePlanError):

@@ -40,7 +40,7 @@ class ExitCode(IntEnum):
 
 EXIT_CODE_DESCRIPTIONS: dict[ExitCode, str] = {
     ExitCode.SUCCESS: "success: a plan was found and validated on the original problem (or the command finished)",
-    ExitCode.COMMAND_LINE: "malformed command line (unknown option, missing argument)",
+    ExitCode.COMMAND_LINE: "malformed command line (unknown option, missing argument, text where a number goes)",
     ExitCode.UNSOLVABLE: "the original problem is unsolvable",
     ExitCode.NO_VALID_PLAN: (
         "no valid plan: search ended without one (incomplete search, invalid plans, or --no-widen failure)"
@@ -48,20 +48,20 @@ EXIT_CODE_DESCRIPTIONS: dict[ExitCode, str] = {
     ExitCode.INSUFFICIENT_CUES: "insufficient cues: relevance cannot be decided; give --task, --objective or --human",
     ExitCode.PLAN_INVALID: "the plan is invalid on the problem (validate)",
     ExitCode.OUT_OF_TIME: "out of time",
-    ExitCode.OUT_OF_MEMORY: "out of memory",
+    ExitCode.OUT_OF_MEMORY: "out of memory (the tool's, or a planner that died under --memory-limit)",
     ExitCode.USAGE: (
-        "bad argument value (threshold outside [0, 1], unknown method, negative count, ...)"
+        "bad argument value (threshold outside [0, 1], a number not finite or out of its range, unknown method, ...)"
         " or an optional extra that is not installed"
     ),
-    ExitCode.INPUT_FILE: "missing, unreadable or unwritable file or directory",
+    ExitCode.INPUT_FILE: "missing, unreadable or unwritable file or directory, whichever option names it",
     ExitCode.PDDL_SYNTAX: "malformed PDDL, or a malformed plan file",
-    ExitCode.UNSUPPORTED_PDDL: "PDDL feature not supported",
+    ExitCode.UNSUPPORTED_PDDL: "PDDL feature not supported (by the tool, or by the planner or its reader)",
     ExitCode.DOMAIN_MISMATCH: "problem does not belong to the domain",
     ExitCode.MODEL: "invalid knowledge model (YAML, schema, probability, unknown human or objective)",
     ExitCode.STORE: "results store unusable or from an incompatible version",
     ExitCode.SCHEDULER: "Dask scheduler unreachable or Dask not installed",
     ExitCode.PLANNER: "planner not found, failed to start, or crashed",
-    ExitCode.VALIDATOR: "no plan validator could run",
+    ExitCode.VALIDATOR: "no plan validator could run (or judge the plan within --timeout)",
     ExitCode.INTERRUPTED: "interrupted (Ctrl-C); finished results are kept",
 }
 

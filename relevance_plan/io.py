@@ -11,12 +11,14 @@ files a command names, and its standard output, are ``cli.files``'.
 from __future__ import annotations
 
 import contextlib
+import json
 import os
 import re
 import stat
 import sys
 import tempfile
 from pathlib import Path
+from typing import Any
 
 from relevance_plan.errors import InputFileError
 from relevance_plan.pddl.model import Domain, Problem
@@ -43,6 +45,16 @@ def read_text(path: str | os.PathLike, what: str = "file") -> str:
     except UnicodeDecodeError as error:
         line = data.count(b"\n", 0, error.start) + 1
         raise InputFileError(f"not a UTF-8 text file ({error.reason})", path=str(path), line=line) from None
+
+
+def parse_json(text: str) -> Any:
+    """The value of the JSON ``text`` (a learned model, a store row's columns); ``ValueError`` for text
+    that is not JSON, or nests deeper than the interpreter's recursion limit (the parser recurses
+    once per level, and stops there)."""
+    try:
+        return json.loads(text)
+    except RecursionError:
+        raise ValueError(f"nested more than {sys.getrecursionlimit()} levels deep") from None
 
 
 def load_domain(path: str | os.PathLike, deadline: float | None = None) -> Domain:

@@ -480,6 +480,23 @@ def planner_script(tmp_path: Path, name: str, body: str) -> str:
     return str(path)
 
 
+# Two coins at a price of 1e308 each: the plan's total cost is past the largest float.
+PAYING_DOMAIN = """(define (domain pay)
+  (:requirements :typing :action-costs)
+  (:types coin)
+  (:predicates (spent ?c - coin))
+  (:functions (total-cost) - number (price) - number)
+  (:action spend :parameters (?c - coin) :precondition (and)
+    :effect (and (spent ?c) (increase (total-cost) (price)))))
+"""
+PAYING_PROBLEM = """(define (problem pay-1) (:domain pay)
+  (:objects a b - coin)
+  (:init (= (total-cost) 0) (= (price) 1e308))
+  (:goal (and (spent a) (spent b)))
+  (:metric minimize (total-cost)))
+"""
+
+
 SMALL_GRIPPER_DOMAIN = """
 (define (domain gripper)
   (:requirements :strips :typing)

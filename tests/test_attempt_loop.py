@@ -241,7 +241,8 @@ def test_plan_json_spells_every_status_one_way(tmp_path, coffee_domain_path):
     blocks_domain, blocks = tmp_path / "blocks-domain.pddl", tmp_path / "blocks.pddl"
     blocks_domain.write_text(BLOCKSWORLD_DOMAIN)
     blocks.write_text(blocksworld_problem(150, seed=1))
-    strict = ("--tau-class", "0.2", "--tau-element", "0.85", "--timeout", "60")
+    # no race: which side decides first is the machine's load, and the first attempt must be the one that fails
+    strict = ("--tau-class", "0.2", "--tau-element", "0.85", "--timeout", "60", "--no-race")
     runs = {
         "solved after a failed first attempt": (coffee_domain_path, coffee, *strict),
         "unsolvable": (coffee_domain_path, no_cup, "--timeout", "60"),

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import re
@@ -11,7 +12,9 @@ import sqlite3
 import subprocess
 import sys
 import textwrap
+import threading
 import time
+import types
 from pathlib import Path
 
 import pytest
@@ -483,6 +486,59 @@ def test_unreachable_scheduler_is_one_line_and_leaves_the_store_alone(suite, pop
     )
     assert_one_line_error(result, ExitCode.SCHEDULER, f"cannot reach the Dask scheduler at tcp://127.0.0.1:{closed}")
     assert snapshot(populated_store) == before
+
+
+@pytest.fixture
+def stranger():
+    """A server on a local port that greets each connection with ``stranger.greeting`` (text, or nothing)."""
+    listener = socket.create_server(("127.0.0.1", 0))
+    listener.settimeout(0.1)
+    state = {"greeting": b"", "stop": False, "open": []}
+
+    def serve() -> None:
+        while not state["stop"]:
+            try:
+                connection, _ = listener.accept()
+            except OSError:
+                continue
+            state["open"].append(connection)
+            with contextlib.suppress(OSError):
+                connection.sendall(state["greeting"])
+
+    thread = threading.Thread(target=serve, daemon=True)
+    thread.start()
+    server = types.SimpleNamespace(address=f"tcp://127.0.0.1:{listener.getsockname()[1]}", state=state)
+    yield server
+    state["stop"] = True
+    thread.join()
+    for connection in state["open"]:
+        connection.close()
+    listener.close()
+
+
+@pytest.mark.parametrize(
+    "greeting, fragment",
+    [
+        (b"HTTP/1.1 400 Bad Request\r\nContent-Length: 0\r\n\r\n" * 20, "is not a Dask scheduler"),
+        (b"garbage " * 100, "is not a Dask scheduler"),
+        (b"", "did not greet as Dask does within 2 s"),
+    ],
+)
+def test_a_port_that_does_not_answer_as_a_scheduler_is_one_line(suite, populated_store, stranger, greeting, fragment):
+    """Not out of memory (the client read text as a message length), and not a traceback when the
+    half-started client is collected at the end: one line, the store untouched."""
+    stranger.state["greeting"] = greeting
+    before = snapshot(populated_store)
+    started = time.monotonic()
+    done = subprocess.run(
+        [*TOOL, "compare", suite, "--methods", "pure", "--store", populated_store, "--scheduler", stranger.address,
+         "--scheduler-timeout", "2", "-q"],
+        capture_output=True, text=True, timeout=60,
+    )  # fmt: skip
+    assert done.returncode == ExitCode.SCHEDULER, done.stderr
+    assert done.stderr.startswith("relevance-plan: error: ") and done.stderr.count("\n") == 1, done.stderr
+    assert fragment in done.stderr
+    assert time.monotonic() - started < 15 and snapshot(populated_store) == before
 
 
 # --------------------------------------------------------------------------- CLI errors

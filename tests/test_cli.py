@@ -2,6 +2,7 @@
 
 import json
 import subprocess
+import sys
 
 import pytest
 from click.testing import CliRunner
@@ -143,7 +144,6 @@ def _bad_probability(tmp_path):
         (lambda t, p: ["score", COFFEE_DOMAIN, p, "--model", _bad_probability(t)], ExitCode.MODEL, "outside [0, 1]"),
         (lambda t, p: ["score", COFFEE_DOMAIN, p, "--tau-class", "1.5"], ExitCode.USAGE, "--tau-class"),
         (lambda t, p: ["score", COFFEE_DOMAIN, p, "--human", "nobody"], ExitCode.MODEL, "unknown human 'nobody'"),
-        (lambda t, p: ["score", COFFEE_DOMAIN, p, "--objective", "lunch"], ExitCode.MODEL, "unknown objective 'lunch'"),
         (
             lambda t, p: ["plan", COFFEE_DOMAIN, p, "--timeout", "-3", "--plan-file", t / "x.plan"],
             ExitCode.USAGE,
@@ -171,6 +171,14 @@ def test_bad_input_gives_one_line_and_exit_code(runner, problem, tmp_path, args,
     assert len(error_lines) >= 1 and "Traceback" not in result.output
     created = set(tmp_path.iterdir()) - before
     assert all(p.suffix in (".pddl", ".yaml") and p.name not in ("x.pddl", "x.plan") for p in created)
+
+
+def test_an_objective_the_model_lacks_without_the_text_extra_is_one_line_naming_it(runner, problem, monkeypatch):
+    monkeypatch.setitem(sys.modules, "numpy", None)  # what an import finds when numpy is not installed
+    result = runner.invoke(main, ["score", str(COFFEE_DOMAIN), str(problem), "--objective", "lunch"])
+    assert result.exit_code == ExitCode.USAGE
+    (line,) = [l for l in result.output.splitlines() if l.startswith("relevance-plan:")]
+    assert "unknown objective 'lunch'" in line and "'text' extra" in line and "Traceback" not in result.output
 
 
 def test_insufficient_cues_exit_code_from_plan(runner, problem, tmp_path):

@@ -102,7 +102,7 @@ def test_each_domain_and_first_problem_reads_or_is_a_known_unreadable_one():
 
 def test_training_problems_pair_with_their_test_folders_domain():
     data = manifest()
-    training = [entry for entry in data["folders"] if "training" in entry]
+    training = [entry for entry in data["folders"] + data["sets"] if "training" in entry]
     assert training, "the Taskography training problems are in the manifest"
     for entry in training:
         folder = CORPUS / entry["training"]["path"]
@@ -112,3 +112,19 @@ def test_training_problems_pair_with_their_test_folders_domain():
         (test_domain,) = {e.domain for e in find_suite_problems(CORPUS / entry["path"])}
         assert {e.domain for e in entries} == {test_domain}
         load_problem(entries[0].problem, load_domain(test_domain))
+
+
+def test_benchmark_sets_pair_their_problems_with_the_domain_and_stay_out_of_the_domain_folders():
+    data = manifest()
+    sets = data["sets"]
+    assert {entry["path"].rsplit("/", 1)[1] for entry in sets} >= {
+        "taskographyv4medium5_test",
+        "taskographyv5medium5bagslots5_test",
+    }
+    domain_folders = {entry["path"] for entry in data["folders"]}
+    for entry in sets:
+        assert entry["path"] not in domain_folders
+        entries = find_suite_problems(CORPUS / entry["path"])
+        assert len(entries) == entry["problems"] <= entry["problems_in_source"]
+        assert all(e.error is None and e.domain is not None for e in entries)
+        load_problem(entries[-1].problem, load_domain(entries[-1].domain))

@@ -33,6 +33,7 @@ OTHER_VALUES = {
     "objective": "drink",
     "model_task": "hot",
     "human": "alice",
+    "place_kinds": True,
     "seed": 3,
     "validators": ("up",),
     "planner_args": ("--translate-options", "--keep-unimportant-variables"),

@@ -127,14 +127,46 @@ def test_a_model_of_another_domain_is_refused_in_one_line(model_file, tmp_path):
     assert "learned for domain 'ferry-typed', not 'gripper-typed'" in one_line_error(err)
 
 
-@pytest.mark.parametrize("damage", ["corrupt", "truncated", "other-format"])
-def test_a_damaged_model_file_is_refused_naming_the_file(model_file, tmp_path, damage):
-    text = model_file.read_text()
-    broken = {
-        "corrupt": "\x00\x01 not json",
-        "truncated": text[: len(text) // 2],
-        "other-format": json.dumps({"format": "something-else"}),
+def _damaged(text: str, damage: str) -> str:
+    model = json.loads(text)
+    if damage == "corrupt":
+        return "\x00\x01 not json"
+    if damage == "truncated":
+        return text[: len(text) // 2]
+    if damage == "other-format":
+        return json.dumps({"format": "something-else"})
+    if damage == "deep-nesting":
+        return text.replace('"training": {', '"training": {"deep": ' + "[" * 100_000 + "]" * 100_000 + ", ", 1)
+    changed = {
+        "infinite-weight": ("weights", {**model["weights"], "named": dict.fromkeys(model["weights"]["named"], 1e999)}),
+        "text-for-a-number": ("threshold", "0.5"),
+        "a-bool-for-a-number": ("threshold", True),
+        "features-a-list": ("features", [3, 512]),
+        "iterations-infinite": ("features", {**model["features"], "iterations": 1e999}),
+        "names-not-text": ("seen_types", [1, 2]),
+        "training-a-list": ("training", [1]),
     }[damage]
+    return json.dumps({**model, changed[0]: changed[1]})
+
+
+DAMAGES = [
+    "corrupt",
+    "truncated",
+    "other-format",
+    "deep-nesting",
+    "infinite-weight",
+    "text-for-a-number",
+    "a-bool-for-a-number",
+    "features-a-list",
+    "iterations-infinite",
+    "names-not-text",
+    "training-a-list",
+]
+
+
+@pytest.mark.parametrize("damage", DAMAGES)
+def test_a_damaged_model_file_is_refused_naming_the_file(model_file, tmp_path, damage):
+    broken = _damaged(model_file.read_text(), damage)
     path = write_file(tmp_path, "broken.json", broken)
     problem = write_file(tmp_path, "p.pddl", ferry_text(1)[0])
     code, _, err = run("plan", FERRY, problem, "--scorer", f"learned:{path}")
@@ -142,6 +174,16 @@ def test_a_damaged_model_file_is_refused_naming_the_file(model_file, tmp_path, d
     assert str(path) in one_line_error(err)
     with pytest.raises(ModelError):
         load_learned_model(path)
+
+
+def test_a_missing_model_file_is_exit_31_as_every_missing_file(tmp_path):
+    problem = write_file(tmp_path, "p.pddl", ferry_text(1)[0])
+    for command in ("score", "plan"):
+        for missing in (tmp_path / "nowhere.json", tmp_path):
+            code, _, err = run(command, FERRY, problem, "--scorer", f"learned:{missing}")
+            assert code == 31 and str(missing) in one_line_error(err)
+    code, _, err = run("score", FERRY, problem, "--model", tmp_path / "nowhere.yaml")
+    assert code == 31 and "nowhere.yaml" in one_line_error(err)
 
 
 def test_the_learned_scorer_needs_its_model():
@@ -163,7 +205,7 @@ def test_training_problems_of_another_domain_are_refused_before_planning(tmp_pat
 def test_learn_then_plan_with_the_model_gives_a_plan_valid_on_the_original(tmp_path):
     training = [write_file(tmp_path, f"train{i}.pddl", ferry_text(i)[0]) for i in range(4)]
     model = tmp_path / "ferry.json"
-    code, out, err = run("learn", FERRY, *training, "-o", model, "--time-limit", "30", "-q")
+    code, out, err = run("learn", FERRY, *training, "-o", model, "--timeout", "30", "-q")
     assert code == 0, err
     assert "learned from 4 problems" in out
     loaded = load_learned_model(model)
@@ -181,6 +223,33 @@ def test_learn_then_plan_with_the_model_gives_a_plan_valid_on_the_original(tmp_p
     result = json.loads(out)
     assert result["status"] == "solved" and result["valid"] and result["validation"] == "valid"
     assert result["objects_kept"] < result["objects_total"]
+
+
+GATE_DOMAIN = """(define (domain gate)
+  (:requirements :strips)
+  (:predicates (open) (inside))
+  (:action enter :parameters () :precondition (open) :effect (inside)))
+"""
+GATE_PROBLEM = "(define (problem shut) (:domain gate) (:init) (:goal (inside)))\n"
+
+
+@pytest.mark.planner
+def test_a_training_problem_proved_unsolvable_is_reported_so(tmp_path):
+    domain = write_file(tmp_path, "gate.pddl", GATE_DOMAIN)
+    problem = write_file(tmp_path, "shut.pddl", GATE_PROBLEM)
+    code, _, err = run("learn", domain, problem, "-o", tmp_path / "m.json", "--timeout", "10")
+    assert code == 30 and "not solved within" not in err
+    assert "unsolvable (the planner proved it has no plan)" in err.splitlines()[-1]
+    assert "[1/1]" in err.splitlines()[0] and "skipped (unsolvable" in err.splitlines()[0]
+    assert not (tmp_path / "m.json").exists()
+
+
+@pytest.mark.planner
+def test_solved_training_problems_without_objects_are_nothing_to_learn_from(tmp_path):
+    domain = write_file(tmp_path, "gate.pddl", GATE_DOMAIN)
+    problem = write_file(tmp_path, "open.pddl", GATE_PROBLEM.replace("(:init)", "(:init (open))"))
+    code, _, err = run("learn", domain, problem, "-o", tmp_path / "m.json", "-q", "--timeout", "10")
+    assert code == 30 and "no objects" in one_line_error(err)
 
 
 SHUTTLE_DOMAIN = """(define (domain shuttle)

@@ -47,6 +47,25 @@ def test_too_little_memory_for_the_planner_is_out_of_memory(copied_coffee_files,
         one_line_error(stderr)
 
 
+@pytest.mark.planner
+def test_a_planner_that_dies_under_the_memory_limit_ran_out_of_memory_whatever_it_says(copied_coffee_files, tmp_path):
+    """With its address space capped, a failed allocation can surface as any error (Fast Downward's
+    translator has died of it with "SystemError: error return without exception set", exit 30)."""
+    from support import planner_script
+
+    domain, problem = copied_coffee_files
+    for last_words, code in (("SystemError: error return without exception set", 30), ("Segmentation fault", -11)):
+        body = f"import os, signal, sys\nprint({last_words!r}, flush=True)\n"
+        body += "os.kill(os.getpid(), signal.SIGSEGV)\n" if code < 0 else f"sys.exit({code})\n"
+        script = planner_script(tmp_path, "dying.py", body)
+        plan = ["plan", domain, problem, "-q", "--no-race", "--method", "pure", "--plan-file", tmp_path / "p"]
+        plan += ["--planner", f"cmd:{script} {{domain}} {{problem}}"]
+        exit_code, _, stderr = run(*plan, "--memory-limit", "256")
+        assert exit_code == ExitCode.OUT_OF_MEMORY and "--memory-limit" in one_line_error(stderr), stderr
+        exit_code, _, stderr = run(*plan)  # no limit of the tool's: a crash is a crash
+        assert exit_code == ExitCode.PLANNER, stderr
+
+
 def test_memory_running_out_again_on_the_way_out_is_still_one_line(monkeypatch, copied_coffee_files, capfd):
     from relevance_plan.cli import exits
     from relevance_plan.pddl import parser
@@ -68,6 +87,29 @@ def test_memory_running_out_again_on_the_way_out_is_still_one_line(monkeypatch, 
     assert code == ExitCode.OUT_OF_MEMORY
     assert "out of memory" in one_line_error(capfd.readouterr().err)  # said straight to the descriptor
     assert len(leaving) == 2  # the outer handler ran too, and kept quiet
+
+
+def test_memory_running_out_as_a_system_error_is_out_of_memory(monkeypatch, copied_coffee_files, capfd):
+    """Under ``ulimit -v`` a C function may fail an allocation without saying so; the interpreter then
+    raises SystemError, not MemoryError.  Any other SystemError is not the tool's to explain."""
+    from relevance_plan.cli import exits
+    from relevance_plan.pddl import parser
+
+    def silent_failure(*args, **kwargs):
+        raise SystemError("<function score at 0x7f> returned NULL without setting an exception")
+
+    monkeypatch.setattr(parser, "_read_problem", silent_failure)
+    monkeypatch.setattr(exits, "_said_out_of_memory", False)
+    code, _, _ = run("score", *copied_coffee_files)
+    assert code == ExitCode.OUT_OF_MEMORY
+    assert "out of memory" in one_line_error(capfd.readouterr().err)
+
+    def bug(*args, **kwargs):
+        raise SystemError("a bug")
+
+    monkeypatch.setattr(parser, "_read_problem", bug)
+    with pytest.raises(SystemError, match="a bug"):
+        run("score", *copied_coffee_files)
 
 
 def test_the_loaders_messages_are_out_of_memory():

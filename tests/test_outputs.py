@@ -3,6 +3,7 @@ user's own files, with the existing mode kept, and nothing at all before the opt
 
 from __future__ import annotations
 
+import json
 import os
 import stat
 import subprocess
@@ -10,7 +11,19 @@ import threading
 from pathlib import Path
 
 import pytest
-from support import COFFEE_MODEL, TOOL, one_line_error, planner_script, run
+from support import (
+    COFFEE_MODEL,
+    DOMAINS,
+    PAYING_DOMAIN,
+    PAYING_PROBLEM,
+    TOOL,
+    make_row,
+    one_line_error,
+    planner_script,
+    run,
+    write_file,
+    write_store,
+)
 
 from relevance_plan.exitcodes import ExitCode
 
@@ -98,6 +111,70 @@ def test_dash_writes_to_stdout(copied_coffee_files):
     assert code == 0 and stdout.startswith("(define") and "wrote standard output" in stderr
     code, _, stderr = run("prune", domain, problem, "-o", "-", "--json")
     assert code == ExitCode.USAGE and "--json" in one_line_error(stderr)
+
+
+PURE_AND_RELEVANCE = (make_row("suite", "p01", "pure"), make_row("suite", "p01", "relevance"))
+
+
+def test_dash_is_standard_output_wherever_a_file_goes_and_refused_for_folders_and_stores(tmp_path):
+    store = write_store(
+        tmp_path / "s.sqlite", [make_row("suite", "p01", "pure"), make_row("suite", "p01", "relevance")]
+    )
+    code, stdout, stderr = run("report", store, "--html", "-")
+    assert code == 0 and stdout.startswith("<!DOCTYPE html>") and "| suite |" not in stdout and stderr == ""
+    assert not (tmp_path / "-").exists()
+    code, _, stderr = run("report", store, "--html", "-", "--csv")
+    assert code == ExitCode.USAGE and "--html -" in one_line_error(stderr)
+    for args in (
+        ["report", store, "--plots", "-"],
+        ["generate", "coffee", "--out", "-"],
+        ["compare", tmp_path, "--store", "-"],
+        ["sweep", tmp_path, "--heatmap", "-"],
+        ["demo", "--workdir", "-"],
+    ):
+        code, _, stderr = run(*args)
+        assert code == ExitCode.USAGE and "'-' (standard output)" in one_line_error(stderr), args
+    assert sorted(path.name for path in tmp_path.iterdir()) == ["s.sqlite"]
+
+
+@pytest.mark.planner
+def test_learn_to_stdout_writes_the_model_alone(tmp_path):
+    from relevance_plan.generators.classic import generate_classic_problem
+
+    problem = tmp_path / "train.pddl"
+    problem.write_text(generate_classic_problem("ferry-typed", 0, 0, size=10).pddl_text)
+    code, stdout, stderr = run("learn", DOMAINS / "ferry-typed" / "domain.pddl", problem, "-o", "-", "-q")
+    assert code == 0, stderr
+    assert json.loads(stdout)["format"] == "relevance-plan-learned-model"
+    assert "model written to standard output" in stderr
+
+
+def test_an_output_another_output_of_the_run_writes_is_refused(tmp_path):
+    pytest.importorskip("matplotlib")
+    store = write_store(
+        tmp_path / "s.sqlite", [make_row("suite", "p01", "pure"), make_row("suite", "p01", "relevance")]
+    )
+    plots = tmp_path / "plots"
+    plots.mkdir()
+    (tmp_path / "link.html").symlink_to(plots / "relevance-vs-pure.png")
+    for page in (plots / "cactus.png", plots / "cactus-suite.png", tmp_path / "link.html"):
+        code, _, stderr = run("report", store, "--plots", plots, "--html", page)
+        assert code == ExitCode.USAGE and "would replace the plot" in one_line_error(stderr), page
+        assert list(plots.iterdir()) == []
+
+
+def test_json_output_is_strict_json(tmp_path):
+    """A metric past the largest float is no number JSON has: null, never Infinity."""
+    domain = write_file(tmp_path, "d.pddl", PAYING_DOMAIN)
+    problem = write_file(tmp_path, "p.pddl", PAYING_PROBLEM)
+    plan = write_file(tmp_path, "plan", "(spend a)\n(spend b)\n")
+    code, stdout, _ = run("validate", domain, problem, plan, "--json")
+
+    def refuse(constant: str) -> None:
+        raise AssertionError(f"not JSON: {constant}")
+
+    assert code == 0 and json.loads(stdout, parse_constant=refuse)["metric"] is None
+    assert run("validate", domain, problem, plan)[1].startswith("valid: plan of 2 steps, metric inf")
 
 
 # --------------------------------------------------------------------------- the user's files

@@ -8,6 +8,7 @@ import json
 import pytest
 from support import invoke, write_file
 
+from relevance_plan.errors import counted
 from relevance_plan.io import load_domain, load_problem
 from relevance_plan.pddl.plans import read_plan
 from relevance_plan.planning.loop import plan_cost_of
@@ -85,7 +86,7 @@ def test_plan_prints_the_cost_beside_the_length_and_in_json(tmp_path):
     expected = validate_plan(*task(tmp_path / "check", ROADS, TRIP), written, ("builtin",)).cost
     assert expected in (9, 30)  # home-shop-far or the long road, whichever the planner found
     line = next(line for line in result.stdout.splitlines() if line.startswith("plan:"))
-    assert f"{len(written)} steps, cost {expected:g}," in line
+    assert f"{counted(len(written), 'step')}, cost {expected:g}," in line  # "1 step": the plan is one move
     assert written.cost == expected  # the plan file's cost line says the same
     data = json.loads(
         invoke("plan", domain, problem, "--method", "pure", "--plan-file", tmp_path / "j.plan", "--json").stdout

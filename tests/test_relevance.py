@@ -1,12 +1,13 @@
 """The relevance model's formulas, cue sufficiency, closure rules and scorers on tiny problems."""
 
 import math
+import sys
 
 import pytest
 from support import coffee_problem
 
 from relevance_plan.data import DOMAINS_DIR
-from relevance_plan.errors import ModelError, UsageError
+from relevance_plan.errors import MissingExtraError, ModelError, UsageError
 from relevance_plan.generators.padded import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
 from relevance_plan.generators.sized import generate_sized_problem
 from relevance_plan.io import load_domain
@@ -124,17 +125,25 @@ def test_no_matching_objective_is_insufficient(coffee_domain_path, model):
     assert not result.sufficient and "--objective" in result.insufficiency
 
 
+def test_unknown_names_are_errors(task, model):
+    with pytest.raises(ModelError, match="unknown human 'zed'"):
+        score(task, model, human="zed")
+
+
 @pytest.mark.parametrize(
     "kwargs, match",
     [
-        ({"human": "zed"}, "unknown human 'zed'"),
         ({"objective": "lunch"}, "unknown objective 'lunch'"),
         ({"model_task": "soup"}, "unknown task 'soup'"),
     ],
 )
-def test_unknown_names_are_errors(task, model, kwargs, match):
-    with pytest.raises(ModelError, match=match):
+def test_an_objective_or_task_the_model_lacks_is_free_text_which_needs_the_extra(
+    task, model, kwargs, match, monkeypatch
+):
+    monkeypatch.setitem(sys.modules, "numpy", None)  # what an import finds when numpy is not installed
+    with pytest.raises(MissingExtraError, match=match) as raised:
         score(task, model, **kwargs)
+    assert "'text' extra" in str(raised.value) and "\n" not in str(raised.value)
 
 
 def test_unknown_classes_get_the_default_and_are_listed(coffee_domain_path, model):

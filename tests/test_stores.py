@@ -12,7 +12,7 @@ import subprocess
 from pathlib import Path
 
 import pytest
-from support import REPO, TOOL, make_row
+from support import REPO, TOOL, make_row, one_line_error, run
 
 from relevance_plan.batch.store import ResultStore
 from relevance_plan.exitcodes import ExitCode
@@ -236,3 +236,47 @@ def test_a_full_disk_before_the_index_file_fits_is_one_line_and_changes_nothing(
     wal = store.with_name(store.name + "-wal")
     assert not wal.exists() or wal.stat().st_size == 0
     assert tool("report", store).returncode == 0
+
+
+# --------------------------------------------------------------------------- rows another program wrote
+
+BAD_ROWS = {
+    "wall-time-text": {"wall_time": "abc"},
+    "wall-time-infinite": {"wall_time": float("inf")},
+    "timeout-negative": {"timeout": -5.0},
+    "objects-a-fraction": {"objects_total": 2.5},
+    "status-a-blob": {"status": b"\x00solved"},
+    "config-a-list": {"config_json": "[1, 2]"},
+    "config-not-json": {"config_json": "{'a': 1"},
+    "result-nested-deep": {"result_json": "[" * 100_000 + "]" * 100_000},
+    "seed-empty": {"seed": None},
+}
+
+
+@pytest.mark.parametrize("label", BAD_ROWS)
+def test_a_row_of_the_wrong_kind_is_one_store_error_for_every_reader(tmp_path, label):
+    """Written by another program (SQLite keeps text in a REAL column): every output of report, and
+    learn --store, say which row in one line (exit 36), and leave the store and the folder as they were."""
+    pytest.importorskip("matplotlib")
+    store = tmp_path / "s.sqlite"
+    with ResultStore(store) as writing:
+        writing.add(make_row("suite", "p01", "relevance"))
+    connection = sqlite3.connect(store, isolation_level=None)
+    # NOT NULL columns too: the table is copied without its constraints
+    connection.execute("CREATE TABLE copied AS SELECT * FROM results")
+    connection.execute("DROP TABLE results")
+    connection.execute("ALTER TABLE copied RENAME TO results")
+    row = {**make_row("suite", "p02", "pure"), **BAD_ROWS[label]}
+    columns, marks = ", ".join(row), ", ".join("?" * len(row))
+    connection.execute(f"INSERT INTO results ({columns}) VALUES ({marks})", list(row.values()))
+    connection.close()
+    problem = tmp_path / "p02.pddl"
+    problem.write_text("(define (problem p02) (:domain gripper) (:objects r1) (:init (room r1)) (:goal (room r1)))")
+    before = store.read_bytes()
+    outputs = ([], ["--json"], ["--csv"], ["--format", "latex"], ["--html", tmp_path / "r.html"], ["--plots", tmp_path])
+    for extra in outputs:
+        code, _, stderr = run("report", store, *extra)
+        assert code == ExitCode.STORE and "row 2" in one_line_error(stderr), (extra, stderr)
+    code, _, stderr = run("learn", GRIPPER, problem, "--store", store, "-o", tmp_path / "m.json")
+    assert code == ExitCode.STORE and "row 2" in one_line_error(stderr)
+    assert store.read_bytes() == before and sorted(p.name for p in tmp_path.iterdir()) == ["p02.pddl", "s.sqlite"]

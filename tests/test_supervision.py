@@ -7,6 +7,7 @@ import os
 import signal
 import subprocess
 import sys
+import tempfile
 import threading
 import time
 from concurrent.futures import ThreadPoolExecutor
@@ -230,3 +231,36 @@ def test_a_forked_group_that_is_gone_counts_as_exited():
     copy = process.ForkedGroup(2**22 + 1)  # above Linux's largest pid: never a process
     assert copy.exited()
     copy.stop()  # nothing to kill, and no error
+
+
+# --------------------------------------------------------------------------- the planner's temporary files
+
+LITTERING = """
+    import os, sys, tempfile, time
+    os.close(tempfile.mkstemp(prefix="engine-log-")[0])  # delete=False, as up_aries logs
+    os.makedirs(os.path.join(tempfile.mkdtemp(), "copies"))  # as ENHSP's wrapper copies the files
+    print(os.environ["TMPDIR"], flush=True)
+    time.sleep(float(sys.argv[1]))
+"""
+
+
+@pytest.mark.parametrize("sleep, stopped", [(0.0, False), (30.0, True)])
+def test_what_a_planner_leaves_in_the_temporary_folder_goes_with_its_run(tmp_path, monkeypatch, sleep, stopped):
+    """The planner's $TMPDIR is a folder of its run's own: it ends empty whether the planner exits, or
+    is killed by the watchdog before it could clean up."""
+    from support import planner_script
+
+    from relevance_plan.planning.planners.command import CommandPlanner
+
+    temporary = tmp_path / "tmp"
+    temporary.mkdir()
+    monkeypatch.setenv("TMPDIR", str(temporary))
+    monkeypatch.setattr(tempfile, "tempdir", str(temporary))  # the tool's own folders go there too
+    script = planner_script(tmp_path, "littering.py", LITTERING)
+    planner = CommandPlanner(f"{script} {sleep} {{domain}} {{problem}}")
+    domain = write_file(tmp_path, "d.pddl", SMALL_GRIPPER_DOMAIN)
+    outcome = planner.run(str(domain), str(domain), time_limit=1.0, memory_limit_mb=None)
+    assert outcome.killed_by_watchdog is stopped
+    planners = outcome.log_tail.splitlines()[0]
+    assert planners != str(temporary) and not os.path.exists(planners)  # the run's own, gone with it
+    assert list(temporary.iterdir()) == []

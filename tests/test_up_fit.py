@@ -328,6 +328,57 @@ def test_auto_does_not_count_on_a_rewrite_that_depends_on_values():
     assert f.HIERARCHICAL_TYPING in auto.TAMER.takes
 
 
+# --------------------------------------------------------------------------- values never set
+
+# A counter the problem never sets, which `bump` increases: the tool's validator (and VAL) count it
+# from 0, so bump, bump, finish is a plan; `check` reads it before any bump, which nothing can.
+COUNTER_DOMAIN = """(define (domain counting)
+  (:requirements :typing :numeric-fluents)
+  (:types box)
+  (:predicates (done) (ready ?b - box))
+  (:functions (counter) (reading))
+  (:action bump :parameters (?b - box) :precondition (ready ?b) :effect (and (increase (counter) 1)))
+  (:action finish :parameters (?b - box) :precondition (>= (counter) 2) :effect (and (done)))
+  (:action check :parameters (?b - box) :precondition (>= (reading) 0) :effect (and (done))))
+"""
+COUNTER_PROBLEM = "(define (problem count-1) (:domain counting) (:objects b - box) (:init (ready b)) (:goal (done)))"
+
+
+def test_a_value_never_set_that_effects_increase_starts_from_zero_for_every_engine(tmp_path):
+    files = write_errand(tmp_path, COUNTER_DOMAIN, COUNTER_PROBLEM)
+    for engine in ("enhsp", "tamer", "aries"):
+        fitted, _ = fitted_for(engine, *files)
+        problem = fitted.problem
+        assert problem.initial_value(problem.fluent("counter")()).constant_value() == 0, engine
+        assert "counted counter from 0 where the problem leaves it unset" in fitted.notes
+    enhsp, _ = fitted_for("enhsp", *files)  # takes undefined values: one only read stays undefined
+    assert enhsp.problem.initial_value(enhsp.problem.fluent("reading")()) is None
+
+
+@pytest.mark.planner
+@pytest.mark.parametrize("engine", ["enhsp", "tamer"])
+def test_plan_and_validate_agree_on_a_value_never_set(tmp_path, engine):
+    """The planner route and the validator share one convention: the plan they find, validate takes."""
+    engine_installed(engine)
+    domain, problem = write_errand(tmp_path, COUNTER_DOMAIN, COUNTER_PROBLEM)
+    plan = tmp_path / "plan.txt"
+    code, stdout, stderr = run("plan", domain, problem, "--planner", f"up:{engine}", "--no-race", "--json",
+                               "--plan-file", plan)  # fmt: skip
+    assert code == 0, stderr
+    assert json.loads(stdout)["status"] == "solved" and "bump" in plan.read_text()
+    assert run("validate", domain, problem, plan)[0] == 0
+    # a value only read is undefined for both: no plan from the planner, none accepted by validate
+    reading = COUNTER_DOMAIN.replace("(increase (counter) 1)", "(increase (counter) 0)").replace(
+        "(>= (counter) 2)", "(>= (reading) 1)"
+    )
+    domain.write_text(reading)
+    code, stdout, _ = run("plan", domain, problem, "--planner", f"up:{engine}", "--no-race", "--json", "-q",
+                          "--plan-file", plan)  # fmt: skip
+    assert code != 0 and json.loads(stdout)["status"] in ("unsolvable", "unsupported", "no-valid-plan")
+    plan.write_text("(check b)\n")
+    assert run("validate", domain, problem, plan)[0] == 13
+
+
 # --------------------------------------------------------------------------- solving
 
 

@@ -264,3 +264,17 @@ def test_a_strict_comparison_between_equal_values_fails_where_val_lets_it_pass(t
     assert val.valid  # a VAL quirk, documented in docs/validation.md
     builtin, val = judged(1, 2)
     assert builtin.valid and val.valid
+
+
+def test_val_judges_a_plan_already_found_whatever_stops_the_planners(cost_task):
+    """The race stops the other side's planners through the cancel scope of their thread; VAL, judging
+    a plan that side found, is not one of them (when it was, a plan of builtin,val was judged by
+    builtin alone whenever the other side decided first)."""
+    from relevance_plan.supervision.process import CancelScope, cancel_scope
+    from relevance_plan.supervision.val import run_val
+
+    stopped = CancelScope()
+    stopped.cancel()
+    with cancel_scope(stopped):
+        run = run_val(str(cost_task / "domain.pddl"), str(cost_task / "problem.pddl"), (cost_task / "plan").read_text())
+    assert run.exit_code == 0 and "Plan valid" in run.output

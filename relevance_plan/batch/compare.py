@@ -27,7 +27,7 @@ from relevance_plan.batch.executors import (
 )
 from relevance_plan.batch.jobs import Job, build_jobs
 from relevance_plan.batch.store import ResultKey, ResultStore, check_store_writable
-from relevance_plan.errors import UsageError
+from relevance_plan.errors import UsageError, counted
 from relevance_plan.limits import DEFAULT_TIMEOUT, MAX_TIMEOUT
 from relevance_plan.planning.loop import PlanOptions
 from relevance_plan.planning.planners.registry import make_planner
@@ -51,7 +51,7 @@ class CompareSummary:
     def describe(self) -> str:
         counts = ", ".join(f"{count} {status}" for status, count in sorted(self.statuses.items()))
         return (
-            f"{self.total} jobs: {self.already_stored} already stored, {self.ran} run"
+            f"{counted(self.total, 'job')}: {self.already_stored} already stored, {self.ran} run"
             + (f" ({counts})" if counts else "")
             + f" in {self.elapsed:.1f} s; results in {self.store_path}"
         )

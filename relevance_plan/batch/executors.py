@@ -20,6 +20,8 @@ from __future__ import annotations
 import concurrent.futures
 import contextlib
 import re
+import socket
+import struct
 import threading
 import time
 from collections.abc import Callable, Sequence
@@ -93,16 +95,77 @@ def _stop_local(pool: concurrent.futures.ThreadPoolExecutor, futures: Sequence[c
 
 
 def connect_scheduler(address: str, timeout: float = DEFAULT_SCHEDULER_TIMEOUT):
-    """A ``dask.distributed.Client`` for ``address``; ``SchedulerError`` when unreachable or Dask is missing."""
+    """A ``dask.distributed.Client`` for ``address``; ``SchedulerError`` when unreachable, when what
+    answers there is not a Dask scheduler, or when Dask is missing."""
     try:
         from dask.distributed import Client
     except ImportError:
         raise SchedulerError(f"Dask is not installed: {DASK_INSTALL_HINT}") from None
+    started = time.monotonic()
+    check_scheduler_greeting(address, timeout)
+    left = max(timeout - (time.monotonic() - started), 0.1)
     try:
-        return Client(address, timeout=timeout, set_as_default=False)
-    except (OSError, TimeoutError, ValueError) as error:
+        return _closed_on_failure(Client)(address, timeout=left, set_as_default=False)
+    except MemoryError:  # an answer read as a message of exabytes
+        raise SchedulerError(f"the server at {address} is not a Dask scheduler (its answer is not Dask's)") from None
+    except Exception as error:  # whatever else Dask's client makes of the answer, it is one line here
         detail = " ".join(str(error).split()) or type(error).__name__
         raise SchedulerError(f"cannot reach the Dask scheduler at {address}: {detail}") from None
+
+
+# A Dask scheduler greets a new connection with one message: its length in 8 bytes (struct "Q", as
+# Dask writes it), then the message, a few hundred bytes.  A length past this is not Dask's: read
+# as one, it would have the client allocate it (a port answering text asks for exabytes).
+_GREETING_LIMIT = 64 * 2**20
+_PLAIN_TCP = re.compile(r"^(?:tcp://)?([^\s/:\[\]]+):(\d+)$")
+
+
+def check_scheduler_greeting(address: str, timeout: float) -> None:
+    """``SchedulerError`` when the server at a plain TCP ``address`` greets with something that is not
+    Dask's (text, a web page), or says nothing within ``timeout`` seconds (a scheduler greets at
+    once).  A server that cannot be reached, or closes the connection, is left to Dask's client to
+    report; so are other protocols."""
+    found = _PLAIN_TCP.match(address)
+    if found is None:
+        return
+    host, port = found.group(1), int(found.group(2))
+    deadline = time.monotonic() + timeout
+    try:
+        connection = socket.create_connection((host, port), timeout=timeout)
+    except (OSError, ValueError):
+        return
+    greeting = b""
+    with connection:
+        try:
+            while len(greeting) < 8:
+                connection.settimeout(max(deadline - time.monotonic(), 0.01))
+                chunk = connection.recv(8 - len(greeting))
+                if not chunk:
+                    return
+                greeting += chunk
+        except TimeoutError:
+            raise SchedulerError(f"the server at {address} did not greet as Dask does within {timeout:g} s") from None
+        except OSError:
+            return
+    if struct.unpack("Q", greeting)[0] > _GREETING_LIMIT:
+        raise SchedulerError(f"the server at {address} is not a Dask scheduler (it answers {greeting!r}...)")
+
+
+def _closed_on_failure(client_class):
+    """Dask's client, made to end closed when its start fails: collected later, it has nothing left to
+    close (Dask's own would try again, time out, and print a traceback after the tool's line)."""
+
+    class Client(client_class):
+        def start(self, **kwargs):
+            try:
+                return super().start(**kwargs)
+            except BaseException:
+                with contextlib.suppress(Exception):
+                    self._loop_runner.stop()
+                self.status = "closed"
+                raise
+
+    return Client
 
 
 def _terminate_worker_runs() -> None:

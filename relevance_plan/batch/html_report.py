@@ -15,7 +15,7 @@ from typing import Any
 
 from relevance_plan import __version__
 from relevance_plan.batch.report import build_report, report_notes, report_table, suite_labels
-from relevance_plan.errors import UsageError
+from relevance_plan.errors import UsageError, counted
 
 _STYLE = """
 body { font-family: sans-serif; margin: 2em; color: #222; max-width: 70em; }
@@ -46,6 +46,12 @@ def _figures(rows: Sequence[dict[str, Any]]) -> tuple[dict[str | None, str], str
     except UsageError as error:
         return {}, str(error)
     return {key: _SVG_METADATA.sub("", svg) for key, svg in report_svgs(rows).items()}, ""
+
+
+def _unplotted(rows: Sequence[dict[str, Any]]) -> str:
+    from relevance_plan.batch.plots import unplotted_note
+
+    return unplotted_note(row["suite"] for row in rows)
 
 
 def _table_html(methods: Sequence[str], label: str, lines: Sequence[tuple[str, Sequence[str]]]) -> list[str]:
@@ -79,13 +85,15 @@ def format_html(rows: Sequence[dict[str, Any]], title: str = "relevance-plan rep
         f"<style>{_STYLE}</style>",
         "</head><body>",
         f"<h1>{_text(title)}</h1>",
-        f'<p class="note">{len(rows)} jobs in {len({r["suite"] for r in rows})} suites;'
+        f'<p class="note">{counted(len(rows), "job")} in {counted(len({r["suite"] for r in rows}), "suite")};'
         f" written by relevance-plan {_text(__version__)}.</p>",
     ]
     if not rows:
         out.append("<p>no results</p>")
     if missing:
         out.append(f'<p class="note">No figures: {_text(missing)}</p>')
+    elif svgs and (unplotted := _unplotted(rows)):
+        out.append(f'<p class="note">{_text(unplotted.capitalize())}.</p>')
     if None in svgs:
         out.append("<section><h2>All suites</h2>")
         out += _figure_html(svgs[None], "Solved problems within a time, all suites")

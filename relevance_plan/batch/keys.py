@@ -106,6 +106,7 @@ FINGERPRINT_RULES: dict[str, str] = {
     "objective": "pruning",
     "model_task": "pruning",
     "human": "pruning",
+    "place_kinds": "derived",  # when on (keys of runs without it stay as they were)
 }
 
 
@@ -137,6 +138,8 @@ def config_fingerprint(options: PlanOptions, domain_path: str | None, problem_pa
         config["planner_args"] = list(options.planner_args)
     if options.race:
         config["race"] = True
+    if options.place_kinds and pruning:
+        config["place_kinds"] = True
     if pruning:
         config["tau_class"] = float(options.thresholds.tau_class)
         config["tau_element"] = float(options.thresholds.tau_element)

@@ -27,11 +27,11 @@ from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, replace
 from pathlib import Path
 
-from relevance_plan.errors import DomainMismatchError, UsageError
+from relevance_plan.errors import DomainMismatchError, PlanFormatError, UsageError
 from relevance_plan.io import load_domain, load_problem, write_text_atomic
 from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.plans import Plan
-from relevance_plan.planning.planners.base import PlannerStatus
+from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome
 from relevance_plan.planning.planners.registry import DEFAULT_PLANNER_CONFIG, make_planner
 from relevance_plan.planning.validate import validate_plan
 from relevance_plan.relevance.learning.features import FeatureConfig, object_features
@@ -83,7 +83,9 @@ class Solver:
         self.scratch = scratch
         self.runs = 0
 
-    def solve(self, task: PlanningTask, problem_path: str, kept: frozenset[str] | None = None) -> Plan | None:
+    def solve(self, task: PlanningTask, problem_path: str, kept: frozenset[str] | None = None) -> Plan | str:
+        """A plan of the problem (of ``kept`` only, when given), valid on the original problem; or why
+        there is none."""
         target = problem_path
         if kept is not None:
             from relevance_plan.pddl.writer import write_pruned_problem
@@ -96,9 +98,17 @@ class Solver:
             )
         outcome = self.planner.run(self.domain_path, target, time_limit=self.time_limit, memory_limit_mb=None)
         if outcome.status is not PlannerStatus.SOLVED:
-            return None
+            return self.unsolved(outcome)
         validation = validate_plan(task.domain, task.problem, outcome.plan, None, time.monotonic() + self.time_limit)
-        return outcome.plan if validation.accepted else None
+        return outcome.plan if validation.accepted else f"its plan is not valid ({validation.message})"
+
+    def unsolved(self, outcome: RunOutcome) -> str:
+        """Why a run gave no plan, in the planner's verdict: a proof that there is none is not a timeout."""
+        if outcome.status is PlannerStatus.UNSOLVABLE:
+            return "unsolvable (the planner proved it has no plan)"
+        if outcome.status is PlannerStatus.OUT_OF_TIME:
+            return f"not solved within {self.time_limit:g} s"
+        return f"not solved: {outcome.status.value}" + (f" ({outcome.reason})" if outcome.reason else "")
 
 
 def minimal_objects(
@@ -115,7 +125,7 @@ def minimal_objects(
         trial = closed(task, current - {name})
         if name in trial:
             continue  # closure puts it back: the pruner could not drop it either
-        if solver.solve(task, problem_path, trial) is not None:
+        if isinstance(solver.solve(task, problem_path, trial), Plan):
             current = trial
     return current
 
@@ -153,8 +163,8 @@ def label_problem(
     task = PlanningTask(domain, load_problem(problem_path, domain))
     runs_before = solver.runs
     plan = solver.solve(task, problem_path)
-    if plan is None:
-        return f"not solved within {solver.time_limit:g} s"
+    if isinstance(plan, str):
+        return plan
     positives = plan_objects(task, plan)
     if labels == "minimal":
         positives = minimal_objects(task, problem_path, positives, solver, seed)
@@ -219,7 +229,11 @@ def _report(
     started: float,
 ) -> LearnReport:
     if not labelled:
-        raise UsageError("no training problem was solved: nothing to learn from (raise --time-limit?)")
+        path, why = skipped[0] if skipped else ("", "")
+        more = f" (and {len(skipped) - 1} more)" if len(skipped) > 1 else ""
+        raise UsageError(f"no training problem was solved, nothing to learn from: {path}: {why}{more}")
+    if not any(problem.vectors for problem in labelled):
+        raise UsageError("the solved training problems have no objects: nothing to learn from")
     model = fit_learned_model(domain, labelled, config, labels, seed)
     seconds = time.perf_counter() - started
     training = dict(model.training, seconds=round(seconds, 2))
@@ -255,8 +269,8 @@ def learn_from_store(
         path = by_name.get((row["suite"], row["problem"]))
         if path is None or path in plans or row["status"] != "solved" or not row["valid"]:
             continue
-        steps = json.loads(row["result_json"]).get("plan") or []
-        if steps:
+        steps = json.loads(row["result_json"]).get("plan") or []  # an object: the store checked its rows
+        if isinstance(steps, list) and steps and all(isinstance(step, str) for step in steps):
             plans[path] = "\n".join(steps)
     config = with_hubs(config, domain, [_check_domain(domain, path) for path in plans])
     labelled: list[LabelledProblem] = []
@@ -266,7 +280,11 @@ def learn_from_store(
         for number, (path, text) in enumerate(sorted(plans.items()), 1):
             begun = time.perf_counter()
             task = PlanningTask(domain, load_problem(path, domain))
-            plan = read_plan(text)
+            try:
+                plan = read_plan(text)
+            except PlanFormatError:
+                skipped.append((path, "its stored plan is not a plan"))
+                continue
             if not validate_plan(task.domain, task.problem, plan, None, time.monotonic() + time_limit).accepted:
                 skipped.append((path, "its stored plan is not valid on the problem"))
                 continue

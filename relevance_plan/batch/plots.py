@@ -10,11 +10,12 @@ replace it.
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import io
 import os
 import re
-from collections.abc import Sequence
+from collections.abc import Callable, Iterable, Sequence
 from pathlib import Path
 from typing import Any
 
@@ -143,11 +144,30 @@ def _file_part(suite: str) -> str:
     return re.sub(r"[^A-Za-z0-9._-]+", "-", suite).strip(".-") or "suite"
 
 
+# A store of more suites than this gets the two plots of all suites only (``--suite NAME`` draws one
+# suite's): a cactus per suite of thousands of suites would take minutes and gigabytes to draw.
+MAX_SUITE_PLOTS = 200
+
+
+def plotted_suites(suites: Iterable[str]) -> list[str]:
+    """The suites that get a cactus plot of their own: all of them, unless there are too many."""
+    found = sorted(set(suites))
+    return found if len(found) <= MAX_SUITE_PLOTS else []
+
+
+def unplotted_note(suites: Iterable[str]) -> str:
+    """Why no suite got a plot of its own ('' when each did)."""
+    count = len(set(suites))
+    if count <= MAX_SUITE_PLOTS:
+        return ""
+    return f"no plot per suite: {count} suites, more than {MAX_SUITE_PLOTS} (--suite NAME draws one suite's)"
+
+
 def plot_names(suites: Sequence[str], fmt: str = "png") -> dict[str | None, str]:
-    """The file name of each cactus plot (None: all suites; then each suite) and of the scatter ("")."""
+    """The file name of each cactus plot (None: all suites; then each plotted suite) and of the scatter ("")."""
     names: dict[str | None, str] = {None: f"cactus.{fmt}", "": f"relevance-vs-pure.{fmt}"}
     taken = set(names.values())
-    for suite in sorted(set(suites)):
+    for suite in plotted_suites(suites):
         name = f"cactus-{_file_part(suite)}.{fmt}"
         if name in taken:  # two suites that differ only in characters a file name leaves out
             name = f"cactus-{_file_part(suite)}-{hashlib.sha256(suite.encode()).hexdigest()[:8]}.{fmt}"
@@ -183,13 +203,14 @@ def check_plot_targets(
     return targets
 
 
-def report_figures(rows: Sequence[dict[str, Any]]) -> dict[str | None, Any]:
-    """The report's figures keyed as ``plot_names``: the cactus of all suites (None), the scatter (""),
-    then a cactus per suite."""
+def report_figures(rows: Sequence[dict[str, Any]]) -> dict[str | None, Callable[[], Any]]:
+    """How to draw each of the report's figures, keyed as ``plot_names``: the cactus of all suites (None),
+    the scatter (""), then a cactus per plotted suite.  Each is drawn when called, so that one figure
+    at a time is alive."""
     rows = list(rows)
-    figures: dict[str | None, Any] = {None: _cactus(rows), "": _scatter(rows)}
-    for suite in sorted({r["suite"] for r in rows}):
-        figures[suite] = _cactus([r for r in rows if r["suite"] == suite], suite)
+    figures: dict[str | None, Callable[[], Any]] = {None: lambda: _cactus(rows), "": lambda: _scatter(rows)}
+    for suite in plotted_suites(r["suite"] for r in rows):
+        figures[suite] = functools.partial(_cactus, [r for r in rows if r["suite"] == suite], suite)
     return figures
 
 
@@ -214,7 +235,7 @@ def write_plots(
     suites = sorted({r["suite"] for r in rows})
     check_plot_targets(directory, store, fmt, suites)
     names = plot_names(suites, fmt)
-    drawn = {key: render(figure, fmt, dpi) for key, figure in report_figures(rows).items()}
+    drawn = {key: render(draw(), fmt, dpi) for key, draw in report_figures(rows).items()}
     try:
         directory.mkdir(parents=True, exist_ok=True)
     except OSError as error:
@@ -243,8 +264,8 @@ def report_svgs(rows: Sequence[dict[str, Any]]) -> dict[str | None, str]:
     """The report's figures (keyed as ``report_figures``) as inline SVG elements."""
     require_matplotlib("SVG figures")
     return {
-        key: inline_svg(render(figure, "svg"), f"figure{index}")
-        for index, (key, figure) in enumerate(report_figures(rows).items())
+        key: inline_svg(render(draw(), "svg"), f"figure{index}")
+        for index, (key, draw) in enumerate(report_figures(rows).items())
     }
 
 

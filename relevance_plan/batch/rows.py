@@ -22,23 +22,34 @@ def _now() -> str:
 
 def result_row(job_columns: Mapping[str, Any], result: PlanResult) -> dict[str, Any]:
     """The store row of a finished ``plan_task``; ``job_columns`` are the job's own."""
-    data = result.to_json()
+    row = row_from_json(job_columns, result.to_json())
+    # the result's own figures, unrounded (the JSON rounds them)
+    return {
+        **row,
+        "wall_time": result.wall_time,
+        "relevance_time": result.relevance_time,
+        "planner_time": result.planner_time,
+    }
+
+
+def row_from_json(job_columns: Mapping[str, Any], data: Mapping[str, Any]) -> dict[str, Any]:
+    """The store row of a run from its ``plan --json`` output (a benchmark that runs the command)."""
     log = data["attempt_log"]
     return {
         **job_columns,
         "status": data["status"],
         "valid": int(bool(data["valid"])),
         "exit_code": log[-1]["planner_exit_code"] if log else None,
-        "wall_time": result.wall_time,
-        "relevance_time": result.relevance_time,
-        "planner_time": result.planner_time,
-        "objects_total": result.objects_total,
-        "objects_kept": result.objects_kept,
-        "attempts": len(result.attempts),
+        "wall_time": data["wall_time"],
+        "relevance_time": data["relevance_time"],
+        "planner_time": data["planner_time"],
+        "objects_total": data["objects_total"],
+        "objects_kept": data["objects_kept"],
+        "attempts": len(log),
         "first_attempt_status": data["first_attempt_status"],
         "plan_length": data["plan_length"],
-        "plan_cost": result.plan_cost if result.status is PlanStatus.SOLVED else None,
-        "message": result.message,
+        "plan_cost": data["plan_cost"] if data["status"] == PlanStatus.SOLVED.value else None,
+        "message": data["message"],
         "finished_at": _now(),
         "result_json": json.dumps(data, sort_keys=True),
     }

@@ -35,6 +35,7 @@ created by the failing run is removed again.
 from __future__ import annotations
 
 import contextlib
+import math
 import os
 import sqlite3
 import stat
@@ -43,6 +44,7 @@ from typing import Any, NamedTuple
 
 from relevance_plan import __version__
 from relevance_plan.errors import InputFileError, StoreError
+from relevance_plan.io import parse_json
 
 SCHEMA_VERSION = 2
 OLDEST_SCHEMA_VERSION = 1  # the oldest a store may have to be read, or migrated when written to
@@ -88,10 +90,11 @@ DATA_COLUMNS: tuple[tuple[str, str], ...] = (
 )
 
 COLUMNS: tuple[str, ...] = KEY_COLUMNS + tuple(name for name, _ in DATA_COLUMNS)
+KEY_DECLARED: tuple[tuple[str, str], ...] = tuple((name, "TEXT NOT NULL") for name in KEY_COLUMNS)
 
 _CREATE_RESULTS = (
     "CREATE TABLE results (\n"
-    + "".join(f"    {name} TEXT NOT NULL,\n" for name in KEY_COLUMNS)
+    + "".join(f"    {name} {kind},\n" for name, kind in KEY_DECLARED)
     + "".join(f"    {name} {kind},\n" for name, kind in DATA_COLUMNS)
     + f"    PRIMARY KEY ({', '.join(KEY_COLUMNS)})\n)"
 )
@@ -424,14 +427,26 @@ class ResultStore:
         return cursor.rowcount == 1
 
     def rows(self, suite: str | None = None) -> list[dict[str, Any]]:
-        """Stored rows (with their ``rowid``) in insertion order, optionally of one suite."""
+        """Stored rows (with their ``rowid``) in insertion order, optionally of one suite.
+
+        Each row is checked against the declared columns before anyone uses it (``check_row``): a
+        row another program wrote, with text for a time or a list for its options, is a
+        ``StoreError`` naming the row, never a crash of the report.
+        """
         query = "SELECT rowid, * FROM results"
         parameters: tuple = ()
         if suite is not None:
             query += " WHERE suite = ?"
             parameters = (suite,)
         unknown = dict.fromkeys(self.missing_columns)
-        return [{**dict(row), **unknown} for row in self._query(query + " ORDER BY rowid", parameters)]
+        rows = [{**dict(row), **unknown} for row in self._query(query + " ORDER BY rowid", parameters)]
+        for row in rows:
+            problem = check_row(row, self.missing_columns)
+            if problem:
+                raise StoreError(
+                    f"row {row['rowid']} is not a result row of relevance-plan: {problem}", path=str(self.path)
+                )
+        return rows
 
     def __len__(self) -> int:
         return self._query("SELECT COUNT(*) FROM results")[0][0]
@@ -454,6 +469,55 @@ class ResultStore:
         self.close()
         if discard:
             self._remove_files()
+
+
+# Columns whose numbers cannot be negative (times, counts); every stored number is finite.
+_NOT_NEGATIVE = frozenset(
+    {
+        "wall_time",
+        "relevance_time",
+        "planner_time",
+        "timeout",
+        "objects_total",
+        "objects_kept",
+        "attempts",
+        "plan_length",
+    }
+)
+# Columns holding a JSON object.
+JSON_COLUMNS = ("config_json", "result_json")
+
+
+def check_row(row: dict[str, Any], missing: tuple[str, ...] = ()) -> str:
+    """What is wrong with a stored row ('' when nothing): each column of the kind its declared SQL type
+    says (``missing``: columns an older store lacks, None), the JSON columns JSON objects."""
+    for name, declared in KEY_DECLARED + DATA_COLUMNS:
+        value = row.get(name)
+        kind = declared.split()[0]
+        if value is None:
+            if "NOT NULL" in declared and name not in missing:
+                return f"{name} is empty"
+            continue
+        if kind == "TEXT" and not isinstance(value, str):
+            return f"{name} is {value!r}, not text"
+        if kind in ("INTEGER", "REAL") and not _number(value, integer=kind == "INTEGER"):
+            return f"{name} is {str(value)[:40]!r}, not {'an integer' if kind == 'INTEGER' else 'a finite number'}"
+        if name in _NOT_NEGATIVE and value < 0:
+            return f"{name} is {value!r}, below 0"
+    for name in JSON_COLUMNS:
+        try:
+            found = parse_json(row[name])
+        except ValueError as error:
+            return f"{name} is not JSON ({error})"
+        if not isinstance(found, dict):
+            return f"{name} is not a JSON object"
+    return ""
+
+
+def _number(value: Any, integer: bool) -> bool:
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        return False
+    return isinstance(value, int) if integer else math.isfinite(value)
 
 
 def _version_number(text: str | None) -> int | None:

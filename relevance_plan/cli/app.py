@@ -7,7 +7,6 @@ from __future__ import annotations
 
 import functools
 import importlib
-import json
 import sys
 import time
 from pathlib import Path
@@ -20,10 +19,12 @@ from relevance_plan.cli.common import (
     file_option,
     handle_errors,
     json_option,
+    json_text,
     keep_work_option,
     method_option,
     planning_options,
     quiet_option,
+    race_option,
     scoring_options,
     take_plan_options,
     take_scoring,
@@ -31,7 +32,8 @@ from relevance_plan.cli.common import (
     write_plan_files,
 )
 from relevance_plan.cli.exits import ToolGroup
-from relevance_plan.errors import UnsupportedFeatureError, UsageError
+from relevance_plan.cli.numbers import DISTRACTORS, OBJECTS, SEED, SUITE_SIZE
+from relevance_plan.errors import RelevancePlanError, UnsupportedFeatureError, UsageError, counted
 from relevance_plan.exitcodes import EXIT_CODE_DESCRIPTIONS, ExitCode, exit_code_for_status
 from relevance_plan.pddl.formatter import format_number
 from relevance_plan.planning.loop import plan_task
@@ -53,30 +55,6 @@ def _score_and_prune(domain_path, problem_path, options: ScoringOptions) -> tupl
         return scoring, scoring.first_selection()
 
 
-def _prune_json(result: Selection) -> dict:
-    problem = result.task.problem
-    scores = result.scores
-    return {
-        **result.describe(),
-        "scorer": scores.scorer,
-        "sufficient": scores.sufficient,
-        "insufficiency": scores.insufficiency or None,
-        "objective": scores.objective,
-        "tasks": scores.task_distribution,
-        "task_entropy": scores.task_entropy,
-        "tau_class": result.thresholds.tau_class,
-        "tau_element": result.thresholds.tau_element,
-        "selected": [problem.display(n) for n in problem.objects if n in result.selected],
-        "scores": {problem.display(n): round(s, 6) for n, s in scores.element_scores.items()},
-        "classes": {
-            c: {"relevance": round(s, 6), "kept": s > result.thresholds.tau_class}
-            for c, s in scores.class_scores.items()
-        },
-        "element_class": {problem.display(n): c for n, c in scores.element_class.items()},
-        "unknown_class": [problem.display(n) for n in scores.unknown],
-    }
-
-
 # Commands in modules of their own, imported when one of them is asked for: ``plan`` does without them.
 LAZY_COMMANDS = {
     "compare": "relevance_plan.cli.batch",
@@ -86,6 +64,7 @@ LAZY_COMMANDS = {
     "watch": "relevance_plan.cli.watch",
     "learn": "relevance_plan.cli.batch",
     "validate": "relevance_plan.cli.validate",
+    "draft-model": "relevance_plan.cli.draft",
 }
 
 
@@ -99,7 +78,7 @@ class _Commands(ToolGroup):
         if cmd_name not in self.commands and cmd_name in LAZY_COMMANDS:
             from relevance_plan.cli.paths import own_command_path_checks
 
-            command = getattr(importlib.import_module(LAZY_COMMANDS[cmd_name]), cmd_name)
+            command = getattr(importlib.import_module(LAZY_COMMANDS[cmd_name]), cmd_name.replace("-", "_"))
             own_command_path_checks(command)
             self.add_command(command)
         return super().get_command(ctx, cmd_name)
@@ -116,7 +95,13 @@ class _Commands(ToolGroup):
 @click.group(cls=_Commands, context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, prog_name="relevance-plan")
 def main():
-    """Relevance-based pruning for PDDL planning: score, prune, plan, validate."""
+    """Relevance-based pruning for PDDL planning: score, prune, plan, validate.
+
+    Fast Downward, the default planner, comes compiled inside the up-fast-downward
+    wheel (its downward/fast-downward.py; $RELEVANCE_PLAN_FAST_DOWNWARD names another):
+    'relevance-plan planners' prints where.  Shell completion:
+    eval "$(_RELEVANCE_PLAN_COMPLETE=bash_source relevance-plan)" (zsh_source, fish_source).
+    """
 
 
 # --------------------------------------------------------------------------- generate
@@ -125,13 +110,20 @@ def main():
 @main.command()
 @click.argument("world", type=str)
 @click.option("--difficulty", default="simple", show_default=True, help="Kitchen worlds: simple or hard.")
-@click.option("--count", type=int, default=10, show_default=True, help="Number of problems.")
-@click.option("--seed", type=int, default=0, show_default=True)
-@file_option("--out", "out_dir", folder=True, required=True, help="Suite directory to write.")
-@click.option("--distractors", type=int, default=None, help="Kitchen worlds: override the paper's distractor count.")
+@click.option("--count", type=SUITE_SIZE, default=10, show_default=True, help="Number of problems.")
+@click.option("--seed", type=SEED, default=0, show_default=True)
+@file_option(
+    "--out", "-o", "--output", "out_dir", folder=True, required=True, help="Suite directory to write (-o as elsewhere)."
+)
+@click.option(
+    "--distractors",
+    type=DISTRACTORS,
+    default=None,
+    help="Kitchen worlds: override the paper's distractor count.",
+)
 @click.option(
     "--size",
-    type=int,
+    type=OBJECTS,
     default=None,
     help="Classic and other sized worlds: about how many objects per problem"
     " (default: a size where pure planning takes seconds to a minute).",
@@ -173,7 +165,7 @@ def generate(world, difficulty, count, seed, out_dir, distractors, size, force):
             paths = write(
                 world, difficulty, count, seed, Path(out_dir), distractors=distractors, progress=bar, force=force
             )
-    click.echo(f"wrote {len(paths)} problems to {out_dir}")
+    click.echo(f"wrote {counted(len(paths), 'problem')} to {out_dir}")
 
 
 # --------------------------------------------------------------------------- score / prune
@@ -183,20 +175,37 @@ def generate(world, difficulty, count, seed, out_dir, distractors, size, force):
 @task_arguments
 @scoring_options
 @click.option("--inquiries", is_flag=True, help="List what the robot would ask the human.")
+@click.option(
+    "--why",
+    "why_object",
+    metavar="OBJECT",
+    default=None,
+    help="Explain one object: its scores, the step that kept or dropped it, and what brought it back.",
+)
 @json_option("Machine-readable output.")
 @handle_errors
-def score(domain_path, problem_path, inquiries, as_json, **values):
-    """Print the class and element relevance table for PROBLEM."""
+def score(domain_path, problem_path, inquiries, why_object, as_json, **values):
+    """Print the class and element relevance table for PROBLEM, each object with the step that kept or dropped it."""
+    from relevance_plan.cli.explain import print_score_table, print_why, selection_json, why_json
+
     scoring, result = _score_and_prune(domain_path, problem_path, take_scoring(values))
     scores = scoring.scores
+    if why_object is not None:
+        if as_json:
+            click.echo(json_text(why_json(result, why_object)))
+        else:
+            print_why(result, why_object)
+        if not scores.sufficient:
+            fail(f"insufficient cues: {scores.insufficiency}", ExitCode.INSUFFICIENT_CUES)
+        return
     inquiry = _inquiries(scoring, result) if inquiries and scores.sufficient else None
     if as_json:
-        data = _prune_json(result)
+        data = selection_json(result)
         if inquiry is not None:
             data["inquiries"] = inquiry
-        click.echo(json.dumps(data, indent=2))
+        click.echo(json_text(data))
     else:
-        _print_score_table(result)
+        print_score_table(result)
         if inquiry is not None:
             click.echo("")
             click.echo(f"served without asking: {', '.join(inquiry['necessary']) or '-'}")
@@ -218,7 +227,7 @@ def _pass_through(problem_path, output, refused: UnsupportedFeatureError, as_jso
     reason = f"cannot be pruned: {refused}"
     written = write_output(output, read_text(problem_path, "problem file"))
     if as_json:
-        click.echo(json.dumps({"pruned": False, "unpruned_reason": reason, "output": str(output)}, indent=2))
+        click.echo(json_text({"pruned": False, "unpruned_reason": reason, "output": str(output)}))
     else:
         where = written if output == STDOUT else output
         click.echo(f"pruned: no ({reason}); wrote the problem unchanged to {where}", err=output == STDOUT)
@@ -245,54 +254,6 @@ def _inquiries(scoring: Scoring, result: Selection) -> dict:
         "no_relevance": found.objects,
         "reduction": round(found.reduction, 4),
     }
-
-
-def _print_score_table(result: Selection) -> None:
-    scores = result.scores
-    problem = result.task.problem
-    if not scores.sufficient:
-        click.echo(f"insufficient cues: {scores.insufficiency}")
-        return
-    header = f"scorer: {scores.scorer}"
-    if scores.objective:
-        tasks = ", ".join(f"{t} {p:.2f}" for t, p in sorted(scores.task_distribution.items(), key=lambda i: -i[1]))
-        header += f"   objective: {scores.objective}   tasks: {tasks}   H = {scores.task_entropy:.2f} nats"
-    click.echo(header)
-    if scores.class_scores:
-        click.echo("")
-        click.echo(f"{'class':<18} {'R(C)':>6}  kept")
-        for class_name, value in sorted(scores.class_scores.items(), key=lambda i: (-i[1], i[0])):
-            click.echo(f"{class_name:<18} {value:6.3f}  {'yes' if value > result.thresholds.tau_class else 'no'}")
-    click.echo("")
-    restored = {r.name: r for r in result.restored}
-    width = max((len(problem.display(n)) for n in problem.objects), default=10)
-    click.echo(f"{'element':<{width}} {'class':<16} {'R(e)':>6}  {'kept':<8} why")
-    order = sorted(problem.objects, key=lambda n: (-scores.element_scores.get(n, 0.0), n))
-    for name in order:
-        if name in result.selected:
-            kept = "yes"
-            why = scores.explanations.get(name, "")
-            if name in result.task.goal_objects:
-                why = "named in the goal"
-        elif name in restored:
-            kept, why = "restored", restored[name].reason
-        elif name in result.set_aside:
-            kept = "aside"
-            why = "something stands on it and a free object of its class is kept (plan brings it back if needed)"
-        else:
-            kept, why = "no", scores.explanations.get(name, "")
-        click.echo(
-            f"{problem.display(name):<{width}} {scores.element_class.get(name, '-'):<16}"
-            f" {scores.element_scores.get(name, 0.0):6.3f}  {kept:<8} {why}"
-        )
-    click.echo("")
-    click.echo(
-        f"kept {len(result.kept)} of {len(problem.objects)} objects ({len(result.restored)} restored by closure)"
-    )
-    if scores.unknown:
-        click.echo(
-            f"class unknown to the model (default relevance): {', '.join(problem.display(n) for n in scores.unknown)}"
-        )
 
 
 @main.command()
@@ -324,23 +285,25 @@ def prune(domain_path, problem_path, output, pass_through, as_json, **values):
             raise
         _pass_through(problem_path, output, refused, as_json)
         return
+    from relevance_plan.cli.explain import scores_header, selection_json
+    from relevance_plan.relevance.decisions import kept_summary
+
     scores = scoring.scores
     if not scores.sufficient:
         if as_json:
-            click.echo(json.dumps(_prune_json(result), indent=2))
+            click.echo(json_text(selection_json(result)))
         fail(f"insufficient cues: {scores.insufficiency}", ExitCode.INSUFFICIENT_CUES)
     written = write_output(output, result.text)
     if as_json:
-        data = _prune_json(result)
+        data = selection_json(result)
         data["output"] = str(output)
-        click.echo(json.dumps(data, indent=2))
+        click.echo(json_text(data))
     else:
-        total = len(result.task.problem.objects)
-        click.echo(
-            f"kept {len(result.kept)} of {total} objects ({len(result.restored)} restored by closure);"
-            f" wrote {written if to_stdout else output}",
-            err=to_stdout,
-        )
+        for line in scores_header(scores)[1:]:  # what free text was understood as
+            click.echo(line, err=to_stdout)
+        click.echo(f"{kept_summary(result)}; wrote {written if to_stdout else output}", err=to_stdout)
+        if result.unpruned_reason:
+            click.echo(f"pruned: no ({result.unpruned_reason})", err=to_stdout)
 
 
 # --------------------------------------------------------------------------- plan
@@ -353,12 +316,7 @@ def prune(domain_path, problem_path, output, pass_through, as_json, **values):
 @planning_options()
 @file_option("--plan-file", default="sas_plan", show_default=True, help="Where the plan goes ('-': standard output).")
 @keep_work_option
-@click.option(
-    "--race/--no-race",
-    default=None,
-    help="Plan the full problem beside the pruned attempts and take the first valid plan"
-    " (default: on for relevance with two or more usable cores).",
-)
+@race_option
 @json_option("Print one JSON object.")
 @quiet_option()
 @handle_errors
@@ -387,7 +345,9 @@ def plan(domain_path, problem_path, method, plan_file, keep_work, race, as_json,
         data = result.to_json()
         data["plan_file"] = str(plan_file) if result.status is PlanStatus.SOLVED else None
         data["plan_files"] = numbered
-        click.echo(json.dumps(data, indent=2))
+        understood = result.selection.scores.understood if result.selection is not None else ()
+        data["understood"] = [match.as_json() for match in understood]
+        click.echo(json_text(data))
     else:
         # With the plan on stdout, the summary goes to stderr.
         _print_plan_summary(result, plan_file, err=to_stdout)
@@ -398,8 +358,20 @@ def plan(domain_path, problem_path, method, plan_file, keep_work, race, as_json,
         sys.exit(int(code))
 
 
-# The backstop past --timeout: the loop holds the limit itself; this stops whatever step overruns it.
-DEADLINE_SLACK = 0.8
+# The backstop past --timeout, counted from the tool's start: the loop holds the limit itself; this
+# stops whatever step overruns it, leaving time to stop the planners and say so within a second.
+DEADLINE_SLACK = 0.6
+# click's context object when the console script (``launch``) runs the commands: the process is the tool's
+# own, so its age is the time the tool has spent (run inside another program, a command counts from its start).
+LAUNCHED = "launched"
+
+
+def _time_spent() -> float:
+    """Seconds since the tool started: the process's age when it is the tool's own, else none."""
+    from relevance_plan.signals import process_age
+
+    context = click.get_current_context(silent=True)
+    return process_age() if context is not None and context.find_root().obj == LAUNCHED else 0.0
 
 
 def _plan_within_timeout(domain_path, problem_path, options, quiet: bool, keep_work=None) -> PlanResult:
@@ -417,7 +389,7 @@ def _plan_within_timeout(domain_path, problem_path, options, quiet: bool, keep_w
     timeout = options.timeout
     started = time.monotonic()
     try:
-        with deadline_alarm(None if timeout is None else timeout + DEADLINE_SLACK):
+        with deadline_alarm(None if timeout is None else timeout + DEADLINE_SLACK - _time_spent()):
             return plan_task(domain_path, problem_path, options, progress=progress, keep_work=keep_work)
     except Interrupted as error:
         if error.signum != DEADLINE_SIGNAL:
@@ -443,16 +415,24 @@ def _print_plan_summary(result: PlanResult, plan_file, err: bool = False) -> Non
     echo(f"method:      {result.method}")
     echo(f"planner:     {result.planner}" + (f" (auto: {result.planner_choice})" if result.planner_choice else ""))
     echo(f"status:      {result.status.value}")
+    if result.selection is not None:
+        from relevance_plan.cli.explain import scores_header
+
+        for line in scores_header(result.selection.scores)[1:]:  # free text, and what it was taken for
+            echo(f"{line.split(':')[0] + ':':<13}{line.split(':', 1)[1].strip()}")
     unpruned = result.unpruned_reason
     if result.refusal and not result.objects_total:
         echo(f"objects:     all (pruned: no, {unpruned})")
     else:
+        decided = " (the full problem, which won the race)" if result.deciding_side == "full" else ""
         echo(
-            f"objects:     {result.objects_kept} kept of {result.objects_total}"
+            f"objects:     {result.objects_kept} kept of {result.objects_total}{decided}"
             + (f" (pruned: no, {unpruned})" if unpruned else "")
         )
-    if result.pruned and result.selection is not None:
-        echo(f"pruning:     kept {len(result.selection.kept)} of {result.objects_total} objects first")
+    if result.selection is not None:
+        from relevance_plan.relevance.decisions import kept_summary
+
+        echo(f"pruning:     {kept_summary(result.selection)} first")
     echo(f"attempts:    {len(result.attempts)} (first: {result.first_attempt_status})")
     if result.deciding_side:
         stopped = [a for a in result.attempts if a.stopped]
@@ -466,7 +446,7 @@ def _print_plan_summary(result: PlanResult, plan_file, err: bool = False) -> Non
         f" {result.planner_time:.2f} s planner, {result.validation_time:.2f} s validation"
     )
     if result.status is PlanStatus.SOLVED:
-        size = f"{len(result.plan)} steps" + (
+        size = counted(len(result.plan), "step") + (
             f", cost {format_number(result.plan_cost)}" if result.plan_cost is not None else ""
         )
         if result.validation is not None and result.valid:
@@ -483,7 +463,7 @@ def _print_plan_summary(result: PlanResult, plan_file, err: bool = False) -> Non
 @click.argument("folder", metavar="DIR", type=click.Path(file_okay=False))
 @handle_errors
 def examples(folder):
-    """Copy the shipped worlds into DIR (DIR/domains, DIR/problems), as in a clone's root.
+    """Copy the shipped worlds into DIR (DIR/domains, DIR/problems, DIR/examples), as in a clone's root.
 
     After a regular install, `relevance-plan examples kitchen && cd kitchen`
     makes the README's first-look commands work as written.  A file that
@@ -493,7 +473,34 @@ def examples(folder):
     from relevance_plan.generators.examples import write_examples
 
     written = write_examples(folder)
-    click.echo(f"wrote {len(written)} files to {folder} (domains/, problems/)")
+    tops = sorted({path.relative_to(folder).parts[0] + "/" for path in written})
+    click.echo(f"wrote {counted(len(written), 'file')} to {folder} ({', '.join(tops)})")
+
+
+# --------------------------------------------------------------------------- planners
+
+
+@main.command()
+@handle_errors
+def planners():
+    """Say where the planners are: the bundled Fast Downward, LPG, and how to name the others."""
+    from relevance_plan.planning.planners.fast_downward.command_line import FAST_DOWNWARD_ENV, driver_location
+    from relevance_plan.planning.planners.lpg import lpg_binary
+
+    try:
+        found = f"{driver_location()} (the up-fast-downward wheel; ${FAST_DOWNWARD_ENV} names another)"
+    except RelevancePlanError as error:
+        found = f"not found: {error.message}"
+    lpg = lpg_binary()
+    rows = [
+        ("auto", "the default: Fast Downward for classical problems, a temporal or numeric planner otherwise"),
+        ("fast-downward", found),
+        ("lpg", str(lpg) if lpg is not None else "not installed: pip install 'relevance-plan[planners]'"),
+        ("up:NAME", "a unified-planning engine: aries, tamer, enhsp, kairos, pyperplan, symk (the planners extra)"),
+        ("cmd:'TEMPLATE'", "any planner binary, run without a shell: {domain} {problem} [{plan}]"),
+    ]
+    for name, where in rows:
+        click.echo(f"{name:<15} {where}")
 
 
 # --------------------------------------------------------------------------- exit codes

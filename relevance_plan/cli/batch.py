@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
 
 import click
@@ -11,17 +10,21 @@ from relevance_plan.cli.common import (
     file_option,
     handle_errors,
     json_option,
+    json_text,
     planning_options,
     quiet_option,
     scoring_options,
     take_plan_options,
     take_scoring,
+    timeout_option,
 )
 from relevance_plan.cli.display import progress_bar
-from relevance_plan.errors import UsageError
+from relevance_plan.cli.numbers import DISTRACTORS, DPI, JOBS, SEED, SEEDS, SUITE_SIZE, THRESHOLDS, seconds
+from relevance_plan.errors import UsageError, counted
 from relevance_plan.planning.loop import METHODS
 
 DEFAULT_METHODS = "relevance,pure,random"
+LEARN_TIMEOUT = 60.0  # seconds for each planner run of learn
 
 
 @click.command()
@@ -39,7 +42,7 @@ DEFAULT_METHODS = "relevance,pure,random"
 @click.option(
     "--jobs",
     "-j",
-    type=int,
+    type=JOBS,
     default=1,
     show_default=True,
     help="Jobs run at once locally (each drives one planner process).",
@@ -53,9 +56,13 @@ DEFAULT_METHODS = "relevance,pure,random"
 )
 @click.option("--scheduler", default=None, metavar="tcp://HOST:PORT", help="Run the jobs on this Dask scheduler.")
 @click.option(
-    "--scheduler-timeout", type=float, default=10.0, show_default=True, help="Seconds to wait for the Dask scheduler."
+    "--scheduler-timeout",
+    type=seconds(),
+    default=10.0,
+    show_default=True,
+    help="Seconds to wait for the Dask scheduler.",
 )
-@click.option("--seeds", default="0", show_default=True, help="Comma-separated seeds; one job per seed.")
+@click.option("--seeds", type=SEEDS, default="0", show_default=True, help="Comma-separated seeds; one job per seed.")
 @quiet_option("No progress display.")
 @handle_errors
 def compare(suite_dirs, methods, planners, jobs, store_path, scheduler, scheduler_timeout, seeds, quiet, **values):
@@ -110,43 +117,53 @@ def compare(suite_dirs, methods, planners, jobs, store_path, scheduler, schedule
     show_default=True,
     help="File format of --plots.",
 )
-@click.option("--dpi", type=click.IntRange(min=1), default=150, show_default=True, help="Resolution of PNG plots.")
+@click.option("--dpi", type=DPI, default=150, show_default=True, help="Resolution of PNG plots.")
 @file_option(
     "--html",
     "html_path",
-    help="Also write one self-contained HTML page: the tables and, with matplotlib, the plots as inline SVG.",
+    help="Also write one self-contained HTML page: the tables and, with matplotlib, the plots as inline SVG"
+    " ('-': the page on standard output, instead of the table).",
 )
 @handle_errors
 def report(store_path, fmt, as_json, as_csv, suite, plots_dir, plot_format, dpi, html_path):
     """Print the comparison table computed from the rows of STORE (or, with --json/--csv, every job)."""
     from relevance_plan.batch.report import build_report, format_jobs, format_report
     from relevance_plan.batch.store import read_rows
+    from relevance_plan.cli.files import check_distinct_outputs, names_stdout, write_output
 
     per_job = [name for name, chosen in (("--json", as_json), ("--csv", as_csv)) if chosen]
-    if len(per_job) > 1 or (per_job and fmt is not None):
-        given = per_job + ([f"--format {fmt}"] if fmt is not None else [])
+    given = per_job + ([f"--format {fmt}"] if fmt is not None else [])
+    if len(given) > 1:
         raise UsageError(f"choose one output: {' or '.join(given)}")
+    page_on_stdout = html_path is not None and names_stdout(html_path)
+    if page_on_stdout and given:
+        raise UsageError(f"--html - and {given[0]} would both write to standard output; give --html a file name")
     if plots_dir is not None:
         from relevance_plan.batch.plots import check_plot_targets, require_matplotlib
 
         require_matplotlib("--plots")
         check_plot_targets(plots_dir, store_path, plot_format)
-    if html_path is not None:
-        from relevance_plan.cli.files import check_output_file
-
-        check_output_file(html_path, "HTML report", [store_path])
     rows = read_rows(store_path, suite)
     if plots_dir is not None:
-        from relevance_plan.batch.plots import write_plots
+        from relevance_plan.batch.plots import unplotted_note, write_plots
 
+        # no file this run writes may be the target of another (the page over a plot)
+        suites = sorted({row["suite"] for row in rows})
+        plots = [("plot", path) for path in check_plot_targets(plots_dir, store_path, plot_format, suites)]
+        check_distinct_outputs(plots + ([] if html_path is None or page_on_stdout else [("HTML report", html_path)]))
         written = write_plots(rows, plots_dir, store=store_path, fmt=plot_format, dpi=dpi)
-        click.echo("wrote " + ", ".join(str(path) for path in written), err=True)
+        unplotted = unplotted_note(suites)
+        click.echo(
+            "wrote " + ", ".join(str(path) for path in written) + (f" ({unplotted})" if unplotted else ""), err=True
+        )
     if html_path is not None:
         from relevance_plan.batch.html_report import format_html
-        from relevance_plan.io import write_text_atomic
 
         page = format_html(rows, title=f"relevance-plan report: {Path(store_path).name}")
-        click.echo(f"wrote {write_text_atomic(html_path, page)}", err=True)
+        where = write_output(html_path, page)
+        if page_on_stdout:
+            return  # the page holds the tables
+        click.echo(f"wrote {where}", err=True)
     if per_job:
         click.echo(format_jobs(rows, "json" if as_json else "csv"), nl=False)
     else:
@@ -156,7 +173,13 @@ def report(store_path, fmt, as_json, as_csv, suite, plots_dir, plot_format, dpi,
 @click.command()
 @click.argument("suite_dir", metavar="SUITE_DIR", type=click.Path())
 @scoring_options
-@click.option("--taus", default="0.1,0.2,0.3,0.4,0.5", show_default=True, help="Threshold values for both axes.")
+@click.option(
+    "--taus",
+    type=THRESHOLDS,
+    default="0.1,0.2,0.3,0.4,0.5",
+    show_default=True,
+    help="Threshold values for both axes.",
+)
 @file_option("--heatmap", help="Write a PNG heatmap (needs matplotlib).")
 @json_option()
 @handle_errors
@@ -166,15 +189,8 @@ def sweep(suite_dir, taus, heatmap, as_json, **values):
     from relevance_plan.batch.suites import find_suite_problems
     from relevance_plan.batch.sweep import format_sweep, sweep_suite
     from relevance_plan.cli.files import check_output_file
-    from relevance_plan.relevance.knowledge import check_threshold
 
     options = take_scoring(values)
-    try:
-        grid = tuple(float(v) for v in taus.split(","))
-    except ValueError:
-        raise UsageError(f"--taus must be comma-separated numbers, got '{taus}'") from None
-    for value in grid:
-        check_threshold(value, "each --taus value")
     if heatmap:
         from relevance_plan.batch.plots import require_matplotlib
 
@@ -182,12 +198,12 @@ def sweep(suite_dir, taus, heatmap, as_json, **values):
         # Every file the sweep reads is an input the heatmap must not replace (a domain may sit in a parent folder).
         inputs = [str(p) for e in find_suite_problems(suite_dir) for p in (e.problem, e.domain) if p is not None]
         check_output_file(heatmap, "heatmap file", inputs)
-    result = sweep_suite(Path(suite_dir), grid, options)
+    result = sweep_suite(Path(suite_dir), taus, options)
     if heatmap:
         from relevance_plan.batch.plots import write_heatmap
 
         click.echo(f"wrote {write_heatmap(result, heatmap)}", err=True)
-    click.echo(json.dumps(result.to_json(), indent=2) if as_json else format_sweep(result))
+    click.echo(json_text(result.to_json()) if as_json else format_sweep(result))
 
 
 @click.command()
@@ -196,10 +212,10 @@ def sweep(suite_dir, taus, heatmap, as_json, **values):
     folder=True,
     help="Where suites and results go, kept (default: a temporary folder, removed at the end).",
 )
-@click.option("--count", type=int, default=3, show_default=True, help="Problems per world.")
-@click.option("--timeout", type=float, default=60.0, show_default=True, help="Seconds per job.")
-@click.option("--jobs", "-j", type=int, default=2, show_default=True, help="Jobs run at once.")
-@click.option("--distractors", type=int, default=None, help="Distractors per problem (default 30).")
+@click.option("--count", type=SUITE_SIZE, default=3, show_default=True, help="Problems per world.")
+@timeout_option(60.0, "Seconds per job.")
+@click.option("--jobs", "-j", type=JOBS, default=2, show_default=True, help="Jobs run at once.")
+@click.option("--distractors", type=DISTRACTORS, default=None, help="Distractors per problem (default 30).")
 @click.option("--tiny", is_flag=True, help="1 problem per world with 5 distractors (a quick check).")
 @quiet_option("No progress display.")
 @handle_errors
@@ -215,7 +231,7 @@ def demo(workdir, count, timeout, jobs, distractors, tiny, quiet):
     click.echo("")
     if run.workdir is None:
         click.echo(
-            f"{run.summary.ran} jobs run in a temporary folder, now removed; "
+            f"{counted(run.summary.ran, 'job')} run in a temporary folder, now removed; "
             "--workdir DIR keeps the suites and the results store"
         )
         return
@@ -228,9 +244,9 @@ def demo(workdir, count, timeout, jobs, distractors, tiny, quiet):
 @click.argument("domain_path", metavar="DOMAIN", type=click.Path(dir_okay=False))
 @click.argument("problem_paths", metavar="PROBLEM...", nargs=-1, type=click.Path(dir_okay=False))
 @file_option("-o", "--output", "output_path", required=True, help="Model file (JSON).")
-@click.option(
-    "--time-limit", type=float, default=60.0, show_default=True, help="Seconds for each planner run on a problem."
-)
+@timeout_option(LEARN_TIMEOUT, "Seconds for each planner run on a problem.")
+# The option's name until 0.12, kept for a release: hidden, said to be deprecated when used.
+@click.option("--time-limit", "time_limit", type=seconds(), default=None, hidden=True)
 @click.option(
     "--labels",
     type=click.Choice(["plan", "minimal"]),
@@ -239,7 +255,7 @@ def demo(workdir, count, timeout, jobs, distractors, tiny, quiet):
     help="plan: the objects the plan uses, with their closure (one run a problem); minimal: PLOI's greedy minimal"
     " sufficient set (one run per object).",
 )
-@click.option("--seed", type=int, default=0, show_default=True, help="Seed of the order 'minimal' drops objects in.")
+@click.option("--seed", type=SEED, default=0, show_default=True, help="Seed of the order 'minimal' drops objects in.")
 @file_option(
     "--store",
     "store_path",
@@ -247,20 +263,21 @@ def demo(workdir, count, timeout, jobs, distractors, tiny, quiet):
 )
 @quiet_option()
 @handle_errors
-def learn(domain_path, problem_paths, output_path, time_limit, labels, seed, store_path, quiet):
-    """Learn which objects matter from solved PROBLEMs of DOMAIN; use the model with --scorer learned:MODEL."""
+def learn(domain_path, problem_paths, output_path, timeout, time_limit, labels, seed, store_path, quiet):
+    """Learn which objects matter from solved PROBLEMs of DOMAIN; use the model with --scorer learned:MODEL.
+
+    "-o -" writes the model to standard output (the summary goes to stderr).
+    """
     from relevance_plan.batch.learn import learn as learn_model
     from relevance_plan.batch.learn import learn_from_store
-    from relevance_plan.cli.files import check_output_file, write_output
-    from relevance_plan.io import check_input_file
+    from relevance_plan.cli.files import names_stdout, write_output
     from relevance_plan.relevance.learning.learned_model import learned_model_text
 
-    if time_limit <= 0:
-        raise UsageError(f"--time-limit must be a positive number of seconds, got {time_limit:g}")
-    check_input_file(domain_path, "domain file")
-    for path in problem_paths:
-        check_input_file(path, "problem file")
-    check_output_file(output_path, "model file", [domain_path, *problem_paths, store_path])
+    if time_limit is not None:
+        if click.get_current_context().get_parameter_source("timeout") is click.core.ParameterSource.COMMANDLINE:
+            raise UsageError("give --timeout only (--time-limit is its old, deprecated name)")
+        click.echo("relevance-plan: --time-limit is deprecated: use --timeout", err=True)
+        timeout = time_limit
 
     def say(message: str) -> None:
         if not quiet:
@@ -271,11 +288,12 @@ def learn(domain_path, problem_paths, output_path, time_limit, labels, seed, sto
     else:
         if not problem_paths:
             raise UsageError("give the training PROBLEMs (or --store STORE)")
-        report = learn_model(domain_path, problem_paths, time_limit=time_limit, labels=labels, seed=seed, say=say)
+        report = learn_model(domain_path, problem_paths, time_limit=timeout, labels=labels, seed=seed, say=say)
     where = write_output(output_path, learned_model_text(report.model))
     model = report.model
     click.echo(
         f"learned from {len(report.problems)} problems ({len(report.skipped)} skipped) in {report.seconds:.1f} s:"
         f" {model.training.get('needed')} of {model.training.get('objects')} objects needed ({labels} labels),"
-        f" keeps above P = {model.threshold:.3f}; model written to {where}"
+        f" keeps above P = {model.threshold:.3f}; model written to {where}",
+        err=names_stdout(output_path),  # with the model on stdout, the summary goes to stderr
     )

@@ -9,14 +9,20 @@ here once, so ``score``, ``prune``, ``plan``, ``sweep``, ``compare`` and
 
 from __future__ import annotations
 
+import contextlib
 import errno
 import functools
+import json
+import math
 import shlex
 import sys
+from collections.abc import Iterator
 from pathlib import Path
+from typing import Any
 
 import click
 
+from relevance_plan.cli.numbers import MEGABYTES, SEED, THRESHOLD, seconds
 from relevance_plan.errors import InputFileError, RelevancePlanError, UsageError, ValidatorUnavailableError
 from relevance_plan.exitcodes import ExitCode, exit_code_for_error
 from relevance_plan.limits import DEFAULT_TIMEOUT
@@ -26,7 +32,7 @@ from relevance_plan.planning.results import PlanResult
 from relevance_plan.planning.validate import VALIDATOR_CHOICES
 from relevance_plan.relevance.prune import DEFAULT_TAU, Thresholds
 from relevance_plan.relevance.scorers import SCORERS
-from relevance_plan.relevance.setup import ScoringOptions, check_scorer
+from relevance_plan.relevance.setup import ScoringOptions, check_scorer, given_cues
 
 
 def fail(message: str, code: ExitCode) -> None:
@@ -39,16 +45,56 @@ _OUTPUT_ERRNOS = (errno.ENOSPC, errno.EIO, errno.EFBIG, errno.EDQUOT)
 
 
 def handle_errors(command):
-    """Every library error becomes one line on stderr and its documented exit code."""
+    """A command's callback, its errors handled (:func:`handled`) and its ``--verbose`` option added: the
+    warnings and log lines of the packages the tool imports reach stderr only with ``--verbose``."""
 
     @functools.wraps(command)
+    def wrapper(*args, verbose: bool = False, **kwargs):
+        with third_parties_heard(verbose):
+            return command(*args, **kwargs)
+
+    return click.option(
+        "--verbose", is_flag=True, help="Also show the warnings and log lines of the packages the tool uses."
+    )(handled(wrapper))
+
+
+@contextlib.contextmanager
+def third_parties_heard(heard: bool) -> Iterator[None]:
+    """Unless ``heard``, the warnings and log lines of other packages (a planner package's warning on
+    import, Dask's reconnection messages) stay off stderr while the block runs: the tool's own
+    messages are its lines there.  The tool itself neither warns nor logs."""
+    if heard:
+        yield
+        return
+    import logging
+    import warnings
+
+    disabled = logging.root.manager.disable
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        logging.disable(logging.CRITICAL)
+        try:
+            yield
+        finally:
+            logging.disable(disabled)
+
+
+def handled(function):
+    """Every library error of ``function`` becomes one line on stderr and its documented exit code."""
+
+    @functools.wraps(function)
     def wrapper(*args, **kwargs):
-        from relevance_plan.cli.exits import quit_on_broken_pipe, quit_on_output_error, quit_out_of_memory
+        from relevance_plan.cli.exits import (
+            quit_if_memory_ran_out,
+            quit_on_broken_pipe,
+            quit_on_output_error,
+            quit_out_of_memory,
+        )
         from relevance_plan.signals import DEADLINE_SIGNAL, interrupt_on_signals
 
         try:
             with interrupt_on_signals():
-                return command(*args, **kwargs)
+                return function(*args, **kwargs)
         except RelevancePlanError as error:
             fail(str(error), exit_code_for_error(error))
         except BrokenPipeError:
@@ -63,6 +109,9 @@ def handle_errors(command):
         except MemoryError as error:
             error.__traceback__ = None  # its frames hold what filled the memory: free it before saying anything
             quit_out_of_memory()
+        except SystemError as error:
+            quit_if_memory_ran_out(error)
+            raise
         except KeyboardInterrupt as error:
             if getattr(error, "signum", None) == DEADLINE_SIGNAL:
                 fail("out of time: the run went past its --timeout", ExitCode.OUT_OF_TIME)
@@ -96,11 +145,34 @@ def task_arguments(command):
 def file_option(*names: str, help: str, folder: bool = False, default: str | None = None, **more):
     """An option naming a file (``folder``: a directory); ``paths`` checks it before the command runs."""
     kind = click.Path(file_okay=False) if folder else click.Path(dir_okay=False)
-    return click.option(*names, type=kind, default=default, help=help, **more)
+    if default is not None:  # click counts an explicit default of None as given: a required option would pass
+        more["default"] = default
+    return click.option(*names, type=kind, help=help, **more)
 
 
 def json_option(help: str | None = None):
     return click.option("--json", "as_json", is_flag=True, help=help)
+
+
+def json_text(data: Any, indent: int | None = 2) -> str:
+    """``data`` as strict JSON (what ``--json`` prints): a number JSON cannot hold, an infinite
+    metric or a NaN, is null there."""
+    return json.dumps(_finite(data), indent=indent, allow_nan=False)
+
+
+def _finite(data: Any) -> Any:
+    if isinstance(data, float):
+        return data if math.isfinite(data) else None
+    if isinstance(data, dict):
+        return {key: _finite(value) for key, value in data.items()}
+    if isinstance(data, (list, tuple)):
+        return [_finite(value) for value in data]
+    return data
+
+
+def timeout_option(default: float, help: str):
+    """``--timeout`` in seconds: every command's time limit has this one name, and one check (``seconds``)."""
+    return click.option("--timeout", type=seconds(), default=default, show_default=True, help=help)
 
 
 def quiet_option(help: str = "No progress messages."):
@@ -109,7 +181,17 @@ def quiet_option(help: str = "No progress messages."):
 
 # --------------------------------------------------------------------------- scoring
 
-SCORING_KEYS = ("scorer", "model_path", "objective", "model_task", "human", "tau_class", "tau_element", "seed")
+SCORING_KEYS = (
+    "scorer",
+    "model_path",
+    "objective",
+    "model_task",
+    "human",
+    "place_kinds",
+    "tau_class",
+    "tau_element",
+    "seed",
+)
 
 
 class ScorerType(click.ParamType):
@@ -126,10 +208,10 @@ class ScorerType(click.ParamType):
 
 
 def scoring_options(command=None, *, with_seed: bool = True):
-    """--scorer --model --objective --task --human --tau-class --tau-element [--seed]."""
+    """--scorer --model --objective --task --human --place-kinds --tau-class --tau-element [--seed]."""
     if command is None:
         return functools.partial(scoring_options, with_seed=with_seed)
-    seed = [click.option("--seed", type=int, default=0, show_default=True, help="Seed of the random scorer.")]
+    seed = [click.option("--seed", type=SEED, default=0, show_default=True, help="Seed of the random scorer.")]
     return _apply(
         command,
         [
@@ -146,20 +228,34 @@ def scoring_options(command=None, *, with_seed: bool = True):
                 help="Knowledge-model YAML (default: found next to the domain or among the shipped worlds).",
             ),
             click.option(
-                "--objective", default=None, help="Objective from the model (default: matched from the goal)."
+                "--objective",
+                default=None,
+                help="Objective from the model, or what the human wants in their own words (with the 'text' extra);"
+                " default: matched from the goal.",
             ),
-            click.option("--task", "model_task", default=None, help="Fix the model's task: P(task | objective) = 1."),
+            click.option(
+                "--task",
+                "model_task",
+                default=None,
+                help="Fix the model's task, P(task | objective) = 1: its name, or a cue in words (the 'text' extra).",
+            ),
             click.option("--human", default=None, help="Apply this human's recorded preferences."),
             click.option(
+                "--place-kinds",
+                is_flag=True,
+                help="Place object kinds and types the model does not list under their nearest class (the 'text'"
+                " extra); one that resembles no class stays unknown, and is asked about.",
+            ),
+            click.option(
                 "--tau-class",
-                type=float,
+                type=THRESHOLD,
                 default=DEFAULT_TAU,
                 show_default=True,
                 help="Class threshold tau_c in [0, 1].",
             ),
             click.option(
                 "--tau-element",
-                type=float,
+                type=THRESHOLD,
                 default=DEFAULT_TAU,
                 show_default=True,
                 help="Element threshold tau_e in [0, 1].",
@@ -172,6 +268,7 @@ def scoring_options(command=None, *, with_seed: bool = True):
 def take_scoring(values: dict) -> ScoringOptions:
     """ScoringOptions from a command's parsed values (the scoring keys are removed from ``values``)."""
     taken = {key: values.pop(key, 0 if key == "seed" else None) for key in SCORING_KEYS}
+    taken["place_kinds"] = bool(taken["place_kinds"])
     thresholds = Thresholds(taken.pop("tau_class"), taken.pop("tau_element"))
     options = ScoringOptions(thresholds=thresholds, **taken)
     if options.learned_model_path is not None:
@@ -217,11 +314,13 @@ def planning_options(per_job: bool = False):
                     "one); Fast Downward: after the inputs, e.g. '--translate-options "
                     "--invariant-generation-max-candidates 1000'.",
                 ),
+                timeout_option(DEFAULT_TIMEOUT, f"Seconds for {per}."),
                 click.option(
-                    "--timeout", type=float, default=DEFAULT_TIMEOUT, show_default=True, help=f"Seconds for {per}."
-                ),
-                click.option(
-                    "--memory-limit", "memory_limit", type=int, default=None, help="Planner memory limit in MB."
+                    "--memory-limit",
+                    "memory_limit",
+                    type=MEGABYTES,
+                    default=None,
+                    help="Planner memory limit in MB.",
                 ),
                 click.option(
                     "--no-widen",
@@ -234,14 +333,29 @@ def planning_options(per_job: bool = False):
                     "--validator",
                     "validators",
                     multiple=True,
-                    type=click.Choice(VALIDATOR_CHOICES),
-                    help="Validator(s) to use (default: builtin, plus VAL when on PATH); 'none': report the plan"
-                    " NOT validated.",
+                    type=ValidatorNames(),
+                    help="Validator(s) to use, repeated or comma-separated (--validator builtin,val; default:"
+                    " builtin); 'none': report the plan NOT validated.",
                 ),
             ],
         )
 
     return group
+
+
+class ValidatorNames(click.ParamType):
+    """One or more validators, comma-separated (``builtin,val``); the option may be repeated too."""
+
+    name = "[" + "|".join(VALIDATOR_CHOICES) + "][,...]"
+
+    def convert(self, value, param, ctx):
+        if isinstance(value, tuple):
+            return value
+        names = tuple(part.strip() for part in str(value).split(","))
+        unknown = [name for name in names if name not in VALIDATOR_CHOICES]
+        if unknown:
+            self.fail(f"'{unknown[0]}' is not a validator (choose from: {', '.join(VALIDATOR_CHOICES)})", param, ctx)
+        return names
 
 
 def take_plan_options(values: dict, method: str = "relevance") -> PlanOptions:
@@ -251,7 +365,13 @@ def take_plan_options(values: dict, method: str = "relevance") -> PlanOptions:
     arguments split, and a validator asked for by name can run.
     """
     scoring = take_scoring(values)
+    given = given_cues(scoring)
+    if given and method != "relevance":
+        verb = "applies" if len(given) == 1 else "apply"
+        raise UsageError(f"{' and '.join(given)} {verb} to --method relevance only, not to --method {method}")
     taken = {key: values.pop(key) for key in PLANNING_KEYS}
+    # --validator builtin,val --validator val: each named once, in the order first named
+    taken["validators"] = tuple(dict.fromkeys(name for names in taken["validators"] for name in names))
     require_installed_validators(taken["validators"])
     return PlanOptions.from_scoring(
         scoring,
@@ -311,5 +431,12 @@ def write_plan_files(result: PlanResult, plan_file: str) -> list[str]:
         written.append(write_output(Path(f"{plan_file}.{number}"), format_plan(plan, display)))
     return written
 
+
+race_option = click.option(
+    "--race/--no-race",
+    default=None,
+    help="Plan the full problem beside the pruned attempts and take the first valid plan"
+    " (default: on for relevance with two or more usable cores).",
+)
 
 method_option = click.option("--method", type=click.Choice(METHODS), default="relevance", show_default=True)

@@ -9,7 +9,10 @@ ever reaches the user:
 * standard output is closed (``>&-``): refused before any work (exit 31),
   rather than running with every line thrown away;
 * standard output cannot take the text (``> /dev/full``): one line, exit 31;
-* the tool itself runs out of memory (``ulimit -v``): one line, exit 21.
+* the tool itself runs out of memory (``ulimit -v``), however the interpreter says so: one line, exit 21;
+* click refuses the command line (an unknown option, a missing argument, a
+  number out of its range): one line naming what is wrong, not click's
+  four, exit 2 (30 for a number out of range, ``cli.numbers``).
 """
 
 from __future__ import annotations
@@ -22,6 +25,7 @@ from typing import NoReturn
 
 import click
 
+from relevance_plan.errors import MAX_MESSAGE, printable
 from relevance_plan.exitcodes import ExitCode
 
 # What a shell reports for a process killed by SIGPIPE (128 + 13); Python ignores SIGPIPE, so we exit so.
@@ -63,6 +67,18 @@ def quit_out_of_memory() -> NoReturn:
     sys.exit(int(ExitCode.OUT_OF_MEMORY))
 
 
+# How the interpreter reports a C function that failed an allocation and did not say so: the same
+# out of memory, in other words ("<function score> returned NULL without setting an exception").
+_SILENT_FAILURES = ("without setting an exception", "without exception set")
+
+
+def quit_if_memory_ran_out(error: SystemError) -> None:
+    """One line and exit 21 when ``error`` is how memory running out surfaced; else return."""
+    if any(words in str(error) for words in _SILENT_FAILURES):
+        error.__traceback__ = None
+        quit_out_of_memory()
+
+
 def quit_on_output_error(error: OSError) -> NoReturn:
     """Standard output refused the text (a full disk, /dev/full, an I/O error)."""
     if error.errno == errno.EPIPE:
@@ -87,28 +103,65 @@ def stdout_is_closed() -> bool:
     return False
 
 
-class ToolGroup(click.Group):
-    """The command group, with the endings above around every command (click's own included)."""
+def quit_on_usage_error(error: click.ClickException) -> NoReturn:
+    """click refused the command line: one line naming what is wrong (click's own block is four),
+    and its exit code (2 for a malformed command line, 30 for a number out of range)."""
+    context = getattr(error, "ctx", None)
+    if isinstance(error, click.exceptions.NoArgsIsHelpError) and context is not None:
+        click.echo(context.get_help())  # no command at all: the help, then the line
+        message = f"no command given; the commands are listed above ('{context.command_path} COMMAND --help')"
+        click.echo(_PREFIX + message, err=True)
+        sys.exit(int(ExitCode.COMMAND_LINE))
+    message = printable(" ".join(error.format_message().split()), MAX_MESSAGE)
+    if isinstance(error, click.UsageError) and context is not None:
+        message += f" (see '{context.command_path} --help')"
+    click.echo(_PREFIX + message, err=True)
+    if isinstance(error, click.FileError):
+        sys.exit(int(ExitCode.INPUT_FILE))
+    sys.exit(error.exit_code if error.exit_code in _CLICK_CODES else int(ExitCode.USAGE))
 
-    def main(self, *args, **kwargs):
+
+_CLICK_CODES = (int(ExitCode.COMMAND_LINE), int(ExitCode.USAGE))
+
+
+class ToolGroup(click.Group):
+    """The command group, with the endings above around every command (click's own included).
+
+    click runs it outside its standalone mode, so that its usage errors and what
+    ends a run while the command line is read come here and end in one line.
+    """
+
+    def main(self, args=None, prog_name=None, complete_var=None, standalone_mode: bool = True, **extra):
+        if not standalone_mode:  # a caller that handles click's exceptions itself
+            return super().main(args, prog_name, complete_var, standalone_mode=False, **extra)
         if stdout_is_closed():
             _say("standard output is closed; give the command somewhere to write (e.g. > /dev/null)")
             sys.exit(int(ExitCode.INPUT_FILE))
         try:
-            result = super().main(*args, **kwargs)
+            result = super().main(args, prog_name, complete_var, standalone_mode=False, **extra)
+        except click.ClickException as error:
+            _flush_stdout()
+            quit_on_usage_error(error)
+        except (click.Abort, KeyboardInterrupt):  # Ctrl-C while click read the command line
+            _say("interrupted")
+            sys.exit(int(ExitCode.INTERRUPTED))
         except SystemExit:
             _flush_stdout()
             raise
         except MemoryError as error:
             error.__traceback__ = None  # its frames hold what filled the memory: free it before saying anything
             quit_out_of_memory()
+        except SystemError as error:
+            quit_if_memory_ran_out(error)
+            raise
         except OSError as error:  # outside any command's own handling (click's help, its usage lines)
             if error.filename is None:
                 quit_on_output_error(error)
             _say(f"{error.filename}: {error.strerror or error}")
             sys.exit(int(ExitCode.INPUT_FILE))
         _flush_stdout()
-        return result
+        # click's --help and --version end with their code; a command that returns has succeeded
+        sys.exit(result if isinstance(result, int) else int(ExitCode.SUCCESS))
 
 
 def _flush_stdout() -> None:

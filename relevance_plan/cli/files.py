@@ -110,6 +110,28 @@ def _check_output_file(path: Path, what: str, inputs) -> None:
         raise InputFileError(f"cannot write {what}: its directory is not writable", path=str(path))
 
 
+def _output_identity(path: Path) -> tuple:
+    """What two names of one output file share: the file (device, inode) once it exists, else its path
+    with every link followed."""
+    try:
+        info = path.stat()
+    except (OSError, ValueError):
+        return ("path", os.path.realpath(path))
+    return ("file", info.st_dev, info.st_ino)
+
+
+def check_distinct_outputs(outputs: Iterable[tuple[str, str | os.PathLike]]) -> None:
+    """``UsageError`` when two outputs of one run, (what, path) pairs, are the same file: the one
+    written later would replace the other."""
+    seen: dict[tuple, tuple[str, str | os.PathLike]] = {}
+    for what, path in outputs:
+        key = _output_identity(Path(path))
+        if key in seen:
+            first, where = seen[key]
+            raise UsageError(f"the {what} {path} would replace the {first} {where} of this run; choose another name")
+        seen[key] = (what, path)
+
+
 def write_output(path: str | os.PathLike, text: str) -> str:
     """Write a user-facing output: ``-`` is standard output, anything else
     goes through ``write_bytes_atomic``.  Returns where it went."""

@@ -45,11 +45,12 @@ def main() -> None:
 def _commands(started: bool) -> None:
     previous = _stop_on_signals() if started else {}
     try:
+        from relevance_plan.cli.app import LAUNCHED
         from relevance_plan.cli.app import main as commands
 
         for number, handler in previous.items():
             signal.signal(number, handler)
-        commands(prog_name="relevance-plan")
+        commands(prog_name="relevance-plan", obj=LAUNCHED)
     finally:
         if started:
             from relevance_plan.planning.planners.fast_downward import head_start

@@ -19,14 +19,33 @@ import click
 INPUT_FILES = {
     "domain_path": "domain file",
     "problem_path": "problem file",
+    "problem_paths": "problem file",
     "model_path": "knowledge model",
     "plan_path": "plan file",
 }
-OUTPUT_FILES = {"output": "output file", "plan_file": "plan file", "heatmap": "heatmap file"}
+OUTPUT_FILES = {
+    "output": "output file",
+    "output_path": "model file",
+    "plan_file": "plan file",
+    "heatmap": "heatmap file",
+    "html_path": "HTML report",
+}
+# Outputs ``-`` (standard output) may not name, and why: ``-`` is standard output for every other
+# output (``prune -o``, ``learn -o``, ``plan --plan-file``, ``report --html``).
+NOT_STDOUT = {
+    "out_dir": "it names a folder",
+    "keep_work": "it names a folder",
+    "folder": "it names a folder",
+    "plots_dir": "it names a folder",
+    "workdir": "it names a folder",
+    "snapshot_dir": "it names a folder",
+    "heatmap": "the table goes there",
+    "store_path": "it names a results store",
+}
 # Read, never created, by these commands.
-INPUT_STORES = {"report"}
+INPUT_STORES = {"report", "learn"}
 # Inputs these commands hand to a planner, which reads them again: a pipe (``<(...)``, /dev/stdin) gives its text once.
-REREAD = {"plan": ("domain_path", "problem_path"), "watch": ("domain_path",)}
+REREAD = {"plan": ("domain_path", "problem_path"), "watch": ("domain_path",), "learn": ("domain_path", "problem_paths")}
 
 
 class _UncheckedPath(click.Path):
@@ -42,17 +61,33 @@ def _as_list(value) -> list:
     return list(value) if isinstance(value, (list, tuple)) else [value]
 
 
-def _check(command_name: str, values: dict) -> None:
+def _check_not_stdout(command: click.Command, values: dict) -> None:
+    """``UsageError`` for ``-`` naming an output that standard output cannot take (see ``NOT_STDOUT``)."""
+    from relevance_plan.errors import UsageError
+    from relevance_plan.io import STDOUT
+
+    for param in command.params:
+        why = NOT_STDOUT.get(param.name or "")
+        if why is None or (param.name == "store_path" and command.name in INPUT_STORES):
+            continue
+        if STDOUT in _as_list(values.get(param.name or "")):
+            option = max(param.opts, key=len) if isinstance(param, click.Option) else param.human_readable_name
+            raise UsageError(f"{option} cannot be '-' (standard output): {why}; give a name")
+
+
+def _check(command: click.Command, values: dict) -> None:
     from relevance_plan.cli.files import check_output_file, check_regular_file
     from relevance_plan.io import check_input_file
 
+    command_name = command.name or ""
+    _check_not_stdout(command, values)
     inputs = []
     for name, what in INPUT_FILES.items():
-        if values.get(name) is not None:
-            check_input_file(values[name], what)
+        for path in _as_list(values.get(name)):
+            check_input_file(path, what)
             if name in REREAD.get(command_name, ()):
-                check_regular_file(values[name], what, f"{command_name} gives it to the planner")
-            inputs.append(values[name])
+                check_regular_file(path, what, f"{command_name} gives it to the planner")
+            inputs.append(path)
     if values.get("domain_path") is not None and values.get("model_path") is None:
         # The model found next to the domain is an input too.
         found = Path(values["domain_path"]).parent / "relevance.yaml"
@@ -77,9 +112,9 @@ def _checked(command: click.Command):
 
     @functools.wraps(callback)
     def wrapper(*args, **kwargs):
-        from relevance_plan.cli.common import handle_errors
+        from relevance_plan.cli.common import handled
 
-        handle_errors(_check)(command.name, kwargs)
+        handled(_check)(command, kwargs)
         return callback(*args, **kwargs)
 
     return wrapper

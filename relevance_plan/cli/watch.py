@@ -11,7 +11,6 @@ reader goes away.
 
 from __future__ import annotations
 
-import json
 import sys
 from collections.abc import Iterator
 from pathlib import Path
@@ -22,12 +21,14 @@ import click
 from relevance_plan.cli.common import (
     file_option,
     handle_errors,
+    json_text,
     planning_options,
+    race_option,
     scoring_options,
     take_plan_options,
     task_arguments,
 )
-from relevance_plan.errors import InputFileError
+from relevance_plan.errors import InputFileError, UsageError
 from relevance_plan.exitcodes import ExitCode
 
 SNAPSHOT_FILES = ("current.pddl", "pruned.pddl")
@@ -107,13 +108,18 @@ def _check_snapshot_targets(snapshot_dir: str, inputs: list) -> list[Path]:
 )
 @scoring_options
 @planning_options()
+@race_option
 @handle_errors
-def watch(domain_path, problem_path, events_path, plan_in_loop, snapshot_dir, **values):
-    """Keep relevance (and, with --plan, a validated plan) current over a stream of scene events."""
+def watch(domain_path, problem_path, events_path, plan_in_loop, snapshot_dir, race, **values):
+    """Keep relevance (and, with --plan, a validated plan) current over a stream of scene events.
+
+    A session plans with one planner at a time: --no-race is what it does, --race is refused."""
     from relevance_plan.io import load_task, write_text_atomic
     from relevance_plan.planning.planners.registry import make_planner
     from relevance_plan.session import Session  # imported here: other commands never need the session
 
+    if race:
+        raise UsageError("watch plans with one planner at a time and never races: leave out --race")
     options = take_plan_options(values)
     targets = None
     if snapshot_dir is not None:
@@ -132,7 +138,7 @@ def watch(domain_path, problem_path, events_path, plan_in_loop, snapshot_dir, **
             if not line.strip():
                 continue
             report = session.handle_line(line)
-            click.echo(json.dumps(report.to_json()))
+            click.echo(json_text(report.to_json(), indent=None))
             sys.stdout.flush()
     except KeyboardInterrupt as error:
         ending = error

@@ -33,6 +33,7 @@ from relevance_plan.generators.catalog import CATALOG
 from relevance_plan.generators.problem import choose_roles, format_scene, necessary_objects, relevant_objects
 from relevance_plan.generators.scenes import DIFFICULTIES, SCENES, WORLD_NAMES, Item, SceneLayout, name_key
 from relevance_plan.io import new_directory_mode
+from relevance_plan.limits import MAX_COUNT, MAX_DISTRACTORS
 from relevance_plan.progress import ProgressCallback, ProgressEvent
 
 GENERATOR = "relevance_plan.generators"
@@ -55,9 +56,6 @@ CONSTRAINT_COUNTS: dict[tuple[str, str], int] = {
 }
 """Random on-top constraints added per problem (cereal adds none)."""
 
-# Far above any benchmark; beyond, a typo would run for hours and fill the disk.
-MAX_COUNT = 100_000
-MAX_DISTRACTORS = 100_000
 
 BASE_SCENE_NAMES = tuple(f"{w}-{d}" for w in WORLD_NAMES for d in DIFFICULTIES)
 

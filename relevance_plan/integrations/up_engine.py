@@ -62,7 +62,7 @@ from unified_planning.model import Problem, ProblemKind
 from unified_planning.model.problem_kind_versioning import LATEST_PROBLEM_KIND_VERSION
 from unified_planning.plans import ActionInstance, SequentialPlan
 
-from relevance_plan.errors import RelevancePlanError, UsageError
+from relevance_plan.errors import RelevancePlanError, UsageError, counted
 from relevance_plan.pddl.model import Domain
 from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.pddl.plans import Plan, PlanStep
@@ -74,7 +74,7 @@ from relevance_plan.planning.validate import validate_plan
 from relevance_plan.relevance.knowledge import KnowledgeModel, load_knowledge_model
 from relevance_plan.relevance.prune import DEFAULT_TAU, Selection, Thresholds, Widening, widen
 from relevance_plan.relevance.scorers import SCORERS
-from relevance_plan.relevance.setup import Scoring, resolve_knowledge_model, score_problem
+from relevance_plan.relevance.setup import Scoring, given_cues, resolve_knowledge_model, score_problem, without_cues
 from relevance_plan.relevance.task import PlanningTask
 
 ENGINE_NAME = "relevance"
@@ -256,7 +256,8 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin, AnytimePlannerMixin):
         final_kept = attempts[-1].objects_kept if attempts else total
         first_kept = attempts[0].objects_kept if attempts else total
         messages.append(
-            f"{summary}; kept {final_kept} of {total} objects (first attempt {first_kept}), {len(attempts)} attempt(s)"
+            f"{summary}; kept {final_kept} of {total} objects (first attempt {first_kept}),"
+            f" {counted(len(attempts), 'attempt')}"
         )
         metrics = {
             "objects_total": str(total),
@@ -352,6 +353,12 @@ class _RelevanceStage:
         if scoring_options.scorer == "model" and model is None:
             warnings.append("no knowledge model applies to this problem: using the goal scorer")
             scoring_options = dataclasses.replace(scoring_options, scorer="goal")
+        if model is None and given_cues(scoring_options):
+            # An engine cannot stop to say so: the warning is the visible fallback.
+            warnings.append(
+                f"no knowledge model applies to this problem: {', '.join(given_cues(scoring_options))} unused"
+            )
+            scoring_options = without_cues(scoring_options)
         scoring = score_problem(task, scoring_options, knowledge_model=model)
         if not scoring.scores.sufficient:
             # An engine cannot ask the human: fall back to what the goal alone says.
@@ -359,7 +366,9 @@ class _RelevanceStage:
                 f"the {scoring.scorer} scorer has too little to go on ({scoring.scores.insufficiency}):"
                 " using the goal scorer"
             )
-            scoring = score_problem(task, dataclasses.replace(scoring_options, scorer="goal"), knowledge_model=None)
+            scoring = score_problem(
+                task, dataclasses.replace(without_cues(scoring_options), scorer="goal"), knowledge_model=None
+            )
             scoring = dataclasses.replace(scoring, knowledge_model=None)
         return cls(scoring, up_names, action_names)
 
@@ -495,7 +504,9 @@ class _AnytimeSearch:
             if lifted is None or measure is None or measure >= self.best_measure:
                 continue
             self.best, self.best_measure, found = lifted, measure, True
-            yield self._result(PlanGenerationResultStatus.INTERMEDIATE, f"plan of {len(lifted.actions)} steps")
+            yield self._result(
+                PlanGenerationResultStatus.INTERMEDIATE, f"plan of {counted(len(lifted.actions), 'step')}"
+            )
         return found
 
     def _measure(self, plan: SequentialPlan) -> float | None:
@@ -599,7 +610,7 @@ def _solve_whole(inner: _InnerPlanner, options: PlanOptions, started: float) -> 
 
 def _final_status(result, found, attempts) -> tuple[PlanGenerationResultStatus, str]:
     if result.status is PlanStatus.SOLVED:
-        summary = f"plan of {len(found.actions)} steps validated on the original problem"
+        summary = f"plan of {counted(len(found.actions), 'step')} validated on the original problem"
         if attempts[-1].full and attempts[-1].outcome.optimal:
             return PlanGenerationResultStatus.SOLVED_OPTIMALLY, summary
         return PlanGenerationResultStatus.SOLVED_SATISFICING, summary
@@ -638,7 +649,7 @@ def _final_status_whole(problem: Problem, found, attempts) -> tuple[PlanGenerati
         if validator.validate(problem, found).status is ValidationResultStatus.VALID:
             return (
                 PlanGenerationResultStatus.SOLVED_SATISFICING,
-                f"plan of {len(found.actions)} steps validated on the original problem",
+                f"plan of {counted(len(found.actions), 'step')} validated on the original problem",
             )
         return PlanGenerationResultStatus.INTERNAL_ERROR, "the inner planner's plan does not validate"
     return up_status(last.outcome.status), f"the inner planner reported {last.outcome.raw_status} on the whole problem"

@@ -176,8 +176,54 @@ def _read_lists(text: str, path: str | None, deadline: float | None, skip: Seque
                 _outside(token, start, path, line)
             stack[-1].items.append(Symbol(token, start, match.end(), line))
     if stack:
-        raise PDDLParseError("missing ')': a list is never closed", path=path, line=stack[-1].line)
+        raise _unclosed(text, path, stack[0].line)
     return root
+
+
+def _unclosed(text: str, path: str | None, outermost: int) -> PDDLParseError:
+    """The error for a list never closed: where it opens, where the file ends, and, when the
+    indentation tells, the list whose ')' is probably missing (a list that starts at the
+    indentation of one still open, as the next action does when an action lacks its ')')."""
+    lines = LineIndex(text)
+    end = lines.line_of(max(len(text) - 1, 0))
+    suspect = _suspect_list(text, lines)
+    if suspect is None or suspect[0] == outermost:
+        return PDDLParseError(
+            f"missing ')': the list opened on line {outermost} is never closed (the file ends on line {end})",
+            path=path,
+            line=outermost,
+        )
+    opened, starts = suspect
+    return PDDLParseError(
+        f"missing ')': the list opened on line {opened} is probably never closed (line {starts} starts a list at"
+        f" its indentation inside it), so the list opened on line {outermost} is still open where the file ends"
+        f" on line {end}",
+        path=path,
+        line=opened,
+    )
+
+
+def _suspect_list(text: str, lines: LineIndex) -> tuple[int, int] | None:
+    """(line of a list still open, line of the first list that starts at its indentation or left of it
+    while it is open), read on a second pass over the text; None when the indentation tells nothing."""
+    stack: list[tuple[int, int, bool]] = []  # (line, column, first on its line)
+    for match in _TOKEN.finditer(text):
+        kind = match.lastindex
+        if kind == 2:
+            if stack:
+                stack.pop()
+            continue
+        if kind != 1:
+            continue
+        start = match.start()
+        line = lines.line_of(start)
+        line_start = text.rfind("\n", 0, start) + 1
+        first = not text[line_start:start].strip()
+        column = start - line_start
+        if first and len(stack) > 1 and stack[-1][2] and stack[-1][1] >= column:
+            return stack[-1][0], line
+        stack.append((line, column, first))
+    return None
 
 
 def _outside(token: str, start: int, path: str | None, line: int) -> None:

@@ -46,8 +46,9 @@ from collections import defaultdict
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 
-from relevance_plan.errors import SimulationTimeout
+from relevance_plan.errors import SimulationTimeout, counted
 from relevance_plan.pddl import formulas as f
+from relevance_plan.pddl.formatter import format_formula, format_number
 from relevance_plan.pddl.model import (
     Action,
     DerivedPredicate,
@@ -574,6 +575,38 @@ def _update(op: str, old: float | None, amount: float, key: f.GroundAtom) -> flo
     return old / amount
 
 
+def why_false(simulator: Simulator, formula: f.Formula, state: State, binding: Mapping[str, str]) -> str:
+    """The part of ``formula`` that fails in ``state``, named: the atom that is false (or true, under
+    a ``not``), the comparison with its values, the quantifier's failing instance."""
+    shown = format_formula(f.substitute(formula, binding))
+    if isinstance(formula, f.Atom):
+        return f"{shown} is false"
+    if isinstance(formula, f.Not) and isinstance(formula.body, f.Atom):
+        return f"{format_formula(f.substitute(formula.body, binding))} is true"
+    if isinstance(formula, f.And):
+        for part in formula.parts:
+            if not simulator.holds(part, state, binding):
+                return why_false(simulator, part, state, binding)
+    if isinstance(formula, f.Imply):
+        return f"{format_formula(f.substitute(formula.condition, binding))} holds, but " + why_false(
+            simulator, formula.consequence, state, binding
+        )
+    if isinstance(formula, f.Comparison):
+        try:
+            left, right = (simulator.value(side, state, binding) for side in (formula.left, formula.right))
+        except StepFailure as failure:
+            return f"{shown} cannot be evaluated: {failure.message}"
+        return f"{shown} is false ({format_number(left)} {formula.op} {format_number(right)})"
+    if isinstance(formula, f.Forall):
+        for inner in simulator.bindings(formula.parameters, binding):
+            if not simulator.holds(formula.body, state, inner):
+                instance = ", ".join(f"{name} = {inner[name]}" for name, _ in formula.parameters)
+                return f"{shown} fails for {instance}: {why_false(simulator, formula.body, state, inner)}"
+    if isinstance(formula, (f.Timed, f.Preference)):
+        return why_false(simulator, formula.body, state, binding)
+    return f"{shown} is false"
+
+
 def _compare(op: str, left: float, right: float) -> bool:
     if op == "<":
         return left < right
@@ -650,14 +683,15 @@ def simulate(
         else:
             state, makespan = _run_sequential(simulator, steps), None
         if not simulator.holds(problem.goal, state, {}):
-            raise StepFailure("the goal is not satisfied at the end of the plan")
+            unmet = why_false(simulator, problem.goal, state, {})
+            raise StepFailure(f"the goal is not satisfied at the end of the plan: {unmet}")
     except StepFailure as failure:
         return Simulation(False, failure.message, failure.step)
     cost = state.values.get(("total-cost",))
     if cost is None and "total-cost" in domain.functions:
         cost = 0.0
     metric, note = _metric(simulator, state, len(steps) if makespan is None else makespan)
-    what = f"{len(steps)} steps" + (f", makespan {makespan:g}" if makespan is not None else "")
+    what = counted(len(steps), "step") + (f", makespan {makespan:g}" if makespan is not None else "")
     return Simulation(True, f"{what}, goal reached", cost=cost, makespan=makespan, metric=metric, metric_note=note)
 
 
@@ -687,7 +721,8 @@ def _run_sequential(simulator: Simulator, steps: Sequence[PlanStep]) -> State:
             raise StepFailure(f"step {number} {step}: a durative action needs a start time and a duration", number)
         try:
             if not simulator.holds(action.precondition, state, binding):
-                raise StepFailure("precondition not satisfied")
+                unmet = why_false(simulator, action.precondition, state, binding)
+                raise StepFailure(f"precondition not satisfied: {unmet}")
             effects = simulator.effects(action.effect, state, binding)
         except StepFailure as failure:
             raise StepFailure(f"step {number} {step}: {failure.message}", number) from None
@@ -861,7 +896,8 @@ def _happening_effects(
     condition = action.precondition if when is None else _at(action.precondition, when)
     try:
         if not simulator.holds(condition, state, binding):
-            raise StepFailure(f"{'precondition' if when is None else f'at {when} condition'} not satisfied")
+            unmet = why_false(simulator, condition, state, binding)
+            raise StepFailure(f"{'precondition' if when is None else f'at {when} condition'} not satisfied: {unmet}")
         effects = simulator.effects(action.effect, state, binding, when)
     except StepFailure as failure:
         raise StepFailure(
@@ -880,7 +916,10 @@ def _check_invariant(simulator: Simulator, state: State, start: _Happening) -> N
     assert action is not None and binding is not None
     invariant = _at(action.precondition, "all")
     if invariant.parts and not simulator.holds(invariant, state, binding):
-        raise StepFailure(f"step {start.number} {start.step}: over all condition broken while it runs", start.number)
+        unmet = why_false(simulator, invariant, state, binding)
+        raise StepFailure(
+            f"step {start.number} {start.step}: over all condition broken while it runs: {unmet}", start.number
+        )
 
 
 def _reads(condition: f.Node, binding: Mapping[str, str]) -> set[tuple[str, ...]]:

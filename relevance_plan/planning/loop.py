@@ -44,7 +44,7 @@ from dataclasses import dataclass, field, fields, replace
 from pathlib import Path
 from typing import Any
 
-from relevance_plan.errors import OutOfTimeError, UnsupportedFeatureError, UsageError
+from relevance_plan.errors import OutOfTimeError, UnsupportedFeatureError, UsageError, counted
 from relevance_plan.io import load_domain, load_problem, scratch_directory, write_text_atomic
 from relevance_plan.limits import DEFAULT_TIMEOUT, MAX_TIMEOUT
 from relevance_plan.pddl.model import Problem
@@ -75,8 +75,9 @@ from relevance_plan.planning.validate import (
     validate_unread,
 )
 from relevance_plan.progress import ProgressCallback, ProgressEvent
+from relevance_plan.relevance.decisions import kept_summary
 from relevance_plan.relevance.knowledge import KnowledgeModel
-from relevance_plan.relevance.prune import Selection, Thresholds, Widening, widen
+from relevance_plan.relevance.prune import Selection, Thresholds, Widening, next_witnesses, widen
 from relevance_plan.relevance.setup import Scoring, ScoringOptions, score_problem
 from relevance_plan.relevance.task import PlanningTask
 from relevance_plan.supervision.process import CancelScope, cancel_scope
@@ -137,6 +138,7 @@ class PlanOptions:
     objective: str | None = None
     model_task: str | None = None
     human: str | None = None
+    place_kinds: bool = False
     seed: int = 0
     validators: tuple[str, ...] | None = None
     planner_args: tuple[str, ...] = ()  # appended to the planner's command line (--planner-args)
@@ -300,6 +302,7 @@ def run_attempts(
             break  # the --timeout ran out while widening: as when it runs out between attempts
         finally:
             widening_time += time.perf_counter() - widen_started
+        _say_next_witnesses(loop.say, pruned, widened)
         state = replace(state, selection=widened, added_back=added_back)
     if race is not None and race.won and not (attempts and attempts[-1].status is AttemptStatus.SOLVED):
         attempts.append(replace(race.wait(), number=len(attempts) + 1))
@@ -595,6 +598,9 @@ def _first_selection(run: _Run) -> _FirstSelection | PlanResult:
                 planner=run.planner.name,
                 scorer=scoring.scorer,
             )
+        proved = _proved_unsolvable(run)
+        if proved is not None:
+            return proved
         try:
             selection = scoring.first_selection(run.options.narrows_first)
         except OutOfTimeError:
@@ -605,6 +611,25 @@ def _first_selection(run: _Run) -> _FirstSelection | PlanResult:
         _say_selection(run.say, selection, run.total)
     # scoring and pruning only: reading came before, and a race's planner only waits beside it
     return _FirstSelection(scoring, selection, unpruned_reason, time.perf_counter() - scoring_started)
+
+
+def _proved_unsolvable(run: _Run) -> PlanResult | None:
+    """The unsolvable result, without a planner, of a problem whose goal needs more witnesses than
+    it has (``relevance.witness_proof``: a proof, not a guess); None for others, and for the
+    baseline methods (they plan as the paper's did)."""
+    if run.options.method != "relevance":
+        return None
+    try:
+        proof = run.task.proved_unsolvable
+    except OutOfTimeError:
+        return _ran_out("proving the goal's witnesses short", run.started, run.options, run.total)
+    if not proof:
+        return None
+    run.say(f"no plan can exist: {proof}")
+    elapsed = time.perf_counter() - run.started
+    message = f"{proof}, so the problem has no plan (proved before planning: no planner ran)"
+    result = _before_planning(PlanStatus.UNSOLVABLE, message, elapsed, run.options, run.total, planner=run.planner.name)
+    return replace(result, objects_kept=run.total)
 
 
 def _budgets(run: _Run, first: _FirstSelection) -> Budgets | None:
@@ -658,12 +683,29 @@ def _score(run: _Run) -> tuple[Scoring | None, str]:
 
 
 def _say_selection(say: Callable[[str], None], selection: Selection, total: int) -> None:
+    aside = len(selection.set_aside)
     say(
-        f"kept {len(selection.kept)} of {total} objects ({len(selection.restored)} restored by closure"
-        + (f", {len(selection.set_aside)} blocked alternatives set aside)" if selection.set_aside else ")")
+        kept_summary(selection)
+        + (f", {aside} {'alternative' if aside == 1 else 'alternatives'} set aside" if aside else "")
     )
     if not selection.removed:
         say(f"pruned: no ({selection.unpruned_reason})")
+    if selection.witnesses:
+        say("witnesses: " + _witness_list(selection))
+
+
+def _witness_list(selection: Selection) -> str:
+    """``item3_vase for (classrelation vase microwave), ...`` (``Selection.witnesses``)."""
+    show = selection.task.problem.display
+    return ", ".join(f"{show(name)} for ({' '.join(goal)})" for goal, name in selection.witnesses)
+
+
+def _say_next_witnesses(say: Callable[[str], None], failed: Selection, widened: Selection) -> None:
+    """Which witnesses a failed attempt had, and the next candidates the widened selection adds."""
+    added = [name for name in next_witnesses(failed.task, failed.kept) if name in widened.kept]
+    if failed.witnesses and added:
+        show = failed.task.problem.display
+        say(f"no plan with the witnesses {_witness_list(failed)}: widening adds {', '.join(map(show, added))}")
 
 
 def _plan_unread(
@@ -840,7 +882,8 @@ def _validated(last: Attempt, common: dict[str, Any]) -> PlanResult:
             plan_cost=cost,
             plans=last.outcome.plans,
             validation=validation,
-            message=f"plan of {len(plan)} steps {checked if validation.valid else 'NOT validated (--validator none)'}",
+            message=f"plan of {counted(len(plan), 'step')} "
+            + (checked if validation.valid else "NOT validated (--validator none)"),
             **common,
         )
     if validation is not None and validation.status is ValidationStatus.OUT_OF_TIME:

@@ -224,7 +224,10 @@ def _objects_of(attempt: Attempt) -> dict[str, Any]:
     if attempt.selection is None:
         return {"pruned": False, "kept": "all", "removed": [], "restored": []}
     described = attempt.selection.describe()
-    return {key: described[key] for key in ("pruned", "unpruned_reason", "kept", "removed", "restored", "set_aside")}
+    return {
+        key: described[key]
+        for key in ("pruned", "unpruned_reason", "kept", "removed", "restored", "set_aside", "witnesses")
+    }
 
 
 PLANNER_TO_PLAN_STATUS = {

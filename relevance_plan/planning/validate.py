@@ -464,8 +464,11 @@ class PlanCheck:
         }
 
 
-def check_plan_file(domain_path: str, problem_path: str, plan_path: str, validator: str = "builtin") -> PlanCheck:
-    """Judge the plan in ``plan_path`` with ``validator`` (``builtin``, ``val`` or ``up``).
+def check_plan_file(
+    domain_path: str, problem_path: str, plan_path: str, validator: str = "builtin", timeout: float | None = None
+) -> PlanCheck:
+    """Judge the plan in ``plan_path`` with ``validator`` (``builtin``, ``val`` or ``up``) within ``timeout``
+    seconds of the judging (None: VAL's 60 s, no limit for the others).
 
     Files are read as the attempt loop reads them; an unreadable file, malformed PDDL or a
     malformed plan raise the library's errors (the plan's naming the file and line).  Input our
@@ -489,9 +492,10 @@ def check_plan_file(domain_path: str, problem_path: str, plan_path: str, validat
     except UnsupportedFeatureError as error:
         if validator == "builtin":
             raise
-        result = validate_unread(domain_path, problem_path, plan, error.message, (validator,))
+        deadline = None if timeout is None else time.monotonic() + timeout
+        result = validate_unread(domain_path, problem_path, plan, error.message, (validator,), deadline)
     else:
-        result = VALIDATORS[validator](domain, problem, plan, None)
+        result = VALIDATORS[validator](domain, problem, plan, None if timeout is None else time.monotonic() + timeout)
     if result.status is ValidationStatus.UNAVAILABLE:
         raise ValidatorUnavailableError(f"validator {validator} cannot judge this plan: {result.message}")
     if result.status is ValidationStatus.OUT_OF_TIME:

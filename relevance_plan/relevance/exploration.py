@@ -35,6 +35,7 @@ from relevance_plan.pddl.formulas import Atom, Formula, GroundAtom, Or, conjunct
 from relevance_plan.pddl.model import Domain
 from relevance_plan.relevance.task import PlanningTask
 from relevance_plan.relevance.types import static_predicates
+from relevance_plan.relevance.witnesses import WitnessNeed, match_witnesses
 
 DEFAULT_BUDGET = 400_000  # bindings tried before the check gives up
 DISJUNCTIVE_WAYS = 16  # ways through an action's disjunctive conditions the check splits it into
@@ -54,7 +55,9 @@ class Reachability:
     complete: bool  # False: the budget ran out, nothing is known
     unreached: tuple[GroundAtom, ...] = ()  # goal atoms the relaxation does not reach
     plan: tuple[Step, ...] = ()  # ground relaxed-plan steps (action, *args)
-    plan_objects: frozenset[str] = frozenset()
+    plan_objects: frozenset[str] = frozenset()  # the relaxed plan's objects and the goal atoms' witnesses
+    # goal atom -> the object it is met through, where it needs one of its own (``witnesses``)
+    witnesses: tuple[tuple[GroundAtom, str], ...] = ()
 
 
 def required_atoms(formula: Formula) -> Iterator[Condition]:
@@ -503,6 +506,11 @@ class Exploration:
         problem = task.typing.problem
         self.goal = [(p, *args) for p, args in required_atoms(problem.goal) if not any(a[0] == "?" for a in args)]
         self.missing = set(self.goal)
+        self.witness_needs = task.witness_needs
+        self.exists_needs = task.exists_needs
+        self.witnesses: dict[GroundAtom, str] = {}
+        self.stranded: frozenset[str] = frozenset()  # kept candidate witnesses no reached fact makes usable
+        self.witness_facts: list[GroundAtom] = []  # what makes each matched witness usable (holds robot vase)
         self.facts: dict[GroundAtom, _Achiever | None] = {}  # the step that first reached each fact
         self.queue: deque[GroundAtom] = deque()
         self.by_object = task.init_index.by_object
@@ -676,8 +684,66 @@ class Exploration:
         unreached = tuple(atom for atom in self.goal if atom not in self.facts)
         if unreached:
             return Reachability(False, True, unreached)
-        plan, objects = _relaxed_plan(self.facts, self.goal)
-        return Reachability(True, True, (), tuple(plan), frozenset(objects) - set(self.domain.constants))
+        shortfall = self.shortfall()
+        if shortfall:
+            return Reachability(False, True, tuple(need.goal for need in shortfall))
+        # the relaxed plan reaches the goal and makes every witness usable: the way to each is kept
+        plan, objects = _relaxed_plan(self.facts, [*self.goal, *self.witness_facts])
+        objects.update(self.witnesses.values())
+        witnesses = tuple(sorted(self.witnesses.items()))
+        return Reachability(True, True, (), tuple(plan), frozenset(objects) - set(self.domain.constants), witnesses)
+
+    def shortfall(self) -> tuple[WitnessNeed, ...]:
+        """The goal atoms left without a witness of their own and the existentials no kept object
+        satisfies yet (none while a goal atom is unreached); ``witnesses`` and ``stranded`` say
+        what the kept objects give.  The exploration runs to its end first: the goal is reached long
+        before every candidate is."""
+        self.witnesses, self.stranded, self.witness_facts = {}, frozenset(), []
+        if self.missing or not (self.witness_needs or self.exists_needs):
+            return ()
+        if self.queue:
+            self.run(exhaust=True)
+        return self._matched_shortfall()
+
+    def _matched_shortfall(self) -> tuple[WitnessNeed, ...]:
+        """Distinct usable witnesses for the goal atoms that need one of their own and for the
+        existentials (an existential's witness satisfies its body with reached facts); returns the
+        needs left without one, whose kept candidates go to ``stranded``."""
+        needs = self.witness_needs + self.exists_needs
+        wanted = {pattern[0] for need in needs for pattern in need.consumed}
+        # (predicate, position, object) -> a reached fact with the object there
+        reached: dict[tuple[str, int, str], GroundAtom] = {}
+        for fact in self.facts:
+            if fact[0] in wanted:
+                for i, arg in enumerate(fact[1:]):
+                    reached.setdefault((fact[0], i, arg), fact)
+
+        def made_usable(need: WitnessNeed, name: str) -> list[GroundAtom] | None:
+            """The reached facts that make ``name`` usable as the need's witness (None: it is not)."""
+            seen = MEMBER if name in self.kept_members else name
+            if seen != MEMBER and name not in self.allowed:
+                return None
+            if need.body:
+                grounded = need.grounded(name)
+                return grounded if all(fact in self.facts for fact in grounded) else None
+            for predicate, at in need.consumed:
+                facts = {reached.get((predicate, i, seen)) for i in at}
+                if len(facts) == 1 and None not in facts:
+                    return [fact for fact in facts if fact is not None]
+            return None
+
+        matched, unmatched = match_witnesses(needs, lambda need, name: made_usable(need, name) is not None)
+        self.witnesses = matched
+        by_goal = {need.goal: need for need in needs}
+        self.witness_facts = [fact for goal, name in matched.items() for fact in made_usable(by_goal[goal], name) or ()]
+        # the kept candidates the needs left without a witness cannot use yet: the way to them is missing
+        self.stranded = frozenset(
+            name
+            for need in unmatched
+            for name in need.candidates
+            if (name in self.allowed or name in self.kept_members) and made_usable(need, name) is None
+        )
+        return unmatched
 
     def objects_of(self, type_name: str) -> list[str]:
         if type_name not in self.of_type:
@@ -699,9 +765,10 @@ class Exploration:
             self.variable_fits[id(schema)] = fits
         return fits
 
-    def run(self) -> None:
+    def run(self, exhaust: bool = False) -> None:
+        """Explore until the goal is reached (with ``exhaust``, until nothing new is)."""
         saturable, dominated, facts = self.saturable, self.dominated, self.facts
-        while self.queue and self.missing:
+        while self.queue and (self.missing or exhaust):
             fact = self.queue.popleft()
             self._index((fact,))
             for schema, i, rest in self.triggers.get(fact[0], ()):

@@ -1,7 +1,7 @@
 """The knowledge model: the offline stand-in for the paper's GPT-4o answers.
 
 One YAML file per domain (``domains/<name>/relevance.yaml``), schema version 1,
-documented in ``docs/knowledge-knowledge_model.md``.  It is validated on load; every
+documented in ``docs/knowledge-model.md``.  It is validated on load; every
 error names the file and the line of the offending entry.
 """
 
@@ -11,7 +11,7 @@ import functools
 import math
 import os
 from collections.abc import Callable, Collection, Iterator, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Any, NoReturn
@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, Any, NoReturn
 from relevance_plan.data import DOMAINS_DIR as REPOSITORY_DOMAINS
 from relevance_plan.errors import ModelError, UsageError, printable
 from relevance_plan.pddl.model import Domain
-from relevance_plan.relevance.scene import PLACEMENT_CONDITIONS, ScenePredicates
+from relevance_plan.relevance.scene import PLACEMENT_CONDITIONS, SCENE_ROLES, ScenePredicates
 
 if TYPE_CHECKING:  # for the annotations only: yaml itself is imported on first use (_yaml_loader)
     import yaml
@@ -143,6 +143,8 @@ class KnowledgeModel:
     placement: Mapping[str, float]
     humans: Mapping[str, Human]
     dependencies: tuple[ModelDependency, ...] = field(default=())
+    # the first selection is checked for relaxed reachability and repaired, as the goal scorer's is
+    sufficiency_check: bool = False
 
     def objective_for_goal(self, goal_predicates: set[str]) -> list[str]:
         """Objectives whose goal predicates all appear in the problem's goal."""
@@ -245,6 +247,7 @@ def parse_knowledge_model(text: str, path: str = "<model>") -> KnowledgeModel:
             _read_humans(check, check.mapping(data, "humans", required=False), classes, task_classes, objectives)
         ),
         dependencies=_read_dependencies(check, data),
+        sufficiency_check=_read_flag(check, data, "sufficiency_check"),
     )
 
 
@@ -261,7 +264,15 @@ _TOP_LEVEL_KEYS = {
     "placement",
     "humans",
     "dependencies",
+    "sufficiency_check",
 }
+
+
+def _read_flag(check: _Checker, data: _LineDict, key: str) -> bool:
+    value = data.get(key, False)
+    if not isinstance(value, bool):
+        check.fail(f"'{key}' must be true or false", data, key)
+    return value
 
 
 def _finite_number(value: Any) -> bool:
@@ -294,11 +305,22 @@ def _optional_probability(check: _Checker, section: _LineDict, key: str, default
 
 
 def _read_scene(check: _Checker, section: _LineDict) -> ScenePredicates:
-    check.known_keys(section, {"location", "support", "access", "human_location"}, "'scene'")
+    check.known_keys(section, set(SCENE_ROLES), "'scene'")
+    roles: dict[str, str | None] = {}
     for key, value in section.items():
+        if value is None or (isinstance(value, str) and value.strip().lower() == NO_PREDICATE):
+            roles[key] = None
+            continue
         if not isinstance(value, str) or not value.strip() or any(c.isspace() or c in "()" for c in value):
-            check.fail(f"scene.{key} must be one predicate name, got {value!r}", section, key)
-    return ScenePredicates(**{key: value.lower() for key, value in section.items()})
+            check.fail(f"scene.{key} must be one predicate name or '{NO_PREDICATE}', got {value!r}", section, key)
+        roles[key] = value.lower()
+    return ScenePredicates(**roles, written=frozenset(section))
+
+
+# What the scene section writes for a role the domain has no predicate for.
+NO_PREDICATE = "none"
+# The arity each scene role's predicate must have.
+SCENE_ARITY = {"location": 2, "containment": 2, "support": 2, "human_location": 2, "access": 1, "closed": 1}
 
 
 def _read_classes(check: _Checker, section: _LineDict, default_kind: float) -> dict[str, ModelClass]:
@@ -535,16 +557,31 @@ def find_knowledge_model(domain_name: str, domain_path: str | None) -> Path | No
     return shipped_knowledge_models().get(domain_name)
 
 
-def check_knowledge_model_applies(knowledge_model: KnowledgeModel, domain: Domain) -> None:
-    """Refuse a model for another domain, or one whose scene predicates or dependencies the domain lacks."""
+def check_knowledge_model_applies(knowledge_model: KnowledgeModel, domain: Domain) -> KnowledgeModel:
+    """Refuse a model for another domain, or one whose scene predicates or dependencies the domain
+    lacks; returns the model with the scene roles it left to their defaults and the domain lacks as none."""
     if knowledge_model.domain != domain.name:
         raise ModelError(
             f"model is for domain '{knowledge_model.domain}', not '{domain.name}'", path=knowledge_model.path
         )
-    for role, predicate in vars(knowledge_model.scene).items():
-        if predicate not in domain.predicates and role != "human_location":
+    scene = knowledge_model.scene.for_domain(domain)
+    for role, predicate in scene.roles().items():
+        if predicate is None:
+            continue
+        params = domain.predicates.get(predicate)
+        if params is None:
+            if role == "human_location":
+                continue  # humans may come later (a live session adds them)
             raise ModelError(
-                f"scene.{role} '{predicate}' is not a predicate of domain '{domain.name}'", path=knowledge_model.path
+                f"scene.{role} '{predicate}' is not a predicate of domain '{domain.name}'"
+                f" (write '{role}: {NO_PREDICATE}' if the domain has none)",
+                path=knowledge_model.path,
+            )
+        if len(params) != SCENE_ARITY[role]:
+            raise ModelError(
+                f"scene.{role} '{predicate}' takes {len(params)} argument(s), but a {role} predicate"
+                f" takes {SCENE_ARITY[role]}",
+                path=knowledge_model.path,
             )
     for dependency in knowledge_model.dependencies:
         params = domain.predicates.get(dependency.predicate)
@@ -562,6 +599,7 @@ def check_knowledge_model_applies(knowledge_model: KnowledgeModel, domain: Domai
                     path=knowledge_model.path,
                     line=dependency.line,
                 )
+    return replace(knowledge_model, scene=scene) if scene != knowledge_model.scene else knowledge_model
 
 
 def check_threshold(value: float, name: str) -> float:

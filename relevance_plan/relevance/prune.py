@@ -29,6 +29,7 @@ from collections.abc import Sequence, Set
 from dataclasses import dataclass, field, replace
 from typing import Any
 
+from relevance_plan.pddl.formulas import GroundAtom
 from relevance_plan.pddl.writer import write_pruned_problem
 from relevance_plan.relevance.closure import ConstraintClosure, Restored
 from relevance_plan.relevance.knowledge import KnowledgeModel, check_threshold
@@ -102,6 +103,8 @@ class Selection:
     text: str = field(repr=False)  # the pruned problem in the user's own layout
     set_aside: frozenset[str] = frozenset()  # relevant alternatives left for a later attempt (see free_alternatives)
     unpruned_reason: str = ""  # why every object is kept, when one is ("" when the selection prunes)
+    # goal atom -> the kept object it is met through, where it needs one of its own (``witnesses``)
+    witnesses: tuple[tuple[GroundAtom, str], ...] = ()
 
     @property
     def removed(self) -> tuple[str, ...]:
@@ -126,6 +129,9 @@ class Selection:
                 for r in self.restored
             ],
             "set_aside": [problem.display(n) for n in problem.objects if n in self.set_aside],
+            "witnesses": [
+                {"goal": "(" + " ".join(goal) + ")", "object": problem.display(name)} for goal, name in self.witnesses
+            ],
         }
 
 
@@ -137,6 +143,7 @@ class _Draft:
     set_aside: frozenset[str]
     kept: frozenset[str] = frozenset()  # the selected ones closed, and what the repair added
     restored: tuple[Restored, ...] = ()  # why each kept object that was not selected is kept
+    witnesses: tuple[tuple[GroundAtom, str], ...] = ()  # the repair's last check's
 
 
 def prune_with_scores(
@@ -162,6 +169,12 @@ def prune_with_scores(
     if repair and settings.economical:
         draft = _set_aside_spare(task, scores, draft, closure, extra)
     full_above = settings.full_share(scores.scorer)
+    if repair and task.witness_shortfall:
+        # no selection can do what the whole problem cannot: the planner decides on the full problem
+        why = f"{task.witness_shortfall}: " + (
+            "the problem has no plan" if task.proved_unsolvable else "the full problem"
+        )
+        return full_problem(task, scores, thresholds, draft.selected, draft.restored, why)
     if repair and len(draft.kept) <= full_above * len(task.problem.objects):
         draft = _repair(task, scores, draft, closure)
     return _finish(task, scores, thresholds, draft, full_above)
@@ -201,8 +214,9 @@ def _set_aside_spare(
 
 def _repair(task: PlanningTask, scores: ScoreResult, draft: _Draft, closure: ConstraintClosure) -> _Draft:
     """With what a relaxed plan needs; what the repair brought back is no longer set aside."""
-    kept, repaired, _ = repair_selection(task, draft.kept, scores.element_scores, closure)
-    return replace(draft, kept=kept, restored=draft.restored + repaired, set_aside=draft.set_aside - kept)
+    kept, repaired, check = repair_selection(task, draft.kept, scores.element_scores, closure)
+    restored, set_aside = draft.restored + repaired, draft.set_aside - kept
+    return replace(draft, kept=kept, restored=restored, set_aside=set_aside, witnesses=check.witnesses)
 
 
 def _finish(
@@ -216,7 +230,9 @@ def _finish(
     task.check_time("checking the selection")
     kept, text = draft.kept, write_pruned_problem(task.problem, draft.kept)
     why = _why_nothing_pruned(task, kept, draft.restored)
-    return Selection(task, scores, thresholds, draft.selected, kept, draft.restored, text, draft.set_aside, why)
+    return Selection(
+        task, scores, thresholds, draft.selected, kept, draft.restored, text, draft.set_aside, why, draft.witnesses
+    )
 
 
 def can_serve_goal(task: PlanningTask, name: str) -> bool:
@@ -364,7 +380,8 @@ def ranked_names(
     A copy rarely does what its twin, kept or tried, could not: among fifty copies of a truck and
     one market that sells, the market comes second, not fifty-first.  Set-aside alternatives come
     late because the selection already holds a free member of their role, so a failed attempt
-    more likely lacks an object of another role."""
+    more likely lacks an object of another role.  Before them all, the next witness of each goal
+    atom that needs one of its own (:func:`next_witnesses`)."""
     values = scores.element_scores
     distance = task.goal_distance
     far = len(task.problem.objects) + 1
@@ -379,7 +396,17 @@ def ranked_names(
     for name in candidates:
         earlier[name] = seen[profiles[name]]
         seen[profiles[name]] += 1
-    return sorted(candidates, key=lambda name: (earlier[name], *rank(name)))
+    first = next_witnesses(task, kept)
+    ranked = sorted((name for name in candidates if name not in first), key=lambda name: (earlier[name], *rank(name)))
+    return first + ranked
+
+
+def next_witnesses(task: PlanningTask, kept: Set[str]) -> list[str]:
+    """The best-ranked candidate outside ``kept`` of each goal atom that needs a witness of its own
+    (``witnesses``): widening tries another vase before it takes back whole rooms."""
+    needs = task.witness_needs + task.exists_needs
+    chosen = (next((n for n in need.candidates if n not in kept), None) for need in needs)
+    return list(dict.fromkeys(name for name in chosen if name is not None))
 
 
 __all__ = [
@@ -390,6 +417,7 @@ __all__ = [
     "Thresholds",
     "Widening",
     "full_problem",
+    "next_witnesses",
     "ranked_names",
     "prune_with_scores",
     "widen",

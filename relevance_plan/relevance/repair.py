@@ -34,6 +34,7 @@ from relevance_plan.relevance.exploration import (
     relaxed_task,
 )
 from relevance_plan.relevance.task import PlanningTask
+from relevance_plan.relevance.witnesses import WitnessNeed, match_witnesses
 
 BUDGET_PER_OBJECT = 5_000  # the budget grows with the problem, as the planner's own grounding does
 REPAIR_SECONDS = 5.0  # and the repair's checks together stop after this long
@@ -144,22 +145,23 @@ def _grow(
     """Grow the kept set until the exploration reaches the goal; returns (the grown set, the objects
     added in the order they came, the last check).
 
-    One member of every class the kept set lacks first (no airplane at all), together; then, round by
+    The best witness of each goal atom that needs one of its own first (``witnesses``), and one
+    member of every class the kept set lacks (no airplane at all), together; then, round by
     round, the objects between what is reached and the goal atoms still unreached: one at a time at
     first (one airplane may carry every package), then a quarter of what was added, or as many as
-    the last round's rate of goal atoms says are needed.  The exploration carries on from where it
+    the last round's rate of goal atoms says are needed; once the goal is reached, the next witness
+    of each goal atom still without one of its own.  The exploration carries on from where it
     stopped, so the whole growth costs about one exploration of the final set."""
     kept = repair.kept
-    take = order.missing_classes(kept)
+    take = order.first_witnesses(kept)
+    take += [name for name in order.missing_classes(kept | set(take)) if name not in take]
     current = kept
     added: list[str] = []
     estimate = 0  # objects still needed, judged by what the last round's objects reached
     try:
-        while exploration.missing:
+        while True:
             if not take:
-                batch = max(1, (len(current) - len(kept)) // 4, min(estimate, 2 * (len(current) - len(kept))))
-                unreached = {arg for atom in exploration.missing for arg in atom[1:]}
-                take = order.nearest(current, unreached, batch, exploration.facts)
+                take = _next_round(exploration, order, current, kept, estimate)
                 if not take:
                     break
             grown, _ = repair.close(current | frozenset(take), current)
@@ -181,6 +183,21 @@ def _grow(
         repair.task.check_time("checking the selection")
         check = Reachability(False, False)
     return frozenset(current), added, check
+
+
+def _next_round(
+    exploration: Exploration, order: RepairOrder, current: frozenset[str], kept: frozenset[str], estimate: int
+) -> list[str]:
+    """What the next round of :func:`_grow` adds (nothing: the goal is reached, or nothing helps)."""
+    batch = max(1, (len(current) - len(kept)) // 4, min(estimate, 2 * (len(current) - len(kept))))
+    if not exploration.missing:
+        # a goal atom without a witness of its own: its next candidate, and the way to the kept ones it cannot reach
+        take = order.next_witnesses(exploration.shortfall(), current)
+        if exploration.stranded:
+            take += order.nearest(current, exploration.stranded, batch, exploration.facts)
+        return list(dict.fromkeys(take))
+    unreached = {arg for atom in exploration.missing for arg in atom[1:]}
+    return order.nearest(current, unreached, batch, exploration.facts)
 
 
 def _restore_used(
@@ -287,6 +304,36 @@ class RepairOrder:
     def learn(self, taken: Sequence[str], progress: bool) -> None:
         for cls in {self.classes.get(name, "object") for name in taken}:
             self.fruitless[cls] = 0 if progress else self.fruitless.get(cls, 0) + 1
+
+    def first_witnesses(self, kept: Set[str]) -> list[str]:
+        """For each goal atom that needs a witness of its own and has no kept candidate to spare,
+        its best-ranked candidate not taken by another (``witnesses.match_witnesses`` over all)."""
+        needs = self.task.witness_needs
+        wanted = [
+            need.candidates[0]
+            for need in self.task.exists_needs
+            if need.candidates and not any(name in kept for name in need.candidates)
+        ]
+        if not needs:
+            return wanted
+        chosen, _ = match_witnesses(needs, lambda need, name: True)
+        spare = set(kept)
+        for need in needs:
+            own = next((name for name in need.candidates if name in spare), None)
+            if own is not None:
+                spare.discard(own)
+            elif need.goal in chosen and chosen[need.goal] not in kept:
+                wanted.append(chosen[need.goal])
+        return list(dict.fromkeys(wanted))
+
+    def next_witnesses(self, shortfall: Sequence[WitnessNeed], current: Set[str]) -> list[str]:
+        """The best-ranked candidate outside ``current`` of each goal atom left without a witness."""
+        taken: list[str] = []
+        for need in shortfall:
+            name = next((n for n in need.candidates if n not in current and n not in taken), None)
+            if name is not None:
+                taken.append(name)
+        return taken
 
     def missing_classes(self, kept: Set[str]) -> list[str]:
         """The best-ranked member (score, then hops from ``kept``) of every class ``kept`` has none of."""

@@ -36,6 +36,7 @@ class ScoringOptions:
     objective: str | None = None
     model_task: str | None = None  # the knowledge model's task (P(task | objective) = 1)
     human: str | None = None
+    place_kinds: bool = False  # kinds and types the model does not list go under their nearest class (free text)
     thresholds: Thresholds = field(default_factory=Thresholds)
     seed: int = 0
     goal_filter: bool = True  # the first selection leaves out relevant objects no goal-directed action can use
@@ -88,13 +89,22 @@ class Scoring:
         """The objects ``prune`` writes and ``plan`` tries first: thresholds and closure, and when
         ``narrow`` (the relevance method) the goal filter, and blocked alternatives and those no
         relaxed plan needs set aside (a bet on the first attempt only: widening sets nothing more
-        aside, and brings these back last)."""
+        aside, and brings these back last); with a knowledge model that asks for it
+        (``sufficiency_check``), the sufficiency check as without a model, negative preconditions
+        counted (``completion``)."""
+        checked = narrow and self.knowledge_model is not None and self.knowledge_model.sufficiency_check
         settings = PruneSettings(
             goal_filter=self.options.goal_filter and narrow,
             prefer_free=self.options.prefer_free and narrow,
             economical=self.options.economical and narrow,
+            repair=True if checked and self.scorer == "model" else None,
         )
-        return self.prune(self.options.thresholds, settings)
+        selection = self.prune(self.options.thresholds, settings)
+        if checked and self.scorer == "model":
+            from relevance_plan.relevance.completion import complete_selection
+
+            return complete_selection(selection, self.knowledge_model)
+        return selection
 
 
 def resolve_knowledge_model(
@@ -103,18 +113,48 @@ def resolve_knowledge_model(
     """The explicit ``--model``, else one found next to the domain or shipped for the domain's name
     (or one of ``names``); an explicit knowledge model that does not fit the domain is an error."""
     if model_path is not None:
-        knowledge_model = load_knowledge_model(model_path)
-        check_knowledge_model_applies(knowledge_model, domain)
-        return knowledge_model
+        return check_knowledge_model_applies(load_knowledge_model(model_path), domain)
     for name in (domain.name, *names):
         found = find_knowledge_model(name, domain_path)
         if found is None:
             continue
         knowledge_model = load_knowledge_model(found)
         if knowledge_model.domain == name:
-            check_knowledge_model_applies(replace(knowledge_model, domain=domain.name), domain)
-            return knowledge_model
+            applies = check_knowledge_model_applies(replace(knowledge_model, domain=domain.name), domain)
+            return replace(applies, domain=knowledge_model.domain)
     return None
+
+
+# The options only a knowledge model reads, as the command line spells them.
+CUE_OPTIONS = {"objective": "--objective", "model_task": "--task", "human": "--human", "place_kinds": "--place-kinds"}
+
+
+def given_cues(options: ScoringOptions) -> list[str]:
+    """The command-line names of the knowledge-model options ``options`` sets."""
+    return [flag for field_name, flag in CUE_OPTIONS.items() if getattr(options, field_name) not in (None, False)]
+
+
+def without_cues(options: ScoringOptions) -> ScoringOptions:
+    """``options`` without the knowledge-model options (for a fallback to another scorer that says so)."""
+    return replace(options, objective=None, model_task=None, human=None, place_kinds=False)
+
+
+def check_cues_used(options: ScoringOptions, scorer: str, domain_name: str) -> None:
+    """UsageError when options only a knowledge model reads are given to another scorer: never ignored."""
+    given = given_cues(options)
+    if not given or scorer == "model":
+        return
+    why = (
+        f"no knowledge model applies to domain '{domain_name}'"
+        if options.scorer is None
+        else f"--scorer {scorer} is chosen"
+    )
+    raise UsageError(
+        f"{' and '.join(given)} {'needs' if len(given) == 1 else 'need'} the knowledge-model scorer, but {why}:"
+        " give --model FILE ('relevance-plan draft-model' drafts one), or leave "
+        + ("it" if len(given) == 1 else "them")
+        + " out"
+    )
 
 
 def choose_scorer(method: str, knowledge_model: KnowledgeModel | None, override: str | None) -> str:
@@ -156,6 +196,8 @@ def score_problem(
     scorer = choose_scorer(method, knowledge_model, options.scorer)
     if scorer == "model" and knowledge_model is None:
         raise UsageError(f"no knowledge model found for domain '{task.domain.name}': give --model or use --scorer goal")
+    if method == "relevance":
+        check_cues_used(options, scorer, task.domain.name)
     necessary = None
     if scorer == "oracle" and problem_path is not None:
         necessary = necessary_objects(problem_path)
@@ -166,6 +208,7 @@ def score_problem(
         human=options.human,
         seed=options.seed,
         necessary=necessary,
+        place_kinds=options.place_kinds,
     )
     task.check_time("scoring the objects")
     scores = SCORERS[scorer](task, request)
@@ -177,8 +220,11 @@ __all__ = [
     "SCORER_CHOICES",
     "Scoring",
     "ScoringOptions",
+    "check_cues_used",
+    "given_cues",
     "check_scorer",
     "choose_scorer",
     "resolve_knowledge_model",
     "score_problem",
+    "without_cues",
 ]

@@ -12,6 +12,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from functools import cached_property
 
+from relevance_plan.pddl.formulas import Atom, conjuncts, is_variable
 from relevance_plan.pddl.model import Domain, Problem, goal_objects, pinned_objects
 from relevance_plan.pddl.sexpr import check_deadline
 from relevance_plan.relevance.analysis import (
@@ -24,6 +25,8 @@ from relevance_plan.relevance.analysis import (
 )
 from relevance_plan.relevance.soundness import KeptObjects, objects_to_keep, soundness_requirements
 from relevance_plan.relevance.types import InferredTypes, infer_types
+from relevance_plan.relevance.witness_proof import unsolvable_by_witnesses
+from relevance_plan.relevance.witnesses import WitnessNeed, exists_needs, shortfall_reason, witness_needs
 
 
 @dataclass(frozen=True, eq=False)
@@ -87,6 +90,43 @@ class PlanningTask:
     def pinned_objects(self) -> frozenset[str]:
         """Objects named in the goal, the trajectory constraints or the metric: never pruned."""
         return pinned_objects(self.problem, self.domain)
+
+    @cached_property
+    def witness_needs(self) -> tuple[WitnessNeed, ...]:
+        """The goal atoms that each need an object of their own to be met through (``witnesses``)."""
+        typing = self.typing
+        problem = typing.problem
+        # the goal's top-level atoms, as the relaxed check reads them
+        goal = [(p.predicate, *p.args) for p in conjuncts(problem.goal) if isinstance(p, Atom)]
+        ground = [atom for atom in goal if not any(is_variable(arg) for arg in atom[1:])]
+        needs = witness_needs(typing.domain, problem, self.init_index, problem.objects, self.hub_degree, ground)
+        self.check_time("finding the goal's witnesses")
+        return needs
+
+    @cached_property
+    def exists_needs(self) -> tuple[WitnessNeed, ...]:
+        """The goal's top-level existentials, each with the objects that can be its variable (``witnesses``)."""
+        typing = self.typing
+        problem = typing.problem
+        return exists_needs(typing.domain, self.init_index, problem.objects, self.hub_degree, problem.goal)
+
+    @cached_property
+    def witness_shortfall(self) -> str:
+        """Why even the whole problem has too few witnesses for its goal ("" when it has enough)."""
+        return shortfall_reason(self.witness_needs)
+
+    @cached_property
+    def proved_unsolvable(self) -> str:
+        """Why the problem has no plan, when the witnesses' shortfall is proved (``witness_proof``); ""
+        when it is not (a verdict the tool gives without a planner, so it is given only when proved)."""
+        typing = self.typing
+        if typing.inferred:
+            return ""  # inferred classes guide choices; a proof stands on the types the domain declares
+        proof = unsolvable_by_witnesses(
+            typing.domain, typing.problem, self.init_index, self.witness_needs, self.witness_shortfall
+        )
+        self.check_time("proving the goal's witnesses short")
+        return proof
 
     @cached_property
     def kept_for_soundness(self) -> KeptObjects:

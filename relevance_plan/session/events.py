@@ -6,7 +6,7 @@
     {"event": "set", "fluent": [FUNCTION, ARG, ...], "value": NUMBER}   (a numeric fluent's new value)
     {"event": "goal", "goal": "(and ...)"}
     {"event": "human", "name": NAME, "preferences": PROFILE}   (PROFILE may be null: none recorded)
-    {"event": "cue", "task": TASK}   or   {"event": "cue", "objective": NAME}
+    {"event": "cue", "task": TASK}   or   {"event": "cue", "objective": NAME}   or   {"event": "cue", "text": WORDS}
     {"event": "plan"}
 
 Extra fields are allowed and ignored.  A malformed or impossible event
@@ -25,6 +25,7 @@ import re
 from collections.abc import Callable, Mapping
 from collections.abc import Set as AbstractSet
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 from relevance_plan.errors import MAX_MESSAGE, RelevancePlanError, printable
 from relevance_plan.pddl.formulas import Formula, names_in
@@ -32,6 +33,9 @@ from relevance_plan.pddl.parser import read_problem
 from relevance_plan.pddl.sexpr import parse_sexpr
 from relevance_plan.relevance.knowledge import KnowledgeModel
 from relevance_plan.session.state import LiveScene
+
+if TYPE_CHECKING:  # the text package is imported only for a cue in words
+    from relevance_plan.relevance.text.matching import WordMatch
 
 EVENT_KINDS = ("add", "remove", "set", "unset", "goal", "human", "cue", "plan")
 # One event line at most; a longer one is refused and the stream carries on.
@@ -66,6 +70,7 @@ class Event:
     profile: str | None = None  # human: the model's profile
     task: str | None = None  # cue
     objective: str | None = None  # cue
+    understood: WordMatch | None = None  # cue in words: what it was understood as (or the question)
 
 
 def parse_event_line(line: str) -> dict:
@@ -143,17 +148,38 @@ def _check_human(data: dict, scene: LiveScene, model: KnowledgeModel | None) -> 
 
 
 def _check_cue(data: dict, scene: LiveScene, model: KnowledgeModel | None) -> Event:
-    """A cue names the model's task or objective (one field of the cue per way of giving it)."""
-    task, objective = data.get("task"), data.get("objective")
-    if (task is None) == (objective is None):
-        raise EventError("a cue gives either 'task' or 'objective'")
+    """A cue names the model's task or objective, or gives the human's words (one field per way)."""
+    task, objective, text = data.get("task"), data.get("objective"), data.get("text")
+    if sum(value is not None for value in (task, objective, text)) != 1:
+        raise EventError("a cue gives either 'task' or 'objective', or 'text' (the human's words)")
     if model is None:
         raise EventError("cues need a knowledge model (this session has none)")
+    if text is not None:
+        return _understood_cue(_text(data, "text"), model)
     if task is not None and (not isinstance(task, str) or task not in model.task_classes):
         raise EventError(f"unknown task {task!r} (the model has: {', '.join(model.task_classes)})")
     if objective is not None and (not isinstance(objective, str) or objective not in model.objectives):
         raise EventError(f"unknown objective {objective!r} (the model has: {', '.join(model.objectives)})")
     return Event("cue", task=task, objective=objective)
+
+
+def _understood_cue(text: str, model: KnowledgeModel) -> Event:
+    """A cue in words, as the model's nearest task (a cue is about what to make, as a task cue is),
+    else its nearest objective, else a question about the tasks."""
+    from relevance_plan.errors import MissingExtraError
+    from relevance_plan.relevance.text.matching import Vocabulary
+    from relevance_plan.relevance.text.understanding import understand
+
+    try:
+        task = understand(text, model, Vocabulary.TASK)
+        if task.chosen is not None:
+            return Event("cue", task=task.chosen, understood=task)
+        objective = understand(text, model, Vocabulary.OBJECTIVE)
+    except MissingExtraError as error:
+        raise EventError(f"a cue in words needs the 'text' extra: {error.message}") from None
+    if objective.chosen is not None:
+        return Event("cue", objective=objective.chosen, understood=objective)
+    return Event("cue", understood=task)
 
 
 def _check_plan(data: dict, scene: LiveScene, model: KnowledgeModel | None) -> Event:

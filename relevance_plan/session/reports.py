@@ -5,11 +5,14 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from relevance_plan.pddl.plans import Plan
 from relevance_plan.planning.results import PlanResult, PlanStatus
 from relevance_plan.relevance.prune import Selection
+
+if TYPE_CHECKING:  # the text package is imported only when free text is given
+    from relevance_plan.relevance.text.matching import WordMatch
 
 
 @dataclass(frozen=True)
@@ -49,6 +52,7 @@ class EventReport:
     made: bool | None = None  # when triggered: whether the first selection was made again (or the one in force held)
     plan: PlanReport | None = None
     display: Mapping[str, str] = field(default_factory=dict, repr=False)  # object -> the user's spelling
+    understood: tuple[WordMatch, ...] = ()  # free text (a cue in words, --objective TEXT) and what it was taken for
 
     @property
     def reason(self) -> str:
@@ -103,6 +107,8 @@ class EventReport:
         data["dropped"] = [self.show(n) for n in self.dropped]
         ask = self.ask
         data["ask"] = None if ask is None else {"cue": ask.cue, "question": ask.question, "options": list(ask.options)}
+        if self.understood:
+            data["understood"] = [match.as_json() for match in self.understood]
         data["determination_ms"] = round(self.seconds * 1000, 3)
         if self.plan is not None:
             data["plan_status"] = self.plan.status.value

@@ -24,6 +24,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
+from relevance_plan.pddl.formulas import names_in
 from relevance_plan.pddl.model import goal_objects
 from relevance_plan.relevance.analysis import GoalAnalysis, GoalReads, analyse_goal_reading, object_distances
 from relevance_plan.relevance.knowledge import KnowledgeModel
@@ -41,6 +42,7 @@ from relevance_plan.relevance.scorers.knowledge_model import (
     score_element,
     scored_by_contents,
     unknown_share_problem,
+    with_goal_objects,
 )
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
 from relevance_plan.relevance.task import PlanningTask, hub_degree
@@ -58,6 +60,7 @@ def request_for(options: ScoringOptions, model: KnowledgeModel | None) -> ScoreR
         model_task=options.model_task,
         human=options.human,
         seed=options.seed,
+        place_kinds=options.place_kinds,
     )
 
 
@@ -144,11 +147,13 @@ class LiveModelScores:
             own = index.by_object.get(name, ())
             facts.update(own)
             for fact in own:
-                if fact[0] in (p.location, p.human_location) and len(fact) == 3 and fact[1] == name:
-                    facts.update(index.facts_of(fact[2], p.access))
-                    facts.update(index.facts_of(fact[2], p.human_location))
+                if fact[0] in (p.location, p.containment, p.human_location) and len(fact) == 3 and fact[1] == name:
+                    for role in (p.access, p.closed, p.human_location):
+                        if role is not None:
+                            facts.update(index.facts_of(fact[2], role))
         described = {name: self.scene.objects[name] for name in names}
-        for name, element in build_scene(self.scene.domain, described, facts, p).elements.items():
+        scene = build_scene(self.scene.domain, described, facts, p, types=self.scene.objects)
+        for name, element in scene.elements.items():
             self._set_element(name, element)
 
     def _set_element(self, name: str, element: Element) -> None:
@@ -175,9 +180,13 @@ class LiveModelScores:
 
     def items_at(self, place: str) -> set:
         index, p = self.scene.index, self.predicates
-        found = {f[1] for f in index.facts_of(place, p.location) if len(f) == 3 and f[2] == place}
-        found |= {f[1] for f in index.facts_of(place, p.human_location) if len(f) == 3 and f[2] == place}
-        return found
+        return {
+            f[1]
+            for role in (p.location, p.containment, p.human_location)
+            if role is not None
+            for f in index.facts_of(place, role)
+            if len(f) == 3 and f[2] == place
+        }
 
     # ------------------------------------------------------------------ scores
 
@@ -276,16 +285,19 @@ class LiveModelScores:
         problem = unknown_share_problem(len(self.scene.objects) - len(unknown), len(self.scene.objects))
         if problem:
             return insufficient_result(self.scene.objects, context, problem)
+        named = set(names_in(self.scene.goal)) & self.scene.objects.keys()
+        scores, explanations = with_goal_objects(dict(self.scores), dict(self.explanations), named)
         return ScoreResult(
             "model",
-            dict(self.scores),
+            scores,
             element_class=dict(self.element_class),
             class_scores=dict(self.class_scores),
-            explanations=dict(self.explanations),
+            explanations=explanations,
             unknown=unknown,
             objective=context.objective,
             task_distribution=context.distribution,
             task_entropy=context.entropy,
+            understood=context.understood,
         )
 
 

@@ -40,7 +40,7 @@ from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
 from functools import cached_property
 
-from relevance_plan.pddl.formulas import literals
+from relevance_plan.pddl.formulas import Atom, conjuncts, literals
 from relevance_plan.pddl.model import Domain
 from relevance_plan.relevance.analysis import (
     ConstraintRule,
@@ -73,6 +73,10 @@ KNOWN_ANALYSES = frozenset(
     }
 )
 ANALYSES = frozenset(name for name, value in vars(PlanningTask).items() if isinstance(value, cached_property))
+# The goal's witnesses (class goals): when there are none, they read only whether each goal atom
+# holds (a goal event determines in full; a goal atom's fact changing is checked in _task_inputs).
+# When there are some, they read the whole scene (candidates, distances): not followed.
+WITNESS_ANALYSES = frozenset({"witness_needs", "exists_needs", "witness_shortfall", "proved_unsolvable"})
 
 
 @dataclass(frozen=True, eq=False)
@@ -116,6 +120,7 @@ class SelectionBasis:
     agents: frozenset[str]  # where the one agent is: a ranking's sources whatever is kept
     shared: str | None  # the class the relaxed exploration shares among many goal objects
     quantified: bool  # a quantifier ranges over objects: what the closure keeps for soundness can change
+    goal_atoms: frozenset[tuple]  # the goal's atoms, whose truth decides whether the goal needs witnesses
     other_analyses: frozenset[str]  # analyses used that this module does not know
     functional: frozenset  # the functional positions of the facts, from which closure's rules come
     singletons: frozenset[str]  # the predicates with one fact, from which the single-valued ones come
@@ -141,6 +146,8 @@ def selection_basis(
         found = relaxed_task(task).shared
         shared = found.name if found is not None else None
     sound = task.kept_for_soundness
+    used = frozenset(name for name in ANALYSES if name in task.__dict__)
+    without_witnesses = frozenset(name for name in used & WITNESS_ANALYSES if not task.__dict__[name])
     return SelectionBasis(
         selection=selection,
         analysed=task.goal_analysed,
@@ -150,7 +157,10 @@ def selection_basis(
         agents=agents(task.domain, index),
         shared=shared,
         quantified=bool(sound.always or sound.linked),
-        other_analyses=frozenset(name for name in ANALYSES if name in task.__dict__) - KNOWN_ANALYSES,
+        goal_atoms=frozenset(
+            (atom.predicate, *atom.args) for atom in conjuncts(task.problem.goal) if isinstance(atom, Atom)
+        ),
+        other_analyses=used - KNOWN_ANALYSES - without_witnesses,
         functional=index.functional,
         singletons=index.singletons,
         single_valued=closure.singletons,
@@ -245,6 +255,8 @@ def _task_inputs(basis: SelectionBasis, scene: LiveScene, changes: EventChanges)
         return "a quantifier ranges over the objects: what soundness keeps may change"
     if not declares_types(scene.domain, basis.selection.task.problem):
         return "the objects' classes are inferred from the facts"
+    if basis.goal_atoms and not basis.goal_atoms.isdisjoint(delta.atoms):
+        return "a goal atom came to hold or stopped holding: the goal's witnesses may change"
     static = static_predicates(scene.domain)
     if basis.selection.scores.alternatives and any(atom[0] in static for atom in delta.atoms):
         return "a static fact changed while alternatives are set aside"

@@ -42,6 +42,7 @@ from collections.abc import Callable
 from dataclasses import replace
 from pathlib import Path
 from types import MappingProxyType
+from typing import TYPE_CHECKING
 
 from relevance_plan.io import Source, is_pddl_text, load_sources, write_text_atomic
 from relevance_plan.pddl.formatter import format_domain
@@ -76,6 +77,9 @@ from relevance_plan.session.reuse import (
 )
 from relevance_plan.session.state import LiveScene, SceneDelta
 from relevance_plan.session.triggers import TRIGGERS, Change, Trigger, check_triggers
+
+if TYPE_CHECKING:  # the text package is imported only when free text is given
+    from relevance_plan.relevance.text.matching import WordMatch
 
 # Runs the planner on a problem (PDDL text of the current domain) within a time limit (None: none).
 RunPlanner = Callable[[str, "float | None"], RunOutcome]
@@ -240,6 +244,8 @@ class Session:
         elif changed and self.idle:
             self.basis = None  # nobody is served: the selection in force stops following the scene
         report = replace(self._report(event.kind, reasons, previous, time.perf_counter() - started), made=made)
+        if event.understood is not None:
+            report = self._with_cue_words(report, event.understood)
         plan = self._plan_for(event, reasons, change, previous)
         return replace(report, plan=plan) if plan is not None else report
 
@@ -265,6 +271,13 @@ class Session:
         ):
             return self.plan()
         return None
+
+    def _with_cue_words(self, report: EventReport, match: WordMatch) -> EventReport:
+        """A cue in words: what it was understood as, or (not understood) the question to ask."""
+        if match.chosen is not None:
+            return replace(report, understood=(match,))
+        options = tuple(candidate.name for candidate in match.candidates)
+        return replace(report, understood=(match,), ask=Ask(match.vocabulary.value, match.insufficiency, options))
 
     def _rejected(self, kind: str, error: EventError) -> EventReport:
         return EventReport(
@@ -322,10 +335,14 @@ class Session:
                 self.served = event.name
                 return self._rescore(scene.take_delta(), options, True)
         elif event.kind == "cue":
+            if event.task is None and event.objective is None:
+                return False, set(), scene.take_delta()  # words not understood: nothing changes, the report asks
             if event.task is not None:
                 options = replace(options, model_task=event.task)
             else:
                 options = replace(options, objective=event.objective)
+            # the cue in force, said again: worth a determination only if none was made yet
+            return self._rescore(scene.take_delta(), options, options == self.options and self.selection is None)
         return self._rescore(scene.take_delta(), options, False)
 
     def _rescore(self, delta: SceneDelta, options: ScoringOptions, served: bool) -> tuple[bool, object, SceneDelta]:
@@ -491,7 +508,15 @@ class Session:
             ask=self.ask() if asking else None,
             seconds=seconds,
             display=MappingProxyType(self.scene.display),
+            understood=self._understood() if reasons else (),
         )
+
+    def _understood(self) -> tuple:
+        """What the free text in force (``--objective`` or ``--task`` in words) was taken for."""
+        context = getattr(self.scores, "context", None)  # the live knowledge model's, without a full result
+        if context is not None:
+            return context.understood
+        return () if isinstance(self.scores, LiveGoalScores) else self.scores.result().understood
 
     def ask(self, scores: ScoreResult | None = None) -> Ask | None:
         """The question for the human: the missing cue, or (without recorded preferences) which kinds."""
@@ -500,6 +525,10 @@ class Session:
             return None
         scores = scores or self.scores.result()
         if not scores.sufficient:
+            unclear = [m for m in scores.understood if m.chosen is None and m.vocabulary.value != "class"]
+            if unclear:  # --objective or --task in words the model did not understand
+                options = tuple(candidate.name for candidate in unclear[0].candidates)
+                return Ask(unclear[0].vocabulary.value, unclear[0].insufficiency, options)
             if scores.objective is None:
                 return Ask("objective", "What would you like to do?", tuple(model.objectives))
             if scores.task_entropy is not None and scores.task_entropy > model.entropy_bound:
@@ -607,7 +636,8 @@ def _live_scores(
     """The live form of the scorer the options choose (the knowledge model's, the goal's), else
     the scorer re-run in full on every change."""
     scorer = choose_scorer("relevance", model, options.scorer)
-    if scorer == "model" and model is not None:
+    # placing unknown kinds (--place-kinds) is the scorer's own step: scored in full on each change
+    if scorer == "model" and model is not None and not options.place_kinds:
         return LiveModelScores(scene, model, options)
     if scorer == "goal" and options.learned_model_path is None:
         return LiveGoalScores(scene)

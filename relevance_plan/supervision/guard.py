@@ -53,6 +53,7 @@ LAUNCH = "import sys; sys.path.append({folder!r}); import guard; guard.main()"
 
 # Only a directory an adapter made for this run is removed (tempfile prefix "relevance-plan-").
 SCRATCH_PREFIX = "relevance-plan-"
+PLANNER_TMP = "tmp"  # the planner's temporary folder, inside its working folder
 NO_CGROUP = "-"
 NO_LIMIT = "-"
 PR_SET_CHILD_SUBREAPER = 36  # linux/prctl.h
@@ -328,6 +329,31 @@ def _limit_memory(megabytes: str) -> None:
         resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
 
 
+def _private_temporary_folder() -> str | None:
+    """The planner's temporary folder: ``tmp`` in its working folder, made here and named by
+    ``$TMPDIR``, ``$TEMP`` and ``$TMP``.  What a planner leaves in the temporary folder (an engine's
+    log files, its copies of the problem, a component killed before it cleaned up) goes with the
+    working folder, whatever the planner does; None when it cannot be made (the planner then
+    keeps the tool's)."""
+    try:
+        os.mkdir(PLANNER_TMP, 0o700)
+    except OSError:
+        return None
+    path = os.path.join(os.getcwd(), PLANNER_TMP)
+    for name in ("TMPDIR", "TEMP", "TMP"):
+        os.environ[name] = path
+    return path
+
+
+def _remove_temporary_folder(path: str | None) -> None:
+    """The planner's temporary folder, once every process of the run has ended (a --keep-work
+    folder keeps the planner's files, not its temporary ones).  A link put in its place is not followed."""
+    if path is not None and os.path.isdir(path) and not os.path.islink(path):
+        import shutil
+
+        shutil.rmtree(path, ignore_errors=True)
+
+
 def main() -> None:
     fd, cgroup, workdir, limit, command = int(sys.argv[1]), sys.argv[2], sys.argv[3], sys.argv[4], sys.argv[5:]
     os.chdir(workdir)
@@ -335,12 +361,14 @@ def main() -> None:
     _limit_memory(limit)
     subreaper = _become_subreaper()
     _shield()
+    temporary = _private_temporary_folder()
     code = _wait(_spawn(command, fd), fd)
     if code is None:
         _stop_everything(subreaper, cgroup)
         return
     if subreaper and not _alone_in(cgroup):
         kill_descendants(os.getpid(), reap=True)  # whatever the planner left behind
+    _remove_temporary_folder(temporary)
     if _tool_gone(fd):  # died just now: nobody else will clean up
         _remove_scratch(os.getcwd())
         if cgroup != NO_CGROUP:

@@ -24,7 +24,7 @@ SIGTERM, and (by the guard) when the tool itself is killed.  How much
   leaves a process outside the guard's process group can escape.
 * Elsewhere (macOS): the guard's process group.
 
-VAL's ``Validate``, the one other program the tool starts, is found and run by ``val.py``.
+VAL's ``Validate``, the one other program the tool starts, is found by ``val.py`` and run as a planner is.
 
 The start itself is :mod:`spawn`'s (the launcher's head start uses it before
 anything else is imported); this module waits for runs, stops them and

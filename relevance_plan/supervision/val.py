@@ -23,7 +23,6 @@ import importlib.util
 import os
 import shutil
 import stat
-import subprocess
 import tempfile
 from pathlib import Path
 from typing import NamedTuple
@@ -125,8 +124,19 @@ def _cached_copy(folder: Path) -> Path:
 def run_val(
     domain_path: str, problem_path: str, plan_text: str, timeout: float = 60.0, tolerance: float | None = None
 ) -> ValRun:
-    """Run ``Validate -v`` on a plan text (``-t tolerance`` when given); ``ValidatorUnavailableError``
-    when VAL is not installed or could not run (not started, out of time)."""
+    """Run ``Validate -v`` on a plan text (``-t tolerance`` when given), under the guard as every planner
+    runs: stopped at ``timeout`` (VAL is slow on some input: a name of 100,000 characters takes it
+    minutes) and whenever the tool ends, even by ``kill -9``.  ``ValidatorUnavailableError`` when VAL
+    is not installed or could not run (not started, out of time)."""
+    from relevance_plan.supervision.process import (
+        CancelScope,
+        cancel_scope,
+        read_log,
+        run_process_group,
+        watchdog_deadline,
+        work_directory,
+    )
+
     binary = find_validate()
     if binary is None:
         raise errors.ValidatorUnavailableError(f"VAL is not installed ({INSTALL_HINT}, or put Validate on PATH)")
@@ -134,25 +144,25 @@ def run_val(
     if binary.library_dir is not None:
         previous = environment.get("LD_LIBRARY_PATH")
         environment["LD_LIBRARY_PATH"] = str(binary.library_dir) + (os.pathsep + previous if previous else "")
-    with tempfile.TemporaryDirectory(prefix="relevance-plan-val-") as tmp:
-        plan_path = Path(tmp) / "plan"
-        plan_path.write_text(plan_text)
+    options = ["-v"] + ([] if tolerance is None else ["-t", repr(tolerance)])
+    files = [str(Path(domain_path).resolve()), str(Path(problem_path).resolve()), "plan"]
+    with work_directory(None, prefix="relevance-plan-val-") as folder:
+        (folder / "plan").write_text(plan_text)
         try:
-            options = ["-v"] + ([] if tolerance is None else ["-t", repr(tolerance)])
-            files = [str(Path(domain_path).resolve()), str(Path(problem_path).resolve()), "plan"]
-            completed = subprocess.run(
-                [str(binary.path), *options, *files],
-                cwd=tmp,
-                capture_output=True,
-                text=True,
-                errors="replace",
-                timeout=timeout,
-                stdin=subprocess.DEVNULL,
-                env=environment,
-            )
-        except subprocess.TimeoutExpired:
-            raise errors.ValidatorUnavailableError(f"VAL's Validate ran out of its {timeout:g} s") from None
-        except OSError as error:
-            raise errors.ValidatorUnavailableError(f"VAL's Validate could not start: {error.strerror}") from None
-    output = completed.stdout[:MAX_REPORT_CHARS] + "\n" + completed.stderr[:MAX_REPORT_CHARS]
-    return ValRun(completed.returncode, output)
+            # a scope of its own: VAL judges a plan already found, which the race stopping the other
+            # side's planners (the scope of this thread's runs) must not stop
+            with cancel_scope(CancelScope()):
+                run = run_process_group(
+                    [str(binary.path), *options, *files],
+                    folder,
+                    watchdog_deadline(timeout),
+                    what="VAL's Validate",
+                    program=binary.path,
+                    env=environment,
+                )
+        except errors.PlannerError as error:
+            raise errors.ValidatorUnavailableError(f"VAL's Validate could not start: {error.message}") from None
+        if run.watchdog_fired:
+            raise errors.ValidatorUnavailableError(f"VAL's Validate ran out of its {timeout:.3g} s")
+        output = read_log(folder)
+    return ValRun(run.exit_code, output[-2 * MAX_REPORT_CHARS :])

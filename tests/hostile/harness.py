@@ -8,6 +8,9 @@ A scenario passes only when all of these hold:
   ``relevance-plan:`` line;
 * no file of the workspace changed (hash, mode and link target before and
   after), except the outputs the scenario names;
+* nothing left in the temporary folder: each run gets one of its own (``$TMPDIR``, outside the
+  workspace) that must be empty again once it has ended, unless it was killed with SIGKILL
+  (then only the guards clean up, and the tool's own scratch folder stays);
 * no process left: the process that runs the scenario is a child subreaper
   (Linux), so anything the tool started and lost is re-parented to it and
   found; processes naming the workspace in their command line are looked
@@ -159,14 +162,14 @@ def leftovers(work: Path) -> list[str]:
 # --------------------------------------------------------------------------- one run
 
 
-def _start(scenario: Scenario, work: Path) -> subprocess.Popen:
+def _start(scenario: Scenario, work: Path, temporary: Path) -> subprocess.Popen:
     # "{w}": the workspace's absolute path (a planner template needs one: the planner runs elsewhere)
     args = [str(a).replace("{w}", str(work)) for a in scenario.args]
     command = ["bash", "-c", scenario.shell.replace("{w}", str(work))] if scenario.shell else TOOL + args
     return subprocess.Popen(
         command,
         cwd=work,
-        env=tool_environment(scenario.env),
+        env=tool_environment((("TMPDIR", str(temporary)), *scenario.env)),
         stdin=subprocess.PIPE if scenario.stdin is not None else subprocess.DEVNULL,
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,
@@ -174,10 +177,11 @@ def _start(scenario: Scenario, work: Path) -> subprocess.Popen:
     )
 
 
-def execute(scenario: Scenario, work: Path) -> Result:
-    """Run the scenario's command; its rusage covers the tool and everything it waited for."""
+def execute(scenario: Scenario, work: Path, temporary: Path) -> Result:
+    """Run the scenario's command with ``temporary`` as its $TMPDIR; its rusage covers the tool and
+    everything it waited for."""
     started = time.monotonic()
-    process = _start(scenario, work)
+    process = _start(scenario, work, temporary)
     chunks: dict[str, bytes] = {}
 
     def drain(name: str, stream) -> None:
@@ -245,19 +249,25 @@ def run_one(scenario: Scenario, root: Path, startup: float) -> tuple[str, list[s
     if scenario.needs is not None and (reason := scenario.needs()):
         return "SKIP", [reason], 0.0
     work = make_workspace(root)
+    temporary = root / f"tmp-{work.name}"
     try:
         if scenario.setup is not None:
             scenario.setup(work)
         before = fingerprint(work, scenario.writes)
-        result = execute(scenario, work)
+        temporary.mkdir()
+        result = execute(scenario, work, temporary)
         problems = judge(scenario, result, before, startup)
         left = leftovers(work)
         if left:
             problems.append("processes left: " + "; ".join(left[:3]))
+        files = sorted(path.name for path in temporary.iterdir())
+        if files and result.code != 128 + signal.SIGKILL:
+            problems.append(f"left in the temporary folder: {', '.join(files[:3])}")
         return ("FAIL" if problems else "PASS"), problems, result.elapsed
     finally:
-        _make_removable(work)
-        shutil.rmtree(work, ignore_errors=True)
+        for folder in (work, temporary):
+            _make_removable(folder)
+            shutil.rmtree(folder, ignore_errors=True)
 
 
 def _make_removable(work: Path) -> None:

@@ -251,3 +251,58 @@ def store(work: Path, name: str = "s.sqlite") -> None:
     """A results store with a relevance and a pure row, made with the tool's own store module."""
     rows = [make_row("suite", "p01", method, wall=wall, relevance=0.1, kept=8) for method, wall in METHODS_AND_TIMES]
     write_store(work / name, rows)
+
+
+def installed(*modules: str, java: bool = False) -> Callable[[], str | None]:
+    """A ``needs`` check: None when the Python ``modules`` (and, with ``java``, a Java runtime) are here."""
+
+    def check() -> str | None:
+        import importlib.util
+
+        missing = [name for name in modules if importlib.util.find_spec(name) is None]
+        if missing:
+            return f"not installed: {', '.join(missing)}"
+        if java and shutil.which("java") is None:
+            return "no Java runtime"
+        return None
+
+    return check
+
+
+def one_line(*needles: str) -> Callable[[Result], str | None]:
+    """stderr is exactly one 'relevance-plan:' line, holding ``needles``."""
+
+    def check(result: Result) -> str | None:
+        lines = result.stderr.strip().splitlines()
+        if len(lines) != 1 or not lines[0].startswith("relevance-plan"):
+            return f"not one line on stderr: {lines[:4]}"
+        missing = [needle for needle in needles if needle not in lines[0]]
+        return f"the line lacks {missing}: {lines[0][:200]!r}" if missing else None
+
+    return check
+
+
+def silent(result: Result) -> str | None:
+    """Nothing at all on stderr (another package's warning or log line included)."""
+    return f"stderr not empty: {result.stderr.strip().splitlines()[:3]}" if result.stderr.strip() else None
+
+
+def json_only(result: Result) -> str | None:
+    """stdout is one JSON value, strictly (no NaN or Infinity), and nothing else."""
+    import json
+
+    def refuse(constant: str) -> None:
+        raise ValueError(f"not JSON: {constant}")
+
+    try:
+        json.loads(result.stdout, parse_constant=refuse)
+    except ValueError as error:
+        return f"stdout is not JSON alone ({error}): {result.stdout[:120]!r}"
+    return None
+
+
+def every(*checks: Callable[[Result], str | None]) -> Callable[[Result], str | None]:
+    def check(result: Result) -> str | None:
+        return next((found for found in (c(result) for c in checks) if found), None)
+
+    return check

@@ -17,6 +17,7 @@ PDDL, UNSUPPORTED, MISMATCH = int(ExitCode.PDDL_SYNTAX), int(ExitCode.UNSUPPORTE
 MODEL, STORE, PLANNER = int(ExitCode.MODEL), int(ExitCode.STORE), int(ExitCode.PLANNER)
 INTERRUPTED, PIPE = int(ExitCode.INTERRUPTED), 141
 NO_VALID = int(ExitCode.NO_VALID_PLAN)
+SCHEDULER = int(ExitCode.SCHEDULER)
 
 
 @dataclass(frozen=True)

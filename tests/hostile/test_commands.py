@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from hostile.inputs import PLAN_PURE, both, files, link, says, suite
+from hostile.inputs import PLAN_PURE, both, files, link, one_line, says, suite
 from hostile.scenario import INPUT, NO_VALID, OK, PDDL, PLANNER, USAGE, Scenario, scenario_test
 
 SCENARIOS = [
@@ -72,6 +72,71 @@ SCENARIOS = [
         codes=(USAGE,),
     ),
 ]
+
+
+# click's usage errors: one line naming what is wrong, exit 2, for every command
+COMMAND_ARGS = {
+    "generate": ("coffee", "--out", "g"),
+    "score": ("D.pddl", "P.pddl"),
+    "prune": ("D.pddl", "P.pddl", "-o", "small.pddl"),
+    "plan": ("D.pddl", "P.pddl"),
+    "validate": ("D.pddl", "P.pddl", "P.pddl"),
+    "watch": ("D.pddl", "P.pddl", "--events", "P.pddl"),
+    "compare": ("suite",),
+    "report": ("s.sqlite",),
+    "sweep": ("suite",),
+    "demo": (),
+    "learn": ("D.pddl", "P.pddl", "-o", "m.json"),
+    "examples": ("ex",),
+    "exit-codes": (),
+}
+USAGE_ERRORS = [
+    *(
+        Scenario(
+            f"commands/{name}-unknown-option",
+            args=(name, *args, "--no-such-option"),
+            codes=(2,),
+            check=one_line("--no-such-option"),
+            quick=name == "report",
+        )
+        for name, args in COMMAND_ARGS.items()
+    ),
+    Scenario("commands/no-command", args=(), codes=(2,), check=one_line("no command")),
+    Scenario("commands/unknown-command", args=("plna",), codes=(2,), check=one_line("plna")),
+    Scenario("commands/plan-missing-problem", args=("plan", "D.pddl"), codes=(2,), check=one_line("PROBLEM")),
+    Scenario("commands/prune-missing-output", args=("prune", "D.pddl", "P.pddl"), codes=(2,), check=one_line("-o")),
+    Scenario("commands/plan-option-without-value", args=("plan", "D.pddl", "P.pddl", "--timeout"), codes=(2,)),
+    Scenario("commands/plan-bad-choice", args=("plan", "D.pddl", "P.pddl", "--method", "x"), codes=(2,)),
+]
+# every numeric option: a number out of its range is exit 30 in one line naming it
+NUMBERS = [
+    Scenario(
+        f"commands/{name}-{option.strip('-')}-{label}",
+        args=(name, *COMMAND_ARGS[name], option, value),
+        setup=suite,
+        codes=(USAGE,),
+        check=one_line(option),
+        quick=label == "nan" and name in ("learn", "validate"),
+    )
+    for name, option, label, value in (
+        ("learn", "--timeout", "nan", "nan"),
+        ("learn", "--time-limit", "nan", "nan"),
+        ("validate", "--timeout", "nan", "nan"),
+        ("demo", "--timeout", "inf", "inf"),
+        ("compare", "--scheduler-timeout", "nan", "nan"),
+        ("compare", "--seeds", "huge", str(10**30)),
+        ("compare", "--jobs", "zero", "0"),
+        ("generate", "--size", "huge", str(10**12)),
+        ("generate", "--count", "negative", "-5"),
+        ("report", "--dpi", "zero", "0"),
+        ("sweep", "--taus", "nan", "0.1,nan"),
+        ("plan", "--memory-limit", "tiny", "1"),
+        ("plan", "--tau-element", "huge", "1e308"),
+        ("watch", "--timeout", "negative", "-1"),
+        ("score", "--tau-class", "nan", "nan"),
+    )
+]
+SCENARIOS += USAGE_ERRORS + NUMBERS
 
 
 test_commands = scenario_test(SCENARIOS)

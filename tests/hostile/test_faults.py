@@ -85,7 +85,9 @@ def _kill_after(seconds: float, marker: bytes = b"", depth: int = 0) -> Callable
         time.sleep(seconds)
         victims: list[int] = []
         while not victims and process.poll() is None and time.monotonic() < deadline:
-            victims = [guards[-1]]
+            # the guard running now: a pruned attempt's short budget may have ended meanwhile, and the
+            # next attempt started under a guard of its own
+            victims = _guards_of(process.pid, marker)[-1:]
             for _ in range(depth):  # the driver starts its components a moment after it starts
                 victims = [child for pid in victims for child in _children(pid)]
             time.sleep(0.01)

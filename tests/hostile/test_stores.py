@@ -3,13 +3,14 @@
 from __future__ import annotations
 
 import os
+import signal
 import sqlite3
 from pathlib import Path
 
 from support import REPO
 
-from hostile.inputs import both, files, link, planner, quiet_code, says, store, suite
-from hostile.scenario import INPUT, MODEL, STORE, USAGE, Scenario, scenario_test
+from hostile.inputs import after, both, files, installed, link, one_line, planner, quiet_code, says, store, suite
+from hostile.scenario import INPUT, INTERRUPTED, MODEL, OK, STORE, USAGE, Scenario, scenario_test
 
 
 def _store_missing_a_column(work: Path) -> None:
@@ -73,6 +74,138 @@ STORES = [
 ]
 
 
+def _row_edit(assignment: str):
+    """A setup: the store of ``store``, its first row changed by an SQL ``assignment`` (as another
+    program could write it: SQLite keeps text in a REAL column), the columns' NOT NULL dropped."""
+
+    def setup(work: Path) -> None:
+        store(work)
+        connection = sqlite3.connect(work / "s.sqlite", isolation_level=None)
+        connection.execute("CREATE TABLE copied AS SELECT * FROM results")
+        connection.execute("DROP TABLE results")
+        connection.execute("ALTER TABLE copied RENAME TO results")
+        connection.execute(f"UPDATE results SET {assignment} WHERE rowid = 1")
+        connection.close()
+
+    return setup
+
+
+BAD_ROWS = {
+    "wall-time-text": "wall_time = 'abc'",
+    "wall-time-infinite": "wall_time = 9e999",
+    "wall-time-negative": "wall_time = -1",
+    "timeout-a-blob": "timeout = x'00ff'",
+    "objects-a-fraction": "objects_total = 2.5",
+    "seed-empty": "seed = NULL",
+    "status-empty": "status = NULL",
+    "config-a-list": "config_json = '[1, 2]'",
+    "config-a-number": "config_json = '7'",
+    "config-not-json": "config_json = '{'",
+    "result-deep": "result_json = '" + "[" * 100_000 + "]" * 100_000 + "'",
+    "result-a-string": "result_json = '\"plan\"'",
+}
+REPORT_OUTPUTS = {"table": (), "json": ("--json",), "csv": ("--csv",), "html": ("--html", "r.html")}
+ROWS = [
+    Scenario(
+        f"stores/report-{output}-of-a-row-with-{label}",
+        args=("report", "s.sqlite", *extra),
+        setup=_row_edit(assignment),
+        codes=(STORE,),
+        check=one_line("row 1"),
+        quick=label == "wall-time-text" and output == "table",
+    )
+    for label, assignment in BAD_ROWS.items()
+    for output, extra in REPORT_OUTPUTS.items()
+    if output == "table" or label in ("wall-time-text", "config-a-list", "result-deep")
+]
+OUTPUTS = [
+    Scenario(
+        "stores/report-html-to-standard-output",
+        args=("report", "s.sqlite", "--html", "-"),
+        setup=store,
+        check=says("<!DOCTYPE html>", where="stdout"),
+        quick=True,
+    ),
+    Scenario(
+        "stores/report-html-and-json-both-to-stdout",
+        args=("report", "s.sqlite", "--html", "-", "--json"),
+        setup=store,
+        codes=(USAGE,),
+        check=one_line("--html -"),
+    ),  # fmt: skip
+    *(
+        Scenario(
+            f"stores/report-html-over-{what}",
+            args=("report", "s.sqlite", "--plots", "plots", "--html", page),
+            setup=both(store, files(plots__keep="")),
+            codes=(USAGE,),
+            check=one_line("would replace the plot"),
+            needs=installed("matplotlib"),
+        )
+        for what, page in (
+            ("its-cactus", "plots/cactus.png"),
+            ("its-scatter", "plots/relevance-vs-pure.png"),
+            ("a-suites-cactus", "plots/cactus-suite.png"),
+        )
+    ),  # fmt: skip
+    *(
+        Scenario(f"stores/{name}-dash", args=args, setup=store, codes=(USAGE,), check=one_line("'-'"))
+        for name, args in (
+            ("report-plots", ("report", "s.sqlite", "--plots", "-")),
+            ("compare-store", ("compare", "suite", "--store", "-")),
+        )
+    ),
+    Scenario("stores/report-dpi-nan", args=("report", "s.sqlite", "--dpi", "nan"), setup=store, codes=(2,)),
+    Scenario(
+        "stores/report-dpi-huge",
+        args=("report", "s.sqlite", "--plots", "p", "--dpi", "100000"),
+        setup=store,
+        codes=(USAGE,),
+        check=one_line("--dpi"),
+    ),  # fmt: skip
+]
+
+
+def _big_store(work: Path, rows: int = 30_000) -> None:
+    """The store of ``store`` grown to ``rows`` rows over many suites (copies of its rows, keyed apart)."""
+    store(work)
+    connection = sqlite3.connect(work / "s.sqlite", isolation_level=None)
+    names = [row[1] for row in connection.execute("PRAGMA table_info(results)")]
+    first = connection.execute("SELECT * FROM results").fetchall()
+    copies = [
+        tuple(f"{value}-{number}" if name in ("problem_hash", "suite") else value for name, value in zip(names, row))
+        for number in range(rows // len(first))
+        for row in first
+    ]
+    marks = ", ".join("?" * len(names))
+    connection.execute("BEGIN")
+    connection.executemany(f"INSERT INTO results ({', '.join(names)}) VALUES ({marks})", copies)
+    connection.execute("COMMIT")
+    connection.close()
+
+
+def _no_temporary_plot(result) -> str | None:
+    """What the interrupted report wrote are whole plots: no temporary file of a plot is left."""
+    folder = result.work / "plots"
+    left = sorted(path.name for path in folder.iterdir() if path.name.endswith(".tmp")) if folder.is_dir() else []
+    return f"temporary plots left: {left[:3]}" if left else None
+
+
+STOPPED = [
+    Scenario(
+        f"stores/report-plots-of-a-big-store-{name}",
+        args=("report", "s.sqlite", "--plots", "plots", "--html", "r.html"),
+        setup=_big_store,
+        codes=(INTERRUPTED, OK),
+        during=after(seconds, signum),
+        check=_no_temporary_plot,
+        writes=("plots", "plots/*", "r.html"),
+        needs=installed("matplotlib"),
+    )
+    for name, signum, seconds in (("sigterm", signal.SIGTERM, 3.0), ("sigint", signal.SIGINT, 5.0))
+]
+
+
 def bad_models() -> dict[str, str]:
     text = (REPO / "domains" / "coffee" / "relevance.yaml").read_text()
     return {
@@ -120,7 +253,7 @@ MODELS = BAD_MODELS + [
     ),
 ]
 
-SCENARIOS = STORES + MODELS
+SCENARIOS = STORES + ROWS + OUTPUTS + STOPPED + MODELS
 
 
 test_stores_and_models = scenario_test(SCENARIOS)

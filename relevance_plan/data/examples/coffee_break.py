@@ -81,7 +81,8 @@ def main() -> None:
             if report.plan is not None:
                 plan = report.plan
                 source = "still valid, planner not called" if plan.source == "previous" else "planned"
-                print(f"{'':34}plan: {plan.status.value}, {len(plan.steps)} steps ({source})")
+                steps = f"{len(plan.steps)} step" + ("" if len(plan.steps) == 1 else "s")
+                print(f"{'':34}plan: {plan.status.value}, {steps} ({source})")
                 for step in plan.steps if plan.source == "planner" else ():
                     print(f"{'':36}(" + " ".join([step.action] + [show(a, a) for a in step.args]) + ")")
 

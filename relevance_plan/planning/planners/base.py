@@ -37,6 +37,12 @@ class PlannerStatus(enum.Enum):
     STOPPED = "stopped"  # the tool stopped it: the race's other side decided first
 
 
+# The ``raw_status`` of a run whose planner's own reader refused the files, where that reader takes less
+# than PDDL (unified-planning's has no number written 1e308): when the tool's reader took them, the
+# planner does not take that input, which is not malformed PDDL.
+READER_REFUSED = "reader-refused"
+
+
 class FinishedRun(Protocol):
     """A planner process that has ended, as the tool measured it: ``process.ProcessRun``, or a warm
     worker's answer to one request (``up.pool.WorkerAnswer``)."""

@@ -28,12 +28,12 @@ import contextlib
 import os
 import time
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from relevance_plan import errors
 from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.planning.planners.auto import AutoPlanner, FallbackPlanner
-from relevance_plan.planning.planners.base import Planner, RunOutcome
+from relevance_plan.planning.planners.base import READER_REFUSED, Planner, PlannerStatus, RunOutcome
 from relevance_plan.planning.planners.fast_downward import head_start
 from relevance_plan.planning.planners.fast_downward.head_start import HeadStart
 from relevance_plan.planning.planners.preparation import PreparedPlanner, prepare_planner, with_planner_args
@@ -96,13 +96,15 @@ class SuppliedPlanner:
 
     def run(self, domain_path: str, problem_path: str, time_limit: float | None) -> RunOutcome:
         """One attempt on this pair (a pruned problem, compiled first when needed)."""
-        return self.prepared.run(domain_path, problem_path, time_limit=time_limit, memory_limit_mb=self.memory_limit_mb)
+        memory = self.memory_limit_mb
+        outcome = self.prepared.run(domain_path, problem_path, time_limit=time_limit, memory_limit_mb=memory)
+        return died_of_memory(outcome, memory)
 
     def run_full(self, domain_path: str, problem_path: str, time_limit: float | None) -> RunOutcome:
-        """One attempt on the user's full problem: it may take the head start over, which is
-        stopped after it in any case."""
+        """One attempt on the user's full problem, which the tool's reader has read: it may take the
+        head start over, which is stopped after it in any case."""
         with head_start.offered(self.head):
-            return self.run(domain_path, problem_path, time_limit)
+            return refused_by_its_reader(self.run(domain_path, problem_path, time_limit))
 
     def began(self, started: float) -> float:
         """When the run began (``time.perf_counter()``): with a head start, when the launcher started
@@ -184,6 +186,29 @@ def open_planners(request: PlannerRequest) -> Iterator[PlannerSupply]:
         finally:
             if head is not None:
                 head.discard()
+
+
+# --------------------------------------------------------------------------- what an outcome means here
+
+
+def died_of_memory(outcome: RunOutcome, memory_limit_mb: int | None) -> RunOutcome:
+    """A planner that crashed under the memory limit the tool set ran out of memory, whatever its last
+    words: with its address space capped, an allocation that fails can surface as any error (Fast
+    Downward's translator has died of it with "SystemError: error return without exception set")."""
+    if memory_limit_mb is None or outcome.status is not PlannerStatus.PLANNER_CRASH:
+        return outcome
+    died = f"it died under the {memory_limit_mb} MB --memory-limit"
+    return replace(outcome, status=PlannerStatus.OUT_OF_MEMORY, reason=f"{outcome.reason}; {died}".lstrip("; "))
+
+
+def refused_by_its_reader(outcome: RunOutcome) -> RunOutcome:
+    """A planner whose own reader, which takes less than PDDL, cannot read the user's problem that the
+    tool's reader has read: the planner does not take that input (a number written 1e308, say), which is
+    not malformed PDDL.  (Fast Downward's translator refusing the input is still malformed PDDL.)"""
+    if outcome.status is not PlannerStatus.INPUT_ERROR or outcome.raw_status != READER_REFUSED:
+        return outcome
+    refused = "its reader refuses the problem, which the tool's reader takes"
+    return replace(outcome, status=PlannerStatus.UNSUPPORTED, reason=f"{outcome.reason}; {refused}".lstrip("; "))
 
 
 # --------------------------------------------------------------------------- the pieces

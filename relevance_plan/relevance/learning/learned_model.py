@@ -19,6 +19,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from relevance_plan.errors import ModelError
+from relevance_plan.io import parse_json, read_bytes
 from relevance_plan.pddl.model import Domain
 from relevance_plan.relevance.learning.features import NAMED, NAMED_FEATURES, FeatureConfig, Features
 
@@ -100,24 +101,44 @@ def learned_model_text(learned_model: LearnedModel) -> str:
 
 
 def load_learned_model(path: str | os.PathLike[str]) -> LearnedModel:
-    """The model in ``path``; ModelError naming the file when it is not one (corrupt, truncated,
-    another format or version)."""
+    """The model in ``path``: ``InputFileError`` when the file is missing or unreadable (as for
+    every file the tool reads), ``ModelError`` naming the file when it is not a model (corrupt,
+    truncated, nested too deep, another format or version, a field of the wrong kind)."""
     shown = os.fspath(path)
+    data = read_bytes(path, "learned model file")
     try:
-        with open(shown, "rb") as stream:
-            data = json.loads(stream.read().decode("utf-8"))
-    except FileNotFoundError:
-        raise ModelError("no such learned model file", path=shown) from None
-    except IsADirectoryError:
-        raise ModelError("the learned model is a directory, not a file", path=shown) from None
-    except PermissionError:
-        raise ModelError("the learned model file cannot be read (permission denied)", path=shown) from None
-    except (UnicodeDecodeError, json.JSONDecodeError) as error:
+        found = parse_json(data.decode("utf-8"))
+    except (UnicodeDecodeError, ValueError) as error:
         raise ModelError(f"not a learned model (corrupt or truncated JSON: {error})", path=shown) from None
     try:
-        return _from_json(data, shown)
-    except (KeyError, TypeError, ValueError, AttributeError) as error:
+        return _from_json(found, shown)
+    except (KeyError, TypeError, ValueError) as error:
         raise ModelError(f"not a learned model (missing or malformed field: {error})", path=shown) from None
+
+
+_REQUIRED = object()
+
+
+def _field(data: dict[str, Any], key: str, kind: type | tuple[type, ...], default: Any = _REQUIRED) -> Any:
+    """``data[key]`` (``default`` when absent, if given), which must be of ``kind``: a number is finite
+    and never a bool.  KeyError or TypeError naming the field if not."""
+    if key not in data:
+        if default is _REQUIRED:
+            raise KeyError(key)
+        return default
+    value = data[key]
+    kinds = kind if isinstance(kind, tuple) else (kind,)
+    wrong = not isinstance(value, kind) or (isinstance(value, bool) and bool not in kinds)
+    if wrong or (isinstance(value, float) and not math.isfinite(value)):
+        raise TypeError(f'"{key}" is {json.dumps(value)[:40]}')
+    return value
+
+
+def _names(data: dict[str, Any], key: str, default: Any = _REQUIRED) -> frozenset[str]:
+    names = _field(data, key, list, default)
+    if not all(isinstance(name, str) for name in names):
+        raise TypeError(f'"{key}" must list names')
+    return frozenset(names)
 
 
 def _from_json(data: Any, path: str) -> LearnedModel:
@@ -128,38 +149,36 @@ def _from_json(data: Any, path: str) -> LearnedModel:
             f"learned model format version {data.get('version')!r}; this relevance-plan reads version {VERSION}",
             path=path,
         )
-    features = data["features"]
+    features = _field(data, "features", dict)
     config = FeatureConfig(
-        int(features["iterations"]), int(features["buckets"]), frozenset(str(h) for h in features.get("hubs", ()))
+        _field(features, "iterations", int), _field(features, "buckets", int), _names(features, "hubs", [])
     )
     if not 0 <= config.iterations <= 8 or not 1 <= config.buckets <= 1 << 24:
         raise ValueError("feature configuration out of range")
-    named = data["weights"]["named"]
-    named_weights = tuple(float(named[name]) for name in NAMED_FEATURES)
+    weights = _field(data, "weights", dict)
+    named = _field(weights, "named", dict)
+    named_weights = tuple(float(_field(named, name, (int, float))) for name in NAMED_FEATURES)
     hashed: dict[int, float] = {}
-    for slot, weight in data["weights"]["hashed"].items():
+    for slot, weight in _field(weights, "hashed", dict).items():
         index = int(slot)
         if not 0 <= index < config.buckets:
             raise ValueError(f"weight slot {index} outside 0..{config.buckets - 1}")
-        hashed[NAMED + index] = float(weight)
-    threshold = float(data["threshold"])
+        hashed[NAMED + index] = float(_field({slot: weight}, slot, (int, float)))
+    threshold = float(_field(data, "threshold", (int, float)))
     if not 0.0 < threshold < 1.0:
         raise ValueError(f"threshold {threshold} outside (0, 1)")
-    domain = data["domain"]
-    if not isinstance(domain, dict) or not isinstance(domain.get("hash"), str):
-        raise ValueError("no domain signature")
-    if not all(math.isfinite(w) for w in (*named_weights, *hashed.values())):
-        raise ValueError("a weight is not a finite number")
+    domain = _field(data, "domain", dict)
+    _field(domain, "hash", str)
     return LearnedModel(
         domain=domain,
         config=config,
         named_weights=named_weights,
         hashed_weights=hashed,
         threshold=threshold,
-        seen_types=frozenset(str(t) for t in data["seen_types"]),
-        seen_predicates=frozenset(str(p) for p in data["seen_predicates"]),
-        labels=str(data.get("labels", "plan")),
-        respect_goal_zero=bool(data.get("respect_goal_zero", True)),
-        training=dict(data.get("training", {})),
+        seen_types=_names(data, "seen_types"),
+        seen_predicates=_names(data, "seen_predicates"),
+        labels=_field(data, "labels", str, "plan"),
+        respect_goal_zero=_field(data, "respect_goal_zero", bool, True),
+        training=_field(data, "training", dict, {}),
         path=path,
     )

@@ -4,8 +4,12 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 from relevance_plan.relevance.knowledge import KnowledgeModel
+
+if TYPE_CHECKING:  # the text package is imported only when free text is given
+    from relevance_plan.relevance.text.matching import WordMatch
 
 
 @dataclass(frozen=True)
@@ -15,6 +19,7 @@ class ScoreRequest:
     model_task: str | None = None  # the knowledge model's task (a kind of activity), not the planning task
     human: str | None = None
     seed: int = 0
+    place_kinds: bool = False  # kinds and types the model does not list are placed under their nearest class
     necessary: frozenset[str] | None = None  # the oracle's answer, from a generator sidecar
 
 
@@ -33,6 +38,8 @@ class ScoreResult:
     objective: str | None = None
     task_distribution: Mapping[str, float] = field(default_factory=dict)
     task_entropy: float | None = None
+    # free text mapped to the model's names (the objective, the task, object kinds), each with its similarity
+    understood: tuple[WordMatch, ...] = ()
 
     def class_score(self, name: str) -> float | None:
         """R(C) of the element's class; None when this scorer does not score classes."""

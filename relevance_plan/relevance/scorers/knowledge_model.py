@@ -14,7 +14,8 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
+from typing import TYPE_CHECKING
 
 from relevance_plan.errors import ModelError
 from relevance_plan.pddl.formulas import Formula, predicates_in
@@ -23,13 +24,16 @@ from relevance_plan.relevance.scene import Element, build_scene
 from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult
 from relevance_plan.relevance.task import PlanningTask
 
+if TYPE_CHECKING:  # the text package is imported only when free text is given
+    from relevance_plan.relevance.text.matching import WordMatch
+
 UNKNOWN_CLASS = "(unknown)"
 # More than this share of objects of unknown class: the model is not about this scene.
 MAX_UNKNOWN_SHARE = 0.5
 
 
 def task_entropy(distribution: Mapping[str, float]) -> float:
-    return -sum(p * math.log(p) for p in distribution.values() if p > 0)
+    return max(0.0, -sum(p * math.log(p) for p in distribution.values() if p > 0))  # never -0.0
 
 
 def classify(element: Element, knowledge_model: KnowledgeModel) -> ModelClass | None:
@@ -83,6 +87,7 @@ class KnowledgeContext:
     distribution: dict[str, float]
     entropy: float | None
     insufficiency: str = ""
+    understood: tuple[WordMatch, ...] = ()  # the request's free text, mapped to the model's names
     _class_values: dict[str, float] = field(default_factory=dict, repr=False)
 
     def class_given_task(self, task_name: str, class_name: str) -> float:
@@ -118,7 +123,8 @@ class KnowledgeContext:
 
 
 def knowledge_context(goal: Formula, request: ScoreRequest) -> KnowledgeContext:
-    """The objective and P(task | objective) for ``goal`` (a formula) under ``request``."""
+    """The objective and P(task | objective) for ``goal`` (a formula) under ``request``; an objective
+    or a task given as free text is mapped to the model's nearest (or asked about: insufficient cues)."""
     knowledge_model = request.knowledge_model
     if knowledge_model is None:
         raise ModelError("the model scorer needs a knowledge model (--model FILE)")
@@ -128,9 +134,12 @@ def knowledge_context(goal: Formula, request: ScoreRequest) -> KnowledgeContext:
         if human is None:
             known = ", ".join(knowledge_model.humans) or "none"
             raise ModelError(f"unknown human '{request.human}' (model has: {known})", path=knowledge_model.path)
+    request, understood, not_understood = _understood(request, knowledge_model)
+    if not_understood:
+        return KnowledgeContext(knowledge_model, human, None, {}, None, not_understood, understood)
     objective, problem_with_objective = _choose_objective(goal, knowledge_model, request)
     if objective is None:
-        return KnowledgeContext(knowledge_model, human, None, {}, None, problem_with_objective)
+        return KnowledgeContext(knowledge_model, human, None, {}, None, problem_with_objective, understood)
     if request.model_task is not None:
         if request.model_task not in knowledge_model.task_classes:
             raise ModelError(
@@ -151,7 +160,35 @@ def knowledge_context(goal: Formula, request: ScoreRequest) -> KnowledgeContext:
             f"objective ambiguous: {shown} (entropy {entropy:.2f} > {knowledge_model.entropy_bound:.2f} nats)"
             " — give --task or --human"
         )
-    return KnowledgeContext(knowledge_model, human, objective, distribution, entropy, insufficiency)
+    return KnowledgeContext(knowledge_model, human, objective, distribution, entropy, insufficiency, understood)
+
+
+def _understood(
+    request: ScoreRequest, knowledge_model: KnowledgeModel
+) -> tuple[ScoreRequest, tuple[WordMatch, ...], str]:
+    """The request with its free-text objective and task replaced by the model's names, the
+    mappings, and why the cues are insufficient when one of them is not clear ("" when both are)."""
+    objective, task = request.objective, request.model_task
+    if (objective is None or objective in knowledge_model.objectives) and (
+        task is None or task in knowledge_model.task_classes
+    ):
+        return request, (), ""
+    from relevance_plan.relevance.text.matching import Vocabulary
+    from relevance_plan.relevance.text.understanding import OPTIONS, understand
+
+    matches = []
+    if objective is not None and objective not in knowledge_model.objectives:
+        matches.append(understand(objective, knowledge_model, Vocabulary.OBJECTIVE))
+        objective = matches[-1].chosen
+    if task is not None and task not in knowledge_model.task_classes:
+        matches.append(understand(task, knowledge_model, Vocabulary.TASK))
+        task = matches[-1].chosen
+    unclear = [
+        f"{match.insufficiency} — say it otherwise, or give {OPTIONS[match.vocabulary]} NAME"
+        for match in matches
+        if match.chosen is None
+    ]
+    return replace(request, objective=objective, model_task=task), tuple(matches), "; ".join(unclear)
 
 
 def class_of(element: Element, knowledge_model: KnowledgeModel) -> str:
@@ -210,7 +247,21 @@ def insufficient_result(objects: Iterable[str], context: KnowledgeContext, messa
         objective=context.objective,
         task_distribution=dict(context.distribution),
         task_entropy=context.entropy,
+        understood=context.understood,
     )
+
+
+GOAL_EXPLANATION = "named in the goal"
+
+
+def with_goal_objects(
+    scores: dict[str, float], explanations: dict[str, str], goal_objects: Iterable[str]
+) -> tuple[dict[str, float], dict[str, str]]:
+    """Objects the goal names have relevance 1, whatever the formula says (it still decides their places')."""
+    for name in goal_objects:
+        if name in scores:
+            scores[name], explanations[name] = 1.0, GOAL_EXPLANATION
+    return scores, explanations
 
 
 def score_by_knowledge_model(task: PlanningTask, request: ScoreRequest) -> ScoreResult:
@@ -224,6 +275,10 @@ def score_by_knowledge_model(task: PlanningTask, request: ScoreRequest) -> Score
     element_class: dict[str, str] = {
         name: class_of(element, knowledge_model) for name, element in scene.elements.items()
     }
+    placed: tuple[WordMatch, ...] = ()
+    if request.place_kinds:
+        element_class, placed = _place_unknown(scene.elements, element_class, knowledge_model)
+        context = replace(context, understood=context.understood + placed)
     task.check_time("classifying the objects")
     unknown = tuple(sorted(name for name, c in element_class.items() if c == UNKNOWN_CLASS))
     problem = unknown_share_problem(len(scene.elements) - len(unknown), len(scene.elements))
@@ -243,21 +298,14 @@ def score_by_knowledge_model(task: PlanningTask, request: ScoreRequest) -> Score
         class_name = element_class[name]
         if not scored_by_contents(class_name, knowledge_model):
             scores[name], explanations[name] = score_element(context, element, class_name)
-    # Places (and other classes scored by contents) are as relevant as the best
-    # item they hold whose class is relevant; the class threshold is applied later.
-    contents: dict[str, float] = {}
-    for name, element in scene.elements.items():
-        if element.place is not None and name in scores:
-            contents[element.place] = max(contents.get(element.place, 0.0), scores[name])
-    for name in scene.elements:
-        if name in scores:
-            continue
-        scores[name] = contents.get(name, 0.0)
-        explanations[name] = contents_explanation(scores[name])
-    for class_name in class_scores.keys() | set(element_class.values()):
-        if scored_by_contents(class_name, knowledge_model):
-            members = [scores[name] for name, c in element_class.items() if c == class_name]
-            class_scores[class_name] = max(members, default=0.0)
+    _score_by_contents(scene.elements, element_class, knowledge_model, scores, explanations, class_scores)
+    with_goal_objects(scores, explanations, task.goal_objects)
+    for match in placed:
+        for name, element in scene.elements.items():
+            if match.chosen is not None and match.text in (element.kind, element.type) and name in explanations:
+                explanations[name] += (
+                    f"; '{match.text}' placed under {match.chosen} (similarity {match.similarity:.2f})"
+                )
     return ScoreResult(
         "model",
         scores,
@@ -268,4 +316,51 @@ def score_by_knowledge_model(task: PlanningTask, request: ScoreRequest) -> Score
         objective=context.objective,
         task_distribution=context.distribution,
         task_entropy=context.entropy,
+        understood=context.understood,
     )
+
+
+def _score_by_contents(
+    elements: Mapping[str, Element],
+    element_class: Mapping[str, str],
+    knowledge_model: KnowledgeModel,
+    scores: dict[str, float],
+    explanations: dict[str, str],
+    class_scores: dict[str, float],
+) -> None:
+    """Places (and other classes scored by contents) are as relevant as the best item they hold
+    whose class is relevant; the class threshold is applied later."""
+    contents: dict[str, float] = {}
+    for name, element in elements.items():
+        if element.place is not None and name in scores:
+            contents[element.place] = max(contents.get(element.place, 0.0), scores[name])
+    for name in elements:
+        if name in scores:
+            continue
+        scores[name] = contents.get(name, 0.0)
+        explanations[name] = contents_explanation(scores[name])
+    for class_name in class_scores.keys() | set(element_class.values()):
+        if scored_by_contents(class_name, knowledge_model):
+            members = [scores[name] for name, c in element_class.items() if c == class_name]
+            class_scores[class_name] = max(members, default=0.0)
+
+
+def _place_unknown(
+    elements: Mapping[str, Element], element_class: dict[str, str], knowledge_model: KnowledgeModel
+) -> tuple[dict[str, str], tuple[WordMatch, ...]]:
+    """The classes of the elements the model does not know, by their kind's (else their type's)
+    nearest class, and the mappings (a kind that resembles no class stays unknown: a question)."""
+    unknown = [elements[name] for name, c in element_class.items() if c == UNKNOWN_CLASS]
+    if not unknown:
+        return element_class, ()
+    from relevance_plan.relevance.text.understanding import understand_kinds
+
+    by_kind = {m.text: m for m in understand_kinds([e.kind for e in unknown], knowledge_model)}
+    unplaced = [e.type for e in unknown if by_kind[e.kind].chosen is None and e.type not in by_kind]
+    by_type = {m.text: m for m in understand_kinds(unplaced, knowledge_model)} if unplaced else {}
+    placed = dict(element_class)
+    for element in unknown:
+        match = by_kind[element.kind] if by_kind[element.kind].chosen is not None else by_type.get(element.type)
+        if match is not None and match.chosen is not None:
+            placed[element.name] = match.chosen
+    return placed, tuple(by_kind.values()) + tuple(by_type.values())

@@ -54,7 +54,9 @@ VALUE_OPTIONS = frozenset(
         "--tau-element", "--timeout", "--validator",
     }
 )  # fmt: skip
-FLAGS = frozenset({"--json", "--no-race", "--no-relax", "--no-widen", "--quiet", "--race", "-q"})
+FLAGS = frozenset(
+    {"--json", "--no-race", "--no-relax", "--no-widen", "--place-kinds", "--quiet", "--race", "--verbose", "-q"}
+)
 DEFAULT_METHOD = "relevance"
 DEFAULT_PLANNER = "auto"
 # --timeout's and --planner-config's defaults are shared: relevance_plan.limits, command_line.DEFAULT_CONFIG.

@@ -25,6 +25,7 @@ from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.plans import Plan
 from relevance_plan.planning.planners import requirements as f
 from relevance_plan.planning.planners.base import (
+    READER_REFUSED,
     FinishedRun,
     PlannerStatus,
     RunOutcome,
@@ -320,7 +321,7 @@ class UnifiedPlanningPlanner:
             planner=self.name,
             config=self.engine,
             log_tail=log,
-            raw_status=verdict or "",
+            raw_status=verdict or (READER_REFUSED if run.exit_code == CHILD_CANNOT_READ else ""),
             reason=exit_reason(self.name, run.exit_code, verdict, run.watchdog_fired),
             optimal=verdict == SOLVED_OPTIMALLY and status is PlannerStatus.SOLVED,
         )

@@ -21,6 +21,10 @@ problem into an equivalent one without one such feature:
   action that reads it, and a default for the rest (Tamer takes no undefined
   initial value; in PDDL an action reading an undefined value cannot run).
 
+Before those, for every engine, one convention: a numeric value the problem
+never sets that effects increase or decrease starts from 0, as the tool's
+validator counts it (docs/validation.md, "Values never set").
+
 Names of actions and objects never change, so a plan of the rewritten problem
 is a plan of the PDDL files as they are; the predicates added get names the
 problem does not use.  A step that cannot apply (a value that is not whole, a
@@ -29,6 +33,7 @@ fluent an effect changes, PDDL+) leaves the problem as it was.
 
 from __future__ import annotations
 
+import contextlib
 import itertools
 from collections import OrderedDict
 from collections.abc import Callable, Iterable, Iterator, Mapping
@@ -94,16 +99,22 @@ def fit_problem(environment: Any, engine: str, problem: Any) -> Fitted:
     solve it all the same).  Then, when the engine still does not take the
     problem, its quality metric is dropped: a metric ranks plans, and any
     plan is still one.  ``problem`` itself is not changed.
+
+    Before any of that, whatever the engine, a value the problem never sets
+    that effects increase or decrease starts from 0 (:func:`_counted_from_zero`).
     """
+    fitted, notes = problem, []
+    with contextlib.suppress(_CannotFit, UPException):
+        fitted, note = _counted_from_zero(problem)
+        notes.append(note)
     try:
         engine_class = environment.factory.engine(engine)
     except Exception:  # an unknown engine is reported by the solve
-        return Fitted(problem)
-    kind = problem.kind  # computed anew on every access: once per problem here
+        return Fitted(fitted, tuple(notes))
+    kind = fitted.kind  # computed anew on every access: once per problem here
     if engine_class.supports(kind):
-        return Fitted(problem)
+        return Fitted(fitted, tuple(notes))
     takes = frozenset(engine_class.supported_kind().features)
-    fitted, notes = problem, []
     for replaces, step in ((_REAL_NUMBERS, _whole_numbers), (_HIERARCHY, _flat_types), (_UNDEFINED, _defined_values)):
         lacks = frozenset(kind.features) - takes
         if not any(old in lacks and (new is None or new in takes) for old, new in replaces.items()):
@@ -122,6 +133,56 @@ def fit_problem(environment: Any, engine: str, problem: Any) -> Fitted:
             notes.append(_METRIC_NOTE)
     lacking = () if engine_class.supports(kind) else tuple(sorted(frozenset(kind.features) - takes))
     return Fitted(fitted, tuple(notes), lacking)
+
+
+# -- values never set --------------------------------------------------------------------------------
+
+
+def _counted_from_zero(problem: Any) -> tuple[Any, str]:
+    """A numeric fluent left unset for some arguments that effects increase or decrease starts from 0.
+
+    The tool's validator and VAL count such a value from 0 (an action cost
+    the problem does not initialise; docs/validation.md), and so does LPG;
+    unified-planning's engines take it as undefined for good (ENHSP reports
+    the problem unsolvable, Tamer refuses it).  With a default of 0, every
+    plan valid under that convention is a plan of the rewritten problem, so
+    an engine's proof that it has none holds for the original; a plan that
+    reads such a value before it is counted is refused by the validation.
+    """
+    em = problem.environment.expression_manager
+    counted = set()
+    for effect in _effects(problem):
+        fluent = effect.fluent.fluent()
+        if (effect.is_increase() or effect.is_decrease()) and fluent not in problem.fluents_defaults:
+            counted.add(fluent)
+    unset = [
+        fluent
+        for fluent in problem.fluents
+        if fluent in counted
+        and any(problem.initial_value(em.FluentExp(fluent, args)) is None for args in _groundings(problem, fluent))
+    ]
+    if not unset:
+        raise _CannotFit
+
+    def zero(fluent: Any, value: Any) -> Any:
+        if fluent in unset:
+            return em.Int(0) if fluent.type.is_int_type() else em.Real(Fraction(0))
+        return value
+
+    names = ", ".join(fluent.name for fluent in unset)
+    return _rebuild(problem, _Rewrite(default=zero)), f"counted {names} from 0 where the problem leaves it unset"
+
+
+def _effects(problem: Any) -> Iterator[Any]:
+    """Every effect of the problem: its actions' and its timed effects."""
+    for action in problem.actions:
+        if isinstance(action, InstantaneousAction):
+            yield from action.effects
+        elif isinstance(action, DurativeAction):
+            for effects in action.effects.values():
+                yield from effects
+    for effects in problem.timed_effects.values():
+        yield from effects
 
 
 # -- whole numbers ---------------------------------------------------------------------------------

@@ -1,0 +1,152 @@
+"""What ``score`` and ``prune`` print: the relevance tables, each object's decision, one object's chain.
+
+Each object's line names the step that kept or dropped it
+(``relevance.decisions``): the goal, the thresholds, closure, a dependency,
+the sufficiency check, soundness, the goal filter, set aside.  Free text the
+model understood is shown with its similarity.
+"""
+
+from __future__ import annotations
+
+import click
+
+from relevance_plan.errors import UsageError
+from relevance_plan.relevance.decisions import decide, kept_summary, why
+from relevance_plan.relevance.prune import Selection
+from relevance_plan.relevance.scorers import ScoreResult
+
+
+def selection_json(result: Selection) -> dict:
+    """The selection and its scores as ``score --json`` and ``prune --json`` print them."""
+    problem = result.task.problem
+    scores = result.scores
+    decisions = decide(result)
+    matches = {match.vocabulary.value: match for match in scores.understood}
+    return {
+        **result.describe(),
+        "scorer": scores.scorer,
+        "sufficient": scores.sufficient,
+        "insufficiency": scores.insufficiency or None,
+        "objective": scores.objective,
+        "objective_match": matches["objective"].as_json() if "objective" in matches else None,
+        "tasks": scores.task_distribution,
+        "task_match": matches["task"].as_json() if "task" in matches else None,
+        "task_entropy": scores.task_entropy,
+        "kinds_placed": [m.as_json() for m in scores.understood if m.vocabulary.value == "class"],
+        "tau_class": result.thresholds.tau_class,
+        "tau_element": result.thresholds.tau_element,
+        "selected": [problem.display(n) for n in problem.objects if n in result.selected],
+        "scores": {problem.display(n): round(decisions[n].score, 6) for n in scores.element_scores},
+        "classes": {
+            c: {"relevance": round(s, 6), "kept": s > result.thresholds.tau_class}
+            for c, s in scores.class_scores.items()
+        },
+        "element_class": {problem.display(n): c for n, c in scores.element_class.items()},
+        "unknown_class": [problem.display(n) for n in scores.unknown],
+        "decisions": {problem.display(n): decision.as_json() for n, decision in decisions.items()},
+    }
+
+
+def scores_header(scores: ScoreResult) -> list[str]:
+    """The scorer, the objective and tasks, and what free text was understood as."""
+    header = f"scorer: {scores.scorer}"
+    if scores.objective:
+        tasks = ", ".join(f"{t} {p:.2f}" for t, p in sorted(scores.task_distribution.items(), key=lambda i: -i[1]))
+        header += f"   objective: {scores.objective}   tasks: {tasks}   H = {scores.task_entropy:.2f} nats"
+    lines = [header]
+    for match in scores.understood:
+        if match.chosen is not None:
+            lines.append(
+                f"understood: '{match.text}' as {match.vocabulary.value} {match.chosen} ({_similarity(match)})"
+            )
+        else:
+            lines.append(f"not understood: {match.insufficiency}")
+    return lines
+
+
+def _similarity(match) -> str:
+    shown = f"similarity {match.similarity:.2f}"
+    if match.runners_up:
+        shown += "; next: " + ", ".join(f"{c.name} {c.similarity:.2f}" for c in match.runners_up)
+    return shown
+
+
+def print_score_table(result: Selection) -> None:
+    scores = result.scores
+    problem = result.task.problem
+    if not scores.sufficient:
+        click.echo(f"insufficient cues: {scores.insufficiency}")
+        return
+    for line in scores_header(scores):
+        click.echo(line)
+    if scores.class_scores:
+        click.echo("")
+        click.echo(f"{'class':<18} {'R(C)':>6}  kept")
+        for class_name, value in sorted(scores.class_scores.items(), key=lambda i: (-i[1], i[0])):
+            click.echo(f"{class_name:<18} {value:6.3f}  {'yes' if value > result.thresholds.tau_class else 'no'}")
+    click.echo("")
+    decisions = decide(result)
+    width = max((len(problem.display(n)) for n in problem.objects), default=10)
+    steps = max((len(d.step) for d in decisions.values()), default=4)
+    click.echo(f"{'element':<{width}} {'class':<16} {'R(e)':>6}  {'kept':<8} {'step':<{steps}} why")
+    order = sorted(problem.objects, key=lambda n: (-decisions[n].score, n))
+    for name in order:
+        decision = decisions[name]
+        click.echo(
+            f"{problem.display(name):<{width}} {scores.element_class.get(name, '-'):<16}"
+            f" {decision.score:6.3f}  {decision.status:<8} {decision.step:<{steps}} {decision.reason}"
+        )
+    click.echo("")
+    click.echo(kept_summary(result))
+    if scores.unknown:
+        click.echo(
+            f"class unknown to the model (default relevance): {', '.join(problem.display(n) for n in scores.unknown)}"
+        )
+
+
+def why_json(result: Selection, shown: str) -> dict:
+    chain = why(result, _object_named(result, shown))
+    display = result.task.problem.display
+    return {
+        "object": display(chain[0].name),
+        "class": result.scores.element_class.get(chain[0].name),
+        "class_relevance": result.scores.class_score(chain[0].name),
+        "relevance": round(chain[0].score, 6),
+        "explanation": result.scores.explanations.get(chain[0].name, ""),
+        **chain[0].as_json(),
+        "because": [{"object": display(d.name), **d.as_json()} for d in chain[1:]],
+    }
+
+
+def print_why(result: Selection, shown: str) -> None:
+    """One object's decision, its scores, and the chain of objects that brought it back."""
+    chain = why(result, _object_named(result, shown))
+    scores, display = result.scores, result.task.problem.display
+    first = chain[0]
+    click.echo(f"{display(first.name)}: {'kept' if first.kept else 'not kept'} ({first.step}): {first.reason}")
+    class_name = scores.element_class.get(first.name)
+    if class_name is not None:
+        class_score = scores.class_score(first.name)
+        shown_class = (
+            f", R(C) = {class_score:.3f} (tau_c {result.thresholds.tau_class:g})" if class_score is not None else ""
+        )
+        click.echo(f"  class {class_name}{shown_class}")
+    explanation = scores.explanations.get(first.name, "")
+    click.echo(
+        f"  R(e) = {first.score:.3f} (tau_e {result.thresholds.tau_element:g})"
+        + (f": {explanation}" if explanation else "")
+    )
+    for decision in chain[1:]:
+        click.echo(f"  because {display(decision.name)} is kept ({decision.step}): {decision.reason}")
+
+
+def _object_named(result: Selection, shown: str) -> str:
+    problem = result.task.problem
+    name = shown.lower()
+    if name in problem.objects:
+        return name
+    from difflib import get_close_matches
+
+    near = get_close_matches(name, list(problem.objects), n=3)
+    hint = f" (did you mean: {', '.join(problem.display(n) for n in near)}?)" if near else ""
+    raise UsageError(f"--why: no object '{shown}' in the problem{hint}")

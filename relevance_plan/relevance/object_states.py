@@ -1,0 +1,267 @@
+"""The states one object of a type can be in: a sound over-approximation, for proofs.
+
+An object's *state* here is how many true atoms it has of each *pattern* (an
+atom about it with its other arguments left open: ``(inreceptacle w ?)`` is
+``("inreceptacle", 0)``), counted up to a cap one above the most atoms of a
+pattern any action requires or adds (the cap means "that many or more"; an
+atom whose only argument is the object counts at most one).  Starting from
+every object's initial counts, an action acts on the object through one of
+its parameters: it applies when the object has the
+atoms the action requires of it (two required atoms of one pattern that the
+action keeps apart with ``(not (= ?s1 ?s2))`` need two) and none that it
+forbids (``not (p ?x)`` where the object is p's only argument); a delete of
+an atom it required takes one away, any other delete and any conditional or
+quantified effect may or may not change the count, and an add may name an
+atom the object had already.  Conditions on other objects are taken as met.
+Every state a real plan can give the object is among the states found.
+
+A state can *mark* atoms: an exploration started right after a chosen
+action carries the atoms that action added as marks, dropped when a step may
+delete them; a step whose required atom of a pattern is the object's only
+one, and marked, is known to use that very atom.  ``witnesses`` proves with
+this that a goal atom keeps its witness for good.
+
+The analysis refuses (None) what it cannot read soundly through one
+parameter: durative actions, a constant of the type, and an action with two
+parameters that may be the same object of the type (no ``(not (= ?x ?y))``
+between them); and it gives up past ``MAX_STATES`` states.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Iterator
+from dataclasses import dataclass
+from itertools import combinations, product
+
+from relevance_plan.pddl.formulas import TRUE, Atom, Equality, Not, conjuncts, effect_literals, is_variable
+from relevance_plan.pddl.model import Action, Domain, Problem
+
+Pattern = tuple[str, int]  # (predicate, the object's position)
+MAX_STATES = 20_000  # an exploration that finds more gives up
+
+
+@dataclass(frozen=True)
+class Step:
+    """One action acting on the object bound to one of its parameters (``variable``)."""
+
+    action: Action
+    variable: str | None  # None: the action names such objects only through quantified variables
+    requires: tuple[tuple[Atom, Pattern], ...]  # top-level positive conditions on the object
+    forbids: frozenset[Pattern]  # top-level ``not (p ?x)`` with the object p's only argument
+    adds: tuple[tuple[Atom, Pattern], ...]  # unconditional adds about it
+    deletes: tuple[tuple[Atom, Pattern], ...]  # unconditional deletes about it
+    may_change: frozenset[Pattern]  # conditional or quantified effects that may be about it
+    distinct: frozenset[frozenset[str]]  # pairs of terms the action requires to differ
+    may_set: frozenset[Pattern] = frozenset()  # quantified effects that may leave any count
+
+    @property
+    def acts(self) -> bool:
+        """Whether the step may change the object at all (a step through quantified variables only may not)."""
+        return self.variable is not None or bool(self.may_change or self.may_set)
+
+    def need(self) -> dict[Pattern, int]:
+        """How many atoms of each pattern the object must have for the step to apply."""
+        by_pattern: dict[Pattern, list[Atom]] = {}
+        for atom, own in self.requires:
+            by_pattern.setdefault(own, []).append(atom)
+        return {own: len(atoms) if self.apart(atoms) else 1 for own, atoms in by_pattern.items()}
+
+    def apart(self, atoms: list[Atom]) -> bool:
+        """Whether the atoms are pairwise certainly different."""
+        return all(self.different(a, b) for a, b in combinations(atoms, 2))
+
+    def different(self, one: Atom, other: Atom) -> bool:
+        """Whether two atoms are certainly different atoms whatever the step's binding."""
+        return one.predicate != other.predicate or any(
+            x != y and (frozenset((x, y)) in self.distinct or not (is_variable(x) or is_variable(y)))
+            for x, y in zip(one.args, other.args)
+        )
+
+
+@dataclass(frozen=True)
+class State:
+    counts: tuple[int, ...]  # per pattern of ``ObjectStates.patterns``
+    marked: frozenset[int] = frozenset()  # patterns whose marked atom (see the module's docstring) is still there
+
+
+class ObjectStates:
+    """The patterns, steps and initial states of the objects of one type (see the module's docstring)."""
+
+    def __init__(self, domain: Domain, problem: Problem, type_name: str):
+        self.domain = domain
+        self.type_name = type_name
+        self.patterns = sorted(_patterns(domain, type_name))
+        self.index = {pattern: i for i, pattern in enumerate(self.patterns)}
+        self.steps = [
+            step_of(domain, action, variable, type_name)
+            for action in domain.actions
+            for variable in [*parameters_of_type(domain, action, type_name), None]
+        ]
+        self.steps = [step for step in self.steps if step.acts]
+        most = max((n for step in self.steps for n in step.need().values()), default=1)
+        most = max([most, *(len(step.adds) for step in self.steps)])
+        # a count at the cap means "the cap or more"; an atom about the object alone is there or not
+        self.caps = tuple(1 if len(domain.predicates[p]) == 1 else most + 1 for p, _ in self.patterns)
+        objects = [name for name, kind in problem.objects.items() if compatible(domain, kind, type_name)]
+        self.initial = {self._counted(problem.init, name) for name in objects}
+
+    def _counted(self, facts: Iterable[tuple[str, ...]], name: str) -> State:
+        counts = [0] * len(self.patterns)
+        for fact in facts:
+            for position, arg in enumerate(fact[1:]):
+                i = self.index.get((fact[0], position))
+                if arg == name and i is not None:
+                    counts[i] = min(self.caps[i], counts[i] + 1)
+        return State(tuple(counts))
+
+    def applies(self, step: Step, state: State) -> bool:
+        counts = state.counts
+        return all(counts[self.index[own]] >= need for own, need in step.need().items()) and all(
+            counts[self.index[own]] == 0 for own in step.forbids
+        )
+
+    def successors(self, step: Step, state: State) -> list[State]:
+        """The states ``step`` may leave the object in (it applies)."""
+        options: list[list[tuple[int, bool]]] = []  # per pattern: (count, still marked)
+        for i, pattern in enumerate(self.patterns):
+            options.append(sorted(self._after(step, pattern, state.counts[i], i in state.marked, self.caps[i])))
+        return [
+            State(tuple(c for c, _ in chosen), frozenset(i for i, (_, m) in enumerate(chosen) if m))
+            for chosen in product(*options)
+        ]
+
+    def _after(self, step: Step, pattern: Pattern, count: int, marked: bool, cap: int) -> set[tuple[int, bool]]:
+        """The pattern's count (and whether its mark stays) after the step, each way it may go."""
+        adds = {atom for atom, own in step.adds if own == pattern}
+        deletes = [atom for atom, own in step.deletes if own == pattern and atom not in adds]  # an add wins
+        required = {atom for atom, own in step.requires if own == pattern}
+        sure = [atom for atom in deletes if atom in required]  # atoms the object had
+        unsure = [atom for atom in deletes if atom not in required]
+        results: set[tuple[int, bool]] = set()
+        fewest = len(sure) if step.apart(sure) else min(1, len(sure))
+        for gone in range(fewest, len(sure) + len(unsure) + 1):
+            for left in _minus(count, gone, cap):
+                if gone == 0:
+                    results.add((left, marked))
+                    continue
+                results.add((left, False))
+                if left > 0 or count == cap:
+                    results.add((left, marked))  # the marked atom may be one that stays
+        if adds:
+            least = len(adds) if step.apart(list(adds)) else 1
+            results = {(min(cap, total), m) for c, m in results for total in range(max(c, least), c + len(adds) + 1)}
+        if pattern in step.may_change:
+            results |= {(min(cap, c + 1), m) for c, m in results} | {(c - 1, False) for c, _ in results if c > 0}
+        if pattern in step.may_set:
+            results |= {(c, False) for c in range(cap + 1)}
+        return results
+
+    def explore(
+        self, starts: Iterable[State], allowed: Callable[[Step, State], bool] = lambda step, state: True
+    ) -> set[State] | None:
+        """Every state reachable from ``starts`` by the steps ``allowed`` (None: more than MAX_STATES)."""
+        seen = set(starts)
+        frontier = list(seen)
+        while frontier:
+            state = frontier.pop()
+            for step in self.steps:
+                if not self.applies(step, state) or not allowed(step, state):
+                    continue
+                for following in self.successors(step, state):
+                    if following not in seen:
+                        seen.add(following)
+                        frontier.append(following)
+                        if len(seen) > MAX_STATES:
+                            return None
+        return seen
+
+
+def _minus(count: int, gone: int, cap: int) -> range:
+    """The counts left when ``gone`` atoms are deleted from ``count`` ("the cap or more" may stay the cap)."""
+    if count == cap:
+        return range(max(0, cap - gone), cap + 1)
+    return range(count - gone, count - gone + 1) if count >= gone else range(0)
+
+
+def step_of(domain: Domain, action: Action, variable: str | None, type_name: str) -> Step:
+    """``action`` acting on the object bound to ``variable`` (None: through quantified variables only)."""
+    requires: list[tuple[Atom, Pattern]] = []
+    forbids: set[Pattern] = set()
+    distinct: set[frozenset[str]] = set()
+    derived = domain.derived_predicates  # no pattern of the object's: a condition on one is taken as met
+    for part in conjuncts(action.precondition):
+        if isinstance(part, Atom) and variable is not None and part.predicate not in derived:
+            requires.extend((part, own) for own in occurrences(part, variable))
+        elif isinstance(part, Not) and isinstance(part.body, Atom) and variable and part.body.args == (variable,):
+            forbids.add((part.body.predicate, 0))
+    distinct.update(frozenset((equality.left, equality.right)) for equality in _inequalities(action))
+    adds: list[tuple[Atom, Pattern]] = []
+    deletes: list[tuple[Atom, Pattern]] = []
+    may_change: set[Pattern] = set()
+    many: set[Pattern] = set()
+    for item in effect_literals(action.effect):
+        ranged = [name for name, kind in item.quantified if compatible(domain, kind, type_name)]
+        names = ([variable] if variable is not None else []) + ranged
+        found = [own for name in names for own in occurrences(item.atom, name)]
+        if not found:
+            continue
+        if item.condition == TRUE and not item.quantified and item.when is None:
+            (adds if item.is_add else deletes).extend((item.atom, own) for own in found)
+        else:
+            (many if item.quantified else may_change).update(found)  # a quantified one may set any number
+    return Step(
+        action,
+        variable,
+        tuple(requires),
+        frozenset(forbids),
+        tuple(adds),
+        tuple(deletes),
+        frozenset(may_change - many),
+        frozenset(distinct),
+        frozenset(many),
+    )
+
+
+def occurrences(atom: Atom, variable: str) -> list[Pattern]:
+    return [(atom.predicate, i) for i, arg in enumerate(atom.args) if arg == variable]
+
+
+def parameters_of_type(domain: Domain, action: Action, type_name: str) -> list[str]:
+    """The parameters of ``action`` an object of ``type_name`` can be bound to."""
+    return [name for name, kind in action.parameters if compatible(domain, kind, type_name)]
+
+
+def compatible(domain: Domain, one: str, other: str) -> bool:
+    return domain.is_subtype(one, other) or domain.is_subtype(other, one)
+
+
+def readable(domain: Domain, type_name: str) -> bool:
+    """Whether every action's effect on an object of the type can be read through one parameter."""
+    if domain.temporal or any(compatible(domain, kind, type_name) for kind in domain.constants.values()):
+        return False
+    for action in domain.actions:
+        params = parameters_of_type(domain, action, type_name)
+        distinct = {frozenset((equality.left, equality.right)) for equality in _inequalities(action)}
+        if any(frozenset((a, b)) not in distinct for a, b in combinations(params, 2)):
+            return False
+    return True
+
+
+def _inequalities(action: Action) -> Iterator[Equality]:
+    """The ``(= ?x ?y)`` of the action's top-level ``not (= ?x ?y)`` conditions."""
+    for part in conjuncts(action.precondition):
+        if isinstance(part, Not) and isinstance(part.body, Equality):
+            yield part.body
+
+
+def _patterns(domain: Domain, type_name: str) -> Iterator[Pattern]:
+    derived = domain.derived_predicates
+    for predicate, parameters in domain.predicates.items():
+        if predicate in derived:
+            continue
+        for position, (_, kind) in enumerate(parameters):
+            if compatible(domain, kind, type_name):
+                yield predicate, position
+
+
+__all__ = ["ObjectStates", "Pattern", "State", "Step", "compatible", "occurrences", "readable", "step_of"]

@@ -1,0 +1,50 @@
+"""The human's words where the model expects a name: ``--objective TEXT``, ``--task TEXT``, a cue, an unknown kind.
+
+A value that names an entry of the model is that entry, with no text model
+at all.  Anything else is free text: mapped to the nearest entry
+(:mod:`.matching`), or, when the mapping is not clear, a question.  Without
+the ``text`` extra, free text is refused in one line that names what was not
+understood and what to install.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+from relevance_plan.errors import MissingExtraError, printable
+from relevance_plan.relevance.knowledge import KnowledgeModel
+from relevance_plan.relevance.text.matching import Vocabulary, WordMatch, match_text, place_kinds
+
+# The option each vocabulary's free text comes from, for messages.
+OPTIONS = {Vocabulary.OBJECTIVE: "--objective", Vocabulary.TASK: "--task"}
+
+
+def entries(model: KnowledgeModel, vocabulary: Vocabulary) -> Mapping[str, object]:
+    if vocabulary is Vocabulary.OBJECTIVE:
+        return model.objectives
+    if vocabulary is Vocabulary.TASK:
+        return model.task_classes
+    return model.classes
+
+
+def understand(text: str, model: KnowledgeModel, vocabulary: Vocabulary) -> WordMatch:
+    """``text`` as an entry of ``vocabulary``: resolved, or a question (``WordMatch.insufficiency``).
+
+    :class:`MissingExtraError` when the text needs the text model and it is not installed."""
+    try:
+        return match_text(text, model, vocabulary)
+    except MissingExtraError as error:
+        known = ", ".join(entries(model, vocabulary)) or "none"
+        raise MissingExtraError(
+            f"unknown {vocabulary.value} '{printable(text, 80)}' (the model has: {known}); to understand it as"
+            f" free text, {error.message}",
+            path=model.path,
+        ) from None
+
+
+def understand_kinds(kinds: list[str], model: KnowledgeModel) -> tuple[WordMatch, ...]:
+    """Each object kind (or type) the model does not list, as the class it most resembles or a question."""
+    try:
+        return place_kinds(kinds, model)
+    except MissingExtraError as error:
+        raise MissingExtraError(f"placing the kinds the model does not list: {error.message}") from None

@@ -1,0 +1,82 @@
+; Workshop problem: tighten wheel bolt.
+(define (problem tighten-wheel-bolt)
+  (:domain workshop)
+  (:objects
+    workbench_1 storeroom_1 tool_wall_1 assembly_bay_1 entrance_1 paint_booth_1 - area
+    hook_1 hook_2 hook_3 hook_4 - hook
+    toolbox_1 toolbox_2 - toolbox
+    drawer_1 drawer_2 - drawer
+    cabinet_1 cabinet_2 - cabinet
+    torque_wrench_1 socket_wrench_1 - wrench
+    digital_multimeter_1 - meter
+    toolbox_key_1 drawer_key_1 cabinet_key_1 toolbox_key_2 toolbox_spare_key_1 spare_key_1 padlock_key_1 - key
+    claw_hammer_1 rubber_mallet_1 needle_nose_pliers_1 wire_cutter_1 hand_saw_1 utility_knife_1 tape_measure_1 spirit_level_1 paint_brush_1 paint_brush_2 spray_gun_1 safety_goggles_1 work_gloves_1 extension_cord_1 soldering_iron_1 heat_gun_1 flashlight_1 - tool
+    flathead_screwdriver_1 phillips_screwdriver_1 phillips_screwdriver_2 - screwdriver
+    hex_nut_1 hex_nut_2 wood_screw_1 wood_screw_2 washer_1 hinge_1 sandpaper_sheet_1 glue_tube_1 - part
+    wheel_bolt_1 frame_bolt_1 - bolt
+  )
+  (:init
+    (robot-at workbench_1)
+    (hand-empty)
+    (hook-at hook_1 entrance_1)
+    (hook-at hook_2 tool_wall_1)
+    (hook-at hook_3 tool_wall_1)
+    (hook-at hook_4 tool_wall_1)
+    (storage-at toolbox_1 storeroom_1)
+    (locked toolbox_1)
+    (fits toolbox_key_1 toolbox_1)
+    (fits toolbox_spare_key_1 toolbox_1)
+    (storage-at drawer_1 workbench_1)
+    (locked drawer_1)
+    (fits drawer_key_1 drawer_1)
+    (storage-at drawer_2 workbench_1)
+    (storage-at cabinet_1 storeroom_1)
+    (locked cabinet_1)
+    (fits cabinet_key_1 cabinet_1)
+    (storage-at toolbox_2 assembly_bay_1)
+    (locked toolbox_2)
+    (fits toolbox_key_2 toolbox_2)
+    (storage-at cabinet_2 paint_booth_1)
+    (in torque_wrench_1 toolbox_1)
+    (in socket_wrench_1 cabinet_1)
+    (in digital_multimeter_1 toolbox_2)
+    (in toolbox_key_1 drawer_1)
+    (on-hook drawer_key_1 hook_1)
+    (at cabinet_key_1 tool_wall_1)
+    (in toolbox_key_2 cabinet_1)
+    (in toolbox_spare_key_1 cabinet_1)
+    (on-hook claw_hammer_1 hook_2)
+    (at rubber_mallet_1 workbench_1)
+    (in flathead_screwdriver_1 drawer_2)
+    (on-hook phillips_screwdriver_1 hook_3)
+    (at phillips_screwdriver_2 assembly_bay_1)
+    (in needle_nose_pliers_1 drawer_2)
+    (at wire_cutter_1 workbench_1)
+    (on-hook hand_saw_1 hook_4)
+    (in utility_knife_1 cabinet_2)
+    (at tape_measure_1 entrance_1)
+    (in spirit_level_1 cabinet_2)
+    (at paint_brush_1 paint_booth_1)
+    (at paint_brush_2 paint_booth_1)
+    (in spray_gun_1 cabinet_2)
+    (in hex_nut_1 drawer_2)
+    (in hex_nut_2 drawer_2)
+    (in wood_screw_1 drawer_2)
+    (at wood_screw_2 workbench_1)
+    (at washer_1 workbench_1)
+    (in hinge_1 cabinet_1)
+    (in sandpaper_sheet_1 cabinet_1)
+    (at glue_tube_1 paint_booth_1)
+    (on-hook spare_key_1 hook_4)
+    (at padlock_key_1 entrance_1)
+    (on-hook safety_goggles_1 hook_1)
+    (at work_gloves_1 entrance_1)
+    (in extension_cord_1 cabinet_1)
+    (in soldering_iron_1 toolbox_2)
+    (in heat_gun_1 cabinet_2)
+    (at flashlight_1 storeroom_1)
+    (mounted wheel_bolt_1 assembly_bay_1)
+    (mounted frame_bolt_1 assembly_bay_1)
+  )
+  (:goal (tightened wheel_bolt_1))
+)

@@ -1,0 +1,157 @@
+"""The command line as click reads it: every numeric option checked in one place, usage errors in one
+line, --verbose, the validators as a comma list, learn's --timeout and its old name."""
+
+from __future__ import annotations
+
+import logging
+import warnings
+
+import click
+import pytest
+from click.testing import CliRunner
+from support import COFFEE_DOMAIN, coffee_problem, invoke, one_line_error, run, write_file
+
+from relevance_plan.cli import main
+from relevance_plan.cli.common import handle_errors
+from relevance_plan.cli.numbers import Number
+from relevance_plan.exitcodes import ExitCode
+
+
+def _commands() -> dict[str, click.Command]:
+    context = click.Context(main)
+    return {name: main.get_command(context, name) for name in main.list_commands(context)}
+
+
+def _numeric_options() -> list[tuple[str, click.Parameter]]:
+    return [
+        (name, param)
+        for name, command in _commands().items()
+        for param in command.params
+        if isinstance(param.type, (click.types.IntParamType, click.types.FloatParamType, Number))
+    ]
+
+
+@pytest.fixture
+def arguments(tmp_path):
+    """The positional arguments that let each command read its options (nothing runs: the option fails)."""
+    problem = write_file(tmp_path, "p.pddl", coffee_problem())
+    return {
+        "generate": ["coffee", "--out", tmp_path / "suite"],
+        "score": [COFFEE_DOMAIN, problem],
+        "prune": [COFFEE_DOMAIN, problem, "-o", tmp_path / "small.pddl"],
+        "plan": [COFFEE_DOMAIN, problem, "--plan-file", tmp_path / "plan"],
+        "watch": [COFFEE_DOMAIN, problem, "--events", problem],
+        "compare": [tmp_path, "--store", tmp_path / "s.sqlite"],
+        "report": [tmp_path / "s.sqlite"],
+        "sweep": [tmp_path],
+        "demo": ["--workdir", tmp_path / "demo"],
+        "learn": [COFFEE_DOMAIN, problem, "-o", tmp_path / "m.json"],
+        "validate": [COFFEE_DOMAIN, problem, problem],
+    }
+
+
+def test_every_numeric_option_is_checked_in_one_place():
+    found = _numeric_options()
+    assert {name for name, _ in found} >= {"plan", "learn", "compare", "report", "generate", "demo", "sweep"}
+    unchecked = [f"{name} {param.opts[0]}" for name, param in found if not isinstance(param.type, Number)]
+    assert not unchecked
+
+
+@pytest.mark.parametrize("name, param", _numeric_options(), ids=lambda p: getattr(p, "name", p))
+def test_no_numeric_option_takes_a_number_out_of_its_range(name, param, arguments, tmp_path):
+    """nan, infinities and numbers past either end: exit 30 in one line naming the option, nothing written."""
+    kind = param.type
+    if kind.kind is float:
+        values = ["nan", "inf", "-inf", "1e999", "-1e999", str(kind.low - 1.0)]
+    else:
+        values = [str(-(10**30))] + ([] if kind.high is None else [str(10**30)])
+    option = max(param.opts, key=len)
+    before = sorted(tmp_path.rglob("*"))
+    for value in values:
+        code, _, stderr = run(name, *arguments[name], option, value)
+        assert code == ExitCode.USAGE, f"{name} {option} {value}: {stderr}"
+        assert option in one_line_error(stderr)
+    assert sorted(tmp_path.rglob("*")) == before
+
+
+@pytest.mark.parametrize(
+    "args, needle",
+    [
+        (["plan", COFFEE_DOMAIN, COFFEE_DOMAIN, "--no-such-option"], "--no-such-option"),
+        (["plan", COFFEE_DOMAIN], "PROBLEM"),
+        (["plan", COFFEE_DOMAIN, COFFEE_DOMAIN, "--method", "magic"], "--method"),
+        (["plan", COFFEE_DOMAIN, COFFEE_DOMAIN, "--timeout", "soon"], "--timeout"),
+        (["plan", COFFEE_DOMAIN, COFFEE_DOMAIN, "--timeout"], "--timeout"),
+        (["no-such-command"], "no-such-command"),
+        (["report"], "STORE"),
+        ([], "no command"),
+        (["prune", COFFEE_DOMAIN, COFFEE_DOMAIN], "--output"),
+        (["learn", COFFEE_DOMAIN, COFFEE_DOMAIN], "--output"),
+        (["generate", "coffee"], "--out"),
+    ],
+)
+def test_usage_errors_are_one_line_naming_what_is_wrong(args, needle):
+    result = CliRunner().invoke(main, [str(a) for a in args])
+    assert result.exit_code == ExitCode.COMMAND_LINE
+    line = one_line_error(result.stderr)
+    assert needle in line and "Usage:" not in line
+
+
+def test_other_packages_warnings_and_log_lines_need_verbose():
+    @click.command()
+    @handle_errors
+    def noisy():
+        warnings.warn("a package's warning on import", UserWarning, stacklevel=1)
+        logging.getLogger("distributed.client").error("Failed to reconnect to scheduler")
+        click.echo("done")
+
+    quiet = CliRunner().invoke(noisy, [])
+    assert quiet.exit_code == 0 and quiet.stdout == "done\n" and quiet.stderr == ""
+    logging.getLogger("distributed.client").addHandler(handler := logging.StreamHandler())
+    try:
+        with warnings.catch_warnings(record=True) as heard:
+            warnings.simplefilter("always")
+            loud = CliRunner().invoke(noisy, ["--verbose"])
+    finally:
+        logging.getLogger("distributed.client").removeHandler(handler)
+    assert loud.exit_code == 0 and [str(w.message) for w in heard] == ["a package's warning on import"]
+    assert logging.root.manager.disable == logging.NOTSET  # the quiet ends with the command
+
+
+def test_every_command_takes_verbose():
+    assert [name for name, command in _commands().items() if "verbose" not in {p.name for p in command.params}] == []
+
+
+def test_validators_as_a_comma_list_or_repeated(tmp_path):
+    """The list is read as docs/validation.md writes it: 'none' beside a validator is refused either way
+    (exit 30, the options' own check), an unknown name is the command line's error (exit 2)."""
+    problem = write_file(tmp_path, "p.pddl", coffee_problem())
+    plan = ["plan", COFFEE_DOMAIN, problem, "--plan-file", tmp_path / "plan", "-q"]
+    for given in (["--validator", "builtin,none"], ["--validator", "builtin", "--validator", "none"]):
+        code, _, stderr = run(*plan, *given)
+        assert code == ExitCode.USAGE and "none" in one_line_error(stderr)
+    code, _, stderr = run(*plan, "--validator", "builtin,magic")
+    assert code == ExitCode.COMMAND_LINE and "'magic'" in one_line_error(stderr)
+
+
+@pytest.mark.planner
+def test_plan_with_builtin_and_val_as_validation_md_writes_it(tmp_path):
+    from relevance_plan.planning.validate import val_available
+
+    if not val_available():
+        pytest.skip("VAL is not installed")
+    problem = write_file(tmp_path, "p.pddl", coffee_problem())
+    result = invoke("plan", COFFEE_DOMAIN, problem, "--validator", "builtin,val", "--plan-file", tmp_path / "plan")
+    assert result.exit_code == 0, result.stderr
+    assert "valid on the original problem (builtin+val)" in result.stdout
+
+
+def test_learns_old_time_limit_is_a_deprecated_name_for_timeout(tmp_path):
+    problem = write_file(tmp_path, "p.pddl", coffee_problem())
+    learn = ["learn", COFFEE_DOMAIN, problem, "-o", tmp_path / "m.json"]
+    assert "--time-limit" not in invoke("learn", "--help").stdout and "--timeout" in invoke("learn", "--help").stdout
+    code, _, stderr = run(*learn, "--time-limit", "nan")
+    assert code == ExitCode.USAGE and "--time-limit" in one_line_error(stderr)
+    code, _, stderr = run(*learn, "--time-limit", "5", "--timeout", "5")
+    assert code == ExitCode.USAGE and "--timeout only" in one_line_error(stderr)
+    assert not (tmp_path / "m.json").exists()
