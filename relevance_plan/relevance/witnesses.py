@@ -306,18 +306,21 @@ def exists_needs(
     """Each top-level existential of the goal over one variable whose body is a conjunction of atoms,
     with the objects that satisfy the body's static atoms, nearest first to the body's objects and
     to where the agent is."""
+    existentials = []
+    for part in conjuncts(goal):
+        if not isinstance(part, Exists) or len(part.parameters) != 1:
+            continue
+        body = list(conjuncts(part.body))
+        if body and all(isinstance(atom, Atom) for atom in body):
+            existentials.append((part, tuple(atom for atom in body if isinstance(atom, Atom))))
+    if not existentials:
+        return ()  # the distances below cost a walk over the scene: only for a goal that needs them
     static = static_predicates(domain)
     graph = ObjectGraph(index)
     agents = _agents(index, static)
     from_agents = graph_distances(index, graph, agents, hub_degree) if agents else {}
     needs = []
-    for part in conjuncts(goal):
-        if not isinstance(part, Exists) or len(part.parameters) != 1:
-            continue
-        body = list(conjuncts(part.body))
-        if not body or not all(isinstance(atom, Atom) for atom in body):
-            continue
-        atoms = tuple(atom for atom in body if isinstance(atom, Atom))
+    for part, atoms in existentials:
         variable, type_name = part.parameters[0]
         names = {name for name, kind in objects.items() if domain.is_subtype(kind, type_name)}
         for atom in atoms:
