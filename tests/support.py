@@ -61,6 +61,14 @@ def one_line_error(stderr: str) -> str:
 # --------------------------------------------------------------------------- files
 
 
+def modules_after(*lines: str, then: str = "") -> list[str]:
+    """The modules a fresh interpreter has imported once it ran ``lines`` (then ``then``)."""
+    script = "import sys\n" + "".join(line + "\n" for line in lines) + "print(' '.join(sorted(sys.modules)))\n" + then
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=60, cwd=REPO)
+    assert done.returncode == 0, done.stderr
+    return done.stdout.split()
+
+
 def write_file(directory: Path, name: str, data: str | bytes) -> Path:
     """``directory / name`` holding ``data`` (text or bytes)."""
     path = directory / name

@@ -9,7 +9,7 @@ import sys
 import time
 
 import pytest
-from support import DOMAINS, REPO, TOOL, write_file
+from support import DOMAINS, TOOL, modules_after, write_file
 
 from relevance_plan.planning.loop import PlanOptions, plan_task
 from relevance_plan.planning.planners.fast_downward import head_start
@@ -38,17 +38,12 @@ def gripper_problem(tmp_path):
 @pytest.mark.planner
 def test_the_fast_path_imports_nothing_heavy(gripper_problem):
     # a fresh interpreter: what the launcher has imported when the driver is running
-    script = (
-        "import sys\n"
-        "from relevance_plan.planning.planners.fast_downward import head_start\n"
-        f"head_start.start_for_plan([{str(GRIPPER)!r}, {str(gripper_problem)!r}, '--method', 'pure'])\n"
-        "assert head_start._PENDING, 'no head start'\n"
-        "print(' '.join(sorted(sys.modules)))\n"
-        "head_start.discard_pending()\n"
+    modules = modules_after(
+        "from relevance_plan.planning.planners.fast_downward import head_start",
+        f"head_start.start_for_plan([{str(GRIPPER)!r}, {str(gripper_problem)!r}, '--method', 'pure'])",
+        "assert head_start._PENDING, 'no head start'",
+        then="head_start.discard_pending()\n",
     )
-    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=60, cwd=REPO)
-    assert done.returncode == 0, done.stderr
-    modules = done.stdout.split()
     assert not [m for m in modules if m.split(".")[0] in HEAVY]
     ours = {m for m in modules if m.startswith("relevance_plan")}
     assert not {

@@ -10,7 +10,6 @@ from __future__ import annotations
 import json
 import math
 import re
-import subprocess
 import sys
 import zlib
 from pathlib import Path
@@ -18,7 +17,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 import yaml
-from support import REPO
+from support import REPO, modules_after
 
 from relevance_plan.errors import InputFileError, MissingExtraError, UsageError
 from relevance_plan.exitcodes import ExitCode, exit_code_for_error
@@ -321,17 +320,12 @@ def test_without_numpy_free_text_names_the_extra(monkeypatch):
 
 
 def test_importing_the_package_and_naming_an_entry_need_no_numpy():
-    script = (
-        "import sys\n"
-        "from relevance_plan.relevance.knowledge import load_knowledge_model, shipped_knowledge_models\n"
-        "from relevance_plan.relevance.text import resolve_objective\n"
-        "match = resolve_objective('drink at break', load_knowledge_model(shipped_knowledge_models()['coffee']))\n"
-        "assert match.chosen == 'drink-at-break' and match.similarity == 1.0, match\n"
-        "print(' '.join(sys.modules))\n"
+    loaded = modules_after(
+        "from relevance_plan.relevance.knowledge import load_knowledge_model, shipped_knowledge_models",
+        "from relevance_plan.relevance.text import resolve_objective",
+        "match = resolve_objective('drink at break', load_knowledge_model(shipped_knowledge_models()['coffee']))",
+        "assert match.chosen == 'drink-at-break' and match.similarity == 1.0, match",
     )
-    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=60, cwd=REPO)
-    assert done.returncode == 0, done.stderr
-    loaded = done.stdout.split()
     assert "numpy" not in loaded and "relevance_plan.relevance.text.encoder" not in loaded
 
 

@@ -56,6 +56,11 @@ class LearnReport:
 Say = Callable[[str], None]
 
 
+def _check_labels(labels: str) -> None:
+    if labels not in LABEL_KINDS:
+        raise UsageError(f"unknown label kind '{labels}' (choose from: {', '.join(LABEL_KINDS)})")
+
+
 def _quiet(message: str) -> None:
     pass
 
@@ -184,8 +189,7 @@ def learn(
     say: Say = _quiet,
 ) -> LearnReport:
     """Solve and label each training problem, then fit a model (see the module's docstring)."""
-    if labels not in LABEL_KINDS:
-        raise UsageError(f"unknown label kind '{labels}' (choose from: {', '.join(LABEL_KINDS)})")
+    _check_labels(labels)
     if not problem_paths:
         raise UsageError("learn needs at least one training problem")
     started = time.perf_counter()
@@ -257,8 +261,7 @@ def learn_from_store(
     from relevance_plan.batch.store import read_rows
     from relevance_plan.pddl.plans import read_plan
 
-    if labels not in LABEL_KINDS:
-        raise UsageError(f"unknown label kind '{labels}' (choose from: {', '.join(LABEL_KINDS)})")
+    _check_labels(labels)
     if not problem_paths:
         raise UsageError("give the problem files the store's runs solved (PROBLEM...) with --store")
     started = time.perf_counter()

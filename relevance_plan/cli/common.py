@@ -88,7 +88,6 @@ def handled(function):
             quit_if_memory_ran_out,
             quit_on_broken_pipe,
             quit_on_output_error,
-            quit_out_of_memory,
         )
         from relevance_plan.signals import DEADLINE_SIGNAL, interrupt_on_signals
 
@@ -106,10 +105,7 @@ def handled(function):
             # long, a full disk) is still a file problem: one line, exit 31.
             where = InputFileError(error.strerror or str(error), path=error.filename)
             fail(str(where), ExitCode.INPUT_FILE)
-        except MemoryError as error:
-            error.__traceback__ = None  # its frames hold what filled the memory: free it before saying anything
-            quit_out_of_memory()
-        except SystemError as error:
+        except (MemoryError, SystemError) as error:
             quit_if_memory_ran_out(error)
             raise
         except KeyboardInterrupt as error:

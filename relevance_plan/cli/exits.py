@@ -72,10 +72,10 @@ def quit_out_of_memory() -> NoReturn:
 _SILENT_FAILURES = ("without setting an exception", "without exception set")
 
 
-def quit_if_memory_ran_out(error: SystemError) -> None:
+def quit_if_memory_ran_out(error: MemoryError | SystemError) -> None:
     """One line and exit 21 when ``error`` is how memory running out surfaced; else return."""
-    if any(words in str(error) for words in _SILENT_FAILURES):
-        error.__traceback__ = None
+    if isinstance(error, MemoryError) or any(words in str(error) for words in _SILENT_FAILURES):
+        error.__traceback__ = None  # its frames hold what filled the memory: free it before saying anything
         quit_out_of_memory()
 
 
@@ -148,10 +148,7 @@ class ToolGroup(click.Group):
         except SystemExit:
             _flush_stdout()
             raise
-        except MemoryError as error:
-            error.__traceback__ = None  # its frames hold what filled the memory: free it before saying anything
-            quit_out_of_memory()
-        except SystemError as error:
+        except (MemoryError, SystemError) as error:
             quit_if_memory_ran_out(error)
             raise
         except OSError as error:  # outside any command's own handling (click's help, its usage lines)

@@ -4,11 +4,14 @@
 - ``events``: one event, checked against the current scene;
 - ``state``: the live scene (objects, facts, goal) and its index;
 - ``triggers``: when relevance must be determined again;
-- ``rescoring``: the scores kept current event by event.
+- ``rescoring``: the scores kept current event by event;
+- ``reuse``: what the first selection read, and whether an event changed any of it;
+- ``reports``: what the session says of each event (``watch``'s JSON lines).
 """
 
 from relevance_plan.session.events import EVENT_KINDS, Event, EventError
-from relevance_plan.session.session import Ask, EventReport, PlanReport, Session
+from relevance_plan.session.reports import Ask, EventReport, PlanReport
+from relevance_plan.session.session import Session
 from relevance_plan.session.triggers import TRIGGERS, Change
 
 __all__ = [

@@ -41,6 +41,7 @@ from relevance_plan.relevance.scorers.knowledge_model import (
     knowledge_context,
     score_element,
     scored_by_contents,
+    scored_result,
     unknown_share_problem,
     with_goal_objects,
 )
@@ -287,18 +288,7 @@ class LiveModelScores:
             return insufficient_result(self.scene.objects, context, problem)
         named = set(names_in(self.scene.goal)) & self.scene.objects.keys()
         scores, explanations = with_goal_objects(dict(self.scores), dict(self.explanations), named)
-        return ScoreResult(
-            "model",
-            scores,
-            element_class=dict(self.element_class),
-            class_scores=dict(self.class_scores),
-            explanations=explanations,
-            unknown=unknown,
-            objective=context.objective,
-            task_distribution=context.distribution,
-            task_entropy=context.entropy,
-            understood=context.understood,
-        )
+        return scored_result(context, scores, dict(self.element_class), dict(self.class_scores), explanations, unknown)
 
 
 class LiveGoalScores:

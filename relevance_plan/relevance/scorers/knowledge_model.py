@@ -306,6 +306,18 @@ def score_by_knowledge_model(task: PlanningTask, request: ScoreRequest) -> Score
                 explanations[name] += (
                     f"; '{match.text}' placed under {match.chosen} (similarity {match.similarity:.2f})"
                 )
+    return scored_result(context, scores, element_class, class_scores, explanations, unknown)
+
+
+def scored_result(
+    context: KnowledgeContext,
+    scores: dict[str, float],
+    element_class: dict[str, str],
+    class_scores: dict[str, float],
+    explanations: dict[str, str],
+    unknown: tuple[str, ...],
+) -> ScoreResult:
+    """The knowledge model's scores with the context that gave them (the cues, what words were taken for)."""
     return ScoreResult(
         "model",
         scores,
