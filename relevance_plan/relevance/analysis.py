@@ -154,6 +154,9 @@ class ObjectGraph:
         self.max_fan = max_fan
         self.fans = fan_in(index) if fans is None and max_fan is not None else fans or {}
         self.found: dict[str, list[str]] = {}
+        # walks already made, kept by a graph that outlives one task (a live session's: the index
+        # drops each walk an event's facts can change); None: not kept
+        self.walks: dict[tuple[frozenset[str], int | None], dict[str, int]] | None = None
 
     def neighbours(self, name: str) -> list[str]:
         """The other objects of the facts a walk follows from ``name``, each once."""
@@ -178,8 +181,51 @@ def graph_distances(
     """Breadth-first hops from ``sources`` over ``graph``; an object in more than ``hub_degree``
     facts gets a distance but is not passed through."""
     distance = {name: 0 for name in sources}
-    _walk(index, graph, distance, list(distance), 0, hub_degree)
-    return distance
+    walks = graph.walks
+    if walks is None:
+        _walk(index, graph, distance, list(distance), 0, hub_degree)
+        return distance
+    key = (frozenset(distance), hub_degree)
+    walked = walks.get(key)
+    if walked is None:
+        _walk(index, graph, distance, list(distance), 0, hub_degree)
+        if len(walks) >= MAX_KEPT_WALKS:
+            walks.clear()
+        walked = walks[key] = distance
+    return dict(walked)
+
+
+# Walks a kept graph holds at the most (each as large as the part of the scene it reaches).
+MAX_KEPT_WALKS = 16
+
+
+def shared_graph(index: FactIndex, max_fan: float) -> ObjectGraph:
+    """The graph of ``index``'s links for ``max_fan``: the index's own when it keeps one across
+    changes (a live session's), else a new one."""
+    kept = getattr(index, "object_graph", None)
+    return kept(max_fan) if kept is not None else ObjectGraph(index, max_fan, fan_in(index))
+
+
+def walk_changed(
+    walked: Mapping[str, int],
+    atom: tuple[str, ...],
+    names: Iterable[str],
+    degrees: Mapping[str, tuple[int, int]],
+    followed: Callable[[str, int], bool],
+    hub_degree: int | None,
+) -> bool:
+    """Whether a fact (or numeric term) ``atom`` of ``names`` coming or going can change the walk
+    ``walked``: only through an object the walk reached, by a link followed from it, or by its
+    count of facts crossing ``hub_degree`` (``degrees``: name -> (before, after))."""
+    for name in names:
+        if name not in walked:
+            continue
+        if len(atom) >= 3 and followed(atom[0], atom.index(name) - 1):
+            return True
+        before, after = degrees[name]
+        if hub_degree is not None and (before > hub_degree) != (after > hub_degree):
+            return True
+    return False
 
 
 def _walk(

@@ -13,6 +13,7 @@ for; ``_sharpen`` asks the sharper temporal and numeric check
 
 from __future__ import annotations
 
+import heapq
 import itertools
 import math
 import time
@@ -20,7 +21,7 @@ from collections.abc import Callable, Collection, Iterator, Mapping, Sequence, S
 from dataclasses import dataclass
 
 from relevance_plan.pddl.formulas import GroundAtom
-from relevance_plan.relevance.analysis import GrowingDistances, ObjectGraph, fan_in, graph_distances
+from relevance_plan.relevance.analysis import GrowingDistances, graph_distances, shared_graph
 from relevance_plan.relevance.closure import Restored
 from relevance_plan.relevance.exploration import (
     DEFAULT_BUDGET,
@@ -269,6 +270,30 @@ def _lacking_classes_first(ranked: Sequence[str], selected: Set[str], classes: M
     return front + [name for name in ranked if name not in chosen]
 
 
+class _Sorted:
+    """The names of ``keys`` (tuples that end with the name) in the keys' order, each taken off a heap
+    when an iteration first reaches it: a round of the repair reads the first few of thousands."""
+
+    def __init__(self, keys: list[tuple[int, int, int, float, str]]):
+        heapq.heapify(keys)
+        self._heap = keys
+        self._taken: list[str] = []
+
+    def __len__(self) -> int:
+        return len(self._taken) + len(self._heap)
+
+    def __iter__(self) -> Iterator[str]:
+        position = 0
+        while True:
+            if position < len(self._taken):
+                yield self._taken[position]
+                position += 1
+            elif self._heap:
+                self._taken.append(heapq.heappop(self._heap)[-1])
+            else:
+                return
+
+
 class RepairOrder:
     """The order in which the repair adds objects (see :func:`repair_selection`)."""
 
@@ -280,7 +305,7 @@ class RepairOrder:
         self.reads.ranked = True
         self.hub = task.hub_degree
         # the initial facts' links, walked once or twice a round
-        self.graph = ObjectGraph(task.init_index, REPAIR_MAX_FAN, fan_in(task.init_index))
+        self.graph = shared_graph(task.init_index, REPAIR_MAX_FAN)
         self.toward_unreached: tuple[frozenset[str], dict[str, int]] = (frozenset(), {})
         self.toward_targets: tuple[frozenset[str], dict[str, int]] = (frozenset(), {})
         # hops from what the exploration reached, which only grows: each round walks from what is new
@@ -390,12 +415,9 @@ class RepairOrder:
         # when those run out (most of a building's items: no link leads from their receptacle to them).
         linked = [name for name in distance.keys() | between.keys() if name in classes and name not in current]
         to, back, off, score = distance.get, between.get, far if sources else 0, self.scores.get
-        ranked = [  # sorted by rank(name), its parts looked up here: thousands of objects, a dozen rounds
-            key[-1]
-            for key in sorted(
-                (to(n, far) + back(n, off), to(n, far), fruitless.get(classes[n], 0), -score(n, 0.0), n) for n in linked
-            )
-        ]
+        ranked = _Sorted(  # by rank(name), its parts looked up here: thousands of objects, a dozen rounds
+            [(to(n, far) + back(n, off), to(n, far), fruitless.get(classes[n], 0), -score(n, 0.0), n) for n in linked]
+        )
         rest = len(classes) - sum(1 for name in current if name in classes) - len(ranked)
         kept_of: dict[str, list[str]] = {}
         chosen: list[str] = []
@@ -418,7 +440,7 @@ class RepairOrder:
         return chosen or detached[:count] or list(itertools.islice(self._ranked(ranked, current, rank, rest), count))
 
     def _ranked(
-        self, linked: list[str], current: Set[str], rank: Callable[[str], tuple[int, int, int, float, str]], rest: int
+        self, linked: _Sorted, current: Set[str], rank: Callable[[str], tuple[int, int, int, float, str]], rest: int
     ) -> Iterator[str]:
         """``linked`` (ranked), then the ``rest`` of the objects outside ``current``, ranked, made only when reached."""
         yield from linked

@@ -12,7 +12,7 @@ renders it as PDDL in the user's spelling, for planning and snapshots.
 from __future__ import annotations
 
 from bisect import bisect_left, insort
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
 
@@ -20,6 +20,7 @@ from relevance_plan.pddl.formatter import format_problem
 from relevance_plan.pddl.formulas import Formula, literals
 from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.parser import read_problem
+from relevance_plan.relevance.analysis import ObjectGraph, walk_changed
 
 
 def atom_objects(atom: tuple) -> Iterator[str]:
@@ -56,6 +57,9 @@ class LiveIndex:
         self._singletons: set[str] = set()
         self._functional: frozenset | None = None
         self._degrees: dict[int, int] = {}  # degree -> how many objects have it
+        # max_fan -> (the positions not followed, the graph): kept across changes, each change
+        # dropping what it can alter (see object_graph)
+        self._graphs: dict[float, tuple[frozenset, ObjectGraph]] = {}
         for fact in sorted(facts):  # in order: each insertion lands at the end of its lists
             self.add(fact)
         for term in terms:
@@ -80,9 +84,50 @@ class LiveIndex:
     def _file(self, atom: tuple, change: Callable[[dict, dict, str, tuple], None], step: int) -> None:
         """``change`` the lists of ``atom``'s predicate and of each of its objects, and the counts."""
         change(self.by_predicate, self._predicate_terms, atom[0], atom)
-        for name in atom_objects(atom):
+        names = list(atom_objects(atom))
+        for name in names:
             change(self.by_object, self._object_terms, name, atom)
         self._count(atom, step)
+        if self._graphs:
+            self._graphs_changed(atom, names, step)
+
+    def _graphs_changed(self, atom: tuple, names: list[str], step: int) -> None:
+        """What the kept graphs knew of ``names`` forgotten, and the walks the change can alter dropped."""
+        degrees = {
+            name: (len(self.by_object.get(name, ())) - step, len(self.by_object.get(name, ()))) for name in names
+        }
+        for max_fan, (_, graph) in self._graphs.items():
+            for name in names:
+                graph.found.pop(name, None)
+            walks = graph.walks
+            if not walks:
+                continue
+
+            def followed(predicate: str, position: int, max_fan: float = max_fan) -> bool:
+                return self.fan(predicate, position) <= max_fan
+
+            for key in [
+                key for key, walked in walks.items() if walk_changed(walked, atom, names, degrees, followed, key[1])
+            ]:
+                del walks[key]
+
+    def object_graph(self, max_fan: float) -> ObjectGraph:
+        """The links of the current facts as ``analysis.ObjectGraph(self, max_fan, fan_in(self))``
+        gives them, kept across changes with the walks made on it (``graph_distances``): a change
+        drops what it can alter, and a position whose fan crosses ``max_fan`` makes a new graph."""
+        unfollowed = frozenset(
+            (predicate, position)
+            for predicate, atoms in self.by_predicate.items()
+            for position in range(len(atoms[0]) - 1)
+            if self.fan(predicate, position) > max_fan
+        )
+        kept = self._graphs.get(max_fan)
+        if kept is not None and kept[0] == unfollowed:
+            return kept[1]
+        graph = ObjectGraph(self, max_fan, _LiveFans(self))
+        graph.walks = {}
+        self._graphs[max_fan] = (unfollowed, graph)
+        return graph
 
     def _insert(self, table: dict, terms: dict, key: str, fact: tuple) -> None:
         items = table.get(key)
@@ -180,6 +225,28 @@ class LiveIndex:
     @property
     def singletons(self) -> frozenset:
         return frozenset(self._singletons)
+
+
+class _LiveFans(Mapping[tuple[str, int], float]):
+    """``analysis.fan_in`` of a live index, each value read when asked."""
+
+    def __init__(self, index: LiveIndex):
+        self.index = index
+
+    def __getitem__(self, key: tuple[str, int]) -> float:
+        predicate, position = key
+        atoms = self.index.by_predicate.get(predicate)
+        if not atoms or not 0 <= position < len(atoms[0]) - 1:
+            raise KeyError(key)
+        return self.index.fan(predicate, position)
+
+    def __iter__(self) -> Iterator[tuple[str, int]]:
+        for predicate, atoms in self.index.by_predicate.items():
+            for position in range(len(atoms[0]) - 1):
+                yield predicate, position
+
+    def __len__(self) -> int:
+        return sum(len(atoms[0]) - 1 for atoms in self.index.by_predicate.values())
 
 
 @dataclass
