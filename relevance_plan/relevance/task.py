@@ -25,7 +25,6 @@ from relevance_plan.relevance.analysis import (
 )
 from relevance_plan.relevance.soundness import KeptObjects, objects_to_keep, soundness_requirements
 from relevance_plan.relevance.types import InferredTypes, infer_types
-from relevance_plan.relevance.witness_proof import unsolvable_by_witnesses
 from relevance_plan.relevance.witnesses import WitnessNeed, exists_needs, shortfall_reason, witness_needs
 
 
@@ -122,6 +121,10 @@ class PlanningTask:
         typing = self.typing
         if typing.inferred:
             return ""  # inferred classes guide choices; a proof stands on the types the domain declares
+        if not self.witness_shortfall:
+            return ""  # enough witnesses: nothing to prove (and the proof's modules stay unloaded)
+        from relevance_plan.relevance.witness_proof import unsolvable_by_witnesses
+
         proof = unsolvable_by_witnesses(
             typing.domain, typing.problem, self.init_index, self.witness_needs, self.witness_shortfall
         )
