@@ -13,9 +13,10 @@ Nothing here grounds an action.  Two results feed the rest of the pipeline:
 
 from __future__ import annotations
 
+import heapq
 import itertools
 from collections import defaultdict
-from collections.abc import Callable, Collection, Iterable, Mapping
+from collections.abc import Callable, Collection, Iterable, Iterator, Mapping
 from dataclasses import dataclass
 from typing import Protocol
 
@@ -156,23 +157,28 @@ class ObjectGraph:
         self.found: dict[str, list[str]] = {}
         # walks already made, kept by a graph that outlives one task (a live session's: the index
         # drops each walk an event's facts can change); None: not kept
-        self.walks: dict[tuple[frozenset[str], int | None], dict[str, int]] | None = None
+        self.walks: (
+            dict[tuple[frozenset[str], int | None] | tuple[frozenset[str], int | None, str], dict[str, int]] | None
+        ) = None
 
     def neighbours(self, name: str) -> list[str]:
         """The other objects of the facts a walk follows from ``name``, each once."""
         found = self.found.get(name)
         if found is None:
             linked: dict[str, None] = {}
-            max_fan, fans = self.max_fan, self.fans
             for atom in self.index.by_object.get(name, ()):
-                if len(atom) < 3:
-                    continue
-                if max_fan is not None and fans.get((atom[0], atom.index(name) - 1), 0.0) > max_fan:
-                    continue
-                linked.update(dict.fromkeys(atom[1:]))
+                if self.follows(atom, name):
+                    linked.update(dict.fromkeys(atom[1:]))
             linked.pop(name, None)
             found = self.found[name] = list(linked)
         return found
+
+    def follows(self, atom: tuple[str, ...], name: str) -> bool:
+        """Whether a walk goes from ``name`` on through ``atom``, a fact of it: one that links it to
+        another object, from a position not shared by more than ``max_fan`` facts on average."""
+        if len(atom) < 3:
+            return False
+        return self.max_fan is None or self.fans.get((atom[0], atom.index(name) - 1), 0.0) <= self.max_fan
 
 
 def graph_distances(
@@ -195,11 +201,121 @@ def graph_distances(
     return dict(walked)
 
 
+def walk_bounds(
+    index: FactIndex, graph: ObjectGraph, sources: Iterable[str], distance: Mapping[str, int], hub_degree: int | None
+) -> dict[str, int]:
+    """For each object the walk ``distance`` (``graph_distances`` from ``sources``) reached, the
+    fewest hops from it, along the links a walk follows, to an object plus that object's own
+    distance: a lower bound on what going on from it can still add up to, which, unlike
+    ``distance`` itself, grows by at most one per link followed (a room is one hop from all its
+    places, which need not be one hop from each other), as :class:`NearestBetween` needs."""
+    walks = graph.walks
+    key = (frozenset(sources), hub_degree, "bounds")
+    kept = walks.get(key) if walks is not None else None
+    if kept is not None:
+        return kept
+    by_object = index.by_object
+    before: dict[str, list[str]] = {}  # object -> the reached objects with a followed link to it
+    for name in distance:
+        if hub_degree is not None and len(by_object.get(name, ())) > hub_degree:
+            continue  # an object passed through only as a source
+        for other in graph.neighbours(name):
+            before.setdefault(other, []).append(name)
+    bound = dict(distance)
+    levels: list[list[str]] = []
+    for name, hops in distance.items():
+        while len(levels) <= hops:
+            levels.append([])
+        levels[hops].append(name)
+    hops = 0
+    while hops < len(levels):
+        for name in levels[hops]:
+            if bound[name] != hops:
+                continue
+            for other in before.get(name, ()):
+                if bound.get(other, hops + 2) > hops + 1:
+                    bound[other] = hops + 1
+                    if len(levels) == hops + 1:
+                        levels.append([])
+                    levels[hops + 1].append(other)
+        hops += 1
+    if walks is not None:
+        if len(walks) >= MAX_KEPT_WALKS:
+            walks.clear()
+        walks[key] = bound  # dropped with the walk it bounds: it has the same objects
+    return bound
+
+
+class NearestBetween:
+    """The objects in order of hops from ``sources`` plus hops ``toward`` (a walk from other
+    objects, with its :func:`walk_bounds`), fewest first, then fewest hops toward: what sorting
+    every object the two walks reach by that sum gives, found by walking from ``sources`` only as
+    far as the sums asked for need (a best-first search the bounds guide).  ``far``: the hops of an
+    object a walk does not reach; the search stops (``exhausted``) before the first sum of
+    ``far`` or more, where objects one of the walks misses come in."""
+
+    def __init__(
+        self,
+        index: FactIndex,
+        graph: ObjectGraph,
+        sources: Iterable[str],
+        toward: Mapping[str, int],
+        bounds: Mapping[str, int],
+        hub_degree: int | None,
+        far: int,
+    ):
+        self.exhausted = False
+        self._index, self._graph, self._hub, self._far = index, graph, hub_degree, far
+        self._toward, self._bounds = toward, bounds
+        self._hops: dict[str, int] = {}
+        self._open: list[tuple[int, str]] = []
+        self._done: list[tuple[int, int, str]] = []  # (sum, hops toward, name) of objects whose hops are known
+        for name in sources:
+            self._hops[name] = 0
+        self._finished = set(self._hops)
+        for name in sorted(self._finished):  # sources pass their links on whatever their count of facts
+            self._finish(name, 0, True)
+
+    def _finish(self, name: str, hops: int, source: bool = False) -> None:
+        toward = self._toward.get(name)
+        if toward is not None:
+            heapq.heappush(self._done, (hops + toward, toward, name))
+        if not source and self._hub is not None and len(self._index.by_object.get(name, ())) > self._hub:
+            return
+        bounds, known = self._bounds, self._hops
+        for other in self._graph.neighbours(name):
+            if known.get(other, hops + 2) > hops + 1:
+                known[other] = hops + 1
+                heapq.heappush(self._open, (hops + 1 + bounds.get(other, 0), other))
+
+    def groups(self) -> Iterator[list[tuple[int, str]]]:
+        """The objects, a sum at a time: (hops toward, name) of every object with that sum."""
+        opened, done, known, finished = self._open, self._done, self._hops, self._finished
+        while True:
+            least = opened[0][0] if opened else None
+            if done and done[0][0] < self._far and (least is None or done[0][0] < least):
+                total = done[0][0]
+                group = []
+                while done and done[0][0] == total:
+                    _, toward, name = heapq.heappop(done)
+                    group.append((toward, name))
+                yield group
+                continue
+            if least is None or least >= self._far:
+                self.exhausted = True
+                return
+            _, name = heapq.heappop(opened)
+            if name in finished:
+                continue
+            finished.add(name)
+            self._finish(name, known[name])
+
+
 # Walks a kept graph holds at the most (each as large as the part of the scene it reaches).
-MAX_KEPT_WALKS = 16
+MAX_KEPT_WALKS = 32
 
 
-def shared_graph(index: FactIndex, max_fan: float) -> ObjectGraph:
+def shared_graph(index: FactIndex, max_fan: float | None) -> ObjectGraph:
     """The graph of ``index``'s links for ``max_fan``: the index's own when it keeps one across
     changes (a live session's), else a new one."""
     kept = getattr(index, "object_graph", None)

@@ -21,7 +21,13 @@ from collections.abc import Callable, Collection, Iterator, Mapping, Sequence, S
 from dataclasses import dataclass
 
 from relevance_plan.pddl.formulas import GroundAtom
-from relevance_plan.relevance.analysis import GrowingDistances, graph_distances, shared_graph
+from relevance_plan.relevance.analysis import (
+    GrowingDistances,
+    NearestBetween,
+    graph_distances,
+    shared_graph,
+    walk_bounds,
+)
 from relevance_plan.relevance.closure import Restored
 from relevance_plan.relevance.exploration import (
     DEFAULT_BUDGET,
@@ -308,6 +314,7 @@ class RepairOrder:
         self.graph = shared_graph(task.init_index, REPAIR_MAX_FAN)
         self.toward_unreached: tuple[frozenset[str], dict[str, int]] = (frozenset(), {})
         self.toward_targets: tuple[frozenset[str], dict[str, int]] = (frozenset(), {})
+        self.bounds: tuple[frozenset[str], dict[str, int]] = (frozenset(), {})  # walk_bounds of toward_unreached
         # hops from what the exploration reached, which only grows: each round walks from what is new
         self.from_reached = GrowingDistances(task.init_index, self.graph, self.hub)
         self.classes = task.typing.problem.objects
@@ -392,43 +399,22 @@ class RepairOrder:
         if self.toward_unreached[0] != unreached:  # the same goal atoms stay unreached for many rounds
             self.toward_unreached = (frozenset(unreached), graph_distances(index, self.graph, unreached, self.hub))
         distance = self.toward_unreached[1]
-        far = len(self.classes) + 1
         sources = {arg for fact, achiever in reached.items() if achiever is not None for arg in fact[1:]}
         sources.update(self.agents)
         sources.discard(MEMBER)
         path = self._path(unreached - sources, sources - unreached, current)
         if path:
             return path
-        between = self.from_reached(sources) if sources else {}
-        fruitless, classes = self.fruitless, self.classes
-
-        def rank(name: str) -> tuple[int, int, int, float, str]:
-            return (
-                distance.get(name, far) + between.get(name, far if sources else 0),
-                distance.get(name, far),
-                fruitless.get(classes[name], 0),
-                -self.scores.get(name, 0.0),
-                name,
-            )
-
-        # The objects the distances reach rank first; the others, ranked alike after them, only
-        # when those run out (most of a building's items: no link leads from their receptacle to them).
-        linked = [name for name in distance.keys() | between.keys() if name in classes and name not in current]
-        to, back, off, score = distance.get, between.get, far if sources else 0, self.scores.get
-        ranked = _Sorted(  # by rank(name), its parts looked up here: thousands of objects, a dozen rounds
-            [(to(n, far) + back(n, off), to(n, far), fruitless.get(classes[n], 0), -score(n, 0.0), n) for n in linked]
-        )
-        rest = len(classes) - sum(1 for name in current if name in classes) - len(ranked)
         kept_of: dict[str, list[str]] = {}
         chosen: list[str] = []
         detached: list[str] = []
-        for position, name in enumerate(self._ranked(ranked, current, rank, rest)):
+        for name, linked in self._ranking(distance, sources, current):
             if len(chosen) == count:
                 break
-            self._read(name, position < len(ranked))
-            cls = classes[name]
+            self._read(name, linked)
+            cls = self.classes[name]
             if cls not in kept_of:
-                kept_of[cls] = sorted(n for n in current if classes.get(n) == cls)[:DOMINANCE_TRIES]
+                kept_of[cls] = sorted(n for n in current if self.classes.get(n) == cls)[:DOMINANCE_TRIES]
             if self.stood_in_for(name, kept_of[cls], reached):
                 continue
             if self._detached(name, kept_of[cls], reached, current):
@@ -437,7 +423,53 @@ class RepairOrder:
                 chosen.append(name)
         else:
             self.reads.objects = None  # every object was ranked: one more would be too
-        return chosen or detached[:count] or list(itertools.islice(self._ranked(ranked, current, rank, rest), count))
+        if chosen or detached:
+            return chosen or detached[:count]
+        return [name for name, _ in itertools.islice(self._ranking(distance, sources, current), count)]
+
+    def _ranking(self, distance: Mapping[str, int], sources: Set[str], current: Set[str]) -> Iterator[tuple[str, bool]]:
+        """The objects outside ``current`` in the order :meth:`nearest` ranks them, each with whether
+        a link reaches it (``distance``: hops toward the unreached objects).  Those both walks
+        reach come from a search that walks from ``sources`` only as far as the round reads
+        (``analysis.NearestBetween``); the rest, when a round reads that far, from ranking all."""
+        fruitless, classes, score = self.fruitless, self.classes, self.scores.get
+        far = len(classes) + 1
+        shown = 0
+        if sources:
+            unreached = self.toward_unreached[0]
+            if self.bounds[0] != unreached:
+                index = self.task.init_index
+                self.bounds = (unreached, walk_bounds(index, self.graph, unreached, distance, self.hub))
+            search = NearestBetween(self.task.init_index, self.graph, sources, distance, self.bounds[1], self.hub, far)
+            for group in search.groups():
+                members = [(toward, name) for toward, name in group if name in classes and name not in current]
+                members.sort(key=lambda m: (m[0], fruitless.get(classes[m[1]], 0), -score(m[1], 0.0), m[1]))
+                for _, name in members:
+                    shown += 1
+                    yield name, True
+        between = self.from_reached(sources) if sources else {}
+
+        def rank(name: str) -> tuple[int, int, int, float, str]:
+            return (
+                distance.get(name, far) + between.get(name, far if sources else 0),
+                distance.get(name, far),
+                fruitless.get(classes[name], 0),
+                -score(name, 0.0),
+                name,
+            )
+
+        # The objects the distances reach rank first; the others, ranked alike after them, only
+        # when those run out (most of a building's items: no link leads from their receptacle to them).
+        linked = [name for name in distance.keys() | between.keys() if name in classes and name not in current]
+        to, back, off = distance.get, between.get, far if sources else 0
+        ranked = _Sorted(  # by rank(name), its parts looked up here: thousands of objects, a dozen rounds
+            [(to(n, far) + back(n, off), to(n, far), fruitless.get(classes[n], 0), -score(n, 0.0), n) for n in linked]
+        )
+        rest = len(classes) - sum(1 for name in current if name in classes) - len(ranked)
+        # the first ``shown`` are those the search gave, in the same order
+        for position, name in enumerate(self._ranked(ranked, current, rank, rest)):
+            if position >= shown:
+                yield name, position < len(ranked)
 
     def _ranked(
         self, linked: _Sorted, current: Set[str], rank: Callable[[str], tuple[int, int, int, float, str]], rest: int
@@ -459,7 +491,8 @@ class RepairOrder:
         """The objects outside ``current`` on one shortest way in the initial state from the source
         nearest to ``targets`` (goal objects no reached fact names yet) down to one of them: a
         corridor of cells from where the robot can go to the goal's place, not every cell of the
-        rectangle between them."""
+        rectangle between them.  A step whose link is a fact with more objects (a door between
+        two places) brings those objects too: without the door, the corridor leads nowhere."""
         if not targets or not sources:
             return []
         if self.toward_targets[0] != targets:  # the same goal objects stay unnamed for many rounds
@@ -467,17 +500,43 @@ class RepairOrder:
                 frozenset(targets),
                 graph_distances(self.task.init_index, self.graph, targets, self.hub),
             )
-        distance = self.toward_targets[1]
+        walk = self._walk_toward(self.toward_targets[1], sources, current)
+        if walk or len(targets) == 1:
+            return walk
+        # the way to the nearest is kept already (a sofa next to where the robot can go): the way to another
+        for target in sorted(targets):
+            walk = self._walk_toward(
+                graph_distances(self.task.init_index, self.graph, [target], self.hub), sources, current
+            )
+            if walk:
+                return walk
+        return []
+
+    def _walk_toward(self, distance: Mapping[str, int], sources: Set[str], current: Set[str]) -> list[str]:
+        """:meth:`_path` down ``distance`` (hops toward some targets)."""
         start = min((name for name in sources if name in distance), key=lambda n: (distance[n], n), default=None)
         walk: list[str] = []
         name = start
         while name is not None and distance[name] > 0:
             lower = distance[name] - 1
             # the first by name: the facts' order, and so the neighbours', changes from run to run
-            name = min((o for o in self.graph.neighbours(name) if distance.get(o) == lower), default=None)
-            if name is not None and name not in current and name in self.classes:
-                walk.append(name)
-        return walk
+            step = min((o for o in self.graph.neighbours(name) if distance.get(o) == lower), default=None)
+            if step is not None:
+                walk += [o for o in self._link(name, step) if o not in current and o in self.classes]
+                if step not in current and step in self.classes:
+                    walk.append(step)
+            name = step
+        return list(dict.fromkeys(walk))
+
+    def _link(self, name: str, step: str) -> tuple[str, ...]:
+        """The other objects of the fact that links ``name`` to ``step`` with the fewest of them (the
+        door of ``(door-between door here there)``; none for ``(connected here there)``)."""
+        links = [
+            tuple(sorted({o for o in atom[1:] if o != name and o != step}))
+            for atom in self.task.init_index.by_object.get(name, ())
+            if step in atom[1:] and self.graph.follows(atom, name)
+        ]
+        return min(links, key=lambda others: (len(others), others), default=())
 
     def _detached(self, name: str, others: Sequence[str], reached: Mapping[GroundAtom, object], kept: Set[str]) -> bool:
         """Whether ``name``'s links to other objects are all where it is now (facts that change) and
