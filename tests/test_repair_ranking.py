@@ -62,6 +62,9 @@ def test_the_search_gives_the_objects_in_the_order_of_sorting_them_all(world, si
         targets = set(rng.sample(reached, min(len(reached), trial % 3))) | {rng.choice(names)}
         toward = graph_distances(index, graph, targets, hub)
         bounds = walk_bounds(index, graph, targets, toward, hub)
+        if trial % 2:  # the bounds toward more objects than the targets hold too
+            more = targets | set(rng.sample(names, 2))
+            bounds = walk_bounds(index, graph, more, graph_distances(index, graph, more, hub), hub)
         far = len(index.by_object) + 1
         search = NearestBetween(index, graph, sources, toward, bounds, hub, far)
         found = [item for group in search.groups() for item in sorted(group)]
@@ -154,3 +157,30 @@ def test_a_goal_object_next_to_what_is_reached_does_not_hide_the_way_to_another(
     assert order._path({near}, {start}, kept) == []  # nothing to add on the way to the near one
     walk = order._path({near, far}, {start}, kept)
     assert walk and walk == order._path({far}, {start}, kept)
+
+
+def missing_by_sorting(order: RepairOrder, kept: set[str]) -> list[str]:
+    """The best member of each class ``kept`` lacks, every object ranked (score, hops from kept, name)."""
+    present = {order.classes[name] for name in kept if name in order.classes}
+    distance = graph_distances(order.task.init_index, order.graph, kept, order.hub)
+    far = len(order.classes) + 1
+    best: dict[str, tuple[float, int, str]] = {}
+    for name, cls in order.classes.items():
+        if cls not in present:
+            key = (-order.scores.get(name, 0.0), distance.get(name, far), name)
+            best[cls] = min(best.get(cls, key), key)
+    return sorted(key[2] for key in best.values())
+
+
+@pytest.mark.parametrize(("world", "size"), WORLDS)
+def test_the_members_of_missing_classes_are_those_ranking_every_object_gives(world, size):
+    task = sized_task(world, 5, size)
+    rng = random.Random(world)
+    names = sorted(task.problem.objects)
+    # scores with many ties (the hops decide among them), and the scorer's own
+    coarse = {name: rng.choice([0.0, 0.0, 0.5]) for name in names}
+    for scores in (coarse, score_problem(task, ScoringOptions()).scores.element_scores):
+        order = RepairOrder(task, scores)
+        for trial in range(6):
+            kept = set(rng.sample(names, 1 + trial))
+            assert order.missing_classes(kept) == missing_by_sorting(order, kept)

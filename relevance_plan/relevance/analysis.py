@@ -248,11 +248,11 @@ def walk_bounds(
 
 class NearestBetween:
     """The objects in order of hops from ``sources`` plus hops ``toward`` (a walk from other
-    objects, with its :func:`walk_bounds`), fewest first, then fewest hops toward: what sorting
-    every object the two walks reach by that sum gives, found by walking from ``sources`` only as
-    far as the sums asked for need (a best-first search the bounds guide).  ``far``: the hops of an
-    object a walk does not reach; the search stops (``exhausted``) before the first sum of
-    ``far`` or more, where objects one of the walks misses come in."""
+    objects, with its :func:`walk_bounds` or those of a walk from more objects), fewest first,
+    then fewest hops toward: what sorting every object the two walks reach by that sum gives,
+    found by walking from ``sources`` only as far as the sums asked for need (a best-first search
+    the bounds guide).  ``far``: the hops of an object a walk does not reach; the search stops
+    (``exhausted``) before the first sum of ``far`` or more, where objects one of the walks misses come in."""
 
     def __init__(
         self,
@@ -360,6 +360,27 @@ def _walk(
                 if distance.get(other, hops + 1) > hops:
                     distance[other] = hops
                     following.append(other)
+        frontier = following
+
+
+def walk_levels(index: FactIndex, graph: ObjectGraph, sources: Iterable[str], hub: int | None) -> Iterator[list[str]]:
+    """The objects :func:`graph_distances` puts 1, 2, ... hops from ``sources``, a hop at a time:
+    for a caller that stops at the first hop where it finds what it looks for."""
+    distance = dict.fromkeys(sources, 0)
+    by_object, neighbours = index.by_object, graph.neighbours
+    frontier, hops = list(distance), 0
+    while frontier:
+        hops += 1
+        following = []
+        for name in frontier:
+            if hub is not None and hops > 1 and len(by_object.get(name, ())) > hub:
+                continue
+            for other in neighbours(name):
+                if other not in distance:
+                    distance[other] = hops
+                    following.append(other)
+        if following:
+            yield following
         frontier = following
 
 

@@ -27,6 +27,7 @@ from relevance_plan.relevance.analysis import (
     graph_distances,
     shared_graph,
     walk_bounds,
+    walk_levels,
 )
 from relevance_plan.relevance.closure import Restored
 from relevance_plan.relevance.exploration import (
@@ -370,17 +371,39 @@ class RepairOrder:
     def missing_classes(self, kept: Set[str]) -> list[str]:
         """The best-ranked member (score, then hops from ``kept``) of every class ``kept`` has none of."""
         present = {self.classes[name] for name in kept if name in self.classes}
-        self.reads.classes.update(set(self.classes.values()) - present)
-        distance = graph_distances(self.task.init_index, self.graph, kept, self.hub)
-        best: dict[str, tuple[float, int, str]] = {}
-        far = len(self.classes) + 1
+        missing = set(self.classes.values()) - present
+        self.reads.classes.update(missing)
+        best: dict[str, tuple[float, list[str]]] = {}  # class -> its best score, and the members with it
         for name, cls in self.classes.items():
-            if cls in present or name in kept:
-                continue
-            key = (-self.scores.get(name, 0.0), distance.get(name, far), name)
-            if cls not in best or key < best[cls]:
-                best[cls] = key
-        return sorted(key[2] for key in best.values())
+            if cls in missing:
+                score = self.scores.get(name, 0.0)
+                top = best.get(cls)
+                if top is None or score > top[0]:
+                    best[cls] = (score, [name])
+                elif score == top[0]:
+                    top[1].append(name)
+        chosen = [names[0] for _, names in best.values() if len(names) == 1]
+        tied = {cls: set(names) for cls, (_, names) in best.items() if len(names) > 1}
+        return sorted(chosen + self._nearest_members(kept, tied))
+
+    def _nearest_members(self, kept: Set[str], tied: Mapping[str, Set[str]]) -> list[str]:
+        """For each class, the member of ``tied[class]`` fewest hops from ``kept`` (then by name;
+        none reached: the first by name), walking only until every class has one."""
+        waiting = dict(tied)
+        found: list[str] = []
+        if waiting:
+            for level in walk_levels(self.task.init_index, self.graph, kept, self.hub):
+                reached: dict[str, list[str]] = {}
+                for name in level:
+                    cls = self.classes.get(name)
+                    if cls in waiting and name in waiting[cls]:
+                        reached.setdefault(cls, []).append(name)
+                for cls, names in reached.items():
+                    found.append(min(names))
+                    del waiting[cls]
+                if not waiting:
+                    break
+        return found + [min(names) for names in waiting.values()]
 
     def nearest(
         self, current: Set[str], unreached: Set[str], count: int, reached: Mapping[GroundAtom, object]
@@ -437,7 +460,8 @@ class RepairOrder:
         shown = 0
         if sources:
             unreached = self.toward_unreached[0]
-            if self.bounds[0] != unreached:
+            # the bounds toward more goal objects hold for fewer too (hops to fewer are never fewer)
+            if not unreached <= self.bounds[0]:
                 index = self.task.init_index
                 self.bounds = (unreached, walk_bounds(index, self.graph, unreached, distance, self.hub))
             search = NearestBetween(self.task.init_index, self.graph, sources, distance, self.bounds[1], self.hub, far)
