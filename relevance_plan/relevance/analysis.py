@@ -144,6 +144,11 @@ def object_distances(
     return graph_distances(index, ObjectGraph(index, max_fan, fans), sources, hub_degree)
 
 
+# A walk kept by a graph: (its sources, the hub mark) for graph_distances, with "bounds" for walk_bounds.
+WalkKey = tuple[frozenset[str], int | None] | tuple[frozenset[str], int | None, str]
+Walks = dict[WalkKey, dict[str, int]]
+
+
 class ObjectGraph:
     """The links :func:`object_distances` walks, each object's found once, when first walked from:
     the repair ranks candidates by distance every round."""
@@ -157,9 +162,7 @@ class ObjectGraph:
         self.found: dict[str, list[str]] = {}
         # walks already made, kept by a graph that outlives one task (a live session's: the index
         # drops each walk an event's facts can change); None: not kept
-        self.walks: (
-            dict[tuple[frozenset[str], int | None] | tuple[frozenset[str], int | None, str], dict[str, int]] | None
-        ) = None
+        self.walks: Walks | None = None
 
     def neighbours(self, name: str) -> list[str]:
         """The other objects of the facts a walk follows from ``name``, each once."""
@@ -192,13 +195,19 @@ def graph_distances(
         _walk(index, graph, distance, list(distance), 0, hub_degree)
         return distance
     key = (frozenset(distance), hub_degree)
-    walked = walks.get(key)
+    walked = walks.pop(key, None)
     if walked is None:
         _walk(index, graph, distance, list(distance), 0, hub_degree)
-        if len(walks) >= MAX_KEPT_WALKS:
-            walks.clear()
-        walked = walks[key] = distance
+        walked = distance
+    _keep(walks, key, walked)
     return dict(walked)
+
+
+def _keep(walks: Walks, key: WalkKey, walked: dict[str, int]) -> None:
+    """``walked`` kept as the most recently used, the least recently used dropped past the limit."""
+    walks[key] = walked
+    while len(walks) > MAX_KEPT_WALKS:
+        del walks[next(iter(walks))]
 
 
 def walk_bounds(
@@ -211,8 +220,9 @@ def walk_bounds(
     places, which need not be one hop from each other), as :class:`NearestBetween` needs."""
     walks = graph.walks
     key = (frozenset(sources), hub_degree, "bounds")
-    kept = walks.get(key) if walks is not None else None
-    if kept is not None:
+    kept = walks.pop(key, None) if walks is not None else None
+    if walks is not None and kept is not None:
+        _keep(walks, key, kept)
         return kept
     by_object = index.by_object
     before: dict[str, list[str]] = {}  # object -> the reached objects with a followed link to it
@@ -240,9 +250,7 @@ def walk_bounds(
                     levels[hops + 1].append(other)
         hops += 1
     if walks is not None:
-        if len(walks) >= MAX_KEPT_WALKS:
-            walks.clear()
-        walks[key] = bound  # dropped with the walk it bounds: it has the same objects
+        _keep(walks, key, bound)  # dropped with the walk it bounds: it has the same objects
     return bound
 
 

@@ -316,6 +316,7 @@ class RepairOrder:
         self.toward_unreached: tuple[frozenset[str], dict[str, int]] = (frozenset(), {})
         self.toward_targets: tuple[frozenset[str], dict[str, int]] = (frozenset(), {})
         self.bounds: tuple[frozenset[str], dict[str, int]] = (frozenset(), {})  # walk_bounds of toward_unreached
+        self.toward_each: dict[str, dict[str, int]] = {}  # goal object -> hops toward it alone
         # hops from what the exploration reached, which only grows: each round walks from what is new
         self.from_reached = GrowingDistances(task.init_index, self.graph, self.hub)
         self.classes = task.typing.problem.objects
@@ -529,9 +530,9 @@ class RepairOrder:
             return walk
         # the way to the nearest is kept already (a sofa next to where the robot can go): the way to another
         for target in sorted(targets):
-            walk = self._walk_toward(
-                graph_distances(self.task.init_index, self.graph, [target], self.hub), sources, current
-            )
+            if target not in self.toward_each:
+                self.toward_each[target] = graph_distances(self.task.init_index, self.graph, [target], self.hub)
+            walk = self._walk_toward(self.toward_each[target], sources, current)
             if walk:
                 return walk
         return []
@@ -543,8 +544,12 @@ class RepairOrder:
         name = start
         while name is not None and distance[name] > 0:
             lower = distance[name] - 1
-            # the first by name: the facts' order, and so the neighbours', changes from run to run
-            step = min((o for o in self.graph.neighbours(name) if distance.get(o) == lower), default=None)
+            # the first by name (the facts' order, and so the neighbours', changes from run to run),
+            # linked both ways: a place leads to its room, but the room leads to none of its places
+            neighbours = self.graph.neighbours
+            step = min(
+                (o for o in neighbours(name) if distance.get(o) == lower and name in neighbours(o)), default=None
+            )
             if step is not None:
                 walk += [o for o in self._link(name, step) if o not in current and o in self.classes]
                 if step not in current and step in self.classes:
