@@ -114,9 +114,11 @@ def pddlgym_roots() -> list[str]:
 def shown(text: str | Path) -> str:
     """``text`` with the repository's and pddlgym's absolute folders made relative, so that
     saved outputs name no folder of one machine."""
-    text = str(text).replace(f"{REPO}{os.sep}", "")
+    text = str(text)
     folder = pddlgym_folder()
-    return text.replace(f"{folder}{os.sep}", "pddlgym/") if folder is not None else text
+    if folder is not None:  # first: the wheel may be installed in a virtual environment inside the checkout
+        text = text.replace(f"{folder}{os.sep}", "pddlgym/")
+    return text.replace(f"{REPO}{os.sep}", "")
 
 
 @dataclass
@@ -309,17 +311,20 @@ def selections(roots: list[str], per_folder: int, timeout: float, against: Path 
     before = {}
     if against is not None:
         before = {row["problem"]: row for row in map(json.loads, against.read_text().splitlines())}
-    rows, changed = 0, []
+    rows, changed, unmatched = 0, [], 0
     for folder in folders(roots):
         for entry in folder.entries[:per_folder]:
             row = {"problem": shown(entry.problem), **_first_selection(entry, timeout)}
             print(json.dumps(row), flush=True)
             rows += 1
             old = before.get(row["problem"])
+            unmatched += old is None
             if old is not None and (old.get("kept"), old.get("error")) != (row.get("kept"), row.get("error")):
                 changed.append((row, old))
     if against is not None:
         print(f"{len(changed)} of {rows} problems keep another set than {against}", file=sys.stderr)
+        if unmatched:
+            print(f"  ({unmatched} of them have no line there: not compared)", file=sys.stderr)
         for row, old in changed:
             now, then = row.get("kept", row.get("error")), old.get("kept", old.get("error"))
             shown_now = f"{len(now)} objects" if isinstance(now, list) else now

@@ -1,4 +1,4 @@
-"""The repair's ranking of candidates (a best-first search, equal to sorting every object) and its ways to goal objects."""
+"""The repair's ranking of candidates (a best-first search, as sorting every object) and its ways to goal objects."""
 
 from __future__ import annotations
 

@@ -356,6 +356,14 @@ def _walk(
     index: FactIndex, graph: ObjectGraph, distance: dict[str, int], frontier: list[str], hops: int, hub: int | None
 ) -> None:
     """Breadth-first from ``frontier`` (at ``hops``), giving each object its hops where they are fewer."""
+    for _ in _levels(index, graph, distance, frontier, hops, hub):
+        pass
+
+
+def _levels(
+    index: FactIndex, graph: ObjectGraph, distance: dict[str, int], frontier: list[str], hops: int, hub: int | None
+) -> Iterator[list[str]]:
+    """:func:`_walk`, a hop at a time: the objects each hop gave fewer hops."""
     by_object, found, neighbours = index.by_object, graph.found, graph.neighbours
     while frontier:
         hops += 1
@@ -368,6 +376,8 @@ def _walk(
                 if distance.get(other, hops + 1) > hops:
                     distance[other] = hops
                     following.append(other)
+        if following:
+            yield following
         frontier = following
 
 
@@ -375,21 +385,7 @@ def walk_levels(index: FactIndex, graph: ObjectGraph, sources: Iterable[str], hu
     """The objects :func:`graph_distances` puts 1, 2, ... hops from ``sources``, a hop at a time:
     for a caller that stops at the first hop where it finds what it looks for."""
     distance = dict.fromkeys(sources, 0)
-    by_object, neighbours = index.by_object, graph.neighbours
-    frontier, hops = list(distance), 0
-    while frontier:
-        hops += 1
-        following = []
-        for name in frontier:
-            if hub is not None and hops > 1 and len(by_object.get(name, ())) > hub:
-                continue
-            for other in neighbours(name):
-                if other not in distance:
-                    distance[other] = hops
-                    following.append(other)
-        if following:
-            yield following
-        frontier = following
+    return _levels(index, graph, distance, list(distance), 0, hub)
 
 
 class GrowingDistances:
