@@ -49,6 +49,9 @@ REPAIR_SECONDS = 5.0  # and the repair's checks together stop after this long
 REPAIR_MAX_FAN = 4.0  # repair candidates are ranked by hops that do not pass from a class-like value to its members
 DOMINANCE_TRIES = 8  # kept objects of its class a repair candidate is compared with
 PAIRWISE_UP_TO = 64  # added objects of one class compared each with all others after the repair
+# goal objects no reached fact names, up to which a round walks toward each in turn when the way to
+# the nearest adds nothing (a few items and receptacles; past it, a package per city: the ranking)
+WAYS_EACH_UP_TO = 8
 
 # closure over constraints: (names, a subset of them already closed) -> (closed set, what it put back and why)
 CloseFn = Callable[[Set[str], Set[str]], tuple[frozenset[str], tuple[Restored, ...]]]
@@ -526,7 +529,7 @@ class RepairOrder:
                 graph_distances(self.task.init_index, self.graph, targets, self.hub),
             )
         walk = self._walk_toward(self.toward_targets[1], sources, current)
-        if walk or len(targets) == 1:
+        if walk or len(targets) == 1 or len(targets) > WAYS_EACH_UP_TO:
             return walk
         # the way to the nearest is kept already (a sofa next to where the robot can go): the way to another
         for target in sorted(targets):
