@@ -41,6 +41,13 @@ folders).  Output names files relative to the repository
     python benchmarks/bench_field.py accept --pddlgym
     python benchmarks/bench_field.py speed benchmarks/corpus/potassco --per-folder 2 --timeout 60
     python benchmarks/bench_field.py speed --pddlgym-only --installed --repeat 3
+    python benchmarks/bench_field.py selections --pddlgym --per-folder 2 --against before.jsonl
+
+``selections`` prints, as JSON lines, each problem's first selection (the
+goal scorer, no planner; up to ``--per-folder`` problems per folder): the
+kept objects and why each one not selected came back.  With ``--against``
+(the lines of another version), it also says on stderr which problems keep
+another set now: what a change to the pruning core changed across the field.
 """
 
 from __future__ import annotations
@@ -53,6 +60,7 @@ import os
 import statistics
 import sys
 import tempfile
+import time
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -106,9 +114,11 @@ def pddlgym_roots() -> list[str]:
 def shown(text: str | Path) -> str:
     """``text`` with the repository's and pddlgym's absolute folders made relative, so that
     saved outputs name no folder of one machine."""
-    text = str(text).replace(f"{REPO}{os.sep}", "")
+    text = str(text)
     folder = pddlgym_folder()
-    return text.replace(f"{folder}{os.sep}", "pddlgym/") if folder is not None else text
+    if folder is not None:  # first: the wheel may be installed in a virtual environment inside the checkout
+        text = text.replace(f"{folder}{os.sep}", "pddlgym/")
+    return text.replace(f"{REPO}{os.sep}", "")
 
 
 @dataclass
@@ -295,6 +305,53 @@ def speed(roots: list[str], per_folder: int, timeout: float, in_process: bool, i
     return _speed_summary(rows)
 
 
+def selections(roots: list[str], per_folder: int, timeout: float, against: Path | None) -> int:
+    """Each problem's first selection as a JSON line; with ``against``, the problems that keep
+    another set than those lines say (on stderr)."""
+    before = {}
+    if against is not None:
+        before = {row["problem"]: row for row in map(json.loads, against.read_text().splitlines())}
+    rows, changed, unmatched = 0, [], 0
+    for folder in folders(roots):
+        for entry in folder.entries[:per_folder]:
+            row = {"problem": shown(entry.problem), **_first_selection(entry, timeout)}
+            print(json.dumps(row), flush=True)
+            rows += 1
+            old = before.get(row["problem"])
+            unmatched += old is None
+            if old is not None and (old.get("kept"), old.get("error")) != (row.get("kept"), row.get("error")):
+                changed.append((row, old))
+    if against is not None:
+        print(f"{len(changed)} of {rows} problems keep another set than {against}", file=sys.stderr)
+        if unmatched:
+            print(f"  ({unmatched} of them have no line there: not compared)", file=sys.stderr)
+        for row, old in changed:
+            now, then = row.get("kept", row.get("error")), old.get("kept", old.get("error"))
+            shown_now = f"{len(now)} objects" if isinstance(now, list) else now
+            shown_then = f"{len(then)} objects" if isinstance(then, list) else then
+            print(f"  {row['problem']}: {shown_then} -> {shown_now}", file=sys.stderr)
+    return 0
+
+
+def _first_selection(entry: SuiteProblem, timeout: float) -> dict:
+    """The kept objects of ``entry``'s first selection and why each came back, or the error's kind."""
+    from relevance_plan.relevance.setup import ScoringOptions, score_problem
+    from relevance_plan.relevance.task import PlanningTask
+
+    started = time.monotonic()
+    try:
+        domain = load_domain(entry.domain)
+        task = PlanningTask(domain, load_problem(entry.problem, domain), deadline=started + timeout)
+        selection = score_problem(task, ScoringOptions()).first_selection()
+    except RelevancePlanError as error:
+        return {"error": type(error).__name__}
+    return {
+        "kept": sorted(selection.kept),
+        "restored": [[item.name, item.reason] for item in selection.restored],
+        "seconds": round(time.monotonic() - started, 2),
+    }
+
+
 def _domain_name(problem: Path) -> str:
     """The folder that names a problem's domain (``tetris/instances/instance-1.pddl``: tetris)."""
     folder = problem.parent
@@ -356,7 +413,7 @@ def main() -> int:
         epilog=__doc__.split("\n\n", 1)[1],
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    parser.add_argument("mode", choices=("accept", "speed"), nargs="?", default="accept")
+    parser.add_argument("mode", choices=("accept", "speed", "selections"), nargs="?", default="accept")
     parser.add_argument("roots", nargs="*", help="corpus folders (default: benchmarks/corpus)")
     parser.add_argument(
         "--pddlgym", action="store_true", help="add PLOI's many-object folders of the installed pddlgym wheel"
@@ -367,6 +424,7 @@ def main() -> int:
     parser.add_argument("--in-process", action="store_true", help="time the library call, not the command")
     parser.add_argument("--installed", action="store_true", help="run a wheel of the checkout in a new venv")
     parser.add_argument("--repeat", type=int, default=1, help="runs of each command per problem (medians)")
+    parser.add_argument("--against", type=Path, help="selections mode: the JSON lines of another version")
     args = parser.parse_args()
     if args.pddlgym_only and args.roots:
         parser.error("--pddlgym-only takes no folders")
@@ -385,6 +443,8 @@ def main() -> int:
         return 1
     if args.mode == "accept":
         return accept(args.roots)
+    if args.mode == "selections":
+        return selections(args.roots, args.per_folder, args.timeout, args.against)
     return speed(args.roots, args.per_folder, args.timeout, args.in_process, args.installed, max(1, args.repeat))
 
 

@@ -13,9 +13,10 @@ Nothing here grounds an action.  Two results feed the rest of the pipeline:
 
 from __future__ import annotations
 
+import heapq
 import itertools
 from collections import defaultdict
-from collections.abc import Callable, Collection, Iterable, Mapping
+from collections.abc import Callable, Collection, Iterable, Iterator, Mapping
 from dataclasses import dataclass
 from typing import Protocol
 
@@ -143,6 +144,11 @@ def object_distances(
     return graph_distances(index, ObjectGraph(index, max_fan, fans), sources, hub_degree)
 
 
+# A walk kept by a graph: (its sources, the hub mark) for graph_distances, with "bounds" for walk_bounds.
+WalkKey = tuple[frozenset[str], int | None] | tuple[frozenset[str], int | None, str]
+Walks = dict[WalkKey, dict[str, int]]
+
+
 class ObjectGraph:
     """The links :func:`object_distances` walks, each object's found once, when first walked from:
     the repair ranks candidates by distance every round."""
@@ -156,23 +162,26 @@ class ObjectGraph:
         self.found: dict[str, list[str]] = {}
         # walks already made, kept by a graph that outlives one task (a live session's: the index
         # drops each walk an event's facts can change); None: not kept
-        self.walks: dict[tuple[frozenset[str], int | None], dict[str, int]] | None = None
+        self.walks: Walks | None = None
 
     def neighbours(self, name: str) -> list[str]:
         """The other objects of the facts a walk follows from ``name``, each once."""
         found = self.found.get(name)
         if found is None:
             linked: dict[str, None] = {}
-            max_fan, fans = self.max_fan, self.fans
             for atom in self.index.by_object.get(name, ()):
-                if len(atom) < 3:
-                    continue
-                if max_fan is not None and fans.get((atom[0], atom.index(name) - 1), 0.0) > max_fan:
-                    continue
-                linked.update(dict.fromkeys(atom[1:]))
+                if self.follows(atom, name):
+                    linked.update(dict.fromkeys(atom[1:]))
             linked.pop(name, None)
             found = self.found[name] = list(linked)
         return found
+
+    def follows(self, atom: tuple[str, ...], name: str) -> bool:
+        """Whether a walk goes from ``name`` on through ``atom``, a fact of it: one that links it to
+        another object, from a position not shared by more than ``max_fan`` facts on average."""
+        if len(atom) < 3:
+            return False
+        return self.max_fan is None or self.fans.get((atom[0], atom.index(name) - 1), 0.0) <= self.max_fan
 
 
 def graph_distances(
@@ -186,20 +195,135 @@ def graph_distances(
         _walk(index, graph, distance, list(distance), 0, hub_degree)
         return distance
     key = (frozenset(distance), hub_degree)
-    walked = walks.get(key)
+    walked = walks.pop(key, None)
     if walked is None:
         _walk(index, graph, distance, list(distance), 0, hub_degree)
-        if len(walks) >= MAX_KEPT_WALKS:
-            walks.clear()
-        walked = walks[key] = distance
+        walked = distance
+    _keep(walks, key, walked)
     return dict(walked)
 
 
+def _keep(walks: Walks, key: WalkKey, walked: dict[str, int]) -> None:
+    """``walked`` kept as the most recently used, the least recently used dropped past the limit."""
+    walks[key] = walked
+    while len(walks) > MAX_KEPT_WALKS:
+        del walks[next(iter(walks))]
+
+
+def walk_bounds(
+    index: FactIndex, graph: ObjectGraph, sources: Iterable[str], distance: Mapping[str, int], hub_degree: int | None
+) -> dict[str, int]:
+    """For each object the walk ``distance`` (``graph_distances`` from ``sources``) reached, the
+    fewest hops from it, along the links a walk follows, to an object plus that object's own
+    distance: a lower bound on what going on from it can still add up to, which, unlike
+    ``distance`` itself, grows by at most one per link followed (a room is one hop from all its
+    places, which need not be one hop from each other), as :class:`NearestBetween` needs."""
+    walks = graph.walks
+    key = (frozenset(sources), hub_degree, "bounds")
+    kept = walks.pop(key, None) if walks is not None else None
+    if walks is not None and kept is not None:
+        _keep(walks, key, kept)
+        return kept
+    by_object = index.by_object
+    before: dict[str, list[str]] = {}  # object -> the reached objects with a followed link to it
+    for name in distance:
+        if hub_degree is not None and len(by_object.get(name, ())) > hub_degree:
+            continue  # an object passed through only as a source
+        for other in graph.neighbours(name):
+            before.setdefault(other, []).append(name)
+    bound = dict(distance)
+    levels: list[list[str]] = []
+    for name, hops in distance.items():
+        while len(levels) <= hops:
+            levels.append([])
+        levels[hops].append(name)
+    hops = 0
+    while hops < len(levels):
+        for name in levels[hops]:
+            if bound[name] != hops:
+                continue
+            for other in before.get(name, ()):
+                if bound.get(other, hops + 2) > hops + 1:
+                    bound[other] = hops + 1
+                    if len(levels) == hops + 1:
+                        levels.append([])
+                    levels[hops + 1].append(other)
+        hops += 1
+    if walks is not None:
+        _keep(walks, key, bound)  # dropped with the walk it bounds: it has the same objects
+    return bound
+
+
+class NearestBetween:
+    """The objects in order of hops from ``sources`` plus hops ``toward`` (a walk from other
+    objects, with its :func:`walk_bounds` or those of a walk from more objects), fewest first,
+    then fewest hops toward: what sorting every object the two walks reach by that sum gives,
+    found by walking from ``sources`` only as far as the sums asked for need (a best-first search
+    the bounds guide).  ``far``: the hops of an object a walk does not reach; the search stops
+    (``exhausted``) before the first sum of ``far`` or more, where objects one of the walks misses come in."""
+
+    def __init__(
+        self,
+        index: FactIndex,
+        graph: ObjectGraph,
+        sources: Iterable[str],
+        toward: Mapping[str, int],
+        bounds: Mapping[str, int],
+        hub_degree: int | None,
+        far: int,
+    ):
+        self.exhausted = False
+        self._index, self._graph, self._hub, self._far = index, graph, hub_degree, far
+        self._toward, self._bounds = toward, bounds
+        self._hops: dict[str, int] = {}
+        self._open: list[tuple[int, str]] = []
+        self._done: list[tuple[int, int, str]] = []  # (sum, hops toward, name) of objects whose hops are known
+        for name in sources:
+            self._hops[name] = 0
+        self._finished = set(self._hops)
+        for name in sorted(self._finished):  # sources pass their links on whatever their count of facts
+            self._finish(name, 0, True)
+
+    def _finish(self, name: str, hops: int, source: bool = False) -> None:
+        toward = self._toward.get(name)
+        if toward is not None:
+            heapq.heappush(self._done, (hops + toward, toward, name))
+        if not source and self._hub is not None and len(self._index.by_object.get(name, ())) > self._hub:
+            return
+        bounds, known = self._bounds, self._hops
+        for other in self._graph.neighbours(name):
+            if known.get(other, hops + 2) > hops + 1:
+                known[other] = hops + 1
+                heapq.heappush(self._open, (hops + 1 + bounds.get(other, 0), other))
+
+    def groups(self) -> Iterator[list[tuple[int, str]]]:
+        """The objects, a sum at a time: (hops toward, name) of every object with that sum."""
+        opened, done, known, finished = self._open, self._done, self._hops, self._finished
+        while True:
+            least = opened[0][0] if opened else None
+            if done and done[0][0] < self._far and (least is None or done[0][0] < least):
+                total = done[0][0]
+                group = []
+                while done and done[0][0] == total:
+                    _, toward, name = heapq.heappop(done)
+                    group.append((toward, name))
+                yield group
+                continue
+            if least is None or least >= self._far:
+                self.exhausted = True
+                return
+            _, name = heapq.heappop(opened)
+            if name in finished:
+                continue
+            finished.add(name)
+            self._finish(name, known[name])
+
+
 # Walks a kept graph holds at the most (each as large as the part of the scene it reaches).
-MAX_KEPT_WALKS = 16
+MAX_KEPT_WALKS = 32
 
 
-def shared_graph(index: FactIndex, max_fan: float) -> ObjectGraph:
+def shared_graph(index: FactIndex, max_fan: float | None) -> ObjectGraph:
     """The graph of ``index``'s links for ``max_fan``: the index's own when it keeps one across
     changes (a live session's), else a new one."""
     kept = getattr(index, "object_graph", None)
@@ -232,6 +356,14 @@ def _walk(
     index: FactIndex, graph: ObjectGraph, distance: dict[str, int], frontier: list[str], hops: int, hub: int | None
 ) -> None:
     """Breadth-first from ``frontier`` (at ``hops``), giving each object its hops where they are fewer."""
+    for _ in _levels(index, graph, distance, frontier, hops, hub):
+        pass
+
+
+def _levels(
+    index: FactIndex, graph: ObjectGraph, distance: dict[str, int], frontier: list[str], hops: int, hub: int | None
+) -> Iterator[list[str]]:
+    """:func:`_walk`, a hop at a time: the objects each hop gave fewer hops."""
     by_object, found, neighbours = index.by_object, graph.found, graph.neighbours
     while frontier:
         hops += 1
@@ -244,7 +376,16 @@ def _walk(
                 if distance.get(other, hops + 1) > hops:
                     distance[other] = hops
                     following.append(other)
+        if following:
+            yield following
         frontier = following
+
+
+def walk_levels(index: FactIndex, graph: ObjectGraph, sources: Iterable[str], hub: int | None) -> Iterator[list[str]]:
+    """The objects :func:`graph_distances` puts 1, 2, ... hops from ``sources``, a hop at a time:
+    for a caller that stops at the first hop where it finds what it looks for."""
+    distance = dict.fromkeys(sources, 0)
+    return _levels(index, graph, distance, list(distance), 0, hub)
 
 
 class GrowingDistances:

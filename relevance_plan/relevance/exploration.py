@@ -23,11 +23,12 @@ past a work budget, or a few seconds, rather than cost more than the planner wou
 
 from __future__ import annotations
 
+import functools
 import itertools
 import math
 import time
 import weakref
-from collections import defaultdict, deque
+from collections import Counter, defaultdict, deque
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence, Set
 from dataclasses import dataclass, field, replace
 
@@ -244,15 +245,19 @@ def _relaxed_schemas(task: PlanningTask) -> list[_Schema]:
     holders = {
         p: {atom[1] for atom in by_predicate.get(p, ())} for p in static if len(domain.predicates.get(p, ())) == 1
     }
-    typed = dict(domain.constants)
-    typed.update(problem.objects)
-    members: dict[str, list[str]] = {}
+    objects, constants = problem.objects, domain.constants
+    declared = Counter(objects.values())  # type -> objects declared of it (the problem's name wins)
+    declared.update(kind for name, kind in constants.items() if name not in objects)
 
+    @functools.cache
     def implied(predicate: str, type_name: str) -> bool:
-        if type_name not in members:
-            members[type_name] = [o for o, t in typed.items() if domain.is_subtype(t, type_name)]
-        holding = holders[predicate]
-        return all(o in holding for o in members[type_name])
+        # every member of the type holds it: as many holders of the type as members (counted, not listed)
+        members = sum(count for kind, count in declared.items() if domain.is_subtype(kind, type_name))
+        held = 0
+        for name in holders[predicate]:
+            kind = objects.get(name, constants.get(name))
+            held += kind is not None and domain.is_subtype(kind, type_name)
+        return held == members
 
     result = []
     for schema in _schemas(domain):
@@ -477,11 +482,13 @@ class Exploration:
         # with a shared class, its kept members are not objects of the exploration: MEMBER stands for them
         self.kept_members: set[str] = set(kept) & self.members
         self.allowed = set(kept) - self.kept_members | set(domain.constants)
-        self.types_of = dict(domain.constants)
-        self.types_of.update(task.typing.problem.objects)
+        objects = task.typing.problem.objects
+        self.types_of: Mapping[str, str] = objects  # only read: a building's 50,000 names are not copied
+        if domain.constants or shared is not None:
+            self.types_of = {**domain.constants, **objects}
         if shared is not None:
             self.allowed.add(MEMBER)
-            self.types_of[MEMBER] = shared.name
+            self.types_of = {**self.types_of, MEMBER: shared.name}
         self.of_type: dict[str, list[str]] = {}
         self.fits: dict[str, frozenset[str]] = {}
         self.variable_fits: dict[int, dict[str, frozenset[str]]] = {}
@@ -551,8 +558,7 @@ class Exploration:
             if not schema.pre:
                 self.apply(schema, {})
             elif all(predicate in static for predicate, _ in schema.pre):
-                for binding in self.join(self.conditions[id(schema)], {}, self.fits_of(schema)):
-                    self.apply(schema, binding)
+                self.apply_joined(schema, self.conditions[id(schema)], {}, self.fits_of(schema))
 
     def _reach_initial(
         self, names: Set[str], also: Set[GroundAtom] = frozenset(), static: Set[str] = frozenset()
@@ -623,7 +629,8 @@ class Exploration:
             processed[(predicate, signature)].append(fact)
 
     def _count(self, fact: GroundAtom) -> None:
-        key = (fact[0], tuple(self.types_of.get(arg, "object") for arg in fact[1:]))
+        type_of = self.types_of.get
+        key = (fact[0], tuple([type_of(arg, "object") for arg in fact[1:]]))
         count = self.reached.get(key)
         if count is None:
             self.reached_signatures[fact[0]].append(key[1])
@@ -768,22 +775,24 @@ class Exploration:
     def run(self, exhaust: bool = False) -> None:
         """Explore until the goal is reached (with ``exhaust``, until nothing new is)."""
         saturable, dominated, facts = self.saturable, self.dominated, self.facts
+        saturated, variable_fits = self.saturated, self.variable_fits
         while self.queue and (self.missing or exhaust):
             fact = self.queue.popleft()
             self._index((fact,))
             for schema, i, rest in self.triggers.get(fact[0], ()):
-                if id(schema) in saturable and self._saturated(schema):
+                key = id(schema)
+                if key in saturable and (key in saturated or self._saturated(schema)):
                     continue
-                needs = dominated.get(id(schema))
+                needs = dominated.get(key)
                 if needs is not None and all(atom in facts for atom in needs):
                     continue
-                fits = self.fits_of(schema)
+                fits = variable_fits.get(key)
+                if fits is None:
+                    fits = self.fits_of(schema)
                 binding = _match(schema.pre[i][1], fact, {}, fits)
                 if binding is None:
                     continue
-                # apply() adds facts but never processes them: the join's lists do not change under it
-                for found in self.join(rest, binding, fits):
-                    self.apply(schema, found)
+                self.apply_joined(schema, rest, binding, fits)
         if self.shared is not None and self.missing:
             # the placeholder's facts are all found (the queue is empty): the members follow them
             self._spread()
@@ -959,37 +968,69 @@ class Exploration:
                         self.queue.append(fact)
                         self.missing.discard(fact)
 
-    def join(self, pre: list[_Typed], binding: Binding, fits: Mapping[str, frozenset[str]]) -> Iterator[Binding]:
+    def apply_joined(
+        self, schema: _Schema, pre: list[_Typed], binding: Binding, fits: Mapping[str, frozenset[str]]
+    ) -> None:
+        """:meth:`apply` ``schema`` for each extension of ``binding`` that matches processed facts of
+        all of ``pre``, depth first, the condition with the fewest candidate facts joined first.
+        ``apply`` adds facts but processes none, so the lists joined do not change under it."""
         if not pre:
-            yield binding
+            self.apply(schema, binding)
             return
         best, buckets = self.smallest(pre, binding)
         args = pre[best][1]
         rest = pre[:best] + pre[best + 1 :]
+        spend = self.work.spend
         for bucket in buckets:
             for fact in bucket:
-                self.work.spend()
+                spend()
                 new = _match(args, fact, binding, fits)
-                if new is not None:
-                    yield from self.join(rest, new, fits)
+                if new is None:
+                    continue
+                if rest:
+                    self.apply_joined(schema, rest, new, fits)
+                else:
+                    self.apply(schema, new)
 
-    def smallest(self, pre: list[_Typed], binding: Binding) -> tuple[int, list[list[GroundAtom]]]:
+    def smallest(self, pre: list[_Typed], binding: Binding) -> tuple[int, list[Sequence[GroundAtom]]]:
         """The condition whose bound arguments leave the fewest processed facts, and those facts."""
         processed = self.processed
         best = 0
-        best_buckets: list[list[GroundAtom]] = []
+        best_buckets: list[Sequence[GroundAtom]] = []
         best_size: int | None = None
+        buckets: list[Sequence[GroundAtom]]
+        cache, seen = self.compatible_cache, self.signatures
         for j, (predicate, args, types) in enumerate(pre):
-            signatures = self.compatible(predicate, types)
-            buckets = [processed.get((predicate, signature), []) for signature in signatures]
-            size = sum(len(bucket) for bucket in buckets)
-            for position, arg in enumerate(args):
-                value = binding.get(arg, arg) if arg[0] == "?" else arg
-                if value[0] != "?" and size:
-                    narrower = [processed.get((predicate, position, value, signature), []) for signature in signatures]
-                    narrower_size = sum(len(bucket) for bucket in narrower)
-                    if narrower_size < size:
-                        buckets, size = narrower, narrower_size
+            cached = cache.get((predicate, types))
+            if cached is not None and cached[0] == len(seen.get(predicate, ())):
+                signatures = cached[1]  # compatible()'s answer, without the call
+            else:
+                signatures = self.compatible(predicate, types)
+            if len(signatures) == 1:  # the common case (typed objects), without the lists of lists
+                signature = signatures[0]
+                bucket: Sequence[GroundAtom] = processed.get((predicate, signature), ())
+                size = len(bucket)
+                for position, arg in enumerate(args):
+                    if not size:
+                        break
+                    value = binding.get(arg, arg) if arg[0] == "?" else arg
+                    if value[0] != "?":
+                        fewer: Sequence[GroundAtom] = processed.get((predicate, position, value, signature), ())
+                        if len(fewer) < size:
+                            bucket, size = fewer, len(fewer)
+                buckets = [bucket]
+            else:
+                buckets = [processed.get((predicate, signature), []) for signature in signatures]
+                size = sum(len(bucket) for bucket in buckets)
+                for position, arg in enumerate(args):
+                    value = binding.get(arg, arg) if arg[0] == "?" else arg
+                    if value[0] != "?" and size:
+                        narrower: list[Sequence[GroundAtom]] = [
+                            processed.get((predicate, position, value, sig), []) for sig in signatures
+                        ]
+                        narrower_size = sum(len(bucket) for bucket in narrower)
+                        if narrower_size < size:
+                            buckets, size = narrower, narrower_size
             if best_size is None or size < best_size:
                 best, best_buckets, best_size = j, buckets, size
                 if size == 0 or len(pre) == 1:

@@ -252,10 +252,13 @@ def select_relevant(
     the human, useless to the planner.  Closure still puts back what the kept
     objects need (their places, what stands on them).
     """
+    passing = scores.passing.get(thresholds)
+    if passing is None:
+        passing = scores.passing[thresholds] = frozenset(
+            name for name, score in scores.element_scores.items() if thresholds.admits(scores.class_score(name), score)
+        )
     selected = set(task.pinned_objects)
-    for name, score in scores.element_scores.items():
-        if thresholds.admits(scores.class_score(name), score) and (not goal_filter or can_serve_goal(task, name)):
-            selected.add(name)
+    selected.update(name for name in passing if not goal_filter or can_serve_goal(task, name))
     return frozenset(selected)
 
 

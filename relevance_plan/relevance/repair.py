@@ -21,7 +21,14 @@ from collections.abc import Callable, Collection, Iterator, Mapping, Sequence, S
 from dataclasses import dataclass
 
 from relevance_plan.pddl.formulas import GroundAtom
-from relevance_plan.relevance.analysis import GrowingDistances, graph_distances, shared_graph
+from relevance_plan.relevance.analysis import (
+    GrowingDistances,
+    NearestBetween,
+    graph_distances,
+    shared_graph,
+    walk_bounds,
+    walk_levels,
+)
 from relevance_plan.relevance.closure import Restored
 from relevance_plan.relevance.exploration import (
     DEFAULT_BUDGET,
@@ -42,6 +49,9 @@ REPAIR_SECONDS = 5.0  # and the repair's checks together stop after this long
 REPAIR_MAX_FAN = 4.0  # repair candidates are ranked by hops that do not pass from a class-like value to its members
 DOMINANCE_TRIES = 8  # kept objects of its class a repair candidate is compared with
 PAIRWISE_UP_TO = 64  # added objects of one class compared each with all others after the repair
+# goal objects no reached fact names, up to which a round walks toward each in turn when the way to
+# the nearest adds nothing (a few items and receptacles; past it, a package per city: the ranking)
+WAYS_EACH_UP_TO = 8
 
 # closure over constraints: (names, a subset of them already closed) -> (closed set, what it put back and why)
 CloseFn = Callable[[Set[str], Set[str]], tuple[frozenset[str], tuple[Restored, ...]]]
@@ -308,6 +318,8 @@ class RepairOrder:
         self.graph = shared_graph(task.init_index, REPAIR_MAX_FAN)
         self.toward_unreached: tuple[frozenset[str], dict[str, int]] = (frozenset(), {})
         self.toward_targets: tuple[frozenset[str], dict[str, int]] = (frozenset(), {})
+        self.bounds: tuple[frozenset[str], dict[str, int]] = (frozenset(), {})  # walk_bounds of toward_unreached
+        self.toward_each: dict[str, dict[str, int]] = {}  # goal object -> hops toward it alone
         # hops from what the exploration reached, which only grows: each round walks from what is new
         self.from_reached = GrowingDistances(task.init_index, self.graph, self.hub)
         self.classes = task.typing.problem.objects
@@ -363,17 +375,39 @@ class RepairOrder:
     def missing_classes(self, kept: Set[str]) -> list[str]:
         """The best-ranked member (score, then hops from ``kept``) of every class ``kept`` has none of."""
         present = {self.classes[name] for name in kept if name in self.classes}
-        self.reads.classes.update(set(self.classes.values()) - present)
-        distance = graph_distances(self.task.init_index, self.graph, kept, self.hub)
-        best: dict[str, tuple[float, int, str]] = {}
-        far = len(self.classes) + 1
+        missing = set(self.classes.values()) - present
+        self.reads.classes.update(missing)
+        best: dict[str, tuple[float, list[str]]] = {}  # class -> its best score, and the members with it
         for name, cls in self.classes.items():
-            if cls in present or name in kept:
-                continue
-            key = (-self.scores.get(name, 0.0), distance.get(name, far), name)
-            if cls not in best or key < best[cls]:
-                best[cls] = key
-        return sorted(key[2] for key in best.values())
+            if cls in missing:
+                score = self.scores.get(name, 0.0)
+                top = best.get(cls)
+                if top is None or score > top[0]:
+                    best[cls] = (score, [name])
+                elif score == top[0]:
+                    top[1].append(name)
+        chosen = [names[0] for _, names in best.values() if len(names) == 1]
+        tied = {cls: set(names) for cls, (_, names) in best.items() if len(names) > 1}
+        return sorted(chosen + self._nearest_members(kept, tied))
+
+    def _nearest_members(self, kept: Set[str], tied: Mapping[str, Set[str]]) -> list[str]:
+        """For each class, the member of ``tied[class]`` fewest hops from ``kept`` (then by name;
+        none reached: the first by name), walking only until every class has one."""
+        waiting = dict(tied)
+        found: list[str] = []
+        if waiting:
+            for level in walk_levels(self.task.init_index, self.graph, kept, self.hub):
+                reached: dict[str, list[str]] = {}
+                for name in level:
+                    cls = self.classes.get(name)
+                    if cls in waiting and name in waiting[cls]:
+                        reached.setdefault(cls, []).append(name)
+                for cls, names in reached.items():
+                    found.append(min(names))
+                    del waiting[cls]
+                if not waiting:
+                    break
+        return found + [min(names) for names in waiting.values()]
 
     def nearest(
         self, current: Set[str], unreached: Set[str], count: int, reached: Mapping[GroundAtom, object]
@@ -392,43 +426,22 @@ class RepairOrder:
         if self.toward_unreached[0] != unreached:  # the same goal atoms stay unreached for many rounds
             self.toward_unreached = (frozenset(unreached), graph_distances(index, self.graph, unreached, self.hub))
         distance = self.toward_unreached[1]
-        far = len(self.classes) + 1
         sources = {arg for fact, achiever in reached.items() if achiever is not None for arg in fact[1:]}
         sources.update(self.agents)
         sources.discard(MEMBER)
         path = self._path(unreached - sources, sources - unreached, current)
         if path:
             return path
-        between = self.from_reached(sources) if sources else {}
-        fruitless, classes = self.fruitless, self.classes
-
-        def rank(name: str) -> tuple[int, int, int, float, str]:
-            return (
-                distance.get(name, far) + between.get(name, far if sources else 0),
-                distance.get(name, far),
-                fruitless.get(classes[name], 0),
-                -self.scores.get(name, 0.0),
-                name,
-            )
-
-        # The objects the distances reach rank first; the others, ranked alike after them, only
-        # when those run out (most of a building's items: no link leads from their receptacle to them).
-        linked = [name for name in distance.keys() | between.keys() if name in classes and name not in current]
-        to, back, off, score = distance.get, between.get, far if sources else 0, self.scores.get
-        ranked = _Sorted(  # by rank(name), its parts looked up here: thousands of objects, a dozen rounds
-            [(to(n, far) + back(n, off), to(n, far), fruitless.get(classes[n], 0), -score(n, 0.0), n) for n in linked]
-        )
-        rest = len(classes) - sum(1 for name in current if name in classes) - len(ranked)
         kept_of: dict[str, list[str]] = {}
         chosen: list[str] = []
         detached: list[str] = []
-        for position, name in enumerate(self._ranked(ranked, current, rank, rest)):
+        for name, linked in self._ranking(distance, sources, current):
             if len(chosen) == count:
                 break
-            self._read(name, position < len(ranked))
-            cls = classes[name]
+            self._read(name, linked)
+            cls = self.classes[name]
             if cls not in kept_of:
-                kept_of[cls] = sorted(n for n in current if classes.get(n) == cls)[:DOMINANCE_TRIES]
+                kept_of[cls] = sorted(n for n in current if self.classes.get(n) == cls)[:DOMINANCE_TRIES]
             if self.stood_in_for(name, kept_of[cls], reached):
                 continue
             if self._detached(name, kept_of[cls], reached, current):
@@ -437,7 +450,54 @@ class RepairOrder:
                 chosen.append(name)
         else:
             self.reads.objects = None  # every object was ranked: one more would be too
-        return chosen or detached[:count] or list(itertools.islice(self._ranked(ranked, current, rank, rest), count))
+        if chosen or detached:
+            return chosen or detached[:count]
+        return [name for name, _ in itertools.islice(self._ranking(distance, sources, current), count)]
+
+    def _ranking(self, distance: Mapping[str, int], sources: Set[str], current: Set[str]) -> Iterator[tuple[str, bool]]:
+        """The objects outside ``current`` in the order :meth:`nearest` ranks them, each with whether
+        a link reaches it (``distance``: hops toward the unreached objects).  Those both walks
+        reach come from a search that walks from ``sources`` only as far as the round reads
+        (``analysis.NearestBetween``); the rest, when a round reads that far, from ranking all."""
+        fruitless, classes, score = self.fruitless, self.classes, self.scores.get
+        far = len(classes) + 1
+        shown = 0
+        if sources:
+            unreached = self.toward_unreached[0]
+            # the bounds toward more goal objects hold for fewer too (hops to fewer are never fewer)
+            if not unreached <= self.bounds[0]:
+                index = self.task.init_index
+                self.bounds = (unreached, walk_bounds(index, self.graph, unreached, distance, self.hub))
+            search = NearestBetween(self.task.init_index, self.graph, sources, distance, self.bounds[1], self.hub, far)
+            for group in search.groups():
+                members = [(toward, name) for toward, name in group if name in classes and name not in current]
+                members.sort(key=lambda m: (m[0], fruitless.get(classes[m[1]], 0), -score(m[1], 0.0), m[1]))
+                for _, name in members:
+                    shown += 1
+                    yield name, True
+        between = self.from_reached(sources) if sources else {}
+
+        def rank(name: str) -> tuple[int, int, int, float, str]:
+            return (
+                distance.get(name, far) + between.get(name, far if sources else 0),
+                distance.get(name, far),
+                fruitless.get(classes[name], 0),
+                -score(name, 0.0),
+                name,
+            )
+
+        # The objects the distances reach rank first; the others, ranked alike after them, only
+        # when those run out (most of a building's items: no link leads from their receptacle to them).
+        linked = [name for name in distance.keys() | between.keys() if name in classes and name not in current]
+        to, back, off = distance.get, between.get, far if sources else 0
+        ranked = _Sorted(  # by rank(name), its parts looked up here: thousands of objects, a dozen rounds
+            [(to(n, far) + back(n, off), to(n, far), fruitless.get(classes[n], 0), -score(n, 0.0), n) for n in linked]
+        )
+        rest = len(classes) - sum(1 for name in current if name in classes) - len(ranked)
+        # the first ``shown`` are those the search gave, in the same order
+        for position, name in enumerate(self._ranked(ranked, current, rank, rest)):
+            if position >= shown:
+                yield name, position < len(ranked)
 
     def _ranked(
         self, linked: _Sorted, current: Set[str], rank: Callable[[str], tuple[int, int, int, float, str]], rest: int
@@ -459,7 +519,8 @@ class RepairOrder:
         """The objects outside ``current`` on one shortest way in the initial state from the source
         nearest to ``targets`` (goal objects no reached fact names yet) down to one of them: a
         corridor of cells from where the robot can go to the goal's place, not every cell of the
-        rectangle between them."""
+        rectangle between them.  A step whose link is a fact with more objects (a door between
+        two places) brings those objects too: without the door, the corridor leads nowhere."""
         if not targets or not sources:
             return []
         if self.toward_targets[0] != targets:  # the same goal objects stay unnamed for many rounds
@@ -467,17 +528,47 @@ class RepairOrder:
                 frozenset(targets),
                 graph_distances(self.task.init_index, self.graph, targets, self.hub),
             )
-        distance = self.toward_targets[1]
+        walk = self._walk_toward(self.toward_targets[1], sources, current)
+        if walk or len(targets) == 1 or len(targets) > WAYS_EACH_UP_TO:
+            return walk
+        # the way to the nearest is kept already (a sofa next to where the robot can go): the way to another
+        for target in sorted(targets):
+            if target not in self.toward_each:
+                self.toward_each[target] = graph_distances(self.task.init_index, self.graph, [target], self.hub)
+            walk = self._walk_toward(self.toward_each[target], sources, current)
+            if walk:
+                return walk
+        return []
+
+    def _walk_toward(self, distance: Mapping[str, int], sources: Set[str], current: Set[str]) -> list[str]:
+        """:meth:`_path` down ``distance`` (hops toward some targets)."""
         start = min((name for name in sources if name in distance), key=lambda n: (distance[n], n), default=None)
         walk: list[str] = []
         name = start
         while name is not None and distance[name] > 0:
             lower = distance[name] - 1
-            # the first by name: the facts' order, and so the neighbours', changes from run to run
-            name = min((o for o in self.graph.neighbours(name) if distance.get(o) == lower), default=None)
-            if name is not None and name not in current and name in self.classes:
-                walk.append(name)
-        return walk
+            # the first by name (the facts' order, and so the neighbours', changes from run to run),
+            # linked both ways: a place leads to its room, but the room leads to none of its places
+            neighbours = self.graph.neighbours
+            step = min(
+                (o for o in neighbours(name) if distance.get(o) == lower and name in neighbours(o)), default=None
+            )
+            if step is not None:
+                walk += [o for o in self._link(name, step) if o not in current and o in self.classes]
+                if step not in current and step in self.classes:
+                    walk.append(step)
+            name = step
+        return list(dict.fromkeys(walk))
+
+    def _link(self, name: str, step: str) -> tuple[str, ...]:
+        """The other objects of the fact that links ``name`` to ``step`` with the fewest of them (the
+        door of ``(door-between door here there)``; none for ``(connected here there)``)."""
+        links = [
+            tuple(sorted({o for o in atom[1:] if o != name and o != step}))
+            for atom in self.task.init_index.by_object.get(name, ())
+            if step in atom[1:] and self.graph.follows(atom, name)
+        ]
+        return min(links, key=lambda others: (len(others), others), default=())
 
     def _detached(self, name: str, others: Sequence[str], reached: Mapping[GroundAtom, object], kept: Set[str]) -> bool:
         """Whether ``name``'s links to other objects are all where it is now (facts that change) and

@@ -26,7 +26,7 @@ from dataclasses import replace
 
 from relevance_plan.pddl.formulas import names_in
 from relevance_plan.pddl.model import goal_objects
-from relevance_plan.relevance.analysis import GoalAnalysis, GoalReads, analyse_goal_reading, object_distances
+from relevance_plan.relevance.analysis import GoalAnalysis, GoalReads, analyse_goal_reading, graph_distances
 from relevance_plan.relevance.knowledge import KnowledgeModel
 from relevance_plan.relevance.prune import Thresholds
 from relevance_plan.relevance.scene import Element, build_scene
@@ -366,7 +366,9 @@ class LiveGoalScores:
         """Hops from the goal's objects (``PlanningTask.goal_distance``), found when first needed."""
         if self._distance is None:
             hub = hub_degree(len(self.scene.objects))
-            self._distance = object_distances(self.scene.index, self.goal_objects, hub)
+            # as ``analysis.object_distances``, on the links the live index keeps across events
+            index = self.scene.index
+            self._distance = graph_distances(index, index.object_graph(None), self.goal_objects, hub)
         return self._distance
 
     def _score(self, name: str) -> bool:

@@ -470,6 +470,8 @@ class Session:
             reads.append(read)
 
         task = replace(self._live_task(self._analysed()), repair_observer=observe)
+        # what passes the thresholds is kept up to date event by event: the selection need not look at every object
+        scores.passing.setdefault(self.options.thresholds, frozenset(self.passing))
         self.selection = Scoring(task, self.model, scores, self.options).first_selection()
         closure = ConstraintClosure.of(task, self.model)
         self.basis = selection_basis(task, self.selection, reads[-1] if reads else None, closure)

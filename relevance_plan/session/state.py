@@ -59,7 +59,7 @@ class LiveIndex:
         self._degrees: dict[int, int] = {}  # degree -> how many objects have it
         # max_fan -> (the positions not followed, the graph): kept across changes, each change
         # dropping what it can alter (see object_graph)
-        self._graphs: dict[float, tuple[frozenset, ObjectGraph]] = {}
+        self._graphs: dict[float | None, tuple[frozenset, ObjectGraph]] = {}
         for fact in sorted(facts):  # in order: each insertion lands at the end of its lists
             self.add(fact)
         for term in terms:
@@ -103,24 +103,26 @@ class LiveIndex:
             if not walks:
                 continue
 
-            def followed(predicate: str, position: int, max_fan: float = max_fan) -> bool:
-                return self.fan(predicate, position) <= max_fan
+            def followed(predicate: str, position: int, max_fan: float | None = max_fan) -> bool:
+                return max_fan is None or self.fan(predicate, position) <= max_fan
 
             for key in [
                 key for key, walked in walks.items() if walk_changed(walked, atom, names, degrees, followed, key[1])
             ]:
                 del walks[key]
 
-    def object_graph(self, max_fan: float) -> ObjectGraph:
+    def object_graph(self, max_fan: float | None) -> ObjectGraph:
         """The links of the current facts as ``analysis.ObjectGraph(self, max_fan, fan_in(self))``
         gives them, kept across changes with the walks made on it (``graph_distances``): a change
         drops what it can alter, and a position whose fan crosses ``max_fan`` makes a new graph."""
-        unfollowed = frozenset(
-            (predicate, position)
-            for predicate, atoms in self.by_predicate.items()
-            for position in range(len(atoms[0]) - 1)
-            if self.fan(predicate, position) > max_fan
-        )
+        unfollowed: frozenset[tuple[str, int]] = frozenset()
+        if max_fan is not None:
+            unfollowed = frozenset(
+                (predicate, position)
+                for predicate, atoms in self.by_predicate.items()
+                for position in range(len(atoms[0]) - 1)
+                if self.fan(predicate, position) > max_fan
+            )
         kept = self._graphs.get(max_fan)
         if kept is not None and kept[0] == unfollowed:
             return kept[1]

@@ -40,6 +40,9 @@ class ScoreResult:
     task_entropy: float | None = None
     # free text mapped to the model's names (the objective, the task, object kinds), each with its similarity
     understood: tuple[WordMatch, ...] = ()
+    # thresholds -> the elements they admit, found once per result (a live session keeps one result
+    # across the events that change no score)
+    passing: dict[object, frozenset[str]] = field(default_factory=dict, init=False, compare=False, repr=False)
 
     def class_score(self, name: str) -> float | None:
         """R(C) of the element's class; None when this scorer does not score classes."""
