@@ -47,7 +47,8 @@ folders).  Output names files relative to the repository
 goal scorer, no planner; up to ``--per-folder`` problems per folder): the
 kept objects and why each one not selected came back.  With ``--against``
 (the lines of another version), it also says on stderr which problems keep
-another set now: what a change to the pruning core changed across the field.
+another set now: what a change to the pruning core changed across the field
+(a file that is not such output stops it at once, exit 1, with one line).
 """
 
 from __future__ import annotations
@@ -308,9 +309,7 @@ def speed(roots: list[str], per_folder: int, timeout: float, in_process: bool, i
 def selections(roots: list[str], per_folder: int, timeout: float, against: Path | None) -> int:
     """Each problem's first selection as a JSON line; with ``against``, the problems that keep
     another set than those lines say (on stderr)."""
-    before = {}
-    if against is not None:
-        before = {row["problem"]: row for row in map(json.loads, against.read_text().splitlines())}
+    before = _selections_file(against) if against is not None else {}
     rows, changed, unmatched = 0, [], 0
     for folder in folders(roots):
         for entry in folder.entries[:per_folder]:
@@ -331,6 +330,16 @@ def selections(roots: list[str], per_folder: int, timeout: float, against: Path 
             shown_then = f"{len(then)} objects" if isinstance(then, list) else then
             print(f"  {row['problem']}: {shown_then} -> {shown_now}", file=sys.stderr)
     return 0
+
+
+def _selections_file(path: Path) -> dict[str, dict]:
+    """Problem -> its line in ``path`` (the output of ``selections``); exits with a one-line reason
+    when the file cannot be read or is not that output."""
+    try:
+        rows = [json.loads(line) for line in path.read_text(encoding="utf-8").splitlines() if line.strip()]
+        return {row["problem"]: row for row in rows}
+    except (OSError, UnicodeDecodeError, ValueError, KeyError, TypeError) as error:
+        sys.exit(f"{path}: not the output of 'bench_field.py selections' ({type(error).__name__}: {error})")
 
 
 def _first_selection(entry: SuiteProblem, timeout: float) -> dict:

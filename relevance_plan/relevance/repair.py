@@ -317,9 +317,9 @@ class RepairOrder:
         # the initial facts' links, walked once or twice a round
         self.graph = shared_graph(task.init_index, REPAIR_MAX_FAN)
         self.toward_unreached: tuple[frozenset[str], dict[str, int]] = (frozenset(), {})
-        self.toward_targets: tuple[frozenset[str], dict[str, int]] = (frozenset(), {})
         self.bounds: tuple[frozenset[str], dict[str, int]] = (frozenset(), {})  # walk_bounds of toward_unreached
-        self.toward_each: dict[str, dict[str, int]] = {}  # goal object -> hops toward it alone
+        # goal objects -> hops toward them: the same ones stay unnamed by reached facts for many rounds
+        self.toward_goal_objects: dict[frozenset[str], dict[str, int]] = {}
         # hops from what the exploration reached, which only grows: each round walks from what is new
         self.from_reached = GrowingDistances(task.init_index, self.graph, self.hub)
         self.classes = task.typing.problem.objects
@@ -523,25 +523,23 @@ class RepairOrder:
         two places) brings those objects too: without the door, the corridor leads nowhere."""
         if not targets or not sources:
             return []
-        if self.toward_targets[0] != targets:  # the same goal objects stay unnamed for many rounds
-            self.toward_targets = (
-                frozenset(targets),
-                graph_distances(self.task.init_index, self.graph, targets, self.hub),
-            )
-        walk = self._walk_toward(self.toward_targets[1], sources, current)
+        walk = self._walk_toward(frozenset(targets), sources, current)
         if walk or len(targets) == 1 or len(targets) > WAYS_EACH_UP_TO:
             return walk
         # the way to the nearest is kept already (a sofa next to where the robot can go): the way to another
         for target in sorted(targets):
-            if target not in self.toward_each:
-                self.toward_each[target] = graph_distances(self.task.init_index, self.graph, [target], self.hub)
-            walk = self._walk_toward(self.toward_each[target], sources, current)
+            walk = self._walk_toward(frozenset([target]), sources, current)
             if walk:
                 return walk
         return []
 
-    def _walk_toward(self, distance: Mapping[str, int], sources: Set[str], current: Set[str]) -> list[str]:
-        """:meth:`_path` down ``distance`` (hops toward some targets)."""
+    def _walk_toward(self, targets: frozenset[str], sources: Set[str], current: Set[str]) -> list[str]:
+        """:meth:`_path` toward ``targets``."""
+        distance = self.toward_goal_objects.get(targets)
+        if distance is None:
+            distance = graph_distances(self.task.init_index, self.graph, targets, self.hub)
+            self.toward_goal_objects[targets] = distance
+        neighbours = self.graph.neighbours
         start = min((name for name in sources if name in distance), key=lambda n: (distance[n], n), default=None)
         walk: list[str] = []
         name = start
@@ -549,7 +547,6 @@ class RepairOrder:
             lower = distance[name] - 1
             # the first by name (the facts' order, and so the neighbours', changes from run to run),
             # linked both ways: a place leads to its room, but the room leads to none of its places
-            neighbours = self.graph.neighbours
             step = min(
                 (o for o in neighbours(name) if distance.get(o) == lower and name in neighbours(o)), default=None
             )
