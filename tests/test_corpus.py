@@ -151,7 +151,8 @@ def test_a_set_s_cells_hold_the_files_the_manifest_gives_them_and_each_pairs_wit
             assert {f["role"] for f in listed} == {role_of_files[cell["role"]]}, cell["path"]
             assert all(f["folder"] == entry["path"] for f in listed)
             entries = find_suite_problems(CORPUS / cell["path"])
-            assert sorted(e.problem.relative_to(CORPUS).as_posix() for e in entries) == sorted(f["path"] for f in listed)
+            found = sorted(e.problem.relative_to(CORPUS).as_posix() for e in entries)
+            assert found == sorted(f["path"] for f in listed)
             assert len(entries) == cell["problems"] <= cell["problems_in_source"]
             (domain,) = {e.domain for e in entries}
             load_problem(entries[0].problem, load_domain(domain))
