@@ -139,6 +139,7 @@ def test_linked_prints_flax_s_published_rates_beside_ours_for_the_maze_cells_run
 
 
 @pytest.mark.planner
+@pytest.mark.slow  # 15 to 30 s: pure may take its whole budget, which leaves the tool room on a busy machine
 def test_bench_linked_plans_a_cell_with_pure_and_the_tool_and_checks_each_plan_on_the_original(tmp_path):
     import json
     import subprocess
@@ -150,14 +151,14 @@ def test_bench_linked_plans_a_cell_with_pure_and_the_tool_and_checks_each_plan_o
 
     raw = tmp_path / "raw.jsonl"
     command = [sys.executable, str(REPO / "benchmarks" / "bench_linked.py"), "--sets", "blocksworld"]
-    command += ["--cells", "goal-2", "--per-cell", "1", "--timeout", "5", "--out", str(raw)]
+    command += ["--cells", "goal-2", "--per-cell", "1", "--timeout", "10", "--out", str(raw)]
     command += ["--store", str(tmp_path / "runs.sqlite")]
     done = subprocess.run(command, capture_output=True, text=True, timeout=180, cwd=tmp_path)
     assert done.returncode == 0, done.stderr
     lines = [json.loads(line) for line in raw.read_text().splitlines()]
     assert [(line["method"], line["problem"], line["budget"]) for line in lines] == [
-        ("pure", "p-100-2.pddl", 5.0),
-        ("relevance", "p-100-2.pddl", 5.0),
+        ("pure", "p-100-2.pddl", 10.0),
+        ("relevance", "p-100-2.pddl", 10.0),
     ]
     pure, ours = lines
     assert pure["first_selection"] == pure["objects_total"] == ours["objects_total"] == 100
@@ -166,7 +167,7 @@ def test_bench_linked_plans_a_cell_with_pure_and_the_tool_and_checks_each_plan_o
     assert ours["solved"] and ours["valid_builtin"] is True and ours["valid_val"] is (True if find_validate() else None)
     for line in lines:
         assert not line["solved"] or line["valid_builtin"] is True
-        weighted = line["wall"] if line["solved"] else 5.0  # a failure counts the whole budget
+        weighted = line["wall"] if line["solved"] else 10.0  # a failure counts the whole budget
         solved = int(line["solved"])
         assert f"| {line['method']} | {solved}/1 ({solved}.000) | {weighted:.2f} s |" in done.stdout
 
