@@ -1,7 +1,8 @@
 """The field's benchmark corpus in ``benchmarks/corpus/``: check it against its manifest, list it.
 
 The corpus holds PDDL files of the International Planning Competitions
-(1998-2023) and of Taskography, copied unchanged from public repositories;
+(1998-2023), of Taskography, of Flax and of the hard-to-ground collection,
+copied unchanged from public repositories;
 ``corpus/MANIFEST.json`` names each file's source, commit, path there,
 sha256, size and track (``corpus/README.md`` says more).
 
@@ -65,9 +66,12 @@ def folders(track: str | None = None, root: Path | None = None) -> list[Path]:
 
 
 def benchmark_sets(root: Path | None = None) -> dict[str, dict]:
-    """The benchmark sets (a set's name, e.g. ``taskographyv4medium5`` -> its manifest entry, paths
-    made absolute): test problems of one benchmark, with their training problems, kept apart from
-    the domain folders so that the field's sweeps do not plan them."""
+    """The benchmark sets (a set's name, e.g. ``taskographyv4medium5`` or ``mazenamo`` -> its manifest
+    entry, paths made absolute): test problems of one benchmark, with their training problems, kept
+    apart from the domain folders so that the field's sweeps do not plan them.
+
+    A set is one folder of test problems (its ``training`` the folder of its training problems), or,
+    when it has ``cells``, a folder of cells: each a folder of test or training problems (``role``)."""
     root = root or corpus_root()
     found = {}
     for entry in manifest(root).get("sets", []):
@@ -75,7 +79,9 @@ def benchmark_sets(root: Path | None = None) -> dict[str, dict]:
         training = dict(entry.get("training", {}))
         if training:
             training["path"] = root / training["path"]
-        found[folder.name.removesuffix("_test")] = {**entry, "path": folder, "training": training}
+        cells = [{**cell, "path": root / cell["path"]} for cell in entry.get("cells", [])]
+        name = entry.get("name", folder.name.removesuffix("_test"))
+        found[name] = {**entry, "path": folder, "training": training, "cells": cells}
     return found
 
 

@@ -114,17 +114,58 @@ def test_training_problems_pair_with_their_test_folders_domain():
         load_problem(entries[0].problem, load_domain(test_domain))
 
 
+def problem_folders(entry: dict) -> list[dict]:
+    """A set's folders of test problems: its cells of role test, or the set's own folder."""
+    return [cell for cell in entry.get("cells", [entry]) if cell.get("role", "test") == "test"]
+
+
 def test_benchmark_sets_pair_their_problems_with_the_domain_and_stay_out_of_the_domain_folders():
     data = manifest()
     sets = data["sets"]
     assert {entry["path"].rsplit("/", 1)[1] for entry in sets} >= {
         "taskographyv4medium5_test",
         "taskographyv5medium5bagslots5_test",
+        "mazenamo_problems",
+        "rovers-large-simple",
     }
     domain_folders = {entry["path"] for entry in data["folders"]}
     for entry in sets:
         assert entry["path"] not in domain_folders
-        entries = find_suite_problems(CORPUS / entry["path"])
-        assert len(entries) == entry["problems"] <= entry["problems_in_source"]
-        assert all(e.error is None and e.domain is not None for e in entries)
-        load_problem(entries[-1].problem, load_domain(entries[-1].domain))
+        folders = problem_folders(entry)
+        assert sum(folder["problems"] for folder in folders) == entry["problems"] <= entry["problems_in_source"]
+        for folder in folders:
+            entries = find_suite_problems(CORPUS / folder["path"])
+            assert len(entries) == folder["problems"] <= folder["problems_in_source"]
+            assert all(e.error is None and e.domain is not None for e in entries)
+            load_problem(entries[-1].problem, load_domain(entries[-1].domain))
+
+
+def test_a_set_s_cells_hold_the_files_the_manifest_gives_them_and_each_pairs_with_one_domain():
+    data = manifest()
+    celled = [entry for entry in data["sets"] if "cells" in entry]
+    assert {entry["name"] for entry in celled} >= {"mazenamo", "sokomindplus", "difficultlogistics"}
+    role_of_files = {"test": "problem", "training": "training-problem"}
+    for entry in celled:
+        for cell in entry["cells"]:
+            listed = [f for f in data["files"] if f.get("cell") == cell["path"] and f["role"] != "domain"]
+            assert {f["role"] for f in listed} == {role_of_files[cell["role"]]}, cell["path"]
+            assert all(f["folder"] == entry["path"] for f in listed)
+            entries = find_suite_problems(CORPUS / cell["path"])
+            found = sorted(e.problem.relative_to(CORPUS).as_posix() for e in entries)
+            assert found == sorted(f["path"] for f in listed)
+            assert len(entries) == cell["problems"] <= cell["problems_in_source"]
+            (domain,) = {e.domain for e in entries}
+            load_problem(entries[0].problem, load_domain(domain))
+    gnad = next(entry for entry in celled if entry["name"] == "gnad-et-al-aaai19-large-instances")
+    assert "satellite-large" in {cell["name"] for cell in gnad["cells"]}
+
+
+def test_benchmark_sets_finds_each_set_by_name_with_its_cells_at_their_paths():
+    from corpus import benchmark_sets
+
+    sets = benchmark_sets()
+    assert {"taskographyv4medium5", "mazenamo", "difficultlogistics", "blocksworld-large-simple"} <= set(sets)
+    mazenamo = sets["mazenamo"]
+    assert len([cell for cell in mazenamo["cells"] if cell["role"] == "test"]) == 12
+    assert all(cell["path"].is_dir() and cell["path"].parent == mazenamo["path"] for cell in mazenamo["cells"])
+    assert sets["taskographyv4medium5"]["training"]["path"].is_dir() and sets["taskographyv4medium5"]["cells"] == []
