@@ -361,8 +361,8 @@ def _labels_of(built: _Building, class_name: str) -> str:
 # --------------------------------------------------------------------------- the written problem
 
 
-def problem_text(scene: ImportedScene, goal: list[tuple[str, ...]], name: str) -> str:
-    """The problem as PDDL text: objects by type, facts sorted, the goal's atoms in a conjunction."""
+def problem_text(scene: ImportedScene, goal: str, name: str) -> str:
+    """The problem as PDDL text: objects by type, facts sorted, ``goal`` (a conjunction's body)."""
     lines = [
         f"; Imported by relevance-plan from the scene graph {scene.source}:",
         f"; {len(scene.objects)} objects; the sidecar (.json) names the graph node of each.",
@@ -378,8 +378,7 @@ def problem_text(scene: ImportedScene, goal: list[tuple[str, ...]], name: str) -
     lines.append("  (:init")
     lines += [f"    ({' '.join(fact)})" for fact in scene.facts]
     lines.append("  )")
-    atoms = " ".join(f"({' '.join(atom)})" for atom in goal)
-    lines.append(f"  (:goal (and {atoms}))")
+    lines.append(f"  (:goal (and {goal}))")
     lines.append(")")
     return "\n".join(lines) + "\n"
 
