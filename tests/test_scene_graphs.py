@@ -1,0 +1,180 @@
+"""Scene graphs in (the hydra extra): Spark-DSG's apartment graph and Matterport3D house from the corpus,
+and graphs built here with spark-dsg, imported, planned with goals as atoms and in words, and validated on
+the imported problem; every PDDL object traced to its graph node."""
+
+from __future__ import annotations
+
+import json
+import re
+
+import pytest
+from support import REPO, run
+
+spark_dsg = pytest.importorskip("spark_dsg", reason="the hydra extra (spark-dsg) is not installed")
+
+from relevance_plan.scene_graphs.importer import DOMAIN_FILE, ImportOptions, import_scene, read_graph  # noqa: E402
+
+CORPUS = REPO / "benchmarks" / "corpus" / "spark-dsg" / "scene-graphs"
+APARTMENT = CORPUS / "apartment_dsg.json"
+HOUSE = CORPUS / "example_mp3d_scene.house"
+APARTMENT_LABELS = REPO / "examples" / "scene-graphs" / "uhumans2_apartment_labels.yaml"
+PDDL_NAME = re.compile(r"^[a-z][a-z0-9_-]*$")
+
+
+def text_model_installed() -> bool:
+    from relevance_plan.errors import MissingExtraError
+    from relevance_plan.relevance.text import load_text_model
+
+    try:
+        load_text_model()
+    except MissingExtraError:
+        return False
+    return True
+
+
+needs_text = pytest.mark.skipif(not text_model_installed(), reason="the text extra's model is not installed")
+
+
+def imported(tmp_path, graph, *goals, labels=None, start=None):
+    arguments = ["scene-graph", "import", graph, "-o", tmp_path, "--json"]
+    arguments += [a for goal in goals for a in ("--goal", goal)]
+    arguments += ["--labels", labels] if labels else []
+    arguments += ["--start", start] if start else []
+    code, out, err = run(*arguments)
+    return code, (json.loads(out) if out.strip() else None), err
+
+
+# --------------------------------------------------------------------------- the import
+
+
+def test_apartment_without_its_label_names_asks_about_each_label(tmp_path):
+    code, report, err = imported(tmp_path / "out", APARTMENT, "(hand-free robot)")
+    assert code == 12
+    assert [q.split(" has")[0] for q in report["questions"]] == [f"objects label {n}" for n in (5, 11, 16)]
+    assert not (tmp_path / "out" / "problem.pddl").exists()
+
+
+def test_every_object_is_traced_to_its_graph_node_and_every_node_is_imported(tmp_path):
+    code, report, err = imported(tmp_path, APARTMENT, "(hand-free robot)", labels=APARTMENT_LABELS)
+    assert code == 0, err
+    nodes = json.loads((tmp_path / "problem.json").read_text())["scene_graph"]["nodes"]
+    from relevance_plan.io import load_domain, load_problem
+
+    problem = load_problem(tmp_path / "problem.pddl", load_domain(DOMAIN_FILE))
+    assert set(problem.objects) == set(nodes)
+    assert all(PDDL_NAME.match(name) for name in problem.objects)
+    graph = spark_dsg.DynamicSceneGraph.load(str(APARTMENT))
+    layered = {n.id.value for n in graph.nodes if n.layer.layer in (2, 3, 4) and n.layer.partition == 0}
+    traced = {entry["node"] for entry in nodes.values() if entry["layer"] in ("objects", "places", "rooms")}
+    assert traced == layered
+    for entry in nodes.values():
+        if entry["node"] is not None:
+            assert str(spark_dsg.NodeSymbol(entry["node"])) == entry["symbol"]
+    assert nodes["robot"]["symbol"] == "a(101)"  # the agent's latest pose
+
+
+def test_names_are_stable_across_spark_dsg_encodings(tmp_path):
+    """The graph saved again by spark-dsg (its current encoding, without the mesh) imports to the same text."""
+    resaved = tmp_path / "resaved.json"
+    graph = spark_dsg.DynamicSceneGraph.load(str(APARTMENT))
+    graph.save(str(resaved), include_mesh=False)
+    options = ImportOptions(labels=str(APARTMENT_LABELS))
+    first = import_scene(read_graph(str(APARTMENT), options), ["(hand-free robot)"], options, "apartment")
+    again = import_scene(read_graph(str(resaved), options), ["(hand-free robot)"], options, "apartment")
+    assert first.text.splitlines()[2:] == again.text.splitlines()[2:]
+
+
+def test_house_labels_come_from_the_file_and_the_coarse_names(tmp_path):
+    code, report, err = imported(tmp_path, HOUSE, "(hand-free robot)")
+    assert code == 0, err
+    how = {p["name"]: (p["class"], p["how"]) for p in report["placements"] if p["layer"] == "objects"}
+    assert how["bottle"] == ("bottle", "vocabulary")
+    assert how["bedside table"] == ("nightstand", "vocabulary")
+    assert how["button"] == ("misc", "coarse name 'misc'")
+    rooms = {p["name"]: p["class"] for p in report["placements"] if p["layer"] == "rooms"}
+    assert rooms["kitchen"] == "kitchen" and rooms["bathroom"] == "bathroom"
+    assert report["objects"] > 187 + 10  # every object and room, the places, the classes
+
+
+@needs_text
+def test_a_label_the_mapping_names_in_other_words_is_placed_by_meaning(tmp_path):
+    labels = tmp_path / "labels.yaml"
+    labels.write_text("objects: {5: seat, 11: lamp, 16: dinner table}\nrooms: {0: lounge area}\n")
+    code, report, err = imported(tmp_path / "out", APARTMENT, "(hand-free robot)", labels=labels)
+    assert code == 0, err
+    placed = {p["name"]: p for p in report["placements"]}
+    assert placed["seat"]["class"] == "chair" and placed["seat"]["how"] == "vocabulary"
+    assert placed["dinner table"]["how"] == "text model" and placed["dinner table"]["class"] == "table"
+    assert 0.55 <= placed["dinner table"]["similarity"] < 1.0
+    assert placed["lounge area"]["how"] == "text model"
+
+
+@needs_text
+def test_a_label_like_no_class_is_a_question(tmp_path):
+    labels = tmp_path / "labels.yaml"
+    labels.write_text("objects: {5: chair, 11: quantum flux regulator, 16: table}\nrooms: {0: living room}\n")
+    code, report, err = imported(tmp_path / "out", APARTMENT, "(hand-free robot)", labels=labels)
+    assert code == 12
+    assert len(report["questions"]) == 1 and "quantum flux regulator" in report["questions"][0]
+
+
+# --------------------------------------------------------------------------- goals and plans
+
+
+def plan_and_validate(folder):
+    code, out, err = run("plan", folder / "domain.pddl", folder / "problem.pddl", "--plan-file", folder / "plan", "--json")
+    assert code == 0, err
+    result = json.loads(out)
+    assert result["valid"] is True
+    for validator in ("builtin", "val"):
+        code, out, err = run("validate", folder / "domain.pddl", folder / "problem.pddl", folder / "plan", "--validator", validator)
+        assert code == 0, (validator, out, err)
+    return result
+
+
+@pytest.mark.planner
+def test_apartment_planned_with_a_goal_as_atoms(tmp_path):
+    code, report, err = imported(tmp_path, APARTMENT, "(on lamp_o84 table_o33)", labels=APARTMENT_LABELS)
+    assert code == 0, err
+    result = plan_and_validate(tmp_path)
+    steps = result["plan_nodes"]
+    assert steps[-1]["action"] == "put-on"
+    assert [a["symbol"] for a in steps[-1]["args"][1:3]] == ["O(84)", "O(33)"]
+    assert json.loads((tmp_path / "plan.nodes.json").read_text()) == steps
+
+
+@pytest.mark.planner
+def test_house_planned_with_a_goal_in_words(tmp_path):
+    code, report, err = imported(tmp_path, HOUSE, "bring a towel to the kitchen")
+    assert code == 0, err
+    (goal,) = report["goals"]
+    assert goal["atom"] == "(class-in-room towel kitchen)"
+    assert [p["similarity"] for p in goal["parts"]] == [1.0, 1.0]
+    result = plan_and_validate(tmp_path)
+    assert result["objects_kept"] < result["objects_total"] / 4
+    last = result["plan_nodes"][-1]
+    assert last["args"][1]["symbol"].startswith("O(")  # the towel moved is a graph object
+
+
+@needs_text
+@pytest.mark.planner
+def test_a_description_is_read_as_the_scene_class_it_resembles(tmp_path):
+    code, report, err = imported(tmp_path, HOUSE, "put something to drink on the table")
+    assert code == 0, err
+    moved = report["goals"][0]["parts"][0]
+    assert moved["class"] == "bottle" and 0.45 <= moved["similarity"] < 1.0
+    plan_and_validate(tmp_path)
+
+
+def test_a_class_the_scene_lacks_is_a_question(tmp_path):
+    code, report, err = imported(tmp_path, APARTMENT, "bring a cup to the kitchen", labels=APARTMENT_LABELS)
+    assert code == 12
+    assert "no cup" in report["questions"][0]
+    assert "question:" in err and not (tmp_path / "problem.pddl").exists()
+
+
+def test_score_why_names_the_graph_nodes(tmp_path):
+    code, report, err = imported(tmp_path, APARTMENT, "(on lamp_o84 table_o33)", labels=APARTMENT_LABELS)
+    code, out, err = run("score", tmp_path / "domain.pddl", tmp_path / "problem.pddl", "--why", "lamp_o84")
+    assert code == 0, err
+    assert "graph node O(84) (id 5692549928996307028, objects)" in out
