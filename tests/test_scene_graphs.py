@@ -178,3 +178,162 @@ def test_score_why_names_the_graph_nodes(tmp_path):
     code, out, err = run("score", tmp_path / "domain.pddl", tmp_path / "problem.pddl", "--why", "lamp_o84")
     assert code == 0, err
     assert "graph node O(84) (id 5692549928996307028, objects)" in out
+
+
+# --------------------------------------------------------------------------- graphs built here with spark-dsg
+
+ROOM_NAMES = {0: "kitchen", 1: "bedroom", 2: "bathroom", 3: "office"}
+OBJECT_NAMES = {0: "mug", 1: "book", 2: "table", 3: "fridge", 4: "shelf", 5: "bottle", 6: "cabinet"}
+
+
+def built_graph(rooms: int, places_per_room: int, objects: list[tuple[int, int, int]]):
+    """A spark-dsg graph: rooms in a row, each a chain of places joined to the next room's; objects as
+    (object index, label, place number), with label spaces for objects and rooms."""
+    graph = spark_dsg.DynamicSceneGraph()
+    graph.set_labelspace(spark_dsg.Labelspace(OBJECT_NAMES), 2, 0)
+    graph.set_labelspace(spark_dsg.Labelspace(ROOM_NAMES), 4, 0)
+    for r in range(rooms):
+        attributes = spark_dsg.RoomNodeAttributes()
+        attributes.semantic_label = r % len(ROOM_NAMES)
+        attributes.position = [10.0 * r, 0.0, 0.0]
+        graph.add_node(spark_dsg.DsgLayers.ROOMS, spark_dsg.NodeSymbol("R", r).value, attributes)
+        for k in range(places_per_room):
+            number = r * places_per_room + k
+            place = spark_dsg.PlaceNodeAttributes()
+            place.position = [10.0 * r + k, 0.0, 0.0]
+            graph.add_node(spark_dsg.DsgLayers.PLACES, spark_dsg.NodeSymbol("p", number).value, place)
+            graph.insert_edge(spark_dsg.NodeSymbol("p", number).value, spark_dsg.NodeSymbol("R", r).value)
+            if number:
+                graph.insert_edge(spark_dsg.NodeSymbol("p", number - 1).value, spark_dsg.NodeSymbol("p", number).value)
+    for index, label, place in objects:
+        add_object(graph, index, label, place)
+    return graph
+
+
+def add_object(graph, index: int, label: int, place: int) -> None:
+    attributes = spark_dsg.ObjectNodeAttributes()
+    attributes.semantic_label = label
+    attributes.position = graph.get_node(spark_dsg.NodeSymbol("p", place).value).attributes.position + [0.0, 3.0, 0.5]
+    node = spark_dsg.NodeSymbol("O", index).value
+    graph.add_node(spark_dsg.DsgLayers.OBJECTS, node, attributes)
+    graph.insert_edge(spark_dsg.NodeSymbol("p", place).value, node)
+
+
+def move_object(graph, index: int, place: int) -> None:
+    node = spark_dsg.NodeSymbol("O", index).value
+    label = graph.get_node(node).attributes.semantic_label
+    graph.remove_node(node)
+    add_object(graph, index, label, place)
+
+
+@pytest.mark.planner
+def test_a_graph_built_with_spark_dsg_plans_a_goal_in_words(tmp_path):
+    objects = [(i, i % 7, (3 * i) % 24) for i in range(40)]
+    built_graph(4, 6, objects).save(str(tmp_path / "g.json"), include_mesh=False)
+    code, report, err = imported(tmp_path / "out", tmp_path / "g.json", "put a book on the shelf", start="p(0)")
+    assert code == 0, err
+    assert report["goals"][0]["atom"] == "(class-on book shelf)"
+    plan_and_validate(tmp_path / "out")
+
+
+# --------------------------------------------------------------------------- the live session
+
+
+def snapshots(tmp_path) -> list:
+    """A graph and four updates: an object moves, one appears, one goes, a place edge goes."""
+    objects = [(i, i % 7, (5 * i) % 18) for i in range(24)]
+    graph = built_graph(3, 6, objects)
+    paths = []
+
+    def save():
+        path = tmp_path / f"g{len(paths)}.json"
+        graph.save(str(path), include_mesh=False)
+        paths.append(path)
+
+    save()
+    move_object(graph, 1, 17)
+    save()
+    add_object(graph, 99, 0, 4)
+    save()
+    graph.remove_node(spark_dsg.NodeSymbol("O", 2).value)
+    save()
+    graph.remove_edge(spark_dsg.NodeSymbol("p", 8).value, spark_dsg.NodeSymbol("p", 9).value)
+    save()
+    return paths
+
+
+def prune_kept(path, goals, options) -> frozenset:
+    from relevance_plan.io import load_domain
+    from relevance_plan.pddl.parser import read_problem
+    from relevance_plan.relevance.setup import ScoringOptions, score_problem
+    from relevance_plan.relevance.task import PlanningTask
+
+    result = import_scene(read_graph(str(path), options), goals, options, "live")
+    domain = load_domain(DOMAIN_FILE)
+    task = PlanningTask(domain, read_problem(result.text, domain))
+    return score_problem(task, ScoringOptions()).first_selection().kept
+
+
+def test_a_live_session_over_graph_updates_keeps_the_selection_prune_makes(tmp_path):
+    from relevance_plan.relevance.setup import ScoringOptions
+    from relevance_plan.scene_graphs.live import GraphSession, file_updates
+
+    paths = snapshots(tmp_path)
+    goals = ["(class-on cup table)"]
+    options = ImportOptions(start="p(0)")
+    live = GraphSession(goals, options, ScoringOptions())
+    kinds = []
+    for update, path in zip(file_updates([str(p) for p in paths]), paths):
+        lines = live.apply(update)
+        assert "error" not in lines[-1], lines[-1]
+        assert all(not line.get("error") for line in lines), lines
+        kinds += [line["event"] for line in lines[:-1]]
+        assert live.session.kept == prune_kept(path, goals, options), update.number
+    assert {"add", "remove", "set", "unset"} <= set(kinds)
+
+
+def test_an_update_that_cannot_be_read_is_its_own_error_and_the_session_goes_on(tmp_path):
+    from relevance_plan.relevance.setup import ScoringOptions
+    from relevance_plan.scene_graphs.live import GraphSession, file_updates
+
+    paths = snapshots(tmp_path)
+    broken = tmp_path / "broken.json"
+    broken.write_text(paths[1].read_text()[:5000])
+    live = GraphSession(["(class-on cup table)"], ImportOptions(start="p(0)"), ScoringOptions())
+    answers = [live.apply(update) for update in file_updates([str(paths[0]), str(broken), str(paths[1])])]
+    assert answers[1] == [{**answers[1][0], "error": answers[1][0]["error"]}] and "broken.json" in answers[1][0]["error"]
+    moved = {line["event"]: line["nodes"] for line in answers[2][:-1] if "book_o1" in line["nodes"]}
+    assert moved["set"] == {"book_o1": spark_dsg.NodeSymbol("O", 1).value, "place_p_17": spark_dsg.NodeSymbol("p", 17).value}
+    assert moved["unset"] == {"book_o1": spark_dsg.NodeSymbol("O", 1).value, "place_p_5": spark_dsg.NodeSymbol("p", 5).value}
+
+
+def test_the_zmq_stream_of_a_local_publisher_feeds_the_session(tmp_path):
+    import threading
+    import time
+
+    from spark_dsg.zmq import DsgSender
+
+    from relevance_plan.relevance.setup import ScoringOptions
+    from relevance_plan.scene_graphs.live import GraphSession, zmq_updates
+
+    paths = snapshots(tmp_path)
+    graphs = [spark_dsg.DynamicSceneGraph.load(str(p)) for p in paths[:3]]
+    url = "tcp://127.0.0.1:18765"
+    sender = DsgSender(url)
+
+    def publish():
+        for message in [graphs[0].to_binary()] * 10 + [b"not a graph"] + [g.to_binary() for g in graphs[1:]]:
+            for _ in range(3):  # a subscriber that joins late still gets each; repeats are skipped
+                sender._socket.send(message)
+                time.sleep(0.15)
+
+    publisher = threading.Thread(target=publish)
+    publisher.start()
+    live = GraphSession(["(class-on cup table)"], ImportOptions(start="p(0)"), ScoringOptions())
+    answers = [live.apply(update) for update in zmq_updates(url, idle_timeout=2.0, max_bytes=2**26, first_timeout=10)]
+    publisher.join()
+    sender._socket.close(linger=0)
+    assert answers[0][-1].get("started") is True
+    errors = [a[-1] for a in answers if a[-1].get("error")]
+    assert len(errors) == 1 and "binary update" in errors[0]["error"]
+    assert live.session.kept == prune_kept(paths[2], ["(class-on cup table)"], ImportOptions(start="p(0)"))
