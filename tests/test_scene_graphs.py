@@ -122,12 +122,16 @@ def test_a_label_like_no_class_is_a_question(tmp_path):
 
 
 def plan_and_validate(folder):
-    code, out, err = run("plan", folder / "domain.pddl", folder / "problem.pddl", "--plan-file", folder / "plan", "--json")
+    code, out, err = run(
+        "plan", folder / "domain.pddl", folder / "problem.pddl", "--plan-file", folder / "plan", "--json"
+    )
     assert code == 0, err
     result = json.loads(out)
     assert result["valid"] is True
     for validator in ("builtin", "val"):
-        code, out, err = run("validate", folder / "domain.pddl", folder / "problem.pddl", folder / "plan", "--validator", validator)
+        code, out, err = run(
+            "validate", folder / "domain.pddl", folder / "problem.pddl", folder / "plan", "--validator", validator
+        )
         assert code == 0, (validator, out, err)
     return result
 
@@ -301,10 +305,18 @@ def test_an_update_that_cannot_be_read_is_its_own_error_and_the_session_goes_on(
     broken.write_text(paths[1].read_text()[:5000])
     live = GraphSession(["(class-on cup table)"], ImportOptions(start="p(0)"), ScoringOptions())
     answers = [live.apply(update) for update in file_updates([str(paths[0]), str(broken), str(paths[1])])]
-    assert answers[1] == [{**answers[1][0], "error": answers[1][0]["error"]}] and "broken.json" in answers[1][0]["error"]
+    assert (
+        answers[1] == [{**answers[1][0], "error": answers[1][0]["error"]}] and "broken.json" in answers[1][0]["error"]
+    )
     moved = {line["event"]: line["nodes"] for line in answers[2][:-1] if "book_o1" in line["nodes"]}
-    assert moved["set"] == {"book_o1": spark_dsg.NodeSymbol("O", 1).value, "place_p_17": spark_dsg.NodeSymbol("p", 17).value}
-    assert moved["unset"] == {"book_o1": spark_dsg.NodeSymbol("O", 1).value, "place_p_5": spark_dsg.NodeSymbol("p", 5).value}
+    assert moved["set"] == {
+        "book_o1": spark_dsg.NodeSymbol("O", 1).value,
+        "place_p_17": spark_dsg.NodeSymbol("p", 17).value,
+    }
+    assert moved["unset"] == {
+        "book_o1": spark_dsg.NodeSymbol("O", 1).value,
+        "place_p_5": spark_dsg.NodeSymbol("p", 5).value,
+    }
 
 
 def test_the_zmq_stream_of_a_local_publisher_feeds_the_session(tmp_path):

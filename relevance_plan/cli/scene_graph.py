@@ -36,20 +36,49 @@ def import_options(command):
     """The options every scene-graph command reads a graph with."""
     for decorator in reversed(
         [
-            click.option("--goal", "goals", multiple=True, help="A goal: PDDL atoms over the imported names, or words"
-                         " ('bring a cup to the kitchen'); repeat for more."),
-            file_option("--labels", "labels_path", help="YAML naming the graph's labels: objects: {5: chair},"
-                        " rooms: {0: kitchen} (default: the graph's own label space)."),
-            click.option("--start", default=None, help="The robot's place (a name, NodeSymbol or node id) when the"
-                         " graph has no agent poses, or instead of its latest pose."),
-            click.option("--class-floor", type=click.FloatRange(0, 1), default=None,
-                         help="Least similarity for placing a label under a class (default 0.55)."),
-            click.option("--goal-floor", type=click.FloatRange(0, 1), default=None,
-                         help="Least similarity for reading a goal's words as a class (default 0.45)."),
-            click.option("--max-graph-mb", type=click.FloatRange(0.001, 65536), default=64, show_default=True,
-                         help="Refuse a graph file (or update) larger than this."),
-            click.option("--ignore-unknown-layers", is_flag=True, help="Leave out nodes on layers other than"
-                         " objects, places, rooms and buildings (and say how many)."),
+            click.option(
+                "--goal",
+                "goals",
+                multiple=True,
+                help="A goal: PDDL atoms over the imported names, or words"
+                " ('bring a cup to the kitchen'); repeat for more.",
+            ),
+            file_option(
+                "--labels",
+                "labels_path",
+                help="YAML naming the graph's labels: objects: {5: chair},"
+                " rooms: {0: kitchen} (default: the graph's own label space).",
+            ),
+            click.option(
+                "--start",
+                default=None,
+                help="The robot's place (a name, NodeSymbol or node id) when the"
+                " graph has no agent poses, or instead of its latest pose.",
+            ),
+            click.option(
+                "--class-floor",
+                type=click.FloatRange(0, 1),
+                default=None,
+                help="Least similarity for placing a label under a class (default 0.55).",
+            ),
+            click.option(
+                "--goal-floor",
+                type=click.FloatRange(0, 1),
+                default=None,
+                help="Least similarity for reading a goal's words as a class (default 0.45).",
+            ),
+            click.option(
+                "--max-graph-mb",
+                type=click.FloatRange(0.001, 65536),
+                default=64,
+                show_default=True,
+                help="Refuse a graph file (or update) larger than this.",
+            ),
+            click.option(
+                "--ignore-unknown-layers",
+                is_flag=True,
+                help="Leave out nodes on layers other than objects, places, rooms and buildings (and say how many).",
+            ),
         ]
     ):
         command = decorator(command)
@@ -100,7 +129,9 @@ def scene_graph():
 
 @scene_graph.command("import")
 @click.argument("graph_path", metavar="GRAPH", type=click.Path(dir_okay=False))
-@file_option("-o", "--output", "out_dir", folder=True, required=True, help="Folder for domain.pddl, problem.pddl, problem.json.")
+@file_option(
+    "-o", "--output", "out_dir", folder=True, required=True, help="Folder for domain.pddl, problem.pddl, problem.json."
+)
 @click.option("--name", default=None, help="The problem's name (default: the graph file's name).")
 @import_options
 @json_option("Print the import's report as JSON.")
@@ -129,8 +160,10 @@ def import_graph(graph_path, out_dir, name, goals, as_json, **values):
         click.echo(f"goal: '{resolution.text}' -> ({' '.join(resolution.atom or ())}): {parts}")
     for placement in result.scene.placements:
         if placement.how not in ("vocabulary", "unnamed"):
-            click.echo(f"label: {placement.layer} {placement.label} '{placement.name}' as {placement.chosen}"
-                       f" ({placement.how}, {placement.similarity:.2f})")
+            click.echo(
+                f"label: {placement.layer} {placement.label} '{placement.name}' as {placement.chosen}"
+                f" ({placement.how}, {placement.similarity:.2f})"
+            )
     for note in result.scene.notes:
         click.echo(f"note: {note}")
     click.echo(f"wrote {len(result.scene.objects)} objects, {len(result.scene.facts)} facts to {', '.join(written)}")
@@ -155,9 +188,16 @@ def _targets(out_dir: str, graph_path: str) -> list[Path]:
 
 @scene_graph.command("watch")
 @click.argument("graph_paths", metavar="GRAPH...", nargs=-1, type=click.Path(dir_okay=False))
-@click.option("--zmq", "zmq_url", default=None, help="Follow spark-dsg's ZMQ stream at this URL (tcp://127.0.0.1:8001).")
-@click.option("--idle-timeout", type=click.FloatRange(0.01, 86400), default=10.0, show_default=True,
-              help="With --zmq: end the session when no update came for this many seconds.")
+@click.option(
+    "--zmq", "zmq_url", default=None, help="Follow spark-dsg's ZMQ stream at this URL (tcp://127.0.0.1:8001)."
+)
+@click.option(
+    "--idle-timeout",
+    type=click.FloatRange(0.01, 86400),
+    default=10.0,
+    show_default=True,
+    help="With --zmq: end the session when no update came for this many seconds.",
+)
 @click.option("--plan", "plan_in_loop", is_flag=True, help="Keep a validated plan current, as watch --plan does.")
 @import_options
 @scoring_options

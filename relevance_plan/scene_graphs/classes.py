@@ -116,7 +116,9 @@ def read_label_mapping(path: str) -> LabelMapping:
     except yaml.YAMLError as error:
         mark = getattr(error, "problem_mark", None)
         line = mark.line + 1 if mark is not None else None
-        raise ModelError(f"the label mapping is not valid YAML: {getattr(error, 'problem', error)}", path=path, line=line) from None
+        raise ModelError(
+            f"the label mapping is not valid YAML: {getattr(error, 'problem', error)}", path=path, line=line
+        ) from None
     if not isinstance(data, dict):
         raise ModelError("the label mapping must map labels to names (or hold 'objects:' and 'rooms:')", path=path)
     sections = data if set(data) <= {"objects", "rooms"} else {"objects": data}
@@ -229,7 +231,9 @@ class LabelQuery:
     coarse: str | None = None
 
 
-def place_labels(queries: Sequence[LabelQuery], vocabulary: Vocabulary, floor: float = DEFAULT_FLOOR) -> tuple[Placement, ...]:
+def place_labels(
+    queries: Sequence[LabelQuery], vocabulary: Vocabulary, floor: float = DEFAULT_FLOOR
+) -> tuple[Placement, ...]:
     """Each label as a class of the vocabulary, or a question (see the module docstring)."""
     placed: list[Placement | None] = []
     unplaced: list[int] = []
@@ -249,7 +253,11 @@ def place_labels(queries: Sequence[LabelQuery], vocabulary: Vocabulary, floor: f
 
 
 def _by_meaning(
-    queries: Sequence[LabelQuery], unplaced: list[int], placed: list[Placement | None], vocabulary: Vocabulary, floor: float
+    queries: Sequence[LabelQuery],
+    unplaced: list[int],
+    placed: list[Placement | None],
+    vocabulary: Vocabulary,
+    floor: float,
 ) -> list[Placement | None]:
     try:
         matches = {i: _nearest_one(queries[i], vocabulary) for i in unplaced}
@@ -264,11 +272,23 @@ def _by_meaning(
     for i in unplaced:
         query, candidates = queries[i], matches[i]
         if candidates and candidates[0][1] >= floor:
-            placed[i] = Placement(query.layer, query.label, query.name, candidates[0][0], "text model", candidates[0][1], candidates)
+            placed[i] = Placement(
+                query.layer, query.label, query.name, candidates[0][0], "text model", candidates[0][1], candidates
+            )
         elif (coarse := _coarse(query, vocabulary)) is not None:
-            placed[i] = Placement(query.layer, query.label, query.name, coarse, f"coarse name '{query.coarse}'", 1.0, candidates)
+            placed[i] = Placement(
+                query.layer, query.label, query.name, coarse, f"coarse name '{query.coarse}'", 1.0, candidates
+            )
         else:
-            placed[i] = Placement(query.layer, query.label, query.name, None, "question", candidates[0][1] if candidates else 0.0, candidates)
+            placed[i] = Placement(
+                query.layer,
+                query.label,
+                query.name,
+                None,
+                "question",
+                candidates[0][1] if candidates else 0.0,
+                candidates,
+            )
     return placed
 
 

@@ -120,7 +120,9 @@ def resolve_words(text: str, scene: ImportedScene, vocabulary: Vocabulary, floor
     """A goal in words as a class goal over the scene's classes, or a question."""
     parts = split_words(text)
     if parts is None:
-        return GoalResolution(text, None, question=f"'{printable(text, 80)}' says what to move but not where (on, in, to ...): where to?")
+        return GoalResolution(
+            text, None, question=f"'{printable(text, 80)}' says what to move but not where (on, in, to ...): where to?"
+        )
     what, relation, where = parts
     present_items = {k for k, kind in scene.kinds.items() if kind is Kind.ITEM}
     items = {name: c for name, c in vocabulary.things.items() if c.kind is Kind.ITEM}

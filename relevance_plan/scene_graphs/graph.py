@@ -16,7 +16,9 @@ from types import MappingProxyType
 from relevance_plan.errors import SceneGraphError
 
 OBJECTS, PLACES, ROOMS, BUILDINGS = 2, 3, 4, 5
-LAYER_NAMES: Mapping[int, str] = MappingProxyType({OBJECTS: "objects", PLACES: "places", ROOMS: "rooms", BUILDINGS: "buildings"})
+LAYER_NAMES: Mapping[int, str] = MappingProxyType(
+    {OBJECTS: "objects", PLACES: "places", ROOMS: "rooms", BUILDINGS: "buildings"}
+)
 # The layers whose nodes the importer reads; layer 1 is the mesh, which spark-dsg keeps apart from the nodes.
 KNOWN_LAYERS = frozenset(LAYER_NAMES)
 
@@ -52,9 +54,7 @@ class SceneGraph:
 
     def on_layer(self, layer: int) -> list[GraphNode]:
         """The layer's nodes (agent poses excluded from the objects), in id order."""
-        return sorted(
-            (n for n in self.nodes.values() if n.layer == layer and not n.is_agent_pose), key=lambda n: n.id
-        )
+        return sorted((n for n in self.nodes.values() if n.layer == layer and not n.is_agent_pose), key=lambda n: n.id)
 
     def neighbours(self) -> dict[int, set[int]]:
         found: dict[int, set[int]] = {node: set() for node in self.nodes}
@@ -86,7 +86,9 @@ def check_graph(graph: SceneGraph, ignore_unknown_layers: bool = False) -> Scene
         notes.append(f"left out {len(left)} nodes on layer {shown} (--ignore-unknown-layers)")
     for node in nodes.values():
         if not all(math.isfinite(value) for value in node.position):
-            raise SceneGraphError(f"node {node.symbol} has a position that is not finite: {node.position}", path=graph.source)
+            raise SceneGraphError(
+                f"node {node.symbol} has a position that is not finite: {node.position}", path=graph.source
+            )
     edges = []
     for a, b in graph.edges:
         if a in nodes and b in nodes:
@@ -96,4 +98,6 @@ def check_graph(graph: SceneGraph, ignore_unknown_layers: bool = False) -> Scene
         else:
             missing = a if a not in graph.nodes else b
             raise SceneGraphError(f"an edge names node {missing}, which the graph does not have", path=graph.source)
-    return SceneGraph(graph.source, MappingProxyType(nodes), tuple(edges), graph.label_names, graph.coarse_label_names, tuple(notes))
+    return SceneGraph(
+        graph.source, MappingProxyType(nodes), tuple(edges), graph.label_names, graph.coarse_label_names, tuple(notes)
+    )

@@ -69,7 +69,9 @@ def import_scene(graph: SceneGraph, goals: Sequence[str], options: ImportOptions
     atoms = [goal for goal in goals if is_atoms(goal)]
     for goal in atoms:
         _check_one_list(goal)
-    resolutions = tuple(resolve_words(goal, scene, vocabulary, options.goal_floor) for goal in goals if not is_atoms(goal))
+    resolutions = tuple(
+        resolve_words(goal, scene, vocabulary, options.goal_floor) for goal in goals if not is_atoms(goal)
+    )
     if any(r.atom is None for r in resolutions):
         return ImportResult(scene, resolutions)
     body = " ".join([f"({' '.join(r.atom)})" for r in resolutions if r.atom] + [goal.strip() for goal in atoms])
@@ -98,7 +100,9 @@ def _check_problem(text: str) -> None:
         raise UsageError(f"--goal: {error.message}") from None
 
 
-def sidecar_of(scene: ImportedScene, graph: SceneGraph, resolutions: Sequence[GoalResolution], atoms: Sequence[str]) -> dict[str, Any]:
+def sidecar_of(
+    scene: ImportedScene, graph: SceneGraph, resolutions: Sequence[GoalResolution], atoms: Sequence[str]
+) -> dict[str, Any]:
     """The sidecar: every PDDL object's graph node, how each label became a class, how each goal was read."""
     return {
         "scene_graph": {
@@ -114,14 +118,20 @@ def sidecar_of(scene: ImportedScene, graph: SceneGraph, resolutions: Sequence[Go
 
 
 def _sha256(path: str) -> str | None:
+    digest = hashlib.sha256()
     try:
         with open(path, "rb") as stream:
-            return hashlib.file_digest(stream, "sha256").hexdigest()
+            for chunk in iter(lambda: stream.read(1 << 20), b""):
+                digest.update(chunk)
     except OSError:
         return None
+    return digest.hexdigest()
 
 
 def binary_graph(data: bytes, source: str, options: ImportOptions = ImportOptions()) -> SceneGraph:
     if len(data) > options.max_bytes:
-        raise SceneGraphError(f"a graph of {len(data) / 2**20:.0f} MiB, more than the {options.max_bytes / 2**20:.0f} MiB this reads", path=source)
+        raise SceneGraphError(
+            f"a graph of {len(data) / 2**20:.0f} MiB, more than the {options.max_bytes / 2**20:.0f} MiB this reads",
+            path=source,
+        )
     return check_graph(graph_from_binary(data, source), options.ignore_unknown_layers)

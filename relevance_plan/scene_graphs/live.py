@@ -111,7 +111,9 @@ class GraphSession:
     session's report, the update's number and the graph nodes of the objects it names), then the update's
     own line (how many events, or its error)."""
 
-    def __init__(self, goals: Sequence[str], options: Any, scoring: Any, plan_options: Any = None, plan_in_loop: bool = False):
+    def __init__(
+        self, goals: Sequence[str], options: Any, scoring: Any, plan_options: Any = None, plan_in_loop: bool = False
+    ):
         from relevance_plan.scene_graphs.classes import NO_MAPPING, load_vocabulary, read_label_mapping
 
         self.goals = tuple(goals)
@@ -157,14 +159,20 @@ class GraphSession:
         from relevance_plan.session import Session
 
         result = import_scene(graph, self.goals, self.options, "live")
-        if result.questions:
+        if result.questions or result.text is None:
             return {**head, "error": "; ".join(result.questions)}
         self.session = Session(
             str(DOMAIN_FILE), result.text, self.scoring, plan_options=self.plan_options, plan_in_loop=self.plan_in_loop
         )
         self.scene = result.scene
         goals = [r.as_json() for r in result.resolutions]
-        return {**head, "started": True, "objects": len(result.scene.objects), "goals": goals, "kept": sorted(self.session.kept)}
+        return {
+            **head,
+            "started": True,
+            "objects": len(result.scene.objects),
+            "goals": goals,
+            "kept": sorted(self.session.kept),
+        }
 
     def _answer(self, event: dict[str, Any], number: int, scene: ImportedScene) -> dict[str, Any]:
         report = self.session.handle(event).to_json()

@@ -27,12 +27,12 @@ from types import MappingProxyType
 
 from relevance_plan.errors import SceneGraphError
 from relevance_plan.scene_graphs.classes import (
-    GENERIC_ROOM,
     DEFAULT_FLOOR,
+    GENERIC_ROOM,
+    NO_MAPPING,
     Kind,
     LabelMapping,
     LabelQuery,
-    NO_MAPPING,
     Placement,
     Vocabulary,
     place_labels,
@@ -158,7 +158,9 @@ def _label_query(graph: SceneGraph, mapping: LabelMapping, layer: int, label: in
     return LabelQuery(word, label, name, graph.coarse_label_names.get(layer, {}).get(label))
 
 
-def _placements(graph: SceneGraph, vocabulary: Vocabulary, mapping: LabelMapping, floor: float) -> tuple[Placement, ...]:
+def _placements(
+    graph: SceneGraph, vocabulary: Vocabulary, mapping: LabelMapping, floor: float
+) -> tuple[Placement, ...]:
     queries = []
     for layer in (OBJECTS, ROOMS):
         labels = sorted({n.label for n in graph.on_layer(layer)}, key=lambda label: (label is None, label or 0))
@@ -178,8 +180,8 @@ def _add_rooms(graph: SceneGraph, built: _Building, chosen: dict, neighbours: di
         built.facts.add(("room-is", NO_ROOM, GENERIC_ROOM))
         built.notes.append("the graph has no rooms: every place is in one room, no_room")
     room_of = _rooms_of_places(graph, built, neighbours, rooms)
-    for place, room in room_of.items():
-        built.facts.add(("in-room", built.names[place], room))
+    for place, room_name in room_of.items():
+        built.facts.add(("in-room", built.names[place], room_name))
 
 
 def _rooms_of_places(
@@ -326,20 +328,26 @@ def _named_place(graph: SceneGraph, built: _Building, start: str) -> str:
         name = built.names[node.id]
         if wanted in (name, node.symbol.lower(), str(node.id)):
             return name
-    raise SceneGraphError(f"--start: no place '{start}' in the graph (give a place's name, symbol or node id)", path=graph.source)
+    raise SceneGraphError(
+        f"--start: no place '{start}' in the graph (give a place's name, symbol or node id)", path=graph.source
+    )
 
 
 def _add_classes(built: _Building, vocabulary: Vocabulary) -> dict[str, Kind]:
     """The class objects of the classes present, and the class facts the scene already makes true."""
     kinds: dict[str, Kind] = {}
-    for name, ref in list(built.refs.items()):
+    for ref in list(built.refs.values()):
         if ref.class_name is not None:
             entry = vocabulary.rooms.get(ref.class_name) if ref.layer == "rooms" else vocabulary.things[ref.class_name]
             kinds[pddl_word(ref.class_name)] = entry.kind if entry is not None else Kind.ROOM
     for class_name in sorted(kinds):
         if class_name in built.objects:
             raise SceneGraphError(f"class '{class_name}' has the name of another object", path=None)
-        built.add(class_name, "class", NodeRef(None, None, "classes", class_name=class_name, note=_labels_of(built, class_name)))
+        built.add(
+            class_name,
+            "class",
+            NodeRef(None, None, "classes", class_name=class_name, note=_labels_of(built, class_name)),
+        )
     is_a = {fact[1]: fact[2] for fact in built.facts if fact[0] in ("is-a", "room-is")}
     room = {fact[1]: fact[2] for fact in built.facts if fact[0] == "in-room"}
     at = {fact[1]: fact[2] for fact in built.facts if fact[0] == "at"}
@@ -353,7 +361,11 @@ def _add_classes(built: _Building, vocabulary: Vocabulary) -> dict[str, Kind]:
 
 def _labels_of(built: _Building, class_name: str) -> str:
     labels = sorted(
-        {f"{ref.layer} {ref.label}" for ref in built.refs.values() if ref.label is not None and pddl_word(ref.class_name or "") == class_name}
+        {
+            f"{ref.layer} {ref.label}"
+            for ref in built.refs.values()
+            if ref.label is not None and pddl_word(ref.class_name or "") == class_name
+        }
     )
     return "labels " + ", ".join(labels) if labels else ""
 

@@ -33,8 +33,13 @@ def changed(change) -> bytes:
 
 
 def _dangling(graph: dict) -> None:
-    graph["edges"].append({"info": {"type": "EdgeAttributes", "weight": 1.0, "weighted": True}, "source": 12345,
-                           "target": graph["nodes"][10]["id"]})
+    graph["edges"].append(
+        {
+            "info": {"type": "EdgeAttributes", "weight": 1.0, "weighted": True},
+            "source": 12345,
+            "target": graph["nodes"][10]["id"],
+        }
+    )
 
 
 def _layer_seven(graph: dict) -> None:
@@ -147,8 +152,8 @@ SCENARIOS = [_bad_graph(label, make) for label, make in BAD_GRAPHS.items()] + [
     ),
     Scenario(
         "scene-graphs/zmq-publisher-sends-garbage-then-stops",
-        shell="${TOOL%% *} pub.py G.json > /dev/null & $TOOL scene-graph watch --zmq ipc://zmq.sock --idle-timeout 3 --labels L.yaml"
-        " --goal '" + GOAL + "'; wait",
+        shell="${TOOL%% *} pub.py G.json > /dev/null & $TOOL scene-graph watch --zmq ipc://zmq.sock --idle-timeout 3"
+        " --labels L.yaml --goal '" + GOAL + "'; wait",
         setup=files(G_dot_json=lambda: APARTMENT.read_bytes(), L_dot_yaml=LABELS, pub_dot_py=PUBLISHER),
         writes=("zmq.sock",),
         check=_stream_survives,
