@@ -349,3 +349,37 @@ def test_the_zmq_stream_of_a_local_publisher_feeds_the_session(tmp_path):
     errors = [a[-1] for a in answers if a[-1].get("error")]
     assert len(errors) == 1 and "binary update" in errors[0]["error"]
     assert live.session.kept == prune_kept(paths[2], ["(class-on cup table)"], ImportOptions(start="p(0)"))
+
+
+# --------------------------------------------------------------------------- the documented commands
+
+
+@pytest.mark.planner
+def test_the_commands_of_the_scene_graph_page_run_as_written(tmp_path):
+    import shlex
+    import shutil
+    import subprocess
+    import sys
+
+    from test_documented_commands import code_blocks
+
+    shutil.copytree(CORPUS, tmp_path / "benchmarks" / "corpus" / "spark-dsg" / "scene-graphs")
+    shutil.copytree(APARTMENT_LABELS.parent, tmp_path / "examples" / "scene-graphs")
+    lines = "\n".join(code_blocks(REPO / "docs" / "scene-graphs.md", "bash")).replace("\\\n", " ").splitlines()
+    outputs = {}
+    for line in filter(None, map(str.strip, lines)):
+        words = shlex.split(line)
+        assert words[0] == "relevance-plan", line
+        done = subprocess.run(
+            [sys.executable, "-m", "relevance_plan", *words[1:]],
+            cwd=tmp_path,
+            capture_output=True,
+            text=True,
+            timeout=600,
+        )
+        assert done.returncode == 0, f"{line}\n{done.stderr}"
+        outputs[" ".join(words[1:3])] = outputs.get(" ".join(words[1:3]), "") + done.stdout
+    assert "-> (class-in-room towel kitchen)" in outputs["scene-graph import"]
+    assert "graph node O(84)" in outputs["score out/apartment/domain.pddl"]
+    updates = [json.loads(line) for line in outputs["scene-graph watch"].splitlines()]
+    assert updates[0]["started"] is True and updates[-1]["events"] == 0
