@@ -26,10 +26,14 @@ from relevance_plan.cli.common import (
     scoring_options,
     take_plan_options,
 )
+from relevance_plan.cli.numbers import Number
 from relevance_plan.cli.paths import own_command_path_checks
 from relevance_plan.exitcodes import ExitCode
 
 OUTPUT_FILES = ("domain.pddl", "problem.pddl", "problem.json")
+SIMILARITY = Number(float, 0.0, 1.0, what="a similarity")
+GRAPH_MEGABYTES = Number(float, 0.0, 65536.0, above=True, what="megabytes")
+IDLE_SECONDS = Number(float, 0.0, 86400.0, above=True, what="seconds")
 
 
 def import_options(command):
@@ -57,19 +61,19 @@ def import_options(command):
             ),
             click.option(
                 "--class-floor",
-                type=click.FloatRange(0, 1),
+                type=SIMILARITY,
                 default=None,
                 help="Least similarity for placing a label under a class (default 0.55).",
             ),
             click.option(
                 "--goal-floor",
-                type=click.FloatRange(0, 1),
+                type=SIMILARITY,
                 default=None,
                 help="Least similarity for reading a goal's words as a class (default 0.45).",
             ),
             click.option(
                 "--max-graph-mb",
-                type=click.FloatRange(0.001, 65536),
+                type=GRAPH_MEGABYTES,
                 default=64,
                 show_default=True,
                 help="Refuse a graph file (or update) larger than this.",
@@ -193,7 +197,7 @@ def _targets(out_dir: str, graph_path: str) -> list[Path]:
 )
 @click.option(
     "--idle-timeout",
-    type=click.FloatRange(0.01, 86400),
+    type=IDLE_SECONDS,
     default=10.0,
     show_default=True,
     help="With --zmq: end the session when no update came for this many seconds.",
