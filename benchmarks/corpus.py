@@ -137,6 +137,13 @@ def known_unreadable(root: Path | None = None) -> dict[str, str]:
     return {entry["folder"]: entry["error"] for entry in manifest(root).get("known_unreadable", [])}
 
 
+def scene_graph_files(root: Path | None = None) -> dict[str, Path]:
+    """The scene graphs of the corpus (the manifest's ``scene_graphs`` section, not PDDL): file name -> path."""
+    root = root or corpus_root()
+    section = manifest(root).get("scene_graphs", {})
+    return {Path(e["path"]).name: root / e["path"] for e in section.get("files", []) if e.get("role") == "scene-graph"}
+
+
 def _sha256(path: Path) -> str:
     digest = hashlib.sha256()
     with open(path, "rb") as stream:
@@ -151,7 +158,8 @@ def mismatches(root: Path | None = None) -> list[str]:
     data = manifest(root)
     problems: list[str] = []
     listed: set[str] = set()
-    for entry in data["files"]:
+    scene_graphs = data.get("scene_graphs", {})
+    for entry in data["files"] + scene_graphs.get("files", []):
         relative = entry.get("path", "")
         listed.add(relative)
         path = root / relative
@@ -169,6 +177,10 @@ def mismatches(root: Path | None = None) -> list[str]:
         roles = {entry.get("role") for entry in data["files"] if entry.get("folder") == relative}
         if not {"domain", "problem"} <= roles:
             problems.append(f"{relative}: the manifest gives this folder no domain or no problem")
+    graph_sets = {entry["path"] for entry in scene_graphs.get("sets", [])}
+    for entry in scene_graphs.get("files", []):
+        if entry.get("role") == "scene-graph" and entry.get("folder") not in graph_sets:
+            problems.append(f"{entry.get('path')}: its folder is not among the manifest's scene-graph sets")
     for path in sorted(p for p in root.rglob("*") if p.is_file() or p.is_symlink()):
         relative = path.relative_to(root).as_posix()
         if relative not in listed and relative not in OWN_FILES:
@@ -183,7 +195,13 @@ def summary(root: Path | None = None) -> dict:
     for entry in data["folders"]:
         tracks[entry["track"]] = tracks.get(entry["track"], 0) + 1
     counts = {"files": len(data["files"]), "domains": len(data["folders"]), "tracks": dict(sorted(tracks.items()))}
-    return {**counts, "sets": len(data.get("sets", []))}
+    graphs = data.get("scene_graphs", {})
+    return {
+        **counts,
+        "sets": len(data.get("sets", [])),
+        "scene_graph_sets": len(graphs.get("sets", [])),
+        "scene_graph_files": len(graphs.get("files", [])),
+    }
 
 
 def _verify(args: argparse.Namespace) -> int:

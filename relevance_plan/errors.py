@@ -106,3 +106,7 @@ class StoreError(RelevancePlanError):
 
 class SchedulerError(RelevancePlanError):
     """A Dask scheduler that cannot be reached."""
+
+
+class SceneGraphError(InputFileError):
+    """A scene graph (Hydra JSON, a binary update, a Matterport3D house) that cannot be read or imported."""

@@ -18,8 +18,16 @@ from relevance_plan.exitcodes import ExitCode
 
 
 def _commands() -> dict[str, click.Command]:
+    """Every command the user runs: a group's (``scene-graph``) as ``group sub``."""
     context = click.Context(main)
-    return {name: main.get_command(context, name) for name in main.list_commands(context)}
+    found = {}
+    for name in main.list_commands(context):
+        command = main.get_command(context, name)
+        if isinstance(command, click.Group):
+            found.update({f"{name} {sub}": command.commands[sub] for sub in command.commands})
+        else:
+            found[name] = command
+    return found
 
 
 def _numeric_options() -> list[tuple[str, click.Parameter]]:
@@ -47,6 +55,8 @@ def arguments(tmp_path):
         "demo": ["--workdir", tmp_path / "demo"],
         "learn": [COFFEE_DOMAIN, problem, "-o", tmp_path / "m.json"],
         "validate": [COFFEE_DOMAIN, problem, problem],
+        "scene-graph import": [problem, "-o", tmp_path / "out", "--goal", "(x)"],
+        "scene-graph watch": [problem, "--goal", "(x)"],
     }
 
 
@@ -68,7 +78,7 @@ def test_no_numeric_option_takes_a_number_out_of_its_range(name, param, argument
     option = max(param.opts, key=len)
     before = sorted(tmp_path.rglob("*"))
     for value in values:
-        code, _, stderr = run(name, *arguments[name], option, value)
+        code, _, stderr = run(*name.split(), *arguments[name], option, value)
         assert code == ExitCode.USAGE, f"{name} {option} {value}: {stderr}"
         assert option in one_line_error(stderr)
     assert sorted(tmp_path.rglob("*")) == before

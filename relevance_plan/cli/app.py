@@ -65,6 +65,7 @@ LAZY_COMMANDS = {
     "learn": "relevance_plan.cli.batch",
     "validate": "relevance_plan.cli.validate",
     "draft-model": "relevance_plan.cli.draft",
+    "scene-graph": "relevance_plan.cli.scene_graph",
 }
 
 
@@ -341,8 +342,11 @@ def plan(domain_path, problem_path, method, plan_file, keep_work, race, as_json,
         check_keep_directory(keep_work, (domain_path, problem_path, plan_file))
     result = _plan_within_timeout(domain_path, problem_path, options, quiet or as_json, keep_work)
     numbered = write_plan_files(result, plan_file) if result.status is PlanStatus.SOLVED else []
+    nodes = _plan_nodes(problem_path, result, plan_file, to_stdout)
     if as_json:
         data = result.to_json()
+        if nodes is not None:
+            data["plan_nodes"] = nodes
         data["plan_file"] = str(plan_file) if result.status is PlanStatus.SOLVED else None
         data["plan_files"] = numbered
         understood = result.selection.scores.understood if result.selection is not None else ()
@@ -351,11 +355,29 @@ def plan(domain_path, problem_path, method, plan_file, keep_work, race, as_json,
     else:
         # With the plan on stdout, the summary goes to stderr.
         _print_plan_summary(result, plan_file, err=to_stdout)
+        if nodes is not None and not to_stdout:
+            click.echo(f"graph nodes: {plan_file}.nodes.json (each step's arguments as scene-graph nodes)")
     code = exit_code_for_status(result.status.value)
     if code is not ExitCode.SUCCESS:
         if not as_json:
             click.echo(f"relevance-plan: {result.status.value}: {result.message}", err=True)
         sys.exit(int(code))
+
+
+def _plan_nodes(problem_path, result: PlanResult, plan_file, to_stdout: bool) -> list | None:
+    """For a problem imported from a scene graph (its sidecar maps names to graph nodes), the plan in
+    node ids, also written to PLAN_FILE.nodes.json; None for any other problem."""
+    from relevance_plan.scene_graphs.sidecar import plan_in_nodes, read_node_map
+
+    node_map = read_node_map(problem_path) if result.status is PlanStatus.SOLVED else None
+    if node_map is None:
+        return None
+    nodes = plan_in_nodes(node_map, result.plan)
+    if not to_stdout:
+        from relevance_plan.cli.files import write_output
+
+        write_output(Path(f"{plan_file}.nodes.json"), json_text(nodes) + "\n")
+    return nodes
 
 
 # The backstop past --timeout, counted from the tool's start: the loop holds the limit itself; this

@@ -107,7 +107,10 @@ def print_score_table(result: Selection) -> None:
 def why_json(result: Selection, shown: str) -> dict:
     chain = why(result, _object_named(result, shown))
     display = result.task.problem.display
+    node_map = _node_map(result)
+    nodes = {} if node_map is None else {"graph_node": node_map.nodes.get(chain[0].name)}
     return {
+        **nodes,
         "object": display(chain[0].name),
         "class": result.scores.element_class.get(chain[0].name),
         "class_relevance": result.scores.class_score(chain[0].name),
@@ -136,8 +139,20 @@ def print_why(result: Selection, shown: str) -> None:
         f"  R(e) = {first.score:.3f} (tau_e {result.thresholds.tau_element:g})"
         + (f": {explanation}" if explanation else "")
     )
+    node_map = _node_map(result)
+    if node_map is not None:
+        click.echo(f"  {node_map.describe(first.name)}")
     for decision in chain[1:]:
         click.echo(f"  because {display(decision.name)} is kept ({decision.step}): {decision.reason}")
+        if node_map is not None:
+            click.echo(f"    {display(decision.name)}: {node_map.describe(decision.name)}")
+
+
+def _node_map(result: Selection):
+    """The graph nodes of a problem imported from a scene graph (its sidecar), else None."""
+    from relevance_plan.scene_graphs.sidecar import read_node_map
+
+    return read_node_map(result.task.problem.path)
 
 
 def _object_named(result: Selection, shown: str) -> str:
