@@ -175,7 +175,7 @@ def test_closure_restores_blockers_places_and_robot_position(task, model):
     result = prune_with_scores(task, score(task, model), Thresholds(), model)
     reasons = {r.name: r for r in result.restored}
     assert reasons["dinner_plate_1"].rule == "blocker"
-    assert reasons["dinner_plate_1"].reason == "on top of plastic_cup_1 (on dinner_plate_1 plastic_cup_1)"
+    assert reasons["dinner_plate_1"].describe() == "on top of plastic_cup_1 (on dinner_plate_1 plastic_cup_1)"
     assert "dinner_plate_2" in result.removed
     kept_places = {"counter_1", "fridge_1", "table_1"} & result.kept
     assert kept_places == {"counter_1", "fridge_1", "table_1"}
