@@ -103,7 +103,7 @@ def _dropped(selection: Selection, name: str, value: float, explanation: str) ->
     task, scores, thresholds = selection.task, selection.scores, selection.thresholds
     if name in selection.set_aside:
         why = (
-            "something stands on it and a free object of its class is kept"
+            "blocked (a fact naming it must be undone before it can be used) and a free object of its class is kept"
             if scores.scorer == "model"
             else "one of many candidates for its role, and a relaxed plan needs others"
         )
