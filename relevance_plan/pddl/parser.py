@@ -437,6 +437,9 @@ class _Reader:
 # --------------------------------------------------------------------------- domains
 
 
+_SPELLED_IN_DOMAINS = ("actions", "predicates", "types", "constants")  # ``Spelling``'s tables a domain fills
+
+
 @dataclass
 class _DomainParts:
     requirements: frozenset[str] = frozenset()
@@ -455,10 +458,10 @@ class _DomainParts:
         self.written[kind].setdefault(name.lower(), name)
 
     def spelling(self) -> Spelling:
-        return Spelling(**{kind: frozen(names) for kind, names in self.written.items()})
-
-
-_SPELLED_IN_DOMAINS = ("actions", "predicates", "types", "constants")
+        # a name first written in lower case needs no entry: it is shown as the model holds it
+        return Spelling(
+            **{kind: frozen({k: v for k, v in names.items() if k != v}) for kind, names in self.written.items()}
+        )
 
 
 def read_domain(text: str, path: str | None = None, deadline: float | None = None) -> Domain:
@@ -1009,7 +1012,8 @@ def _read_objects(
         if lowered in objects or lowered in domain.constants:
             reader.fail(f"object '{symbol.text}' is declared twice", symbol)
         objects[lowered] = type_name
-        display[lowered] = symbol.text
+        if symbol.text != lowered:  # a name written in lower case is shown as the model holds it
+            display[lowered] = symbol.text
     return objects, display, tuple(groups)
 
 
