@@ -99,10 +99,11 @@ def test_the_class_table_keeps_a_class_when_the_element_table_keeps_one_of_its_o
 
 
 def test_insufficient_cues_are_said_once_on_stderr(coffee):
-    result = invoke("score", COFFEE_DOMAIN, coffee, "--objective", "drink-at-break")
-    assert result.exit_code == ExitCode.INSUFFICIENT_CUES
-    assert result.stdout == ""
-    assert "insufficient cues: objective ambiguous" in one_line_error(result.stderr)
+    for why in ((), ("--why", "paper_cup_1")):
+        result = invoke("score", COFFEE_DOMAIN, coffee, "--objective", "drink-at-break", *why)
+        assert result.exit_code == ExitCode.INSUFFICIENT_CUES
+        assert result.stdout == "", why
+        assert "insufficient cues: objective ambiguous" in one_line_error(result.stderr)
 
 
 def test_the_summary_counts_what_each_step_kept(coffee):

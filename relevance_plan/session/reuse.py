@@ -301,7 +301,9 @@ def _relaxed_inputs(basis: SelectionBasis, scene: LiveScene, changes: EventChang
         own |= {atom[0] for atom in delta.removed if len(atom) == 2 and atom[1] == name}
         for predicate, guarded in guards:
             if predicate not in own and domain.is_subtype(type_name, guarded):
-                return f"{changes.show(name)} changes whether every {guarded} holds ({predicate} ...)"
+                spelling = changes.spelling
+                every = f"every {spelling.type(guarded)} holds ({spelling.predicate(predicate)} ...)"
+                return f"{changes.show(name)} changes whether {every}"
     return ""
 
 
@@ -317,7 +319,7 @@ def _closure_rules(basis: SelectionBasis, scene: LiveScene, changes: EventChange
         for predicate, key, _ in index.functional ^ basis.functional:
             for name in repair.objects:
                 if any(atom[1 + key] == name for atom in index.facts_of(name, predicate)):
-                    return f"closure's rules for {predicate} changed"
+                    return f"closure's rules for {changes.spelling.predicate(predicate)} changed"
     return ""
 
 
@@ -336,7 +338,7 @@ def _ranked_links(basis: SelectionBasis, scene: LiveScene, changes: EventChanges
     for atom in delta.atoms:
         for position in range(len(atom) - 1):
             if basis.fan_sides.get((atom[0], position), True) != _followed(index, atom[0], position):
-                return f"the links of {atom[0]} changed shape"
+                return f"the links of {changes.spelling.predicate(atom[0])} changed shape"
     for atom in delta.atoms:
         for name in dict.fromkeys(atom[1:]):
             if not links.walked(name):
@@ -362,7 +364,7 @@ def _read_objects(basis: SelectionBasis, scene: LiveScene, changes: EventChanges
             return f"the reachability repair read {changes.show(name)}"
     for name in (*delta.objects_added, *delta.objects_removed):
         if changes.type_of(scene, name) in repair.classes:
-            return f"the reachability repair compared every {changes.type_of(scene, name)}"
+            return f"the reachability repair compared every {changes.spelling.type(changes.type_of(scene, name))}"
     if changes.scores is None:
         return "every score may have changed"
     for name in sorted(changes.scores):
