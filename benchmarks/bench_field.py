@@ -356,7 +356,11 @@ def _first_selection(entry: SuiteProblem, timeout: float) -> dict:
         return {"error": type(error).__name__}
     return {
         "kept": sorted(selection.kept),
-        "restored": [[item.name, item.reason] for item in selection.restored],
+        # ``describe``, or an older checkout's ``reason``: the fact, spelled as the problem writes it
+        "restored": [
+            [item.name, item.describe(task.problem.spelling) if hasattr(item, "describe") else item.reason]
+            for item in selection.restored
+        ],
         "seconds": round(time.monotonic() - started, 2),
     }
 

@@ -129,10 +129,17 @@ def fresh_determination(session: Session, text: str) -> tuple[float, dict]:
     shown = {
         "kept": sorted(problem.display(n) for n in first.kept),
         "relevant": sorted(problem.display(n) for n in relevance.selected),
-        "restored": [{"object": problem.display(r.name), "reason": r.reason} for r in first.restored],
+        "restored": [{"object": problem.display(r.name), "reason": _reason(r, problem)} for r in first.restored],
         "removed": len(first.removed),
     }
     return seconds, shown
+
+
+def _reason(restored, shown_by) -> str:
+    """Why closure put an object back, in the spelling of ``shown_by`` (a problem or a report); an
+    older checkout's ``reason``, which had none."""
+    describe = getattr(restored, "describe", None)
+    return describe(shown_by.spelling) if describe is not None else restored.reason
 
 
 def shown_by(report: EventReport) -> dict:
@@ -143,7 +150,7 @@ def shown_by(report: EventReport) -> dict:
     return {
         "kept": report.kept,
         "relevant": report.relevant,
-        "restored": [{"object": report.show(r.name), "reason": r.reason} for r in restored],
+        "restored": [{"object": report.show(r.name), "reason": _reason(r, report)} for r in restored],
         "removed": getattr(report, "removed", removed),
     }
 

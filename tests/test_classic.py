@@ -98,7 +98,7 @@ def test_relaxed_check_rejects_a_set_without_a_vehicle_and_repair_adds_one_with_
     assert "plane" in repaired and not {"pkg2", "pkg3"} & repaired  # other packages are not needed
     assert not relaxed_reachability(task, result.kept - {"plane"}).reachable
     assert reasons["plane"].rule == "reachability"
-    assert reasons["plane"].reason.startswith("used by a relaxed plan to the goal (")
+    assert reasons["plane"].describe().startswith("used by a relaxed plan to the goal (")
 
 
 def test_widening_at_least_doubles_the_kept_set():

@@ -76,6 +76,36 @@ def test_the_sufficiency_check_and_a_dependency_are_named_not_called_closure(tmp
     assert found["toolbox_key_1"][2] == "declared dependency of toolbox_1 (fits toolbox_key_1 toolbox_1)"
 
 
+def test_the_class_table_keeps_a_class_when_the_element_table_keeps_one_of_its_objects():
+    """``kept`` of a class is what the element table says of its objects, in the table and in JSON; a
+    class above tau_c none of whose objects passes tau_e is not kept (the sweeteners of coffee-hard)."""
+    problem = PROBLEMS / "coffee-hard.pddl"
+    data = json.loads(invoke("score", COFFEE_DOMAIN, problem, "--json").stdout)
+    kept_of: dict[str, list[bool]] = {}
+    for name, class_name in data["element_class"].items():
+        kept_of.setdefault(class_name, []).append(data["decisions"][name]["kept"])
+    for class_name, entry in data["classes"].items():
+        objects = kept_of.get(class_name, [])
+        assert entry["kept"] == any(objects), class_name
+        assert (entry["objects_kept"], entry["objects"]) == (sum(objects), len(objects)), class_name
+    assert data["classes"]["sweetener"]["relevance"] > data["tau_class"] and not data["classes"]["sweetener"]["kept"]
+    rows = {}
+    for line in invoke("score", COFFEE_DOMAIN, problem).stdout.split("\n\n")[1].splitlines()[1:]:
+        class_name, _, kept = line.split(maxsplit=2)
+        rows[class_name] = kept
+    assert rows == {
+        c: f"{'yes' if e['kept'] else 'no'} ({e['objects_kept']} of {e['objects']})" for c, e in data["classes"].items()
+    }
+
+
+def test_insufficient_cues_are_said_once_on_stderr(coffee):
+    for why in ((), ("--why", "paper_cup_1")):
+        result = invoke("score", COFFEE_DOMAIN, coffee, "--objective", "drink-at-break", *why)
+        assert result.exit_code == ExitCode.INSUFFICIENT_CUES
+        assert result.stdout == "", why
+        assert "insufficient cues: objective ambiguous" in one_line_error(result.stderr)
+
+
 def test_the_summary_counts_what_each_step_kept(coffee):
     output = invoke("score", COFFEE_DOMAIN, coffee).stdout
     (summary,) = [line for line in output.splitlines() if line.startswith("kept ")]

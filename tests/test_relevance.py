@@ -175,10 +175,65 @@ def test_closure_restores_blockers_places_and_robot_position(task, model):
     result = prune_with_scores(task, score(task, model), Thresholds(), model)
     reasons = {r.name: r for r in result.restored}
     assert reasons["dinner_plate_1"].rule == "blocker"
-    assert reasons["dinner_plate_1"].reason == "on top of plastic_cup_1 (on dinner_plate_1 plastic_cup_1)"
+    assert reasons["dinner_plate_1"].describe() == "on top of plastic_cup_1 (on dinner_plate_1 plastic_cup_1)"
     assert "dinner_plate_2" in result.removed
     kept_places = {"counter_1", "fridge_1", "table_1"} & result.kept
     assert kept_places == {"counter_1", "fridge_1", "table_1"}
+
+
+def test_closure_says_on_top_of_only_where_the_model_s_support_role_names_the_predicate(task, model):
+    """A blocker's fact is read as stacking only when the knowledge model says ``on`` is its support
+    role (the default it documents); without that, the reason is the fact itself."""
+    for scene, expected in (
+        ("", "on top of plastic_cup_1 (on dinner_plate_1 plastic_cup_1)"),
+        ('scene: {support: "on"}\n', "on top of plastic_cup_1 (on dinner_plate_1 plastic_cup_1)"),
+        ("scene: {support: none}\n", "undoing (on dinner_plate_1 plastic_cup_1) frees plastic_cup_1"),
+    ):
+        other = parse_knowledge_model(MODEL + scene, "m.yaml")
+        result = prune_with_scores(task, score(task, other), Thresholds(), other)
+        assert {r.name: r for r in result.restored}["dinner_plate_1"].describe() == expected, scene
+    kept = frozenset({"plastic_cup_1"})
+    _, restored = close_over_constraints(
+        kept, infer_constraint_rules(task.domain, task.init_index), task.init_index, task.problem.objects.keys()
+    )
+    assert {r.name: r for r in restored}["dinner_plate_1"].describe() == (
+        "undoing (on dinner_plate_1 plastic_cup_1) frees plastic_cup_1"  # no model: nothing says it is stacking
+    )
+
+
+BINS_DOMAIN = """(define (domain bins)
+  (:requirements :strips :typing)
+  (:types thing bin)
+  (:predicates (in ?t - thing ?b - bin) (empty ?b - bin) (filled ?b - bin))
+  (:action take-out :parameters (?t - thing ?b - bin)
+    :precondition (in ?t ?b) :effect (and (not (in ?t ?b)) (empty ?b)))
+  (:action fill :parameters (?b - bin) :precondition (empty ?b) :effect (filled ?b)))
+"""
+BINS_MODEL = """
+version: 1
+domain: bins
+scene: {containment: in, support: none, location: none, access: none, human_location: none}
+objectives:
+  fill: {goal_predicates: [filled], tasks: {fill: 1.0}}
+tasks:
+  fill: {bin: 1.0}
+classes:
+  bin: {types: [bin]}
+  thing: {types: [thing]}
+"""
+
+
+def test_closure_says_inside_where_the_model_s_containment_role_names_the_predicate():
+    domain = read_domain(BINS_DOMAIN)
+    problem = read_problem(
+        "(define (problem p) (:domain bins) (:objects ball_1 - thing bin_1 bin_2 - bin)"
+        " (:init (in ball_1 bin_1) (empty bin_2)) (:goal (filled bin_1)))",
+        domain,
+    )
+    task = PlanningTask(domain, problem)
+    model = parse_knowledge_model(BINS_MODEL, "m.yaml")
+    result = prune_with_scores(task, score(task, model), Thresholds(), model)
+    assert {r.name: r.describe() for r in result.restored}["ball_1"] == "inside bin_1 (in ball_1 bin_1)"
 
 
 def test_blocked_alternatives_are_set_aside_when_a_free_one_is_kept(task, model):

@@ -1,5 +1,6 @@
-"""parse -> format -> parse gives an equal model, for every shipped domain and problem and every
-PDDL fixture of the tests, and every domain file of the repository's corpus (benchmarks/corpus)."""
+"""parse -> format -> parse gives an equal model, names spelled as written included, for every shipped
+domain and problem and every PDDL fixture of the tests, and every domain file of the repository's corpus
+(benchmarks/corpus)."""
 
 from __future__ import annotations
 
@@ -8,6 +9,7 @@ from pathlib import Path
 
 import pytest
 from support import WORLDS, coffee_problem
+from test_names_as_written import MAZE_DOMAIN, MAZE_PROBLEM, MIXED_DOMAIN, MIXED_PROBLEM
 
 from relevance_plan.data import DOMAINS_DIR, PROBLEMS_DIR
 from relevance_plan.errors import RelevancePlanError
@@ -56,6 +58,7 @@ def domain_key(domain: Domain) -> tuple:
         domain.actions,
         domain.derived,
         domain.constraints,
+        domain.spelling,  # every name as the user wrote it
     )
 
 
@@ -69,7 +72,7 @@ def problem_key(problem: Problem) -> tuple:
         problem.goal,
         problem.constraints,
         problem.metric,
-        {problem.display(name) for name in problem.objects},
+        problem.spelling,
     )
 
 
@@ -111,9 +114,11 @@ FIXTURES = {
         (BLOCKSWORLD_DOMAIN, blocksworld_problem(20, seed=1)),
         (GRIPPER_DOMAIN, gripper_problem(30)),
         (TEMPORAL_NUMERIC, TEMPORAL_NUMERIC_PROBLEM),
+        (MIXED_DOMAIN, MIXED_PROBLEM),
+        (MAZE_DOMAIN, MAZE_PROBLEM),
         *((domain, make(1)) for domain, make in WORLDS.values()),
     ],
-    ids=["coffee", "blocksworld", "gripper", "temporal-numeric", *WORLDS],
+    ids=["coffee", "blocksworld", "gripper", "temporal-numeric", "mixed-case", "mini-maze", *WORLDS],
 )
 def test_every_test_fixture_round_trips(domain, problem):
     round_trip(domain, problem)

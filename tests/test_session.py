@@ -122,7 +122,7 @@ def test_a_plate_put_on_the_kept_cup_triggers_and_is_restored_by_closure():
     assert report.triggered and "kept plastic_cup_1" in report.reason
     determination = session.determination
     assert determination is not None
-    restored = {r.name: r.reason for r in determination.restored}
+    restored = {r.name: r.describe() for r in determination.restored}
     assert restored["dinner_plate_2"] == "on top of plastic_cup_1 (on dinner_plate_2 plastic_cup_1)"
     # the first selection sets the blocked cup aside while the paper cup stands free; it stays relevant
     assert "plastic_cup_1" in report.dropped and "plastic_cup_1" in report.relevant
@@ -531,7 +531,7 @@ def test_watch_writes_one_line_per_event_and_a_snapshot_prune_agrees_with(tmp_pa
 
     current = tmp_path / "snap" / "current.pddl"
     domain, problem = load_task(COFFEE_DOMAIN, current)
-    assert "Mug_2" in problem.display_names.values()  # the user's spelling
+    assert "Mug_2" in problem.spelling.objects.values()  # the user's spelling
     pruned = read_problem((tmp_path / "snap" / "pruned.pddl").read_text(), domain)
     assert sorted(pruned.display(n) for n in pruned.objects) == kept
     # the session reports as kept the first selection prune writes; relevant is the paper's relevant set

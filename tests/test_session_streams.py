@@ -41,7 +41,9 @@ def fresh_report(session: Session) -> dict:
     return {
         "kept": sorted(problem.display(n) for n in first.kept),
         "relevant": sorted(problem.display(n) for n in scoring.prune(session.options.thresholds).selected),
-        "restored": [{"object": problem.display(r.name), "reason": r.reason} for r in first.restored],
+        "restored": [
+            {"object": problem.display(r.name), "reason": r.describe(problem.spelling)} for r in first.restored
+        ],
         "removed": len(first.removed),
         "set_aside": first.set_aside,
         "scores": scoring.scores,
@@ -54,7 +56,9 @@ def assert_as_fresh(session: Session, report: EventReport, where: str) -> None:
     shown = {
         "kept": report.kept,
         "relevant": report.relevant,
-        "restored": [{"object": report.show(r.name), "reason": r.reason} for r in report.selection.restored],
+        "restored": [
+            {"object": report.show(r.name), "reason": r.describe(report.spelling)} for r in report.selection.restored
+        ],
         "removed": report.removed,
     }
     if report.triggered:

@@ -49,7 +49,7 @@ def test_every_object_a_universal_goal_ranges_over_stays_with_its_reason():
     _, kept_untyped, restored_untyped = first_kept(UNTYPED_LIFT, lift_problem(1, untyped=True))
     assert {f"p{i}" for i in range(12)} <= kept_untyped
     assert not any(name.startswith("j") for name in kept_untyped)  # the guard admits passengers only
-    reasons = {item.name: item.reason for item in restored_untyped if item.rule == "soundness"}
+    reasons = {item.name: item.describe() for item in restored_untyped if item.rule == "soundness"}
     assert reasons and all("the goal quantifies over every object with (passenger ...)" in r for r in reasons.values())
 
 
@@ -79,7 +79,7 @@ def test_a_universal_over_a_negated_atom_keeps_only_the_objects_its_facts_link_t
         holding, others = _holders(task, kept)
         assert holding and holding <= kept  # each could make (forall (?r) (not (inside ?i ?r))) false
         assert not others & kept, seed  # empty, or holding pruned items only: can never
-        reasons = {item.name: item.reason for item in restored if item.rule == "soundness"}
+        reasons = {item.name: item.describe() for item in restored if item.rule == "soundness"}
         assert holding <= reasons.keys() and all("with (inside ...)" in reasons[name] for name in holding)
 
 
@@ -108,7 +108,7 @@ def test_an_effect_over_every_object_that_sets_a_kept_fact_keeps_the_objects_its
         assert {"s0", "s1", "s2"} <= kept  # each can wake the house once the agent steps near it
         assert "z0" not in kept  # near no cell: it can never set (woken)
     task, kept, restored = first_kept(NOISE, noise_problem(0))
-    reasons = [item.reason for item in restored if item.rule == "soundness"]
+    reasons = [item.describe() for item in restored if item.rule == "soundness"]
     assert reasons and all("action 'step'" in reason and "(woken)" in reason for reason in reasons)
 
 

@@ -121,6 +121,6 @@ def test_no_runnable_validator_is_reported_not_guessed(task, monkeypatch):
 def test_plan_format_round_trips_with_user_spelling(task):
     domain, problem = task
     plan = read_plan(COFFEE_PLAN)
-    text = format_plan(plan, problem.display)
+    text = format_plan(plan, problem.spelling)
     assert read_plan(text) == plan
     assert text.rstrip().endswith("; cost = 17")

@@ -194,7 +194,7 @@ def score(domain_path, problem_path, inquiries, why_object, as_json, **values):
     if why_object is not None:
         if as_json:
             click.echo(json_text(why_json(result, why_object)))
-        else:
+        elif scores.sufficient:  # else there is nothing to explain but the error below, said once
             print_why(result, why_object)
         if not scores.sufficient:
             fail(f"insufficient cues: {scores.insufficiency}", ExitCode.INSUFFICIENT_CUES)

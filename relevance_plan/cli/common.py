@@ -421,10 +421,9 @@ def write_plan_files(result: PlanResult, plan_file: str) -> list[str]:
     write_output(plan_file, result.plan_text())
     if names_stdout(plan_file):
         return []
-    display = result.problem.display if result.problem is not None else None
     written = []
     for number, plan in enumerate(result.plans, start=1):
-        written.append(write_output(Path(f"{plan_file}.{number}"), format_plan(plan, display)))
+        written.append(write_output(Path(f"{plan_file}.{number}"), format_plan(plan, result.spelling)))
     return written
 
 

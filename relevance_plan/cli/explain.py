@@ -11,7 +11,7 @@ from __future__ import annotations
 import click
 
 from relevance_plan.errors import UsageError
-from relevance_plan.relevance.decisions import decide, kept_summary, why
+from relevance_plan.relevance.decisions import classes_kept, decide, kept_summary, why
 from relevance_plan.relevance.prune import Selection
 from relevance_plan.relevance.scorers import ScoreResult
 
@@ -21,6 +21,7 @@ def selection_json(result: Selection) -> dict:
     problem = result.task.problem
     scores = result.scores
     decisions = decide(result)
+    classes = classes_kept(result, decisions)
     matches = {match.vocabulary.value: match for match in scores.understood}
     return {
         **result.describe(),
@@ -37,11 +38,8 @@ def selection_json(result: Selection) -> dict:
         "tau_element": result.thresholds.tau_element,
         "selected": [problem.display(n) for n in problem.objects if n in result.selected],
         "scores": {problem.display(n): round(decisions[n].score, 6) for n in scores.element_scores},
-        "classes": {
-            c: {"relevance": round(s, 6), "kept": s > result.thresholds.tau_class}
-            for c, s in scores.class_scores.items()
-        },
-        "element_class": {problem.display(n): c for n, c in scores.element_class.items()},
+        "classes": {c: {"relevance": round(s, 6), **classes[c].as_json()} for c, s in scores.class_scores.items()},
+        "element_class": {problem.display(n): _class_shown(result, c) for n, c in scores.element_class.items()},
         "unknown_class": [problem.display(n) for n in scores.unknown],
         "decisions": {problem.display(n): decision.as_json() for n, decision in decisions.items()},
     }
@@ -71,21 +69,30 @@ def _similarity(match) -> str:
     return shown
 
 
+def _class_shown(result: Selection, class_name: str) -> str:
+    # without class scores, the classes are the objects' PDDL types: shown as the domain spells them
+    return class_name if result.scores.class_scores else result.task.problem.spelling.type(class_name)
+
+
 def print_score_table(result: Selection) -> None:
+    """The class table and the element table; nothing when the cues are insufficient (the command
+    says so once, as its error)."""
     scores = result.scores
     problem = result.task.problem
     if not scores.sufficient:
-        click.echo(f"insufficient cues: {scores.insufficiency}")
         return
     for line in scores_header(scores):
         click.echo(line)
+    decisions = decide(result)
     if scores.class_scores:
+        classes = classes_kept(result, decisions)
         click.echo("")
         click.echo(f"{'class':<18} {'R(C)':>6}  kept")
         for class_name, value in sorted(scores.class_scores.items(), key=lambda i: (-i[1], i[0])):
-            click.echo(f"{class_name:<18} {value:6.3f}  {'yes' if value > result.thresholds.tau_class else 'no'}")
+            kept = classes[class_name]
+            shown = f"{'yes' if kept.any_kept else 'no'} ({kept.kept} of {kept.objects})"
+            click.echo(f"{class_name:<18} {value:6.3f}  {shown}")
     click.echo("")
-    decisions = decide(result)
     width = max((len(problem.display(n)) for n in problem.objects), default=10)
     steps = max((len(d.step) for d in decisions.values()), default=4)
     click.echo(f"{'element':<{width}} {'class':<16} {'R(e)':>6}  {'kept':<8} {'step':<{steps}} why")
@@ -93,7 +100,7 @@ def print_score_table(result: Selection) -> None:
     for name in order:
         decision = decisions[name]
         click.echo(
-            f"{problem.display(name):<{width}} {scores.element_class.get(name, '-'):<16}"
+            f"{problem.display(name):<{width}} {_class_shown(result, scores.element_class.get(name, '-')):<16}"
             f" {decision.score:6.3f}  {decision.status:<8} {decision.step:<{steps}} {decision.reason}"
         )
     click.echo("")
@@ -112,7 +119,7 @@ def why_json(result: Selection, shown: str) -> dict:
     return {
         **nodes,
         "object": display(chain[0].name),
-        "class": result.scores.element_class.get(chain[0].name),
+        "class": _class_of(result, chain[0].name),
         "class_relevance": result.scores.class_score(chain[0].name),
         "relevance": round(chain[0].score, 6),
         "explanation": result.scores.explanations.get(chain[0].name, ""),
@@ -127,7 +134,7 @@ def print_why(result: Selection, shown: str) -> None:
     scores, display = result.scores, result.task.problem.display
     first = chain[0]
     click.echo(f"{display(first.name)}: {'kept' if first.kept else 'not kept'} ({first.step}): {first.reason}")
-    class_name = scores.element_class.get(first.name)
+    class_name = _class_of(result, first.name)
     if class_name is not None:
         class_score = scores.class_score(first.name)
         shown_class = (
@@ -153,6 +160,11 @@ def _node_map(result: Selection):
     from relevance_plan.scene_graphs.sidecar import read_node_map
 
     return read_node_map(result.task.problem.path)
+
+
+def _class_of(result: Selection, name: str) -> str | None:
+    class_name = result.scores.element_class.get(name)
+    return None if class_name is None else _class_shown(result, class_name)
 
 
 def _object_named(result: Selection, shown: str) -> str:

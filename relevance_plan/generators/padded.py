@@ -249,7 +249,7 @@ def _with_clones(problem: Problem, clones: dict[str, str], changing: frozenset[s
         for name in dict.fromkeys(term[1:] if term is not None else ()):
             timed_index.setdefault(name, []).append(literal)
     objects = dict(problem.objects)
-    display = dict(problem.display_names)
+    display = dict(problem.spelling.objects)
     order = {atom: number for number, atom in enumerate(facts)}
     numeric = dict(problem.numeric_init)
     timed = list(problem.timed_literals)
@@ -273,7 +273,7 @@ def _with_clones(problem: Problem, clones: dict[str, str], changing: frozenset[s
         init=frozenset(order),
         text="",
         path=None,
-        display_names=frozen(display),
+        spelling=problem.spelling.with_objects(frozen(display)),
         numeric_init=frozen(numeric),
         timed_literals=tuple(timed),
         object_groups=(),

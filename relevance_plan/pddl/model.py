@@ -2,16 +2,17 @@
 
 Built by ``parser.py``, written back by ``formatter.py`` (whole files) and
 ``writer.py`` (the user's own file minus pruned objects).  Names are
-lower-cased (PDDL is case-insensitive); a problem keeps the user's spelling
-of every object and the source spans the cutting writer needs.
+lower-cased, since PDDL compares them without case; a ``Spelling`` keeps how
+the user wrote each declared name, for everything the tool shows or writes.
+A problem also keeps the source spans the cutting writer needs.
 """
 
 from __future__ import annotations
 
 from collections.abc import Iterable, Iterator, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields, replace
 from types import MappingProxyType
-from typing import TypeVar
+from typing import Any, TypeVar
 
 from relevance_plan.pddl.formulas import TRUE, Atom, Expression, Formula, GroundAtom, Parameters, names_in
 from relevance_plan.pddl.sexpr import Item, Symbol
@@ -37,6 +38,61 @@ def either_members(type_name: str) -> tuple[str, ...]:
     if type_name.startswith("(either "):
         return tuple(type_name[len("(either ") : -1].split())
     return (type_name,)
+
+
+_NONE: Mapping[str, str] = MappingProxyType({})
+
+
+def _no_names() -> Mapping[str, str]:
+    return _NONE
+
+
+@dataclass(frozen=True, slots=True)
+class Spelling:
+    """How the user wrote each declared name, keyed by the lower-cased name the model compares.
+
+    One table per kind of name, since PDDL lets an object share a predicate's name; the first
+    declaration's spelling is the one kept.  A name no table holds (a variable, a name the tool
+    made) is shown as the model holds it.  The plan writer, the formatter and the explanations
+    show names through this, so a plan or a fact reads as the user's files do.
+    """
+
+    actions: Mapping[str, str] = field(default_factory=_no_names)
+    predicates: Mapping[str, str] = field(default_factory=_no_names)  # and functions: either heads an atom
+    types: Mapping[str, str] = field(default_factory=_no_names)
+    constants: Mapping[str, str] = field(default_factory=_no_names)
+    objects: Mapping[str, str] = field(default_factory=_no_names)  # the problem's
+
+    def action(self, name: str) -> str:
+        return self.actions.get(name, name)
+
+    def predicate(self, name: str) -> str:
+        return self.predicates.get(name, name)
+
+    def type(self, name: str) -> str:
+        if name.startswith("(either "):
+            return "(either " + " ".join(map(self.type, either_members(name))) + ")"
+        return self.types.get(name, name)
+
+    def object(self, name: str) -> str:
+        """An object's or a constant's spelling."""
+        found = self.objects.get(name)
+        return found if found is not None else self.constants.get(name, name)
+
+    def with_objects(self, objects: Mapping[str, str]) -> Spelling:
+        """This spelling (a domain's) with a problem's objects."""
+        return replace(self, objects=objects)
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        # read-only mapping views do not pickle: the tables travel as dicts and are frozen again
+        return (_spelling, tuple(dict(getattr(self, part.name)) for part in fields(self)))
+
+
+def _spelling(*tables: dict[str, str]) -> Spelling:
+    return Spelling(*map(frozen, tables))
+
+
+UNSPELLED = Spelling()  # every name as the model holds it
 
 
 @dataclass(frozen=True, slots=True)
@@ -93,6 +149,7 @@ class Domain:
     function_types: Mapping[str, str] = field(default_factory=dict)  # function -> "number" (no object fluents)
     derived: tuple[DerivedPredicate, ...] = ()
     constraints: Formula | None = None
+    spelling: Spelling = field(default=UNSPELLED, repr=False)  # actions, predicates, functions, types, constants
 
     def ancestors(self, type_name: str) -> tuple[str, ...]:
         """The type itself and every supertype, most specific first."""
@@ -169,7 +226,7 @@ class Problem:
     goal: Formula
     text: str = field(repr=False)
     path: str | None = None
-    display_names: Mapping[str, str] = field(default_factory=dict, repr=False)
+    spelling: Spelling = field(default=UNSPELLED, repr=False)  # its domain's names and its objects
     numeric_init: Mapping[GroundAtom, float] = field(default_factory=dict, repr=False)  # (f, args...) -> value
     timed_literals: tuple[TimedLiteral, ...] = ()
     constraints: Formula | None = None
@@ -181,7 +238,8 @@ class Problem:
     init_order: Mapping[GroundAtom, int] = field(default_factory=dict, repr=False)  # first stated, 0, 1, ...
 
     def display(self, name: str) -> str:
-        return self.display_names.get(name, name)
+        """An object's (or a constant's) name as the user wrote it."""
+        return self.spelling.object(name)
 
     def facts_in_order(self) -> Iterable[GroundAtom]:
         """The initial facts in the order the file first states them (sorted when ``init`` was
@@ -207,8 +265,10 @@ def make_problem(
     display: Mapping[str, str] | None = None,
     numeric_init: Mapping[GroundAtom, float] | None = None,
     metric: Metric | None = None,
+    spelling: Spelling = UNSPELLED,
 ) -> Problem:
-    """A problem built in code (no source text); ``init`` keeps its order when formatted."""
+    """A problem built in code (no source text); ``init`` keeps its order when formatted.  ``display``:
+    the objects' spelling; ``spelling``: the domain's names (``Domain.spelling``)."""
     order: dict[GroundAtom, int] = {}
     for atom in init:
         order.setdefault(tuple(atom), len(order))
@@ -219,7 +279,7 @@ def make_problem(
         init=frozenset(order),
         goal=goal,
         text="",
-        display_names=frozen(display or {}),
+        spelling=spelling.with_objects(frozen(display or {})),
         numeric_init=frozen(numeric_init or {}),
         metric=metric,
         init_order=frozen(order),

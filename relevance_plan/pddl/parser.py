@@ -39,6 +39,7 @@ from relevance_plan.pddl.model import (
     Metric,
     ObjectGroup,
     Problem,
+    Spelling,
     TimedLiteral,
     frozen,
 )
@@ -436,6 +437,9 @@ class _Reader:
 # --------------------------------------------------------------------------- domains
 
 
+_SPELLED_IN_DOMAINS = ("actions", "predicates", "types", "constants")  # ``Spelling``'s tables a domain fills
+
+
 @dataclass
 class _DomainParts:
     requirements: frozenset[str] = frozenset()
@@ -447,6 +451,17 @@ class _DomainParts:
     action_nodes: list[Node] = field(default_factory=list)
     derived_nodes: list[Node] = field(default_factory=list)
     constraint_node: Item | None = None
+    # how each name was first written, by kind (``Spelling``'s tables)
+    written: dict[str, dict[str, str]] = field(default_factory=lambda: {kind: {} for kind in _SPELLED_IN_DOMAINS})
+
+    def spell(self, kind: str, name: str) -> None:
+        self.written[kind].setdefault(name.lower(), name)
+
+    def spelling(self) -> Spelling:
+        # a name first written in lower case needs no entry: it is shown as the model holds it
+        return Spelling(
+            **{kind: frozen({k: v for k, v in names.items() if k != v}) for kind, names in self.written.items()}
+        )
 
 
 def read_domain(text: str, path: str | None = None, deadline: float | None = None) -> Domain:
@@ -479,6 +494,7 @@ def _read_domain(text: str, path: str | None, deadline: float | None) -> Domain:
         if action.name in seen:
             reader.fail(f"action '{action.name}' is defined twice", node)
         seen.add(action.name)
+        parts.spell("actions", _text(node.items[1]))
         actions.append(action)
     derived = tuple(_read_derived(reader, node, scope) for node in parts.derived_nodes)
     constraints = None
@@ -496,6 +512,7 @@ def _read_domain(text: str, path: str | None, deadline: float | None) -> Domain:
         function_types=frozen(parts.function_types),
         derived=derived,
         constraints=constraints,
+        spelling=parts.spelling(),
     )
 
 
@@ -507,18 +524,20 @@ def _read_domain_section(reader: _Reader, section: Item, parts: _DomainParts) ->
     if key == ":requirements":
         parts.requirements = parts.requirements | reader.requirements(body)
     elif key == ":types":
-        _read_types(reader, body, parts.types)
+        _read_types(reader, body, parts)
     elif key == ":constants":
         pairs, _ = reader.typed_list(body, ":constants")
         for symbol, type_name in pairs:
             _check_type(reader, type_name, parts.types, symbol, f"constant '{symbol.text}'", PDDLParseError)
             parts.constants[symbol.text.lower()] = type_name
+            parts.spell("constants", symbol.text)
     elif key == ":predicates":
         for item in body:
             if not isinstance(item, Node) or not item.items:
                 reader.fail("expected '(predicate ?x - type ...)'", item)
             predicate, params = _read_signature(reader, item, "predicate", parts.predicates, parts.types)
             parts.predicates[predicate] = params
+            parts.spell("predicates", _text(item.items[0]))
     elif key == ":functions":
         _read_functions(reader, body, parts)
     elif key in (":action", ":durative-action"):
@@ -556,13 +575,18 @@ def _check_type(
             reader.fail(f"{what} uses unknown type '{member}'", where, error)
 
 
-def _read_types(reader: _Reader, body: list[Item], types: dict[str, str]) -> None:
-    pairs, _ = reader.typed_list(body, ":types")
+def _read_types(reader: _Reader, body: list[Item], parts: _DomainParts) -> None:
+    types = parts.types
+    pairs, groups = reader.typed_list(body, ":types")
     for symbol, parent in pairs:
         name = symbol.text.lower()
         if parent.startswith("(either"):
             parent = "object"  # a type cannot have two parents here; objects of it still match 'object'
         types[name] = parent if name != "object" else ""
+        parts.spell("types", symbol.text)
+    for _, parent_item in groups:
+        if isinstance(parent_item, Symbol):  # a parent only ever named as one: spelled where it is
+            parts.spell("types", parent_item.text.removeprefix("-"))  # '-type' glued, as some domains write it
     for parent in list(types.values()):
         if parent and parent not in types:
             types[parent] = "object"  # a parent used but never declared is a subtype of object
@@ -587,6 +611,7 @@ def _read_functions(reader: _Reader, body: list[Item], parts: _DomainParts) -> N
         name, params = _read_signature(reader, item, "function", parts.functions, parts.types)
         parts.functions[name] = params
         parts.function_types[name] = NUMBER
+        parts.spell("predicates", _text(item.items[0]))
         index += 1
 
 
@@ -877,7 +902,7 @@ def _read_problem_from(
         goal=goal,
         text=text,
         path=path,
-        display_names=frozen(display),
+        spelling=domain.spelling.with_objects(frozen(display)),
         numeric_init=frozen(init.numeric),
         timed_literals=tuple(init.timed),
         constraints=constraints,
@@ -987,7 +1012,8 @@ def _read_objects(
         if lowered in objects or lowered in domain.constants:
             reader.fail(f"object '{symbol.text}' is declared twice", symbol)
         objects[lowered] = type_name
-        display[lowered] = symbol.text
+        if symbol.text != lowered:  # a name written in lower case is shown as the model holds it
+            display[lowered] = symbol.text
     return objects, display, tuple(groups)
 
 

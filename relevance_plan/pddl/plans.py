@@ -9,19 +9,22 @@ Timed (PDDL 2.1; LPG, POPF, OPTIC, TFD and Aries write these)::
 
     0.000: (drive truck1 depot market) [10.000]
 
-Names are lower-cased when read; the writer puts back the user's spelling.
-The reader is linear in the text (no backtracking pattern), refuses lines
+Names are lower-cased when read (PDDL compares them without case, and Fast
+Downward writes them lower-cased); the writer shows every name as the user's
+domain and problem spell it (``Spelling``), the plan a planner found
+included.  The reader is linear in the text (no backtracking pattern), refuses lines
 that are neither a step nor a comment, and stops at ``max_steps``.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 
 from relevance_plan.errors import PlanFormatError
-from relevance_plan.pddl.formatter import format_number
+from relevance_plan.pddl.formatter import format_number, format_step
+from relevance_plan.pddl.model import UNSPELLED, Spelling
 
 MAX_STEPS = 1_000_000
 
@@ -122,22 +125,25 @@ def _read_step(line: str, number: int) -> PlanStep:
     return PlanStep(names[0], tuple(names[1:]), time, duration)
 
 
-def format_plan(plan: Plan | Sequence[PlanStep], display: Callable[[str], str] | None = None) -> str:
-    """The IPC format, object names in the user's spelling; a sequential plan ends with its cost line."""
-    show = display or (lambda name: name)
+def format_plan(plan: Plan | Sequence[PlanStep], spelling: Spelling = UNSPELLED) -> str:
+    """The IPC format, names in ``spelling`` (a problem's: ``Problem.spelling``); a sequential plan ends
+    with its cost line."""
     steps = plan.steps if isinstance(plan, Plan) else tuple(plan)
-    lines = []
-    for step in steps:
-        text = "(" + " ".join([step.action, *(show(arg) for arg in step.args)]) + ")"
-        if step.time is not None:
-            text = f"{_decimals(step.time)}: {text}"
-            if step.duration is not None:
-                text += f" [{_decimals(step.duration)}]"
-        lines.append(text)
+    lines = [format_plan_step(step, spelling) for step in steps]
     cost = plan.cost if isinstance(plan, Plan) else None
     if not any(step.time is not None for step in steps):
         lines.append(f"; cost = {len(steps)} (unit cost)" if cost is None else f"; cost = {format_number(cost)}")
     return "\n".join(lines) + "\n"
+
+
+def format_plan_step(step: PlanStep, spelling: Spelling = UNSPELLED) -> str:
+    """One step's IPC line: ``(action arg ...)``, a timed one with its start and duration."""
+    text = format_step(step.action, step.args, spelling)
+    if step.time is not None:
+        text = f"{_decimals(step.time)}: {text}"
+        if step.duration is not None:
+            text += f" [{_decimals(step.duration)}]"
+    return text
 
 
 def _decimals(value: float) -> str:

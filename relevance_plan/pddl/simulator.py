@@ -48,7 +48,7 @@ from dataclasses import dataclass, field
 
 from relevance_plan.errors import SimulationTimeout, counted
 from relevance_plan.pddl import formulas as f
-from relevance_plan.pddl.formatter import format_formula, format_number
+from relevance_plan.pddl.formatter import format_formula, format_number, format_step
 from relevance_plan.pddl.model import (
     Action,
     DerivedPredicate,
@@ -116,6 +116,11 @@ class Simulator:
         self._condition_quantified: dict[int, bool] = {}
 
     # ---------------------------------------------------------------- bindings
+
+    def step_label(self, number: int, step: PlanStep | None) -> str:
+        """``step 3 (PickUp RedCup Kitchen)``: the step as the user's domain and problem spell its names."""
+        shown = "" if step is None else " " + format_step(step.action, step.args, self.problem.spelling)
+        return f"step {number}{shown}"
 
     def tick(self) -> None:
         self._work += 1
@@ -578,17 +583,18 @@ def _update(op: str, old: float | None, amount: float, key: f.GroundAtom) -> flo
 def why_false(simulator: Simulator, formula: f.Formula, state: State, binding: Mapping[str, str]) -> str:
     """The part of ``formula`` that fails in ``state``, named: the atom that is false (or true, under
     a ``not``), the comparison with its values, the quantifier's failing instance."""
-    shown = format_formula(f.substitute(formula, binding))
+    spelling = simulator.problem.spelling
+    shown = format_formula(f.substitute(formula, binding), spelling)
     if isinstance(formula, f.Atom):
         return f"{shown} is false"
     if isinstance(formula, f.Not) and isinstance(formula.body, f.Atom):
-        return f"{format_formula(f.substitute(formula.body, binding))} is true"
+        return f"{format_formula(f.substitute(formula.body, binding), spelling)} is true"
     if isinstance(formula, f.And):
         for part in formula.parts:
             if not simulator.holds(part, state, binding):
                 return why_false(simulator, part, state, binding)
     if isinstance(formula, f.Imply):
-        return f"{format_formula(f.substitute(formula.condition, binding))} holds, but " + why_false(
+        return f"{format_formula(f.substitute(formula.condition, binding), spelling)} holds, but " + why_false(
             simulator, formula.consequence, state, binding
         )
     if isinstance(formula, f.Comparison):
@@ -600,7 +606,7 @@ def why_false(simulator: Simulator, formula: f.Formula, state: State, binding: M
     if isinstance(formula, f.Forall):
         for inner in simulator.bindings(formula.parameters, binding):
             if not simulator.holds(formula.body, state, inner):
-                instance = ", ".join(f"{name} = {inner[name]}" for name, _ in formula.parameters)
+                instance = ", ".join(f"{name} = {spelling.object(inner[name])}" for name, _ in formula.parameters)
                 return f"{shown} fails for {instance}: {why_false(simulator, formula.body, state, inner)}"
     if isinstance(formula, (f.Timed, f.Preference)):
         return why_false(simulator, formula.body, state, binding)
@@ -718,14 +724,16 @@ def _run_sequential(simulator: Simulator, steps: Sequence[PlanStep]) -> State:
     for number, step in enumerate(steps, start=1):
         action, binding = _bind(simulator, step, number)
         if action.durative:
-            raise StepFailure(f"step {number} {step}: a durative action needs a start time and a duration", number)
+            raise StepFailure(
+                f"{simulator.step_label(number, step)}: a durative action needs a start time and a duration", number
+            )
         try:
             if not simulator.holds(action.precondition, state, binding):
                 unmet = why_false(simulator, action.precondition, state, binding)
                 raise StepFailure(f"precondition not satisfied: {unmet}")
             effects = simulator.effects(action.effect, state, binding)
         except StepFailure as failure:
-            raise StepFailure(f"step {number} {step}: {failure.message}", number) from None
+            raise StepFailure(f"{simulator.step_label(number, step)}: {failure.message}", number) from None
         effects.apply(state)
         simulator.derive(state)
     return state
@@ -734,14 +742,16 @@ def _run_sequential(simulator: Simulator, steps: Sequence[PlanStep]) -> State:
 def _bind(simulator: Simulator, step: PlanStep, number: int) -> tuple[Action, dict[str, str]]:
     action = simulator.domain.action(step.action)
     if action is None:
-        raise StepFailure(f"step {number} {step}: unknown action", number)
+        raise StepFailure(f"{simulator.step_label(number, step)}: unknown action", number)
     if len(step.args) != len(action.parameters):
-        raise StepFailure(f"step {number} {step}: expects {len(action.parameters)} arguments", number)
+        raise StepFailure(f"{simulator.step_label(number, step)}: expects {len(action.parameters)} arguments", number)
     for arg, (_, type_name) in zip(step.args, action.parameters):
         if arg not in simulator.objects:
-            raise StepFailure(f"step {number} {step}: unknown object '{arg}'", number)
+            raise StepFailure(f"{simulator.step_label(number, step)}: unknown object '{arg}'", number)
         if not simulator.domain.is_subtype(simulator.objects[arg], type_name):
-            raise StepFailure(f"step {number} {step}: '{arg}' is not of type {type_name}", number)
+            spelling = simulator.problem.spelling
+            shown = f"'{spelling.object(arg)}' is not of type {spelling.type(type_name)}"
+            raise StepFailure(f"{simulator.step_label(number, step)}: {shown}", number)
     return action, {name: arg for (name, _), arg in zip(action.parameters, step.args)}
 
 
@@ -816,14 +826,14 @@ def _duration(
     if duration is None:
         exact = [c for c in f.conjuncts(action.duration) if isinstance(c, f.Comparison) and c.op == "="]
         if not exact:
-            raise StepFailure(f"step {number} {step}: no duration given", number)
+            raise StepFailure(f"{simulator.step_label(number, step)}: no duration given", number)
         other = exact[0].right if exact[0].left == f.NumericVariable("?duration") else exact[0].left
         duration = simulator.value(other, state, binding)
         _check_duration(simulator, action, step, binding, state, number, duration)
     # A zero duration puts the start and the end in one happening, as VAL does; VAL also takes a
     # negative one, placing the end before the start, which PDDL 2.1 does not allow.
     if duration < 0:
-        raise StepFailure(f"step {number} {step}: duration {duration:g} is negative", number)
+        raise StepFailure(f"{simulator.step_label(number, step)}: duration {duration:g} is negative", number)
     return duration
 
 
@@ -839,7 +849,9 @@ def _check_duration(
     assert action.duration is not None
     for part in f.conjuncts(action.duration):
         if isinstance(part, f.Comparison) and not _duration_fits(simulator, part, duration, state, binding):
-            raise StepFailure(f"step {number} {step}: duration {duration:g} violates its constraint", number)
+            raise StepFailure(
+                f"{simulator.step_label(number, step)}: duration {duration:g} violates its constraint", number
+            )
 
 
 def _duration_fits(
@@ -863,10 +875,8 @@ def _apply_group(simulator: Simulator, state: State, group: list[_Happening], ru
     for i, (first, first_effects, first_reads) in enumerate(found):
         for second, second_effects, second_reads in found[i + 1 :]:
             if first_effects.interferes(first_reads, second_effects, second_reads):
-                raise StepFailure(
-                    f"{_describe(first)} and {_describe(second)} interfere at time {first.time:g}",
-                    first.number or second.number or None,
-                )
+                both = f"{_describe(simulator, first)} and {_describe(simulator, second)}"
+                raise StepFailure(f"{both} interfere at time {first.time:g}", first.number or second.number or None)
     for happening, effects, _ in found:
         effects.apply(state)
         if happening.kind == "start":
@@ -901,7 +911,8 @@ def _happening_effects(
         effects = simulator.effects(action.effect, state, binding, when)
     except StepFailure as failure:
         raise StepFailure(
-            f"step {number} {happening.step} ({_describe(happening)}): {failure.message}", number
+            f"{simulator.step_label(number, happening.step)} ({_describe(simulator, happening)}): {failure.message}",
+            number,
         ) from None
     return effects, _reads(condition, binding)
 
@@ -918,7 +929,8 @@ def _check_invariant(simulator: Simulator, state: State, start: _Happening) -> N
     if invariant.parts and not simulator.holds(invariant, state, binding):
         unmet = why_false(simulator, invariant, state, binding)
         raise StepFailure(
-            f"step {start.number} {start.step}: over all condition broken while it runs: {unmet}", start.number
+            f"{simulator.step_label(start.number, start.step)}: over all condition broken while it runs: {unmet}",
+            start.number,
         )
 
 
@@ -932,7 +944,7 @@ def _reads(condition: f.Node, binding: Mapping[str, str]) -> set[tuple[str, ...]
     return reads
 
 
-def _describe(happening: _Happening) -> str:
+def _describe(simulator: Simulator, happening: _Happening) -> str:
     if happening.kind == "til":
         return "a timed initial literal"
-    return f"the {happening.kind} of step {happening.number} {happening.step}"
+    return f"the {happening.kind} of {simulator.step_label(happening.number, happening.step)}"

@@ -47,6 +47,7 @@ from typing import Any
 from relevance_plan.errors import OutOfTimeError, UnsupportedFeatureError, UsageError, counted
 from relevance_plan.io import load_domain, load_problem, scratch_directory, write_text_atomic
 from relevance_plan.limits import DEFAULT_TIMEOUT, MAX_TIMEOUT
+from relevance_plan.pddl.formatter import format_atom
 from relevance_plan.pddl.model import Problem
 from relevance_plan.pddl.plans import Plan
 from relevance_plan.pddl.sexpr import collection_paused
@@ -696,8 +697,8 @@ def _say_selection(say: Callable[[str], None], selection: Selection, total: int)
 
 def _witness_list(selection: Selection) -> str:
     """``item3_vase for (classrelation vase microwave), ...`` (``Selection.witnesses``)."""
-    show = selection.task.problem.display
-    return ", ".join(f"{show(name)} for ({' '.join(goal)})" for goal, name in selection.witnesses)
+    spelling = selection.task.problem.spelling
+    return ", ".join(f"{spelling.object(name)} for {format_atom(goal, spelling)}" for goal, name in selection.witnesses)
 
 
 def _say_next_witnesses(say: Callable[[str], None], failed: Selection, widened: Selection) -> None:

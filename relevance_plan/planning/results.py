@@ -15,8 +15,8 @@ import enum
 from dataclasses import dataclass, field, replace
 from typing import Any
 
-from relevance_plan.pddl.model import Problem
-from relevance_plan.pddl.plans import Plan, format_plan
+from relevance_plan.pddl.model import UNSPELLED, Problem, Spelling
+from relevance_plan.pddl.plans import Plan, format_plan, format_plan_step
 from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome
 from relevance_plan.planning.planners.registry import DEFAULT_PLANNER
 from relevance_plan.planning.validate import ValidationResult, ValidationStatus
@@ -137,9 +137,14 @@ class PlanResult:
         """How many objects pruning chose for the first pruned attempt (all of them without pruning)."""
         return len(self.selection.kept) if self.selection is not None else self.objects_total
 
+    @property
+    def spelling(self) -> Spelling:
+        """How the user wrote the original problem's names (and its domain's)."""
+        return self.problem.spelling if self.problem is not None else UNSPELLED
+
     def plan_text(self) -> str:
-        """The plan in the IPC format, object names in the user's spelling."""
-        return format_plan(self.plan, self.problem.display if self.problem is not None else None)
+        """The plan in the IPC format, every name in the user's spelling."""
+        return format_plan(self.plan, self.spelling)
 
     @property
     def valid(self) -> bool:
@@ -213,7 +218,7 @@ class PlanResult:
             "raced": self.deciding_side or None,  # deciding_side's old name, still written for one release
             "anytime_plans": [{"plan_length": len(plan), "plan_cost": plan.cost} for plan in self.plans],
             # one IPC line per step: a timed step keeps its start time and duration
-            "plan": [format_plan((s,)).splitlines()[0] for s in self.plan.steps]
+            "plan": [format_plan_step(step, self.spelling) for step in self.plan.steps]
             if self.status is PlanStatus.SOLVED
             else [],
         }

@@ -29,8 +29,9 @@ from dataclasses import dataclass, replace
 from typing import Any
 
 from relevance_plan.errors import SimulationTimeout, UsageError
+from relevance_plan.pddl.formatter import format_step
 from relevance_plan.pddl.formulas import Fluent, Modal, Node, Preference, children
-from relevance_plan.pddl.model import Domain, Problem
+from relevance_plan.pddl.model import UNSPELLED, Domain, Problem, Spelling
 from relevance_plan.pddl.plans import Plan, format_plan
 
 
@@ -207,7 +208,7 @@ def validate_with_val(domain: Domain, problem: Problem, plan: Plan, deadline: fl
         return ValidationResult(
             status=ValidationStatus.UNAVAILABLE, validator="val", message="needs the domain and problem files on disk"
         )
-    result = validate_files_with_val(domain.path, problem.path, plan, deadline)
+    result = validate_files_with_val(domain.path, problem.path, plan, deadline, problem.spelling)
     if result.metric is None:
         return result
     # VAL prints a final value for every valid plan: the metric's, or without one the plan's length
@@ -218,10 +219,11 @@ def validate_with_val(domain: Domain, problem: Problem, plan: Plan, deadline: fl
 
 
 def validate_files_with_val(
-    domain_path: str, problem_path: str, plan: Plan, deadline: float | None
+    domain_path: str, problem_path: str, plan: Plan, deadline: float | None, spelling: Spelling = UNSPELLED
 ) -> ValidationResult:
-    """VAL's verdict; ``metric`` holds the final value VAL printed (the metric's, or the plan's length
-    when the problem states none: the caller who read the problem tells which)."""
+    """VAL's verdict on the plan as written in ``spelling`` (the plan the user gets); ``metric`` holds
+    the final value VAL printed (the metric's, or the plan's length when the problem states none: the
+    caller who read the problem tells which)."""
     from relevance_plan.errors import ValidatorUnavailableError
     from relevance_plan.pddl.simulator import DURATION_TOLERANCE
     from relevance_plan.supervision.val import run_val  # subprocess access lives in supervision
@@ -231,17 +233,17 @@ def validate_files_with_val(
     # of a millisecond; the builtin simulator's tolerance for printed durations is used instead.
     tolerance = DURATION_TOLERANCE if plan.timed else None
     try:
-        run = run_val(domain_path, problem_path, format_plan(plan), timeout=timeout, tolerance=tolerance)
+        run = run_val(domain_path, problem_path, format_plan(plan, spelling), timeout=timeout, tolerance=tolerance)
     except ValidatorUnavailableError as error:
         return ValidationResult(status=ValidationStatus.UNAVAILABLE, validator="val", message=error.message)
-    return read_val_report(run.output, run.exit_code, plan)
+    return read_val_report(run.output, run.exit_code, plan, spelling)
 
 
 _VAL_UNDEFINED = "Attempt to access undefined expression:"
 _VAL_HAPPENING = "Checking next happening (time "
 
 
-def read_val_report(output: str, exit_code: int, plan: Plan) -> ValidationResult:
+def read_val_report(output: str, exit_code: int, plan: Plan, spelling: Spelling = UNSPELLED) -> ValidationResult:
     """VAL's verdict from what ``Validate -v`` printed: valid with its final value, invalid with the
     failing step and why, or unavailable when VAL gave no verdict (it could not read the files, it
     crashed)."""
@@ -258,7 +260,8 @@ def read_val_report(output: str, exit_code: int, plan: Plan) -> ValidationResult
     step = _val_step(lines, plan, time_now)
 
     def invalid(reason: str) -> ValidationResult:
-        where = f"step {step} {plan.steps[step - 1]}: " if step is not None else ""
+        named = plan.steps[step - 1] if step is not None else None
+        where = f"step {step} {format_step(named.action, named.args, spelling)}: " if named is not None else ""
         return ValidationResult(
             status=ValidationStatus.INVALID, validator="val", message=f"{where}{reason} (VAL)", failed_step=step
         )

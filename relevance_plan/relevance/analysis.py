@@ -3,8 +3,9 @@
 Nothing here grounds an action.  Two results feed the rest of the pipeline:
 
 * ``infer_constraint_rules``: which initial facts tie one object to another
-  so tightly that keeping one requires keeping the other (what it stands on,
-  what holds it, what sits on top of it, the robot's only position);
+  so tightly that keeping one requires keeping the other (a fact an action
+  must undo before the kept object can be used, a fact the kept object
+  determines, the robot's only position), read off the schemas, not names;
 * ``analyse_goal``: which types of objects can play a part in reaching the goal,
   found by regressing the goal through the action schemas (the backward
   fixpoint of pyperplan's relevance analysis, done on typed patterns instead
@@ -422,7 +423,7 @@ class ConstraintRule:
     when_kept: int  # 0-based argument position
     restore: int
     kind: str  # "blocker", "anchor", "singleton", "model"
-    reason: str = ""
+    relation: str = ""  # what the knowledge model says a fact of it is ("on top of"); "" when it says nothing
 
 
 def _precondition_predicates(domain: Domain) -> set[str]:
@@ -468,10 +469,10 @@ def infer_constraint_rules(domain: Domain, index: FactIndex) -> tuple[Constraint
     used = _precondition_predicates(domain)
     rules: list[ConstraintRule] = []
     for predicate, blocker, blocked in sorted(blocking_predicates(domain)):
-        rules.append(ConstraintRule(predicate, blocked, blocker, "blocker", "on top of"))
+        rules.append(ConstraintRule(predicate, blocked, blocker, "blocker"))
     for predicate, key, other in sorted(index.functional):
         if predicate in used:
-            rules.append(ConstraintRule(predicate, key, other, "anchor", "holds"))
+            rules.append(ConstraintRule(predicate, key, other, "anchor"))
     return tuple(rules)
 
 

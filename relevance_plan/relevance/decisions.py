@@ -92,7 +92,8 @@ def _decision(selection: Selection, name: str, restored: Mapping[str, Restored])
         return Decision(name, True, THRESHOLDS, explanation, value)
     if name in restored and name in selection.kept:
         item = restored[name]
-        return Decision(name, True, _RESTORING_STEP.get(item.rule, CLOSURE), item.reason, value, item)
+        reason = item.describe(task.problem.spelling)
+        return Decision(name, True, _RESTORING_STEP.get(item.rule, CLOSURE), reason, value, item)
     if name in selection.kept:
         return Decision(name, True, FULL_PROBLEM, selection.unpruned_reason or "the full problem is planned", value)
     return _dropped(selection, name, value, explanation)
@@ -102,7 +103,7 @@ def _dropped(selection: Selection, name: str, value: float, explanation: str) ->
     task, scores, thresholds = selection.task, selection.scores, selection.thresholds
     if name in selection.set_aside:
         why = (
-            "something stands on it and a free object of its class is kept"
+            "blocked (a fact naming it must be undone before it can be used) and a free object of its class is kept"
             if scores.scorer == "model"
             else "one of many candidates for its role, and a relaxed plan needs others"
         )
@@ -133,6 +134,35 @@ def _dropped(selection: Selection, name: str, value: float, explanation: str) ->
 
 def _a(noun: str) -> str:
     return ("an " if noun[:1] in "aeiou" else "a ") + noun
+
+
+@dataclass(frozen=True)
+class ClassKept:
+    """A scored class in ``score``'s class table: kept when one of its objects is kept, by whatever
+    step, so the class table says what the element table says."""
+
+    kept: int  # its objects kept
+    objects: int  # its objects
+
+    @property
+    def any_kept(self) -> bool:
+        return self.kept > 0
+
+    def as_json(self) -> dict[str, Any]:
+        return {"kept": self.any_kept, "objects_kept": self.kept, "objects": self.objects}
+
+
+def classes_kept(selection: Selection, decisions: Mapping[str, Decision] | None = None) -> dict[str, ClassKept]:
+    """Each class the scorer scored, with how many of its objects the decisions keep."""
+    decided = decide(selection) if decisions is None else decisions
+    element_class = selection.scores.element_class
+    counts = {class_name: [0, 0] for class_name in selection.scores.class_scores}
+    for name, decision in decided.items():
+        count = counts.get(element_class.get(name, ""))
+        if count is not None:
+            count[0] += decision.kept
+            count[1] += 1
+    return {class_name: ClassKept(kept, objects) for class_name, (kept, objects) in counts.items()}
 
 
 def kept_summary(selection: Selection) -> str:

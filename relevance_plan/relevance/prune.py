@@ -29,6 +29,7 @@ from collections.abc import Sequence, Set
 from dataclasses import dataclass, field, replace
 from typing import Any
 
+from relevance_plan.pddl.formatter import format_atom
 from relevance_plan.pddl.formulas import GroundAtom
 from relevance_plan.pddl.writer import write_pruned_problem
 from relevance_plan.relevance.closure import ConstraintClosure, Restored
@@ -125,12 +126,18 @@ class Selection:
             "kept": [problem.display(n) for n in problem.objects if n in self.kept],
             "removed": [problem.display(n) for n in self.removed],
             "restored": [
-                {"object": problem.display(r.name), "reason": r.reason, "rule": r.rule, "because_of": r.because_of}
+                {
+                    "object": problem.display(r.name),
+                    "reason": r.describe(problem.spelling),
+                    "rule": r.rule,
+                    "because_of": problem.display(r.because_of) if r.because_of else "",
+                }
                 for r in self.restored
             ],
             "set_aside": [problem.display(n) for n in problem.objects if n in self.set_aside],
             "witnesses": [
-                {"goal": "(" + " ".join(goal) + ")", "object": problem.display(name)} for goal, name in self.witnesses
+                {"goal": format_atom(goal, problem.spelling), "object": problem.display(name)}
+                for goal, name in self.witnesses
             ],
         }
 

@@ -45,7 +45,7 @@ from dataclasses import dataclass
 
 from relevance_plan.pddl import formulas as f
 from relevance_plan.pddl.formatter import format_formula
-from relevance_plan.pddl.model import Domain, Problem
+from relevance_plan.pddl.model import Domain, Problem, Spelling
 
 
 @dataclass(frozen=True)
@@ -53,8 +53,8 @@ class KeptForSoundness:
     """Objects of ``type_name`` (those ``guard`` admits, if any) that a quantifier ranges over."""
 
     type_name: str
-    where: str  # "the goal", "action 'stop'", ...
-    formula: str  # the quantifier, as text (shortened)
+    where: str  # "the goal", "action 'stop'", ... (names as the user wrote them)
+    formula: str  # the quantifier, as text in the user's spelling (shortened)
     guard: str | None = None  # a predicate whose facts name the objects that matter ...
     guard_position: int = 0  # ... at this place among its arguments ...
     linked: bool = False  # ... in a fact whose other objects are kept (the atom's other terms name kept objects)
@@ -62,13 +62,16 @@ class KeptForSoundness:
 
 def soundness_requirements(domain: Domain, problem: Problem) -> tuple[KeptForSoundness, ...]:
     """Every quantifier whose range must stay whole, with where it is (the goal's first)."""
-    return _requirements(_problem_formulas(problem), _never_gained(domain)) + _domain_requirements(domain)
+    problem_part = _requirements(_problem_formulas(problem), _never_gained(domain), problem.spelling)
+    return problem_part + _domain_requirements(domain)
 
 
 @functools.lru_cache(maxsize=16)
 def _domain_requirements(domain: Domain) -> tuple[KeptForSoundness, ...]:
     never_gained = _never_gained(domain)
-    return _requirements(_domain_formulas(domain), never_gained) + _effects_over_others(domain, never_gained)
+    return _requirements(_domain_formulas(domain), never_gained, domain.spelling) + _effects_over_others(
+        domain, never_gained
+    )
 
 
 def _effects_over_others(domain: Domain, never_gained: Callable[[str, int], bool]) -> tuple[KeptForSoundness, ...]:
@@ -77,8 +80,9 @@ def _effects_over_others(domain: Domain, never_gained: Callable[[str, int], bool
     fact once for every object, pruned ones too: each object of the range stays, or only those the
     condition's atoms can admit (see ``_guards``)."""
     found: dict[tuple[str, str | None, int, str], KeptForSoundness] = {}
+    spelling = domain.spelling
     for action in domain.actions:
-        where = f"action '{action.name}'"
+        where = f"action '{spelling.action(action.name)}'"
         effects: list[tuple[f.Formula, tuple[str, ...], f.Formula, f.Parameters]] = [
             (item.atom, item.atom.args, item.condition, item.quantified)
             for item in f.effect_literals(action.effect)
@@ -97,7 +101,7 @@ def _effects_over_others(domain: Domain, never_gained: Callable[[str, int], bool
             bound = _bound_variables(condition) | {variable for variable, _ in quantified}
             guards = _guarding_atoms(settling, {variable for variable, _ in others}, never_gained, bound)
             variables = " ".join(variable for variable, _ in others)
-            text = _short(f"(forall ({variables}) ... {format_formula(effect)})")
+            text = _short(f"(forall ({variables}) ... {format_formula(effect, spelling)})")
             for variable, type_name in others:
                 item = KeptForSoundness(type_name, where, text, *guards.get(variable, (None, 0, False)))
                 found.setdefault((type_name, item.guard, item.guard_position, where), item)
@@ -105,14 +109,16 @@ def _effects_over_others(domain: Domain, never_gained: Callable[[str, int], bool
 
 
 def _requirements(
-    formulas: Iterable[tuple[str, f.Formula, str, f.Parameters]], never_gained: Callable[[str, int], bool]
+    formulas: Iterable[tuple[str, f.Formula, str, f.Parameters]],
+    never_gained: Callable[[str, int], bool],
+    spelling: Spelling,
 ) -> tuple[KeptForSoundness, ...]:
     found: dict[tuple[str, str | None, int, str], KeptForSoundness] = {}
     for where, formula, mode, effect_variables in formulas:
         bound = _bound_variables(formula) | {variable for variable, _ in effect_variables}
         for quantifier, _ in _risky(formula, mode):
             guards = _guards(quantifier, never_gained, bound)
-            text = _short(format_formula(quantifier))
+            text = _short(format_formula(quantifier, spelling))
             for variable, type_name in quantifier.parameters:
                 item = KeptForSoundness(type_name, where, text, *guards.get(variable, (None, 0, False)))
                 found.setdefault((type_name, item.guard, item.guard_position, where), item)
@@ -208,8 +214,9 @@ def _problem_formulas(problem: Problem) -> Iterator[tuple[str, f.Formula, str, f
 def _domain_formulas(domain: Domain) -> Iterator[tuple[str, f.Formula, str, f.Parameters]]:
     if domain.constraints is not None:
         yield "the domain's constraints", domain.constraints, "any", ()
+    spelling = domain.spelling
     for action in domain.actions:
-        where = f"action '{action.name}'"
+        where = f"action '{spelling.action(action.name)}'"
         yield where, action.precondition, "condition", ()
         if action.duration is not None:
             yield where, action.duration, "condition", ()
@@ -220,7 +227,7 @@ def _domain_formulas(domain: Domain) -> Iterator[tuple[str, f.Formula, str, f.Pa
             if condition != f.TRUE:
                 yield where, condition, "any", quantified
     for rule in domain.derived:
-        yield f"derived predicate '{rule.head.predicate}'", rule.body, "any", ()
+        yield f"derived predicate '{spelling.predicate(rule.head.predicate)}'", rule.body, "any", ()
 
 
 def _risky(formula: f.Formula, mode: str) -> Iterator[tuple[f.Exists | f.Forall, bool]]:

@@ -3,11 +3,11 @@
 
 from __future__ import annotations
 
-from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
-from relevance_plan.pddl.plans import Plan
+from relevance_plan.pddl.model import UNSPELLED, Spelling
+from relevance_plan.pddl.plans import Plan, format_plan_step
 from relevance_plan.planning.results import PlanResult, PlanStatus
 from relevance_plan.relevance.prune import Selection
 
@@ -51,7 +51,7 @@ class EventReport:
     seconds: float = 0.0  # trigger check + determination
     made: bool | None = None  # when triggered: whether the first selection was made again (or the one in force held)
     plan: PlanReport | None = None
-    display: Mapping[str, str] = field(default_factory=dict, repr=False)  # object -> the user's spelling
+    spelling: Spelling = field(default=UNSPELLED, repr=False)  # the user's spelling of the names shown
     understood: tuple[WordMatch, ...] = ()  # free text (a cue in words, --objective TEXT) and what it was taken for
 
     @property
@@ -60,7 +60,7 @@ class EventReport:
 
     def show(self, name: str) -> str:
         """An object's name in the user's spelling (a name that left the scene as given)."""
-        return self.display.get(name, name)
+        return self.spelling.object(name)
 
     @property
     def kept(self) -> list[str]:
@@ -99,7 +99,7 @@ class EventReport:
             data["kept"] = self.kept
             data["relevant"] = self.relevant
             restored = self.selection.restored if self.selection is not None else ()
-            data["restored"] = [{"object": self.show(r.name), "reason": r.reason} for r in restored]
+            data["restored"] = [{"object": self.show(r.name), "reason": r.describe(self.spelling)} for r in restored]
             data["removed"] = self.removed
             if self.made is not None:
                 data["selection"] = "made" if self.made else "kept"
@@ -112,7 +112,7 @@ class EventReport:
         data["determination_ms"] = round(self.seconds * 1000, 3)
         if self.plan is not None:
             data["plan_status"] = self.plan.status.value
-            data["plan"] = ["(" + " ".join([s.action, *map(self.show, s.args)]) + ")" for s in self.plan.steps]
+            data["plan"] = [format_plan_step(step, self.spelling) for step in self.plan.steps]
             data["plan_source"] = self.plan.source
             data["plan_message"] = self.plan.message
         return data

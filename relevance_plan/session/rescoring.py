@@ -360,7 +360,8 @@ class LiveGoalScores:
         )
 
     def _neighbours(self) -> dict[str, str]:
-        return goal_neighbours(self.scene.index.by_object, self.goal_objects, self.analysis.relevant_predicates)
+        index, spelling = self.scene.index, self.scene.spelling
+        return goal_neighbours(index.by_object, self.goal_objects, self.analysis.relevant_predicates, spelling)
 
     def _distances(self) -> dict[str, int]:
         """Hops from the goal's objects (``PlanningTask.goal_distance``), found when first needed."""

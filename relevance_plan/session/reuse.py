@@ -36,12 +36,13 @@ within them is kept as found.
 from __future__ import annotations
 
 import functools
-from collections.abc import Callable, Iterable, Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from functools import cached_property
 
+from relevance_plan.pddl.formatter import format_atom
 from relevance_plan.pddl.formulas import Atom, conjuncts, literals
-from relevance_plan.pddl.model import Domain
+from relevance_plan.pddl.model import UNSPELLED, Domain, Spelling
 from relevance_plan.relevance.analysis import (
     ConstraintRule,
     FactIndex,
@@ -229,7 +230,10 @@ class EventChanges:
 
     delta: SceneDelta
     scores: frozenset[str] | None  # objects whose score changed (None: any)
-    show: Callable[[str], str] = str
+    spelling: Spelling = UNSPELLED  # the user's spelling of what the reasons name
+
+    def show(self, name: str) -> str:
+        return self.spelling.object(name)
 
     def type_of(self, scene: LiveScene, name: str) -> str:
         return scene.objects.get(name) or self.delta.removed_types.get(name, "object")
@@ -285,7 +289,7 @@ def _relaxed_inputs(basis: SelectionBasis, scene: LiveScene, changes: EventChang
     static = static_predicates(domain)
     for atom in delta.atoms:
         if len(atom) == 1 or (len(atom) == 2 and atom[0] in static):
-            return f"the relaxed exploration reads {_atom(atom, changes.show)}"
+            return f"the relaxed exploration reads {format_atom(atom, changes.spelling)}"
     if (delta.objects_added or delta.objects_removed) and scene.timed_literals:
         return "timed literals name the objects"
     guards = _type_guards(domain)
@@ -297,7 +301,9 @@ def _relaxed_inputs(basis: SelectionBasis, scene: LiveScene, changes: EventChang
         own |= {atom[0] for atom in delta.removed if len(atom) == 2 and atom[1] == name}
         for predicate, guarded in guards:
             if predicate not in own and domain.is_subtype(type_name, guarded):
-                return f"{changes.show(name)} changes whether every {guarded} holds ({predicate} ...)"
+                spelling = changes.spelling
+                every = f"every {spelling.type(guarded)} holds ({spelling.predicate(predicate)} ...)"
+                return f"{changes.show(name)} changes whether {every}"
     return ""
 
 
@@ -313,7 +319,7 @@ def _closure_rules(basis: SelectionBasis, scene: LiveScene, changes: EventChange
         for predicate, key, _ in index.functional ^ basis.functional:
             for name in repair.objects:
                 if any(atom[1 + key] == name for atom in index.facts_of(name, predicate)):
-                    return f"closure's rules for {predicate} changed"
+                    return f"closure's rules for {changes.spelling.predicate(predicate)} changed"
     return ""
 
 
@@ -332,13 +338,13 @@ def _ranked_links(basis: SelectionBasis, scene: LiveScene, changes: EventChanges
     for atom in delta.atoms:
         for position in range(len(atom) - 1):
             if basis.fan_sides.get((atom[0], position), True) != _followed(index, atom[0], position):
-                return f"the links of {atom[0]} changed shape"
+                return f"the links of {changes.spelling.predicate(atom[0])} changed shape"
     for atom in delta.atoms:
         for name in dict.fromkeys(atom[1:]):
             if not links.walked(name):
                 continue
             if len(atom) > 2 and _followed(index, atom[0], atom.index(name) - 1):
-                return f"a link the repair follows changed: {_atom(atom, changes.show)}"
+                return f"a link the repair follows changed: {format_atom(atom, changes.spelling)}"
             if links.hub_crossed(name):
                 return f"{changes.show(name)} crossed the hub mark"
     for name in delta.objects_added:
@@ -358,7 +364,7 @@ def _read_objects(basis: SelectionBasis, scene: LiveScene, changes: EventChanges
             return f"the reachability repair read {changes.show(name)}"
     for name in (*delta.objects_added, *delta.objects_removed):
         if changes.type_of(scene, name) in repair.classes:
-            return f"the reachability repair compared every {changes.type_of(scene, name)}"
+            return f"the reachability repair compared every {changes.spelling.type(changes.type_of(scene, name))}"
     if changes.scores is None:
         return "every score may have changed"
     for name in sorted(changes.scores):
@@ -460,7 +466,3 @@ class _Links:
         before = after - sum(name in atom[1:] for atom in self.delta.added)
         before += sum(name in atom[1:] for atom in self.delta.removed)
         return (before > self.hub_before) != (after > self.hub_after)
-
-
-def _atom(atom: tuple, show: Callable[[str], str]) -> str:
-    return "(" + " ".join([atom[0], *map(show, atom[1:])]) + ")"

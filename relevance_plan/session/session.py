@@ -41,7 +41,6 @@ import weakref
 from collections.abc import Callable
 from dataclasses import replace
 from pathlib import Path
-from types import MappingProxyType
 from typing import TYPE_CHECKING
 
 from relevance_plan.io import Source, is_pddl_text, load_sources, write_text_atomic
@@ -288,11 +287,11 @@ class Session:
             stale=not self.scores.sufficient and self.selection is not None,
             selection=self.selection,
             relevant_objects=self.relevant,
-            display=MappingProxyType(self.scene.display),
+            spelling=self.scene.spelling,
         )
 
     def _show(self, name: str) -> str:
-        return self.scene.display.get(name, name)
+        return self.scene.spelling.object(name)
 
     def _touched(self, event: Event) -> frozenset:
         names = {event.name} if event.kind in ("add", "remove") else set()
@@ -443,7 +442,7 @@ class Session:
         scores = frozenset(rescored)
         if scores & self.watched:
             return f"the score of {', '.join(sorted(self._show(n) for n in scores & self.watched)[:5])} changed"
-        return selection_read(basis, self.scene, EventChanges(delta, scores, self._show))
+        return selection_read(basis, self.scene, EventChanges(delta, scores, self.scene.spelling))
 
     # ------------------------------------------------------------------ determination
 
@@ -509,7 +508,7 @@ class Session:
             dropped=tuple(sorted(before - now)) if reasons else (),
             ask=self.ask() if asking else None,
             seconds=seconds,
-            display=MappingProxyType(self.scene.display),
+            spelling=self.scene.spelling,
             understood=self._understood() if reasons else (),
         )
 

@@ -18,7 +18,7 @@ from types import MappingProxyType
 
 from relevance_plan.pddl.formatter import format_problem
 from relevance_plan.pddl.formulas import Formula, literals
-from relevance_plan.pddl.model import Domain, Problem
+from relevance_plan.pddl.model import Domain, Problem, Spelling
 from relevance_plan.pddl.parser import read_problem
 from relevance_plan.relevance.analysis import ObjectGraph, walk_changed
 
@@ -386,6 +386,12 @@ class LiveScene:
         """Whether the goal asks for nothing (``(and)``)."""
         return not any(True for _ in literals(self.goal))
 
+    @property
+    def spelling(self) -> Spelling:
+        """The user's spelling of the domain's names and of the scene's objects (a view that follows
+        the objects added and removed)."""
+        return self.domain.spelling.with_objects(MappingProxyType(self.display))
+
     def ordered_objects(self) -> dict:
         """The objects grouped by type, types in order of first appearance (the order of :meth:`problem_text`)."""
         if self._grouped:
@@ -403,7 +409,7 @@ class LiveScene:
                 init=frozenset(self.facts),
                 goal=self.goal,
                 text="",
-                display_names=MappingProxyType(dict(self.display)),
+                spelling=self.domain.spelling.with_objects(MappingProxyType(dict(self.display))),
                 numeric_init=MappingProxyType(dict(self.values)),
                 timed_literals=self.timed_literals,
                 constraints=self.constraints,

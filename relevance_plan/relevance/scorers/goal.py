@@ -26,8 +26,9 @@ from __future__ import annotations
 from collections import Counter
 from collections.abc import Callable, Collection, Iterable, Mapping, Set
 
+from relevance_plan.pddl.formatter import format_atom
 from relevance_plan.pddl.formulas import GroundAtom
-from relevance_plan.pddl.model import Domain
+from relevance_plan.pddl.model import UNSPELLED, Domain, Spelling
 from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult
 from relevance_plan.relevance.task import PlanningTask
 
@@ -42,7 +43,9 @@ def score_by_goal(task: PlanningTask, request: ScoreRequest) -> ScoreResult:
     domain, problem = task.typing.domain, task.typing.problem
     analysis = task.goal_analysis
     goal_objects = task.goal_objects
-    neighbours = goal_neighbours(task.init_index.by_object, goal_objects, analysis.relevant_predicates)
+    neighbours = goal_neighbours(
+        task.init_index.by_object, goal_objects, analysis.relevant_predicates, problem.spelling
+    )
     candidates = role_candidates(domain, analysis.role_depth, problem.objects.values())
     scores: dict[str, float] = {}
     explanations: dict[str, str] = {}
@@ -71,9 +74,12 @@ def score_by_goal(task: PlanningTask, request: ScoreRequest) -> ScoreResult:
 
 
 def goal_neighbours(
-    by_object: Mapping[str, Collection[GroundAtom]], goal_objects: Set[str], relevant_predicates: Set[str]
+    by_object: Mapping[str, Collection[GroundAtom]],
+    goal_objects: Set[str],
+    relevant_predicates: Set[str],
+    spelling: Spelling = UNSPELLED,
 ) -> dict[str, str]:
-    """Object -> the first relevant fact (written) it shares with a goal object."""
+    """Object -> the first relevant fact it shares with a goal object, written in ``spelling``."""
     neighbours: dict[str, str] = {}
     # sorted: the same fact explains a neighbour whatever order the sets were built in
     for name in sorted(goal_objects):
@@ -81,7 +87,8 @@ def goal_neighbours(
             if atom[0] in relevant_predicates:
                 for other in atom[1:]:
                     if other != name:
-                        neighbours.setdefault(other, "(" + " ".join(atom) + ")")
+                        if other not in neighbours:
+                            neighbours[other] = format_atom(atom, spelling)
     return neighbours
 
 
@@ -115,7 +122,7 @@ def goal_score(
         if depth is None:
             continue
         value = ROLE_DECAY ** max(depth, 1)
-        role = f"can serve as {ancestor} (role {depth} step(s) from the goal)"
+        role = f"can serve as {domain.spelling.type(ancestor)} (role {depth} step(s) from the goal)"
         many = candidates.get(ancestor, 0) > POPULOUS
         if many:
             distance = distances()
