@@ -29,7 +29,7 @@ so both orders share the machine's load.  Printed: the latency per event of
 each order (median, p95, max, how many triggered), the ratios of the new-place-first
 order's to the old-place-first order's, and, every ``--check-every`` moves, whether
 the report after the pair is what a determination from scratch says.  Target:
-ratios near 1 (before the fix, about 200 at 10,000 objects), every check identical.
+ratios near 1 (before the fix, about 160 at 10,000 objects), every check identical.
 
 Loading (``load``): ``relevance-plan watch`` on a generated scene (100,000
 objects by default) with ten item moves, under ``/usr/bin/time -v`` when
