@@ -21,6 +21,16 @@ Targets at 50,000 objects: fact changes and additions median <= 20 ms and
 p95 <= 100 ms; a goal change <= 1 s; peak memory <= 500 MB; every check
 identical.  At 2,000 objects nothing slower than the session before.
 
+Move orders (``orders``): one scene (10,000 objects by default) and one
+session, ``--moves`` moves of items the goal does not name, every other one
+reported as "unset the old receptacle, then set the new" and the others as
+"set the new, then unset the old" (``SceneGraphEvents(new_place_first=...)``),
+so both orders share the machine's load.  Printed: the latency per event of
+each order (median, p95, max, how many triggered), the ratios of the new-place-first
+order's to the old-place-first order's, and, every ``--check-every`` moves, whether
+the report after the pair is what a determination from scratch says.  Target:
+ratios near 1 (before the fix, about 160 at 10,000 objects), every check identical.
+
 Loading (``load``): ``relevance-plan watch`` on a generated scene (100,000
 objects by default) with ten item moves, under ``/usr/bin/time -v`` when
 present: wall time and peak memory of the whole command.
@@ -37,6 +47,7 @@ takes about 5 minutes at the default sizes (most of it the determinations from
 scratch at 50,000 objects), ``load`` about 10 seconds, ``coffee`` 1-2 minutes.
 
     python benchmarks/bench_session.py scenegraph [--sizes 2000 10000 50000] [--changes 200] [--check-every 20]
+    python benchmarks/bench_session.py orders [--size 10000] [--moves 200] [--check-every 20]
     python benchmarks/bench_session.py load [--size 100000]
     python benchmarks/bench_session.py coffee [--seed 0]
 """
@@ -247,6 +258,44 @@ def planner_installed() -> bool:
 
 def one_scene(args: argparse.Namespace) -> None:
     print(json.dumps(run_scene(args.size, args.changes, args.seed, args.check_every, args.plans)))
+
+
+ORDERS = ("old place first", "new place first")
+
+
+def move_orders(args: argparse.Namespace) -> None:
+    """Moves reported in either order on one session, alternating: each order's latency, their ratio."""
+    with tempfile.TemporaryDirectory() as folder:
+        session, stream, start = scene_session(args.size, args.seed, Path(folder), plans=False)
+    times: dict[str, list[float]] = {order: [] for order in ORDERS}
+    triggered = dict.fromkeys(ORDERS, 0)
+    checks: list[bool] = []
+    for number in range(args.moves):
+        order = ORDERS[number % 2]
+        stream.new_place_first = order == ORDERS[1]
+        for event in stream.make("move"):
+            started = time.perf_counter()
+            report = session.handle(event)
+            times[order].append(time.perf_counter() - started)
+            triggered[order] += report.triggered
+            assert report.error is None, (event, report.error)
+        if number % args.check_every == args.check_every - 1:
+            checks.append(fresh_determination(session, session.scene.problem_text())[1] == shown_by(report))
+    print(
+        f"move orders on {start['objects']:,} objects, seed {args.seed}: {args.moves} moves, {len(checks)} checks;"
+        f" load average {os.getloadavg()[0]:.2f}"
+    )
+    table_header("order | events | median | p95 | max | triggered")
+    for order in ORDERS:
+        chosen = times[order]
+        row = (millis(statistics.median(chosen)), millis(percentile(chosen, 0.95)), millis(max(chosen)))
+        table_row(order, len(chosen), *row, triggered[order])
+    first, second = (times[order] for order in ORDERS)
+    print(
+        f"\nnew place first / old place first: median {statistics.median(second) / statistics.median(first):.2f},"
+        f" p95 {percentile(second, 0.95) / percentile(first, 0.95):.2f}, total {sum(second) / sum(first):.2f}"
+    )
+    print(f"reports after a move identical to a determination from scratch: {sum(checks)} of {len(checks)}")
 
 
 def load(args: argparse.Namespace) -> None:
@@ -516,17 +565,22 @@ def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
         sub.add_argument("--changes", type=int, default=200, help="seeded changes per size (default: 200)")
         sub.add_argument("--check-every", type=int, default=20, help="determine from scratch every N changes")
         sub.add_argument("--no-plans", dest="plans", action="store_false", help="leave the plan requests out")
+    orders = which.add_parser("orders", help="item moves reported in either order: each one's latency, the ratio")
+    orders.add_argument("--size", type=int, default=10_000)
+    orders.add_argument("--moves", type=int, default=200, help="moves, half in each order (default: 200)")
+    orders.add_argument("--check-every", type=int, default=20, help="determine from scratch every N moves")
     loading = which.add_parser("load", help="watch on one big scene: wall time and peak memory")
     loading.add_argument("--size", type=int, default=100_000)
     coffee_scene = which.add_parser("coffee", help="the coffee scene at 1,000 objects")
-    for sub in (scene, one, loading, coffee_scene):
+    for sub in (scene, one, orders, loading, coffee_scene):
         sub.add_argument("--seed", type=int, default=0, help="seed of the scene and the events (default: 0)")
     return parser.parse_args(argv)
 
 
 def main(argv: list[str] | None = None) -> None:
     args = parse_args(argv)
-    {"scenegraph": scenegraph, "one-scene": one_scene, "load": load, "coffee": coffee}[args.which](args)
+    commands = {"scenegraph": scenegraph, "one-scene": one_scene, "orders": move_orders, "load": load, "coffee": coffee}
+    commands[args.which](args)
 
 
 if __name__ == "__main__":

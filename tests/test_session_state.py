@@ -13,13 +13,14 @@ from relevance_plan.generators.sized import generate_sized_problem
 from relevance_plan.io import load_domain, load_task
 from relevance_plan.pddl.formulas import names_in
 from relevance_plan.pddl.parser import read_problem
-from relevance_plan.relevance.analysis import fan_in, index_init
+from relevance_plan.relevance.analysis import fan_in
+from relevance_plan.relevance.task import PlanningTask
 from relevance_plan.session.state import LiveScene
 
 
 def assert_indexed_as_written(scene: LiveScene) -> None:
     """The live index holds what indexing the written state gives: the same lists, in the same order."""
-    written = index_init(read_problem(scene.problem_text(), scene.domain))
+    written = PlanningTask(scene.domain, read_problem(scene.problem_text(), scene.domain)).init_index
     assert scene.index.by_predicate == {p: list(atoms) for p, atoms in written.by_predicate.items()}
     assert scene.index.by_object == {name: list(atoms) for name, atoms in written.by_object.items()}
     assert scene.index.functional == written.functional

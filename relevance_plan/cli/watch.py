@@ -39,18 +39,19 @@ def read_event_lines(stream: BinaryIO, limit: int | None = None) -> Iterator[str
 
     Bytes that are not UTF-8 are kept as lone surrogates, so the event they
     belong to is refused by the event checks, not the whole stream.  A line
-    longer than ``limit`` bytes comes back cut to ``limit + 1`` characters
-    (the session refuses it) and the rest of it is skipped.  ``limit`` defaults to the session's.
+    longer than ``limit`` bytes (its ending, ``\\n`` or ``\\r\\n``, not counted)
+    comes back cut to ``limit + 2`` bytes, which the session refuses, and the
+    rest of it is skipped, never held whole.  ``limit`` defaults to the session's.
     """
     if limit is None:
         from relevance_plan.session.events import MAX_EVENT_BYTES
 
         limit = MAX_EVENT_BYTES
     while True:
-        line = stream.readline(limit + 1)
+        line = stream.readline(limit + 2)  # a line of ``limit`` bytes and its ending, or more
         if not line:
             return
-        if len(line) > limit and not line.endswith(b"\n"):
+        if len(line) == limit + 2 and not line.endswith(b"\n"):
             while (rest := stream.readline(limit)) and not rest.endswith(b"\n"):
                 pass
         yield line.decode("utf-8", errors="surrogateescape")

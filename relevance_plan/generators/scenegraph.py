@@ -146,7 +146,8 @@ class SceneGraphEvents:
     events are applied in order.  :meth:`make` gives the events of one kind:
 
     * ``move``: an item the goal does not name is taken out of its receptacle
-      and put into another (two events: ``unset``, then ``set``);
+      and put into another (two events: ``unset``, then ``set``; with
+      ``new_place_first``, ``set`` then ``unset``, as perception may report it);
     * ``move-goal``: the same for an item the goal names, seen in its new
       receptacle before it is gone from the old one;
     * ``receptacle`` / ``door``: an openable receptacle or a door is opened
@@ -165,8 +166,17 @@ class SceneGraphEvents:
     * ``plan``: a plan request.
     """
 
-    def __init__(self, objects: Mapping[str, str], facts: Iterable[tuple], goal: Iterable[tuple], rng: random.Random):
+    def __init__(
+        self,
+        objects: Mapping[str, str],
+        facts: Iterable[tuple],
+        goal: Iterable[tuple],
+        rng: random.Random,
+        *,
+        new_place_first: bool = False,
+    ):
         self.rng = rng
+        self.new_place_first = new_place_first  # a move seen in the new receptacle before it leaves the old
         self.items = sorted(name for name, kind in objects.items() if kind == "item")
         self.places = sorted(name for name, kind in objects.items() if kind == "place")
         self.agent_at: dict[str, str] = {}
@@ -201,7 +211,7 @@ class SceneGraphEvents:
             there = rng.choice([r for r in self.receptacles if r != self.holder[item]])
             events = [_fact("unset", "in", item, self.holder[item]), _fact("set", "in", item, there)]
             self.holder[item] = there
-            return events[::-1] if kind == "move-goal" else events
+            return events[::-1] if kind == "move-goal" or self.new_place_first else events
         if kind in ("receptacle", "door"):
             return self._toggle(kind, set(among))
         if kind == "agent":

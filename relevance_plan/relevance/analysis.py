@@ -24,6 +24,7 @@ from typing import Protocol
 from relevance_plan.pddl.formulas import Atom, Formula, GroundAtom, effect_literals, literals, scoped_literals
 from relevance_plan.pddl.model import Action, Domain, Problem, numeric_facts
 from relevance_plan.pddl.sexpr import check_deadline
+from relevance_plan.relevance.invariants import count_keeping_for
 
 # A lifted goal pattern: (predicate, args), each arg ("obj", name) or ("type", type name).
 Term = tuple[str, str]
@@ -65,9 +66,16 @@ class InitIndex:
         return frozenset(p for p, atoms in self.by_predicate.items() if len(atoms) == 1)
 
 
-def index_init(problem: Problem, deadline: float | None = None) -> InitIndex:
+def index_init(
+    problem: Problem, deadline: float | None = None, count_keeping: Collection[tuple[str, int]] = ()
+) -> InitIndex:
     """Facts by predicate and by object; a numeric value's term ``(distance a b)`` counts as a fact,
-    so the objects inside a function term are linked like those of a static fact."""
+    so the objects inside a function term are linked like those of a static fact.
+
+    A position is functional when no object there has two facts; at one of ``count_keeping``
+    (where no action gives an object one more fact: ``invariants.count_keeping_for``), also while
+    fewer than half its objects have two, which no action gave them (an item seen in its new
+    receptacle before it leaves the old one does not make every receptacle a role)."""
     by_predicate: dict[str, list[GroundAtom]] = defaultdict(list)
     by_object: dict[str, list[GroundAtom]] = defaultdict(list)
     # the exploration takes static facts in this order
@@ -86,22 +94,34 @@ def index_init(problem: Problem, deadline: float | None = None) -> InitIndex:
     for predicate, atoms in by_predicate.items():
         arity = len(atoms[0]) - 1
         for key in range(arity):
-            seen: dict[str, tuple[str, ...]] = {}
-            is_functional = True
-            for atom in atoms:
-                value = atom[1 + key]
-                rest = atom[1 : 1 + key] + atom[2 + key :]
-                previous = seen.setdefault(value, rest)
-                if previous != rest:
-                    is_functional = False
-                    break
-            if is_functional:
+            if _determines(atoms, key) or ((predicate, key) in count_keeping and _mostly_determines(atoms, key)):
                 functional.update((predicate, key, other) for other in range(arity) if other != key)
     return InitIndex(
         by_predicate={p: tuple(a) for p, a in by_predicate.items()},
         by_object={o: tuple(a) for o, a in by_object.items()},
         functional=frozenset(functional),
     )
+
+
+def _mostly_determines(atoms: Iterable[GroundAtom], key: int) -> bool:
+    """Whether fewer than half the objects at position ``key`` have two of ``atoms``."""
+    seen: dict[str, tuple[str, ...]] = {}
+    clashing: set[str] = set()
+    for atom in atoms:
+        rest = atom[1 : 1 + key] + atom[2 + key :]
+        if seen.setdefault(atom[1 + key], rest) != rest:
+            clashing.add(atom[1 + key])
+    return 2 * len(clashing) < len(seen)
+
+
+def _determines(atoms: Iterable[GroundAtom], key: int) -> bool:
+    """Whether no object at position ``key`` has two of ``atoms`` (whose other arguments differ)."""
+    seen: dict[str, tuple[str, ...]] = {}
+    for atom in atoms:
+        rest = atom[1 : 1 + key] + atom[2 + key :]
+        if seen.setdefault(atom[1 + key], rest) != rest:
+            return False
+    return True
 
 
 def fan_in(index: FactIndex) -> dict[tuple[str, int], float]:
@@ -500,7 +520,8 @@ def analyse_goal(
     further (a clear cup, a free gripper): the objects in the way of a
     particular one are closure's business, not the goal's.
     """
-    return _Regression(domain, problem, index or index_init(problem), deadline).run()
+    index = index or index_init(problem, None, count_keeping_for(domain, problem.timed_literals))
+    return _Regression(domain, problem, index, deadline).run()
 
 
 _FAR = 1 << 30

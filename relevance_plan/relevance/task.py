@@ -23,6 +23,7 @@ from relevance_plan.relevance.analysis import (
     object_distances,
     object_profiles,
 )
+from relevance_plan.relevance.invariants import count_keeping_for
 from relevance_plan.relevance.soundness import KeptObjects, objects_to_keep, soundness_requirements
 from relevance_plan.relevance.types import InferredTypes, infer_types
 from relevance_plan.relevance.witnesses import WitnessNeed, exists_needs, shortfall_reason, witness_needs
@@ -47,7 +48,7 @@ class PlanningTask:
 
     @cached_property
     def init_index(self) -> FactIndex:
-        return index_init(self.problem, self.deadline)
+        return index_init(self.problem, self.deadline, count_keeping_for(self.domain, self.problem.timed_literals))
 
     @cached_property
     def typing(self) -> InferredTypes:

@@ -11,6 +11,9 @@
 
 Extra fields are allowed and ignored.  A malformed or impossible event
 raises :class:`EventError` with a one-line reason; the session stays as it was.
+Every limit on a line (its size, its nesting, an integer's digits, a name's
+length, a cue's words) is a constant here, but the goal's nesting (the PDDL
+reader's); docs/live-session.md lists them all.
 Nothing an event brings in can change the PDDL around it: a new object's
 name must be a PDDL name (a letter, then letters, digits, ``-`` and ``_``),
 every other name must already be in the scene, and a goal must be exactly
@@ -38,8 +41,21 @@ if TYPE_CHECKING:  # the text package is imported only for a cue in words
     from relevance_plan.relevance.text.matching import WordMatch
 
 EVENT_KINDS = ("add", "remove", "set", "unset", "goal", "human", "cue", "plan")
-# One event line at most; a longer one is refused and the stream carries on.
-MAX_EVENT_BYTES = 1 << 20
+# An event line holds at most this many bytes of UTF-8, its line ending not counted; a longer one is
+# refused and the stream carries on.  Room for what perception attaches in fields the session ignores
+# (a 1080p camera frame, raw, is about 8.3 MB in base64), while a line read, decoded and parsed takes
+# about three times its size in memory (up to ten with characters past U+FFFF: about 150 MB).
+MAX_EVENT_BYTES = 16 << 20
+# JSON objects and lists nested deeper than this are refused (an event needs three levels: the event,
+# its facts, a fact), well before the parser's own recursion limit (about 1,000 levels, fewer when the
+# session is called from deep in a program).
+MAX_EVENT_NESTING = 100
+# A JSON integer of more digits is refused: Python's default limit, held whatever PYTHONINTMAXSTRDIGITS
+# says (reading a longer one takes time quadratic in its length).
+MAX_INTEGER_DIGITS = 4300
+# A cue in words holds at most this many characters: the text model reads its first 256 word pieces
+# (a thousand characters or so), and the words are split before that cut.
+MAX_CUE_CHARACTERS = 10_000
 # A PDDL name: a letter, then letters, digits, '-' and '_' (of any script).
 _PDDL_NAME = re.compile(r"[^\W\d_][\w-]*")
 MAX_NAME_LENGTH = 1000
@@ -74,18 +90,53 @@ class Event:
 
 
 def parse_event_line(line: str) -> dict:
-    """One JSON line -> a dict (raises EventError)."""
-    if len(line) > MAX_EVENT_BYTES:
-        raise EventError(f"an event line longer than {MAX_EVENT_BYTES} bytes")
+    """One JSON line (its line ending included or not) -> a dict (raises EventError)."""
+    if line_bytes(line) > MAX_EVENT_BYTES:
+        raise EventError(f"an event line holds at most {MAX_EVENT_BYTES:,} bytes (16 MiB); this one holds more")
     try:
-        data = json.loads(line)
+        data = json.loads(line, parse_int=_integer)
     except ValueError as error:
         raise EventError(f"not a JSON object: {error}") from None
     except RecursionError:
-        raise EventError("not a JSON object: nested too deeply") from None
+        data = None  # deeper than the parser goes: deeper than the limit
+    if data is None or _nesting(data) > MAX_EVENT_NESTING:
+        raise EventError(f"not an event: JSON nested more than {MAX_EVENT_NESTING} levels deep")
     if not isinstance(data, dict):
         raise EventError("an event must be a JSON object")
     return data
+
+
+def line_bytes(line: str) -> int:
+    """The bytes of UTF-8 ``line`` holds without its line ending (a byte that was not UTF-8, read as
+    a lone surrogate, counts one)."""
+    ending = 2 if line.endswith("\r\n") else 1 if line.endswith("\n") else 0
+    if line.isascii():
+        return len(line) - ending
+    try:
+        return len(line.encode("utf-8", "surrogateescape")) - ending
+    except UnicodeEncodeError:  # a lone surrogate written as such (from Python, not read from bytes)
+        return len(line.encode("utf-8", "surrogatepass")) - ending
+
+
+def _integer(digits: str) -> int:
+    if len(digits) > MAX_INTEGER_DIGITS + digits.startswith("-"):
+        raise EventError(f"not an event: an integer of more than {MAX_INTEGER_DIGITS:,} digits")
+    return int(digits)
+
+
+def _nesting(data: object) -> int:
+    """How deep JSON objects and lists nest in ``data`` (an object of scalars: 1), counted up to
+    one past :data:`MAX_EVENT_NESTING`."""
+    deepest = 0
+    stack = [(data, 1)]
+    while stack and deepest <= MAX_EVENT_NESTING:
+        value, depth = stack.pop()
+        items = value.values() if isinstance(value, dict) else value if isinstance(value, list) else None
+        if items is None:
+            continue
+        deepest = max(deepest, depth)
+        stack.extend((item, depth + 1) for item in items if isinstance(item, (dict, list)))
+    return deepest
 
 
 def check_event(data: dict, scene: LiveScene, model: KnowledgeModel | None) -> Event:
@@ -155,7 +206,13 @@ def _check_cue(data: dict, scene: LiveScene, model: KnowledgeModel | None) -> Ev
     if model is None:
         raise EventError("cues need a knowledge model (this session has none)")
     if text is not None:
-        return _understood_cue(_text(data, "text"), model)
+        words = _text(data, "text")
+        if len(words) > MAX_CUE_CHARACTERS:
+            raise EventError(
+                f"a cue's 'text' holds at most {MAX_CUE_CHARACTERS:,} characters (the text model reads the first"
+                f" thousand or so); this one holds {len(words):,}"
+            )
+        return _understood_cue(words, model)
     if task is not None and (not isinstance(task, str) or task not in model.task_classes):
         raise EventError(f"unknown task {task!r} (the model has: {', '.join(model.task_classes)})")
     if objective is not None and (not isinstance(objective, str) or objective not in model.objectives):

@@ -128,7 +128,9 @@ class LiveModelScores:
     # ------------------------------------------------------------------ descriptions
 
     def describe_all(self) -> None:
-        scene = build_scene(self.scene.domain, self.scene.objects, self.scene.facts, self.predicates)
+        # in the written state's order (facts sorted): an object in two places reads the same first one
+        facts = sorted(self.scene.facts)
+        scene = build_scene(self.scene.domain, self.scene.objects, facts, self.predicates)
         for name, element in scene.elements.items():
             self._set_element(name, element)
 
@@ -153,7 +155,7 @@ class LiveModelScores:
                         if role is not None:
                             facts.update(index.facts_of(fact[2], role))
         described = {name: self.scene.objects[name] for name in names}
-        scene = build_scene(self.scene.domain, described, facts, p, types=self.scene.objects)
+        scene = build_scene(self.scene.domain, described, sorted(facts), p, types=self.scene.objects)
         for name, element in scene.elements.items():
             self._set_element(name, element)
 

@@ -21,6 +21,7 @@ from relevance_plan.pddl.formulas import Formula, literals
 from relevance_plan.pddl.model import Domain, Problem, Spelling
 from relevance_plan.pddl.parser import read_problem
 from relevance_plan.relevance.analysis import ObjectGraph, walk_changed
+from relevance_plan.relevance.invariants import count_keeping_for
 
 
 def atom_objects(atom: tuple) -> Iterator[str]:
@@ -44,7 +45,12 @@ class LiveIndex:
     so asking costs nothing like a pass over the facts.
     """
 
-    def __init__(self, facts: Iterable[tuple] = (), terms: Iterable[tuple] = ()):
+    def __init__(
+        self, facts: Iterable[tuple] = (), terms: Iterable[tuple] = (), count_keeping: frozenset = frozenset()
+    ):
+        # (predicate, position) pairs where no action gives an object one more fact: functional
+        # while fewer than half their objects have two (``index_init``'s rule)
+        self.count_keeping = count_keeping
         self.by_predicate: dict[str, list[tuple]] = {}
         self.by_object: dict[str, list[tuple]] = {}
         # how many numeric terms end each predicate's and each object's list
@@ -182,16 +188,29 @@ class LiveIndex:
                 counts[value] = after
             else:
                 del counts[value]
-            # a value in two facts or more makes the position not functional
+            # a value in two facts or more makes the position not functional (at a count-keeping
+            # position, while such values are fewer than half: a value that comes or goes counts too)
             change = (after >= 2) - (before >= 2)
             if change:
                 self._clashes[predicate, position] = self._clashes.get((predicate, position), 0) + change
+                self._functional = None
+            elif (
+                (not before or not after)
+                and self._clashes.get((predicate, position))
+                and ((predicate, position) in self.count_keeping)
+            ):
                 self._functional = None
         if len(self.by_predicate.get(predicate, ())) == 1:
             self._singletons.add(predicate)
         else:
             self._singletons.discard(predicate)
         if len(self.by_predicate.get(predicate, ())) <= 1:  # a predicate came or went
+            self._functional = None
+
+    def set_count_keeping(self, positions: frozenset) -> None:
+        """The count-keeping positions anew (fewer timed literals can add some)."""
+        if positions != self.count_keeping:
+            self.count_keeping = positions
             self._functional = None
 
     # ------------------------------------------------------------------ views
@@ -219,7 +238,10 @@ class LiveIndex:
             for predicate, atoms in self.by_predicate.items():
                 arity = len(atoms[0]) - 1
                 for key in range(arity):
-                    if not self._clashes.get((predicate, key)):
+                    clashes = self._clashes.get((predicate, key), 0)
+                    if not clashes or (
+                        (predicate, key) in self.count_keeping and 2 * clashes < len(self._counts[predicate, key])
+                    ):
                         found.update((predicate, key, other) for other in range(arity) if other != key)
             self._functional = frozenset(found)
         return self._functional
@@ -290,7 +312,8 @@ class LiveScene:
         self.display: dict[str, str] = {name: problem.display(name) for name in problem.objects}
         self.facts: set = set(problem.init)
         self.values: dict[tuple, float] = dict(problem.numeric_init)  # (function, args...) -> value
-        self.index = LiveIndex(self.facts, (term for term in self.values if len(term) > 1))
+        terms = (term for term in self.values if len(term) > 1)
+        self.index = LiveIndex(self.facts, terms, count_keeping_for(domain, problem.timed_literals))
         self.goal: Formula = problem.goal
         # carried into every written problem unchanged, minus what mentions a removed object
         self.timed_literals = problem.timed_literals
@@ -335,6 +358,7 @@ class LiveScene:
             for timed in self.timed_literals
             if name not in (timed.atom or ())[1:] and name not in (timed.fluent or ())[1:]
         )
+        self.index.set_count_keeping(count_keeping_for(self.domain, self.timed_literals))
         self._snapshot = None
         self.delta.objects_removed.append(name)
         self.delta.removed_types[name] = type_name

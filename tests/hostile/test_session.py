@@ -1,12 +1,18 @@
-"""The live session fed bad events: each refused in one answer, the next event taken, nothing injected."""
+"""The live session fed bad events: each refused in one answer, the next event taken, nothing injected;
+lines at each limit on an event line, just under it and just over it; item moves reported in the order
+that once made every event a full determination."""
 
 from __future__ import annotations
 
+import functools
 import json
+import random
 import re
 
 from hostile.inputs import files, says
 from hostile.scenario import Result, Scenario, scenario_test
+from relevance_plan.data import DOMAINS_DIR
+from relevance_plan.session.events import MAX_EVENT_BYTES, MAX_EVENT_NESTING
 
 GOOD_EVENT = {"event": "set", "fact": ["hand-empty"]}
 INJECTED = "x ) (:init (coffee-served person_1)) (:metric"
@@ -135,5 +141,128 @@ SCENARIOS = EVENTS + [
     ),
 ]
 
+
+# --------------------------------------------------------------------------- the limits on an event line
+
+
+def _padded(size: int, character: str = "a") -> bytes:
+    """The good event with an ignored ``note`` that makes its line ``size`` bytes (``size`` minus one
+    or so for a character of several bytes)."""
+    bare = len(json.dumps({**GOOD_EVENT, "note": ""}).encode())
+    note = character * ((size - bare) // len(character.encode()))
+    return json.dumps({**GOOD_EVENT, "note": note}, ensure_ascii=False).encode()
+
+
+def _nested(levels: int) -> bytes:
+    return (json.dumps(GOOD_EVENT)[:-1] + ', "note": ' + "[" * (levels - 1) + "]" * (levels - 1) + "}").encode()
+
+
+def _both_taken(result: Result) -> str | None:
+    answers = [json.loads(line) for line in result.stdout.splitlines() if line.strip()]
+    if len(answers) != 2 or any("error" in answer for answer in answers):
+        return f"expected both events taken: {result.stdout[:300]!r}"
+    return None
+
+
+def _refused_for(reason: str):
+    def check(result: Result) -> str | None:
+        answers = [json.loads(line) for line in result.stdout.splitlines() if line.strip()]
+        if answers and reason not in answers[0].get("error", ""):
+            return f"not refused for {reason!r}: {answers[0].get('error')!r}"
+        return _session_survives(result)
+
+    return check
+
+
+def _limit_line(label: str, line, taken: bool, reason: str = "", **more) -> Scenario:
+    """``line`` (bytes, or made when the scenario runs), then the good event: both taken, or the first
+    refused for ``reason`` and the second taken."""
+    text = (lambda: line() + b"\n" + json.dumps(GOOD_EVENT).encode() + b"\n") if callable(line) else None
+    return Scenario(
+        f"session/{label}",
+        args=("watch", "D.pddl", "P.pddl", "--events", "ev.jsonl", "--snapshot", "W"),
+        setup=files(ev_dot_jsonl=text or line + b"\n" + json.dumps(GOOD_EVENT).encode() + b"\n"),
+        writes=("W/*", "W"),
+        check=_both_taken if taken else _refused_for(reason),
+        **more,
+    )
+
+
+SIZE = f"at most {MAX_EVENT_BYTES:,} bytes"
+DEEP = f"nested more than {MAX_EVENT_NESTING} levels"
+LIMITS = [
+    _limit_line("line-of-the-limit-is-taken", lambda: _padded(MAX_EVENT_BYTES), True, quick=True),
+    _limit_line("line-a-byte-over-the-limit", lambda: _padded(MAX_EVENT_BYTES + 1), False, SIZE, quick=True),
+    _limit_line("line-over-the-limit-in-bytes-not-characters", lambda: _padded(MAX_EVENT_BYTES + 9, "é"), False, SIZE),
+    _limit_line("line-far-over-the-limit", lambda: _padded(3 * MAX_EVENT_BYTES), False, SIZE, budget=20),
+    _limit_line("nested-to-the-limit-is-taken", _nested(MAX_EVENT_NESTING), True, quick=True),
+    _limit_line("nested-a-level-past-the-limit", _nested(MAX_EVENT_NESTING + 1), False, DEEP),
+    _limit_line(
+        "integer-of-a-million-digits-where-python-sets-no-limit",
+        json.dumps(GOOD_EVENT)[:-1].encode() + b', "n": ' + b"9" * 1_000_000 + b"}",
+        False,
+        "more than 4,300 digits",
+        env=(("PYTHONINTMAXSTRDIGITS", "0"),),
+        budget=10,
+    ),
+]
+
+
+# --------------------------------------------------------------------------- item moves in either order
+
+SCENE_SIZE = 20_000
+MOVES = 100
+
+
+@functools.lru_cache(maxsize=1)
+def _scene_and_moves() -> tuple[str, bytes]:
+    """A generated scene graph and its item moves, each seen in the new receptacle first (made once)."""
+    from relevance_plan.generators.scenegraph import SceneGraphEvents
+    from relevance_plan.generators.sized import generate_sized_problem
+    from relevance_plan.io import load_domain
+    from relevance_plan.pddl.formulas import literals
+    from relevance_plan.pddl.parser import read_problem
+
+    text = generate_sized_problem("scenegraph", 3, 1, SCENE_SIZE).pddl_text
+    problem = read_problem(text, load_domain(DOMAINS_DIR / "scenegraph" / "domain.pddl"))
+    goal = [(atom.predicate, *atom.args) for atom, _ in literals(problem.goal)]
+    stream = SceneGraphEvents(dict(problem.objects), problem.init, goal, random.Random(3), new_place_first=True)
+    events = [event for _ in range(MOVES) for event in stream.make("move")]
+    return text, "".join(json.dumps(event) + "\n" for event in events).encode()
+
+
+def _moves_answered_as_prune_decides(result: Result) -> str | None:
+    """Every move taken, and the snapshot's pruned problem what ``prune`` keeps of its current one."""
+    import relevance_plan as rp
+    from relevance_plan.io import load_domain
+    from relevance_plan.pddl.parser import read_problem
+
+    answers = [json.loads(line) for line in result.stdout.splitlines() if line.strip()]
+    if len(answers) != 2 * MOVES or any("error" in answer for answer in answers):
+        return f"expected {2 * MOVES} answers without an error: {result.stdout[-300:]!r}"
+    domain = load_domain(result.work / "SG.pddl")
+    pruned = read_problem((result.work / "W" / "pruned.pddl").read_text(), domain)
+    fresh = rp.prune(result.work / "SG.pddl", (result.work / "W" / "current.pddl").read_text())
+    if set(pruned.objects) != set(fresh.kept):
+        return f"the session keeps {len(pruned.objects)} objects, prune {len(fresh.kept)}"
+    return None
+
+
+MOVE_ORDERS = [
+    Scenario(
+        "session/moves-seen-in-the-new-place-before-they-leave-the-old",
+        args=("watch", "SG.pddl", "S.pddl", "--events", "moves.jsonl", "--snapshot", "W"),
+        setup=files(
+            SG_dot_pddl=(DOMAINS_DIR / "scenegraph" / "domain.pddl").read_text(),
+            S_dot_pddl=lambda: _scene_and_moves()[0],
+            moves_dot_jsonl=lambda: _scene_and_moves()[1],
+        ),
+        writes=("W/*", "W"),
+        budget=30,  # 200 events that each cost what the other order's do; a full determination each took minutes
+        check=_moves_answered_as_prune_decides,
+    )
+]
+
+SCENARIOS += LIMITS + MOVE_ORDERS
 
 test_session = scenario_test(SCENARIOS)
