@@ -5,8 +5,10 @@ receptacles have classes, ``(rel vase shelf)`` holds once any vase is in any
 shelf, putting an item in adds the relation of the classes and taking it out
 deletes it.  Each variant changes one thing the proof must get right (a
 second goal predicate added by the same action, subtypes, ``either``,
-constants, derived goals, conditional effects, a way out that keeps the
-relation ...); the generator builds problems around them with goals written
+constants, derived goals, conditional or quantified effects, a way out that
+keeps the relation ...); the generator builds problems around them (items
+and receptacles of two classes now and then, an item of type ``object``)
+with goals written
 in every way the proof must read alike (an atom twice, in capitals, inside a
 second ``and``) or must not count (true initially, under ``or``, ``not``, an
 existential).
@@ -57,6 +59,11 @@ TRANSFER = """(:action transfer
     :precondition (and (at ?a ?r) (itemin ?i ?r) (recin ?c2 ?r) (in ?i ?c1) (itemclass ?i ?k) (recclass ?c1 ?l1)
                        (recclass ?c2 ?l2))
     :effect (and (not (in ?i ?c1)) (in ?i ?c2) (rel ?k ?l2) {forget}))"""
+DISPLAY = """(:action display
+    :parameters (?a - agent ?i - item ?k - iclass ?c - receptacle ?l1 - rclass ?l2 - rclass ?r - room)
+    :precondition (and (at ?a ?r) (recin ?c ?r) (holds ?a ?i) (itemclass ?i ?k) (recclass ?c ?l1) (recclass ?c ?l2))
+    :effect (and (in ?i ?c) (inany ?i) (itemin ?i ?r) (rel ?k ?l1) (rel ?k ?l2) (not (holds ?a ?i))
+                 (not (holdsany ?a))))"""
 SWAP = """(:action swap :parameters (?a - agent ?i1 - item ?i2 - item ?c - receptacle ?r - room)
     :precondition (and (at ?a ?r) (recin ?c ?r) (holds ?a ?i1) (in ?i2 ?c))
     :effect (and (in ?i1 ?c) (inany ?i1) (itemin ?i1 ?r) (not (holds ?a ?i1))
@@ -96,6 +103,8 @@ VARIANTS: dict[str, dict[str, str]] = {
     "lift-keeps-relation": {"actions": LIFT},
     "conditional-forget": {"forget": "(when (not (sticky ?c)) (not (rel ?k ?l)))"},
     "conditional-relate": {"relate": "(when (open ?c) (rel ?k ?l))"},
+    "forall-relate": {"relate": "(forall (?m - rclass) (when (recclass ?c ?m) (rel ?k ?m)))"},
+    "relate-twice": {"actions": DISPLAY},
     "forall-forget": {"forget": "(forall (?m - rclass) (when (recclass ?c ?m) (not (rel ?k ?m))))"},
     "swap-two-items": {"actions": SWAP},
     "transfer-keeps": {"actions": TRANSFER.format(forget="")},
@@ -103,7 +112,7 @@ VARIANTS: dict[str, dict[str, str]] = {
 }
 # the proof must give no verdict at all on these (it cannot read their types, or an adder of the goal
 # predicate adds it under a condition) ...
-REFUSED = frozenset({"either", "conditional-relate"})
+REFUSED = frozenset({"either", "conditional-relate", "forall-relate", "relate-twice"})
 # ... and none that rests on distinct witnesses on these (an item is a constant, or an action may bind one
 # item to two parameters); one goal atom that no object at all can witness is still proved
 MULTI_REFUSED = REFUSED | {"item-constant", "swap-two-items"}
@@ -145,8 +154,13 @@ def generate(variant: str, seed: int) -> World:
     init += [f"({rng.choice(('padded', 'sticky', 'open'))} {name})" for name, _, _ in receptacles if rng.random() < 0.5]
     if variant == "item-constant":
         items.append(("spare", "vase"))
+    if rng.random() < 0.15:  # a receptacle of two classes: which relation taking an item off deletes is open
+        name, cls, _ = rng.choice(receptacles)
+        init.append(f"(recclass {name} {'table' if cls == 'shelf' else 'shelf'})")
     for name, cls in items:
         init.append(f"(itemclass {name} {cls})")
+        if rng.random() < 0.1:  # an item of two classes
+            init.append(f"(itemclass {name} {'cup' if cls == 'vase' else 'vase'})")
         if rng.random() < 0.3:
             init.append(f"(fragile {name})")
         if rng.random() < 0.3:
@@ -158,11 +172,11 @@ def generate(variant: str, seed: int) -> World:
     goal, extra = _goal(variant, style, rng, receptacles, sorted({cls for _, cls in items}) or ["vase"])
     declared = [name for name, _ in items if name != "spare"]
     item_type = "item" if not VARIANTS[variant].get("subtypes") else None
-    objects = (
-        " ".join(f"{name} - {item_type or rng.choice(('light', 'heavy'))}" for name in declared)
-        + " "
-        + " ".join(f"{name} - receptacle" for name, _, _ in receptacles)
-    )
+    # now and then an item of type object: no action's item parameter takes it
+    kinds = [rng.choice(("light", "light", "heavy")) if item_type is None else item_type for _ in declared]
+    kinds = [kind if rng.random() > 0.1 else "object" for kind in kinds]
+    objects = " ".join(f"{name} - {kind}" for name, kind in zip(declared, kinds))
+    objects += " " + " ".join(f"{name} - receptacle" for name, _, _ in receptacles)
     if variant != "class-constants":
         objects += " vase cup - iclass shelf table - rclass"
     if rng.random() < 0.3:
@@ -179,6 +193,8 @@ def _goal(variant: str, style: str, rng: random.Random, receptacles: list, prese
     the problem has items of (``present``); with facts the style adds to the initial state."""
     predicates = ["rel", "near"] if variant == "two-predicates" else ["rel"]
     classes = present if rng.random() < 0.85 else list(ITEM_CLASSES)
+    if rng.random() < 0.5:
+        classes = [rng.choice(classes)]  # every atom about one class: the shape of a shortfall
     pairs = [(p, k, l) for p in predicates for k in classes for l in RECEPTACLE_CLASSES]
     atoms = [f"({p} {k} {l})" for p, k, l in rng.sample(pairs, min(len(pairs), rng.choice((1, 2, 2, 3))))]
     if variant == "derived-goal" and rng.random() < 0.5:
