@@ -13,10 +13,11 @@ must give none, and the object-state analysis under it.
 from __future__ import annotations
 
 import json
+import re
 from pathlib import Path
 
 import pytest
-from support import REPO, write_task
+from support import REPO, modules_after, write_task
 from witness_worlds import MULTI_REFUSED, REFUSED, VARIANTS, World, domain_text, worlds
 
 from relevance_plan.io import load_task
@@ -232,6 +233,31 @@ def test_a_numeric_condition_only_narrows_the_plans_and_the_verdict_stands(tmp_p
     assert verdict(tmp_path, numeric).endswith("and only 1 can be one (vase0)")
 
 
+def test_no_verdict_on_the_classes_the_tool_infers_for_an_untyped_domain(tmp_path):
+    typed = world("plain", "vase0 - item", TWO_VASE_ATOMS)
+    untyped = World(
+        "plain",
+        "",
+        re.sub(r" - [a-z]+", "", re.sub(r"\(:types [^)]*\)", "", typed.domain)).replace(":typing ", ""),
+        re.sub(r" - [a-z]+", "", typed.problem),
+    )
+    task = PlanningTask(*load_task(*write_task(tmp_path, "untyped", untyped.domain, untyped.problem)))
+    assert task.typing.inferred and task.witness_shortfall  # the judgement still sees one vase for two atoms
+    assert task.proved_unsolvable == ""
+
+
+def test_the_proof_is_loaded_only_for_a_problem_short_of_witnesses(tmp_path):
+    for name, items, loaded in (("enough", "vase0 vase1 - item", False), ("short", "vase0 - item", True)):
+        domain, problem = write_task(tmp_path, name, *_files(world("plain", items, TWO_VASE_ATOMS)))
+        modules = modules_after(
+            "from relevance_plan.io import load_task",
+            "from relevance_plan.relevance.task import PlanningTask",
+            f"PlanningTask(*load_task({str(domain)!r}, {str(problem)!r})).proved_unsolvable",
+        )
+        assert ("relevance_plan.relevance.witness_proof" in modules) is loaded, name
+        assert ("relevance_plan.relevance.object_states" in modules) is loaded, name
+
+
 # --------------------------------------------------------------------------- the corpus keeps its verdicts
 
 # the lifted test problems with too few items of a goal class, proved before this proof counted distinct atoms
@@ -318,6 +344,7 @@ def _mismatched_problem() -> str:
     return "(define (problem p) (:domain mismatched) (:objects a - item) (:init (at a)) (:goal (carried a)))"
 
 
+@pytest.mark.planner  # a race may start the planner before the proof ends
 def test_the_verdict_is_the_same_through_the_command_line(tmp_path):
     from support import invoke
 

@@ -20,10 +20,10 @@ is read as a planner applies it, deletes first and adds after (an atom both
 deleted and added stays): a delete of an atom it required takes one away,
 any other delete may; each conditional add or delete may or may not happen
 (two of one pattern may change the count by two); a quantified effect may
-leave any count; an add may name an atom the object had already.  Conditions
-on other objects, numeric conditions, derived predicates and conditions
-inside ``or``, ``not`` or quantifiers are taken as met.  So every state a
-real plan can give the object is among the states found.
+leave any count; an add may name an atom the object had already.  Every
+other condition (on other objects, numeric, on a derived predicate, inside
+``or``, ``not`` or a quantifier) is taken as met.  So every state a real plan
+can give the object is among the states found.
 
 A state can *mark* atoms: an exploration started right after a chosen
 action carries as marks the atoms that action certainly leaves (a pattern's

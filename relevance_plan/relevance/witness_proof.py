@@ -120,7 +120,7 @@ def unsolvable_by_witnesses(domain: Domain, problem: Problem, index: FactIndex) 
     docstring says; "" when the proof does not go through (the tool then plans as usual)."""
     if domain.temporal or problem.timed_literals or not _types_exact(domain, problem):
         return ""
-    goals = distinct_goal_atoms(problem)
+    goals = _distinct_goal_atoms(problem)
     roles = consuming_roles(domain, goals)
     objects = all_objects(domain, problem)
     for predicate in sorted(roles):
@@ -135,7 +135,7 @@ def unsolvable_by_witnesses(domain: Domain, problem: Problem, index: FactIndex) 
     return ""
 
 
-def distinct_goal_atoms(problem: Problem) -> dict[str, list[GroundAtom]]:
+def _distinct_goal_atoms(problem: Problem) -> dict[str, list[GroundAtom]]:
     """The goal's distinct top-level atoms false initially, by predicate, in the goal's order."""
     found: dict[str, list[GroundAtom]] = {}
     for part in conjuncts(problem.goal):
@@ -354,4 +354,4 @@ def _deletes_goal(proof: _Proof, step: Step, state: State) -> bool:
     return False
 
 
-__all__ = ["distinct_goal_atoms", "unsolvable_by_witnesses"]
+__all__ = ["unsolvable_by_witnesses"]
