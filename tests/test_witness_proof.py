@@ -18,7 +18,7 @@ from pathlib import Path
 
 import pytest
 from support import REPO, modules_after, write_task
-from witness_worlds import MULTI_REFUSED, REFUSED, VARIANTS, World, domain_text, worlds
+from witness_worlds import REFUSED, World, domain_text, worlds
 
 from relevance_plan.io import load_task
 from relevance_plan.planning.planners.base import PlannerStatus
@@ -51,7 +51,7 @@ def check_verdicts(tmp_path: Path, generated: list[World]) -> list[tuple[str, st
         if not said:
             continue
         found.append((world.variant, said))
-        if world.variant in REFUSED or (world.variant in MULTI_REFUSED and not said.startswith("1 goal atom")):
+        if world.variant in REFUSED:
             failures.append(f"{world.name}: the proof must refuse this variant, yet says: {said}")
             continue
         disagreement = fast_downward_disagrees(tmp_path, world, f"w{number}")
@@ -73,7 +73,7 @@ def on_distinct_witnesses(found: list[tuple[str, str]]) -> set[str]:
 def test_fast_downward_finds_no_plan_wherever_the_proof_says_none_exists(tmp_path):
     found = check_verdicts(tmp_path, worlds(5))
     # the sweep proves something, and not only goal atoms that no object at all can witness
-    assert len(found) >= 8, found
+    assert len(found) >= 6, found
     assert len([said for _, said in found if not said.startswith("1 goal atom")]) >= 3, found
 
 
@@ -82,7 +82,7 @@ def test_fast_downward_finds_no_plan_wherever_the_proof_says_none_exists(tmp_pat
 def test_fast_downward_finds_no_plan_wherever_the_proof_says_none_exists_in_a_bigger_sweep(tmp_path):
     found = check_verdicts(tmp_path, worlds(20, first_seed=1000))
     assert len(found) >= 40, found
-    assert {"plain", "subtypes", "class-constants", "derived-goal"} <= on_distinct_witnesses(found)
+    assert {"plain", "subtypes", "class-constants", "derived-goal", "or-condition"} <= on_distinct_witnesses(found)
 
 
 # --------------------------------------------------------------------------- where the proof holds
@@ -157,25 +157,25 @@ def _files(world: World) -> tuple[str, str]:
     return world.domain, world.problem
 
 
-@pytest.mark.parametrize(
-    ("variant", "items", "goal", "init"),
-    [
-        # one put relates the vase to the shelf under both goal predicates at once
-        ("two-predicates", "vase0 - item", "(rel vase shelf) (near vase shelf)", ""),
-        # a vase that is not fragile goes on a padded table: the ``or`` does not narrow the candidates
-        ("or-condition", "vase0 vase1 - item", TWO_VASE_ATOMS, "(fragile vase0) (padded table0)"),
-        # the spare vase is a constant of the domain: a candidate like any object
-        ("item-constant", "vase0 - item", TWO_VASE_ATOMS, "(itemclass spare vase) (itemin spare r0)"),
-        # the table is sticky: taking the vase off it keeps the table's relation
-        ("conditional-forget", "vase0 - item", TWO_VASE_ATOMS, "(sticky table0)"),
-        ("lift-keeps-relation", "vase0 - item", TWO_VASE_ATOMS, ""),
-        ("transfer-keeps", "vase0 - item", TWO_VASE_ATOMS, ""),
-        ("either", "vase0 - light", TWO_VASE_ATOMS, ""),
-        ("swap-two-items", "vase0 - item", TWO_VASE_ATOMS, ""),
-        ("conditional-relate", "vase0 - item", TWO_VASE_ATOMS, ""),
-    ],
-    ids=lambda value: value if value in VARIANTS else "",
-)
+# (variant, items, goal, initial facts): one vase may serve both goal atoms, or the proof cannot read the domain
+ONE_VASE_MAY_DO = [
+    # one put relates the vase to the shelf under both goal predicates at once
+    ("two-predicates", "vase0 - item", "(rel vase shelf) (near vase shelf)", ""),
+    # a vase that is not fragile goes on a padded table: the ``or`` does not narrow the candidates
+    ("or-condition", "vase0 vase1 - item", TWO_VASE_ATOMS, "(fragile vase0) (padded table0)"),
+    # the spare vase is a constant of the domain: a candidate like any object
+    ("item-constant", "vase0 - item", TWO_VASE_ATOMS, "(itemclass spare vase) (itemin spare r0)"),
+    # the table is sticky: taking the vase off it keeps the table's relation
+    ("conditional-forget", "vase0 - item", TWO_VASE_ATOMS, "(sticky table0)"),
+    ("lift-keeps-relation", "vase0 - item", TWO_VASE_ATOMS, ""),
+    ("transfer-keeps", "vase0 - item", TWO_VASE_ATOMS, ""),
+    ("either", "vase0 - light", TWO_VASE_ATOMS, ""),
+    ("swap-two-items", "vase0 - item", TWO_VASE_ATOMS, ""),
+    ("conditional-relate", "vase0 - item", TWO_VASE_ATOMS, ""),
+]
+
+
+@pytest.mark.parametrize(("variant", "items", "goal", "init"), ONE_VASE_MAY_DO, ids=[c[0] for c in ONE_VASE_MAY_DO])
 def test_no_verdict_where_one_vase_may_serve_both_or_the_proof_cannot_read_the_domain(
     tmp_path, variant, items, goal, init
 ):

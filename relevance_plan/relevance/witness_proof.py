@@ -28,9 +28,11 @@ The argument, for one goal predicate P at a time:
 * w is one-to-one on G (below).  So G needs |G| distinct objects, each among
   its own candidates; a set S of atoms of G with fewer candidates in all than
   |S| (Hall's condition, ``witnesses.find_shortfall``) leaves every plan
-  short: no plan exists.  A set of one atom with no candidate needs nothing
-  more: no action can add it.  Atoms of other predicates are counted apart
-  (an object may witness an atom of P and one of Q at once).
+  short: no plan exists.  Atoms of other predicates are counted apart (an
+  object may witness an atom of P and one of Q at once).  The verdict also
+  asks for the proof below when S is one atom with no candidate at all, where
+  the counting alone would do: such a goal is left to a planner, as before,
+  unless the whole argument goes through.
 * Why w is one-to-one: let g1 != g2 have w(g1) = w(g2) = o.  After a(g1), o
   is only changed by steps that do not delete g1.  ``object_states`` finds
   the states o can be in from then on (a sound over-approximation of its
@@ -130,7 +132,7 @@ def unsolvable_by_witnesses(domain: Domain, problem: Problem, index: FactIndex) 
         shortfall = find_shortfall(needs)
         if shortfall is None:
             continue
-        if len(shortfall.atoms) == 1 or _witnesses_distinct(domain, problem, index, predicate, roles[predicate]):
+        if _witnesses_distinct(domain, problem, index, predicate, roles[predicate]):
             return shortfall.describe()
     return ""
 

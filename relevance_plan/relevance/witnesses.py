@@ -447,7 +447,7 @@ class Shortfall:
         """ "2 distinct goal atoms need an object of their own each ((a), (b)) and only 1 can be one (x)"."""
         atoms = ", ".join("(" + " ".join(atom) + ")" for atom in self.atoms)
         if len(self.atoms) == 1:
-            head = f"1 goal atom needs an object of its own ({atoms})"
+            head = f"1 goal atom needs an object to be met through ({atoms})"
         else:
             head = f"{len(self.atoms)} distinct goal atoms need an object of their own each ({atoms})"
         if not self.candidates:
