@@ -169,8 +169,8 @@ def test_too_few_vases_in_the_whole_problem_plan_the_full_problem_and_say_why(ho
     task, _ = house_task(1)
     selection = score_problem(task, ScoringOptions()).first_selection()
     assert not selection.removed
-    assert "2 goal atoms need an object of their own" in selection.unpruned_reason
-    assert "only 1 can be one" in selection.unpruned_reason
+    assert "2 distinct goal atoms need an object of their own each" in selection.unpruned_reason
+    assert "only 1 can be one (vase0)" in selection.unpruned_reason
 
 
 def test_a_goal_atom_true_from_the_start_needs_no_witness(house_task, tmp_path):

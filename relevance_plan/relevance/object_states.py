@@ -4,27 +4,41 @@ An object's *state* here is how many true atoms it has of each *pattern* (an
 atom about it with its other arguments left open: ``(inreceptacle w ?)`` is
 ``("inreceptacle", 0)``), counted up to a cap one above the most atoms of a
 pattern any action requires or adds (the cap means "that many or more"; an
-atom whose only argument is the object counts at most one).  Starting from
-every object's initial counts, an action acts on the object through one of
-its parameters: it applies when the object has the
-atoms the action requires of it (two required atoms of one pattern that the
-action keeps apart with ``(not (= ?s1 ?s2))`` need two) and none that it
-forbids (``not (p ?x)`` where the object is p's only argument); a delete of
-an atom it required takes one away, any other delete and any conditional or
-quantified effect may or may not change the count, and an add may name an
-atom the object had already.  Conditions on other objects are taken as met.
-Every state a real plan can give the object is among the states found.
+atom whose only argument is the object counts at most one).  The patterns
+are the places where an action's atom has a variable that can be bound to
+an object of the type (a parameter or a quantified variable of a type
+related to it), whatever types the predicate declares: no atom an action can
+read or change about the object goes uncounted.
+
+Starting from every object's initial counts, an action acts on the object
+through one of its parameters (or, through quantified effects only, through
+none): it applies when the object has the atoms the action requires of it
+at the top level of its precondition (two required atoms of one pattern that
+the action keeps apart with ``(not (= ?s1 ?s2))`` need two) and none that it
+forbids (``not (p ?x)`` where the object is p's only argument).  Its effect
+is read as a planner applies it, deletes first and adds after (an atom both
+deleted and added stays): a delete of an atom it required takes one away,
+any other delete may; each conditional add or delete may or may not happen
+(two of one pattern may change the count by two); a quantified effect may
+leave any count; an add may name an atom the object had already.  Every
+other condition (on other objects, numeric, on a derived predicate, inside
+``or``, ``not`` or a quantifier) is taken as met.  So every state a real plan
+can give the object is among the states found.
 
 A state can *mark* atoms: an exploration started right after a chosen
-action carries the atoms that action added as marks, dropped when a step may
-delete them; a step whose required atom of a pattern is the object's only
-one, and marked, is known to use that very atom.  ``witnesses`` proves with
-this that a goal atom keeps its witness for good.
+action carries as marks the atoms that action certainly leaves (a pattern's
+only such atom), and a mark is kept only while the marked atom is certainly
+still there (a step that may delete an atom of the pattern leaves a state
+with the mark dropped among its successors); a step whose required atom of
+a pattern is the object's only one, and marked, is known to use that very
+atom.  ``witness_proof`` proves with this that a goal atom keeps its witness
+for good.
 
-The analysis refuses (None) what it cannot read soundly through one
-parameter: durative actions, a constant of the type, and an action with two
-parameters that may be the same object of the type (no ``(not (= ?x ?y))``
-between them); and it gives up past ``MAX_STATES`` states.
+:func:`readable` says whether the analysis applies to a type: no durative
+actions, no constant of the type (an action could name it without a
+parameter) and no action with two parameters that may be the same object of
+the type (no ``(not (= ?x ?y))`` between them); and an exploration gives up
+past ``MAX_STATES`` states.
 """
 
 from __future__ import annotations
@@ -50,14 +64,23 @@ class Step:
     forbids: frozenset[Pattern]  # top-level ``not (p ?x)`` with the object p's only argument
     adds: tuple[tuple[Atom, Pattern], ...]  # unconditional adds about it
     deletes: tuple[tuple[Atom, Pattern], ...]  # unconditional deletes about it
-    may_change: frozenset[Pattern]  # conditional or quantified effects that may be about it
+    may_add: tuple[Pattern, ...]  # one entry per conditional add that may be about it
+    may_delete: tuple[Pattern, ...]  # one entry per conditional delete that may be about it
     distinct: frozenset[frozenset[str]]  # pairs of terms the action requires to differ
     may_set: frozenset[Pattern] = frozenset()  # quantified effects that may leave any count
 
     @property
     def acts(self) -> bool:
         """Whether the step may change the object at all (a step through quantified variables only may not)."""
-        return self.variable is not None or bool(self.may_change or self.may_set)
+        return self.variable is not None or bool(self.may_add or self.may_delete or self.may_set)
+
+    @property
+    def patterns(self) -> frozenset[Pattern]:
+        """Every pattern of the object the step reads or may change."""
+        pairs = (*self.requires, *self.adds, *self.deletes)
+        return frozenset(
+            {own for _, own in pairs} | self.forbids | set(self.may_add) | set(self.may_delete) | self.may_set
+        )
 
     def need(self) -> dict[Pattern, int]:
         """How many atoms of each pattern the object must have for the step to apply."""
@@ -90,14 +113,15 @@ class ObjectStates:
     def __init__(self, domain: Domain, problem: Problem, type_name: str):
         self.domain = domain
         self.type_name = type_name
-        self.patterns = sorted(_patterns(domain, type_name))
-        self.index = {pattern: i for i, pattern in enumerate(self.patterns)}
         self.steps = [
             step_of(domain, action, variable, type_name)
             for action in domain.actions
             for variable in [*parameters_of_type(domain, action, type_name), None]
         ]
         self.steps = [step for step in self.steps if step.acts]
+        # what the actions touch, not what the predicates declare: no atom a step reads goes uncounted
+        self.patterns = sorted(set().union(*(step.patterns for step in self.steps)))
+        self.index = {pattern: i for i, pattern in enumerate(self.patterns)}
         most = max((n for step in self.steps for n in step.need().values()), default=1)
         most = max([most, *(len(step.adds) for step in self.steps)])
         # a count at the cap means "the cap or more"; an atom about the object alone is there or not
@@ -131,27 +155,29 @@ class ObjectStates:
         ]
 
     def _after(self, step: Step, pattern: Pattern, count: int, marked: bool, cap: int) -> set[tuple[int, bool]]:
-        """The pattern's count (and whether its mark stays) after the step, each way it may go."""
+        """The pattern's count after the step, each way it may go, and whether its mark may stay:
+        deletes first, then adds (see the module's docstring)."""
         adds = {atom for atom, own in step.adds if own == pattern}
         deletes = [atom for atom, own in step.deletes if own == pattern and atom not in adds]  # an add wins
         required = {atom for atom, own in step.requires if own == pattern}
         sure = [atom for atom in deletes if atom in required]  # atoms the object had
-        unsure = [atom for atom in deletes if atom not in required]
-        results: set[tuple[int, bool]] = set()
         fewest = len(sure) if step.apart(sure) else min(1, len(sure))
-        for gone in range(fewest, len(sure) + len(unsure) + 1):
+        most = len(deletes) + step.may_delete.count(pattern)
+        results: set[tuple[int, bool]] = set()
+        for gone in range(fewest, most + 1):
             for left in _minus(count, gone, cap):
                 if gone == 0:
-                    results.add((left, marked))
+                    results.add((left, marked))  # nothing of the pattern went: the marked atom is there
                     continue
-                results.add((left, False))
-                if left > 0 or count == cap:
-                    results.add((left, marked))  # the marked atom may be one that stays
+                results.add((left, False))  # the marked atom may be one that went
+                if marked and left > 0:
+                    results.add((left, True))  # or one that stays
         if adds:
             least = len(adds) if step.apart(list(adds)) else 1
             results = {(min(cap, total), m) for c, m in results for total in range(max(c, least), c + len(adds) + 1)}
-        if pattern in step.may_change:
-            results |= {(min(cap, c + 1), m) for c, m in results} | {(c - 1, False) for c, _ in results if c > 0}
+        maybe = step.may_add.count(pattern)
+        if maybe:
+            results = {(min(cap, c + more), m) for c, m in results for more in range(maybe + 1)}
         if pattern in step.may_set:
             results |= {(c, False) for c in range(cap + 1)}
         return results
@@ -197,7 +223,8 @@ def step_of(domain: Domain, action: Action, variable: str | None, type_name: str
     distinct.update(frozenset((equality.left, equality.right)) for equality in _inequalities(action))
     adds: list[tuple[Atom, Pattern]] = []
     deletes: list[tuple[Atom, Pattern]] = []
-    may_change: set[Pattern] = set()
+    may_add: list[Pattern] = []
+    may_delete: list[Pattern] = []
     many: set[Pattern] = set()
     for item in effect_literals(action.effect):
         ranged = [name for name, kind in item.quantified if compatible(domain, kind, type_name)]
@@ -205,10 +232,12 @@ def step_of(domain: Domain, action: Action, variable: str | None, type_name: str
         found = [own for name in names for own in occurrences(item.atom, name)]
         if not found:
             continue
-        if item.condition == TRUE and not item.quantified and item.when is None:
+        if item.quantified:
+            many.update(found)  # a quantified effect may set any number of atoms
+        elif item.condition == TRUE and item.when is None:
             (adds if item.is_add else deletes).extend((item.atom, own) for own in found)
         else:
-            (many if item.quantified else may_change).update(found)  # a quantified one may set any number
+            (may_add if item.is_add else may_delete).extend(found)
     return Step(
         action,
         variable,
@@ -216,7 +245,8 @@ def step_of(domain: Domain, action: Action, variable: str | None, type_name: str
         frozenset(forbids),
         tuple(adds),
         tuple(deletes),
-        frozenset(may_change - many),
+        tuple(sorted(may_add)),
+        tuple(sorted(may_delete)),
         frozenset(distinct),
         frozenset(many),
     )
@@ -252,16 +282,6 @@ def _inequalities(action: Action) -> Iterator[Equality]:
     for part in conjuncts(action.precondition):
         if isinstance(part, Not) and isinstance(part.body, Equality):
             yield part.body
-
-
-def _patterns(domain: Domain, type_name: str) -> Iterator[Pattern]:
-    derived = domain.derived_predicates
-    for predicate, parameters in domain.predicates.items():
-        if predicate in derived:
-            continue
-        for position, (_, kind) in enumerate(parameters):
-            if compatible(domain, kind, type_name):
-                yield predicate, position
 
 
 __all__ = ["ObjectStates", "Pattern", "State", "Step", "compatible", "occurrences", "readable", "step_of"]

@@ -178,9 +178,8 @@ def prune_with_scores(
     full_above = settings.full_share(scores.scorer)
     if repair and task.witness_shortfall:
         # no selection can do what the whole problem cannot: the planner decides on the full problem
-        why = f"{task.witness_shortfall}: " + (
-            "the problem has no plan" if task.proved_unsolvable else "the full problem"
-        )
+        proof = task.proved_unsolvable
+        why = f"{proof}: the problem has no plan" if proof else f"{task.witness_shortfall}: the full problem"
         return full_problem(task, scores, thresholds, draft.selected, draft.restored, why)
     if repair and len(draft.kept) <= full_above * len(task.problem.objects):
         draft = _repair(task, scores, draft, closure)

@@ -96,7 +96,7 @@ class PlanningTask:
         """The goal atoms that each need an object of their own to be met through (``witnesses``)."""
         typing = self.typing
         problem = typing.problem
-        # the goal's top-level atoms, as the relaxed check reads them
+        # the goal's top-level atoms, as the relaxed check reads them (``witness_needs`` keeps each once)
         goal = [(p.predicate, *p.args) for p in conjuncts(problem.goal) if isinstance(p, Atom)]
         ground = [atom for atom in goal if not any(is_variable(arg) for arg in atom[1:])]
         needs = witness_needs(typing.domain, problem, self.init_index, problem.objects, self.hub_degree, ground)
@@ -117,8 +117,11 @@ class PlanningTask:
 
     @cached_property
     def proved_unsolvable(self) -> str:
-        """Why the problem has no plan, when the witnesses' shortfall is proved (``witness_proof``); ""
-        when it is not (a verdict the tool gives without a planner, so it is given only when proved)."""
+        """Why the problem has no plan, when a goal predicate's witnesses are proved short
+        (``witness_proof``); "" when not (a verdict the tool gives without a planner, so it is given
+        only when proved).  The proof runs only when the judgement of ``witness_shortfall`` finds a
+        shortfall: a proved one is always among them (the proof counts the same distinct goal atoms,
+        one predicate at a time, with at least the same candidates)."""
         typing = self.typing
         if typing.inferred:
             return ""  # inferred classes guide choices; a proof stands on the types the domain declares
@@ -126,9 +129,7 @@ class PlanningTask:
             return ""  # enough witnesses: nothing to prove (and the proof's modules stay unloaded)
         from relevance_plan.relevance.witness_proof import unsolvable_by_witnesses
 
-        proof = unsolvable_by_witnesses(
-            typing.domain, typing.problem, self.init_index, self.witness_needs, self.witness_shortfall
-        )
+        proof = unsolvable_by_witnesses(typing.domain, typing.problem, self.init_index)
         self.check_time("proving the goal's witnesses short")
         return proof
 

@@ -18,11 +18,18 @@ and fails the planner.  This module finds, from the action schemas alone:
   (the static facts the achiever requires between the witness and the goal's
   objects: ``itemclass ?i vase``), best connected first (:func:`witness_needs`);
 * whether a set of usable witnesses gives every goal atom its own
-  (:func:`match_witnesses`, a bipartite matching).
+  (:func:`match_witnesses`, a bipartite matching), and when even the whole
+  problem cannot, the goal atoms that are short and the objects they share
+  (:func:`find_shortfall`: a set of goal atoms with fewer candidates than atoms).
 
-The relaxed check (``exploration``) asks for that matching on top of reaching
-the goal; the repair adds the best next candidate of a goal atom left without
-one; widening tries the next witness before anything else.
+Goal atoms are compared as the parser leaves them (names lower-cased): the
+same atom written twice, or in another letter case, is one goal atom and
+needs one witness.  The relaxed check (``exploration``) asks for that
+matching on top of reaching the goal; the repair adds the best next
+candidate of a goal atom left without one; widening tries the next witness
+before anything else.  All of this is a judgement that guides the choice of
+objects; ``witness_proof`` proves a shortfall before the tool calls a
+problem unsolvable.
 """
 
 from __future__ import annotations
@@ -59,7 +66,7 @@ class WitnessRole:
     witness: str  # the parameter used up (``?i``)
     witness_type: str
     consumed: tuple[Pattern, ...]  # the witness's preconditions the achiever makes false for good
-    links: tuple[Atom, ...]  # the static preconditions that name the witness
+    links: tuple[Atom, ...]  # the static top-level preconditions that name the witness
 
 
 @dataclass(frozen=True)
@@ -200,9 +207,18 @@ def _consumed_role(analysis: _DomainAnalysis, action: Action, goal: Atom) -> Wit
         reachable = _reachable_after(analysis, after, witness_type, goal.predicate)
         consumed = tuple(sorted({_pattern(atom, witness) for atom in spent}))
         if all(pattern not in reachable for pattern in consumed):
-            links = tuple(atom for atom in positive if witness in atom.args and atom.predicate in static)
-            return WitnessRole(action.name, goal.args, witness, witness_type, consumed, links)
+            return WitnessRole(action.name, goal.args, witness, witness_type, consumed, _links(action, witness, static))
     return None
+
+
+def _links(action: Action, witness: str, static: frozenset[str]) -> tuple[Atom, ...]:
+    """The static atoms among the action's top-level conditions that name ``witness``: every binding
+    the action applies with satisfies them (an atom inside ``or`` or a quantifier need not hold)."""
+    return tuple(
+        part
+        for part in conjuncts(action.precondition)
+        if isinstance(part, Atom) and part.predicate in static and witness in part.args
+    )
 
 
 def _pattern(atom: Atom, variable: str) -> Pattern:
@@ -271,11 +287,11 @@ def witness_needs(
     hub_degree: int,
     goal_atoms: Iterable[GroundAtom],
 ) -> tuple[WitnessNeed, ...]:
-    """Each goal atom (not true initially) whose predicate's achievers use a witness up, with its
-    candidates: the objects (of ``objects``: name -> type) the achiever's static conditions admit,
-    nearest first to the goal's other objects and to where the agent is."""
+    """Each distinct goal atom (not true initially) whose predicate's achievers use a witness up,
+    with its candidates: the objects (of ``objects``: name -> type) the achiever's static conditions
+    admit, nearest first to the goal's other objects and to where the agent is."""
     initial = problem.init
-    wanted = [atom for atom in goal_atoms if atom not in initial]
+    wanted = list(dict.fromkeys(atom for atom in goal_atoms if atom not in initial))  # an atom twice is one
     roles = consuming_roles(domain, {atom[0] for atom in wanted})
     pending = [atom for atom in wanted if atom[0] in roles]
     if not pending:
@@ -289,8 +305,7 @@ def witness_needs(
         pool: dict[str, None] = {}
         consumed: set[Pattern] = set()
         for role in roles[atom[0]]:
-            binding = {arg: value for arg, value in zip(role.goal_args, atom[1:]) if is_variable(arg)}
-            pool.update(dict.fromkeys(_candidates(domain, index, objects, role, binding)))
+            pool.update(dict.fromkeys(role_candidates(domain, index, objects, role, atom)))
             consumed.update(role.consumed)
         anchors = _anchors(index, atom, pool.keys(), static)
         near = graph_distances(index, graph, anchors, hub_degree) if anchors else {}
@@ -307,7 +322,7 @@ def exists_needs(
     with the objects that satisfy the body's static atoms, nearest first to the body's objects and
     to where the agent is."""
     existentials = []
-    for part in conjuncts(goal):
+    for part in dict.fromkeys(conjuncts(goal)):  # the same existential twice is one
         if not isinstance(part, Exists) or len(part.parameters) != 1:
             continue
         body = list(conjuncts(part.body))
@@ -335,11 +350,13 @@ def exists_needs(
     return tuple(needs)
 
 
-def _candidates(
-    domain: Domain, index: FactIndex, objects: Mapping[str, str], role: WitnessRole, binding: Mapping[str, str]
+def role_candidates(
+    domain: Domain, index: FactIndex, objects: Mapping[str, str], role: WitnessRole, atom: GroundAtom
 ) -> list[str]:
-    """The objects of the witness's type that satisfy every static condition naming it (with the goal's
-    objects put in; other parameters left open)."""
+    """The objects (of ``objects``: name -> type) of the witness's type that satisfy every static
+    condition naming it, the goal atom's objects put in and the other parameters left open: every
+    object the role's action can use up when it adds ``atom`` is among them (more may be)."""
+    binding = {arg: value for arg, value in zip(role.goal_args, atom[1:]) if is_variable(arg)}
     names = [name for name, kind in objects.items() if domain.is_subtype(kind, role.witness_type)]
     for link in role.links:
         admitted = _admitted_by(index, link, role.witness, binding)
@@ -394,8 +411,15 @@ def match_witnesses(
 ) -> tuple[dict[GroundAtom, str], tuple[WitnessNeed, ...]]:
     """Distinct usable witnesses for as many goal atoms as can have one, better-ranked candidates
     first; returns (goal atom -> witness, the needs left without one)."""
-    owner: dict[str, int] = {}  # witness -> index of the need it serves
     options = [[name for name in need.candidates if usable(need, name)] for need in needs]
+    owner, unmatched = _maximum_matching(options)
+    return {needs[i].goal: name for name, i in owner.items()}, tuple(needs[i] for i in unmatched)
+
+
+def _maximum_matching(options: Sequence[Sequence[str]]) -> tuple[dict[str, int], list[int]]:
+    """A maximum matching of needs (by index) to the names they may take, earlier options first
+    (augmenting paths): (name -> the need it serves, the needs left without a name)."""
+    owner: dict[str, int] = {}
 
     def assign(i: int, seen: set[str]) -> bool:
         for name in options[i]:
@@ -407,29 +431,74 @@ def match_witnesses(
                 return True
         return False
 
-    unmatched = tuple(need for i, need in enumerate(needs) if not assign(i, set()))
-    return {needs[i].goal: name for name, i in owner.items()}, unmatched
+    unmatched = [i for i in range(len(options)) if not assign(i, set())]
+    return owner, unmatched
+
+
+@dataclass(frozen=True)
+class Shortfall:
+    """Goal atoms that each need a witness of their own, and every object that can be one of them:
+    fewer objects than atoms, so no choice gives each its own (Hall's condition fails)."""
+
+    atoms: tuple[GroundAtom, ...]
+    candidates: tuple[str, ...]
+
+    def describe(self) -> str:
+        """ "2 distinct goal atoms need an object of their own each ((a), (b)) and only 1 can be one (x)"."""
+        atoms = ", ".join("(" + " ".join(atom) + ")" for atom in self.atoms)
+        if len(self.atoms) == 1:
+            head = f"1 goal atom needs an object to be met through ({atoms})"
+        else:
+            head = f"{len(self.atoms)} distinct goal atoms need an object of their own each ({atoms})"
+        if not self.candidates:
+            return f"{head} and no object can be one"
+        return f"{head} and only {len(self.candidates)} can be one ({', '.join(self.candidates)})"
+
+
+def find_shortfall(needs: Sequence[WitnessNeed]) -> Shortfall | None:
+    """Goal atoms of ``needs`` (distinct atoms) that cannot each have a candidate of their own, with
+    the candidates they share; None when every need can have its own.
+
+    From a need a maximum matching leaves without a candidate, the needs reached by alternating
+    paths (a candidate, the need it serves, that need's candidates, ...) have one candidate fewer
+    than their number: each reached candidate serves one of them, and the first has none."""
+    owner, unmatched = _maximum_matching([need.candidates for need in needs])
+    if not unmatched:
+        return None
+    reached, names, queue = {unmatched[0]}, set(), [unmatched[0]]
+    while queue:
+        for name in needs[queue.pop()].candidates:
+            if name in names:
+                continue
+            names.add(name)
+            served = owner.get(name)
+            if served is None:
+                return None  # an augmenting path: the matching was not maximum (not expected)
+            if served not in reached:
+                reached.add(served)
+                queue.append(served)
+    atoms = tuple(needs[i].goal for i in sorted(reached))
+    if len(set(atoms)) != len(atoms) or len(names) >= len(atoms):
+        return None  # the same goal atom twice, or no shortfall after all: nothing to say
+    return Shortfall(atoms, tuple(sorted(names)))
 
 
 def shortfall_reason(needs: Sequence[WitnessNeed]) -> str:
     """Why the whole problem cannot give every goal atom a witness of its own ("" when it can):
-    the goal atoms that share candidates with one left without, and how many candidates they share."""
-    _, unmatched = match_witnesses(needs, lambda need, name: True)
-    if not unmatched:
-        return ""
-    pool = set(unmatched[0].candidates)
-    group = [need for need in needs if pool & set(need.candidates)]
-    shared = set().union(*(need.candidates for need in group))
-    atoms = ", ".join("(" + " ".join(need.goal) + ")" for need in group)
-    return f"{len(group)} goal atoms need an object of their own ({atoms}) and only {len(shared)} can be one"
+    the goal atoms that are short and every candidate they share (:func:`find_shortfall`)."""
+    shortfall = find_shortfall(needs)
+    return shortfall.describe() if shortfall is not None else ""
 
 
 __all__ = [
+    "Shortfall",
     "WitnessNeed",
     "WitnessRole",
     "consuming_roles",
     "exists_needs",
+    "find_shortfall",
     "match_witnesses",
+    "role_candidates",
     "shortfall_reason",
     "witness_needs",
 ]
