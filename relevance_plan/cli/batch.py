@@ -6,6 +6,7 @@ from pathlib import Path
 
 import click
 
+from relevance_plan.cli.choices import NamedChoice
 from relevance_plan.cli.common import (
     file_option,
     handle_errors,
@@ -96,7 +97,7 @@ def compare(suite_dirs, methods, planners, jobs, store_path, scheduler, schedule
 @click.option(
     "--format",
     "fmt",
-    type=click.Choice(["markdown", "csv", "latex"]),
+    type=NamedChoice(("markdown", "csv", "latex"), "format"),
     default=None,
     help="The table per suite and method  [default: markdown].",
 )
@@ -112,7 +113,7 @@ def compare(suite_dirs, methods, planners, jobs, store_path, scheduler, schedule
 )
 @click.option(
     "--plot-format",
-    type=click.Choice(["png", "svg", "pdf"]),
+    type=NamedChoice(("png", "svg", "pdf"), "plot format"),
     default="png",
     show_default=True,
     help="File format of --plots.",
@@ -249,7 +250,7 @@ def demo(workdir, count, timeout, jobs, distractors, tiny, quiet):
 @click.option("--time-limit", "time_limit", type=seconds(), default=None, hidden=True)
 @click.option(
     "--labels",
-    type=click.Choice(["plan", "minimal"]),
+    type=NamedChoice(("plan", "minimal"), "labelling"),
     default="plan",
     show_default=True,
     help="plan: the objects the plan uses, with their closure (one run a problem); minimal: PLOI's greedy minimal"

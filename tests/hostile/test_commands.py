@@ -106,7 +106,6 @@ USAGE_ERRORS = [
     Scenario("commands/plan-missing-problem", args=("plan", "D.pddl"), codes=(2,), check=one_line("PROBLEM")),
     Scenario("commands/prune-missing-output", args=("prune", "D.pddl", "P.pddl"), codes=(2,), check=one_line("-o")),
     Scenario("commands/plan-option-without-value", args=("plan", "D.pddl", "P.pddl", "--timeout"), codes=(2,)),
-    Scenario("commands/plan-bad-choice", args=("plan", "D.pddl", "P.pddl", "--method", "x"), codes=(2,)),
 ]
 # every numeric option: a number out of its range is exit 30 in one line naming it
 NUMBERS = [
@@ -136,7 +135,33 @@ NUMBERS = [
         ("score", "--tau-class", "nan", "nan"),
     )
 ]
-SCENARIOS += USAGE_ERRORS + NUMBERS
+# every option of names: a name it does not know is exit 30 in one line naming it, in every command
+NAMES = [
+    Scenario(
+        f"commands/{name}-{option.strip('-')}-unknown-name",
+        args=(name, *COMMAND_ARGS[name], option, value),
+        setup=suite,
+        codes=(USAGE,),
+        check=one_line("'fast'"),
+        quick=name in ("plan", "validate"),
+    )
+    for name, option, value in (
+        ("plan", "--method", "fast"),
+        ("plan", "--scorer", "fast"),
+        ("plan", "--validator", "builtin,fast"),
+        ("plan", "--planner", "fast"),
+        ("compare", "--methods", "relevance,fast"),
+        ("compare", "--planners", "auto,fast"),
+        ("score", "--scorer", "fast"),
+        ("watch", "--validator", "fast"),
+        ("validate", "--validator", "fast"),
+        ("learn", "--labels", "fast"),
+        ("report", "--format", "fast"),
+        ("report", "--plot-format", "fast"),
+        ("generate", "--difficulty", "fast"),
+    )
+]
+SCENARIOS += USAGE_ERRORS + NUMBERS + NAMES
 
 
 test_commands = scenario_test(SCENARIOS)
