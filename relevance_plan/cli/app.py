@@ -274,9 +274,7 @@ def prune(domain_path, problem_path, output, pass_through, as_json, **values):
     """
     from relevance_plan.cli.files import names_stdout, write_output
 
-    to_stdout = names_stdout(output)
-    if to_stdout and as_json:
-        raise UsageError("--json and '-o -' would both write to standard output; give -o a file name")
+    to_stdout = names_stdout(output)  # never with --json (cli.paths refuses both on standard output)
     try:
         scoring, result = _score_and_prune(domain_path, problem_path, take_scoring(values))
     except UnsupportedFeatureError as refused:
@@ -328,9 +326,7 @@ def plan(domain_path, problem_path, method, plan_file, keep_work, race, as_json,
     from relevance_plan.planning.planners.preparation import check_keep_directory
     from relevance_plan.planning.planners.registry import make_planner
 
-    to_stdout = names_stdout(plan_file)
-    if to_stdout and as_json:
-        raise UsageError("--json and '--plan-file -' would both write to standard output; give a file name")
+    to_stdout = names_stdout(plan_file)  # never with --json (cli.paths refuses both on standard output)
 
     from dataclasses import replace
 

@@ -136,9 +136,7 @@ def report(store_path, fmt, as_json, as_csv, suite, plots_dir, plot_format, dpi,
     given = per_job + ([f"--format {fmt}"] if fmt is not None else [])
     if len(given) > 1:
         raise UsageError(f"choose one output: {' or '.join(given)}")
-    page_on_stdout = html_path is not None and names_stdout(html_path)
-    if page_on_stdout and given:
-        raise UsageError(f"--html - and {given[0]} would both write to standard output; give --html a file name")
+    page_on_stdout = html_path is not None and names_stdout(html_path)  # alone there (cli.paths)
     if plots_dir is not None:
         from relevance_plan.batch.plots import check_plot_targets, require_matplotlib
 

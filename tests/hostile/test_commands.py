@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from hostile.inputs import PLAN_PURE, both, files, link, one_line, says, suite
+from hostile.inputs import PLAN_PURE, both, files, link, one_line, says, store, suite
 from hostile.scenario import INPUT, NO_VALID, OK, PDDL, PLANNER, USAGE, Scenario, scenario_test
 
 SCENARIOS = [
@@ -70,6 +70,23 @@ SCENARIOS = [
         "commands/prune-with-json-to-stdout-twice",
         args=("prune", "D.pddl", "P.pddl", "-o", "/dev/stdout", "--json"),
         codes=(USAGE,),
+    ),
+    # an output on standard output beside a flag printing there: refused before any work, in every command
+    *(
+        Scenario(
+            f"commands/{args[0]}-{label}-beside-{flag.strip('-')}-on-stdout",
+            args=(*args, flag),
+            setup=store,
+            codes=(USAGE,),
+            check=one_line("would both write to standard output"),
+            quick=args[0] == "draft-model",
+        )
+        for args, label, flag in (
+            (("draft-model", "D.pddl", "P.pddl", "-o", "-"), "model", "--json"),
+            (("draft-model", "D.pddl", "P.pddl", "-o", "/dev/stdout"), "model-via-dev-stdout", "--json"),
+            (("plan", "D.pddl", "P.pddl", "--plan-file", "-"), "plan", "--json"),
+            (("report", "s.sqlite", "--html", "-"), "page", "--csv"),
+        )
     ),
 ]
 
