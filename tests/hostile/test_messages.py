@@ -13,6 +13,7 @@ from hostile.scenario import (
     OK,
     PDDL,
     PLANNER,
+    UNSUPPORTED,
     Check,
     Scenario,
     scenario_test,
@@ -227,7 +228,61 @@ FREE_TEXT = [
     ),
 ]
 
-SCENARIOS = BAD_DOMAINS + BAD_FILES + PLANNERS + STREAMS + SURROUNDINGS + FREE_TEXT
+# legal PDDL a planner does not read ((either ...) types, which Fast Downward's translator refuses):
+# unsupported (exit 33) before any planning, never malformed (32); auto takes a planner that reads it
+GADGETS = """(define (domain gadgets)
+  (:requirements :strips :typing)
+  (:types item gadget place)
+  (:predicates (at ?x - (either item gadget) ?p - place) (held ?x - (either item gadget)) (free))
+  (:action pick :parameters (?x - PARAMETER ?p - place)
+    :precondition (and (at ?x ?p) (free))
+    :effect (and (held ?x) (not (at ?x ?p)) (not (free)))))
+"""
+GADGET_PROBLEM = """(define (problem g1) (:domain gadgets)
+  (:objects box - OBJECT phone - gadget room - place)
+  (:init (at box room) (at phone room) (free))
+  (:goal (held phone)))
+"""
+EITHER = {"parameter": ("(either item gadget)", "item"), "object": ("object", "(either item gadget)")}
+
+
+def _gadgets(where: str):
+    parameter, kind = EITHER[where]
+    return files(g_dot_pddl=GADGETS.replace("PARAMETER", parameter), gp_dot_pddl=GADGET_PROBLEM.replace("OBJECT", kind))
+
+
+GADGET_PLAN = ("plan", "g.pddl", "gp.pddl", "-q", "--plan-file", "out.plan")
+EITHER_TYPES = [
+    *(
+        Scenario(
+            f"messages/either-type-of-{where}-{method}-is-unsupported-by-fast-downward",
+            args=GADGET_PLAN + ("--planner", "fast-downward", "--method", method),
+            setup=_gadgets(where),
+            codes=(UNSUPPORTED,),
+            check=says("Fast Downward does not take either-"),
+            quick=where == "object" and method == "pure",
+        )
+        for where in EITHER
+        for method in ("pure", "relevance")
+    ),
+    Scenario(
+        "messages/either-type-of-parameter-planned-by-auto",
+        args=GADGET_PLAN,
+        setup=_gadgets("parameter"),
+        writes=("out.plan",),
+        needs=installed("up_lpg"),
+    ),
+    Scenario(  # no planner the tool knows reads an object of an (either ...) type: LPG's reader refuses it too
+        "messages/either-type-of-object-refused-by-auto",
+        args=GADGET_PLAN,
+        setup=_gadgets("object"),
+        codes=(UNSUPPORTED,),
+        check=says("either-object-types"),
+    ),
+    Scenario("messages/either-type-scored", args=("score", "g.pddl", "gp.pddl"), setup=_gadgets("parameter")),
+]
+
+SCENARIOS = BAD_DOMAINS + BAD_FILES + PLANNERS + STREAMS + SURROUNDINGS + FREE_TEXT + EITHER_TYPES
 
 
 test_messages = scenario_test(SCENARIOS)
