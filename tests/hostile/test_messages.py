@@ -282,7 +282,47 @@ EITHER_TYPES = [
     Scenario("messages/either-type-scored", args=("score", "g.pddl", "gp.pddl"), setup=_gadgets("parameter")),
 ]
 
-SCENARIOS = BAD_DOMAINS + BAD_FILES + PLANNERS + STREAMS + SURROUNDINGS + FREE_TEXT + EITHER_TYPES
+# a knowledge model's schema errors name the file and the line, at every depth, found on reading the
+# model or on checking it against the domain
+COFFEE_MODEL = (REPO / "domains" / "coffee" / "relevance.yaml").read_text()
+
+
+def _model_edit(old: str, new: str) -> tuple[str, int]:
+    """The coffee model with ``old`` replaced, and the line of the replacement's last line."""
+    assert old in COFFEE_MODEL, old
+    text = COFFEE_MODEL.replace(old, new, 1)
+    return text, text[: text.index(new)].count("\n") + new.count("\n") + 1
+
+
+MODEL_ERRORS = [
+    Scenario(
+        f"messages/model-{label}-names-its-line",
+        args=("score", "D.pddl", "P.pddl", "--model", "bad.yaml"),
+        setup=files(bad_dot_yaml=text),
+        codes=(MODEL,),
+        check=says(f"bad.yaml:{line}: "),
+        quick=label == "scene-role-the-domain-lacks",
+    )
+    for label, (text, line) in {
+        "scene-role-the-domain-lacks": _model_edit("  location: at", "  location: at\n  containment: inside"),
+        "scene-role-of-the-wrong-arity": _model_edit("  location: at", "  location: hand-empty"),
+        "for-another-domain": _model_edit("domain: coffee", "domain: cereal"),
+        "preference-out-of-range": _model_edit("      cup: {paper_cup: 0.1}", "      cup: {paper_cup: 3}"),
+        "huge-number": _model_edit("  stacked: 0.95", "  stacked: " + "7" * 5000),
+    }.items()
+]
+MODEL_ERRORS.append(
+    Scenario(
+        "messages/drafted-model-edited-names-its-line",
+        shell="$TOOL draft-model D.pddl P.pddl -o m.yaml -q"
+        " && sed -i 's/  containment: none/  containment: inside/' m.yaml"
+        " && $TOOL plan D.pddl P.pddl --model m.yaml -q 2> err; test $? = 35"
+        " && grep -q 'm.yaml:[0-9][0-9]*: scene.containment' err",
+        writes=("m.yaml", "err"),
+    )
+)
+
+SCENARIOS = BAD_DOMAINS + BAD_FILES + PLANNERS + STREAMS + SURROUNDINGS + FREE_TEXT + EITHER_TYPES + MODEL_ERRORS
 
 
 test_messages = scenario_test(SCENARIOS)
