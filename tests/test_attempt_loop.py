@@ -415,3 +415,15 @@ def test_plan_task_takes_progress_or_a_record_not_both(coffee_files):
 
     with pytest.raises(RelevancePlanError, match="not both"):
         plan_task(*coffee_files, PlanOptions(), progress=print, record=RunRecord("relevance"))
+
+
+def test_a_run_on_input_our_reader_refuses_stopped_counts_nothing():
+    from relevance_plan.planning.results import RunRecord
+
+    record = RunRecord("relevance")
+    record.unread("our reader refuses the input: PDDL+")
+    record.attempting(1, None, 10.0)
+    result = record.stopped("stopped")
+    assert result.objects_total is None and result.objects_kept is None  # not 0 of 0: never counted
+    assert result.unpruned_reason == "our reader refuses the input: PDDL+"
+    assert [a.status.value for a in result.attempts] == ["out-of-time"]

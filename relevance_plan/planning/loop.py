@@ -745,6 +745,7 @@ def _plan_unread(
     only validators that read the files themselves can check its plan."""
     unpruned_reason = f"our reader refuses the input: {refused}"
     record.planning_with(planner.name, planner.choice)
+    record.unread(unpruned_reason)
     record.say(
         f"pruned: no ({unpruned_reason}); planning the full problem with {planner.name}"
         + (f" (auto: {planner.choice})" if planner.choice else "")

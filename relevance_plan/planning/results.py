@@ -259,6 +259,7 @@ class _Established:
     race: bool = False
     beside: Attempt | None = None  # the race's full problem, once it ended
     step: str = ""  # the last step the run reported
+    refusal: str = ""  # why the input is planned unpruned: our reader refused it (nothing counted)
 
 
 class RunRecord:
@@ -297,6 +298,10 @@ class RunRecord:
 
     def planning_with(self, planner: str, choice: str = "") -> None:
         self._note(planner=planner, planner_choice=choice)
+
+    def unread(self, refusal: str) -> None:
+        """Our reader refused the input: it is planned unpruned, its objects never counted."""
+        self._note(refusal=refusal)
 
     def racing(self) -> None:
         self._note(race=True)
@@ -347,13 +352,14 @@ class RunRecord:
             planner_time=sum(a.outcome.wall_time for a in attempts if not a.stopped),
             validation_time=sum(a.validation_time for a in attempts),
             objects_total=self.total,
-            objects_kept=kept_count(attempts, facts.selection, self.total, self.method),
+            objects_kept=None if self.total is None else kept_count(attempts, facts.selection, self.total, self.method),
             selection=facts.selection,
             message=message,
             planner=facts.planner,
             scorer=facts.scorer,
             problem=facts.problem,
             planner_choice=facts.planner_choice,
+            refusal=facts.refusal,
             race=facts.race,
             understood=facts.selection.scores.understood if facts.selection is not None else (),
         )
