@@ -50,14 +50,17 @@ EXIT_CODE_DESCRIPTIONS: dict[ExitCode, str] = {
     ExitCode.OUT_OF_TIME: "out of time",
     ExitCode.OUT_OF_MEMORY: "out of memory (the tool's, or a planner that died under --memory-limit)",
     ExitCode.USAGE: (
-        "bad argument value (threshold outside [0, 1], a number not finite or out of its range, unknown method, ...)"
-        " or an optional extra that is not installed"
+        "bad argument value (threshold outside [0, 1], a number not finite or out of its range, a name an option"
+        " does not know: method, scorer, validator, ...) or an optional extra that is not installed"
     ),
     ExitCode.INPUT_FILE: "missing, unreadable or unwritable file or directory, whichever option names it",
     ExitCode.PDDL_SYNTAX: "malformed PDDL, or a malformed plan file",
     ExitCode.UNSUPPORTED_PDDL: "PDDL feature not supported (by the tool, or by the planner or its reader)",
     ExitCode.DOMAIN_MISMATCH: "problem does not belong to the domain",
-    ExitCode.MODEL: "invalid knowledge model (YAML, schema, probability, unknown human or objective)",
+    ExitCode.MODEL: (
+        "invalid knowledge model (YAML, schema, probability; its file and line), or a human, objective or task name"
+        " it lacks"
+    ),
     ExitCode.STORE: "results store unusable or from an incompatible version",
     ExitCode.SCHEDULER: "Dask scheduler unreachable or Dask not installed",
     ExitCode.PLANNER: "planner not found, failed to start, or crashed",

@@ -353,3 +353,77 @@ def test_negative_initial_literals_of_pruned_objects_are_cut_and_plan_solves_at_
     result = json.loads(stdout)
     assert code == 0 and result["status"] == "solved", stderr
     assert result["pruned"] and result["attempts"] == 1, result["attempt_log"]
+
+
+class _Stop(Exception):
+    """Stands for the CLI's last alarm: raised from the run's own report of a step."""
+
+
+def _stopping_at(prefix: str):
+    def progress(event) -> None:
+        if event.message.startswith(prefix):
+            raise _Stop(event.message)
+
+    return progress
+
+
+@pytest.mark.parametrize(
+    "step, method, kept",
+    [
+        ("scoring", "relevance", None),  # the problem is read, no selection yet
+        ("kept", "relevance", "selection"),  # the selection is made, no attempt started
+        ("attempt 1", "relevance", "selection"),  # the first attempt under way
+        ("attempt 1", "pure", "all"),
+    ],
+)
+def test_a_run_stopped_anywhere_reports_the_counts_it_had_established(coffee_files, step, method, kept):
+    from relevance_plan.planning.results import RunRecord
+
+    record = RunRecord(method, _stopping_at(step))
+    with pytest.raises(_Stop):
+        plan_task(*coffee_files, PlanOptions(method=method, timeout=60, race=False), record=record)
+    result = record.stopped(f"stopped {record.where()}")
+    assert result.status is PlanStatus.OUT_OF_TIME
+    assert result.objects_total == len(load_task(*coffee_files)[1].objects)
+    if kept is None:
+        assert result.objects_kept is None
+    elif kept == "selection":
+        assert result.selection is not None and result.objects_kept == len(result.selection.kept) < result.objects_total
+    else:
+        assert result.objects_kept == result.objects_total
+    data = result.to_json()
+    assert data["objects_total"] == result.objects_total and data["objects_kept"] == result.objects_kept
+    if step == "attempt 1":  # the attempt under way is listed, cut short
+        assert [a["status"] for a in data["attempt_log"]] == ["out-of-time"]
+        assert data["attempt_log"][0]["objects_kept"] == result.objects_kept
+    else:
+        assert data["attempt_log"] == []
+
+
+def test_a_run_stopped_while_reading_says_it_counted_nothing(coffee_files):
+    from relevance_plan.planning.results import RunRecord
+
+    record = RunRecord("relevance")
+    result = record.stopped(f"stopped {record.where()}")
+    assert result.objects_total is None and result.objects_kept is None
+    assert result.message == "stopped while reading the domain and problem"
+    assert result.to_json()["objects_total"] is None
+
+
+def test_plan_task_takes_progress_or_a_record_not_both(coffee_files):
+    from relevance_plan.planning.results import RunRecord
+
+    with pytest.raises(RelevancePlanError, match="not both"):
+        plan_task(*coffee_files, PlanOptions(), progress=print, record=RunRecord("relevance"))
+
+
+def test_a_run_on_input_our_reader_refuses_stopped_counts_nothing():
+    from relevance_plan.planning.results import RunRecord
+
+    record = RunRecord("relevance")
+    record.unread("our reader refuses the input: PDDL+")
+    record.attempting(1, None, 10.0)
+    result = record.stopped("stopped")
+    assert result.objects_total is None and result.objects_kept is None  # not 0 of 0: never counted
+    assert result.unpruned_reason == "our reader refuses the input: PDDL+"
+    assert [a.status.value for a in result.attempts] == ["out-of-time"]

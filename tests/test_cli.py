@@ -175,10 +175,10 @@ def test_bad_input_gives_one_line_and_exit_code(runner, problem, tmp_path, args,
 
 def test_an_objective_the_model_lacks_without_the_text_extra_is_one_line_naming_it(runner, problem, monkeypatch):
     monkeypatch.setitem(sys.modules, "numpy", None)  # what an import finds when numpy is not installed
-    result = runner.invoke(main, ["score", str(COFFEE_DOMAIN), str(problem), "--objective", "lunch"])
+    result = runner.invoke(main, ["score", str(COFFEE_DOMAIN), str(problem), "--objective", "a light lunch"])
     assert result.exit_code == ExitCode.USAGE
     (line,) = [l for l in result.output.splitlines() if l.startswith("relevance-plan:")]
-    assert "unknown objective 'lunch'" in line and "'text' extra" in line and "Traceback" not in result.output
+    assert "unknown objective 'a light lunch'" in line and "'text' extra" in line and "Traceback" not in result.output
 
 
 def test_insufficient_cues_exit_code_from_plan(runner, problem, tmp_path):

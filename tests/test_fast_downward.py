@@ -237,3 +237,68 @@ def test_out_of_memory(tmp_path: Path) -> None:
     outcome = fast_downward.run_fast_downward(domain, problem, time_limit=20, memory_limit_mb=80)
     assert outcome.status is PlannerStatus.OUT_OF_MEMORY, outcome.log_tail
     assert outcome.exit_code == 20
+
+
+# --------------------------------------------------------------------------- (either ...) types
+
+EITHER_DOMAIN = """(define (domain gadgets)
+  (:requirements :strips :typing)
+  (:types item gadget place)
+  (:predicates (at ?x - (either item gadget) ?p - place) (held ?x - (either item gadget)) (free))
+  (:action pick :parameters (?x - {parameter} ?p - place)
+    :precondition (and (at ?x ?p) (free))
+    :effect (and (held ?x) (not (at ?x ?p)) (not (free)))))
+"""
+EITHER_PROBLEM = """(define (problem g1) (:domain gadgets)
+  (:objects box - {object} phone - gadget room - place)
+  (:init (at box room) (at phone room) (free))
+  (:goal (held phone)))
+"""
+EITHER_CASES = {
+    "parameter": dict(parameter="(either item gadget)", object="item"),
+    "object": dict(parameter="object", object="(either item gadget)"),
+}
+
+
+def _either_files(tmp_path: Path, where: str) -> tuple[Path, Path]:
+    case = EITHER_CASES.get(where, dict(parameter="object", object="item"))
+    return (
+        write_file(tmp_path, "domain.pddl", EITHER_DOMAIN.format(**case)),
+        write_file(tmp_path, "p.pddl", EITHER_PROBLEM.format(**case)),
+    )
+
+
+def test_the_translators_refusal_of_legal_pddl_is_unsupported_not_malformed() -> None:
+    def classify(log: str) -> PlannerStatus:
+        return fast_downward.classify(31, False, False, log, 0.1, None)
+
+    assert classify("Type value is expected to be a single word.\n") is PlannerStatus.UNSUPPORTED
+    assert classify("Fractional numbers are not supported.\n") is PlannerStatus.UNSUPPORTED
+    assert classify("Expected ')' but found end of file\n") is PlannerStatus.INPUT_ERROR
+
+
+@pytest.mark.parametrize("where", EITHER_CASES)
+def test_fast_downward_refuses_an_either_type_it_cannot_read_before_planning(tmp_path: Path, where: str) -> None:
+    from relevance_plan.io import load_task
+
+    domain, problem = load_task(*_either_files(tmp_path, where))
+    feature = "either-types" if where == "parameter" else "either-object-types"
+    with pytest.raises(errors.UnsupportedFeatureError, match=f"Fast Downward does not take {feature}") as refused:
+        fast_downward.FastDownwardPlanner().check(domain, problem)
+    assert refused.value.path == str(tmp_path / ("domain.pddl" if where == "parameter" else "p.pddl"))
+
+
+@pytest.mark.planner
+@pytest.mark.parametrize("where", EITHER_CASES)
+def test_the_translator_given_an_either_type_says_unsupported(tmp_path: Path, where: str) -> None:
+    outcome = fast_downward.run_fast_downward(*_either_files(tmp_path, where), time_limit=30)
+    assert outcome.exit_code == 31 and outcome.status is PlannerStatus.UNSUPPORTED, outcome.log_tail
+
+
+@pytest.mark.planner
+def test_an_either_type_among_a_predicates_parameters_is_fast_downwards_to_plan(tmp_path: Path) -> None:
+    from relevance_plan.io import load_task
+
+    files = _either_files(tmp_path, "predicates only")
+    fast_downward.FastDownwardPlanner().check(*load_task(*files))  # it takes them
+    assert fast_downward.run_fast_downward(*files, time_limit=30).status is PlannerStatus.SOLVED

@@ -216,3 +216,77 @@ def test_watch_places_the_kinds_of_objects_that_arrive(tmp_path):
     args = ("--objective", "serve-coffee-with-creamer", "--place-kinds", "--events", events)
     last = json.loads(invoke("watch", COFFEE_DOMAIN, SCENE, *args).output.splitlines()[-1])
     assert last["triggered"] and "oat_milk_carton_1" in last["relevant"], last
+
+
+# --------------------------------------------------------------------------- what it understood, and names before words
+
+
+@needs_weights
+@pytest.mark.planner
+def test_words_that_end_in_a_question_still_say_what_they_were_taken_for(tmp_path):
+    # the words are understood as an objective whose tasks are too spread out: the question, and the objective
+    args = ("--objective", "could I get a cold drink", "--plan-file", tmp_path / "plan")
+    planned = invoke("plan", COFFEE_DOMAIN, COFFEE_HARD, *args, "-q")
+    assert planned.exit_code == ExitCode.INSUFFICIENT_CUES
+    assert "understood:  'could I get a cold drink' as objective drink-at-break (similarity 0." in planned.stdout
+    data = json.loads(invoke("plan", COFFEE_DOMAIN, COFFEE_HARD, *args, "--json").stdout)
+    assert data["status"] == "insufficient-cues" and data["understood"][0]["chosen"] == "drink-at-break"
+    assert [c["name"] for c in data["understood"][0]["candidates"]][:2] == [
+        "drink-at-break",
+        "serve-coffee-with-creamer",
+    ]
+    scored = invoke("score", COFFEE_DOMAIN, COFFEE_HARD, "--objective", "could I get a cold drink")
+    assert scored.exit_code == ExitCode.INSUFFICIENT_CUES
+    assert "understood: 'could I get a cold drink' as objective drink-at-break" in scored.stderr and not scored.stdout
+    pruned = invoke(
+        "prune", COFFEE_DOMAIN, COFFEE_HARD, "-o", tmp_path / "small.pddl", "--objective", "could I get a cold drink"
+    )
+    assert "understood: 'could I get a cold drink' as objective drink-at-break" in pruned.stderr
+
+
+COMMANDS = {
+    "score": ("score", COFFEE_DOMAIN, COFFEE_HARD),
+    "prune": ("prune", COFFEE_DOMAIN, COFFEE_HARD, "-o", "-"),
+    "plan": ("plan", COFFEE_DOMAIN, COFFEE_HARD, "--no-race", "-q", "--plan-file", "-"),
+}
+
+
+@pytest.mark.parametrize("command", COMMANDS)
+def test_a_misspelt_name_is_a_question_naming_the_closest_names_without_the_text_model(command, monkeypatch):
+    monkeypatch.setitem(sys.modules, "numpy", None)  # a name is never words: no text model
+    result = invoke(*COMMANDS[command], "--objective", "drink-at-brek")
+    assert result.exit_code == ExitCode.INSUFFICIENT_CUES
+    assert "'drink-at-brek' is no objective of the model; the names nearest it: drink-at-break" in result.stderr
+
+
+@pytest.mark.parametrize("command", COMMANDS)
+@pytest.mark.parametrize("option, vocabulary", [("--objective", "objective"), ("--task", "task")])
+def test_a_name_the_model_does_not_have_is_a_model_error_in_every_command(command, option, vocabulary, monkeypatch):
+    monkeypatch.setitem(sys.modules, "numpy", None)
+    result = invoke(*COMMANDS[command], option, "nosuch")
+    assert result.exit_code == ExitCode.MODEL
+    line = one_line_error(result.stderr)
+    assert f"unknown {vocabulary} 'nosuch' (the model's {vocabulary}s: " in line and "relevance.yaml" in line
+
+
+def test_the_python_api_follows_the_same_rule(monkeypatch):
+    import relevance_plan as rp
+    from relevance_plan.errors import ModelError
+
+    monkeypatch.setitem(sys.modules, "numpy", None)
+    with pytest.raises(ModelError, match="unknown objective 'nosuch'"):
+        rp.prune(COFFEE_DOMAIN, COFFEE_HARD, objective="nosuch")
+    asked = rp.prune(COFFEE_DOMAIN, COFFEE_HARD, objective="drink-at-brek")
+    assert not asked.scores.sufficient and asked.scores.understood[0].candidates[0].name == "drink-at-break"
+
+
+def test_a_cue_of_one_token_in_watch_is_a_name_or_a_rejected_event(tmp_path, monkeypatch):
+    monkeypatch.setitem(sys.modules, "numpy", None)
+    events = tmp_path / "events.jsonl"
+    cues = ("tea", "drink-at-brek", "nosuch")
+    events.write_text("".join(json.dumps({"event": "cue", "text": text}) + "\n" for text in cues))
+    result = invoke("watch", COFFEE_DOMAIN, SCENE, "--objective", "drink-at-break", "--events", events)
+    named, near, unknown = (json.loads(line) for line in result.output.splitlines())
+    assert named["reason"] == "cue: task tea" and named["understood"][0]["similarity"] == 1.0
+    assert near["ask"] is not None and "drink-at-break" in near["ask"]["question"] and not near["triggered"]
+    assert "unknown task or objective 'nosuch'" in unknown["error"] and "drink-at-break" in unknown["error"]

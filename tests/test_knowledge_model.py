@@ -94,3 +94,60 @@ def test_a_domain_name_is_never_a_path_to_a_model(tmp_path):
     assert find_knowledge_model("coffee", None) is not None  # shipped
     for name in ("../..", "../coffee", "coffee/../coffee", "/etc", "."):
         assert find_knowledge_model(name, None) is None
+
+
+# Every schema error names the line of the entry at fault, at every depth, whether the model's own
+# reading finds it or its check against the domain: (what is written, what it becomes, the message).
+EDITS = [
+    ("version: 1", "version: 2", "'version' must be 1"),
+    ("domain: coffee", "domain: cereal", "model is for domain 'cereal'"),
+    ("entropy_bound: 1.0 ", "entropy_bound: -1 ", "'entropy_bound'"),
+    ("  unknown_class_relevance: 0.05", "  unknown_class_relevance: 7", "outside [0, 1]"),
+    ("  location: at", "  location: inside", "scene.location 'inside' is not a predicate"),
+    ("  location: at", "  location: hand-empty", "takes 0 argument(s)"),
+    ("  location: at", "  location: at\n  containment: inside", "scene.containment 'inside' is not a predicate"),
+    ("      iced-coffee-with-creamer: 0.4", "      iced-coffee-with-creamer: often", "must be a number"),
+    ("    whitener: 0.9\n    stirrer: 0.85", "    whitener: 0.9\n    stirrer: 1.85", "outside [0, 1]"),
+    ("    types: [tea]", "    types: [tea, 3]", "'types' must be a list of names"),
+    ("    kind_relevance: {default: 0.9}\n  ice:", "    kind_relevance: {default: 9}\n  ice:", "outside [0, 1]"),
+    ("    relevance_from: contents", "    relevance_from: walls", "'relevance_from' must be 'contents'"),
+    ("      cup: {paper_cup: 0.1}", "      cup: {paper_cup: 1.1}", "outside [0, 1]"),
+    ("      whitener: {whole_milk: 0.95", "      whitener: {whole_milk: " + "9" * 5000, "invalid YAML value"),
+    ("  reachable: 1.0", "  reachable: 1.0\n  floating: 0.5", "unknown placement condition 'floating'"),
+    ("  stirrer:\n    types: [stirrer]", "  stirrer:\n    tipes: [stirrer]", "unknown key 'tipes'"),
+]
+
+
+def _edited_line(edited: str, old: str, new: str) -> int:
+    """The line of ``edited`` where the first line ``new`` brought stands."""
+    lines = new.split("\n")
+    first = next(number for number, text in enumerate(lines) if text not in old.split("\n"))
+    return edited[: edited.index(new)].count("\n") + first + 1
+
+
+@pytest.mark.parametrize("old, new, message", EDITS, ids=[new.split(":")[0].strip() for _, new, _ in EDITS])
+def test_every_schema_error_names_its_line_at_every_depth(tmp_path, old, new, message):
+    bad = tmp_path / "bad.yaml"
+    bad.write_text(_with({old: new}))
+    code, _, stderr = run("score", COFFEE_DOMAIN, PROBLEMS / "coffee-simple.pddl", "--model", bad)
+    line = one_line_error(stderr)
+    assert code == ExitCode.MODEL and message in line, line
+    assert f"bad.yaml:{_edited_line(bad.read_text(), old, new)}: " in line, line
+
+
+def test_a_drafted_model_edited_to_a_predicate_the_domain_lacks_names_the_line(tmp_path):
+    drafted = tmp_path / "drafted.yaml"
+    code, _, stderr = run("draft-model", COFFEE_DOMAIN, PROBLEMS / "coffee-simple.pddl", "-o", drafted, "-q")
+    assert code == 0, stderr
+    text = drafted.read_text()
+    assert "  containment: none" in text
+    drafted.write_text(text.replace("  containment: none", "  containment: inside", 1))
+    code, _, stderr = run("plan", COFFEE_DOMAIN, PROBLEMS / "coffee-simple.pddl", "--model", drafted, "-q")
+    number = text[: text.index("  containment: none")].count("\n") + 1
+    assert code == ExitCode.MODEL and f"drafted.yaml:{number}: scene.containment 'inside'" in one_line_error(stderr)
+
+
+def test_a_document_that_is_no_mapping_is_refused_at_its_first_line():
+    with pytest.raises(ModelError) as caught:
+        parse_knowledge_model("- one\n- two\n", "m.yaml")
+    assert caught.value.line == 1 and str(caught.value).startswith("m.yaml:1: ")

@@ -188,7 +188,7 @@ def test_a_missing_model_file_is_exit_31_as_every_missing_file(tmp_path):
 
 def test_the_learned_scorer_needs_its_model():
     code, _, err = run("score", FERRY, FERRY, "--scorer", "learned")
-    assert code == 2 and "learned:MODEL" in err
+    assert code == 30 and "learned:MODEL" in one_line_error(err)  # a bad value of --scorer, as any other
 
 
 def test_training_problems_of_another_domain_are_refused_before_planning(tmp_path):

@@ -12,6 +12,7 @@ from click.testing import CliRunner
 from support import COFFEE_DOMAIN, coffee_problem, invoke, one_line_error, run, write_file
 
 from relevance_plan.cli import main
+from relevance_plan.cli.choices import CheckedName, NamedChoice, NamedChoices
 from relevance_plan.cli.common import handle_errors
 from relevance_plan.cli.numbers import Number
 from relevance_plan.exitcodes import ExitCode
@@ -84,12 +85,54 @@ def test_no_numeric_option_takes_a_number_out_of_its_range(name, param, argument
     assert sorted(tmp_path.rglob("*")) == before
 
 
+# Options whose names the library checks (a planner template, a world's difficulty): plain text to click.
+CHECKED_BY_THE_LIBRARY = {"planner", "planners", "methods", "difficulty"}
+NAMED_TYPES = (NamedChoice, CheckedName, NamedChoices)
+
+
+def _named_options() -> list[tuple[str, click.Parameter]]:
+    """Every command's option that takes one of a set of names: a choice of click's or ours, or one the
+    library checks."""
+    return [
+        (name, param)
+        for name, command in _commands().items()
+        for param in command.params
+        if isinstance(param, click.Option)
+        and (isinstance(param.type, (click.Choice, *NAMED_TYPES)) or param.name in CHECKED_BY_THE_LIBRARY)
+    ]
+
+
+def test_every_option_of_names_is_checked_in_one_place():
+    found = _named_options()
+    kinds = {param.name for _, param in found}
+    assert kinds >= {"method", "methods", "scorer", "planner", "planners", "validators", "validator", "labels", "fmt"}
+    unchecked = [
+        f"{name} {param.opts[0]}"
+        for name, param in found
+        if param.name not in CHECKED_BY_THE_LIBRARY and not isinstance(param.type, NAMED_TYPES)
+    ]
+    assert not unchecked
+
+
+@pytest.mark.parametrize("name, param", _named_options(), ids=lambda p: getattr(p, "name", p))
+def test_a_name_an_option_does_not_know_is_exit_30_in_every_command(name, param, arguments, tmp_path):
+    """The same mistake, the same code, whichever command reads it and whoever finds it: one line naming
+    the value, nothing written."""
+    option = max(param.opts, key=len)
+    value = "relevance,no-such-name" if param.name == "methods" else "no-such-name"
+    before = sorted(tmp_path.rglob("*"))
+    code, _, stderr = run(name, *arguments[name], option, value)
+    assert code == ExitCode.USAGE, f"{name} {option} {value}: {stderr}"
+    assert "'no-such-name'" in one_line_error(stderr)
+    assert sorted(tmp_path.rglob("*")) == before
+
+
 @pytest.mark.parametrize(
     "args, needle",
     [
         (["plan", COFFEE_DOMAIN, COFFEE_DOMAIN, "--no-such-option"], "--no-such-option"),
         (["plan", COFFEE_DOMAIN], "PROBLEM"),
-        (["plan", COFFEE_DOMAIN, COFFEE_DOMAIN, "--method", "magic"], "--method"),
+        (["plan", COFFEE_DOMAIN, COFFEE_DOMAIN, "--method"], "--method"),
         (["plan", COFFEE_DOMAIN, COFFEE_DOMAIN, "--timeout", "soon"], "--timeout"),
         (["plan", COFFEE_DOMAIN, COFFEE_DOMAIN, "--timeout"], "--timeout"),
         (["no-such-command"], "no-such-command"),
@@ -133,15 +176,15 @@ def test_every_command_takes_verbose():
 
 
 def test_validators_as_a_comma_list_or_repeated(tmp_path):
-    """The list is read as docs/validation.md writes it: 'none' beside a validator is refused either way
-    (exit 30, the options' own check), an unknown name is the command line's error (exit 2)."""
+    """The list is read as docs/validation.md writes it: 'none' beside a validator is refused either way,
+    and so is an unknown name (exit 30, the options' own check)."""
     problem = write_file(tmp_path, "p.pddl", coffee_problem())
     plan = ["plan", COFFEE_DOMAIN, problem, "--plan-file", tmp_path / "plan", "-q"]
     for given in (["--validator", "builtin,none"], ["--validator", "builtin", "--validator", "none"]):
         code, _, stderr = run(*plan, *given)
         assert code == ExitCode.USAGE and "none" in one_line_error(stderr)
     code, _, stderr = run(*plan, "--validator", "builtin,magic")
-    assert code == ExitCode.COMMAND_LINE and "'magic'" in one_line_error(stderr)
+    assert code == ExitCode.USAGE and "'magic'" in one_line_error(stderr)
 
 
 @pytest.mark.planner

@@ -294,3 +294,42 @@ def test_an_unreachable_scheduler_leaves_no_store(copied_coffee_files, tmp_path)
     assert code == ExitCode.SCHEDULER
     one_line_error(stderr)
     assert not store.exists()
+
+
+def _stdout_outputs_and_flags() -> list[tuple[str, str, str]]:
+    """(command, an output option that '-' may name, a flag that prints on standard output), for every
+    command that has both."""
+    import click
+
+    from relevance_plan.cli import main
+    from relevance_plan.cli.paths import NOT_STDOUT, OUTPUT_FILES, STDOUT_FLAGS
+
+    context = click.Context(main)
+    found = []
+    for name in main.list_commands(context):
+        params = main.get_command(context, name).params
+        outputs = [p for p in params if p.name in OUTPUT_FILES and p.name not in NOT_STDOUT]
+        flags = [p for p in params if p.name in STDOUT_FLAGS]
+        found += [(name, min(o.opts, key=len), max(f.opts, key=len)) for o in outputs for f in flags]
+    return found
+
+
+@pytest.mark.parametrize("command, output, flag", _stdout_outputs_and_flags())
+def test_an_output_on_standard_output_and_a_flag_printing_there_are_refused_in_every_command(
+    command, output, flag, tmp_path
+):
+    problem = write_file(tmp_path, "p.pddl", (DOMAINS.parent / "problems" / "coffee-simple.pddl").read_text())
+    store = write_store(tmp_path / "s.sqlite", list(PURE_AND_RELEVANCE))
+    inputs = {"report": [store]}.get(command, [DOMAINS / "coffee" / "domain.pddl", problem])
+    value = ["markdown"] if flag == "--format" else []
+    for target in ("-", "/dev/stdout"):
+        before = sorted(tmp_path.rglob("*"))
+        code, stdout, stderr = run(command, *inputs, output, target, flag, *value)
+        assert code == ExitCode.USAGE, f"{command} {output} {target} {flag}: {stderr}"
+        assert f"'{output} {target}'" in one_line_error(stderr) and stdout == ""
+        assert sorted(tmp_path.rglob("*")) == before
+
+
+def test_every_command_with_an_output_on_standard_output_and_json_is_walked():
+    walked = {command for command, _, flag in _stdout_outputs_and_flags() if flag == "--json"}
+    assert walked >= {"prune", "plan", "draft-model", "report"}

@@ -215,6 +215,22 @@ def test_problem_features_of_durative_and_timed_problems(tmp_path):
     assert problem_features(domain, problem) == {"strips", "typing", "durative-actions", "timed-initial-literals"}
 
 
+def test_either_types_are_told_apart_by_where_they_are_and_auto_chooses_a_planner_that_reads_them():
+    from relevance_plan.planning.planners import auto
+    from relevance_plan.planning.planners import requirements as f
+
+    assert auto.choose(frozenset({f.STRIPS, f.TYPING, f.EITHER_PREDICATE_TYPES}), "").planner.name == "fast-downward"
+    with pytest.raises(UnsupportedFeatureError, match="no planner this tool knows takes .*either-object-types"):
+        auto.choose(frozenset({f.STRIPS, f.TYPING, f.EITHER_OBJECT_TYPES}), "")  # LPG's reader refuses it too
+    either = frozenset({f.STRIPS, f.TYPING, f.EITHER_TYPES})
+    if not auto.LPG.installed():
+        with pytest.raises(UnsupportedFeatureError, match="either-types"):
+            auto.choose(either, "")
+        return
+    chosen = auto.choose(either, "")
+    assert chosen.planner.name == "lpg" and "fast-downward does not take either-types" in chosen.reason
+
+
 # --------------------------------------------------------------------------- each adapter's exit codes
 
 

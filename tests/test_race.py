@@ -138,3 +138,36 @@ def test_a_race_hands_its_error_to_the_caller():
 def test_racing_is_the_default_only_for_relevance_with_a_second_core():
     assert race_by_default("pure") is False
     assert race_by_default("relevance") is (usable_cores() >= 2)
+
+
+# Fails at once on a pruned problem; on the full problem, never answers (the watchdog stops it).
+FAILS_PRUNED_HANGS_FULL = """
+    import os, sys, time
+    if os.path.basename(sys.argv[2]).startswith("pruned-"):
+        sys.exit(1)
+    time.sleep(300)
+"""
+
+
+@pytest.mark.planner
+def test_a_race_neither_side_wins_is_no_win_and_names_how_each_side_ended(tmp_path, coffee_files):
+    domain, problem = coffee_files
+    planner = "cmd:" + planner_script(tmp_path, "fails", FAILS_PRUNED_HANGS_FULL) + " {domain} {problem}"
+    result = plan_task(domain, problem, PlanOptions(planner=planner, timeout=3, race=True))
+    assert result.status is PlanStatus.OUT_OF_TIME, result.message
+    assert result.race and result.deciding_side == ""  # out of time: nobody won
+    data = result.to_json()
+    assert data["deciding_side"] is None and data["raced"] is None
+    assert data["race"] == {"pruned": "planner-crash", "full": "out-of-time"}
+    assert {entry["side"] for entry in data["attempt_log"]} == {"pruned", "full"}
+    assert data["objects_total"] == result.objects_total > 0
+
+
+@pytest.mark.planner
+def test_a_race_won_by_a_failure_is_no_win(tmp_path, coffee_files):
+    domain, problem = coffee_files
+    planner = "cmd:" + planner_script(tmp_path, "fails", "import sys\nsys.exit(1)\n") + " {domain} {problem}"
+    result = plan_task(domain, problem, PlanOptions(planner=planner, timeout=30, race=True))
+    assert result.status is PlanStatus.PLANNER_ERROR, result.message
+    assert result.deciding_side == ""
+    assert result.to_json()["race"] == {"pruned": "planner-crash", "full": "planner-crash"}

@@ -128,13 +128,18 @@ def test_no_matching_objective_is_insufficient(coffee_domain_path, model):
 def test_unknown_names_are_errors(task, model):
     with pytest.raises(ModelError, match="unknown human 'zed'"):
         score(task, model, human="zed")
+    # one token is a name, never words: near no name of the model, it is the model's error
+    with pytest.raises(ModelError, match="unknown objective 'lunch' \\(the model's objectives: "):
+        score(task, model, objective="lunch")
+    with pytest.raises(ModelError, match="unknown task 'soup' \\(the model's tasks: "):
+        score(task, model, model_task="soup")
 
 
 @pytest.mark.parametrize(
     "kwargs, match",
     [
-        ({"objective": "lunch"}, "unknown objective 'lunch'"),
-        ({"model_task": "soup"}, "unknown task 'soup'"),
+        ({"objective": "a light lunch"}, "unknown objective 'a light lunch'"),
+        ({"model_task": "hot soup"}, "unknown task 'hot soup'"),
     ],
 )
 def test_an_objective_or_task_the_model_lacks_is_free_text_which_needs_the_extra(

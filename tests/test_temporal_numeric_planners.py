@@ -264,8 +264,14 @@ def test_durations_typings_and_either_types_are_features(tmp_path):
         "(:types truck package place)", "(:types vehicle place package - object truck - vehicle)"
     )
     assert f.HIERARCHICAL_TYPING in _features(tmp_path, typed, HAUL_PROBLEM)
+    # (either ...) by where it stands: readers take it in some places only
     either = HAUL_DOMAIN.replace("(truck-at ?t - truck", "(truck-at ?t - (either truck package)")
+    assert f.EITHER_PREDICATE_TYPES in _features(tmp_path, either, HAUL_PROBLEM)
+    assert f.EITHER_TYPES not in _features(tmp_path, either, HAUL_PROBLEM)
+    either = HAUL_DOMAIN.replace(":parameters (?t - truck ?a", ":parameters (?t - (either truck package) ?a")
     assert f.EITHER_TYPES in _features(tmp_path, either, HAUL_PROBLEM)
+    either = HAUL_PROBLEM.replace("truck1 truck2 - truck", "truck1 - (either truck package) truck2 - truck")
+    assert f.EITHER_OBJECT_TYPES in _features(tmp_path, HAUL_DOMAIN, either)
 
 
 def test_declared_features_refuse_before_any_work(tmp_path):

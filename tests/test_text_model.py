@@ -398,7 +398,7 @@ def test_a_text_between_two_entries_is_a_question(kitchen):
 
 def test_a_task_is_matched_by_its_name_and_the_classes_it_needs(kitchen):
     stand_in = CountingWords()
-    match = resolve_model_task("cup", kitchen, text_model=stand_in)
+    match = resolve_model_task("make a cup", kitchen, text_model=stand_in)
     assert match.status is MatchStatus.TOO_CLOSE  # both tasks need a cup...
     match = resolve_model_task("coffee in a cup", kitchen, text_model=stand_in)
     assert match.chosen == "make-coffee"  # ...and only one needs coffee
@@ -524,3 +524,51 @@ def test_the_free_text_example_of_the_docs_prints_what_it_says(capsys):
     printed = capsys.readouterr().out.splitlines()
     assert printed[0] == "drink-at-break 0.5"
     assert printed[1].startswith("None 'fix my bicycle' is like no task of the model (nearest: water 0.17, ")
+
+
+# --------------------------------------------------------------------------- names before words
+
+
+class _Refusing:
+    def embed(self, texts):
+        raise AssertionError("the text model was used")
+
+
+@pytest.mark.parametrize("text", ["tea-tme", "Tea_Tim", "taa-time"])
+def test_a_near_miss_of_a_name_is_a_question_naming_the_closest_names(kitchen, text):
+    match = resolve_objective(text, kitchen, text_model=_Refusing())
+    assert match.status is MatchStatus.NEAR_NAME and match.chosen is None
+    assert match.candidates[0].name == "tea-time" and 0.7 < match.similarity < 1
+    assert "tea-time" in match.insufficiency and match.as_json()["status"] == "near-name"
+
+
+@pytest.mark.parametrize("vocabulary", [Vocabulary.OBJECTIVE, Vocabulary.TASK])
+def test_one_token_near_no_name_is_no_entry_of_the_model_never_words(kitchen, vocabulary):
+    from relevance_plan.errors import ModelError
+    from relevance_plan.relevance.text.understanding import understand
+
+    match = match_text("nosuch", kitchen, vocabulary, text_model=_Refusing())
+    assert match.status is MatchStatus.UNKNOWN_NAME and match.chosen is None
+    with pytest.raises(ModelError) as refused:
+        understand("nosuch", kitchen, vocabulary)
+    names = "tea-time, coffee-time" if vocabulary is Vocabulary.OBJECTIVE else "make-tea, make-coffee"
+    assert f"unknown {vocabulary.value} 'nosuch' (the model's {vocabulary.value}s: {names}" in refused.value.message
+    assert refused.value.path == "kitchen.yaml"
+
+
+def test_an_object_kind_of_one_token_is_still_words(kitchen):
+    (found,) = place_kinds(["teabag"], kitchen, text_model=CountingWords())
+    assert found.status in (MatchStatus.RESOLVED, MatchStatus.BELOW_FLOOR, MatchStatus.TOO_CLOSE)
+
+
+def test_a_cue_of_one_token_is_a_name_of_a_task_or_an_objective(kitchen):
+    from relevance_plan.errors import ModelError
+    from relevance_plan.relevance.text.understanding import understand_cue
+
+    assert understand_cue("coffee-time", kitchen).chosen == "coffee-time"
+    assert understand_cue("make-coffee", kitchen).chosen == "make-coffee"
+    near = understand_cue("coffe-time", kitchen)
+    assert near.status is MatchStatus.NEAR_NAME and near.vocabulary is Vocabulary.OBJECTIVE
+    assert understand_cue("make-cofee", kitchen).candidates[0].name == "make-coffee"
+    with pytest.raises(ModelError, match="unknown task or objective 'nosuch'.*make-tea.*tea-time"):
+        understand_cue("nosuch", kitchen)

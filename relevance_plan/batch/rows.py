@@ -43,8 +43,9 @@ def row_from_json(job_columns: Mapping[str, Any], data: Mapping[str, Any]) -> di
         "wall_time": data["wall_time"],
         "relevance_time": data["relevance_time"],
         "planner_time": data["planner_time"],
-        "objects_total": data["objects_total"],
-        "objects_kept": data["objects_kept"],
+        # the columns are NOT NULL: a count the run never established (null in result_json) is 0 there
+        "objects_total": data["objects_total"] or 0,
+        "objects_kept": data["objects_kept"] or 0,
         "attempts": len(log),
         "first_attempt_status": data["first_attempt_status"],
         "plan_length": data["plan_length"],

@@ -8,7 +8,6 @@ from __future__ import annotations
 import functools
 import importlib
 import sys
-import time
 from pathlib import Path
 
 import click
@@ -276,9 +275,7 @@ def prune(domain_path, problem_path, output, pass_through, as_json, **values):
     """
     from relevance_plan.cli.files import names_stdout, write_output
 
-    to_stdout = names_stdout(output)
-    if to_stdout and as_json:
-        raise UsageError("--json and '-o -' would both write to standard output; give -o a file name")
+    to_stdout = names_stdout(output)  # never with --json (cli.paths refuses both on standard output)
     try:
         scoring, result = _score_and_prune(domain_path, problem_path, take_scoring(values))
     except UnsupportedFeatureError as refused:
@@ -286,13 +283,16 @@ def prune(domain_path, problem_path, output, pass_through, as_json, **values):
             raise
         _pass_through(problem_path, output, refused, as_json)
         return
-    from relevance_plan.cli.explain import scores_header, selection_json
+    from relevance_plan.cli.explain import scores_header, selection_json, understood_lines
     from relevance_plan.relevance.decisions import kept_summary
 
     scores = scoring.scores
     if not scores.sufficient:
         if as_json:
             click.echo(json_text(selection_json(result)))
+        else:
+            for line in understood_lines(scores.understood, resolved_only=True):
+                click.echo(line, err=True)
         fail(f"insufficient cues: {scores.insufficiency}", ExitCode.INSUFFICIENT_CUES)
     written = write_output(output, result.text)
     if as_json:
@@ -327,9 +327,7 @@ def plan(domain_path, problem_path, method, plan_file, keep_work, race, as_json,
     from relevance_plan.planning.planners.preparation import check_keep_directory
     from relevance_plan.planning.planners.registry import make_planner
 
-    to_stdout = names_stdout(plan_file)
-    if to_stdout and as_json:
-        raise UsageError("--json and '--plan-file -' would both write to standard output; give a file name")
+    to_stdout = names_stdout(plan_file)  # never with --json (cli.paths refuses both on standard output)
 
     from dataclasses import replace
 
@@ -349,8 +347,6 @@ def plan(domain_path, problem_path, method, plan_file, keep_work, race, as_json,
             data["plan_nodes"] = nodes
         data["plan_file"] = str(plan_file) if result.status is PlanStatus.SOLVED else None
         data["plan_files"] = numbered
-        understood = result.selection.scores.understood if result.selection is not None else ()
-        data["understood"] = [match.as_json() for match in understood]
         click.echo(json_text(data))
     else:
         # With the plan on stdout, the summary goes to stderr.
@@ -398,32 +394,24 @@ def _time_spent() -> float:
 
 def _plan_within_timeout(domain_path, problem_path, options, quiet: bool, keep_work=None) -> PlanResult:
     """``plan_task``, or, if it runs past ``--timeout``, an out-of-time result naming the step it
-    was in (reported as any other result: exit 20, and one JSON object with ``--json``)."""
+    was in and what the run had established by then (reported as any other result: exit 20, and
+    one JSON object with ``--json``)."""
+    from relevance_plan.planning.results import RunRecord
     from relevance_plan.signals import DEADLINE_SIGNAL, Interrupted, deadline_alarm
 
-    steps: list[str] = []  # the first report comes once scoring is done
-
     def progress(event) -> None:
-        steps.append(event.message)
         if not quiet:
             click.echo(f"... {event.message}", err=True)
 
+    record = RunRecord(options.method, progress)
     timeout = options.timeout
-    started = time.monotonic()
     try:
         with deadline_alarm(None if timeout is None else timeout + DEADLINE_SLACK - _time_spent()):
-            return plan_task(domain_path, problem_path, options, progress=progress, keep_work=keep_work)
+            return plan_task(domain_path, problem_path, options, keep_work=keep_work, record=record)
     except Interrupted as error:
         if error.signum != DEADLINE_SIGNAL:
             raise
-        where = f"after '{steps[-1]}'" if steps else "while reading and scoring"
-        return PlanResult(
-            method=options.method,
-            status=PlanStatus.OUT_OF_TIME,
-            message=f"the {timeout:g} s --timeout ran out {where}",
-            wall_time=time.monotonic() - started,
-            planner=options.planner,
-        )
+        return record.stopped(f"the {timeout:g} s --timeout ran out {record.where()}")
 
 
 def _attempt_label(attempt) -> str:
@@ -432,37 +420,51 @@ def _attempt_label(attempt) -> str:
     return f"attempt {attempt.number} ({what})"
 
 
+def _objects_line(result: PlanResult) -> str:
+    """ "9 kept of 54", or what is not known: the problem not read, no selection made."""
+    total, kept = result.objects_total, result.objects_kept
+    if total is None:
+        return "all" if result.refusal else "not counted (the run ended before the problem was read)"
+    if kept is None:
+        return f"{total} in the problem, none selected (the run ended before the selection was made)"
+    won = " (the full problem, which won the race)" if result.deciding_side == "full" else ""
+    return f"{kept} kept of {total}{won}"
+
+
+def _race_line(result: PlanResult) -> str:
+    """Which side won the race, or that neither did and how each side ended."""
+    from relevance_plan.planning.results import race_sides
+
+    stopped = [a for a in result.attempts if a.stopped]
+    also = f"; stopped: {', '.join(_attempt_label(a) for a in stopped)}" if stopped else ""
+    if result.deciding_side:
+        side = "the full problem, planned from the start," if result.deciding_side == "full" else "the pruned side"
+        return f"{side} won{also}"
+    sides = race_sides(result)
+    names = (("pruned", "pruned side"), ("full", "full problem"))
+    ended = ", ".join(f"{name}: {sides.get(key, 'no attempt ended')}" for key, name in names)
+    return f"no side won ({ended}){also}"
+
+
 def _print_plan_summary(result: PlanResult, plan_file, err: bool = False) -> None:
     echo = functools.partial(click.echo, err=err)
     echo(f"method:      {result.method}")
     echo(f"planner:     {result.planner}" + (f" (auto: {result.planner_choice})" if result.planner_choice else ""))
     echo(f"status:      {result.status.value}")
-    if result.selection is not None:
-        from relevance_plan.cli.explain import scores_header
+    from relevance_plan.cli.explain import understood_lines
 
-        for line in scores_header(result.selection.scores)[1:]:  # free text, and what it was taken for
-            echo(f"{line.split(':')[0] + ':':<13}{line.split(':', 1)[1].strip()}")
+    for line in understood_lines(result.understood):  # free text, and what it was taken for (or asked)
+        label, said = line.split(":", 1)
+        echo(f"{label + ':':<12} {said.strip()}")
     unpruned = result.unpruned_reason
-    if result.refusal and not result.objects_total:
-        echo(f"objects:     all (pruned: no, {unpruned})")
-    else:
-        decided = " (the full problem, which won the race)" if result.deciding_side == "full" else ""
-        echo(
-            f"objects:     {result.objects_kept} kept of {result.objects_total}{decided}"
-            + (f" (pruned: no, {unpruned})" if unpruned else "")
-        )
+    echo(f"objects:     {_objects_line(result)}" + (f" (pruned: no, {unpruned})" if unpruned else ""))
     if result.selection is not None:
         from relevance_plan.relevance.decisions import kept_summary
 
         echo(f"pruning:     {kept_summary(result.selection)} first")
     echo(f"attempts:    {len(result.attempts)} (first: {result.first_attempt_status})")
-    if result.deciding_side:
-        stopped = [a for a in result.attempts if a.stopped]
-        side = "the full problem, planned from the start," if result.deciding_side == "full" else "the pruned side"
-        echo(
-            f"race:        {side} won"
-            + (f"; stopped: {', '.join(_attempt_label(a) for a in stopped)}" if stopped else "")
-        )
+    if result.race:
+        echo(f"race:        {_race_line(result)}")
     echo(
         f"time:        {result.wall_time:.2f} s total, {result.relevance_time:.2f} s relevance,"
         f" {result.planner_time:.2f} s planner, {result.validation_time:.2f} s validation"

@@ -6,6 +6,7 @@ from pathlib import Path
 
 import click
 
+from relevance_plan.cli.choices import NamedChoice
 from relevance_plan.cli.common import (
     file_option,
     handle_errors,
@@ -96,7 +97,7 @@ def compare(suite_dirs, methods, planners, jobs, store_path, scheduler, schedule
 @click.option(
     "--format",
     "fmt",
-    type=click.Choice(["markdown", "csv", "latex"]),
+    type=NamedChoice(("markdown", "csv", "latex"), "format"),
     default=None,
     help="The table per suite and method  [default: markdown].",
 )
@@ -112,7 +113,7 @@ def compare(suite_dirs, methods, planners, jobs, store_path, scheduler, schedule
 )
 @click.option(
     "--plot-format",
-    type=click.Choice(["png", "svg", "pdf"]),
+    type=NamedChoice(("png", "svg", "pdf"), "plot format"),
     default="png",
     show_default=True,
     help="File format of --plots.",
@@ -135,9 +136,7 @@ def report(store_path, fmt, as_json, as_csv, suite, plots_dir, plot_format, dpi,
     given = per_job + ([f"--format {fmt}"] if fmt is not None else [])
     if len(given) > 1:
         raise UsageError(f"choose one output: {' or '.join(given)}")
-    page_on_stdout = html_path is not None and names_stdout(html_path)
-    if page_on_stdout and given:
-        raise UsageError(f"--html - and {given[0]} would both write to standard output; give --html a file name")
+    page_on_stdout = html_path is not None and names_stdout(html_path)  # alone there (cli.paths)
     if plots_dir is not None:
         from relevance_plan.batch.plots import check_plot_targets, require_matplotlib
 
@@ -249,7 +248,7 @@ def demo(workdir, count, timeout, jobs, distractors, tiny, quiet):
 @click.option("--time-limit", "time_limit", type=seconds(), default=None, hidden=True)
 @click.option(
     "--labels",
-    type=click.Choice(["plan", "minimal"]),
+    type=NamedChoice(("plan", "minimal"), "labelling"),
     default="plan",
     show_default=True,
     help="plan: the objects the plan uses, with their closure (one run a problem); minimal: PLOI's greedy minimal"

@@ -22,6 +22,7 @@ from typing import Any
 
 import click
 
+from relevance_plan.cli.choices import CheckedName, NamedChoice, NamedChoices
 from relevance_plan.cli.numbers import MEGABYTES, SEED, THRESHOLD, seconds
 from relevance_plan.errors import InputFileError, RelevancePlanError, UsageError, ValidatorUnavailableError
 from relevance_plan.exitcodes import ExitCode, exit_code_for_error
@@ -190,19 +191,6 @@ SCORING_KEYS = (
 )
 
 
-class ScorerType(click.ParamType):
-    """A registered scorer's name, or ``learned:MODEL``."""
-
-    name = "[" + "|".join(sorted(SCORERS)) + "|learned:MODEL]"
-
-    def convert(self, value, param, ctx):
-        try:
-            check_scorer(value)
-        except UsageError as error:
-            self.fail(error.message, param, ctx)
-        return value
-
-
 def scoring_options(command=None, *, with_seed: bool = True):
     """--scorer --model --objective --task --human --place-kinds --tau-class --tau-element [--seed]."""
     if command is None:
@@ -213,7 +201,7 @@ def scoring_options(command=None, *, with_seed: bool = True):
         [
             click.option(
                 "--scorer",
-                type=ScorerType(),
+                type=CheckedName(check_scorer, "[" + "|".join(sorted(SCORERS)) + "|learned:MODEL]"),
                 default=None,
                 help="Scorer: " + ", ".join(sorted(SCORERS)) + " or learned:MODEL (a model made by 'relevance-plan"
                 " learn'); default: 'model' when a knowledge model applies, else 'goal'.",
@@ -329,7 +317,7 @@ def planning_options(per_job: bool = False):
                     "--validator",
                     "validators",
                     multiple=True,
-                    type=ValidatorNames(),
+                    type=NamedChoices(VALIDATOR_CHOICES, "validator"),
                     help="Validator(s) to use, repeated or comma-separated (--validator builtin,val; default:"
                     " builtin); 'none': report the plan NOT validated.",
                 ),
@@ -337,21 +325,6 @@ def planning_options(per_job: bool = False):
         )
 
     return group
-
-
-class ValidatorNames(click.ParamType):
-    """One or more validators, comma-separated (``builtin,val``); the option may be repeated too."""
-
-    name = "[" + "|".join(VALIDATOR_CHOICES) + "][,...]"
-
-    def convert(self, value, param, ctx):
-        if isinstance(value, tuple):
-            return value
-        names = tuple(part.strip() for part in str(value).split(","))
-        unknown = [name for name in names if name not in VALIDATOR_CHOICES]
-        if unknown:
-            self.fail(f"'{unknown[0]}' is not a validator (choose from: {', '.join(VALIDATOR_CHOICES)})", param, ctx)
-        return names
 
 
 def take_plan_options(values: dict, method: str = "relevance") -> PlanOptions:
@@ -434,4 +407,4 @@ race_option = click.option(
     " (default: on for relevance with two or more usable cores).",
 )
 
-method_option = click.option("--method", type=click.Choice(METHODS), default="relevance", show_default=True)
+method_option = click.option("--method", type=NamedChoice(METHODS, "method"), default="relevance", show_default=True)

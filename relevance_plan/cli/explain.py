@@ -51,13 +51,19 @@ def scores_header(scores: ScoreResult) -> list[str]:
     if scores.objective:
         tasks = ", ".join(f"{t} {p:.2f}" for t, p in sorted(scores.task_distribution.items(), key=lambda i: -i[1]))
         header += f"   objective: {scores.objective}   tasks: {tasks}   H = {scores.task_entropy:.2f} nats"
-    lines = [header]
-    for match in scores.understood:
+    return [header, *understood_lines(scores.understood)]
+
+
+def understood_lines(matches, resolved_only: bool = False) -> list[str]:
+    """What each free text was taken for, with its similarity and runners-up, or why it was not;
+    ``resolved_only``: the ones taken (a caller that prints the insufficiency names the others)."""
+    lines = []
+    for match in matches:
         if match.chosen is not None:
             lines.append(
                 f"understood: '{match.text}' as {match.vocabulary.value} {match.chosen} ({_similarity(match)})"
             )
-        else:
+        elif not resolved_only:
             lines.append(f"not understood: {match.insufficiency}")
     return lines
 
@@ -80,6 +86,8 @@ def print_score_table(result: Selection) -> None:
     scores = result.scores
     problem = result.task.problem
     if not scores.sufficient:
+        for line in understood_lines(scores.understood, resolved_only=True):
+            click.echo(line, err=True)  # what the words were taken for; the error itself is said once, by the command
         return
     for line in scores_header(scores):
         click.echo(line)

@@ -42,6 +42,9 @@ NOT_STDOUT = {
     "heatmap": "the table goes there",
     "store_path": "it names a results store",
 }
+# Flags that put a command's own output on standard output: beside an output file naming standard
+# output (``-o -``, ``--plan-file -``, ``--html -``), one of the two would be lost in the other.
+STDOUT_FLAGS = {"as_json": "--json", "as_csv": "--csv", "fmt": "--format"}
 # Read, never created, by these commands.
 INPUT_STORES = {"report", "learn"}
 # Inputs these commands hand to a planner, which reads them again: a pipe (``<(...)``, /dev/stdin) gives its text once.
@@ -75,12 +78,31 @@ def _check_not_stdout(command: click.Command, values: dict) -> None:
             raise UsageError(f"{option} cannot be '-' (standard output): {why}; give a name")
 
 
+def _check_one_on_stdout(command: click.Command, values: dict) -> None:
+    """``UsageError`` when an output naming standard output (``-o -``, a link to it) and a flag that
+    prints there (``--json``) are both given, whichever the command: one would be lost in the other."""
+    from relevance_plan.cli.files import names_stdout
+    from relevance_plan.errors import UsageError
+
+    flags = [flag for name, flag in STDOUT_FLAGS.items() if values.get(name) not in (None, False)]
+    for param in command.params:
+        if param.name not in OUTPUT_FILES or not flags:
+            continue
+        value = values.get(param.name)
+        if value is not None and names_stdout(value):
+            option = min(param.opts, key=len)
+            raise UsageError(
+                f"{flags[0]} and '{option} {value}' would both write to standard output; give {option} a file name"
+            )
+
+
 def _check(command: click.Command, values: dict) -> None:
     from relevance_plan.cli.files import check_output_file, check_regular_file
     from relevance_plan.io import check_input_file
 
     command_name = command.name or ""
     _check_not_stdout(command, values)
+    _check_one_on_stdout(command, values)
     inputs = []
     for name, what in INPUT_FILES.items():
         for path in _as_list(values.get(name)):

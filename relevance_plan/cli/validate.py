@@ -6,6 +6,7 @@ import sys
 
 import click
 
+from relevance_plan.cli.choices import NamedChoice
 from relevance_plan.cli.common import handle_errors, json_option, json_text, task_arguments, timeout_option
 from relevance_plan.errors import counted
 from relevance_plan.exitcodes import ExitCode
@@ -21,7 +22,7 @@ VALIDATE_TIMEOUT = 60.0
 @click.argument("plan_path", metavar="PLAN", type=click.Path(dir_okay=False))
 @click.option(
     "--validator",
-    type=click.Choice(tuple(VALIDATORS)),
+    type=NamedChoice(VALIDATORS, "validator"),
     default="builtin",
     show_default=True,
     help="builtin (the simulator the attempt loop uses), val (VAL's Validate: pip install"

@@ -67,6 +67,8 @@ from relevance_plan.planning.results import (
     AttemptStatus,
     PlanResult,
     PlanStatus,
+    RunRecord,
+    kept_count,
 )
 from relevance_plan.planning.validate import (
     ValidationResult,
@@ -75,7 +77,7 @@ from relevance_plan.planning.validate import (
     validate_plan,
     validate_unread,
 )
-from relevance_plan.progress import ProgressCallback, ProgressEvent
+from relevance_plan.progress import ProgressCallback
 from relevance_plan.relevance.decisions import kept_summary
 from relevance_plan.relevance.knowledge import KnowledgeModel
 from relevance_plan.relevance.prune import Selection, Thresholds, Widening, next_witnesses, widen
@@ -213,11 +215,14 @@ class _Attempting:
     deadline: float | None  # time.perf_counter(); None: no limit
     model: KnowledgeModel | None
     race: Race[Attempt] | None
-    say: Callable[[str], None]
+    record: RunRecord
 
     @property
     def total(self) -> int:
         return len(self.task.problem.objects)
+
+    def say(self, message: str) -> None:
+        self.record.say(message)
 
     def time_left(self) -> bool:
         return self.deadline is None or time.perf_counter() < self.deadline
@@ -246,7 +251,7 @@ def run_attempts(
     *,
     started: float,
     model: KnowledgeModel | None = None,
-    progress: ProgressCallback | None = None,
+    record: RunRecord | None = None,
     race: Race[Attempt] | None = None,
     budgets: Budgets | None = None,
 ) -> tuple[list[Attempt], float]:
@@ -259,10 +264,12 @@ def run_attempts(
     decides first ends the other (the race's attempt is then the last; a
     pruned attempt the race stopped is listed as ``stopped``).  With
     ``budgets`` (a planner that cannot prove a pruned problem unsolvable),
-    each pruned attempt is held to its budget, with or without a race.
+    each pruned attempt is held to its budget, with or without a race.  ``record`` hears each step
+    and keeps each attempt as it ends (:class:`~relevance_plan.planning.results.RunRecord`).
     """
     deadline = None if options.timeout is None else started + options.timeout
-    loop = _Attempting(task, call_planner, options, deadline, model, race, _teller(progress))
+    record = RunRecord(options.method) if record is None else record
+    loop = _Attempting(task, call_planner, options, deadline, model, race, record)
     state = _AttemptState(selection, budgets=budgets)
     attempts: list[Attempt] = []
     widening_time = 0.0
@@ -280,9 +287,11 @@ def run_attempts(
                 continue
             loop.say(f"attempt {number}: the full problem, planned since the start")
             attempts.append(replace(race.wait(), number=number))
+            record.attempted(attempts[-1])
             return attempts, widening_time
         attempt = _attempt(loop, number, pruned, state)
         attempts.append(attempt)
+        record.attempted(attempt)
         if pruned is not None:
             state = replace(state, pruned_before=state.pruned_before + 1)
         if _decided(attempt, options):
@@ -307,6 +316,7 @@ def run_attempts(
         state = replace(state, selection=widened, added_back=added_back)
     if race is not None and race.won and not (attempts and attempts[-1].status is AttemptStatus.SOLVED):
         attempts.append(replace(race.wait(), number=len(attempts) + 1))
+        record.attempted(attempts[-1])
     return attempts, widening_time
 
 
@@ -337,10 +347,11 @@ def _time_limit(loop: _Attempting, pruned: Selection | None, state: _AttemptStat
 def _attempt(loop: _Attempting, number: int, pruned: Selection | None, state: _AttemptState) -> Attempt:
     """One attempt on ``pruned`` (None: the full problem), its plan validated on the original."""
     kept = loop.total if pruned is None else len(pruned.kept)
+    limit = _time_limit(loop, pruned, state)
+    loop.record.attempting(number, pruned, limit)
     loop.say(
         f"attempt {number}: the full problem" if pruned is None else f"attempt {number}: {kept} of {loop.total} objects"
     )
-    limit = _time_limit(loop, pruned, state)
     outcome = loop.call_planner(pruned, limit)
     stopped = loop.race is not None and loop.race.won and not outcome.solved
     if stopped:
@@ -374,14 +385,7 @@ def _decided(attempt: Attempt, options: PlanOptions) -> bool:
 
 def _race_decides(attempt: Attempt) -> bool:
     """A full-problem attempt ends the run: a valid plan, or proof that the problem has none."""
-    return attempt.status in (AttemptStatus.SOLVED, AttemptStatus.UNSOLVABLE)
-
-
-def _teller(progress: ProgressCallback | None) -> Callable[[str], None]:
-    """A function that reports one step as a message (nothing when nobody listens)."""
-    if progress is None:
-        return lambda message: None
-    return lambda message: progress(ProgressEvent(message=message))
+    return attempt.wins
 
 
 def _validate(
@@ -418,15 +422,22 @@ def plan_task(
     options: PlanOptions = PlanOptions(),
     progress: ProgressCallback | None = None,
     keep_work: str | os.PathLike[str] | None = None,
+    record: RunRecord | None = None,
 ) -> PlanResult:
     """Run one method on one problem; the plan returned is always validated on the original.
 
-    With ``keep_work``, each attempt's planner files stay in ``keep_work/attempt-N``.
+    With ``keep_work``, each attempt's planner files stay in ``keep_work/attempt-N``.  ``record``
+    (made for ``progress`` when None; give one or the other) keeps what the run establishes as it
+    goes, for a caller that may stop it from outside (``RunRecord.stopped``).
     """
     started = time.perf_counter()
+    if record is None:
+        record = RunRecord(options.method, progress)
+    elif progress is not None:
+        raise UsageError("plan_task takes progress or a record that tells it, not both")
     # the run's facts die with it: no pass over them needed; its warm planners too
     with collection_paused(), open_planners(options.planner_request(keep_work)) as supply:
-        return _plan_task(str(domain_path), str(problem_path), options, supply, started, progress)
+        return _plan_task(str(domain_path), str(problem_path), options, supply, started, record)
 
 
 @dataclass(frozen=True)
@@ -440,12 +451,14 @@ class _Run:
     planner: SuppliedPlanner
     started: float  # time.perf_counter()
     scratch: Path  # where the pruned problems are written
-    progress: ProgressCallback | None
-    say: Callable[[str], None]
+    record: RunRecord
 
     @property
     def total(self) -> int:
         return len(self.task.problem.objects)
+
+    def say(self, message: str) -> None:
+        self.record.say(message)
 
     @property
     def races(self) -> bool:
@@ -496,28 +509,29 @@ def _plan_task(
     options: PlanOptions,
     supply: PlannerSupply,
     started: float,
-    progress: ProgressCallback | None,
+    record: RunRecord,
 ) -> PlanResult:
     """Read the problem, obtain its planner, and plan (unpruned when our reader refuses the input)."""
-    say = _teller(progress)
     reading = None if options.timeout is None else time.monotonic() + options.timeout
     try:
         domain = load_domain(domain_path, deadline=reading)
         task = PlanningTask(domain, load_problem(problem_path, domain, deadline=reading), deadline=reading)
     except OutOfTimeError:
-        return _ran_out("reading the domain and problem", started, options, 0)
+        return _ran_out("reading the domain and problem", started, options, record)
     except UnsupportedFeatureError as refused:
-        return _plan_unread(domain_path, problem_path, supply.for_unread(refused), refused, options, started, say)
+        return _plan_unread(domain_path, problem_path, supply.for_unread(refused), refused, options, started, record)
+    record.read(task.problem)
     # the planner's check; what it lacks and can be compiled away is compiled away at each attempt
-    planner = supply.for_task(task.domain, task.problem, problem_path, say)
-    overran = _overran("reading the domain and problem", started, options, len(task.problem.objects))
+    planner = supply.for_task(task.domain, task.problem, problem_path, record.say)
+    record.planning_with(planner.name, planner.choice)
+    overran = _overran("reading the domain and problem", started, options, record)
     if overran is not None:
         return overran
     if not options.validators or "builtin" in options.validators:
         # the plan is checked once the planner has ended: import the checker now, while it runs
         import relevance_plan.pddl.simulator  # noqa: F401
     with scratch_directory() as scratch:
-        run = _Run(task, domain_path, problem_path, options, planner, planner.began(started), scratch, progress, say)
+        run = _Run(task, domain_path, problem_path, options, planner, planner.began(started), scratch, record)
         return _race_and_plan(run)
 
 
@@ -527,6 +541,7 @@ def _race_and_plan(run: _Run) -> PlanResult:
     if not run.races:
         with cancel_scope(own_runs):
             return _prune_and_plan(run, None)
+    run.record.racing()
     run.say("racing: the full problem is planned beside the pruned attempts")
     # the race's thread takes the run's warm planners, as planning without pruning would have
     # them; the pruned attempts get their own: copies of those, asked for before the full
@@ -539,13 +554,16 @@ def _race_and_plan(run: _Run) -> PlanResult:
             return _prune_and_plan(run, race)
     finally:
         race.stop()
+        run.record.ended_beside(race.result(), race.cancelled)
 
 
 def _prune_and_plan(run: _Run, race: Race[Attempt] | None) -> PlanResult:
     """Score, choose the first selection, and run the attempts on it."""
     first = _first_selection(run)
-    if isinstance(first, PlanResult):
-        return first
+    if isinstance(first, PlanResult):  # the run ended before any attempt
+        # out of time, the race's side is part of the verdict; the tool's own verdicts (insufficient
+        # cues, a proof of unsolvability) stop it unheard
+        return _raced(first, race) if race is not None and first.status is PlanStatus.OUT_OF_TIME else first
     if race is not None and (first.selection is None or not first.selection.removed):
         run.planner.release()  # the full problem is all there is to plan, and the race plans it
     attempts, widening_time = run_attempts(
@@ -555,7 +573,7 @@ def _prune_and_plan(run: _Run, race: Race[Attempt] | None) -> PlanResult:
         run.options,
         started=run.started,
         model=first.model,
-        progress=run.progress,
+        record=run.record,
         race=race,
         budgets=_budgets(run, first),
     )
@@ -573,7 +591,7 @@ def _prune_and_plan(run: _Run, race: Race[Attempt] | None) -> PlanResult:
         planner_choice=run.planner.choice,
         compilations=run.planner.compilations,
     )
-    return result if race is None or not attempts else _raced(result, race)
+    return result if race is None else _raced(result, race)
 
 
 def _first_selection(run: _Run) -> _FirstSelection | PlanResult:
@@ -583,10 +601,10 @@ def _first_selection(run: _Run) -> _FirstSelection | PlanResult:
     try:
         scoring, unpruned_reason = _score(run)
     except OutOfTimeError:
-        return _ran_out("scoring", run.started, run.options, run.total)
+        return _ran_out("scoring", run.started, run.options, run.record)
     selection = None
     if scoring is not None:
-        overran = _overran("scoring", run.started, run.options, run.total)
+        overran = _overran("scoring", run.started, run.options, run.record)
         if overran is not None:
             return overran
         if not scoring.scores.sufficient:
@@ -598,6 +616,7 @@ def _first_selection(run: _Run) -> _FirstSelection | PlanResult:
                 run.total,
                 planner=run.planner.name,
                 scorer=scoring.scorer,
+                understood=scoring.scores.understood,
             )
         proved = _proved_unsolvable(run)
         if proved is not None:
@@ -605,13 +624,16 @@ def _first_selection(run: _Run) -> _FirstSelection | PlanResult:
         try:
             selection = scoring.first_selection(run.options.narrows_first)
         except OutOfTimeError:
-            return _ran_out("pruning and closure", run.started, run.options, run.total)
-        overran = _overran("pruning and closure", run.started, run.options, run.total)
+            return _ran_out("pruning and closure", run.started, run.options, run.record)
+    # scoring and pruning only: reading came before, and a race's planner only waits beside it
+    first = _FirstSelection(scoring, selection, unpruned_reason, time.perf_counter() - scoring_started)
+    run.record.selected(selection, first.scorer, first.seconds)
+    if selection is not None:
+        overran = _overran("pruning and closure", run.started, run.options, run.record)
         if overran is not None:
             return overran
         _say_selection(run.say, selection, run.total)
-    # scoring and pruning only: reading came before, and a race's planner only waits beside it
-    return _FirstSelection(scoring, selection, unpruned_reason, time.perf_counter() - scoring_started)
+    return first
 
 
 def _proved_unsolvable(run: _Run) -> PlanResult | None:
@@ -623,7 +645,7 @@ def _proved_unsolvable(run: _Run) -> PlanResult | None:
     try:
         proof = run.task.proved_unsolvable
     except OutOfTimeError:
-        return _ran_out("proving the goal's witnesses short", run.started, run.options, run.total)
+        return _ran_out("proving the goal's witnesses short", run.started, run.options, run.record)
     if not proof:
         return None
     run.say(f"no plan can exist: {proof}")
@@ -649,11 +671,13 @@ def _budgets(run: _Run, first: _FirstSelection) -> Budgets | None:
 
 
 def _raced(result: PlanResult, race: Race[Attempt]) -> PlanResult:
-    """The result of a race: which side decided, and the full problem's run listed when the pruned
-    side decided (or the time ran out)."""
+    """The result of a race: which side won it, if one did (a valid plan, or the full problem's proof
+    that there is none; a side that ran out of time or failed wins nothing), and the full problem's
+    run listed when it was not the last (the pruned side decided, or the time ran out)."""
     attempts = result.attempts
-    result = replace(result, deciding_side=attempts[-1].side)
-    if attempts[-1].raced:
+    won = bool(attempts) and attempts[-1].wins
+    result = replace(result, race=True, deciding_side=attempts[-1].side if won else "")
+    if attempts and attempts[-1].raced:
         return result
     race.stop()
     beside = race.result()
@@ -716,12 +740,14 @@ def _plan_unread(
     refused: UnsupportedFeatureError,
     options: PlanOptions,
     started: float,
-    say: Callable[[str], None],
+    record: RunRecord,
 ) -> PlanResult:
     """Input our reader refuses (PDDL+, object fluents): the planner gets the full problem, unpruned;
     only validators that read the files themselves can check its plan."""
     unpruned_reason = f"our reader refuses the input: {refused}"
-    say(
+    record.planning_with(planner.name, planner.choice)
+    record.unread(unpruned_reason)
+    record.say(
         f"pruned: no ({unpruned_reason}); planning the full problem with {planner.name}"
         + (f" (auto: {planner.choice})" if planner.choice else "")
     )
@@ -737,7 +763,9 @@ def _plan_unread(
         )
         return outcome, validation, time.perf_counter() - begun
 
+    record.attempting(1, None, None)
     attempt = _full_attempt(1, 0, deadline, lambda limit: planner.run(domain_path, problem_path, limit), validate)
+    record.attempted(attempt)
     return summarise(
         None,
         options,
@@ -782,18 +810,19 @@ def _left(started: float, options: PlanOptions) -> float:
     return max(started + options.timeout - time.perf_counter(), 0.0)
 
 
-def _overran(step: str, started: float, options: PlanOptions, total: int) -> PlanResult | None:
+def _overran(step: str, started: float, options: PlanOptions, record: RunRecord) -> PlanResult | None:
     """An out-of-time result naming ``step`` when ``--timeout`` ran out during it."""
     if options.timeout is None or time.perf_counter() - started < options.timeout:
         return None
-    return _ran_out(step, started, options, total)
+    return _ran_out(step, started, options, record)
 
 
-def _ran_out(step: str, started: float, options: PlanOptions, total: int) -> PlanResult:
-    """The out-of-time result of a step that stopped because ``--timeout`` ran out."""
+def _ran_out(step: str, started: float, options: PlanOptions, record: RunRecord) -> PlanResult:
+    """The out-of-time result of a step that stopped because ``--timeout`` ran out, with what the run
+    had established by then (the problem's objects, the selection)."""
     elapsed = time.perf_counter() - started
     message = f"out of time while {step}: {elapsed:.1f} s of the {options.timeout:g} s --timeout"
-    return _before_planning(PlanStatus.OUT_OF_TIME, message, elapsed, options, total)
+    return replace(record.stopped(message), wall_time=elapsed, relevance_time=elapsed)
 
 
 def _before_planning(
@@ -827,7 +856,7 @@ def summarise(
     """The result of a run of attempts: the plan of the last attempt if it validated, else why not.
 
     ``task`` is None for input our reader refuses (no objects to count)."""
-    total = len(task.problem.objects) if task is not None else 0
+    total = len(task.problem.objects) if task is not None else None
     common: dict[str, Any] = dict(
         method=options.method,
         attempts=tuple(attempts),
@@ -844,11 +873,12 @@ def summarise(
         refusal=refusal,
         planner_choice=planner_choice,
         compilations=compilations,
+        understood=selection.scores.understood if selection is not None else (),
     )
+    common["objects_kept"] = kept_count(attempts, selection, total, options.method) if task is not None else None
     if not attempts:
         return PlanResult(status=PlanStatus.OUT_OF_TIME, message="no time left for planning", **common)
     last = next((a for a in reversed(attempts) if not a.stopped), attempts[-1])
-    common["objects_kept"] = last.objects_kept
     if last.outcome.status is PlannerStatus.SOLVED:
         return _validated(last, common)
     status, message = _failure(last, options)

@@ -12,6 +12,9 @@ and ``loop.summarise``); the CLI's exit code from the :class:`PlanStatus`
 from __future__ import annotations
 
 import enum
+import threading
+import time
+from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 from typing import Any
 
@@ -20,7 +23,9 @@ from relevance_plan.pddl.plans import Plan, format_plan, format_plan_step
 from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome
 from relevance_plan.planning.planners.registry import DEFAULT_PLANNER
 from relevance_plan.planning.validate import ValidationResult, ValidationStatus
+from relevance_plan.progress import ProgressCallback, ProgressEvent
 from relevance_plan.relevance.prune import Selection, Thresholds
+from relevance_plan.relevance.text.matching import WordMatch
 
 
 class PlanStatus(enum.Enum):
@@ -92,6 +97,11 @@ class Attempt:
         """Which side of a race it ran on: "full" (planned from the start) or "pruned"."""
         return "full" if self.raced else "pruned"
 
+    @property
+    def wins(self) -> bool:
+        """Whether it decides a race: a valid plan, or (the full problem only) a proof that there is none."""
+        return self.status is AttemptStatus.SOLVED or (self.full and self.status is AttemptStatus.UNSOLVABLE)
+
     def as_stopped(self) -> Attempt:
         """This attempt, its planner stopped by the tool (the race's other side decided first)."""
         return replace(self, stopped=True, outcome=replace(self.outcome, status=PlannerStatus.STOPPED))
@@ -117,8 +127,9 @@ class PlanResult:
     relevance_time: float = 0.0
     planner_time: float = 0.0
     validation_time: float = 0.0
-    objects_total: int = 0
-    objects_kept: int = 0
+    # None: not known (the run stopped before reading the problem, or before choosing its objects)
+    objects_total: int | None = None
+    objects_kept: int | None = None  # the last attempt's objects; before any attempt, the first selection's
     selection: Selection | None = None  # the first attempt's objects (None: pure planning)
     message: str = ""
     peak_memory_mb: float = 0.0
@@ -130,10 +141,12 @@ class PlanResult:
     planner_choice: str = ""  # why the default planner chose ``planner``
     compilations: tuple[str, ...] = ()  # what was compiled away for the planner (pddl.compile)
     plans: tuple[Plan, ...] = ()  # an anytime planner's valid plans, in the order found (``plan`` is the last)
-    deciding_side: str = ""  # with a race: the side that gave the result, "full" or "pruned" (planning.race)
+    deciding_side: str = ""  # with a race: the side that won it (Attempt.wins), "full" or "pruned"; "" if none did
+    race: bool = False  # the full problem was planned beside the pruned attempts (planning.race)
+    understood: tuple[WordMatch, ...] = ()  # free text (--objective, --task) and what it was taken for, or asked
 
     @property
-    def first_kept(self) -> int:
+    def first_kept(self) -> int | None:
         """How many objects pruning chose for the first pruned attempt (all of them without pruning)."""
         return len(self.selection.kept) if self.selection is not None else self.objects_total
 
@@ -205,7 +218,7 @@ class PlanResult:
                     "planner_status": a.outcome.status.value,
                     "planner_exit_code": a.outcome.exit_code,
                     "status": a.status.value,
-                    "side": a.side if self.deciding_side else None,
+                    "side": a.side if self.race else None,
                     "wall_time": round(a.outcome.wall_time, 4),
                     **_objects_of(a),
                 }
@@ -215,13 +228,185 @@ class PlanResult:
             "message": self.message,
             "compilations": list(self.compilations),
             "deciding_side": self.deciding_side or None,
+            "race": race_sides(self) or None,  # each side's last status, whether or not one won
             "raced": self.deciding_side or None,  # deciding_side's old name, still written for one release
             "anytime_plans": [{"plan_length": len(plan), "plan_cost": plan.cost} for plan in self.plans],
+            "understood": [match.as_json() for match in self.understood],
             # one IPC line per step: a timed step keeps its start time and duration
             "plan": [format_plan_step(step, self.spelling) for step in self.plan.steps]
             if self.status is PlanStatus.SOLVED
             else [],
         }
+
+
+@dataclass(frozen=True)
+class _Running:
+    """The attempt a run is in: its number, its objects (None: the full problem), its start."""
+
+    number: int
+    selection: Selection | None
+    started: float  # time.perf_counter()
+    time_limit: float | None
+
+
+@dataclass(frozen=True)
+class _Established:
+    """What a run has established so far (:class:`RunRecord`)."""
+
+    problem: Problem | None = None
+    planner: str = DEFAULT_PLANNER
+    planner_choice: str = ""
+    selection: Selection | None = None
+    scorer: str | None = None
+    relevance_time: float = 0.0
+    attempts: tuple[Attempt, ...] = ()
+    running: _Running | None = None
+    race: bool = False
+    beside: Attempt | None = None  # the race's full problem, once it ended
+    step: str = ""  # the last step the run reported
+    refusal: str = ""  # why the input is planned unpruned: our reader refused it (nothing counted)
+
+
+class RunRecord:
+    """What one ``plan_task`` run has established, kept as it goes: the problem's objects, its planner,
+    the first selection, the attempts finished and the one under way, the last step it reported.
+
+    A run stopped from outside at any instruction (the CLI's last alarm past ``--timeout``) is then
+    reported from it (:meth:`stopped`) with the counts that were known, never as 0 of 0.  The run
+    tells its progress through :meth:`say`, which forwards to ``progress``.  The race's thread
+    reports its attempt too: the facts are one frozen value, replaced under a lock.
+    """
+
+    def __init__(self, method: str, progress: ProgressCallback | None = None):
+        self.method = method
+        self._progress = progress
+        self._started = time.perf_counter()
+        self._lock = threading.Lock()
+        self._facts = _Established()
+
+    @property
+    def facts(self) -> _Established:
+        return self._facts
+
+    def _note(self, **facts: Any) -> None:
+        with self._lock:
+            self._facts = replace(self._facts, **facts)
+
+    def say(self, message: str) -> None:
+        """One step of the run: kept as the last step, and told to ``progress``."""
+        self._note(step=message)
+        if self._progress is not None:
+            self._progress(ProgressEvent(message=message))
+
+    def read(self, problem: Problem) -> None:
+        self._note(problem=problem)
+
+    def planning_with(self, planner: str, choice: str = "") -> None:
+        self._note(planner=planner, planner_choice=choice)
+
+    def unread(self, refusal: str) -> None:
+        """Our reader refused the input: it is planned unpruned, its objects never counted."""
+        self._note(refusal=refusal)
+
+    def racing(self) -> None:
+        self._note(race=True)
+
+    def selected(self, selection: Selection | None, scorer: str | None, seconds: float) -> None:
+        self._note(selection=selection, scorer=scorer, relevance_time=seconds)
+
+    def attempting(self, number: int, selection: Selection | None, time_limit: float | None) -> None:
+        self._note(running=_Running(number, selection, time.perf_counter(), time_limit))
+
+    def attempted(self, attempt: Attempt) -> None:
+        with self._lock:
+            self._facts = replace(self._facts, attempts=(*self._facts.attempts, attempt), running=None)
+
+    def ended_beside(self, attempt: Attempt | None, cancelled: bool) -> None:
+        """The race's full problem ended (None: it raised); ``cancelled``: the run stopped it."""
+        if attempt is not None:
+            self._note(beside=attempt.as_stopped() if cancelled and not attempt.wins else attempt)
+
+    @property
+    def total(self) -> int | None:
+        """The problem's object count once it is read."""
+        problem = self._facts.problem
+        return None if problem is None else len(problem.objects)
+
+    def where(self) -> str:
+        """Where the run stands, for a message: after its last step, or the step it never left."""
+        if self._facts.step:
+            return f"after '{self._facts.step}'"
+        return "while reading the domain and problem" if self.total is None else "while scoring"
+
+    def stopped(self, message: str) -> PlanResult:
+        """The out-of-time result of a run stopped where it stood: every count it had, the attempt
+        under way listed as out of time, the race's sides as they ended."""
+        facts = self._facts
+        now = time.perf_counter()
+        attempts = list(facts.attempts)
+        if facts.running is not None:
+            attempts.append(self._cut_short(facts.running, now))
+        if facts.beside is not None and not any(a.raced for a in attempts):
+            attempts.append(replace(facts.beside, number=len(attempts) + 1))
+        return PlanResult(
+            method=self.method,
+            status=PlanStatus.OUT_OF_TIME,
+            attempts=tuple(attempts),
+            wall_time=now - self._started,
+            relevance_time=facts.relevance_time,
+            planner_time=sum(a.outcome.wall_time for a in attempts if not a.stopped),
+            validation_time=sum(a.validation_time for a in attempts),
+            objects_total=self.total,
+            objects_kept=None if self.total is None else kept_count(attempts, facts.selection, self.total, self.method),
+            selection=facts.selection,
+            message=message,
+            planner=facts.planner,
+            scorer=facts.scorer,
+            problem=facts.problem,
+            planner_choice=facts.planner_choice,
+            refusal=facts.refusal,
+            race=facts.race,
+            understood=facts.selection.scores.understood if facts.selection is not None else (),
+        )
+
+    def _cut_short(self, running: _Running, now: float) -> Attempt:
+        """The attempt under way when the run stopped, as an out-of-time attempt."""
+        total = self.total or 0
+        outcome = RunOutcome(
+            status=PlannerStatus.OUT_OF_TIME,
+            exit_code=None,
+            plan=Plan(),
+            plan_cost=None,
+            wall_time=now - running.started,
+            planner=self._facts.planner,
+            reason="stopped by the tool at the --timeout",
+        )
+        return Attempt(
+            number=running.number,
+            objects_kept=total if running.selection is None else len(running.selection.kept),
+            thresholds=None if running.selection is None else running.selection.thresholds,
+            added_back=0,
+            outcome=outcome,
+            validation=None,
+            time_limit=running.time_limit,
+            selection=running.selection,
+        )
+
+
+def kept_count(attempts: Sequence[Attempt], selection: Selection | None, total: int | None, method: str) -> int | None:
+    """A result's ``objects_kept``: the last attempt's that was not stopped; before any such attempt,
+    the first selection's; for method 'pure', all; None when no selection was made."""
+    ran = [a for a in attempts if not a.stopped]
+    if ran:
+        return ran[-1].objects_kept
+    if selection is not None:
+        return len(selection.kept)
+    return total if method == "pure" else None
+
+
+def race_sides(result: PlanResult) -> dict[str, str]:
+    """Each side of a race ("pruned", "full") and the status its last attempt ended in."""
+    return {attempt.side: attempt.status.value for attempt in result.attempts} if result.race else {}
 
 
 def _objects_of(attempt: Attempt) -> dict[str, Any]:

@@ -54,6 +54,15 @@ def _yaml_loader() -> type[yaml.SafeLoader]:
 
         _depth = 0
 
+        def construct_object(self, node: yaml.Node, deep: bool = False) -> Any:
+            """A value Python refuses to convert (an integer of thousands of digits) names its line."""
+            try:
+                return super().construct_object(node, deep=deep)
+            except (ValueError, OverflowError) as error:
+                raise ModelError(
+                    f"invalid YAML value: {str(error).splitlines()[0]}", line=node.start_mark.line + 1
+                ) from None
+
         def compose_node(self, parent: yaml.Node | None, index: int) -> yaml.Node | None:
             if self.check_event(yaml.AliasEvent):
                 event = self.peek_event()  # type: ignore[no-untyped-call]
@@ -129,6 +138,10 @@ class ModelDependency:
     line: int | None = None  # where the model declares it, for errors found against a domain
 
 
+def _no_lines() -> Mapping[tuple[str, ...], int]:
+    return MappingProxyType({})
+
+
 @dataclass(frozen=True)
 class KnowledgeModel:
     path: str
@@ -145,6 +158,12 @@ class KnowledgeModel:
     dependencies: tuple[ModelDependency, ...] = field(default=())
     # the first selection is checked for relaxed reachability and repaired, as the goal scorer's is
     sufficiency_check: bool = False
+    # the line of each key, by its path (("scene", "containment")): checks against a domain name it
+    lines: Mapping[tuple[str, ...], int] = field(default_factory=_no_lines, compare=False, repr=False)
+
+    def line_of(self, *keys: str) -> int | None:
+        """The line of the entry at ``keys`` (None for a model built in code, or an entry not written)."""
+        return self.lines.get(keys)
 
     def objective_for_goal(self, goal_predicates: set[str]) -> list[str]:
         """Objectives whose goal predicates all appear in the problem's goal."""
@@ -163,7 +182,9 @@ class _Checker:
         self.path = path
 
     def fail(self, message: str, mapping: Any = None, key: str | None = None) -> NoReturn:
-        line = None
+        """Refuse the model, naming the line of ``key`` in ``mapping`` (of ``mapping`` itself without a
+        key; of the document, line 1, without either)."""
+        line = 1
         if isinstance(mapping, _LineDict):
             line = mapping.lines.get(key, mapping.line) if key is not None else mapping.line
         raise ModelError(message, path=self.path, line=line)
@@ -248,7 +269,16 @@ def parse_knowledge_model(text: str, path: str = "<model>") -> KnowledgeModel:
         ),
         dependencies=_read_dependencies(check, data),
         sufficiency_check=_read_flag(check, data, "sufficiency_check"),
+        lines=MappingProxyType(dict(_key_lines(data))),
     )
+
+
+def _key_lines(mapping: _LineDict, above: tuple[str, ...] = ()) -> Iterator[tuple[tuple[str, ...], int]]:
+    """(path of each key, its line), for every mapping of the model."""
+    for key, value in mapping.items():
+        yield (*above, key), mapping.lines[key]
+        if isinstance(value, _LineDict):
+            yield from _key_lines(value, (*above, key))
 
 
 _TOP_LEVEL_KEYS = {
@@ -562,7 +592,9 @@ def check_knowledge_model_applies(knowledge_model: KnowledgeModel, domain: Domai
     lacks; returns the model with the scene roles it left to their defaults and the domain lacks as none."""
     if knowledge_model.domain != domain.name:
         raise ModelError(
-            f"model is for domain '{knowledge_model.domain}', not '{domain.name}'", path=knowledge_model.path
+            f"model is for domain '{knowledge_model.domain}', not '{domain.name}'",
+            path=knowledge_model.path,
+            line=knowledge_model.line_of("domain"),
         )
     scene = knowledge_model.scene.for_domain(domain)
     for role, predicate in scene.roles().items():
@@ -576,12 +608,14 @@ def check_knowledge_model_applies(knowledge_model: KnowledgeModel, domain: Domai
                 f"scene.{role} '{predicate}' is not a predicate of domain '{domain.name}'"
                 f" (write '{role}: {NO_PREDICATE}' if the domain has none)",
                 path=knowledge_model.path,
+                line=knowledge_model.line_of("scene", role),
             )
         if len(params) != SCENE_ARITY[role]:
             raise ModelError(
                 f"scene.{role} '{predicate}' takes {len(params)} argument(s), but a {role} predicate"
                 f" takes {SCENE_ARITY[role]}",
                 path=knowledge_model.path,
+                line=knowledge_model.line_of("scene", role),
             )
     for dependency in knowledge_model.dependencies:
         params = domain.predicates.get(dependency.predicate)

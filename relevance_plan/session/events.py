@@ -221,22 +221,23 @@ def _check_cue(data: dict, scene: LiveScene, model: KnowledgeModel | None) -> Ev
 
 
 def _understood_cue(text: str, model: KnowledgeModel) -> Event:
-    """A cue in words, as the model's nearest task (a cue is about what to make, as a task cue is),
-    else its nearest objective, else a question about the tasks."""
-    from relevance_plan.errors import MissingExtraError
+    """A cue in words, as the model's nearest task, else its nearest objective, else a question
+    (``understanding.understand_cue``); one token that names nothing of the model is refused."""
+    from relevance_plan.errors import MissingExtraError, ModelError
     from relevance_plan.relevance.text.matching import Vocabulary
-    from relevance_plan.relevance.text.understanding import understand
+    from relevance_plan.relevance.text.understanding import understand_cue
 
     try:
-        task = understand(text, model, Vocabulary.TASK)
-        if task.chosen is not None:
-            return Event("cue", task=task.chosen, understood=task)
-        objective = understand(text, model, Vocabulary.OBJECTIVE)
+        match = understand_cue(text, model)
     except MissingExtraError as error:
         raise EventError(f"a cue in words needs the 'text' extra: {error.message}") from None
-    if objective.chosen is not None:
-        return Event("cue", objective=objective.chosen, understood=objective)
-    return Event("cue", understood=task)
+    except ModelError as error:
+        raise EventError(error.message) from None
+    if match.chosen is None:
+        return Event("cue", understood=match)
+    if match.vocabulary is Vocabulary.TASK:
+        return Event("cue", task=match.chosen, understood=match)
+    return Event("cue", objective=match.chosen, understood=match)
 
 
 def _check_plan(data: dict, scene: LiveScene, model: KnowledgeModel | None) -> Event:

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from hostile.inputs import PLAN_PURE, both, files, link, one_line, says, suite
+from hostile.inputs import PLAN_PURE, both, files, link, one_line, says, store, suite
 from hostile.scenario import INPUT, NO_VALID, OK, PDDL, PLANNER, USAGE, Scenario, scenario_test
 
 SCENARIOS = [
@@ -71,6 +71,23 @@ SCENARIOS = [
         args=("prune", "D.pddl", "P.pddl", "-o", "/dev/stdout", "--json"),
         codes=(USAGE,),
     ),
+    # an output on standard output beside a flag printing there: refused before any work, in every command
+    *(
+        Scenario(
+            f"commands/{args[0]}-{label}-beside-{flag.strip('-')}-on-stdout",
+            args=(*args, flag),
+            setup=store,
+            codes=(USAGE,),
+            check=one_line("would both write to standard output"),
+            quick=args[0] == "draft-model",
+        )
+        for args, label, flag in (
+            (("draft-model", "D.pddl", "P.pddl", "-o", "-"), "model", "--json"),
+            (("draft-model", "D.pddl", "P.pddl", "-o", "/dev/stdout"), "model-via-dev-stdout", "--json"),
+            (("plan", "D.pddl", "P.pddl", "--plan-file", "-"), "plan", "--json"),
+            (("report", "s.sqlite", "--html", "-"), "page", "--csv"),
+        )
+    ),
 ]
 
 
@@ -106,7 +123,6 @@ USAGE_ERRORS = [
     Scenario("commands/plan-missing-problem", args=("plan", "D.pddl"), codes=(2,), check=one_line("PROBLEM")),
     Scenario("commands/prune-missing-output", args=("prune", "D.pddl", "P.pddl"), codes=(2,), check=one_line("-o")),
     Scenario("commands/plan-option-without-value", args=("plan", "D.pddl", "P.pddl", "--timeout"), codes=(2,)),
-    Scenario("commands/plan-bad-choice", args=("plan", "D.pddl", "P.pddl", "--method", "x"), codes=(2,)),
 ]
 # every numeric option: a number out of its range is exit 30 in one line naming it
 NUMBERS = [
@@ -136,7 +152,33 @@ NUMBERS = [
         ("score", "--tau-class", "nan", "nan"),
     )
 ]
-SCENARIOS += USAGE_ERRORS + NUMBERS
+# every option of names: a name it does not know is exit 30 in one line naming it, in every command
+NAMES = [
+    Scenario(
+        f"commands/{name}-{option.strip('-')}-unknown-name",
+        args=(name, *COMMAND_ARGS[name], option, value),
+        setup=suite,
+        codes=(USAGE,),
+        check=one_line("'fast'"),
+        quick=name in ("plan", "validate"),
+    )
+    for name, option, value in (
+        ("plan", "--method", "fast"),
+        ("plan", "--scorer", "fast"),
+        ("plan", "--validator", "builtin,fast"),
+        ("plan", "--planner", "fast"),
+        ("compare", "--methods", "relevance,fast"),
+        ("compare", "--planners", "auto,fast"),
+        ("score", "--scorer", "fast"),
+        ("watch", "--validator", "fast"),
+        ("validate", "--validator", "fast"),
+        ("learn", "--labels", "fast"),
+        ("report", "--format", "fast"),
+        ("report", "--plot-format", "fast"),
+        ("generate", "--difficulty", "fast"),
+    )
+]
+SCENARIOS += USAGE_ERRORS + NUMBERS + NAMES
 
 
 test_commands = scenario_test(SCENARIOS)

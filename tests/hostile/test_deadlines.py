@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import shutil
 from collections.abc import Callable
 from pathlib import Path
@@ -166,7 +167,98 @@ FLOODS = [
     ),
 ]
 
-SCENARIOS = DEADLINES + FLOODS
+
+def _counts(total: int | None, kept: str) -> Callable[[Result], str | None]:
+    """``plan --json`` names the problem's objects (``total``; None: not yet read) and what was kept:
+    "selection" (fewer than all), "none" (no selection yet, null) or "any" (null or a count); no side
+    is named a race's winner."""
+
+    def check(result: Result) -> str | None:
+        try:
+            data = json.loads(result.stdout)
+        except ValueError:
+            return f"not JSON: {result.stdout[-200:]!r}"
+        found = (data["objects_total"], data["objects_kept"], data["deciding_side"])
+        if total is not None and data["objects_total"] != total:
+            return f"objects_total, objects_kept, deciding_side: {found}, expected {total} in all"
+        if total is None and data["objects_total"] not in (None, 150_019):
+            return f"objects_total {data['objects_total']!r}: neither unknown nor the problem's"
+        kept_ok = {
+            "selection": isinstance(data["objects_kept"], int) and 0 < data["objects_kept"] < (total or 0),
+            "none": data["objects_kept"] is None,
+            "any": data["objects_kept"] is None or data["objects_kept"] > 0,
+        }[kept]
+        return None if kept_ok and data["deciding_side"] is None else f"counts and winner: {found}"
+
+    return check
+
+
+def _summary_says(*needles: str, never: tuple = ()) -> Callable[[Result], str | None]:
+    def check(result: Result) -> str | None:
+        missing = [needle for needle in needles if needle not in result.stdout]
+        present = [word for word in never if word in result.stdout]
+        return f"summary lacks {missing} or has {present}: {result.stdout[-400:]!r}" if missing or present else None
+
+    return check
+
+
+def _json_line(args: tuple) -> str:
+    """A shell line running ``plan ARGS --json`` that must end out of time (exit 20), saying nothing else."""
+    quoted = " ".join(f"'{arg}'" for arg in args)
+    return f"$TOOL {quoted} --json 2> err; test $? = {TIME} && test ! -s err"
+
+
+NEVER = ("--planner", planner("never.py"))
+RACED = ("plan", "D.pddl", "P.pddl", "--race", "--plan-file", "out.plan")
+# what a run stopped at its --timeout (or lost by every side) says: the counts it had, no winner
+COUNTS = [
+    Scenario(
+        "deadlines/json-counts-while-a-planner-runs",
+        shell=_json_line(RACED + ("--timeout", "5") + NEVER),
+        writes=("err",),
+        timeout=5,
+        check=_counts(19, "selection"),
+        quick=True,
+    ),
+    Scenario(
+        "deadlines/summary-counts-while-a-planner-runs",
+        args=RACED + ("-q", "--timeout", "5") + NEVER,
+        codes=(TIME,),
+        timeout=5,
+        check=_summary_says("kept of 19", "race:        no side won", never=("0 kept of 0", " won;", "won\n")),
+    ),
+    Scenario(
+        "deadlines/json-counts-without-pruning",
+        shell=_json_line(PLAN_PURE + ("--timeout", "5") + NEVER),
+        writes=("err",),
+        timeout=5,
+        check=_counts(19, "any"),
+    ),
+    Scenario(
+        "deadlines/json-counts-while-reading-a-huge-problem",
+        shell=_json_line(("plan", "D.pddl", "big.pddl", "--timeout", "2")),
+        setup=BIG,
+        writes=("err",),
+        timeout=2,
+        check=_counts(None, "none"),
+    ),
+    Scenario(
+        "deadlines/summary-while-reading-a-huge-problem",
+        args=("plan", "D.pddl", "big.pddl", "-q", "--timeout", "2"),
+        setup=BIG,
+        codes=(TIME,),
+        timeout=2,
+        check=_summary_says("objects:", never=("0 kept of 0",)),
+    ),
+    Scenario(
+        "deadlines/race-lost-by-both-sides-is-no-win",
+        args=RACED + ("-q", "--timeout", "20", "--planner", planner("crash.py")),
+        codes=(PLANNER,),
+        check=_summary_says("no side won (pruned side: planner-crash, full problem: planner-crash)"),
+    ),
+]
+
+SCENARIOS = DEADLINES + FLOODS + COUNTS
 
 
 test_deadlines_and_floods = scenario_test(SCENARIOS)

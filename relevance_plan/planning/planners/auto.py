@@ -33,6 +33,7 @@ from relevance_plan.io import load_domain, load_problem
 from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.planning.planners import requirements as f
 from relevance_plan.planning.planners.base import Planner, PlannerStatus, RunOutcome
+from relevance_plan.planning.planners.fast_downward.adapter import FEATURES as FAST_DOWNWARD_FEATURES
 from relevance_plan.planning.planners.fast_downward.adapter import FastDownwardPlanner, check_config
 from relevance_plan.planning.planners.fast_downward.command_line import DEFAULT_CONFIG
 from relevance_plan.planning.planners.lpg import FEATURES as LPG_FEATURES
@@ -80,7 +81,9 @@ def _engine(engine: str, package: str) -> Candidate:
     return Candidate(f"up:{engine}", takes, installed, install, lambda _: UnifiedPlanningPlanner(engine))
 
 
-FAST_DOWNWARD = Candidate("fast-downward", f.CLASSICAL, lambda: True, str, lambda config: FastDownwardPlanner(config))
+FAST_DOWNWARD = Candidate(
+    "fast-downward", FAST_DOWNWARD_FEATURES, lambda: True, str, lambda config: FastDownwardPlanner(config)
+)
 LPG = Candidate("lpg", LPG_FEATURES, lambda: lpg_binary() is not None, lambda: LPG_HINT, lambda _: LpgPlanner())
 ARIES = _engine("aries", "up-aries")
 TAMER = _engine("tamer", "up-tamer")
@@ -120,6 +123,9 @@ def choose(uses: frozenset[str], config: str, where: str | None = None) -> Choic
     installed = [candidate for candidate in fitting if candidate.installed()]
     if installed:
         reason = f"a {kind} problem" + (f" ({beyond})" if beyond else "")
+        lacking = sorted(uses - order[0].takes)
+        if installed[0] is not order[0] and lacking:  # the family's own planner cannot: say why not
+            reason += f"; {order[0].name} does not take {', '.join(lacking)}"
         # the family's other planners stand by (Fast Downward alone is the classical family's)
         first = installed[0].make(config)
         then = tuple(c.make(config) for c in installed[1:] if c in order) if kind in FALLBACK_FAMILIES else ()

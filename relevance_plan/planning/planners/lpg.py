@@ -59,6 +59,7 @@ FEATURES = frozenset(
         f.TYPING,
         f.HIERARCHICAL_TYPING,
         f.EITHER_TYPES,
+        f.EITHER_PREDICATE_TYPES,
         f.NEGATIVE_PRECONDITIONS,
         f.DISJUNCTIVE_PRECONDITIONS,
         f.EQUALITY,

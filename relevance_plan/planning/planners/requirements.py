@@ -5,9 +5,15 @@ from what the files actually contain, not from their ``:requirements``
 (which often over- or under-declare).  Universal effects count as
 ``conditional-effects``, as in PDDL; numeric fluents mean more than action
 costs: a numeric effect on anything but ``total-cost``, a numeric
-comparison, or a function in a duration.  Two names are ours, for typings
+comparison, or a function in a duration.  Four names are ours, for typings
 some planners' readers reject: ``hierarchical-typing`` (a type below
-another declared type) and ``either-types`` (``(either a b)``).  Each
+another declared type), and ``(either a b)`` by where it stands, since
+readers take it in some places only: ``either-predicate-types`` (a
+predicate's parameters: Fast Downward's translator reads it there and
+nowhere else), ``either-types`` (a parameter of an action, a derived
+predicate or a function, or a constant of the domain) and
+``either-object-types`` (an object of the problem: LPG reads the others,
+not this).  Each
 planner adapter declares the features it takes and calls
 :func:`refuse_unsupported` from its ``check``.
 """
@@ -41,6 +47,8 @@ STRIPS = "strips"
 TYPING = "typing"
 HIERARCHICAL_TYPING = "hierarchical-typing"
 EITHER_TYPES = "either-types"
+EITHER_PREDICATE_TYPES = "either-predicate-types"
+EITHER_OBJECT_TYPES = "either-object-types"
 NEGATIVE_PRECONDITIONS = "negative-preconditions"
 DISJUNCTIVE_PRECONDITIONS = "disjunctive-preconditions"
 EQUALITY = "equality"
@@ -61,6 +69,8 @@ FEATURES = (
     TYPING,
     HIERARCHICAL_TYPING,
     EITHER_TYPES,
+    EITHER_PREDICATE_TYPES,
+    EITHER_OBJECT_TYPES,
     NEGATIVE_PRECONDITIONS,
     DISJUNCTIVE_PRECONDITIONS,
     EQUALITY,
@@ -120,14 +130,21 @@ def typing_features(domain: Domain) -> frozenset[str]:
         found.add(TYPING)
     if any(parent not in ("", "object") for parent in domain.types.values()):
         found.add(HIERARCHICAL_TYPING)
-    declared = [*domain.constants.values(), *(t for _, t in _all_parameters(domain))]
-    if any(type_name.startswith("(either") for type_name in declared):
+    declared = [*domain.constants.values(), *(t for _, t in _typed_parameters(domain))]
+    if any(_either(type_name) for type_name in declared):
         found.add(EITHER_TYPES)
+    if any(_either(t) for parameters in domain.predicates.values() for _, t in parameters):
+        found.add(EITHER_PREDICATE_TYPES)
     return frozenset(found)
 
 
-def _all_parameters(domain: Domain) -> Iterator[tuple[str, str]]:
-    for parameters in (*domain.predicates.values(), *domain.functions.values()):
+def _either(type_name: str) -> bool:
+    return type_name.startswith("(either")
+
+
+def _typed_parameters(domain: Domain) -> Iterator[tuple[str, str]]:
+    """The parameters of the functions, actions and derived predicates (a predicate's are apart)."""
+    for parameters in domain.functions.values():
         yield from parameters
     for action in domain.actions:
         yield from action.parameters
@@ -149,8 +166,8 @@ def duration_features(durations: Iterable[Formula]) -> frozenset[str]:
 
 def _problem_only_features(problem: Problem) -> frozenset[str]:
     found = set(condition_features([problem.goal]))
-    if any(type_name.startswith("(either") for type_name in problem.objects.values()):
-        found.add(EITHER_TYPES)
+    if any(_either(type_name) for type_name in problem.objects.values()):
+        found.add(EITHER_OBJECT_TYPES)
     if problem.constraints is not None:
         found |= {CONSTRAINTS} | condition_features([problem.constraints])
     if problem.timed_literals:

@@ -204,7 +204,8 @@ def died_of_memory(outcome: RunOutcome, memory_limit_mb: int | None) -> RunOutco
 def refused_by_its_reader(outcome: RunOutcome) -> RunOutcome:
     """A planner whose own reader, which takes less than PDDL, cannot read the user's problem that the
     tool's reader has read: the planner does not take that input (a number written 1e308, say), which is
-    not malformed PDDL.  (Fast Downward's translator refusing the input is still malformed PDDL.)"""
+    not malformed PDDL.  (Fast Downward's adapter tells its translator's refusals of legal PDDL from
+    malformed PDDL itself, by the translator's words.)"""
     if outcome.status is not PlannerStatus.INPUT_ERROR or outcome.raw_status != READER_REFUSED:
         return outcome
     refused = "its reader refuses the problem, which the tool's reader takes"

@@ -11,6 +11,13 @@ vocabulary's floor, or within its margin of the runner-up, is reported as
 insufficient cues with the candidates, so the caller asks instead of
 guessing.  A text that spells an entry's name (``drink-at-break``,
 ``drink at break``) is that entry, without the text model.
+
+Names come before words.  For objectives and tasks, a text of one token (no
+space: ``drink-at-brek``, ``nosuch``) is read as a name, never as words: a
+name one or two typing slips from some of the model's names is a question
+naming them (``near-name``), and one near none is a name the model does not
+have (``unknown-name``, which the scoring set-up refuses as a model error).
+Words of one's own take more than one word.
 """
 
 from __future__ import annotations
@@ -42,6 +49,14 @@ class MatchStatus(str, Enum):
     RESOLVED = "resolved"
     BELOW_FLOOR = "below-floor"  # nothing is similar enough: ask
     TOO_CLOSE = "too-close"  # two entries are about as similar: ask which
+    NEAR_NAME = "near-name"  # one token a typing slip away from some names: ask which
+    UNKNOWN_NAME = "unknown-name"  # one token near no name of the vocabulary: not the model's
+
+
+# Vocabularies whose entries a one-token text is taken to name (an object kind is always words).
+NAMED_VOCABULARIES = frozenset({"objective", "task"})
+# A name is near when this share of its letters (at least one) covers the edits between them.
+TYPING_SLIPS = 0.2
 
 
 @dataclass(frozen=True)
@@ -113,6 +128,12 @@ class WordMatch:
                 f"'{said}' fits several {self.vocabulary.value}s about equally ({shown};"
                 f" margin {self.rule.margin:.2f}) — say which"
             )
+        if self.status is MatchStatus.NEAR_NAME:
+            names = ", ".join(c.name for c in self.candidates)
+            return f"'{said}' is no {self.vocabulary.value} of the model; the names nearest it: {names}"
+        if self.status is MatchStatus.UNKNOWN_NAME:
+            vocabulary = self.vocabulary.value
+            return f"'{said}' is no {vocabulary} of the model, nor near one (free text takes more than one word)"
         return ""
 
     def as_json(self) -> dict[str, Any]:
@@ -187,7 +208,10 @@ def match_texts(
     """Each of ``texts`` mapped as :func:`match_text` does, embedded together."""
     rule = rule if rule is not None else DEFAULT_RULES[vocabulary]
     phrases = vocabulary_phrases(model, vocabulary)
-    results: list[WordMatch | None] = [_spelled_entry(text, phrases, vocabulary, rule) for text in texts]
+    results: list[WordMatch | None] = [
+        _spelled_entry(text, phrases, vocabulary, rule) or _named_entry(text, phrases, vocabulary, rule)
+        for text in texts
+    ]
     unspelled = [i for i, found in enumerate(results) if found is None]
     if unspelled:
         if not phrases:
@@ -252,6 +276,56 @@ def _spelled_entry(
         if said in spelled:
             return WordMatch(text, vocabulary, MatchStatus.RESOLVED, (Candidate(name, 1.0),), rule)
     return None
+
+
+def names_one_entry(text: str) -> bool:
+    """Whether ``text`` reads as a name rather than words: one token, no space."""
+    return len(text.split()) == 1
+
+
+def _named_entry(
+    text: str, phrases: Mapping[str, tuple[str, ...]], vocabulary: Vocabulary, rule: MatchRule
+) -> WordMatch | None:
+    """For a one-token text of a named vocabulary (spelling no entry): the names it nearly spells (a
+    question), or none (a name the model does not have); None for words, and for object kinds."""
+    if vocabulary.value not in NAMED_VOCABULARIES or not names_one_entry(text):
+        return None
+    ranked = sorted(((name_similarity(text, name), name) for name in phrases), key=lambda item: (-item[0], item[1]))
+    near = tuple(Candidate(name, similarity) for similarity, name in ranked if _slips_apart(text, name))
+    if near:
+        return WordMatch(text, vocabulary, MatchStatus.NEAR_NAME, near[:SHOWN_CANDIDATES], rule)
+    nearest = tuple(Candidate(name, similarity) for similarity, name in ranked[:SHOWN_CANDIDATES])
+    return WordMatch(text, vocabulary, MatchStatus.UNKNOWN_NAME, nearest, rule)
+
+
+def _spelling(name: str) -> str:
+    return plain_words(name).replace(" ", "-")
+
+
+def name_similarity(text: str, name: str) -> float:
+    """1 less the edits between two spellings (case, '-' and '_' aside) per letter of the longer."""
+    a, b = _spelling(text), _spelling(name)
+    return 1.0 - _edits(a, b) / max(len(a), len(b), 1)
+
+
+def _slips_apart(text: str, name: str) -> bool:
+    a, b = _spelling(text), _spelling(name)
+    return _edits(a, b) <= max(1, int(TYPING_SLIPS * max(len(a), len(b))))
+
+
+def _edits(a: str, b: str) -> int:
+    """Insertions, deletions, substitutions and swaps of two neighbours turning ``a`` into ``b``."""
+    previous2: list[int] = []
+    previous = list(range(len(b) + 1))
+    for i in range(1, len(a) + 1):
+        current = [i] + [0] * len(b)
+        for j in range(1, len(b) + 1):
+            cost = 0 if a[i - 1] == b[j - 1] else 1
+            current[j] = min(previous[j] + 1, current[j - 1] + 1, previous[j - 1] + cost)
+            if i > 1 and j > 1 and a[i - 1] == b[j - 2] and a[i - 2] == b[j - 1]:
+                current[j] = min(current[j], previous2[j - 2] + 1)
+        previous2, previous = previous, current
+    return previous[len(b)]
 
 
 @functools.lru_cache(maxsize=16)

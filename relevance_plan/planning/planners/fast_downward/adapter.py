@@ -41,7 +41,12 @@ from relevance_plan.planning.planners.fast_downward.command_line import (
     planner_arguments,
     through_lean_driver,
 )
-from relevance_plan.planning.planners.requirements import CLASSICAL, refuse_unsupported
+from relevance_plan.planning.planners.requirements import (
+    CLASSICAL,
+    EITHER_OBJECT_TYPES,
+    EITHER_TYPES,
+    refuse_unsupported,
+)
 from relevance_plan.supervision.process import (
     ProcessRun,
     log_tail,
@@ -53,6 +58,10 @@ from relevance_plan.supervision.process import (
 
 NAME = "fast-downward"
 WHOSE = "Fast Downward"
+# What its translator reads: classical planning with ADL, action costs and derived predicates, an
+# ``(either ...)`` type only among a predicate's parameters ("Type value is expected to be a single
+# word" anywhere else).
+FEATURES = CLASSICAL - {EITHER_TYPES, EITHER_OBJECT_TYPES}
 
 # Driver exit code -> (its name in the driver's ``returncodes.py``, our status).
 # Checked against the copy in up-fast-downward by the tests.  A negative code
@@ -95,6 +104,12 @@ EXIT_CODES: dict[int, tuple[str, PlannerStatus]] = {
 }
 
 _TRANSLATE_CRITICAL_ERROR = 30
+_TRANSLATE_INPUT_ERROR = 31
+# The translator's complaints about PDDL it does not take (legal PDDL, which the tool's reader took):
+# its input error then means unsupported, not malformed.
+_TRANSLATOR_REFUSES = re.compile(
+    r"Type value is expected to be a single word|Fractional numbers are not supported|Unsupported assignment operator"
+)
 
 # What the user got wrong when the driver rejects --planner-config.
 _CONFIG_ERRORS = {
@@ -281,6 +296,8 @@ def _refine_status(
     memory_limited: bool = False,
 ) -> PlannerStatus:
     """Split exit codes the driver uses for several causes, by the log."""
+    if exit_code == _TRANSLATE_INPUT_ERROR and _TRANSLATOR_REFUSES.search(log):
+        return PlannerStatus.UNSUPPORTED
     if exit_code == _TRANSLATE_CRITICAL_ERROR:
         if "Could not read file" in log:
             return PlannerStatus.INPUT_ERROR
@@ -473,8 +490,9 @@ class FastDownwardPlanner:
 
     @property
     def features(self) -> frozenset[str]:
-        """Classical planning with ADL, action costs and derived predicates; no numbers, time or preferences."""
-        return CLASSICAL
+        """Classical planning with ADL, action costs and derived predicates; no numbers, time or
+        preferences, no ``(either ...)`` type outside a predicate's parameters (``FEATURES``)."""
+        return FEATURES
 
     @property
     def proves_unsolvable(self) -> bool:
