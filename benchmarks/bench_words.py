@@ -38,9 +38,9 @@ import yaml
 REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))
 
-from relevance_plan.relevance.knowledge import load_knowledge_model, shipped_knowledge_models  # noqa: E402
-from relevance_plan.relevance.text import Vocabulary, match_text, place_kinds  # noqa: E402
-from relevance_plan.relevance.text.cache import CACHE_ENV  # noqa: E402
+from relevance_plan.relevance.scoring.knowledge import load_knowledge_model, shipped_knowledge_models  # noqa: E402
+from relevance_plan.relevance.scoring.word_matching import Vocabulary, match_text, place_kinds  # noqa: E402
+from relevance_plan.text.cache import CACHE_ENV  # noqa: E402
 
 PARAPHRASES = REPO / "tests" / "data" / "paraphrases.yaml"
 
@@ -50,9 +50,9 @@ import json, os, resource, sys, time
 os.sched_setaffinity(0, {min(os.sched_getaffinity(0))})
 started = time.perf_counter()
 import numpy
-from relevance_plan.relevance.text import Vocabulary, load_text_model, match_text, place_kinds
-from relevance_plan.relevance.text.matching import vocabulary_phrases
-from relevance_plan.relevance.knowledge import load_knowledge_model, shipped_knowledge_models
+from relevance_plan.text import load_text_model
+from relevance_plan.relevance.scoring.word_matching import Vocabulary, match_text, place_kinds, vocabulary_phrases
+from relevance_plan.relevance.scoring.knowledge import load_knowledge_model, shipped_knowledge_models
 model = load_knowledge_model(shipped_knowledge_models()["coffee"])
 imported = time.perf_counter()
 load_text_model()

@@ -1,8 +1,14 @@
 """The generator's sidecar (``PROBLEM.json``): ground truth and provenance, read in one place.
 
-Every front end that needs a sidecar (the oracle scorer, ``sweep``, the
-batch rows) goes through :func:`read_sidecar_for`, so a malformed sidecar
-gets the same error everywhere.
+Every front end that needs a sidecar (the oracle scorer's set-up, ``sweep``, the
+batch rows, the scene-graph import's node map) goes through this module, so a
+malformed sidecar gets the same error everywhere.
+
+The generators write sidecars (``generators.generate``), but the reader cannot
+sit beside them: the generators are a layer above ``relevance``, whose scoring
+set-up reads the oracle's answer (``necessary_objects``) from the sidecar.  So
+the reader is a module of its own just above ``io``, whose file reading it
+uses, and below every layer that reads a sidecar.
 """
 
 from __future__ import annotations

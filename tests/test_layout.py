@@ -14,7 +14,7 @@ from relevance_plan.batch.jobs import build_jobs, run_job
 from relevance_plan.batch.keys import FINGERPRINT_RULES, config_fingerprint, config_hash
 from relevance_plan.generators.padded import GRIPPER_DOMAIN, gripper_problem
 from relevance_plan.planning.loop import PLAN_OPTION_FIELDS, PlanOptions, plan_task
-from relevance_plan.relevance.prune import Thresholds
+from relevance_plan.relevance.selection.prune import Thresholds
 
 # A value other than the default for every option (None where the default is set).
 OTHER_VALUES = {

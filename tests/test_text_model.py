@@ -21,25 +21,26 @@ from support import REPO, modules_after
 
 from relevance_plan.errors import InputFileError, MissingExtraError, UsageError
 from relevance_plan.exitcodes import ExitCode, exit_code_for_error
-from relevance_plan.relevance.knowledge import load_knowledge_model, parse_knowledge_model, shipped_knowledge_models
-from relevance_plan.relevance.text import (
+from relevance_plan.relevance.scoring import word_matching as matching
+from relevance_plan.relevance.scoring.knowledge import (
+    load_knowledge_model,
+    parse_knowledge_model,
+    shipped_knowledge_models,
+)
+from relevance_plan.relevance.scoring.word_matching import (
     MatchRule,
     MatchStatus,
-    TextModelFiles,
     Vocabulary,
-    cache,
-    installed,
-    load_text_model,
     match_text,
-    matching,
     place_kinds,
     resolve_model_task,
     resolve_objective,
     with_placed_kinds,
 )
-from relevance_plan.relevance.text.encoder import SentenceEncoder, erf, gelu
-from relevance_plan.relevance.text.tensors import read_tensors
-from relevance_plan.relevance.text.tokenizer import WordPieceTokenizer, split_words
+from relevance_plan.text import TextModelFiles, cache, installed, load_text_model
+from relevance_plan.text.encoder import SentenceEncoder, erf, gelu
+from relevance_plan.text.tensors import read_tensors
+from relevance_plan.text.tokenizer import WordPieceTokenizer, split_words
 
 PARAPHRASES = Path(__file__).parent / "data" / "paraphrases.yaml"
 
@@ -321,12 +322,12 @@ def test_without_numpy_free_text_names_the_extra(monkeypatch):
 
 def test_importing_the_package_and_naming_an_entry_need_no_numpy():
     loaded = modules_after(
-        "from relevance_plan.relevance.knowledge import load_knowledge_model, shipped_knowledge_models",
-        "from relevance_plan.relevance.text import resolve_objective",
+        "from relevance_plan.relevance.scoring.knowledge import load_knowledge_model, shipped_knowledge_models",
+        "from relevance_plan.relevance.scoring.word_matching import resolve_objective",
         "match = resolve_objective('drink at break', load_knowledge_model(shipped_knowledge_models()['coffee']))",
         "assert match.chosen == 'drink-at-break' and match.similarity == 1.0, match",
     )
-    assert "numpy" not in loaded and "relevance_plan.relevance.text.encoder" not in loaded
+    assert "numpy" not in loaded and "relevance_plan.text.encoder" not in loaded
 
 
 # --------------------------------------------------------------------------- matching, with a stand-in text model

@@ -23,8 +23,8 @@ from witness_worlds import REFUSED, World, domain_text, worlds
 from relevance_plan.io import load_task
 from relevance_plan.planning.planners.base import PlannerStatus
 from relevance_plan.planning.planners.fast_downward.adapter import run_fast_downward
-from relevance_plan.relevance.object_states import ObjectStates, State, step_of
-from relevance_plan.relevance.task import PlanningTask
+from relevance_plan.relevance.analysis.object_states import ObjectStates, State, step_of
+from relevance_plan.relevance.analysis.task import PlanningTask
 
 LIFTED = REPO / "benchmarks" / "corpus" / "taskography" / "lifted"
 
@@ -251,11 +251,11 @@ def test_the_proof_is_loaded_only_for_a_problem_short_of_witnesses(tmp_path):
         domain, problem = write_task(tmp_path, name, *_files(world("plain", items, TWO_VASE_ATOMS)))
         modules = modules_after(
             "from relevance_plan.io import load_task",
-            "from relevance_plan.relevance.task import PlanningTask",
+            "from relevance_plan.relevance.analysis.task import PlanningTask",
             f"PlanningTask(*load_task({str(domain)!r}, {str(problem)!r})).proved_unsolvable",
         )
-        assert ("relevance_plan.relevance.witness_proof" in modules) is loaded, name
-        assert ("relevance_plan.relevance.object_states" in modules) is loaded, name
+        assert ("relevance_plan.relevance.analysis.witness_proof" in modules) is loaded, name
+        assert ("relevance_plan.relevance.analysis.object_states" in modules) is loaded, name
 
 
 # --------------------------------------------------------------------------- the corpus keeps its verdicts

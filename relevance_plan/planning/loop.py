@@ -76,11 +76,11 @@ from relevance_plan.planning.validate import (
     validate_unread,
 )
 from relevance_plan.progress import ProgressCallback, ProgressEvent
-from relevance_plan.relevance.decisions import kept_summary
-from relevance_plan.relevance.knowledge import KnowledgeModel
-from relevance_plan.relevance.prune import Selection, Thresholds, Widening, next_witnesses, widen
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.scoring.knowledge import KnowledgeModel
+from relevance_plan.relevance.selection.decisions import kept_summary
+from relevance_plan.relevance.selection.prune import Selection, Thresholds, Widening, next_witnesses, widen
 from relevance_plan.relevance.setup import Scoring, ScoringOptions, score_problem
-from relevance_plan.relevance.task import PlanningTask
 from relevance_plan.supervision.process import CancelScope, cancel_scope
 
 METHODS = ("relevance", "pure", "random", "oracle")

@@ -20,7 +20,7 @@ from relevance_plan.pddl.plans import Plan, format_plan, format_plan_step
 from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome
 from relevance_plan.planning.planners.registry import DEFAULT_PLANNER
 from relevance_plan.planning.validate import ValidationResult, ValidationStatus
-from relevance_plan.relevance.prune import Selection, Thresholds
+from relevance_plan.relevance.selection.prune import Selection, Thresholds
 
 
 class PlanStatus(enum.Enum):

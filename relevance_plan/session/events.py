@@ -34,11 +34,11 @@ from relevance_plan.errors import MAX_MESSAGE, RelevancePlanError, printable
 from relevance_plan.pddl.formulas import Formula, names_in
 from relevance_plan.pddl.parser import read_problem
 from relevance_plan.pddl.sexpr import parse_sexpr
-from relevance_plan.relevance.knowledge import KnowledgeModel
+from relevance_plan.relevance.scoring.knowledge import KnowledgeModel
 from relevance_plan.session.state import LiveScene
 
 if TYPE_CHECKING:  # the text package is imported only for a cue in words
-    from relevance_plan.relevance.text.matching import WordMatch
+    from relevance_plan.relevance.scoring.word_matching import WordMatch
 
 EVENT_KINDS = ("add", "remove", "set", "unset", "goal", "human", "cue", "plan")
 # An event line holds at most this many bytes of UTF-8, its line ending not counted; a longer one is
@@ -224,8 +224,8 @@ def _understood_cue(text: str, model: KnowledgeModel) -> Event:
     """A cue in words, as the model's nearest task (a cue is about what to make, as a task cue is),
     else its nearest objective, else a question about the tasks."""
     from relevance_plan.errors import MissingExtraError
-    from relevance_plan.relevance.text.matching import Vocabulary
-    from relevance_plan.relevance.text.understanding import understand
+    from relevance_plan.relevance.scoring.word_matching import Vocabulary
+    from relevance_plan.relevance.scoring.word_understanding import understand
 
     try:
         task = understand(text, model, Vocabulary.TASK)

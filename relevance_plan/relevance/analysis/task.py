@@ -15,18 +15,13 @@ from functools import cached_property
 from relevance_plan.pddl.formulas import Atom, conjuncts, is_variable
 from relevance_plan.pddl.model import Domain, Problem, goal_objects, pinned_objects
 from relevance_plan.pddl.sexpr import check_deadline
-from relevance_plan.relevance.analysis import (
-    FactIndex,
-    GoalAnalysis,
-    analyse_goal,
-    index_init,
-    object_distances,
-    object_profiles,
-)
-from relevance_plan.relevance.invariants import count_keeping_for
-from relevance_plan.relevance.soundness import KeptObjects, objects_to_keep, soundness_requirements
-from relevance_plan.relevance.types import InferredTypes, infer_types
-from relevance_plan.relevance.witnesses import WitnessNeed, exists_needs, shortfall_reason, witness_needs
+from relevance_plan.relevance.analysis.distances import object_distances
+from relevance_plan.relevance.analysis.facts import FactIndex, index_init, object_profiles
+from relevance_plan.relevance.analysis.goal_regression import GoalAnalysis, analyse_goal
+from relevance_plan.relevance.analysis.invariants import count_keeping_for
+from relevance_plan.relevance.analysis.soundness import KeptObjects, objects_to_keep, soundness_requirements
+from relevance_plan.relevance.analysis.types import InferredTypes, infer_types
+from relevance_plan.relevance.analysis.witnesses import WitnessNeed, exists_needs, shortfall_reason, witness_needs
 
 
 @dataclass(frozen=True, eq=False)
@@ -127,7 +122,7 @@ class PlanningTask:
             return ""  # inferred classes guide choices; a proof stands on the types the domain declares
         if not self.witness_shortfall:
             return ""  # enough witnesses: nothing to prove (and the proof's modules stay unloaded)
-        from relevance_plan.relevance.witness_proof import unsolvable_by_witnesses
+        from relevance_plan.relevance.analysis.witness_proof import unsolvable_by_witnesses
 
         proof = unsolvable_by_witnesses(typing.domain, typing.problem, self.init_index)
         self.check_time("proving the goal's witnesses short")

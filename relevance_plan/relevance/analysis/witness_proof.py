@@ -85,10 +85,10 @@ from relevance_plan.pddl.formulas import (
     walk,
 )
 from relevance_plan.pddl.model import Domain, Problem, all_objects
-from relevance_plan.relevance.analysis import FactIndex
-from relevance_plan.relevance.object_states import ObjectStates, Pattern, State, Step, readable, step_of
-from relevance_plan.relevance.types import static_predicates
-from relevance_plan.relevance.witnesses import (
+from relevance_plan.relevance.analysis.facts import FactIndex
+from relevance_plan.relevance.analysis.object_states import ObjectStates, Pattern, State, Step, readable, step_of
+from relevance_plan.relevance.analysis.types import static_predicates
+from relevance_plan.relevance.analysis.witnesses import (
     WitnessNeed,
     WitnessRole,
     consuming_roles,

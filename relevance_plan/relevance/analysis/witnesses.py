@@ -24,7 +24,7 @@ and fails the planner.  This module finds, from the action schemas alone:
 
 Goal atoms are compared as the parser leaves them (names lower-cased): the
 same atom written twice, or in another letter case, is one goal atom and
-needs one witness.  The relaxed check (``exploration``) asks for that
+needs one witness.  The relaxed check (``reachability.exploration``) asks for that
 matching on top of reaching the goal; the repair adds the best next
 candidate of a goal atom left without one; widening tries the next witness
 before anything else.  All of this is a judgement that guides the choice of
@@ -50,8 +50,9 @@ from relevance_plan.pddl.formulas import (
     literals,
 )
 from relevance_plan.pddl.model import Action, Domain, Problem
-from relevance_plan.relevance.analysis import FactIndex, ObjectGraph, graph_distances
-from relevance_plan.relevance.types import static_predicates
+from relevance_plan.relevance.analysis.distances import ObjectGraph, graph_distances
+from relevance_plan.relevance.analysis.facts import FactIndex
+from relevance_plan.relevance.analysis.types import static_predicates
 
 # (predicate, positions): an atom about one object, the other arguments left open
 Pattern = tuple[str, tuple[int, ...]]

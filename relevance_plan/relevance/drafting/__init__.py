@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 from relevance_plan.errors import UsageError
 from relevance_plan.pddl.model import Domain
-from relevance_plan.relevance.completion import lacking, strict_task
+from relevance_plan.relevance.analysis.task import PlanningTask
 from relevance_plan.relevance.drafting.check import (
     DRAFT_RATIO,
     MAX_ROUNDS,
@@ -30,8 +30,8 @@ from relevance_plan.relevance.drafting.draft import Draft, first_draft
 from relevance_plan.relevance.drafting.evidence import ProblemEvidence, read_evidence
 from relevance_plan.relevance.drafting.structure import find_dependencies, find_structure
 from relevance_plan.relevance.drafting.writer import draft_text
-from relevance_plan.relevance.knowledge import KnowledgeModel, parse_knowledge_model
-from relevance_plan.relevance.task import PlanningTask
+from relevance_plan.relevance.scoring.knowledge import KnowledgeModel, parse_knowledge_model
+from relevance_plan.relevance.selection.completion import lacking, strict_task
 
 
 @dataclass(frozen=True)

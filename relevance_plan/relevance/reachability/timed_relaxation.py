@@ -47,8 +47,8 @@ from relevance_plan.pddl.formulas import (
     numeric_effects,
 )
 from relevance_plan.pddl.model import Action
-from relevance_plan.relevance.task import PlanningTask
-from relevance_plan.relevance.types import static_predicates
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.analysis.types import static_predicates
 
 GROUND_BUDGET = 200_000  # candidate bindings tried before the check gives up (None: unknown)
 SECONDS = 1.0  # and the whole check's bound (grounding and fixpoint): it must stay cheaper than a planner run

@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, Any, NoReturn
 from relevance_plan.data import DOMAINS_DIR as REPOSITORY_DOMAINS
 from relevance_plan.errors import ModelError, UsageError, printable
 from relevance_plan.pddl.model import Domain
-from relevance_plan.relevance.scene import PLACEMENT_CONDITIONS, SCENE_ROLES, ScenePredicates
+from relevance_plan.relevance.scoring.scene import PLACEMENT_CONDITIONS, SCENE_ROLES, ScenePredicates
 
 if TYPE_CHECKING:  # for the annotations only: yaml itself is imported on first use (_yaml_loader)
     import yaml

@@ -9,7 +9,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Mapping, Set
 from dataclasses import dataclass
 
-from relevance_plan.relevance.scorers import ScoreResult
+from relevance_plan.relevance.scoring.scorers import ScoreResult
 
 
 @dataclass(frozen=True)

@@ -24,12 +24,12 @@ from types import MappingProxyType
 from typing import TYPE_CHECKING, Any
 
 from relevance_plan.errors import printable
-from relevance_plan.relevance.knowledge import KnowledgeModel, ModelClass
-from relevance_plan.relevance.text.cache import cache_key, read_cached, write_cached
-from relevance_plan.relevance.text.installed import TextModel, load_text_model
+from relevance_plan.relevance.scoring.knowledge import KnowledgeModel, ModelClass
+from relevance_plan.text.cache import cache_key, read_cached, write_cached
+from relevance_plan.text.installed import TextModel, load_text_model
 
 if TYPE_CHECKING:
-    from relevance_plan.relevance.text.encoder import FloatArray
+    from relevance_plan.text.encoder import FloatArray
 
 
 class Vocabulary(str, Enum):
@@ -257,7 +257,7 @@ def _spelled_entry(
 @functools.lru_cache(maxsize=16)
 def _phrase_table(text_model: TextModel, entries: tuple[tuple[str, str], ...]) -> tuple[tuple[str, ...], FloatArray]:
     """The owners and unit vectors of a vocabulary's phrases: embedded once per text model and vocabulary
-    (and kept on disk for the next run, see :mod:`.cache`)."""
+    (and kept on disk for the next run, see :mod:`relevance_plan.text.cache`)."""
     phrases = [phrase for _, phrase in entries]
     key = cache_key(text_model.fingerprint, phrases)
     table = read_cached(key, len(phrases), text_model.width)

@@ -2,7 +2,7 @@
 
 A value that names an entry of the model is that entry, with no text model
 at all.  Anything else is free text: mapped to the nearest entry
-(:mod:`.matching`), or, when the mapping is not clear, a question.  Without
+(:mod:`.word_matching`), or, when the mapping is not clear, a question.  Without
 the ``text`` extra, free text is refused in one line that names what was not
 understood and what to install.
 """
@@ -12,8 +12,8 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 from relevance_plan.errors import MissingExtraError, printable
-from relevance_plan.relevance.knowledge import KnowledgeModel
-from relevance_plan.relevance.text.matching import Vocabulary, WordMatch, match_text, place_kinds
+from relevance_plan.relevance.scoring.knowledge import KnowledgeModel
+from relevance_plan.relevance.scoring.word_matching import Vocabulary, WordMatch, match_text, place_kinds
 
 # The option each vocabulary's free text comes from, for messages.
 OPTIONS = {Vocabulary.OBJECTIVE: "--objective", Vocabulary.TASK: "--task"}

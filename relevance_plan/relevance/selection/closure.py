@@ -22,15 +22,15 @@ from dataclasses import dataclass, replace
 
 from relevance_plan.pddl.formatter import format_atom, format_step
 from relevance_plan.pddl.model import UNSPELLED, Domain, Spelling
-from relevance_plan.relevance.analysis import (
+from relevance_plan.relevance.analysis.constraint_rules import (
     ConstraintRule,
-    FactIndex,
     infer_constraint_rules,
     single_valued_predicates,
 )
-from relevance_plan.relevance.knowledge import KnowledgeModel
-from relevance_plan.relevance.soundness import KeptForSoundness
-from relevance_plan.relevance.task import PlanningTask
+from relevance_plan.relevance.analysis.facts import FactIndex
+from relevance_plan.relevance.analysis.soundness import KeptForSoundness
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.scoring.knowledge import KnowledgeModel
 
 
 @dataclass(frozen=True)

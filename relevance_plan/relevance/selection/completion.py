@@ -17,12 +17,12 @@ from dataclasses import replace
 from relevance_plan.errors import UnsupportedFeatureError
 from relevance_plan.pddl.compile import compile_negative_preconditions
 from relevance_plan.pddl.writer import write_pruned_problem
-from relevance_plan.relevance.closure import ConstraintClosure, Restored
-from relevance_plan.relevance.exploration import relaxed_reachability
-from relevance_plan.relevance.knowledge import KnowledgeModel
-from relevance_plan.relevance.prune import Selection
-from relevance_plan.relevance.repair import repair_selection
-from relevance_plan.relevance.task import PlanningTask
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.reachability.exploration import relaxed_reachability
+from relevance_plan.relevance.scoring.knowledge import KnowledgeModel
+from relevance_plan.relevance.selection.closure import ConstraintClosure, Restored
+from relevance_plan.relevance.selection.prune import Selection
+from relevance_plan.relevance.selection.repair import repair_selection
 
 
 def strict_task(task: PlanningTask) -> PlanningTask:

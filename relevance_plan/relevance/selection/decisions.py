@@ -17,9 +17,9 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from relevance_plan.relevance.closure import Restored
-from relevance_plan.relevance.prune import Selection, can_serve_goal
-from relevance_plan.relevance.scorers.knowledge_model import GOAL_EXPLANATION
+from relevance_plan.relevance.scoring.scorers.knowledge_model import GOAL_EXPLANATION
+from relevance_plan.relevance.selection.closure import Restored
+from relevance_plan.relevance.selection.prune import Selection, can_serve_goal
 
 # The steps, as ``score`` names them.
 GOAL = "goal"

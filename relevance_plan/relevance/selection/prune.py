@@ -32,13 +32,13 @@ from typing import Any
 from relevance_plan.pddl.formatter import format_atom
 from relevance_plan.pddl.formulas import GroundAtom
 from relevance_plan.pddl.writer import write_pruned_problem
-from relevance_plan.relevance.closure import ConstraintClosure, Restored
-from relevance_plan.relevance.knowledge import KnowledgeModel, check_threshold
-from relevance_plan.relevance.repair import repair_selection
-from relevance_plan.relevance.scorers import ScoreResult
-from relevance_plan.relevance.scorers.knowledge_model import UNKNOWN_CLASS
-from relevance_plan.relevance.task import PlanningTask
-from relevance_plan.relevance.types import static_predicates
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.analysis.types import static_predicates
+from relevance_plan.relevance.scoring.knowledge import KnowledgeModel, check_threshold
+from relevance_plan.relevance.scoring.scorers import ScoreResult
+from relevance_plan.relevance.scoring.scorers.knowledge_model import UNKNOWN_CLASS
+from relevance_plan.relevance.selection.closure import ConstraintClosure, Restored
+from relevance_plan.relevance.selection.repair import repair_selection
 
 DEFAULT_TAU = 0.2
 FULL_ABOVE = 0.8  # a selection keeping more than this share of the objects plans on the full problem

@@ -21,7 +21,7 @@ from collections.abc import Callable, Collection, Iterator, Mapping, Sequence, S
 from dataclasses import dataclass
 
 from relevance_plan.pddl.formulas import GroundAtom
-from relevance_plan.relevance.analysis import (
+from relevance_plan.relevance.analysis.distances import (
     GrowingDistances,
     NearestBetween,
     graph_distances,
@@ -29,20 +29,17 @@ from relevance_plan.relevance.analysis import (
     walk_bounds,
     walk_levels,
 )
-from relevance_plan.relevance.closure import Restored
-from relevance_plan.relevance.exploration import (
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.analysis.witnesses import WitnessNeed, match_witnesses
+from relevance_plan.relevance.reachability.budget import OutOfBudget, Work
+from relevance_plan.relevance.reachability.exploration import (
     DEFAULT_BUDGET,
-    MEMBER,
     Exploration,
-    OutOfBudget,
     Reachability,
-    Step,
-    Work,
     relaxed_reachability,
-    relaxed_task,
 )
-from relevance_plan.relevance.task import PlanningTask
-from relevance_plan.relevance.witnesses import WitnessNeed, match_witnesses
+from relevance_plan.relevance.reachability.schemas import MEMBER, Step, relaxed_task
+from relevance_plan.relevance.selection.closure import Restored
 
 BUDGET_PER_OBJECT = 5_000  # the budget grows with the problem, as the planner's own grounding does
 REPAIR_SECONDS = 5.0  # and the repair's checks together stop after this long
@@ -141,7 +138,7 @@ class RepairReads:
 def _observed(task: PlanningTask, kept: frozenset[str], repaired: Repaired, reads: RepairReads) -> Repaired:
     """``repaired``, shown first to the task's ``repair_observer`` (when it has one) with what the repair read."""
     if task.repair_observer is not None:
-        from relevance_plan.relevance.timed_relaxation import applies
+        from relevance_plan.relevance.reachability.timed_relaxation import applies
 
         if applies(task) or not repaired[2].complete:
             # the sharper check ranks every object; a check that gave up stopped where time ran out
@@ -235,7 +232,7 @@ def _sharpen(repair: _Repair, closed: frozenset[str], reasons: tuple[Restored, .
     relaxation of ``timed_relaxation`` refutes (fuel no kept action can give, a durative action's end
     out of reach) has no plan: add the best-ranked objects, a doubling batch at a time, until it is
     admitted (or the planner decides, past ``give_up_above``)."""
-    from relevance_plan.relevance.timed_relaxation import applies, timed_relaxed_reachability
+    from relevance_plan.relevance.reachability.timed_relaxation import applies, timed_relaxed_reachability
 
     task, scores = repair.task, repair.scores
     if not applies(task) or timed_relaxed_reachability(task, closed) is not False:

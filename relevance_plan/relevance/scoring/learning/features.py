@@ -27,9 +27,9 @@ from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 
 from relevance_plan.pddl.formulas import literals
-from relevance_plan.relevance.scorers.base import ScoreRequest
-from relevance_plan.relevance.scorers.goal import score_by_goal
-from relevance_plan.relevance.task import PlanningTask
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.scoring.scorers.base import ScoreRequest
+from relevance_plan.relevance.scoring.scorers.goal import score_by_goal
 
 Features = dict[int, float]  # feature index -> value (absent: 0)
 

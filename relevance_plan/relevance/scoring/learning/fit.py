@@ -18,7 +18,8 @@ from typing import Any
 
 from relevance_plan.errors import UsageError
 from relevance_plan.pddl.model import Domain, Problem
-from relevance_plan.relevance.learning.features import (
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.scoring.learning.features import (
     GOAL_NAMED,
     GOAL_ZERO,
     NAMED,
@@ -27,8 +28,7 @@ from relevance_plan.relevance.learning.features import (
     Features,
     hub_predicates,
 )
-from relevance_plan.relevance.learning.learned_model import LearnedModel, domain_signature
-from relevance_plan.relevance.task import PlanningTask
+from relevance_plan.relevance.scoring.learning.learned_model import LearnedModel, domain_signature
 
 L2 = 1.0  # ridge penalty of the logistic fit (on the summed, per-problem-balanced loss)
 COVERAGE = 0.9  # the threshold keeps every needed object on this share of the training problems

@@ -21,7 +21,7 @@ from typing import Any
 from relevance_plan.errors import ModelError
 from relevance_plan.io import parse_json, read_bytes
 from relevance_plan.pddl.model import Domain
-from relevance_plan.relevance.learning.features import NAMED, NAMED_FEATURES, FeatureConfig, Features
+from relevance_plan.relevance.scoring.learning.features import NAMED, NAMED_FEATURES, FeatureConfig, Features
 
 FORMAT = "relevance-plan-learned-model"
 VERSION = 1

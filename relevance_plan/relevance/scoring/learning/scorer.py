@@ -15,10 +15,10 @@ are left to closure, as the goal scorer leaves them; goal objects score 1.
 
 from __future__ import annotations
 
-from relevance_plan.relevance.learning.features import object_features
-from relevance_plan.relevance.learning.learned_model import LearnedModel
-from relevance_plan.relevance.scorers.base import ScoreResult
-from relevance_plan.relevance.task import PlanningTask
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.scoring.learning.features import object_features
+from relevance_plan.relevance.scoring.learning.learned_model import LearnedModel
+from relevance_plan.relevance.scoring.scorers.base import ScoreResult
 
 # The default element threshold (relevance.prune.DEFAULT_TAU, which imports the scorers): the model's
 # own threshold maps onto it.

@@ -16,12 +16,12 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult
-from relevance_plan.relevance.scorers.goal import score_by_goal
-from relevance_plan.relevance.scorers.knowledge_model import score_by_knowledge_model
-from relevance_plan.relevance.scorers.oracle import score_by_oracle
-from relevance_plan.relevance.scorers.random import score_randomly
-from relevance_plan.relevance.task import PlanningTask
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.scoring.scorers.base import ScoreRequest, ScoreResult
+from relevance_plan.relevance.scoring.scorers.goal import score_by_goal
+from relevance_plan.relevance.scoring.scorers.knowledge_model import score_by_knowledge_model
+from relevance_plan.relevance.scoring.scorers.oracle import score_by_oracle
+from relevance_plan.relevance.scoring.scorers.random import score_randomly
 
 Scorer = Callable[[PlanningTask, ScoreRequest], ScoreResult]
 

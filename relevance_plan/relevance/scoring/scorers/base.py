@@ -6,10 +6,10 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
-from relevance_plan.relevance.knowledge import KnowledgeModel
+from relevance_plan.relevance.scoring.knowledge import KnowledgeModel
 
 if TYPE_CHECKING:  # the text package is imported only when free text is given
-    from relevance_plan.relevance.text.matching import WordMatch
+    from relevance_plan.relevance.scoring.word_matching import WordMatch
 
 
 @dataclass(frozen=True)

@@ -29,8 +29,8 @@ from collections.abc import Callable, Collection, Iterable, Mapping, Set
 from relevance_plan.pddl.formatter import format_atom
 from relevance_plan.pddl.formulas import GroundAtom
 from relevance_plan.pddl.model import UNSPELLED, Domain, Spelling
-from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult
-from relevance_plan.relevance.task import PlanningTask
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.scoring.scorers.base import ScoreRequest, ScoreResult
 
 ROLE_DECAY = 0.6
 NEIGHBOUR_SCORE = 0.3

@@ -19,13 +19,13 @@ from typing import TYPE_CHECKING
 
 from relevance_plan.errors import ModelError
 from relevance_plan.pddl.formulas import Formula, predicates_in
-from relevance_plan.relevance.knowledge import Human, KnowledgeModel, ModelClass
-from relevance_plan.relevance.scene import Element, build_scene
-from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult
-from relevance_plan.relevance.task import PlanningTask
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.scoring.knowledge import Human, KnowledgeModel, ModelClass
+from relevance_plan.relevance.scoring.scene import Element, build_scene
+from relevance_plan.relevance.scoring.scorers.base import ScoreRequest, ScoreResult
 
 if TYPE_CHECKING:  # the text package is imported only when free text is given
-    from relevance_plan.relevance.text.matching import WordMatch
+    from relevance_plan.relevance.scoring.word_matching import WordMatch
 
 UNKNOWN_CLASS = "(unknown)"
 # More than this share of objects of unknown class: the model is not about this scene.
@@ -173,8 +173,8 @@ def _understood(
         task is None or task in knowledge_model.task_classes
     ):
         return request, (), ""
-    from relevance_plan.relevance.text.matching import Vocabulary
-    from relevance_plan.relevance.text.understanding import OPTIONS, understand
+    from relevance_plan.relevance.scoring.word_matching import Vocabulary
+    from relevance_plan.relevance.scoring.word_understanding import OPTIONS, understand
 
     matches = []
     if objective is not None and objective not in knowledge_model.objectives:
@@ -365,7 +365,7 @@ def _place_unknown(
     unknown = [elements[name] for name, c in element_class.items() if c == UNKNOWN_CLASS]
     if not unknown:
         return element_class, ()
-    from relevance_plan.relevance.text.understanding import understand_kinds
+    from relevance_plan.relevance.scoring.word_understanding import understand_kinds
 
     by_kind = {m.text: m for m in understand_kinds([e.kind for e in unknown], knowledge_model)}
     unplaced = [e.type for e in unknown if by_kind[e.kind].chosen is None and e.type not in by_kind]

@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 from relevance_plan.errors import UsageError
-from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult
-from relevance_plan.relevance.task import PlanningTask
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.scoring.scorers.base import ScoreRequest, ScoreResult
 
 
 def score_by_oracle(task: PlanningTask, request: ScoreRequest) -> ScoreResult:

@@ -9,8 +9,8 @@ from __future__ import annotations
 
 import random as _random
 
-from relevance_plan.relevance.scorers.base import ScoreRequest, ScoreResult
-from relevance_plan.relevance.task import PlanningTask
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.scoring.scorers.base import ScoreRequest, ScoreResult
 
 
 def _rng(seed: int, problem_name: str) -> _random.Random:
