@@ -30,7 +30,7 @@ from relevance_plan.relevance.scoring.knowledge import (
 from relevance_plan.relevance.scoring.word_matching import (
     MatchRule,
     MatchStatus,
-    Vocabulary,
+    ModelVocabulary,
     match_text,
     place_kinds,
     resolve_model_task,
@@ -393,7 +393,7 @@ def test_a_text_between_two_entries_is_a_question(kitchen):
     assert match.status is MatchStatus.TOO_CLOSE and match.chosen is None
     assert {c.name for c in match.candidates[:2]} == {"tea-time", "coffee-time"}
     assert "fits several objectives about equally" in match.insufficiency and "say which" in match.insufficiency
-    lenient = match_text("tea or coffee", kitchen, Vocabulary.OBJECTIVE, MatchRule(0.35, 0.0), CountingWords())
+    lenient = match_text("tea or coffee", kitchen, ModelVocabulary.OBJECTIVE, MatchRule(0.35, 0.0), CountingWords())
     assert lenient.status is MatchStatus.RESOLVED
 
 
@@ -496,7 +496,7 @@ def evaluate(half: str) -> dict[str, list[tuple[str, str, str | None]]]:
             understood = place_kinds([text], model)[0].chosen
             rows["kinds"].append((text, intended, understood))
         else:
-            understood = match_text(text, model, Vocabulary(vocabulary)).chosen
+            understood = match_text(text, model, ModelVocabulary(vocabulary)).chosen
             rows["sentences"].append((text, intended, understood))
     return rows
 

@@ -23,7 +23,7 @@ from witness_worlds import REFUSED, World, domain_text, worlds
 from relevance_plan.io import load_task
 from relevance_plan.planning.planners.base import PlannerStatus
 from relevance_plan.planning.planners.fast_downward.adapter import run_fast_downward
-from relevance_plan.relevance.analysis.object_states import ObjectStates, State, step_of
+from relevance_plan.relevance.analysis.object_states import ObjectState, ObjectStates, step_of
 from relevance_plan.relevance.analysis.task import PlanningTask
 
 LIFTED = REPO / "benchmarks" / "corpus" / "taskography" / "lifted"
@@ -318,9 +318,9 @@ def test_a_mark_never_outlives_a_delete_that_may_remove_its_atom(tmp_path):
     has = states.index[("has", 0)]
     cap = states.caps[has]
     counts = tuple(cap if i == has else c for i, c in enumerate(next(iter(states.initial)).counts))
-    after = states.successors(steps["drain"], State(counts, frozenset({has})))
+    after = states.successors(steps["drain"], ObjectState(counts, frozenset({has})))
     # "the cap or more" may stay the cap with the marked atom gone; a count of 0 keeps no mark
-    assert State(counts, frozenset()) in after
+    assert ObjectState(counts, frozenset()) in after
     assert all(state.counts[has] > 0 for state in after if has in state.marked)
 
 

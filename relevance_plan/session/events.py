@@ -224,14 +224,14 @@ def _understood_cue(text: str, model: KnowledgeModel) -> Event:
     """A cue in words, as the model's nearest task (a cue is about what to make, as a task cue is),
     else its nearest objective, else a question about the tasks."""
     from relevance_plan.errors import MissingExtraError
-    from relevance_plan.relevance.scoring.word_matching import Vocabulary
+    from relevance_plan.relevance.scoring.word_matching import ModelVocabulary
     from relevance_plan.relevance.scoring.word_understanding import understand
 
     try:
-        task = understand(text, model, Vocabulary.TASK)
+        task = understand(text, model, ModelVocabulary.TASK)
         if task.chosen is not None:
             return Event("cue", task=task.chosen, understood=task)
-        objective = understand(text, model, Vocabulary.OBJECTIVE)
+        objective = understand(text, model, ModelVocabulary.OBJECTIVE)
     except MissingExtraError as error:
         raise EventError(f"a cue in words needs the 'text' extra: {error.message}") from None
     if objective.chosen is not None:

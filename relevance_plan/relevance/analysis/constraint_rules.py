@@ -27,7 +27,7 @@ class ConstraintRule:
     relation: str = ""  # what the knowledge model says a fact of it is ("on top of"); "" when it says nothing
 
 
-def _precondition_predicates(domain: Domain) -> set[str]:
+def _condition_predicates(domain: Domain) -> set[str]:
     used: set[str] = set()
     for action in domain.relaxed_actions:
         used.update(atom.predicate for atom, _ in literals(action.precondition))
@@ -67,7 +67,7 @@ def blocking_predicates(domain: Domain) -> set[tuple[str, int, int]]:
 
 def infer_constraint_rules(domain: Domain, index: FactIndex) -> tuple[ConstraintRule, ...]:
     """Closure rules read off the action schemas and the initial state."""
-    used = _precondition_predicates(domain)
+    used = _condition_predicates(domain)
     rules: list[ConstraintRule] = []
     for predicate, blocker, blocked in sorted(blocking_predicates(domain)):
         rules.append(ConstraintRule(predicate, blocked, blocker, "blocker"))

@@ -22,7 +22,7 @@ from relevance_plan.relevance.analysis.invariants import count_keeping_for
 
 # A lifted goal pattern: (predicate, args), each arg ("obj", name) or ("type", type name).
 Term = tuple[str, str]
-Pattern = tuple[str, tuple[Term, ...]]
+GoalPattern = tuple[str, tuple[Term, ...]]
 
 
 @dataclass(frozen=True)
@@ -69,7 +69,7 @@ class _Regression:
             for item in effect_literals(action.effect):
                 if item.is_add:
                     self.achievers[item.atom.predicate].append((action, item.atom, item.condition))
-        self.best: dict[Pattern, int] = {}
+        self.best: dict[GoalPattern, int] = {}
         self.rows: dict[str, frozenset[tuple[str, ...]]] = {}
         self.role_depth: dict[str, int] = {}
         # (predicate, args with each object that is not a constant as its type) -> what regress found
@@ -77,7 +77,7 @@ class _Regression:
 
     def run(self) -> GoalAnalysis:
         goal_types: set[str] = set()
-        frontier: list[tuple[Pattern, int]] = []
+        frontier: list[tuple[GoalPattern, int]] = []
         for atom, _, scope in scoped_literals(self.problem.goal):
             variables = dict(scope)
             goal_types.update(variables.values())
@@ -98,7 +98,7 @@ class _Regression:
             goal_variable_types=frozenset(goal_types),
         )
 
-    def initially_satisfiable(self, pattern: Pattern) -> bool:
+    def initially_satisfiable(self, pattern: GoalPattern) -> bool:
         # Some initial fact matches: some object of the right type already has
         # the property (a cup that is clear, a free gripper), so the pattern
         # need not be regressed; closure handles the objects in the way.
@@ -141,7 +141,7 @@ class _Regression:
             )
         return rows
 
-    def regress(self, pattern: Pattern, depth: int) -> list[tuple[Pattern, int]]:
+    def regress(self, pattern: GoalPattern, depth: int) -> list[tuple[GoalPattern, int]]:
         """The patterns the achievers of ``pattern`` need, with their depths; records new roles.
 
         Patterns that differ only in objects of the same types (two thousand packages' destinations)
@@ -180,7 +180,7 @@ class _Regression:
             for name, template, step in templates
         ]
 
-    def _regress(self, pattern: Pattern) -> tuple[list[tuple[Pattern, int]], list[str]]:
+    def _regress(self, pattern: GoalPattern) -> tuple[list[tuple[GoalPattern, int]], list[str]]:
         """What :meth:`regress` finds for ``pattern``: the patterns with their depth from it, and the
         types of the roles its achievers introduce."""
         options = []
@@ -230,7 +230,7 @@ class GoalReads:
     answer changes and those predicates keep their single facts and functional positions, the
     analysis of the same goal comes out the same."""
 
-    patterns: Mapping[str, tuple[tuple[Pattern, bool], ...]]  # predicate -> (pattern, answer)
+    patterns: Mapping[str, tuple[tuple[GoalPattern, bool], ...]]  # predicate -> (pattern, answer)
     role_predicates: frozenset[str]
 
     def answers_change(
@@ -257,7 +257,7 @@ class GoalReads:
         return False
 
 
-def _fits(domain: Domain, type_of: Callable[[str], str], pattern: Pattern, fact: GroundAtom) -> bool:
+def _fits(domain: Domain, type_of: Callable[[str], str], pattern: GoalPattern, fact: GroundAtom) -> bool:
     args = pattern[1]
     return len(args) == len(fact) - 1 and all(
         value == name if kind == "obj" else domain.is_subtype(type_of(value), name)
@@ -265,7 +265,7 @@ def _fits(domain: Domain, type_of: Callable[[str], str], pattern: Pattern, fact:
     )
 
 
-def _satisfied(domain: Domain, type_of: Callable[[str], str], index: FactIndex, pattern: Pattern) -> bool:
+def _satisfied(domain: Domain, type_of: Callable[[str], str], index: FactIndex, pattern: GoalPattern) -> bool:
     """Whether some fact satisfies ``pattern`` (the facts of an object it names, when it names one)."""
     named = [name for kind, name in pattern[1] if kind == "obj"]
     facts = index.by_object.get(named[0], ()) if named else index.by_predicate.get(pattern[0], ())
@@ -277,14 +277,14 @@ class _ReadingRegression(_Regression):
 
     def __init__(self, domain: Domain, problem: Problem, index: FactIndex, deadline: float | None = None):
         super().__init__(domain, problem, index, deadline)
-        self.asked: dict[Pattern, bool] = {}
+        self.asked: dict[GoalPattern, bool] = {}
 
-    def initially_satisfiable(self, pattern: Pattern) -> bool:
+    def initially_satisfiable(self, pattern: GoalPattern) -> bool:
         answer = self.asked[pattern] = super().initially_satisfiable(pattern)
         return answer
 
     def reads(self) -> GoalReads:
-        patterns: dict[str, list[tuple[Pattern, bool]]] = defaultdict(list)
+        patterns: dict[str, list[tuple[GoalPattern, bool]]] = defaultdict(list)
         for pattern, answer in self.asked.items():
             patterns[pattern[0]].append((pattern, answer))
         regressed = {pattern[0] for pattern, satisfied in self.asked.items() if not satisfied}

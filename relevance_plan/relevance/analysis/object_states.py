@@ -50,24 +50,24 @@ from itertools import combinations, product
 from relevance_plan.pddl.formulas import TRUE, Atom, Equality, Not, conjuncts, effect_literals, is_variable
 from relevance_plan.pddl.model import Action, Domain, Problem
 
-Pattern = tuple[str, int]  # (predicate, the object's position)
+ObjectPattern = tuple[str, int]  # (predicate, the object's position)
 MAX_STATES = 20_000  # an exploration that finds more gives up
 
 
 @dataclass(frozen=True)
-class Step:
+class ObjectStep:
     """One action acting on the object bound to one of its parameters (``variable``)."""
 
     action: Action
     variable: str | None  # None: the action names such objects only through quantified variables
-    requires: tuple[tuple[Atom, Pattern], ...]  # top-level positive conditions on the object
-    forbids: frozenset[Pattern]  # top-level ``not (p ?x)`` with the object p's only argument
-    adds: tuple[tuple[Atom, Pattern], ...]  # unconditional adds about it
-    deletes: tuple[tuple[Atom, Pattern], ...]  # unconditional deletes about it
-    may_add: tuple[Pattern, ...]  # one entry per conditional add that may be about it
-    may_delete: tuple[Pattern, ...]  # one entry per conditional delete that may be about it
+    requires: tuple[tuple[Atom, ObjectPattern], ...]  # top-level positive conditions on the object
+    forbids: frozenset[ObjectPattern]  # top-level ``not (p ?x)`` with the object p's only argument
+    adds: tuple[tuple[Atom, ObjectPattern], ...]  # unconditional adds about it
+    deletes: tuple[tuple[Atom, ObjectPattern], ...]  # unconditional deletes about it
+    may_add: tuple[ObjectPattern, ...]  # one entry per conditional add that may be about it
+    may_delete: tuple[ObjectPattern, ...]  # one entry per conditional delete that may be about it
     distinct: frozenset[frozenset[str]]  # pairs of terms the action requires to differ
-    may_set: frozenset[Pattern] = frozenset()  # quantified effects that may leave any count
+    may_set: frozenset[ObjectPattern] = frozenset()  # quantified effects that may leave any count
 
     @property
     def acts(self) -> bool:
@@ -75,16 +75,16 @@ class Step:
         return self.variable is not None or bool(self.may_add or self.may_delete or self.may_set)
 
     @property
-    def patterns(self) -> frozenset[Pattern]:
+    def patterns(self) -> frozenset[ObjectPattern]:
         """Every pattern of the object the step reads or may change."""
         pairs = (*self.requires, *self.adds, *self.deletes)
         return frozenset(
             {own for _, own in pairs} | self.forbids | set(self.may_add) | set(self.may_delete) | self.may_set
         )
 
-    def need(self) -> dict[Pattern, int]:
+    def need(self) -> dict[ObjectPattern, int]:
         """How many atoms of each pattern the object must have for the step to apply."""
-        by_pattern: dict[Pattern, list[Atom]] = {}
+        by_pattern: dict[ObjectPattern, list[Atom]] = {}
         for atom, own in self.requires:
             by_pattern.setdefault(own, []).append(atom)
         return {own: len(atoms) if self.apart(atoms) else 1 for own, atoms in by_pattern.items()}
@@ -102,7 +102,7 @@ class Step:
 
 
 @dataclass(frozen=True)
-class State:
+class ObjectState:
     counts: tuple[int, ...]  # per pattern of ``ObjectStates.patterns``
     marked: frozenset[int] = frozenset()  # patterns whose marked atom (see the module's docstring) is still there
 
@@ -129,32 +129,34 @@ class ObjectStates:
         objects = [name for name, kind in problem.objects.items() if compatible(domain, kind, type_name)]
         self.initial = {self._counted(problem.init, name) for name in objects}
 
-    def _counted(self, facts: Iterable[tuple[str, ...]], name: str) -> State:
+    def _counted(self, facts: Iterable[tuple[str, ...]], name: str) -> ObjectState:
         counts = [0] * len(self.patterns)
         for fact in facts:
             for position, arg in enumerate(fact[1:]):
                 i = self.index.get((fact[0], position))
                 if arg == name and i is not None:
                     counts[i] = min(self.caps[i], counts[i] + 1)
-        return State(tuple(counts))
+        return ObjectState(tuple(counts))
 
-    def applies(self, step: Step, state: State) -> bool:
+    def applies(self, step: ObjectStep, state: ObjectState) -> bool:
         counts = state.counts
         return all(counts[self.index[own]] >= need for own, need in step.need().items()) and all(
             counts[self.index[own]] == 0 for own in step.forbids
         )
 
-    def successors(self, step: Step, state: State) -> list[State]:
+    def successors(self, step: ObjectStep, state: ObjectState) -> list[ObjectState]:
         """The states ``step`` may leave the object in (it applies)."""
         options: list[list[tuple[int, bool]]] = []  # per pattern: (count, still marked)
         for i, pattern in enumerate(self.patterns):
             options.append(sorted(self._after(step, pattern, state.counts[i], i in state.marked, self.caps[i])))
         return [
-            State(tuple(c for c, _ in chosen), frozenset(i for i, (_, m) in enumerate(chosen) if m))
+            ObjectState(tuple(c for c, _ in chosen), frozenset(i for i, (_, m) in enumerate(chosen) if m))
             for chosen in product(*options)
         ]
 
-    def _after(self, step: Step, pattern: Pattern, count: int, marked: bool, cap: int) -> set[tuple[int, bool]]:
+    def _after(
+        self, step: ObjectStep, pattern: ObjectPattern, count: int, marked: bool, cap: int
+    ) -> set[tuple[int, bool]]:
         """The pattern's count after the step, each way it may go, and whether its mark may stay:
         deletes first, then adds (see the module's docstring)."""
         adds = {atom for atom, own in step.adds if own == pattern}
@@ -183,8 +185,10 @@ class ObjectStates:
         return results
 
     def explore(
-        self, starts: Iterable[State], allowed: Callable[[Step, State], bool] = lambda step, state: True
-    ) -> set[State] | None:
+        self,
+        starts: Iterable[ObjectState],
+        allowed: Callable[[ObjectStep, ObjectState], bool] = lambda step, state: True,
+    ) -> set[ObjectState] | None:
         """Every state reachable from ``starts`` by the steps ``allowed`` (None: more than MAX_STATES)."""
         seen = set(starts)
         frontier = list(seen)
@@ -209,10 +213,10 @@ def _minus(count: int, gone: int, cap: int) -> range:
     return range(count - gone, count - gone + 1) if count >= gone else range(0)
 
 
-def step_of(domain: Domain, action: Action, variable: str | None, type_name: str) -> Step:
+def step_of(domain: Domain, action: Action, variable: str | None, type_name: str) -> ObjectStep:
     """``action`` acting on the object bound to ``variable`` (None: through quantified variables only)."""
-    requires: list[tuple[Atom, Pattern]] = []
-    forbids: set[Pattern] = set()
+    requires: list[tuple[Atom, ObjectPattern]] = []
+    forbids: set[ObjectPattern] = set()
     distinct: set[frozenset[str]] = set()
     derived = domain.derived_predicates  # no pattern of the object's: a condition on one is taken as met
     for part in conjuncts(action.precondition):
@@ -221,11 +225,11 @@ def step_of(domain: Domain, action: Action, variable: str | None, type_name: str
         elif isinstance(part, Not) and isinstance(part.body, Atom) and variable and part.body.args == (variable,):
             forbids.add((part.body.predicate, 0))
     distinct.update(frozenset((equality.left, equality.right)) for equality in _inequalities(action))
-    adds: list[tuple[Atom, Pattern]] = []
-    deletes: list[tuple[Atom, Pattern]] = []
-    may_add: list[Pattern] = []
-    may_delete: list[Pattern] = []
-    many: set[Pattern] = set()
+    adds: list[tuple[Atom, ObjectPattern]] = []
+    deletes: list[tuple[Atom, ObjectPattern]] = []
+    may_add: list[ObjectPattern] = []
+    may_delete: list[ObjectPattern] = []
+    many: set[ObjectPattern] = set()
     for item in effect_literals(action.effect):
         ranged = [name for name, kind in item.quantified if compatible(domain, kind, type_name)]
         names = ([variable] if variable is not None else []) + ranged
@@ -238,7 +242,7 @@ def step_of(domain: Domain, action: Action, variable: str | None, type_name: str
             (adds if item.is_add else deletes).extend((item.atom, own) for own in found)
         else:
             (may_add if item.is_add else may_delete).extend(found)
-    return Step(
+    return ObjectStep(
         action,
         variable,
         tuple(requires),
@@ -252,7 +256,7 @@ def step_of(domain: Domain, action: Action, variable: str | None, type_name: str
     )
 
 
-def occurrences(atom: Atom, variable: str) -> list[Pattern]:
+def occurrences(atom: Atom, variable: str) -> list[ObjectPattern]:
     return [(atom.predicate, i) for i, arg in enumerate(atom.args) if arg == variable]
 
 
@@ -284,4 +288,13 @@ def _inequalities(action: Action) -> Iterator[Equality]:
             yield part.body
 
 
-__all__ = ["ObjectStates", "Pattern", "State", "Step", "compatible", "occurrences", "readable", "step_of"]
+__all__ = [
+    "ObjectStates",
+    "ObjectPattern",
+    "ObjectState",
+    "ObjectStep",
+    "compatible",
+    "occurrences",
+    "readable",
+    "step_of",
+]

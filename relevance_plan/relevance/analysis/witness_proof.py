@@ -86,7 +86,14 @@ from relevance_plan.pddl.formulas import (
 )
 from relevance_plan.pddl.model import Domain, Problem, all_objects
 from relevance_plan.relevance.analysis.facts import FactIndex
-from relevance_plan.relevance.analysis.object_states import ObjectStates, Pattern, State, Step, readable, step_of
+from relevance_plan.relevance.analysis.object_states import (
+    ObjectPattern,
+    ObjectState,
+    ObjectStates,
+    ObjectStep,
+    readable,
+    step_of,
+)
 from relevance_plan.relevance.analysis.types import static_predicates
 from relevance_plan.relevance.analysis.witnesses import (
     WitnessNeed,
@@ -108,12 +115,12 @@ class _Proof:
 
     states: ObjectStates
     predicate: str  # the goal's
-    achiever: Step
+    achiever: ObjectStep
     first: First  # the atoms the achiever certainly leaves, each its pattern's only one
     ties: tuple[Tie, ...]  # per argument of the goal atom
     functional: frozenset[Link]  # static links that determine one object from another
 
-    def keeps_goal(self, step: Step, state: State) -> bool:
+    def keeps_goal(self, step: ObjectStep, state: ObjectState) -> bool:
         return not _deletes_goal(self, step, state)
 
 
@@ -215,17 +222,17 @@ def _witnesses_distinct(
     return True
 
 
-def _role_step(domain: Domain, role: WitnessRole, type_name: str) -> Step:
+def _role_step(domain: Domain, role: WitnessRole, type_name: str) -> ObjectStep:
     action = next(action for action in domain.actions if action.name == role.action)
     return step_of(domain, action, role.witness, type_name)
 
 
-def _left_for_certain(step: Step) -> First:
+def _left_for_certain(step: ObjectStep) -> First:
     """The witness's atoms the step certainly leaves, each the only such atom of its pattern (with
     the witness's place in it): its unconditional adds (an add wins over a delete), and the atoms
     it requires that no delete of the action may name."""
     deleted = [item for item in effect_literals(step.action.effect) if not item.is_add]
-    found: dict[Pattern, set[Atom]] = {}
+    found: dict[ObjectPattern, set[Atom]] = {}
     for atom, own in step.adds:
         found.setdefault(own, set()).add(atom)
     for atom, own in step.requires:
@@ -234,7 +241,7 @@ def _left_for_certain(step: Step) -> First:
     return tuple((atom, own[1]) for own, atoms in sorted(found.items()) if len(atoms) == 1 for atom in atoms)
 
 
-def _may_name(step: Step, deleted: Atom, atom: Atom, quantified: bool) -> bool:
+def _may_name(step: ObjectStep, deleted: Atom, atom: Atom, quantified: bool) -> bool:
     """Whether a delete of ``deleted`` may remove ``atom`` under some binding (a quantified delete of
     the predicate may remove any of its atoms)."""
     if deleted.predicate != atom.predicate:
@@ -242,12 +249,12 @@ def _may_name(step: Step, deleted: Atom, atom: Atom, quantified: bool) -> bool:
     return quantified or not step.different(deleted, atom)
 
 
-def _right_after(proof: _Proof, before: set[State]) -> set[State]:
+def _right_after(proof: _Proof, before: set[ObjectState]) -> set[ObjectState]:
     """The witness's states right after the achiever, its certainly left atoms marked."""
     states, step = proof.states, proof.achiever
     marks = {states.index[(atom.predicate, place)] for atom, place in proof.first}
     return {
-        State(after.counts, frozenset(i for i in marks if after.counts[i] > 0))
+        ObjectState(after.counts, frozenset(i for i in marks if after.counts[i] > 0))
         for state in before
         if states.applies(step, state)
         for after in states.successors(step, state)
@@ -271,7 +278,7 @@ def _functional_links(domain: Domain, index: FactIndex) -> frozenset[Link]:
 
 
 def _ties_of_achiever(
-    step: Step, role: WitnessRole, first: First, functional: frozenset[Link]
+    step: ObjectStep, role: WitnessRole, first: First, functional: frozenset[Link]
 ) -> tuple[Tie, ...] | None:
     """How the achiever determines each argument of its goal atom from the witness (None: one it does not)."""
     assert step.variable is not None
@@ -327,12 +334,12 @@ def _links_from(term: str, first: First, static: Iterable[Atom], functional: fro
     return found
 
 
-def _conditions(step: Step) -> list[Atom]:
+def _conditions(step: ObjectStep) -> list[Atom]:
     """The step's action's top-level positive conditions (the chains' static links are among them)."""
     return [part for part in conjuncts(step.action.precondition) if isinstance(part, Atom)]
 
 
-def _deletes_goal(proof: _Proof, step: Step, state: State) -> bool:
+def _deletes_goal(proof: _Proof, step: ObjectStep, state: ObjectState) -> bool:
     """Whether ``step`` certainly deletes the goal atom the achiever made true (see the module's docstring)."""
     if step.variable is None:
         return False

@@ -49,6 +49,7 @@ from relevance_plan.pddl.formulas import (
 from relevance_plan.pddl.model import Action
 from relevance_plan.relevance.analysis.task import PlanningTask
 from relevance_plan.relevance.analysis.types import static_predicates
+from relevance_plan.relevance.reachability.budget import OutOfBudget
 
 GROUND_BUDGET = 200_000  # candidate bindings tried before the check gives up (None: unknown)
 SECONDS = 1.0  # and the whole check's bound (grounding and fixpoint): it must stay cheaper than a planner run
@@ -58,10 +59,6 @@ Interval = tuple[float, float]  # (low, high), closed hull; low > high: no value
 NOTHING: Interval = (math.inf, -math.inf)
 EVERYTHING: Interval = (-math.inf, math.inf)
 GroundFluent = tuple[str, ...]
-
-
-class _OutOfBudget(Exception):
-    pass
 
 
 @dataclass(frozen=True)
@@ -94,7 +91,7 @@ def timed_relaxed_reachability(task: PlanningTask, kept: Set[str], budget: int =
     try:
         check = _Check(task, kept, budget)
         return check.run()
-    except _OutOfBudget:
+    except OutOfBudget:
         return None
 
 
@@ -210,7 +207,7 @@ class _Check:
         if any(
             quantified for action in domain.relaxed_actions for _, _, quantified, _ in numeric_effects(action.effect)
         ):
-            raise _OutOfBudget
+            raise OutOfBudget
         self.goal_atoms = [(a.predicate, *a.args) for a in _atoms(problem.goal)]
         self.goal_tests = list(_comparisons(problem.goal))
         self.snaps: list[_Snap] = []
@@ -251,7 +248,7 @@ class _Check:
             for value in domains[i]:
                 spent += 1
                 if spent > self.budget or (spent & 1023 == 0 and time.monotonic() > self.deadline):
-                    raise _OutOfBudget
+                    raise OutOfBudget
                 binding[variables[i]] = value
                 if all(self._holds(a, binding) for a in checks.get(i, ())):
                     yield from extend(i + 1, binding)
@@ -303,7 +300,7 @@ class _Check:
         pending = list(self.snaps)
         while True:
             if time.monotonic() > self.deadline:
-                raise _OutOfBudget
+                raise OutOfBudget
             changed = False
             waiting = []
             for snap in pending:

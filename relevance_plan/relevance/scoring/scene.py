@@ -91,7 +91,7 @@ def build_scene(
     ``types``: every object's type, when ``objects`` are only some of them (the places' types
     decide which places the access predicate judges).  Past ``deadline`` (``time.monotonic()``),
     OutOfTimeError."""
-    found = _Placement(predicates)
+    found = _SceneReading(predicates)
     for count, atom in enumerate(facts):
         if not count & 0xFFFF:
             check_deadline(deadline, "describing the scene")
@@ -130,7 +130,7 @@ def build_scene(
     return Scene(elements=elements, human_places=frozenset(found.human_places))
 
 
-class _Placement:
+class _SceneReading:
     """What the scene predicates say, read one fact at a time."""
 
     def __init__(self, predicates: ScenePredicates):

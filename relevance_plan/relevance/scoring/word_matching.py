@@ -32,7 +32,7 @@ if TYPE_CHECKING:
     from relevance_plan.text.encoder import FloatArray
 
 
-class Vocabulary(str, Enum):
+class ModelVocabulary(str, Enum):
     OBJECTIVE = "objective"
     TASK = "task"
     CLASS = "class"
@@ -55,11 +55,11 @@ class MatchRule:
 # Chosen on the tuning half of the paraphrases in tests/data/paraphrases.yaml (docs/knowledge-model.md,
 # "Free text"): sentences against sentences score lower than a kind against single words, so kinds
 # have the higher floor.
-DEFAULT_RULES: Mapping[Vocabulary, MatchRule] = MappingProxyType(
+DEFAULT_RULES: Mapping[ModelVocabulary, MatchRule] = MappingProxyType(
     {
-        Vocabulary.OBJECTIVE: MatchRule(floor=0.35, margin=0.03),
-        Vocabulary.TASK: MatchRule(floor=0.35, margin=0.03),
-        Vocabulary.CLASS: MatchRule(floor=0.55, margin=0.05),
+        ModelVocabulary.OBJECTIVE: MatchRule(floor=0.35, margin=0.03),
+        ModelVocabulary.TASK: MatchRule(floor=0.35, margin=0.03),
+        ModelVocabulary.CLASS: MatchRule(floor=0.55, margin=0.05),
     }
 )
 # Candidates a match reports (the nearest and its runners-up).
@@ -69,7 +69,7 @@ NEEDED_CLASS = 0.5
 
 
 @dataclass(frozen=True)
-class Candidate:
+class MatchCandidate:
     name: str
     similarity: float
 
@@ -79,9 +79,9 @@ class WordMatch:
     """One text mapped to one vocabulary: the nearest entries, best first, and whether it stands."""
 
     text: str
-    vocabulary: Vocabulary
+    vocabulary: ModelVocabulary
     status: MatchStatus
-    candidates: tuple[Candidate, ...]
+    candidates: tuple[MatchCandidate, ...]
     rule: MatchRule
 
     @property
@@ -95,7 +95,7 @@ class WordMatch:
         return self.candidates[0].similarity if self.candidates else 0.0
 
     @property
-    def runners_up(self) -> tuple[Candidate, ...]:
+    def runners_up(self) -> tuple[MatchCandidate, ...]:
         return self.candidates[1:]
 
     @property
@@ -131,7 +131,7 @@ def plain_words(name: str) -> str:
     return " ".join(name.replace("_", " ").replace("-", " ").split()).lower()
 
 
-def vocabulary_phrases(model: KnowledgeModel, vocabulary: Vocabulary) -> Mapping[str, tuple[str, ...]]:
+def vocabulary_phrases(model: KnowledgeModel, vocabulary: ModelVocabulary) -> Mapping[str, tuple[str, ...]]:
     """Entry name -> the phrases embedded for it, all from the model's own words.
 
     - an objective: its name and its description (not its tasks' names, which
@@ -140,10 +140,10 @@ def vocabulary_phrases(model: KnowledgeModel, vocabulary: Vocabulary) -> Mapping
     - a class: its name, its PDDL types and its kinds, each a phrase.
     """
     phrases: dict[str, tuple[str, ...]] = {}
-    if vocabulary is Vocabulary.OBJECTIVE:
+    if vocabulary is ModelVocabulary.OBJECTIVE:
         for name, objective in model.objectives.items():
             phrases[name] = _distinct(plain_words(name), objective.description)
-    elif vocabulary is Vocabulary.TASK:
+    elif vocabulary is ModelVocabulary.TASK:
         for name, classes in model.task_classes.items():
             ranked = sorted(classes.items(), key=lambda item: (-item[1], item[0]))
             needed = ", ".join(plain_words(c) for c, p in ranked if p >= NEEDED_CLASS)
@@ -165,7 +165,7 @@ def _distinct(*phrases: str) -> tuple[str, ...]:
 def match_text(
     text: str,
     model: KnowledgeModel,
-    vocabulary: Vocabulary,
+    vocabulary: ModelVocabulary,
     rule: MatchRule | None = None,
     text_model: TextModel | None = None,
 ) -> WordMatch:
@@ -180,7 +180,7 @@ def match_text(
 def match_texts(
     texts: Sequence[str],
     model: KnowledgeModel,
-    vocabulary: Vocabulary,
+    vocabulary: ModelVocabulary,
     rule: MatchRule | None = None,
     text_model: TextModel | None = None,
 ) -> tuple[WordMatch, ...]:
@@ -204,12 +204,12 @@ def match_texts(
 
 def resolve_objective(text: str, model: KnowledgeModel, text_model: TextModel | None = None) -> WordMatch:
     """What the human wants, as one of the model's objectives (``--objective TEXT``)."""
-    return match_text(text, model, Vocabulary.OBJECTIVE, text_model=text_model)
+    return match_text(text, model, ModelVocabulary.OBJECTIVE, text_model=text_model)
 
 
 def resolve_model_task(text: str, model: KnowledgeModel, text_model: TextModel | None = None) -> WordMatch:
     """A cue, as one of the model's tasks (``--task TEXT``, a ``cue`` event's text)."""
-    return match_text(text, model, Vocabulary.TASK, text_model=text_model)
+    return match_text(text, model, ModelVocabulary.TASK, text_model=text_model)
 
 
 def place_kinds(
@@ -218,7 +218,7 @@ def place_kinds(
     """Each distinct object kind (``oat_milk_carton``), in order, as the model class it most resembles
     or a question."""
     kinds = list(dict.fromkeys(kinds))
-    matches = match_texts([plain_words(kind) for kind in kinds], model, Vocabulary.CLASS, text_model=text_model)
+    matches = match_texts([plain_words(kind) for kind in kinds], model, ModelVocabulary.CLASS, text_model=text_model)
     return tuple(dataclasses.replace(match, text=kind) for kind, match in zip(kinds, matches))
 
 
@@ -229,7 +229,7 @@ def with_placed_kinds(model: KnowledgeModel, matches: Iterable[WordMatch]) -> Kn
     """
     added: dict[str, list[str]] = {}
     for match in matches:
-        if match.vocabulary is Vocabulary.CLASS and match.chosen is not None:
+        if match.vocabulary is ModelVocabulary.CLASS and match.chosen is not None:
             added.setdefault(match.chosen, []).append(match.text.lower())
     if not added:
         return model
@@ -243,14 +243,14 @@ def with_placed_kinds(model: KnowledgeModel, matches: Iterable[WordMatch]) -> Kn
 
 
 def _spelled_entry(
-    text: str, phrases: Mapping[str, tuple[str, ...]], vocabulary: Vocabulary, rule: MatchRule
+    text: str, phrases: Mapping[str, tuple[str, ...]], vocabulary: ModelVocabulary, rule: MatchRule
 ) -> WordMatch | None:
     """The entry ``text`` names outright (its name, or for a class a type or kind it lists)."""
     said = plain_words(text)
     for name, group in phrases.items():
-        spelled = group if vocabulary is Vocabulary.CLASS else (plain_words(name),)
+        spelled = group if vocabulary is ModelVocabulary.CLASS else (plain_words(name),)
         if said in spelled:
-            return WordMatch(text, vocabulary, MatchStatus.RESOLVED, (Candidate(name, 1.0),), rule)
+            return WordMatch(text, vocabulary, MatchStatus.RESOLVED, (MatchCandidate(name, 1.0),), rule)
     return None
 
 
@@ -269,13 +269,13 @@ def _phrase_table(text_model: TextModel, entries: tuple[tuple[str, str], ...]) -
 
 
 def _decide(
-    text: str, vocabulary: Vocabulary, rule: MatchRule, owners: Sequence[str], similarities: FloatArray
+    text: str, vocabulary: ModelVocabulary, rule: MatchRule, owners: Sequence[str], similarities: FloatArray
 ) -> WordMatch:
     best: dict[str, float] = {}
     for name, similarity in zip(owners, similarities.tolist()):
         best[name] = max(best.get(name, -1.0), similarity)
     ranked = sorted(best.items(), key=lambda item: (-item[1], item[0]))
-    candidates = tuple(Candidate(name, similarity) for name, similarity in ranked[:SHOWN_CANDIDATES])
+    candidates = tuple(MatchCandidate(name, similarity) for name, similarity in ranked[:SHOWN_CANDIDATES])
     nearest = candidates[0].similarity
     if nearest < rule.floor:
         status = MatchStatus.BELOW_FLOOR

@@ -13,21 +13,21 @@ from collections.abc import Mapping
 
 from relevance_plan.errors import MissingExtraError, printable
 from relevance_plan.relevance.scoring.knowledge import KnowledgeModel
-from relevance_plan.relevance.scoring.word_matching import Vocabulary, WordMatch, match_text, place_kinds
+from relevance_plan.relevance.scoring.word_matching import ModelVocabulary, WordMatch, match_text, place_kinds
 
 # The option each vocabulary's free text comes from, for messages.
-OPTIONS = {Vocabulary.OBJECTIVE: "--objective", Vocabulary.TASK: "--task"}
+OPTIONS = {ModelVocabulary.OBJECTIVE: "--objective", ModelVocabulary.TASK: "--task"}
 
 
-def entries(model: KnowledgeModel, vocabulary: Vocabulary) -> Mapping[str, object]:
-    if vocabulary is Vocabulary.OBJECTIVE:
+def entries(model: KnowledgeModel, vocabulary: ModelVocabulary) -> Mapping[str, object]:
+    if vocabulary is ModelVocabulary.OBJECTIVE:
         return model.objectives
-    if vocabulary is Vocabulary.TASK:
+    if vocabulary is ModelVocabulary.TASK:
         return model.task_classes
     return model.classes
 
 
-def understand(text: str, model: KnowledgeModel, vocabulary: Vocabulary) -> WordMatch:
+def understand(text: str, model: KnowledgeModel, vocabulary: ModelVocabulary) -> WordMatch:
     """``text`` as an entry of ``vocabulary``: resolved, or a question (``WordMatch.insufficiency``).
 
     :class:`MissingExtraError` when the text needs the text model and it is not installed."""

@@ -17,7 +17,7 @@
 * **finish**: the pruned problem's text, or the full problem when the
   selection keeps most of it.
 
-Each stage takes the selection so far (``_Draft``, immutable) and returns the
+Each stage takes the selection so far (``_Partial``, immutable) and returns the
 next; :class:`PruneSettings` holds the knobs.  :func:`widen` grows a failed
 selection, adding objects in the order of :func:`ranked_names`.
 """
@@ -143,7 +143,7 @@ class Selection:
 
 
 @dataclass(frozen=True)
-class _Draft:
+class _Partial:
     """The selection so far, as one pruning stage hands it to the next."""
 
     selected: frozenset[str]  # passed the thresholds, and the extra objects
@@ -188,19 +188,21 @@ def prune_with_scores(
 
 def _select(
     task: PlanningTask, scores: ScoreResult, thresholds: Thresholds, settings: PruneSettings, extra: frozenset[str]
-) -> _Draft:
+) -> _Partial:
     """The relevant objects and the extra ones, without what earlier selections set aside."""
     set_aside = settings.set_aside - extra
     selected = (select_relevant(task, scores, thresholds, settings.goal_filter) - set_aside) | extra
-    return _Draft(selected, set_aside)
+    return _Partial(selected, set_aside)
 
 
-def _close(draft: _Draft, closure: ConstraintClosure) -> _Draft:
+def _close(draft: _Partial, closure: ConstraintClosure) -> _Partial:
     kept, restored = closure(draft.selected)
     return replace(draft, kept=kept, restored=restored)
 
 
-def _set_aside_blocked(task: PlanningTask, scores: ScoreResult, draft: _Draft, closure: ConstraintClosure) -> _Draft:
+def _set_aside_blocked(
+    task: PlanningTask, scores: ScoreResult, draft: _Partial, closure: ConstraintClosure
+) -> _Partial:
     """Without the blocked alternatives (``free_alternatives``), closed again."""
     narrowed = free_alternatives(task, scores, draft.selected, draft.restored)
     if narrowed == draft.selected:
@@ -209,8 +211,8 @@ def _set_aside_blocked(task: PlanningTask, scores: ScoreResult, draft: _Draft, c
 
 
 def _set_aside_spare(
-    task: PlanningTask, scores: ScoreResult, draft: _Draft, closure: ConstraintClosure, extra: frozenset[str]
-) -> _Draft:
+    task: PlanningTask, scores: ScoreResult, draft: _Partial, closure: ConstraintClosure, extra: frozenset[str]
+) -> _Partial:
     """Without the spare alternatives (``_spare_alternatives``; never the extra ones), closed again."""
     spare = _spare_alternatives(task, scores, draft.selected - extra)
     if not spare:
@@ -218,7 +220,7 @@ def _set_aside_spare(
     return _close(replace(draft, selected=draft.selected - spare, set_aside=draft.set_aside | spare), closure)
 
 
-def _repair(task: PlanningTask, scores: ScoreResult, draft: _Draft, closure: ConstraintClosure) -> _Draft:
+def _repair(task: PlanningTask, scores: ScoreResult, draft: _Partial, closure: ConstraintClosure) -> _Partial:
     """With what a relaxed plan needs; what the repair brought back is no longer set aside."""
     kept, repaired, check = repair_selection(task, draft.kept, scores.element_scores, closure)
     restored, set_aside = draft.restored + repaired, draft.set_aside - kept
@@ -226,7 +228,7 @@ def _repair(task: PlanningTask, scores: ScoreResult, draft: _Draft, closure: Con
 
 
 def _finish(
-    task: PlanningTask, scores: ScoreResult, thresholds: Thresholds, draft: _Draft, full_above: float
+    task: PlanningTask, scores: ScoreResult, thresholds: Thresholds, draft: _Partial, full_above: float
 ) -> Selection:
     """The pruned problem, or the full one when the draft keeps more than ``full_above`` of the objects."""
     total = len(task.problem.objects)

@@ -173,15 +173,15 @@ def _understood(
         task is None or task in knowledge_model.task_classes
     ):
         return request, (), ""
-    from relevance_plan.relevance.scoring.word_matching import Vocabulary
+    from relevance_plan.relevance.scoring.word_matching import ModelVocabulary
     from relevance_plan.relevance.scoring.word_understanding import OPTIONS, understand
 
     matches = []
     if objective is not None and objective not in knowledge_model.objectives:
-        matches.append(understand(objective, knowledge_model, Vocabulary.OBJECTIVE))
+        matches.append(understand(objective, knowledge_model, ModelVocabulary.OBJECTIVE))
         objective = matches[-1].chosen
     if task is not None and task not in knowledge_model.task_classes:
-        matches.append(understand(task, knowledge_model, Vocabulary.TASK))
+        matches.append(understand(task, knowledge_model, ModelVocabulary.TASK))
         task = matches[-1].chosen
     unclear = [
         f"{match.insufficiency} — say it otherwise, or give {OPTIONS[match.vocabulary]} NAME"
