@@ -183,8 +183,8 @@ def track(domain: Domain) -> str:
 
 
 def accept(roots: list[str]) -> int:
+    from relevance_plan.relevance.analysis.task import PlanningTask
     from relevance_plan.relevance.setup import ScoringOptions, score_problem
-    from relevance_plan.relevance.task import PlanningTask
 
     totals: dict[str, list[int]] = {}
     failures = 0
@@ -344,8 +344,8 @@ def _selections_file(path: Path) -> dict[str, dict]:
 
 def _first_selection(entry: SuiteProblem, timeout: float) -> dict:
     """The kept objects of ``entry``'s first selection and why each came back, or the error's kind."""
+    from relevance_plan.relevance.analysis.task import PlanningTask
     from relevance_plan.relevance.setup import ScoringOptions, score_problem
-    from relevance_plan.relevance.task import PlanningTask
 
     started = time.monotonic()
     try:

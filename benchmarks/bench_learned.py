@@ -95,9 +95,9 @@ from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task
 from relevance_plan.planning.planners.base import PlannerStatus
 from relevance_plan.planning.planners.registry import DEFAULT_PLANNER_CONFIG
 from relevance_plan.planning.results import PlanResult
-from relevance_plan.relevance.learning.learned_model import learned_model_text
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.scoring.learning.learned_model import learned_model_text
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
-from relevance_plan.relevance.task import PlanningTask
 
 PLOI_DOMAINS = (
     "manyblockssmallpiles",

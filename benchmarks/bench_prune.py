@@ -24,9 +24,9 @@ from base import REPO, Laps, median, run_timed
 
 from relevance_plan.generators.generate import generate_problem
 from relevance_plan.io import load_domain, load_problem, write_text_atomic
-from relevance_plan.relevance.knowledge import load_knowledge_model
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.scoring.knowledge import load_knowledge_model
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
-from relevance_plan.relevance.task import PlanningTask
 
 TARGETS = {500: 0.3, 2000: 1.5}
 STAGES = ("parse", "score", "closure", "write", "total")

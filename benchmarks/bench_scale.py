@@ -84,8 +84,8 @@ from relevance_plan.generators.sized import CLASSIC_WORLDS, generate_sized_probl
 from relevance_plan.io import load_domain, load_problem, write_text_atomic
 from relevance_plan.pddl.sexpr import collection_paused
 from relevance_plan.planning.loop import PlanOptions
+from relevance_plan.relevance.analysis.task import PlanningTask
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
-from relevance_plan.relevance.task import PlanningTask
 
 SIZES = {
     "scenegraph": (200, 500, 1000),

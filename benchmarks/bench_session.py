@@ -75,8 +75,8 @@ from relevance_plan.generators.sized import generate_sized_problem
 from relevance_plan.io import load_task
 from relevance_plan.pddl.formulas import literals
 from relevance_plan.pddl.parser import read_problem
+from relevance_plan.relevance.analysis.task import PlanningTask
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
-from relevance_plan.relevance.task import PlanningTask
 from relevance_plan.session import EventReport, Session
 
 SCENEGRAPH_DOMAIN = DOMAINS_DIR / "scenegraph" / "domain.pddl"

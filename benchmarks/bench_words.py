@@ -38,9 +38,9 @@ import yaml
 REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))
 
-from relevance_plan.relevance.knowledge import load_knowledge_model, shipped_knowledge_models  # noqa: E402
-from relevance_plan.relevance.text import Vocabulary, match_text, place_kinds  # noqa: E402
-from relevance_plan.relevance.text.cache import CACHE_ENV  # noqa: E402
+from relevance_plan.relevance.scoring.knowledge import load_knowledge_model, shipped_knowledge_models  # noqa: E402
+from relevance_plan.relevance.scoring.word_matching import ModelVocabulary, match_text, place_kinds  # noqa: E402
+from relevance_plan.text.cache import CACHE_ENV  # noqa: E402
 
 PARAPHRASES = REPO / "tests" / "data" / "paraphrases.yaml"
 
@@ -50,23 +50,23 @@ import json, os, resource, sys, time
 os.sched_setaffinity(0, {min(os.sched_getaffinity(0))})
 started = time.perf_counter()
 import numpy
-from relevance_plan.relevance.text import Vocabulary, load_text_model, match_text, place_kinds
-from relevance_plan.relevance.text.matching import vocabulary_phrases
-from relevance_plan.relevance.knowledge import load_knowledge_model, shipped_knowledge_models
+from relevance_plan.text import load_text_model
+from relevance_plan.relevance.scoring.word_matching import ModelVocabulary, match_text, place_kinds, vocabulary_phrases
+from relevance_plan.relevance.scoring.knowledge import load_knowledge_model, shipped_knowledge_models
 model = load_knowledge_model(shipped_knowledge_models()["coffee"])
 imported = time.perf_counter()
 load_text_model()
 loaded = time.perf_counter()
-match_text("I'd love something hot with milk", model, Vocabulary.OBJECTIVE)
-match_text("I'd love something hot with milk", model, Vocabulary.TASK)
+match_text("I'd love something hot with milk", model, ModelVocabulary.OBJECTIVE)
+match_text("I'd love something hot with milk", model, ModelVocabulary.TASK)
 place_kinds(["oat_milk_carton"], model)
 embedded = time.perf_counter()
-match_text("could I get a cold drink", model, Vocabulary.TASK)
+match_text("could I get a cold drink", model, ModelVocabulary.TASK)
 one_more = time.perf_counter()
 print(json.dumps({
     "import": imported - started, "load": loaded - imported, "vocabulary": embedded - loaded,
     "text": one_more - embedded,
-    "phrases": sum(len(p) for v in Vocabulary for p in vocabulary_phrases(model, v).values()),
+    "phrases": sum(len(p) for v in ModelVocabulary for p in vocabulary_phrases(model, v).values()),
     "peak_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024,
 }))
 """
@@ -82,7 +82,7 @@ def understanding(half: str, items: list[list[str]]) -> dict[str, list[int]]:
         if vocabulary == "class":
             match = place_kinds([text], model)[0]
         else:
-            match = match_text(text, model, Vocabulary(vocabulary))
+            match = match_text(text, model, ModelVocabulary(vocabulary))
         got = match.chosen
         group = "should ask" if intended == "ask" else ("kinds" if vocabulary == "class" else "sentences")
         if intended == "ask":

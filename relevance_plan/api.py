@@ -28,9 +28,9 @@ from relevance_plan.pddl.sexpr import collection_paused
 from relevance_plan.planning.loop import PlanOptions, plan_task
 from relevance_plan.planning.results import PlanResult
 from relevance_plan.progress import ProgressCallback
-from relevance_plan.relevance.prune import Selection, Thresholds
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.selection.prune import Selection, Thresholds
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
-from relevance_plan.relevance.task import PlanningTask
 
 
 def _thresholds(options: dict[str, Any]) -> dict[str, Any]:

@@ -13,9 +13,9 @@ from relevance_plan.planning.loop import MIN_BUDGET, Budgets, PlanOptions, plan_
 from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome
 from relevance_plan.planning.planners.registry import make_planner
 from relevance_plan.planning.results import AttemptStatus, PlanStatus
-from relevance_plan.relevance.prune import Thresholds
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.selection.prune import Thresholds
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
-from relevance_plan.relevance.task import PlanningTask
 
 # Stands in for a planner that cannot prove unsolvability: on a pruned problem it searches "forever";
 # on the full problem it asks Fast Downward and prints the plan.

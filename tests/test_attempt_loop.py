@@ -14,7 +14,7 @@ from relevance_plan.pddl.plans import Plan
 from relevance_plan.planning.loop import PlanOptions, plan_task
 from relevance_plan.planning.results import PlanStatus
 from relevance_plan.planning.validate import ValidationStatus, validate_with_up
-from relevance_plan.relevance.prune import Thresholds
+from relevance_plan.relevance.selection.prune import Thresholds
 
 
 def assert_valid_on_original(domain_path, problem_path, result):
@@ -275,8 +275,8 @@ def test_a_failed_first_attempt_costs_no_more_than_its_share(coffee_files):
     # every pruned attempt fails: each may use only its share of the time left, the full problem the rest
     from relevance_plan.planning.loop import run_attempts
     from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome
+    from relevance_plan.relevance.analysis.task import PlanningTask
     from relevance_plan.relevance.setup import ScoringOptions, score_problem
-    from relevance_plan.relevance.task import PlanningTask
 
     domain_path, problem_path = coffee_files
     task = PlanningTask(*load_task(domain_path, problem_path))

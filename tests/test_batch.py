@@ -29,7 +29,7 @@ from relevance_plan.exitcodes import ExitCode
 from relevance_plan.generators.generate import generate_suite
 from relevance_plan.planning.loop import PlanOptions
 from relevance_plan.planning.planners.fast_downward import adapter as fast_downward
-from relevance_plan.relevance.prune import Thresholds
+from relevance_plan.relevance.selection.prune import Thresholds
 
 ALL_METHODS = "relevance,pure,random,oracle"
 

@@ -13,10 +13,10 @@ from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.planning.loop import PlanOptions, plan_task
 from relevance_plan.planning.results import PlanStatus
 from relevance_plan.planning.validate import ValidationStatus, validate_plan
-from relevance_plan.relevance.exploration import relaxed_reachability
-from relevance_plan.relevance.prune import PruneSettings, Widening, prune_with_scores, widen
-from relevance_plan.relevance.scorers import SCORERS, ScoreRequest
-from relevance_plan.relevance.task import PlanningTask
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.reachability.exploration import relaxed_reachability
+from relevance_plan.relevance.scoring.scorers import SCORERS, ScoreRequest
+from relevance_plan.relevance.selection.prune import PruneSettings, Widening, prune_with_scores, widen
 
 # Two cities, a truck in each, one airplane; the goal moves a package from city a to city b.
 LOGISTICS_PROBLEM = """(define (problem tiny) (:domain logistics)

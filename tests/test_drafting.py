@@ -17,16 +17,16 @@ from support import COFFEE_DOMAIN, COFFEE_MODEL, invoke
 from relevance_plan.errors import ModelError
 from relevance_plan.io import load_domain, load_problem
 from relevance_plan.relevance import drafting
-from relevance_plan.relevance.completion import lacking, strict_task
+from relevance_plan.relevance.analysis.task import PlanningTask
 from relevance_plan.relevance.drafting.structure import find_dependencies, find_structure
-from relevance_plan.relevance.knowledge import (
+from relevance_plan.relevance.scoring.knowledge import (
     check_knowledge_model_applies,
     load_knowledge_model,
     parse_knowledge_model,
 )
-from relevance_plan.relevance.scene import build_scene
+from relevance_plan.relevance.scoring.scene import build_scene
+from relevance_plan.relevance.selection.completion import lacking, strict_task
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
-from relevance_plan.relevance.task import PlanningTask
 
 WORLDS = Path(__file__).parent / "data" / "drafting"
 DOMAINS = ("workshop", "laboratory", "hospital")

@@ -9,9 +9,9 @@ from support import REPO
 from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.io import load_domain
 from relevance_plan.pddl.parser import read_problem
-from relevance_plan.relevance.prune import Widening, ranked_names, widen
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.selection.prune import Widening, ranked_names, widen
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
-from relevance_plan.relevance.task import PlanningTask
 
 
 def many_goal_logistics(seed: int, cities: int = 6, packages: int = 12, airplanes: int = 20) -> str:
@@ -74,7 +74,7 @@ def test_a_second_truck_in_one_city_goes_when_the_first_can_stand_in_for_it(monk
     """Trucks are needed one per city, so no truck stands in for most others; but when one round
     adds two trucks of one city and the relaxed plan uses both, the one the other can replace goes."""
     from relevance_plan.generators.sized import NEW_WORLDS, generate_sized_problem
-    from relevance_plan.relevance import repair
+    from relevance_plan.relevance.selection import repair
 
     pairwise = repair.PAIRWISE_UP_TO
     generated = generate_sized_problem("logistics-manygoals", 5, 1, 200)

@@ -15,9 +15,9 @@ from relevance_plan.errors import PDDLParseError, counted
 from relevance_plan.exitcodes import ExitCode
 from relevance_plan.io import load_domain, load_problem
 from relevance_plan.pddl.parser import read_domain, read_problem
-from relevance_plan.relevance import decisions
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.selection import decisions
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
-from relevance_plan.relevance.task import PlanningTask
 
 
 @pytest.fixture

@@ -11,11 +11,14 @@ import pytest
 from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.generators.sized import NEW_WORLDS, generate_sized_problem
 from relevance_plan.pddl.parser import read_domain, read_problem
-from relevance_plan.relevance import exploration, repair
-from relevance_plan.relevance.analysis import fan_in, object_distances
-from relevance_plan.relevance.exploration import relaxed_reachability
+from relevance_plan.relevance.analysis.distances import object_distances
+from relevance_plan.relevance.analysis.facts import fan_in
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.reachability import exploration, schemas
+from relevance_plan.relevance.reachability.budget import Work
+from relevance_plan.relevance.reachability.exploration import relaxed_reachability
+from relevance_plan.relevance.selection import repair
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
-from relevance_plan.relevance.task import PlanningTask
 
 
 def task_of(world: str, size: int, seed: int = 2) -> tuple[PlanningTask, dict]:
@@ -71,7 +74,7 @@ def test_passing_over_saturated_schemas_changes_no_answer(monkeypatch, world):
 
 def test_a_schema_is_saturated_only_when_every_atom_it_adds_is_reached():
     task, sidecar = task_of("miconic", 60)
-    explored = exploration.Exploration(task, set(sidecar["necessary"]), exploration.Work(10**6))
+    explored = exploration.Exploration(task, set(sidecar["necessary"]), Work(10**6))
     up = next(s for s in explored.schemas if s.name == "up")
     floors = explored.objects_of(dict(zip(up.parameters, up.types))["?f2"])
     reached = {f for f in floors if ("lift-at", f) in explored.facts}
@@ -119,7 +122,7 @@ def test_object_distances_are_breadth_first_hops(world):
 
 def test_picking_up_while_holding_is_passed_over_once_the_arm_has_been_empty():
     task, _ = task_of("grid", 150)
-    compiled = exploration.relaxed_task(task)
+    compiled = schemas.relaxed_task(task)
     dominated = {
         schema.name: compiled.dominated[id(schema)] for schema in compiled.schemas if id(schema) in compiled.dominated
     }
@@ -134,7 +137,7 @@ def test_passing_over_dominated_schemas_changes_no_answer(monkeypatch, world):
     for kept in trials(task, sidecar, world):
         with_cut = relaxed_reachability(task, kept)
         with monkeypatch.context() as patch:
-            patch.setattr(exploration, "_dominated", lambda *args: {})
+            patch.setattr(schemas, "_dominated", lambda *args: {})
             without = relaxed_reachability(PlanningTask(task.domain, task.problem), kept)
         assert with_cut.complete and without.complete
         assert with_cut.reachable == without.reachable, sorted(kept)
@@ -173,7 +176,7 @@ def test_the_repairs_selection_is_the_same_in_every_process():
         "from relevance_plan.data import DOMAINS_DIR\n"
         "from relevance_plan.generators.sized import generate_sized_problem\n"
         "from relevance_plan.pddl.parser import read_domain, read_problem\n"
-        "from relevance_plan.relevance.task import PlanningTask\n"
+        "from relevance_plan.relevance.analysis.task import PlanningTask\n"
         "from relevance_plan.relevance.setup import ScoringOptions, score_problem\n"
         "for world, domain in (('grid', 'grid'), ('scenegraph', 'scenegraph'), ('logistics-manygoals', 'logistics')):\n"
         "    problem = generate_sized_problem(world, 3, 1, 500)\n"

@@ -15,7 +15,8 @@ from support import COFFEE_DOMAIN, PROBLEMS, invoke, one_line_error
 
 from relevance_plan.errors import MissingExtraError
 from relevance_plan.exitcodes import ExitCode
-from relevance_plan.relevance.text import cache, installed, matching
+from relevance_plan.relevance.scoring import word_matching as matching
+from relevance_plan.text import cache, installed
 
 COFFEE_HARD = PROBLEMS / "coffee-hard.pddl"
 SCENE = COFFEE_DOMAIN.parent.parent.parent / "examples" / "coffee-break" / "scene.pddl"

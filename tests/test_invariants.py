@@ -10,9 +10,10 @@ from relevance_plan.generators.sized import generate_sized_problem
 from relevance_plan.io import load_domain
 from relevance_plan.pddl.model import TimedLiteral
 from relevance_plan.pddl.parser import read_domain, read_problem
-from relevance_plan.relevance.analysis import analyse_goal, index_init
-from relevance_plan.relevance.invariants import count_keeping_for, count_keeping_positions
-from relevance_plan.relevance.task import PlanningTask
+from relevance_plan.relevance.analysis.facts import index_init
+from relevance_plan.relevance.analysis.goal_regression import analyse_goal
+from relevance_plan.relevance.analysis.invariants import count_keeping_for, count_keeping_positions
+from relevance_plan.relevance.analysis.task import PlanningTask
 
 SCENEGRAPH = DOMAINS_DIR / "scenegraph" / "domain.pddl"
 

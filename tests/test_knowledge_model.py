@@ -10,7 +10,7 @@ from support import COFFEE_DOMAIN, COFFEE_MODEL, PROBLEMS, one_line_error, run
 from relevance_plan.errors import ModelError
 from relevance_plan.exitcodes import ExitCode
 from relevance_plan.io import load_domain
-from relevance_plan.relevance.knowledge import (
+from relevance_plan.relevance.scoring.knowledge import (
     check_knowledge_model_applies,
     find_knowledge_model,
     parse_knowledge_model,

@@ -14,7 +14,7 @@ from relevance_plan.batch.jobs import build_jobs, run_job
 from relevance_plan.batch.keys import FINGERPRINT_RULES, config_fingerprint, config_hash
 from relevance_plan.generators.padded import GRIPPER_DOMAIN, gripper_problem
 from relevance_plan.planning.loop import PLAN_OPTION_FIELDS, PlanOptions, plan_task
-from relevance_plan.relevance.prune import Thresholds
+from relevance_plan.relevance.selection.prune import Thresholds
 
 # A value other than the default for every option (None where the default is set).
 OTHER_VALUES = {
@@ -224,3 +224,52 @@ def test_no_module_imports_one_that_imports_it_back():
         if start in seen:
             cycles.append(start)
     assert not cycles
+
+
+# --------------------------------------------------------------------------- folders and classes of one kind
+
+MAX_MODULES_PER_FOLDER = 14  # a folder of one kind of thing, as pyperplan's search/ and heuristics/
+MAX_METHODS_PER_CLASS = 20
+# the stage's own code, held to the class rules (the other packages have their own pending splits)
+STAGE_PACKAGES = ("relevance", "text")
+
+
+def _classes(path) -> list:
+    import ast
+
+    return [node for node in ast.walk(ast.parse(path.read_text())) if isinstance(node, ast.ClassDef)]
+
+
+def test_no_folder_of_the_package_holds_more_than_fourteen_modules():
+    package = REPO / "relevance_plan"
+    crowded = {
+        str(folder.relative_to(REPO)): count
+        for folder in [package, *(p for p in package.rglob("*") if p.is_dir() and p.name != "__pycache__")]
+        if (count := sum(1 for m in folder.glob("*.py") if m.name != "__init__.py")) > MAX_MODULES_PER_FOLDER
+    }
+    assert crowded == {}
+
+
+def test_no_class_of_the_relevance_stage_or_the_text_encoder_has_more_than_twenty_methods():
+    import ast
+
+    large = {
+        f"{path.relative_to(REPO)}:{cls.name}": methods
+        for package in STAGE_PACKAGES
+        for path in (REPO / "relevance_plan" / package).rglob("*.py")
+        for cls in _classes(path)
+        if (methods := sum(isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)) for item in cls.body))
+        > MAX_METHODS_PER_CLASS
+    }
+    assert large == {}
+
+
+def test_a_class_name_of_the_relevance_stage_or_the_text_encoder_names_one_class():
+    # one name per concept: a private class spelled like another module's class (``_Draft``, ``Draft``)
+    # is two concepts sharing a word as much as two public ones are
+    where: dict[str, list[str]] = {}
+    for package in STAGE_PACKAGES:
+        for path in sorted((REPO / "relevance_plan" / package).rglob("*.py")):
+            for cls in _classes(path):
+                where.setdefault(cls.name.lstrip("_"), []).append(f"{path.relative_to(REPO)}:{cls.name}")
+    assert {name: found for name, found in where.items() if len(found) > 1} == {}

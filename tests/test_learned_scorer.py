@@ -14,11 +14,11 @@ from relevance_plan.errors import ModelError
 from relevance_plan.generators.classic import generate_classic_problem
 from relevance_plan.io import load_domain
 from relevance_plan.pddl.parser import read_domain, read_problem
-from relevance_plan.relevance.learning.features import NAMED, FeatureConfig, hub_predicates, object_features
-from relevance_plan.relevance.learning.fit import LabelledProblem, fit_learned_model, with_hubs
-from relevance_plan.relevance.learning.learned_model import learned_model_text, load_learned_model
-from relevance_plan.relevance.learning.scorer import KEEP_AT, calibrated, score_learned
-from relevance_plan.relevance.task import PlanningTask
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.scoring.learning.features import NAMED, FeatureConfig, hub_predicates, object_features
+from relevance_plan.relevance.scoring.learning.fit import LabelledProblem, fit_learned_model, with_hubs
+from relevance_plan.relevance.scoring.learning.learned_model import learned_model_text, load_learned_model
+from relevance_plan.relevance.scoring.learning.scorer import KEEP_AT, calibrated, score_learned
 from tests.support import one_line_error, run, write_file
 
 FERRY = Path(DOMAINS_DIR) / "ferry-typed" / "domain.pddl"
@@ -98,7 +98,7 @@ def test_the_model_ranks_needed_objects_above_distractors(model_file):
     assert needed and others
     assert sum(needed) / len(needed) > 2 * sum(others) / len(others)
     # and the first selection keeps every object a plan needs, fewer than all
-    from relevance_plan.relevance.prune import prune_with_scores
+    from relevance_plan.relevance.selection.prune import prune_with_scores
 
     kept = prune_with_scores(task, score_learned(task, model)).kept
     assert set(necessary) <= kept and len(kept) < len(task.problem.objects)

@@ -232,10 +232,11 @@ def test_a_task_past_its_deadline_stops_every_analysis_naming_the_step(copied_co
     pruning each stop at it rather than run on until the CLI's last alarm."""
     from relevance_plan.errors import OutOfTimeError
     from relevance_plan.io import load_task
-    from relevance_plan.relevance.analysis import analyse_goal, index_init
-    from relevance_plan.relevance.scene import build_scene
+    from relevance_plan.relevance.analysis.facts import index_init
+    from relevance_plan.relevance.analysis.goal_regression import analyse_goal
+    from relevance_plan.relevance.analysis.task import PlanningTask
+    from relevance_plan.relevance.scoring.scene import build_scene
     from relevance_plan.relevance.setup import ScoringOptions, score_problem
-    from relevance_plan.relevance.task import PlanningTask
 
     domain, problem = load_task(*copied_coffee_files)
     past = time.monotonic() - 1

@@ -80,7 +80,7 @@ def test_model_messages_name_the_class(copied_coffee_files, tmp_path):
     model.write_text(text)
     import yaml
 
-    from relevance_plan.relevance.knowledge import parse_knowledge_model
+    from relevance_plan.relevance.scoring.knowledge import parse_knowledge_model
 
     data = yaml.safe_load(text)
     task = next(iter(data["tasks"]))

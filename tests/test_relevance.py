@@ -12,18 +12,15 @@ from relevance_plan.generators.padded import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN,
 from relevance_plan.generators.sized import generate_sized_problem
 from relevance_plan.io import load_domain
 from relevance_plan.pddl.parser import read_domain, read_problem
-from relevance_plan.relevance.analysis import (
-    _Regression,
-    index_init,
-    infer_constraint_rules,
-    single_valued_predicates,
-)
-from relevance_plan.relevance.closure import close_over_constraints
-from relevance_plan.relevance.knowledge import parse_knowledge_model
-from relevance_plan.relevance.prune import PruneSettings, Thresholds, prune_with_scores, select_relevant
-from relevance_plan.relevance.scorers import SCORERS, ScoreRequest
-from relevance_plan.relevance.scorers.knowledge_model import task_entropy
-from relevance_plan.relevance.task import PlanningTask
+from relevance_plan.relevance.analysis.constraint_rules import infer_constraint_rules, single_valued_predicates
+from relevance_plan.relevance.analysis.facts import index_init
+from relevance_plan.relevance.analysis.goal_regression import _Regression
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.scoring.knowledge import parse_knowledge_model
+from relevance_plan.relevance.scoring.scorers import SCORERS, ScoreRequest
+from relevance_plan.relevance.scoring.scorers.knowledge_model import task_entropy
+from relevance_plan.relevance.selection.closure import close_over_constraints
+from relevance_plan.relevance.selection.prune import PruneSettings, Thresholds, prune_with_scores, select_relevant
 
 MODEL = """
 version: 1
@@ -394,7 +391,7 @@ def test_the_goal_regression_answers_alike_from_the_first_facts_and_from_their_c
     of classes (150,000 plates stated before the one cup that is clear): the same analysis as
     scanning every fact, on a problem where the match comes last and on one where none does."""
     from relevance_plan.pddl.parser import read_domain, read_problem
-    from relevance_plan.relevance import analysis
+    from relevance_plan.relevance.analysis import goal_regression
 
     domain = read_domain(
         """(define (domain d) (:requirements :strips :typing) (:types cup plate - thing)
@@ -410,9 +407,9 @@ def test_the_goal_regression_answers_alike_from_the_first_facts_and_from_their_c
             " (:goal (exists (?c - cup) (holding ?c))))",
             domain,
         )
-        by_rows = analysis.analyse_goal(domain, problem)
-        monkeypatch.setattr(analysis, "_SCAN_FIRST", 10**9)
-        by_scan = analysis.analyse_goal(domain, problem)
+        by_rows = goal_regression.analyse_goal(domain, problem)
+        monkeypatch.setattr(goal_regression, "_SCAN_FIRST", 10**9)
+        by_scan = goal_regression.analyse_goal(domain, problem)
         monkeypatch.undo()
         assert by_rows == by_scan
         # a clear cup: no need to wipe one; none: the cloth matters

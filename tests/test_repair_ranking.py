@@ -10,11 +10,11 @@ from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.generators.sized import NEW_WORLDS, generate_sized_problem
 from relevance_plan.io import load_domain
 from relevance_plan.pddl.parser import read_problem
-from relevance_plan.relevance import analysis
-from relevance_plan.relevance.analysis import NearestBetween, ObjectGraph, fan_in, graph_distances, walk_bounds
-from relevance_plan.relevance.repair import REPAIR_MAX_FAN, RepairOrder
+from relevance_plan.relevance.analysis.distances import NearestBetween, ObjectGraph, graph_distances, walk_bounds
+from relevance_plan.relevance.analysis.facts import fan_in
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.selection.repair import REPAIR_MAX_FAN, RepairOrder
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
-from relevance_plan.relevance.task import PlanningTask
 
 # (world, size): a building, many-goal worlds with trucks and airplanes, the grid, temporal and numeric ones
 WORLDS = [
@@ -100,13 +100,13 @@ def without_search(monkeypatch):
         self.exhausted = True
         return iter(())
 
-    monkeypatch.setattr(analysis.NearestBetween, "groups", exhausted)
+    monkeypatch.setattr(NearestBetween, "groups", exhausted)
 
 
 @pytest.mark.parametrize(("world", "size"), WORLDS)
 def test_the_repair_keeps_what_it_kept_when_every_ranking_sorted_all(world, size, monkeypatch):
     searches = []
-    monkeypatch.setattr(analysis.NearestBetween, "groups", counted(analysis.NearestBetween.groups, searches))
+    monkeypatch.setattr(NearestBetween, "groups", counted(NearestBetween.groups, searches))
     for seed in range(3):
         found = score_problem(sized_task(world, seed, size), ScoringOptions()).first_selection()
         with monkeypatch.context() as patched:

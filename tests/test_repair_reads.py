@@ -11,17 +11,12 @@ from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.generators.sized import generate_sized_problem
 from relevance_plan.io import load_domain
 from relevance_plan.pddl.parser import read_problem
-from relevance_plan.relevance.analysis import (
-    GrowingDistances,
-    ObjectGraph,
-    analyse_goal,
-    analyse_goal_reading,
-    fan_in,
-    graph_distances,
-)
-from relevance_plan.relevance.repair import REPAIR_MAX_FAN
+from relevance_plan.relevance.analysis.distances import GrowingDistances, ObjectGraph, graph_distances
+from relevance_plan.relevance.analysis.facts import fan_in
+from relevance_plan.relevance.analysis.goal_regression import analyse_goal, analyse_goal_reading
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.selection.repair import REPAIR_MAX_FAN
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
-from relevance_plan.relevance.task import PlanningTask
 from relevance_plan.session.state import LiveIndex
 
 

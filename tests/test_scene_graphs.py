@@ -23,7 +23,7 @@ PDDL_NAME = re.compile(r"^[a-z][a-z0-9_-]*$")
 
 def text_model_installed() -> bool:
     from relevance_plan.errors import MissingExtraError
-    from relevance_plan.relevance.text import load_text_model
+    from relevance_plan.text import load_text_model
 
     try:
         load_text_model()
@@ -269,8 +269,8 @@ def snapshots(tmp_path) -> list:
 def prune_kept(path, goals, options) -> frozenset:
     from relevance_plan.io import load_domain
     from relevance_plan.pddl.parser import read_problem
+    from relevance_plan.relevance.analysis.task import PlanningTask
     from relevance_plan.relevance.setup import ScoringOptions, score_problem
-    from relevance_plan.relevance.task import PlanningTask
 
     result = import_scene(read_graph(str(path), options), goals, options, "live")
     domain = load_domain(DOMAIN_FILE)

@@ -19,8 +19,8 @@ from relevance_plan.planning.loop import PlanOptions
 from relevance_plan.planning.planners.registry import make_planner
 from relevance_plan.planning.results import PlanStatus
 from relevance_plan.planning.validate import validate_plan
+from relevance_plan.relevance.analysis.task import PlanningTask
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
-from relevance_plan.relevance.task import PlanningTask
 from relevance_plan.session import TRIGGERS, Session
 
 COFFEE_DOMAIN = DOMAINS_DIR / "coffee" / "domain.pddl"
@@ -214,7 +214,7 @@ def test_opening_a_closed_container_can_make_its_contents_relevant():
     session = coffee_session(options=ScoringOptions(human="bob"))
     inside = session.current_scores().element_scores["creamer_1"]
     tau = inside + 0.01
-    from relevance_plan.relevance.prune import Thresholds
+    from relevance_plan.relevance.selection.prune import Thresholds
 
     session = coffee_session(options=ScoringOptions(human="bob", thresholds=Thresholds(0.2, tau)))
     assert "creamer_1" not in session.kept and "fridge_1" not in session.kept

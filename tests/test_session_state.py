@@ -13,8 +13,8 @@ from relevance_plan.generators.sized import generate_sized_problem
 from relevance_plan.io import load_domain, load_task
 from relevance_plan.pddl.formulas import names_in
 from relevance_plan.pddl.parser import read_problem
-from relevance_plan.relevance.analysis import fan_in
-from relevance_plan.relevance.task import PlanningTask
+from relevance_plan.relevance.analysis.facts import fan_in
+from relevance_plan.relevance.analysis.task import PlanningTask
 from relevance_plan.session.state import LiveScene
 
 

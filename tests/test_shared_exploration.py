@@ -10,10 +10,12 @@ import pytest
 from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.generators.sized import NEW_WORLDS, generate_sized_problem
 from relevance_plan.pddl.parser import read_domain, read_problem
-from relevance_plan.relevance import exploration, repair
-from relevance_plan.relevance.exploration import relaxed_reachability
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.reachability import exploration, schemas
+from relevance_plan.relevance.reachability.budget import Work
+from relevance_plan.relevance.reachability.exploration import relaxed_reachability
+from relevance_plan.relevance.selection import repair
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
-from relevance_plan.relevance.task import PlanningTask
 
 WORLDS = ("logistics-manygoals", "logistics-manygoals-typed", "miconic-manygoals", "miconic-manygoals-typed")
 
@@ -27,7 +29,7 @@ def task_of(world: str, seed: int, size: int) -> tuple[PlanningTask, dict]:
 def plain_check(monkeypatch, task: PlanningTask, kept: set[str]) -> exploration.Reachability:
     """The same check with sharing off (a new task object: the compiled schemas are cached per task)."""
     with monkeypatch.context() as patch:
-        patch.setattr(exploration, "SHARED_FROM", 10**9)
+        patch.setattr(schemas, "SHARED_FROM", 10**9)
         fresh = PlanningTask(task.domain, task.problem)
         return relaxed_reachability(fresh, kept)
 
@@ -35,13 +37,13 @@ def plain_check(monkeypatch, task: PlanningTask, kept: set[str]) -> exploration.
 def holds_relaxed(task: PlanningTask, check: exploration.Reachability) -> bool:
     """The relaxed plan's steps, applied in any order their conditions allow (deletes ignored), all
     apply, from the initial facts, and reach the goal's atoms."""
-    schemas = {schema.name: schema for schema in exploration.relaxed_task(task).schemas}
+    by_name = {schema.name: schema for schema in schemas.relaxed_task(task).schemas}
     facts = set(task.typing.problem.init)
     waiting = list(check.plan)
     while waiting:
         ready = []
         for step in waiting:
-            schema = schemas[step[0]]
+            schema = by_name[step[0]]
             binding = dict(zip(schema.parameters, step[1:]))
             if all((p, *(binding.get(a, a) for a in args)) in facts for p, args in schema.pre):
                 ready.append((step, schema, binding))
@@ -50,15 +52,15 @@ def holds_relaxed(task: PlanningTask, check: exploration.Reachability) -> bool:
         for step, schema, binding in ready:
             facts.update((p, *(binding.get(a, a) for a in args)) for p, args, _ in schema.add)
             waiting.remove(step)
-    goal = [(p, *args) for p, args in exploration.required_atoms(task.problem.goal)]
+    goal = [(p, *args) for p, args in schemas.required_atoms(task.problem.goal)]
     return all(atom in facts for atom in goal)
 
 
 @pytest.mark.parametrize("world", WORLDS)
 def test_the_shared_class_is_found_and_decides_as_the_plain_check(monkeypatch, world):
     task, sidecar = task_of(world, 4, 240)
-    shared = exploration.relaxed_task(task).shared
-    assert shared is not None and len(shared.members) >= exploration.SHARED_FROM
+    shared = schemas.relaxed_task(task).shared
+    assert shared is not None and len(shared.members) >= schemas.SHARED_FROM
     necessary = set(sidecar["necessary"])
     rng = random.Random(world)
     others = sorted(set(task.problem.objects) - necessary)
@@ -94,7 +96,7 @@ def test_no_shared_class_where_goal_objects_meet():
         + ")))"
     )
     task = PlanningTask(domain, read_problem(text, domain))
-    assert exploration.relaxed_task(task).shared is None
+    assert schemas.relaxed_task(task).shared is None
     assert relaxed_reachability(task, set(blocks)).reachable
 
 
@@ -119,7 +121,7 @@ def test_a_second_airplane_is_passed_over_while_trucks_are_missing():
     places = {n for n, c in classes.items() if c in ("location", "city")} | airports
     packages = {n for n, c in classes.items() if c == "package"}
     kept = places | packages | {"plane1"}
-    explored = exploration.Exploration(task, kept, exploration.Work(10**7))
+    explored = exploration.Exploration(task, kept, Work(10**7))
     explored.run()
     assert explored.missing  # the trucks are missing
     unreached = {arg for atom in explored.missing for arg in atom[1:]}

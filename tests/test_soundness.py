@@ -29,9 +29,9 @@ from relevance_plan.io import load_task
 from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.planning.loop import PlanOptions
 from relevance_plan.planning.validate import validate_plan
+from relevance_plan.relevance.analysis.soundness import KeptObjects
+from relevance_plan.relevance.analysis.task import PlanningTask
 from relevance_plan.relevance.setup import score_problem
-from relevance_plan.relevance.soundness import KeptObjects
-from relevance_plan.relevance.task import PlanningTask
 
 
 def first_kept(domain_text: str, problem_text: str) -> tuple[PlanningTask, frozenset, tuple]:

@@ -11,7 +11,7 @@ from support import invoke, one_line_error
 from relevance_plan.batch.plots import heatmap_figure, text_colour
 from relevance_plan.batch.sweep import SweepResult
 from relevance_plan.exitcodes import ExitCode
-from relevance_plan.relevance.metrics import SetMetrics
+from relevance_plan.relevance.scoring.metrics import SetMetrics
 
 TAUS = (0.2, 0.4)
 

@@ -21,25 +21,26 @@ from support import REPO, modules_after
 
 from relevance_plan.errors import InputFileError, MissingExtraError, UsageError
 from relevance_plan.exitcodes import ExitCode, exit_code_for_error
-from relevance_plan.relevance.knowledge import load_knowledge_model, parse_knowledge_model, shipped_knowledge_models
-from relevance_plan.relevance.text import (
+from relevance_plan.relevance.scoring import word_matching as matching
+from relevance_plan.relevance.scoring.knowledge import (
+    load_knowledge_model,
+    parse_knowledge_model,
+    shipped_knowledge_models,
+)
+from relevance_plan.relevance.scoring.word_matching import (
     MatchRule,
     MatchStatus,
-    TextModelFiles,
-    Vocabulary,
-    cache,
-    installed,
-    load_text_model,
+    ModelVocabulary,
     match_text,
-    matching,
     place_kinds,
     resolve_model_task,
     resolve_objective,
     with_placed_kinds,
 )
-from relevance_plan.relevance.text.encoder import SentenceEncoder, erf, gelu
-from relevance_plan.relevance.text.tensors import read_tensors
-from relevance_plan.relevance.text.tokenizer import WordPieceTokenizer, split_words
+from relevance_plan.text import TextModelFiles, cache, installed, load_text_model
+from relevance_plan.text.encoder import SentenceEncoder, erf, gelu
+from relevance_plan.text.tensors import read_tensors
+from relevance_plan.text.tokenizer import WordPieceTokenizer, split_words
 
 PARAPHRASES = Path(__file__).parent / "data" / "paraphrases.yaml"
 
@@ -321,12 +322,12 @@ def test_without_numpy_free_text_names_the_extra(monkeypatch):
 
 def test_importing_the_package_and_naming_an_entry_need_no_numpy():
     loaded = modules_after(
-        "from relevance_plan.relevance.knowledge import load_knowledge_model, shipped_knowledge_models",
-        "from relevance_plan.relevance.text import resolve_objective",
+        "from relevance_plan.relevance.scoring.knowledge import load_knowledge_model, shipped_knowledge_models",
+        "from relevance_plan.relevance.scoring.word_matching import resolve_objective",
         "match = resolve_objective('drink at break', load_knowledge_model(shipped_knowledge_models()['coffee']))",
         "assert match.chosen == 'drink-at-break' and match.similarity == 1.0, match",
     )
-    assert "numpy" not in loaded and "relevance_plan.relevance.text.encoder" not in loaded
+    assert "numpy" not in loaded and "relevance_plan.text.encoder" not in loaded
 
 
 # --------------------------------------------------------------------------- matching, with a stand-in text model
@@ -392,7 +393,7 @@ def test_a_text_between_two_entries_is_a_question(kitchen):
     assert match.status is MatchStatus.TOO_CLOSE and match.chosen is None
     assert {c.name for c in match.candidates[:2]} == {"tea-time", "coffee-time"}
     assert "fits several objectives about equally" in match.insufficiency and "say which" in match.insufficiency
-    lenient = match_text("tea or coffee", kitchen, Vocabulary.OBJECTIVE, MatchRule(0.35, 0.0), CountingWords())
+    lenient = match_text("tea or coffee", kitchen, ModelVocabulary.OBJECTIVE, MatchRule(0.35, 0.0), CountingWords())
     assert lenient.status is MatchStatus.RESOLVED
 
 
@@ -495,7 +496,7 @@ def evaluate(half: str) -> dict[str, list[tuple[str, str, str | None]]]:
             understood = place_kinds([text], model)[0].chosen
             rows["kinds"].append((text, intended, understood))
         else:
-            understood = match_text(text, model, Vocabulary(vocabulary)).chosen
+            understood = match_text(text, model, ModelVocabulary(vocabulary)).chosen
             rows["sentences"].append((text, intended, understood))
     return rows
 
@@ -542,16 +543,17 @@ def test_a_near_miss_of_a_name_is_a_question_naming_the_closest_names(kitchen, t
     assert "tea-time" in match.insufficiency and match.as_json()["status"] == "near-name"
 
 
-@pytest.mark.parametrize("vocabulary", [Vocabulary.OBJECTIVE, Vocabulary.TASK])
+@pytest.mark.parametrize("vocabulary", [ModelVocabulary.OBJECTIVE, ModelVocabulary.TASK])
 def test_one_token_near_no_name_is_no_entry_of_the_model_never_words(kitchen, vocabulary):
-    from relevance_plan.errors import ModelError
     from relevance_plan.relevance.text.understanding import understand
+
+    from relevance_plan.errors import ModelError
 
     match = match_text("nosuch", kitchen, vocabulary, text_model=_Refusing())
     assert match.status is MatchStatus.UNKNOWN_NAME and match.chosen is None
     with pytest.raises(ModelError) as refused:
         understand("nosuch", kitchen, vocabulary)
-    names = "tea-time, coffee-time" if vocabulary is Vocabulary.OBJECTIVE else "make-tea, make-coffee"
+    names = "tea-time, coffee-time" if vocabulary is ModelVocabulary.OBJECTIVE else "make-tea, make-coffee"
     assert f"unknown {vocabulary.value} 'nosuch' (the model's {vocabulary.value}s: {names}" in refused.value.message
     assert refused.value.path == "kitchen.yaml"
 
@@ -562,13 +564,14 @@ def test_an_object_kind_of_one_token_is_still_words(kitchen):
 
 
 def test_a_cue_of_one_token_is_a_name_of_a_task_or_an_objective(kitchen):
-    from relevance_plan.errors import ModelError
     from relevance_plan.relevance.text.understanding import understand_cue
+
+    from relevance_plan.errors import ModelError
 
     assert understand_cue("coffee-time", kitchen).chosen == "coffee-time"
     assert understand_cue("make-coffee", kitchen).chosen == "make-coffee"
     near = understand_cue("coffe-time", kitchen)
-    assert near.status is MatchStatus.NEAR_NAME and near.vocabulary is Vocabulary.OBJECTIVE
+    assert near.status is MatchStatus.NEAR_NAME and near.vocabulary is ModelVocabulary.OBJECTIVE
     assert understand_cue("make-cofee", kitchen).candidates[0].name == "make-coffee"
     with pytest.raises(ModelError, match="unknown task or objective 'nosuch'.*make-tea.*tea-time"):
         understand_cue("nosuch", kitchen)

@@ -8,9 +8,9 @@ import relevance_plan as rp
 from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.generators.sized import generate_sized_problem
 from relevance_plan.io import load_sources
-from relevance_plan.relevance.exploration import relaxed_reachability
-from relevance_plan.relevance.task import PlanningTask
-from relevance_plan.relevance.timed_relaxation import timed_relaxed_reachability
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.reachability.exploration import relaxed_reachability
+from relevance_plan.relevance.reachability.timed_relaxation import timed_relaxed_reachability
 
 ROVER_DOMAIN = """(define (domain rover)
   (:requirements :strips :typing :numeric-fluents :durative-actions)
@@ -159,7 +159,7 @@ def test_a_class_the_selection_lacks_is_tried_before_more_members_of_a_tied_clas
 def test_without_numeric_conditions_effects_or_goals_the_check_is_skipped_for_it_cannot_refute():
     import random
 
-    from relevance_plan.relevance.timed_relaxation import applies
+    from relevance_plan.relevance.reachability.timed_relaxation import applies
 
     assert applies(task_of(ROVER_DOMAIN, rover_problem(3)))
     # durations read from functions, but no number in a condition, an effect or the goal

@@ -23,8 +23,8 @@ from witness_worlds import REFUSED, World, domain_text, worlds
 from relevance_plan.io import load_task
 from relevance_plan.planning.planners.base import PlannerStatus
 from relevance_plan.planning.planners.fast_downward.adapter import run_fast_downward
-from relevance_plan.relevance.object_states import ObjectStates, State, step_of
-from relevance_plan.relevance.task import PlanningTask
+from relevance_plan.relevance.analysis.object_states import ObjectState, ObjectStates, step_of
+from relevance_plan.relevance.analysis.task import PlanningTask
 
 LIFTED = REPO / "benchmarks" / "corpus" / "taskography" / "lifted"
 
@@ -251,11 +251,11 @@ def test_the_proof_is_loaded_only_for_a_problem_short_of_witnesses(tmp_path):
         domain, problem = write_task(tmp_path, name, *_files(world("plain", items, TWO_VASE_ATOMS)))
         modules = modules_after(
             "from relevance_plan.io import load_task",
-            "from relevance_plan.relevance.task import PlanningTask",
+            "from relevance_plan.relevance.analysis.task import PlanningTask",
             f"PlanningTask(*load_task({str(domain)!r}, {str(problem)!r})).proved_unsolvable",
         )
-        assert ("relevance_plan.relevance.witness_proof" in modules) is loaded, name
-        assert ("relevance_plan.relevance.object_states" in modules) is loaded, name
+        assert ("relevance_plan.relevance.analysis.witness_proof" in modules) is loaded, name
+        assert ("relevance_plan.relevance.analysis.object_states" in modules) is loaded, name
 
 
 # --------------------------------------------------------------------------- the corpus keeps its verdicts
@@ -318,9 +318,9 @@ def test_a_mark_never_outlives_a_delete_that_may_remove_its_atom(tmp_path):
     has = states.index[("has", 0)]
     cap = states.caps[has]
     counts = tuple(cap if i == has else c for i, c in enumerate(next(iter(states.initial)).counts))
-    after = states.successors(steps["drain"], State(counts, frozenset({has})))
+    after = states.successors(steps["drain"], ObjectState(counts, frozenset({has})))
     # "the cap or more" may stay the cap with the marked atom gone; a count of 0 keeps no mark
-    assert State(counts, frozenset()) in after
+    assert ObjectState(counts, frozenset()) in after
     assert all(state.counts[has] > 0 for state in after if has in state.marked)
 
 

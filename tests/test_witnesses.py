@@ -16,11 +16,11 @@ from support import invoke, write_task
 
 from relevance_plan.io import load_task
 from relevance_plan.pddl.formulas import Atom
-from relevance_plan.relevance.exploration import relaxed_reachability
-from relevance_plan.relevance.prune import ranked_names
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.analysis.witnesses import WitnessNeed, consuming_roles, match_witnesses
+from relevance_plan.relevance.reachability.exploration import relaxed_reachability
+from relevance_plan.relevance.selection.prune import ranked_names
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
-from relevance_plan.relevance.task import PlanningTask
-from relevance_plan.relevance.witnesses import WitnessNeed, consuming_roles, match_witnesses
 
 HOUSE = """
 (define (domain house)

@@ -9,7 +9,11 @@ from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.generators.generate import generate_problem
 from relevance_plan.generators.kitchen_variants import KITCHEN_VARIANTS, NUMERIC, generate_variant_problem
 from relevance_plan.pddl.parser import read_domain, read_problem
-from relevance_plan.relevance.knowledge import check_knowledge_model_applies, find_knowledge_model, load_knowledge_model
+from relevance_plan.relevance.scoring.knowledge import (
+    check_knowledge_model_applies,
+    find_knowledge_model,
+    load_knowledge_model,
+)
 
 CASES = [(world, difficulty) for world in KITCHEN_VARIANTS for difficulty in ("simple", "hard")]
 

@@ -13,8 +13,8 @@ from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.generators.classic import CLASSIC_WORLDS, generate_classic_problem
 from relevance_plan.generators.sized import NEW_WORLDS, SIZED_WORLDS, generate_sized_problem
 from relevance_plan.pddl.parser import read_domain, read_problem
-from relevance_plan.relevance.exploration import relaxed_reachability
-from relevance_plan.relevance.task import PlanningTask
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.reachability.exploration import relaxed_reachability
 
 # sha256 over the twelve classic worlds (seed 7, index 2, size 80): text and sidecar, as the
 # generator wrote them before the sized worlds shared its code.

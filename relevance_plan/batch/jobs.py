@@ -23,7 +23,7 @@ from relevance_plan.batch.store import ResultKey
 from relevance_plan.batch.suites import find_suite_problems, suite_name
 from relevance_plan.errors import InputFileError, PlannerError, RelevancePlanError, UsageError
 from relevance_plan.planning.loop import METHODS, PlanOptions, plan_task
-from relevance_plan.relevance.sidecar import read_sidecar_for
+from relevance_plan.sidecar import read_sidecar_for
 
 
 @dataclass(frozen=True)

@@ -22,8 +22,8 @@ from relevance_plan.errors import InputFileError, RelevancePlanError
 from relevance_plan.io import load_domain, read_bytes
 from relevance_plan.planning.loop import PLAN_OPTION_FIELDS, PlanOptions
 from relevance_plan.planning.planners.registry import DEFAULT_PLANNER_CONFIG, make_planner
-from relevance_plan.relevance.knowledge import find_knowledge_model
-from relevance_plan.relevance.sidecar import sidecar_path
+from relevance_plan.relevance.scoring.knowledge import find_knowledge_model
+from relevance_plan.sidecar import sidecar_path
 
 
 def _sha256(data: bytes) -> str:

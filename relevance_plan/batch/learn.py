@@ -12,7 +12,7 @@ labelled:
   is still found.  One planner run per labelled object.
 
 Then a logistic model is fitted on the objects' features
-(``relevance.learning.fit``).  ``learn_from_store`` takes the solved runs of
+(``relevance.scoring.learning.fit``).  ``learn_from_store`` takes the solved runs of
 a results store instead of planning again.
 """
 
@@ -34,12 +34,12 @@ from relevance_plan.pddl.plans import Plan
 from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome
 from relevance_plan.planning.planners.registry import DEFAULT_PLANNER_CONFIG, make_planner
 from relevance_plan.planning.validate import validate_plan
-from relevance_plan.relevance.learning.features import FeatureConfig, object_features
-from relevance_plan.relevance.learning.fit import LabelledProblem, fit_learned_model, with_hubs
-from relevance_plan.relevance.learning.learned_model import LearnedModel
-from relevance_plan.relevance.prune import prune_with_scores
-from relevance_plan.relevance.scorers import ScoreResult
-from relevance_plan.relevance.task import PlanningTask
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.scoring.learning.features import FeatureConfig, object_features
+from relevance_plan.relevance.scoring.learning.fit import LabelledProblem, fit_learned_model, with_hubs
+from relevance_plan.relevance.scoring.learning.learned_model import LearnedModel
+from relevance_plan.relevance.scoring.scorers import ScoreResult
+from relevance_plan.relevance.selection.prune import prune_with_scores
 
 LABEL_KINDS = ("plan", "minimal")
 DEFAULT_LABELS = "plan"

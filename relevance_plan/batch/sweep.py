@@ -20,12 +20,12 @@ from relevance_plan.batch.suites import SuiteProblem, find_suite_problems
 from relevance_plan.errors import InputFileError, UsageError
 from relevance_plan.io import load_domain, load_problem
 from relevance_plan.pddl.model import Domain
-from relevance_plan.relevance.knowledge import KnowledgeModel
-from relevance_plan.relevance.metrics import SetMetrics, mean_metrics, set_metrics
-from relevance_plan.relevance.prune import Thresholds
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.scoring.knowledge import KnowledgeModel
+from relevance_plan.relevance.scoring.metrics import SetMetrics, mean_metrics, set_metrics
+from relevance_plan.relevance.selection.prune import Thresholds
 from relevance_plan.relevance.setup import ScoringOptions, resolve_knowledge_model, score_problem
-from relevance_plan.relevance.sidecar import read_sidecar_for
-from relevance_plan.relevance.task import PlanningTask
+from relevance_plan.sidecar import read_sidecar_for
 
 METRICS = ("recall", "precision", "f1", "N")
 N_MEANING = "N = objects chosen / objects in the ground truth (1 = the right number)"

@@ -37,9 +37,9 @@ from relevance_plan.exitcodes import EXIT_CODE_DESCRIPTIONS, ExitCode, exit_code
 from relevance_plan.pddl.formatter import format_number
 from relevance_plan.planning.loop import plan_task
 from relevance_plan.planning.results import PlanResult, PlanStatus
-from relevance_plan.relevance.prune import Selection
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.selection.prune import Selection
 from relevance_plan.relevance.setup import Scoring, ScoringOptions, score_problem
-from relevance_plan.relevance.task import PlanningTask
 
 
 def _score_and_prune(domain_path, problem_path, options: ScoringOptions) -> tuple[Scoring, Selection]:
@@ -234,9 +234,9 @@ def _pass_through(problem_path, output, refused: UnsupportedFeatureError, as_jso
 
 
 def _inquiries(scoring: Scoring, result: Selection) -> dict:
-    from relevance_plan.relevance.metrics import plan_inquiries
-    from relevance_plan.relevance.prune import select_relevant
-    from relevance_plan.relevance.scene import kind_of
+    from relevance_plan.relevance.scoring.metrics import plan_inquiries
+    from relevance_plan.relevance.scoring.scene import kind_of
+    from relevance_plan.relevance.selection.prune import select_relevant
 
     task, model, scores = scoring.task, scoring.knowledge_model, scoring.scores
     structural = set()
@@ -284,7 +284,7 @@ def prune(domain_path, problem_path, output, pass_through, as_json, **values):
         _pass_through(problem_path, output, refused, as_json)
         return
     from relevance_plan.cli.explain import scores_header, selection_json, understood_lines
-    from relevance_plan.relevance.decisions import kept_summary
+    from relevance_plan.relevance.selection.decisions import kept_summary
 
     scores = scoring.scores
     if not scores.sufficient:
@@ -459,7 +459,7 @@ def _print_plan_summary(result: PlanResult, plan_file, err: bool = False) -> Non
     unpruned = result.unpruned_reason
     echo(f"objects:     {_objects_line(result)}" + (f" (pruned: no, {unpruned})" if unpruned else ""))
     if result.selection is not None:
-        from relevance_plan.relevance.decisions import kept_summary
+        from relevance_plan.relevance.selection.decisions import kept_summary
 
         echo(f"pruning:     {kept_summary(result.selection)} first")
     echo(f"attempts:    {len(result.attempts)} (first: {result.first_attempt_status})")

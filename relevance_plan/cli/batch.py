@@ -270,7 +270,7 @@ def learn(domain_path, problem_paths, output_path, timeout, time_limit, labels, 
     from relevance_plan.batch.learn import learn as learn_model
     from relevance_plan.batch.learn import learn_from_store
     from relevance_plan.cli.files import names_stdout, write_output
-    from relevance_plan.relevance.learning.learned_model import learned_model_text
+    from relevance_plan.relevance.scoring.learning.learned_model import learned_model_text
 
     if time_limit is not None:
         if click.get_current_context().get_parameter_source("timeout") is click.core.ParameterSource.COMMANDLINE:

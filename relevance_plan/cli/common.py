@@ -31,8 +31,8 @@ from relevance_plan.planning.loop import METHODS, PlanOptions
 from relevance_plan.planning.planners.registry import DEFAULT_PLANNER, DEFAULT_PLANNER_CONFIG
 from relevance_plan.planning.results import PlanResult
 from relevance_plan.planning.validate import VALIDATOR_CHOICES
-from relevance_plan.relevance.prune import DEFAULT_TAU, Thresholds
-from relevance_plan.relevance.scorers import SCORERS
+from relevance_plan.relevance.scoring.scorers import SCORERS
+from relevance_plan.relevance.selection.prune import DEFAULT_TAU, Thresholds
 from relevance_plan.relevance.setup import ScoringOptions, check_scorer, given_cues
 
 
@@ -256,7 +256,7 @@ def take_scoring(values: dict) -> ScoringOptions:
     thresholds = Thresholds(taken.pop("tau_class"), taken.pop("tau_element"))
     options = ScoringOptions(thresholds=thresholds, **taken)
     if options.learned_model_path is not None:
-        from relevance_plan.relevance.learning.learned_model import load_learned_model
+        from relevance_plan.relevance.scoring.learning.learned_model import load_learned_model
 
         load_learned_model(options.learned_model_path)  # a damaged file stops the command before any planning
     return options

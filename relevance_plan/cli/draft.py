@@ -28,8 +28,8 @@ def draft_model(domain_path, problem_paths, output, as_json, quiet):
     from relevance_plan.cli.files import check_output_file, names_stdout, write_output
     from relevance_plan.io import check_input_file, load_domain, load_problem
     from relevance_plan.pddl.sexpr import collection_paused
+    from relevance_plan.relevance.analysis.task import PlanningTask
     from relevance_plan.relevance.drafting import draft_model as draft
-    from relevance_plan.relevance.task import PlanningTask
 
     for path in problem_paths:
         check_input_file(path, "problem file")

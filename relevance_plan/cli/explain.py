@@ -1,7 +1,7 @@
 """What ``score`` and ``prune`` print: the relevance tables, each object's decision, one object's chain.
 
 Each object's line names the step that kept or dropped it
-(``relevance.decisions``): the goal, the thresholds, closure, a dependency,
+(``relevance.selection.decisions``): the goal, the thresholds, closure, a dependency,
 the sufficiency check, soundness, the goal filter, set aside.  Free text the
 model understood is shown with its similarity.
 """
@@ -11,9 +11,9 @@ from __future__ import annotations
 import click
 
 from relevance_plan.errors import UsageError
-from relevance_plan.relevance.decisions import classes_kept, decide, kept_summary, why
-from relevance_plan.relevance.prune import Selection
-from relevance_plan.relevance.scorers import ScoreResult
+from relevance_plan.relevance.scoring.scorers import ScoreResult
+from relevance_plan.relevance.selection.decisions import classes_kept, decide, kept_summary, why
+from relevance_plan.relevance.selection.prune import Selection
 
 
 def selection_json(result: Selection) -> dict:

@@ -20,7 +20,7 @@ from dataclasses import replace
 from relevance_plan.errors import UsageError
 from relevance_plan.pddl.formulas import GroundAtom, numeric_effects
 from relevance_plan.pddl.model import Domain, Problem, TimedLiteral, frozen, pinned_objects
-from relevance_plan.relevance.types import static_predicates
+from relevance_plan.relevance.analysis.types import static_predicates
 
 BLOCKSWORLD_DOMAIN = """(define (domain blocksworld)
   (:requirements :strips :typing)

@@ -37,7 +37,7 @@ from dataclasses import dataclass, field
 from functools import cached_property
 
 from relevance_plan.generators.catalog import KITCHENWARE_TYPES
-from relevance_plan.relevance.scene import kind_of  # noqa: F401  (one rule for a name's kind)
+from relevance_plan.relevance.scoring.scene import kind_of  # noqa: F401  (one rule for a name's kind)
 
 SURFACE = "surface"
 CONTAINER = "container"

@@ -71,11 +71,11 @@ from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome
 from relevance_plan.planning.planners.up.adapter import UP_STATUS, up_status_name
 from relevance_plan.planning.results import Attempt, PlanStatus
 from relevance_plan.planning.validate import validate_plan
-from relevance_plan.relevance.knowledge import KnowledgeModel, load_knowledge_model
-from relevance_plan.relevance.prune import DEFAULT_TAU, Selection, Thresholds, Widening, widen
-from relevance_plan.relevance.scorers import SCORERS
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.scoring.knowledge import KnowledgeModel, load_knowledge_model
+from relevance_plan.relevance.scoring.scorers import SCORERS
+from relevance_plan.relevance.selection.prune import DEFAULT_TAU, Selection, Thresholds, Widening, widen
 from relevance_plan.relevance.setup import Scoring, given_cues, resolve_knowledge_model, score_problem, without_cues
-from relevance_plan.relevance.task import PlanningTask
 
 ENGINE_NAME = "relevance"
 

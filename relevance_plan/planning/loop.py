@@ -6,7 +6,7 @@ Methods: ``pure`` (the planner on the original problem), ``relevance``
 set).  Every plan is checked against the ORIGINAL problem before it is
 reported.  When a pruned problem turns out unsolvable, gives an invalid plan
 or uses up its share of the time, the selection is widened
-(``relevance.prune.widen``) and the planner retries; the last attempt is the
+(``relevance.selection.prune.widen``) and the planner retries; the last attempt is the
 full problem, so every solvable problem is solved given time.
 
 :func:`run_attempts` is the loop itself.  It does not know how a planner is
@@ -78,11 +78,11 @@ from relevance_plan.planning.validate import (
     validate_unread,
 )
 from relevance_plan.progress import ProgressCallback
-from relevance_plan.relevance.decisions import kept_summary
-from relevance_plan.relevance.knowledge import KnowledgeModel
-from relevance_plan.relevance.prune import Selection, Thresholds, Widening, next_witnesses, widen
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.scoring.knowledge import KnowledgeModel
+from relevance_plan.relevance.selection.decisions import kept_summary
+from relevance_plan.relevance.selection.prune import Selection, Thresholds, Widening, next_witnesses, widen
 from relevance_plan.relevance.setup import Scoring, ScoringOptions, score_problem
-from relevance_plan.relevance.task import PlanningTask
 from relevance_plan.supervision.process import CancelScope, cancel_scope
 
 METHODS = ("relevance", "pure", "random", "oracle")
@@ -638,7 +638,7 @@ def _first_selection(run: _Run) -> _FirstSelection | PlanResult:
 
 def _proved_unsolvable(run: _Run) -> PlanResult | None:
     """The unsolvable result, without a planner, of a problem whose goal needs more witnesses than
-    it has (``relevance.witness_proof``: a proof, not a guess); None for others, and for the
+    it has (``relevance.analysis.witness_proof``: a proof, not a guess); None for others, and for the
     baseline methods (they plan as the paper's did)."""
     if run.options.method != "relevance":
         return None

@@ -24,8 +24,8 @@ from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome
 from relevance_plan.planning.planners.registry import DEFAULT_PLANNER
 from relevance_plan.planning.validate import ValidationResult, ValidationStatus
 from relevance_plan.progress import ProgressCallback, ProgressEvent
-from relevance_plan.relevance.prune import Selection, Thresholds
-from relevance_plan.relevance.text.matching import WordMatch
+from relevance_plan.relevance.scoring.word_matching import WordMatch
+from relevance_plan.relevance.selection.prune import Selection, Thresholds
 
 
 class PlanStatus(enum.Enum):

@@ -13,18 +13,18 @@ from dataclasses import dataclass, field, replace
 
 from relevance_plan.errors import UsageError
 from relevance_plan.pddl.model import Domain
-from relevance_plan.relevance.knowledge import (
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.scoring.knowledge import (
     KnowledgeModel,
     check_knowledge_model_applies,
     find_knowledge_model,
     load_knowledge_model,
 )
-from relevance_plan.relevance.learning.learned_model import load_learned_model
-from relevance_plan.relevance.learning.scorer import score_learned
-from relevance_plan.relevance.prune import PruneSettings, Selection, Thresholds, prune_with_scores
-from relevance_plan.relevance.scorers import SCORERS, ScoreRequest, ScoreResult
-from relevance_plan.relevance.sidecar import necessary_objects
-from relevance_plan.relevance.task import PlanningTask
+from relevance_plan.relevance.scoring.learning.learned_model import load_learned_model
+from relevance_plan.relevance.scoring.learning.scorer import score_learned
+from relevance_plan.relevance.scoring.scorers import SCORERS, ScoreRequest, ScoreResult
+from relevance_plan.relevance.selection.prune import PruneSettings, Selection, Thresholds, prune_with_scores
+from relevance_plan.sidecar import necessary_objects
 
 
 @dataclass(frozen=True)
@@ -101,7 +101,7 @@ class Scoring:
         )
         selection = self.prune(self.options.thresholds, settings)
         if checked and self.scorer == "model":
-            from relevance_plan.relevance.completion import complete_selection
+            from relevance_plan.relevance.selection.completion import complete_selection
 
             return complete_selection(selection, self.knowledge_model)
         return selection

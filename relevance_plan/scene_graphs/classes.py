@@ -26,7 +26,7 @@ from relevance_plan.errors import MissingExtraError, ModelError, printable
 
 VOCABULARY_FILE = DATA_DIR / "scene_graphs" / "classes.yaml"
 # A name is placed under the nearest class only this similar or more (the kinds' floor of free text,
-# relevance.text.matching.DEFAULT_RULES; tests/test_scene_graphs.py checks it on names of both data sets).
+# relevance.scoring.word_matching.DEFAULT_RULES; tests/test_scene_graphs.py checks it on names of both data sets).
 DEFAULT_FLOOR = 0.55
 SHOWN = 3
 GENERIC_ROOM = "unknown_room"
@@ -192,7 +192,7 @@ def spelled(name: str, classes: Mapping[str, GraphClass]) -> str | None:
 def nearest(texts: Sequence[str], classes: Mapping[str, GraphClass]) -> list[tuple[tuple[str, float], ...]]:
     """For each text, the most similar classes, best first (the text model; ``MissingExtraError``
     without it)."""
-    from relevance_plan.relevance.text import load_text_model
+    from relevance_plan.text import load_text_model
 
     if not texts or not classes:
         return [() for _ in texts]
@@ -212,7 +212,7 @@ def _phrases(entry: GraphClass) -> tuple[str, ...]:
 
 
 def _phrase_table(model: Any, entries: tuple[tuple[str, str], ...]) -> tuple[tuple[str, ...], Any]:
-    from relevance_plan.relevance.text.cache import cache_key, read_cached, write_cached
+    from relevance_plan.text.cache import cache_key, read_cached, write_cached
 
     phrases = [phrase for _, phrase in entries]
     key = cache_key(model.fingerprint, phrases)

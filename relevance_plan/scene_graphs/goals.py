@@ -6,7 +6,7 @@ split at their last relation word (on, onto, in, into, inside, to, at) into
 what is moved and where; each part is matched to the vocabulary's classes
 (spelled, else the text model's nearest, with its similarity), and the pair
 becomes a class goal met through any object of the class (the witnesses of
-``relevance.witnesses``): ``(class-in-room cup kitchen)`` for a room,
+``relevance.analysis.witnesses``): ``(class-in-room cup kitchen)`` for a room,
 ``(class-on bottle table)`` for a surface, ``(class-inside k l)`` for a
 container.  Below the floor, or for a class the scene does not have, the
 goal is a question.
@@ -23,7 +23,7 @@ from relevance_plan.scene_graphs.classes import GraphClass, Kind, Vocabulary, ne
 from relevance_plan.scene_graphs.naming import pddl_word
 from relevance_plan.scene_graphs.problem import ImportedScene
 
-# Sentences score lower against single words than a kind does (relevance.text.matching.DEFAULT_RULES).
+# Sentences score lower against single words than a kind does (relevance.scoring.word_matching.DEFAULT_RULES).
 GOAL_FLOOR = 0.45
 _RELATION = re.compile(r"\s(onto|on top of|on|into|inside|in|to|at)\s")
 _VERBS = ("please", "bring", "put", "place", "take", "move", "carry", "get", "fetch", "set", "leave", "drop")

@@ -43,7 +43,7 @@ def read_node_map(problem_path: str | os.PathLike[str] | None) -> NodeMap | None
     """The node map of the sidecar beside ``problem_path``, or None when there is none (or it is not an
     import's): the callers then go on without node ids."""
     from relevance_plan.errors import InputFileError
-    from relevance_plan.relevance.sidecar import read_sidecar, sidecar_path
+    from relevance_plan.sidecar import read_sidecar, sidecar_path
 
     if problem_path is None:
         return None

@@ -34,11 +34,11 @@ from relevance_plan.errors import MAX_MESSAGE, RelevancePlanError, printable
 from relevance_plan.pddl.formulas import Formula, names_in
 from relevance_plan.pddl.parser import read_problem
 from relevance_plan.pddl.sexpr import parse_sexpr
-from relevance_plan.relevance.knowledge import KnowledgeModel
+from relevance_plan.relevance.scoring.knowledge import KnowledgeModel
 from relevance_plan.session.state import LiveScene
 
 if TYPE_CHECKING:  # the text package is imported only for a cue in words
-    from relevance_plan.relevance.text.matching import WordMatch
+    from relevance_plan.relevance.scoring.word_matching import WordMatch
 
 EVENT_KINDS = ("add", "remove", "set", "unset", "goal", "human", "cue", "plan")
 # An event line holds at most this many bytes of UTF-8, its line ending not counted; a longer one is
@@ -224,8 +224,8 @@ def _understood_cue(text: str, model: KnowledgeModel) -> Event:
     """A cue in words, as the model's nearest task, else its nearest objective, else a question
     (``understanding.understand_cue``); one token that names nothing of the model is refused."""
     from relevance_plan.errors import MissingExtraError, ModelError
-    from relevance_plan.relevance.text.matching import Vocabulary
-    from relevance_plan.relevance.text.understanding import understand_cue
+    from relevance_plan.relevance.scoring.word_matching import ModelVocabulary
+    from relevance_plan.relevance.scoring.word_understanding import understand_cue
 
     try:
         match = understand_cue(text, model)
@@ -235,7 +235,7 @@ def _understood_cue(text: str, model: KnowledgeModel) -> Event:
         raise EventError(error.message) from None
     if match.chosen is None:
         return Event("cue", understood=match)
-    if match.vocabulary is Vocabulary.TASK:
+    if match.vocabulary is ModelVocabulary.TASK:
         return Event("cue", task=match.chosen, understood=match)
     return Event("cue", objective=match.chosen, understood=match)
 

@@ -9,10 +9,10 @@ from typing import TYPE_CHECKING, Any
 from relevance_plan.pddl.model import UNSPELLED, Spelling
 from relevance_plan.pddl.plans import Plan, format_plan_step
 from relevance_plan.planning.results import PlanResult, PlanStatus
-from relevance_plan.relevance.prune import Selection
+from relevance_plan.relevance.selection.prune import Selection
 
 if TYPE_CHECKING:  # the text package is imported only when free text is given
-    from relevance_plan.relevance.text.matching import WordMatch
+    from relevance_plan.relevance.scoring.word_matching import WordMatch
 
 
 @dataclass(frozen=True)

@@ -9,7 +9,7 @@ changed.  Its :meth:`~LiveModelScores.result` equals ``score_by_knowledge_model`
 the current state.
 
 :class:`LiveGoalScores` follows the goal scorer (``scorers/goal.py``): the goal's
-analysis is kept while no fact it read changes (``analysis.GoalReads``); an
+analysis is kept while no fact it read changes (``goal_regression.GoalReads``); an
 object's score changes only when it is added, when it comes to share a fact
 with a goal object or stops, when its role's number of candidates crosses
 the populous mark (or changes while past it), or, for a populous role's
@@ -26,13 +26,15 @@ from dataclasses import replace
 
 from relevance_plan.pddl.formulas import names_in
 from relevance_plan.pddl.model import goal_objects
-from relevance_plan.relevance.analysis import GoalAnalysis, GoalReads, analyse_goal_reading, graph_distances
-from relevance_plan.relevance.knowledge import KnowledgeModel
-from relevance_plan.relevance.prune import Thresholds
-from relevance_plan.relevance.scene import Element, build_scene
-from relevance_plan.relevance.scorers import ScoreRequest, ScoreResult
-from relevance_plan.relevance.scorers.goal import POPULOUS, goal_neighbours, goal_score, role_candidates
-from relevance_plan.relevance.scorers.knowledge_model import (
+from relevance_plan.relevance.analysis.distances import graph_distances
+from relevance_plan.relevance.analysis.goal_regression import GoalAnalysis, GoalReads, analyse_goal_reading
+from relevance_plan.relevance.analysis.task import PlanningTask, hub_degree
+from relevance_plan.relevance.analysis.types import InferredTypes, infer_types
+from relevance_plan.relevance.scoring.knowledge import KnowledgeModel
+from relevance_plan.relevance.scoring.scene import Element, build_scene
+from relevance_plan.relevance.scoring.scorers import ScoreRequest, ScoreResult
+from relevance_plan.relevance.scoring.scorers.goal import POPULOUS, goal_neighbours, goal_score, role_candidates
+from relevance_plan.relevance.scoring.scorers.knowledge_model import (
     UNKNOWN_CLASS,
     KnowledgeContext,
     class_of,
@@ -45,9 +47,8 @@ from relevance_plan.relevance.scorers.knowledge_model import (
     unknown_share_problem,
     with_goal_objects,
 )
+from relevance_plan.relevance.selection.prune import Thresholds
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
-from relevance_plan.relevance.task import PlanningTask, hub_degree
-from relevance_plan.relevance.types import InferredTypes, infer_types
 from relevance_plan.session.state import LiveScene, SceneDelta
 
 ALL = None  # "every element may have changed"
@@ -369,7 +370,7 @@ class LiveGoalScores:
         """Hops from the goal's objects (``PlanningTask.goal_distance``), found when first needed."""
         if self._distance is None:
             hub = hub_degree(len(self.scene.objects))
-            # as ``analysis.object_distances``, on the links the live index keeps across events
+            # as ``distances.object_distances``, on the links the live index keeps across events
             index = self.scene.index
             self._distance = graph_distances(index, index.object_graph(None), self.goal_objects, hub)
         return self._distance

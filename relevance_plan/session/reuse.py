@@ -14,7 +14,7 @@ element crossed the thresholds are the other triggers' business
 
 * the repair's own reads (``repair.RepairReads``): the facts of every object
   it explored or ranked, and the classes whose every member it compared;
-* the links its rankings follow (``analysis.ObjectGraph`` with the repair's
+* the links its rankings follow (``distances.ObjectGraph`` with the repair's
   fan limit): a fact that adds or drops a link from an object some link
   reaches, or that moves a predicate's fan across the limit, or an object
   across the hub mark, can change a distance;
@@ -23,7 +23,7 @@ element crossed the thresholds are the other triggers' business
   (static one-place facts that stand for types, facts without arguments,
   a class shared by many goal objects), the set-aside alternatives' static
   links, what a quantifier ranges over;
-* the goal's analysis (what it read: ``analysis.GoalReads``; when the event
+* the goal's analysis (what it read: ``goal_regression.GoalReads``; when the event
   changed some of it, the session analyses the goal again and compares);
 * the task analyses the selection used: one this module does not know
   (added to ``PlanningTask`` later) stops all reuse until it is known here.
@@ -43,20 +43,15 @@ from functools import cached_property
 from relevance_plan.pddl.formatter import format_atom
 from relevance_plan.pddl.formulas import Atom, conjuncts, literals
 from relevance_plan.pddl.model import UNSPELLED, Domain, Spelling
-from relevance_plan.relevance.analysis import (
-    ConstraintRule,
-    FactIndex,
-    GoalAnalysis,
-    GoalReads,
-    analyse_goal_reading,
-    single_valued_predicates,
-)
-from relevance_plan.relevance.closure import ConstraintClosure
-from relevance_plan.relevance.exploration import relaxed_task
-from relevance_plan.relevance.prune import FULL_ABOVE, REPAIR_SCORERS, Selection
-from relevance_plan.relevance.repair import REPAIR_MAX_FAN, RepairReads
-from relevance_plan.relevance.task import PlanningTask, hub_degree
-from relevance_plan.relevance.types import declares_types, infer_types, static_predicates
+from relevance_plan.relevance.analysis.constraint_rules import ConstraintRule, single_valued_predicates
+from relevance_plan.relevance.analysis.facts import FactIndex
+from relevance_plan.relevance.analysis.goal_regression import GoalAnalysis, GoalReads, analyse_goal_reading
+from relevance_plan.relevance.analysis.task import PlanningTask, hub_degree
+from relevance_plan.relevance.analysis.types import declares_types, infer_types, static_predicates
+from relevance_plan.relevance.reachability.schemas import relaxed_task
+from relevance_plan.relevance.selection.closure import ConstraintClosure
+from relevance_plan.relevance.selection.prune import FULL_ABOVE, REPAIR_SCORERS, Selection
+from relevance_plan.relevance.selection.repair import REPAIR_MAX_FAN, RepairReads
 from relevance_plan.session.state import LiveIndex, LiveScene, SceneDelta
 
 # The task analyses this module knows what they read; another one, once used, stops reuse.

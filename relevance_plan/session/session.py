@@ -53,14 +53,15 @@ from relevance_plan.planning.loop import PlanOptions, run_attempts, summarise
 from relevance_plan.planning.planners.base import RunOutcome
 from relevance_plan.planning.results import PlanStatus
 from relevance_plan.planning.validate import validate_plan
-from relevance_plan.relevance.analysis import ConstraintRule, GoalAnalysis, GoalReads, single_valued_predicates
-from relevance_plan.relevance.closure import ConstraintClosure, constraint_rules
-from relevance_plan.relevance.knowledge import KnowledgeModel
-from relevance_plan.relevance.prune import Selection, prune_with_scores
-from relevance_plan.relevance.repair import RepairReads
-from relevance_plan.relevance.scorers import ScoreResult
+from relevance_plan.relevance.analysis.constraint_rules import ConstraintRule, single_valued_predicates
+from relevance_plan.relevance.analysis.goal_regression import GoalAnalysis, GoalReads
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.scoring.knowledge import KnowledgeModel
+from relevance_plan.relevance.scoring.scorers import ScoreResult
+from relevance_plan.relevance.selection.closure import ConstraintClosure, constraint_rules
+from relevance_plan.relevance.selection.prune import Selection, prune_with_scores
+from relevance_plan.relevance.selection.repair import RepairReads
 from relevance_plan.relevance.setup import Scoring, ScoringOptions, choose_scorer, resolve_knowledge_model
-from relevance_plan.relevance.task import PlanningTask
 from relevance_plan.session.events import Event, EventError, check_event, parse_event_line
 from relevance_plan.session.reports import Ask, EventReport, PlanReport
 from relevance_plan.session.rescoring import ALL, FullScores, LiveGoalScores, LiveModelScores, restrict
@@ -78,7 +79,7 @@ from relevance_plan.session.state import LiveScene, SceneDelta
 from relevance_plan.session.triggers import TRIGGERS, Change, Trigger, check_triggers
 
 if TYPE_CHECKING:  # the text package is imported only when free text is given
-    from relevance_plan.relevance.text.matching import WordMatch
+    from relevance_plan.relevance.scoring.word_matching import WordMatch
 
 # Runs the planner on a problem (PDDL text of the current domain) within a time limit (None: none).
 RunPlanner = Callable[[str, "float | None"], RunOutcome]
@@ -539,8 +540,8 @@ class Session:
             return Ask("model", scores.insufficiency)
         if self.options.human is not None or self.selection is None or scores.scorer != "model":
             return None
-        from relevance_plan.relevance.metrics import plan_inquiries
-        from relevance_plan.relevance.scene import kind_of
+        from relevance_plan.relevance.scoring.metrics import plan_inquiries
+        from relevance_plan.relevance.scoring.scene import kind_of
 
         structural = {c.name for c in model.classes.values() if c.fixed_relevance is not None or c.from_contents}
         selected = self.relevant

@@ -1,7 +1,7 @@
 """The live scene: objects, true facts and the goal, changed one event at a time.
 
 Kept in memory only.  :class:`LiveIndex` holds the current facts exactly as
-``analysis.index_init`` indexes the written current state (the same lists in
+``facts.index_init`` indexes the written current state (the same lists in
 the same order), but is updated fact by fact, so every stage of pruning reads
 the live state as it would read a snapshot, without re-indexing it.
 :meth:`LiveScene.snapshot_problem` is the current state as a Problem value
@@ -20,8 +20,8 @@ from relevance_plan.pddl.formatter import format_problem
 from relevance_plan.pddl.formulas import Formula, literals
 from relevance_plan.pddl.model import Domain, Problem, Spelling
 from relevance_plan.pddl.parser import read_problem
-from relevance_plan.relevance.analysis import ObjectGraph, walk_changed
-from relevance_plan.relevance.invariants import count_keeping_for
+from relevance_plan.relevance.analysis.distances import ObjectGraph, walk_changed
+from relevance_plan.relevance.analysis.invariants import count_keeping_for
 
 
 def atom_objects(atom: tuple) -> Iterator[str]:
@@ -35,7 +35,7 @@ def atom_objects(atom: tuple) -> Iterator[str]:
 
 
 class LiveIndex:
-    """The current facts, indexed as ``analysis.index_init`` indexes the written state (a ``FactIndex``).
+    """The current facts, indexed as ``facts.index_init`` indexes the written state (a ``FactIndex``).
 
     Each predicate's and each object's list holds its facts sorted (the
     order of the written state), then its numeric terms (``(distance a b)``,
@@ -118,7 +118,7 @@ class LiveIndex:
                 del walks[key]
 
     def object_graph(self, max_fan: float | None) -> ObjectGraph:
-        """The links of the current facts as ``analysis.ObjectGraph(self, max_fan, fan_in(self))``
+        """The links of the current facts as ``distances.ObjectGraph(self, max_fan, fan_in(self))``
         gives them, kept across changes with the walks made on it (``graph_distances``): a change
         drops what it can alter, and a position whose fan crosses ``max_fan`` makes a new graph."""
         unfollowed: frozenset[tuple[str, int]] = frozenset()
@@ -227,7 +227,7 @@ class LiveIndex:
         return any(self._degrees.get(degree) for degree in range(low + 1, high + 1))
 
     def fan(self, predicate: str, position: int) -> float:
-        """Facts per distinct object at ``position`` of ``predicate`` (``analysis.fan_in``'s value)."""
+        """Facts per distinct object at ``position`` of ``predicate`` (``facts.fan_in``'s value)."""
         atoms = len(self.by_predicate.get(predicate, ()))
         return atoms / max(1, len(self._counts.get((predicate, position), ())))
 
@@ -252,7 +252,7 @@ class LiveIndex:
 
 
 class _LiveFans(Mapping[tuple[str, int], float]):
-    """``analysis.fan_in`` of a live index, each value read when asked."""
+    """``facts.fan_in`` of a live index, each value read when asked."""
 
     def __init__(self, index: LiveIndex):
         self.index = index

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 from relevance_plan.errors import UsageError
 from relevance_plan.pddl.model import Domain
-from relevance_plan.relevance.completion import lacking, strict_task
+from relevance_plan.relevance.analysis.task import PlanningTask
 from relevance_plan.relevance.drafting.check import (
     DRAFT_RATIO,
     MAX_ROUNDS,
@@ -30,8 +30,8 @@ from relevance_plan.relevance.drafting.draft import Draft, first_draft
 from relevance_plan.relevance.drafting.evidence import ProblemEvidence, read_evidence
 from relevance_plan.relevance.drafting.structure import find_dependencies, find_structure
 from relevance_plan.relevance.drafting.writer import draft_text
-from relevance_plan.relevance.knowledge import KnowledgeModel, parse_knowledge_model
-from relevance_plan.relevance.task import PlanningTask
+from relevance_plan.relevance.scoring.knowledge import KnowledgeModel, parse_knowledge_model
+from relevance_plan.relevance.selection.completion import lacking, strict_task
 
 
 @dataclass(frozen=True)
@@ -69,7 +69,7 @@ def draft_model(domain: Domain, tasks: Sequence[PlanningTask], path: str = "<dra
         )
         for item in evidence
     }
-    run = _Run(evidence, strict, goal_lacks, path)
+    run = _CheckInputs(evidence, strict, goal_lacks, path)
     notes: list[str] = []
     for _ in range(MAX_ROUNDS):
         checks = run.check(draft)
@@ -87,7 +87,7 @@ def draft_model(domain: Domain, tasks: Sequence[PlanningTask], path: str = "<dra
 
 
 @dataclass(frozen=True)
-class _Run:
+class _CheckInputs:
     """What every round of the check reads: the problems, their strict versions, what the goal scorer lacks."""
 
     evidence: Sequence[ProblemEvidence]
@@ -105,7 +105,7 @@ class _Run:
 
 
 def _leave_out_dependencies(
-    run: _Run, draft: Draft, checks: list[ProblemCheck]
+    run: _CheckInputs, draft: Draft, checks: list[ProblemCheck]
 ) -> tuple[Draft, list[ProblemCheck], list[str]]:
     """Without each dependency in turn: left out when every problem stays sufficient with fewer objects
     kept (a lock with two keys: the sufficiency check takes the one a plan uses, a dependency both)."""

@@ -21,15 +21,15 @@ from collections.abc import Mapping, Sequence, Set
 from dataclasses import dataclass
 
 from relevance_plan.pddl.formulas import literals
-from relevance_plan.relevance.completion import lacking
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.analysis.types import static_predicates
 from relevance_plan.relevance.drafting.draft import HIGH, LOW, Draft, Prior
 from relevance_plan.relevance.drafting.evidence import ProblemEvidence
 from relevance_plan.relevance.drafting.structure import DraftedDependency
-from relevance_plan.relevance.knowledge import KnowledgeModel
-from relevance_plan.relevance.scene import kind_of
+from relevance_plan.relevance.scoring.knowledge import KnowledgeModel
+from relevance_plan.relevance.scoring.scene import kind_of
+from relevance_plan.relevance.selection.completion import lacking
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
-from relevance_plan.relevance.task import PlanningTask
-from relevance_plan.relevance.types import static_predicates
 
 DRAFT_RATIO = 1.2  # a draft may keep this many times what the goal scorer needs
 MAX_ROUNDS = 8

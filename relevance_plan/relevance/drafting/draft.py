@@ -19,7 +19,7 @@ from typing import NamedTuple
 from relevance_plan.pddl.model import Domain
 from relevance_plan.relevance.drafting.evidence import ProblemEvidence, describe_goal, members_by_class
 from relevance_plan.relevance.drafting.structure import DomainStructure, DraftedDependency
-from relevance_plan.relevance.scene import kind_of
+from relevance_plan.relevance.scoring.scene import kind_of
 
 HIGH = 0.9  # a class or kind the problems say is wanted
 LOW = 0.1  # one they say is not (below the default thresholds, with any kind and placement)

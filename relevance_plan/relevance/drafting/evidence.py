@@ -1,7 +1,7 @@
 """What the given problems say: their objectives, their objects' classes and kinds, and what the goal scorer keeps.
 
 The goal scorer regresses each problem's goal through the action schemas
-(``analysis.analyse_goal``) to the types that can play a role in reaching it;
+(``goal_regression.analyse_goal``) to the types that can play a role in reaching it;
 its first selection (``prune``'s) is what a problem needs according to that
 analysis.  Drafting reads both, per problem: the goal's objects, the members
 of each class the selection chose or the sufficiency check added, the role
@@ -15,10 +15,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from relevance_plan.pddl.formulas import predicates_in, scoped_literals
-from relevance_plan.relevance.prune import Selection
-from relevance_plan.relevance.scene import kind_of
+from relevance_plan.relevance.analysis.task import PlanningTask
+from relevance_plan.relevance.scoring.scene import kind_of
+from relevance_plan.relevance.selection.prune import Selection
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
-from relevance_plan.relevance.task import PlanningTask
 
 
 @dataclass(frozen=True)

@@ -20,9 +20,9 @@ from dataclasses import dataclass
 
 from relevance_plan.pddl.formulas import Atom, effect_literals, literals
 from relevance_plan.pddl.model import Action, Domain
-from relevance_plan.relevance.analysis import blocking_predicates
-from relevance_plan.relevance.scene import SCENE_ROLES
-from relevance_plan.relevance.types import static_predicates
+from relevance_plan.relevance.analysis.constraint_rules import blocking_predicates
+from relevance_plan.relevance.analysis.types import static_predicates
+from relevance_plan.relevance.scoring.scene import SCENE_ROLES
 
 # A type (or one of its supertypes) with one of these names stands for a person.
 HUMAN_TYPE_WORDS = frozenset(

@@ -8,7 +8,7 @@ from collections.abc import Sequence
 
 from relevance_plan.relevance.drafting.draft import UNSEEN_KIND, Draft
 from relevance_plan.relevance.drafting.structure import DraftedDependency
-from relevance_plan.relevance.knowledge import NO_PREDICATE, SCHEMA_VERSION
+from relevance_plan.relevance.scoring.knowledge import NO_PREDICATE, SCHEMA_VERSION
 
 # Plain YAML scalars that read back as the same string; anything else is written quoted.
 _PLAIN = re.compile(r"[a-z_][a-z0-9_\-]*")
