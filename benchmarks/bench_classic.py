@@ -46,7 +46,7 @@ from base import (
 )
 
 from relevance_plan.generators.classic import BUILDERS, generate_classic_problem
-from relevance_plan.planning.loop import PlanOptions
+from relevance_plan.planning.options import PlanOptions
 
 UNPADDED_SIZES = {"blocksworld": 40, "logistics": 60, "gripper": 60, "ferry": 60, "grid": 60, "miconic": 80}
 METHODS = ("pure", "relevance", "oracle")

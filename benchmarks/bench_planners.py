@@ -29,7 +29,7 @@ from base import Measured, Store, add_store_option, run_method, speedup, table_h
 
 from relevance_plan.generators.generate import generate_suite
 from relevance_plan.generators.padded import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
-from relevance_plan.planning.loop import PlanOptions
+from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.planners.registry import make_planner, split_planner_names
 
 

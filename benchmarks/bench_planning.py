@@ -30,8 +30,9 @@ from pathlib import Path
 from base import Store, add_store_option, median, median_run, ratio
 
 from relevance_plan.generators.generate import generate_suite
-from relevance_plan.planning.loop import PlanOptions, plan_task
+from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.results import PlanResult, PlanStatus
+from relevance_plan.planning.run import plan_task
 
 
 @dataclass

@@ -83,7 +83,7 @@ from base import (
 from relevance_plan.generators.sized import CLASSIC_WORLDS, generate_sized_problem
 from relevance_plan.io import load_domain, load_problem, write_text_atomic
 from relevance_plan.pddl.sexpr import collection_paused
-from relevance_plan.planning.loop import PlanOptions
+from relevance_plan.planning.options import PlanOptions
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
 from relevance_plan.relevance.task import PlanningTask
 

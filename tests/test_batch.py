@@ -27,7 +27,7 @@ from relevance_plan.batch.store import SCHEMA_VERSION, ResultStore
 from relevance_plan.errors import InputFileError, SchedulerError, StoreError, UsageError
 from relevance_plan.exitcodes import ExitCode
 from relevance_plan.generators.generate import generate_suite
-from relevance_plan.planning.loop import PlanOptions
+from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.planners.fast_downward import adapter as fast_downward
 from relevance_plan.relevance.prune import Thresholds
 

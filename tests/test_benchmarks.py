@@ -9,7 +9,8 @@ import pytest
 
 from relevance_plan.batch.report import build_report
 from relevance_plan.batch.store import read_rows
-from relevance_plan.planning.loop import PlanOptions, plan_task
+from relevance_plan.planning.options import PlanOptions
+from relevance_plan.planning.run import plan_task
 
 
 def test_the_statistics_leave_missing_values_out_and_say_when_there_are_none():

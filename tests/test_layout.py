@@ -13,7 +13,8 @@ from support import REPO
 from relevance_plan.batch.jobs import build_jobs, run_job
 from relevance_plan.batch.keys import FINGERPRINT_RULES, config_fingerprint, config_hash
 from relevance_plan.generators.padded import GRIPPER_DOMAIN, gripper_problem
-from relevance_plan.planning.loop import PLAN_OPTION_FIELDS, PlanOptions, plan_task
+from relevance_plan.planning.options import PLAN_OPTION_FIELDS, PlanOptions
+from relevance_plan.planning.run import plan_task
 from relevance_plan.relevance.prune import Thresholds
 
 # A value other than the default for every option (None where the default is set).

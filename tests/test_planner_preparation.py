@@ -19,13 +19,14 @@ from relevance_plan.io import load_task
 from relevance_plan.pddl.plans import read_plan
 from relevance_plan.pddl.simulator import simulate
 from relevance_plan.pddl.writer import write_pruned_problem
-from relevance_plan.planning.loop import PlanOptions, plan_task
+from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.planners.fast_downward import adapter as fast_downward
 from relevance_plan.planning.planners.fast_downward import command_line as fd_command
 from relevance_plan.planning.planners.preparation import COMPILED_FEATURES, compile_for, prepare_planner
 from relevance_plan.planning.planners.registry import make_planner
 from relevance_plan.planning.planners.requirements import STRIPS, TYPING, problem_features
 from relevance_plan.planning.results import PlanStatus
+from relevance_plan.planning.run import plan_task
 
 # Two ways to the goal: one expensive step, or four cheap ones (an anytime planner finds both).
 ROADS_DOMAIN = """

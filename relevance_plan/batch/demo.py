@@ -20,7 +20,7 @@ from relevance_plan.batch.compare import CompareSummary, check_compare_options, 
 from relevance_plan.batch.report import build_report, format_report
 from relevance_plan.batch.store import KEY_COLUMNS, ResultStore
 from relevance_plan.errors import InputFileError, UsageError
-from relevance_plan.planning.loop import METHODS, PlanOptions
+from relevance_plan.planning.options import METHODS, PlanOptions
 from relevance_plan.progress import ProgressCallback
 
 DEMO_SUITES = (("coffee", "simple"), ("cereal", "simple"))

@@ -35,8 +35,8 @@ from relevance_plan.cli.numbers import DISTRACTORS, OBJECTS, SEED, SUITE_SIZE
 from relevance_plan.errors import RelevancePlanError, UnsupportedFeatureError, UsageError, counted
 from relevance_plan.exitcodes import EXIT_CODE_DESCRIPTIONS, ExitCode, exit_code_for_status
 from relevance_plan.pddl.formatter import format_number
-from relevance_plan.planning.loop import plan_task
 from relevance_plan.planning.results import PlanResult, PlanStatus
+from relevance_plan.planning.run import plan_task
 from relevance_plan.relevance.prune import Selection
 from relevance_plan.relevance.setup import Scoring, ScoringOptions, score_problem
 from relevance_plan.relevance.task import PlanningTask

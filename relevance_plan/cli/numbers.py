@@ -16,7 +16,7 @@ import click
 
 from relevance_plan.exitcodes import ExitCode
 from relevance_plan.limits import MAX_COUNT, MAX_DISTRACTORS, MAX_TIMEOUT
-from relevance_plan.planning.loop import MAX_MEMORY_MB, MIN_MEMORY_MB
+from relevance_plan.planning.options import MAX_MEMORY_MB, MIN_MEMORY_MB
 
 # Seeds within this size either way: the generators' floor, and what a results store's INTEGER column holds.
 _SEED_SIZE = 1 << 62

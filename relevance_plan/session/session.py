@@ -23,7 +23,7 @@ When the cues are insufficient the previous selection stays in force,
 marked stale, with the question to ask; a ``cue``, ``human`` or ``goal``
 event that settles it resumes.  With a planner, a determination that
 changes the kept set (or a new goal, or a ``plan`` event) plans again with
-the one attempt loop of ``planning.loop``; a previous plan that is still
+the one attempt loop of ``planning.attempts``; a previous plan that is still
 valid on the current full state is kept without calling the planner.
 
 The session starts no process itself: the caller passes the planner as a
@@ -49,9 +49,12 @@ from relevance_plan.pddl.formulas import Formula
 from relevance_plan.pddl.model import Domain, Problem, pinned_objects
 from relevance_plan.pddl.plans import Plan
 from relevance_plan.pddl.writer import write_pruned_problem
-from relevance_plan.planning.loop import PlanOptions, run_attempts, summarise
+from relevance_plan.planning.attempts import AttemptSetup, run_attempts
+from relevance_plan.planning.methods import Method
+from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.planners.base import RunOutcome
 from relevance_plan.planning.results import PlanStatus
+from relevance_plan.planning.summary import RunFacts, summarise
 from relevance_plan.planning.validate import validate_plan
 from relevance_plan.relevance.analysis import ConstraintRule, GoalAnalysis, GoalReads, single_valued_predicates
 from relevance_plan.relevance.closure import ConstraintClosure, constraint_rules
@@ -573,7 +576,7 @@ class Session:
         scorer = None
         if self.selection is None and self.scores.sufficient:
             self._determine()  # an idle session holds no determination yet
-        if options.method != "pure":
+        if options.method.prunes:
             if self.selection is None:
                 return PlanReport(PlanStatus.INSUFFICIENT_CUES, message=self.scores.result().insufficiency)
             scores = self.scores.result()
@@ -586,17 +589,10 @@ class Session:
         def call_planner(objects: Selection | None, limit: float | None) -> RunOutcome:
             return self.run_planner(problem.text if objects is None else objects.text, limit)
 
-        attempts, widening = run_attempts(task, selection, call_planner, options, started=started, model=self.model)
-        result = summarise(
-            task,
-            options,
-            attempts,
-            started,
-            relevance_time + widening,
-            selection,
-            scorer=scorer,
-            planner=attempts[0].outcome.planner if attempts else options.planner,
-        )
+        attempts, widening = run_attempts(AttemptSetup(task, call_planner, options, started, self.model), selection)
+        planner = attempts[0].outcome.planner if attempts else options.planner
+        facts = RunFacts(task, started, relevance_time + widening, selection, planner=planner, scorer=scorer)
+        result = summarise(facts, options, attempts)
         if result.status is PlanStatus.SOLVED:
             self._planned(result.plan)
         return PlanReport(result.status, result.plan, "planner", result.message, result)
@@ -636,7 +632,7 @@ def _live_scores(
 ) -> LiveModelScores | LiveGoalScores | FullScores:
     """The live form of the scorer the options choose (the knowledge model's, the goal's), else
     the scorer re-run in full on every change."""
-    scorer = choose_scorer("relevance", model, options.scorer)
+    scorer = choose_scorer(Method.RELEVANCE.value, model, options.scorer)
     # placing unknown kinds (--place-kinds) is the scorer's own step: scored in full on each change
     if scorer == "model" and model is not None and not options.place_kinds:
         return LiveModelScores(scene, model, options)
