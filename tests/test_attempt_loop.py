@@ -14,7 +14,7 @@ from relevance_plan.pddl.plans import Plan
 from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.results import PlanStatus
 from relevance_plan.planning.run import plan_task
-from relevance_plan.planning.validate import ValidationStatus, validate_with_up
+from relevance_plan.planning.validation import ValidationStatus, validate_with_up
 from relevance_plan.relevance.prune import Thresholds
 
 
@@ -215,7 +215,7 @@ def test_every_status_enum_spells_its_values_one_way():
     from relevance_plan.exitcodes import PLAN_STATUS_EXIT
     from relevance_plan.planning.planners.base import PlannerStatus
     from relevance_plan.planning.results import AttemptStatus
-    from relevance_plan.planning.validate import ValidationStatus
+    from relevance_plan.planning.validation import ValidationStatus
 
     values = [status.value for enum in (PlanStatus, AttemptStatus, PlannerStatus, ValidationStatus) for status in enum]
     assert all(value == _spelling(value) for value in values), values
@@ -232,7 +232,7 @@ def test_plan_json_spells_every_status_one_way(tmp_path, coffee_domain_path):
 
     from relevance_plan.planning.planners.base import PlannerStatus
     from relevance_plan.planning.results import AttemptStatus
-    from relevance_plan.planning.validate import ValidationStatus
+    from relevance_plan.planning.validation import ValidationStatus
 
     coffee = tmp_path / "coffee.pddl"
     coffee.write_text(coffee_problem(extra_plates=2))

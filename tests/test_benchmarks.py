@@ -148,7 +148,7 @@ def test_bench_linked_plans_a_cell_with_pure_and_the_tool_and_checks_each_plan_o
 
     from support import REPO
 
-    from relevance_plan.supervision.val import find_validate
+    from relevance_plan.planning.validation.val_program import find_validate
 
     raw = tmp_path / "raw.jsonl"
     command = [sys.executable, str(REPO / "benchmarks" / "bench_linked.py"), "--sets", "blocksworld"]

@@ -13,7 +13,7 @@ from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.results import PlanStatus
 from relevance_plan.planning.run import plan_task
-from relevance_plan.planning.validate import ValidationStatus, validate_plan
+from relevance_plan.planning.validation import ValidationStatus, validate_plan
 from relevance_plan.relevance.exploration import relaxed_reachability
 from relevance_plan.relevance.prune import PruneSettings, Widening, prune_with_scores, widen
 from relevance_plan.relevance.scorers import SCORERS, ScoreRequest

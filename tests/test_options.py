@@ -189,7 +189,7 @@ def test_validators_as_a_comma_list_or_repeated(tmp_path):
 
 @pytest.mark.planner
 def test_plan_with_builtin_and_val_as_validation_md_writes_it(tmp_path):
-    from relevance_plan.planning.validate import val_available
+    from relevance_plan.planning.validation import val_available
 
     if not val_available():
         pytest.skip("VAL is not installed")

@@ -18,7 +18,7 @@ from relevance_plan.pddl.plans import read_plan
 from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.planners.registry import make_planner
 from relevance_plan.planning.results import PlanStatus
-from relevance_plan.planning.validate import validate_plan
+from relevance_plan.planning.validation import validate_plan
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
 from relevance_plan.relevance.task import PlanningTask
 from relevance_plan.session import TRIGGERS, Session

@@ -25,7 +25,7 @@ from relevance_plan.planning.planners.lpg import classify, lpg_binary, read_lpg_
 from relevance_plan.planning.planners.registry import make_planner
 from relevance_plan.planning.results import PlanStatus
 from relevance_plan.planning.run import plan_task
-from relevance_plan.planning.validate import ValidationStatus, validate_builtin, validate_with_up
+from relevance_plan.planning.validation import ValidationStatus, validate_builtin, validate_with_up
 from relevance_plan.supervision.process import ProcessRun
 
 JAVA_MISSING = "Java runtime not found: apt-get install default-jre-headless"

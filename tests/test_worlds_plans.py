@@ -20,8 +20,8 @@ from relevance_plan.generators.kitchen_variants import generate_variant_problem
 from relevance_plan.generators.sized import NEW_WORLDS, generate_sized_problem
 from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.pddl.plans import Plan, PlanStep, read_plan
-from relevance_plan.pddl.simulator import simulate
 from relevance_plan.pddl.writer import write_pruned_problem
+from relevance_plan.planning.validation import simulate
 
 pytestmark = pytest.mark.planner
 

@@ -123,7 +123,7 @@ def config_fingerprint(options: PlanOptions, domain_path: str | None, problem_pa
     MODEL (a model retrained at the same path must not reuse rows), and for
     the oracle the sha256 of the sidecar (its ground truth).
     """
-    from relevance_plan.planning.validate import default_validators
+    from relevance_plan.planning.validation import default_validators
 
     unlisted = set(PLAN_OPTION_FIELDS) - set(FINGERPRINT_RULES)
     if unlisted:

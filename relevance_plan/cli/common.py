@@ -30,7 +30,7 @@ from relevance_plan.limits import DEFAULT_TIMEOUT
 from relevance_plan.planning.options import METHODS, Method, PlanOptions
 from relevance_plan.planning.planners.registry import DEFAULT_PLANNER, DEFAULT_PLANNER_CONFIG
 from relevance_plan.planning.results import PlanResult
-from relevance_plan.planning.validate import VALIDATOR_CHOICES
+from relevance_plan.planning.validation import VALIDATOR_CHOICES
 from relevance_plan.relevance.prune import DEFAULT_TAU, Thresholds
 from relevance_plan.relevance.scorers import SCORERS
 from relevance_plan.relevance.setup import ScoringOptions, check_scorer, given_cues
@@ -367,7 +367,7 @@ def split_planner_args(text: str | None) -> tuple[str, ...]:
 
 def require_installed_validators(names) -> None:
     """A validator asked for by name must be able to run; found before planning, not after."""
-    from relevance_plan.planning.validate import val_available
+    from relevance_plan.planning.validation import val_available
 
     if "val" in (names or ()) and not val_available():
         raise ValidatorUnavailableError(

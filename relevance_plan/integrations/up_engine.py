@@ -72,7 +72,7 @@ from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome
 from relevance_plan.planning.planners.up.adapter import UP_STATUS, up_status_name
 from relevance_plan.planning.results import Attempt, PlanStatus
 from relevance_plan.planning.summary import RunFacts, summarise
-from relevance_plan.planning.validate import validate_plan
+from relevance_plan.planning.validation import validate_plan
 from relevance_plan.relevance.knowledge import KnowledgeModel, load_knowledge_model
 from relevance_plan.relevance.prune import DEFAULT_TAU, Selection, Thresholds, Widening, widen
 from relevance_plan.relevance.scorers import SCORERS

@@ -46,7 +46,7 @@ from collections import defaultdict
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 
-from relevance_plan.errors import SimulationTimeout, counted
+from relevance_plan.errors import SimulationTimeout
 from relevance_plan.pddl import formulas as f
 from relevance_plan.pddl.formatter import format_formula, format_number, format_step
 from relevance_plan.pddl.model import (
@@ -58,7 +58,7 @@ from relevance_plan.pddl.model import (
     TimedLiteral,
     all_objects,
 )
-from relevance_plan.pddl.plans import Plan, PlanStep
+from relevance_plan.pddl.plans import PlanStep
 
 DURATION_TOLERANCE = 1e-3  # planners print durations with three decimals
 SAME_INSTANT = 1e-9
@@ -72,17 +72,6 @@ class StepFailure(Exception):
         super().__init__(message)
         self.message = message
         self.step = step
-
-
-@dataclass(frozen=True)
-class Simulation:
-    valid: bool
-    message: str
-    failed_step: int | None = None
-    cost: float | None = None  # the total-cost fluent at the end, when the problem has one
-    makespan: float | None = None  # timed plans
-    metric: float | None = None  # the value of the problem's :metric at the end, when it can be evaluated
-    metric_note: str = ""  # why the metric has no value (preferences, a value never set)
 
 
 @dataclass
@@ -674,47 +663,20 @@ def cost_functions(domain: Domain, problem: Problem) -> frozenset[str]:
     return frozenset({"total-cost"} | ((increased & in_metric) - other))
 
 
+# --------------------------------------------------------------------------- running a plan
+
+
+def run_plan(simulator: Simulator, steps: Sequence[PlanStep]) -> tuple[State, float | None]:
+    """Run ``steps`` from the problem's initial state: the final state and, for a timed plan
+    (steps with start times, a temporal domain or timed literals: PDDL 2.1 semantics), its
+    makespan (None for a sequential plan).  :class:`StepFailure` names the step that fails."""
+    problem = simulator.problem
+    if any(step.time is not None for step in steps) or simulator.domain.temporal or problem.timed_literals:
+        return _run_timed(simulator, steps)
+    return _run_sequential(simulator, steps), None
+
+
 # --------------------------------------------------------------------------- sequential plans
-
-
-def simulate(
-    domain: Domain, problem: Problem, plan: Plan | Sequence[PlanStep], deadline: float | None = None
-) -> Simulation:
-    """Run ``plan`` on ``problem``; a timed plan (steps with start times) gets PDDL 2.1 semantics."""
-    steps = plan.steps if isinstance(plan, Plan) else tuple(plan)
-    simulator = Simulator(domain, problem, deadline)
-    try:
-        if any(step.time is not None for step in steps) or domain.temporal or problem.timed_literals:
-            state, makespan = _run_timed(simulator, steps)
-        else:
-            state, makespan = _run_sequential(simulator, steps), None
-        if not simulator.holds(problem.goal, state, {}):
-            unmet = why_false(simulator, problem.goal, state, {})
-            raise StepFailure(f"the goal is not satisfied at the end of the plan: {unmet}")
-    except StepFailure as failure:
-        return Simulation(False, failure.message, failure.step)
-    cost = state.values.get(("total-cost",))
-    if cost is None and "total-cost" in domain.functions:
-        cost = 0.0
-    metric, note = _metric(simulator, state, len(steps) if makespan is None else makespan)
-    what = counted(len(steps), "step") + (f", makespan {makespan:g}" if makespan is not None else "")
-    return Simulation(True, f"{what}, goal reached", cost=cost, makespan=makespan, metric=metric, metric_note=note)
-
-
-def _metric(simulator: Simulator, state: State, total_time: float) -> tuple[float | None, str]:
-    """The problem's metric in the final state, or None and why not.  ``total-time`` is the
-    makespan of a timed plan and, as in VAL, the number of steps of a sequential one."""
-    metric = simulator.problem.metric
-    if metric is None:
-        return None, ""
-    nodes = list(f.walk(metric.expression))
-    if any(isinstance(node, f.Fluent) and node.function == "is-violated" for node in nodes):
-        return None, "the metric counts violated preferences, which are not evaluated"
-    final = State(state.facts, {**state.values, ("total-time",): float(total_time)})
-    try:
-        return simulator.value(metric.expression, final, {}), ""
-    except StepFailure as failure:
-        return None, f"the metric cannot be evaluated: {failure.message}"
 
 
 def _run_sequential(simulator: Simulator, steps: Sequence[PlanStep]) -> State:

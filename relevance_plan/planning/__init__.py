@@ -12,8 +12,9 @@
   chain of statuses from a planner's run to the problem's verdict;
 - ``race``: the full problem planned beside the pruned attempts, first valid
   answer wins;
-- ``validate``: the plan validators (the builtin simulator, VAL,
-  unified-planning's) that check a plan on the original problem;
+- ``validation/``: the plan validators (the builtin simulator's entry point,
+  VAL's adapter, unified-planning's) that check a plan on the original
+  problem, and their registry;
 - ``planners/``: the planner adapters behind one protocol, the registry the
   CLI reads, the choice of a planner by the problem's features, and
   ``supply``, where a run obtains its planner once.

@@ -28,7 +28,7 @@ from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome
 from relevance_plan.planning.race import Race
 from relevance_plan.planning.results import Attempt, AttemptStatus, RunRecord
-from relevance_plan.planning.validate import ValidationResult, ValidationStatus, validate_plan
+from relevance_plan.planning.validation import ValidationResult, ValidationStatus, validate_plan
 from relevance_plan.relevance.knowledge import KnowledgeModel
 from relevance_plan.relevance.prune import Selection, Widening, next_witnesses, widen
 from relevance_plan.relevance.task import PlanningTask

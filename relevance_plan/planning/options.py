@@ -17,7 +17,7 @@ from relevance_plan.errors import UsageError
 from relevance_plan.limits import DEFAULT_TIMEOUT, MAX_TIMEOUT
 from relevance_plan.planning.methods import METHODS, Method
 from relevance_plan.planning.planners.supply import DEFAULT_PLANNER, DEFAULT_PLANNER_CONFIG, PlannerRequest
-from relevance_plan.planning.validate import check_validators
+from relevance_plan.planning.validation import check_validators
 from relevance_plan.relevance.prune import Thresholds
 from relevance_plan.relevance.setup import ScoringOptions
 

@@ -23,7 +23,7 @@ from relevance_plan.pddl.plans import Plan, format_plan, format_plan_step
 from relevance_plan.planning.methods import Method
 from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome
 from relevance_plan.planning.planners.registry import DEFAULT_PLANNER
-from relevance_plan.planning.validate import ValidationResult, ValidationStatus
+from relevance_plan.planning.validation import ValidationResult, ValidationStatus
 from relevance_plan.progress import ProgressCallback, ProgressEvent
 from relevance_plan.relevance.prune import Selection, Thresholds
 from relevance_plan.relevance.text.matching import WordMatch

@@ -46,7 +46,7 @@ from relevance_plan.planning.planners.supply import PlannerSupply, SuppliedPlann
 from relevance_plan.planning.race import Race
 from relevance_plan.planning.results import Attempt, PlanResult, PlanStatus, RunRecord
 from relevance_plan.planning.summary import RunFacts, summarise
-from relevance_plan.planning.validate import ValidationResult, validate_unread
+from relevance_plan.planning.validation import ValidationResult, validate_unread
 from relevance_plan.progress import ProgressCallback
 from relevance_plan.relevance.decisions import kept_summary
 from relevance_plan.relevance.knowledge import KnowledgeModel

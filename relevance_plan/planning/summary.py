@@ -23,7 +23,7 @@ from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.planners.base import PlannerStatus
 from relevance_plan.planning.planners.supply import DEFAULT_PLANNER
 from relevance_plan.planning.results import PLANNER_TO_PLAN_STATUS, Attempt, PlanResult, PlanStatus, kept_count
-from relevance_plan.planning.validate import ValidationResult, ValidationStatus
+from relevance_plan.planning.validation import ValidationResult, ValidationStatus
 from relevance_plan.relevance.prune import Selection
 from relevance_plan.relevance.task import PlanningTask
 

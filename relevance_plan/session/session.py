@@ -55,7 +55,7 @@ from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.planners.base import RunOutcome
 from relevance_plan.planning.results import PlanStatus
 from relevance_plan.planning.summary import RunFacts, summarise
-from relevance_plan.planning.validate import validate_plan
+from relevance_plan.planning.validation import validate_plan
 from relevance_plan.relevance.analysis import ConstraintRule, GoalAnalysis, GoalReads, single_valued_predicates
 from relevance_plan.relevance.closure import ConstraintClosure, constraint_rules
 from relevance_plan.relevance.knowledge import KnowledgeModel
