@@ -9,7 +9,7 @@ from support import planner_script
 
 from relevance_plan.io import load_task
 from relevance_plan.pddl.plans import Plan
-from relevance_plan.planning.attempts import MIN_BUDGET, AttemptSetup, Budgets, run_attempts
+from relevance_plan.planning.attempts import MIN_BUDGET, AttemptLoop, Budgets, run_attempts
 from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome
 from relevance_plan.planning.planners.registry import make_planner
@@ -70,7 +70,7 @@ def test_pruned_attempts_get_growing_budgets_and_the_full_problem_the_rest(coffe
         return OUT_OF_TIME
 
     options = PlanOptions(timeout=timeout, thresholds=STRICT)
-    attempts, _ = run_attempts(AttemptSetup(task, call_planner, options, time.perf_counter()), selection, Budgets(1))
+    attempts, _ = run_attempts(AttemptLoop(task, call_planner, options, time.perf_counter()), selection, Budgets(1))
     pruned = [limit for full, limit in calls if not full]
     assert len(pruned) >= 2 and calls[-1][0], calls  # widened to the full problem
     assert pruned == [2.0**n for n in range(len(pruned))]
@@ -87,7 +87,7 @@ def test_without_budgets_a_pruned_attempt_gets_its_share(coffee_files):
         return OUT_OF_TIME
 
     options = PlanOptions(timeout=60, thresholds=STRICT)
-    run_attempts(AttemptSetup(task, call_planner, options, time.perf_counter()), selection)
+    run_attempts(AttemptLoop(task, call_planner, options, time.perf_counter()), selection)
     assert limits[0] > 20  # half of the time left: a planner that proves unsolvability ends early by itself
 
 

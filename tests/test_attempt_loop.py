@@ -274,7 +274,7 @@ def test_plan_json_spells_every_status_one_way(tmp_path, coffee_domain_path):
 
 def test_a_failed_first_attempt_costs_no_more_than_its_share(coffee_files):
     # every pruned attempt fails: each may use only its share of the time left, the full problem the rest
-    from relevance_plan.planning.attempts import AttemptSetup, run_attempts
+    from relevance_plan.planning.attempts import AttemptLoop, run_attempts
     from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome
     from relevance_plan.relevance.setup import ScoringOptions, score_problem
     from relevance_plan.relevance.task import PlanningTask
@@ -291,7 +291,7 @@ def test_a_failed_first_attempt_costs_no_more_than_its_share(coffee_files):
         return RunOutcome(status=status, exit_code=12, plan=Plan(()), plan_cost=None, wall_time=0.01, planner="fake")
 
     options = PlanOptions(timeout=60, first_share=0.25)
-    attempts, _ = run_attempts(AttemptSetup(task, call_planner, options, time.perf_counter()), selection)
+    attempts, _ = run_attempts(AttemptLoop(task, call_planner, options, time.perf_counter()), selection)
     assert len(attempts) >= 2 and calls[-1][0]  # widened until the full problem was planned
     assert not calls[0][0] and calls[0][1] <= 60 * 0.25 + 0.01
     for full, limit in calls:

@@ -14,7 +14,7 @@ from support import COFFEE_DOMAIN, coffee_problem, invoke, one_line_error, run, 
 from relevance_plan.cli import main
 from relevance_plan.cli.choices import CheckedName, NamedChoice, NamedChoices
 from relevance_plan.cli.common import handle_errors
-from relevance_plan.cli.numbers import Number
+from relevance_plan.cli.numbers import NumberOption
 from relevance_plan.exitcodes import ExitCode
 
 
@@ -36,7 +36,7 @@ def _numeric_options() -> list[tuple[str, click.Parameter]]:
         (name, param)
         for name, command in _commands().items()
         for param in command.params
-        if isinstance(param.type, (click.types.IntParamType, click.types.FloatParamType, Number))
+        if isinstance(param.type, (click.types.IntParamType, click.types.FloatParamType, NumberOption))
     ]
 
 
@@ -64,7 +64,7 @@ def arguments(tmp_path):
 def test_every_numeric_option_is_checked_in_one_place():
     found = _numeric_options()
     assert {name for name, _ in found} >= {"plan", "learn", "compare", "report", "generate", "demo", "sweep"}
-    unchecked = [f"{name} {param.opts[0]}" for name, param in found if not isinstance(param.type, Number)]
+    unchecked = [f"{name} {param.opts[0]}" for name, param in found if not isinstance(param.type, NumberOption)]
     assert not unchecked
 
 

@@ -66,7 +66,7 @@ from relevance_plan.errors import RelevancePlanError, UsageError, counted
 from relevance_plan.pddl.model import Domain
 from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.pddl.plans import Plan, PlanStep
-from relevance_plan.planning.attempts import AttemptSetup, run_attempts
+from relevance_plan.planning.attempts import AttemptLoop, run_attempts
 from relevance_plan.planning.options import Method, PlanOptions
 from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome
 from relevance_plan.planning.planners.up.adapter import UP_STATUS, up_status_name
@@ -233,8 +233,8 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin, AnytimePlannerMixin):
         else:
             selection = stage.scoring.first_selection(options.narrows_first)
             relevance_time = time.perf_counter() - started
-            setup = AttemptSetup(stage.scoring.task, inner, options, started, stage.scoring.knowledge_model)
-            attempts, widening_time = run_attempts(setup, selection)
+            loop = AttemptLoop(stage.scoring.task, inner, options, started, stage.scoring.knowledge_model)
+            attempts, widening_time = run_attempts(loop, selection)
             relevance_time += widening_time
         for attempt in attempts:
             messages.append(describe_attempt(attempt, total))

@@ -3,7 +3,7 @@
 :func:`run_attempts` is the loop itself.  Every front end calls it: ``run``'s
 :func:`~relevance_plan.planning.run.plan_task`, the live session and the
 unified-planning engine.  It does not know how a planner is called: the
-front end's :class:`AttemptSetup` carries a function that runs the planner on
+front end's :class:`AttemptLoop` carries a function that runs the planner on
 one object set (``plan_task`` writes the pruned file and calls its planner;
 the unified-planning engine restricts a UP problem and calls its inner
 engine).  When a pruned problem turns out unsolvable, gives an invalid plan
@@ -78,7 +78,7 @@ PlannerCall = Callable[["Selection | None", "float | None"], RunOutcome]
 
 
 @dataclass(frozen=True)
-class AttemptSetup:
+class AttemptLoop:
     """What every attempt of one :func:`run_attempts` reads.
 
     The deadline is ``started + options.timeout`` (``started`` on ``time.perf_counter()``).
@@ -138,7 +138,7 @@ class _AttemptState:
 
 
 def run_attempts(
-    loop: AttemptSetup, selection: Selection | None, budgets: Budgets | None = None
+    loop: AttemptLoop, selection: Selection | None, budgets: Budgets | None = None
 ) -> tuple[list[Attempt], float]:
     """Plan on ``selection`` (None: the full problem), widening after each failure.
 
@@ -207,7 +207,7 @@ def _ran_out_of_budget(attempts: Sequence[Attempt]) -> bool:
     return bool(attempts) and attempts[-1].selection is not None and attempts[-1].status is AttemptStatus.OUT_OF_TIME
 
 
-def _time_limit(loop: AttemptSetup, pruned: Selection | None, state: _AttemptState) -> float | None:
+def _time_limit(loop: AttemptLoop, pruned: Selection | None, state: _AttemptState) -> float | None:
     """The attempt's time limit: a share of what is left for a pruned attempt that may widen (all of
     it beside a race), all of it for the last; a pruned attempt's budget when it has one."""
     final = pruned is None or not loop.options.widen
@@ -223,7 +223,7 @@ def _time_limit(loop: AttemptSetup, pruned: Selection | None, state: _AttemptSta
     return limit
 
 
-def _attempt(loop: AttemptSetup, number: int, pruned: Selection | None, state: _AttemptState) -> Attempt:
+def _attempt(loop: AttemptLoop, number: int, pruned: Selection | None, state: _AttemptState) -> Attempt:
     """One attempt on ``pruned`` (None: the full problem), its plan validated on the original."""
     kept = loop.total if pruned is None else len(pruned.kept)
     limit = _time_limit(loop, pruned, state)

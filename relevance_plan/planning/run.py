@@ -5,7 +5,7 @@ planner, score and choose the first selection (:func:`_first_selection`),
 run the attempts (``attempts.run_attempts``), beside a race of the full
 problem where the options ask for one (:func:`_race_and_plan`), and
 summarise (``summary.summarise``).  What its steps share is one frozen value,
-:class:`_Run`.
+:class:`_TaskRun`.
 
 The run knows no planner by name.  It obtains its planner once, from
 ``planners.supply``: chosen (``auto`` by the problem's features), checked
@@ -32,7 +32,7 @@ from relevance_plan.errors import OutOfTimeError, UnsupportedFeatureError, Usage
 from relevance_plan.io import load_domain, load_problem, scratch_directory, write_text_atomic
 from relevance_plan.pddl.sexpr import collection_paused
 from relevance_plan.planning.attempts import (
-    AttemptSetup,
+    AttemptLoop,
     Budgets,
     full_attempt,
     race_decides,
@@ -81,7 +81,7 @@ def plan_task(
 
 
 @dataclass(frozen=True)
-class _Run:
+class _TaskRun:
     """What the steps of one :func:`plan_task` share once the problem is read and its planner prepared."""
 
     task: PlanningTask
@@ -171,11 +171,11 @@ def _plan_task(
         # the plan is checked once the planner has ended: import the checker now, while it runs
         import relevance_plan.pddl.simulator  # noqa: F401
     with scratch_directory() as scratch:
-        run = _Run(task, domain_path, problem_path, options, planner, planner.began(started), scratch, record)
+        run = _TaskRun(task, domain_path, problem_path, options, planner, planner.began(started), scratch, record)
         return _race_and_plan(run)
 
 
-def _race_and_plan(run: _Run) -> PlanResult:
+def _race_and_plan(run: _TaskRun) -> PlanResult:
     """:func:`_prune_and_plan`, with the full problem planned beside it when the run races."""
     own_runs = CancelScope()
     if not run.races:
@@ -197,7 +197,7 @@ def _race_and_plan(run: _Run) -> PlanResult:
         run.record.ended_beside(race.result(), race.cancelled)
 
 
-def _prune_and_plan(run: _Run, race: Race[Attempt] | None) -> PlanResult:
+def _prune_and_plan(run: _TaskRun, race: Race[Attempt] | None) -> PlanResult:
     """Score, choose the first selection, and run the attempts on it."""
     first = _first_selection(run)
     if isinstance(first, PlanResult):  # the run ended before any attempt
@@ -206,8 +206,8 @@ def _prune_and_plan(run: _Run, race: Race[Attempt] | None) -> PlanResult:
         return _raced(first, race) if race is not None and first.status is PlanStatus.OUT_OF_TIME else first
     if race is not None and (first.selection is None or not first.selection.removed):
         run.planner.release()  # the full problem is all there is to plan, and the race plans it
-    setup = AttemptSetup(run.task, run.call_planner, run.options, run.started, first.model, run.record, race)
-    attempts, widening_time = run_attempts(setup, first.selection, _budgets(run, first))
+    loop = AttemptLoop(run.task, run.call_planner, run.options, run.started, first.model, run.record, race)
+    attempts, widening_time = run_attempts(loop, first.selection, _budgets(run, first))
     deciding = [a for a in attempts if not a.stopped]
     facts = RunFacts(
         run.task,
@@ -224,7 +224,7 @@ def _prune_and_plan(run: _Run, race: Race[Attempt] | None) -> PlanResult:
     return result if race is None else _raced(result, race)
 
 
-def _first_selection(run: _Run) -> _FirstSelection | PlanResult:
+def _first_selection(run: _TaskRun) -> _FirstSelection | PlanResult:
     """The scores and the first selection; instead, the result when the run ends here (out of time,
     insufficient cues)."""
     scoring_started = time.perf_counter()
@@ -266,7 +266,7 @@ def _first_selection(run: _Run) -> _FirstSelection | PlanResult:
     return first
 
 
-def _proved_unsolvable(run: _Run) -> PlanResult | None:
+def _proved_unsolvable(run: _TaskRun) -> PlanResult | None:
     """The unsolvable result, without a planner, of a problem whose goal needs more witnesses than
     it has (``relevance.witness_proof``: a proof, not a guess); None for others, and for the
     baseline methods (they plan as the paper's did)."""
@@ -285,7 +285,7 @@ def _proved_unsolvable(run: _Run) -> PlanResult | None:
     return replace(result, objects_kept=run.total)
 
 
-def _budgets(run: _Run, first: _FirstSelection) -> Budgets | None:
+def _budgets(run: _TaskRun, first: _FirstSelection) -> Budgets | None:
     """The pruned attempts' budgets, for a planner that cannot prove a pruned problem unsolvable."""
     selection = first.selection
     if selection is None or not selection.removed or not run.options.widen or run.planner.proves_unsolvable:
@@ -317,7 +317,7 @@ def _raced(result: PlanResult, race: Race[Attempt]) -> PlanResult:
     return replace(result, attempts=(*attempts, beside.as_stopped() if race.cancelled else beside))
 
 
-def _score(run: _Run) -> tuple[Scoring | None, str]:
+def _score(run: _TaskRun) -> tuple[Scoring | None, str]:
     """The objects' scores (None for 'pure'); None and the reason when the analysis does not take the input."""
     if not run.options.method.prunes:
         return None, ""

@@ -49,7 +49,7 @@ from relevance_plan.pddl.formulas import Formula
 from relevance_plan.pddl.model import Domain, Problem, pinned_objects
 from relevance_plan.pddl.plans import Plan
 from relevance_plan.pddl.writer import write_pruned_problem
-from relevance_plan.planning.attempts import AttemptSetup, run_attempts
+from relevance_plan.planning.attempts import AttemptLoop, run_attempts
 from relevance_plan.planning.methods import Method
 from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.planners.base import RunOutcome
@@ -589,7 +589,7 @@ class Session:
         def call_planner(objects: Selection | None, limit: float | None) -> RunOutcome:
             return self.run_planner(problem.text if objects is None else objects.text, limit)
 
-        attempts, widening = run_attempts(AttemptSetup(task, call_planner, options, started, self.model), selection)
+        attempts, widening = run_attempts(AttemptLoop(task, call_planner, options, started, self.model), selection)
         planner = attempts[0].outcome.planner if attempts else options.planner
         facts = RunFacts(task, started, relevance_time + widening, selection, planner=planner, scorer=scorer)
         result = summarise(facts, options, attempts)

@@ -22,7 +22,7 @@ from relevance_plan.planning.validation.verdicts import ValidationResult, Valida
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:
-    from relevance_plan.pddl.simulator import Simulator, State
+    from relevance_plan.pddl.simulator import Simulator, WorldState
 
 
 def validate_builtin(domain: Domain, problem: Problem, plan: Plan, deadline: float | None = None) -> ValidationResult:
@@ -91,10 +91,10 @@ def simulate(
     return Simulation(True, f"{what}, goal reached", cost=cost, makespan=makespan, metric=metric, metric_note=note)
 
 
-def _metric(simulator: Simulator, state: State, total_time: float) -> tuple[float | None, str]:
+def _metric(simulator: Simulator, state: WorldState, total_time: float) -> tuple[float | None, str]:
     """The problem's metric in the final state, or None and why not.  ``total-time`` is the
     makespan of a timed plan and, as in VAL, the number of steps of a sequential one."""
-    from relevance_plan.pddl.simulator import State, StepFailure
+    from relevance_plan.pddl.simulator import StepFailure, WorldState
 
     metric = simulator.problem.metric
     if metric is None:
@@ -102,7 +102,7 @@ def _metric(simulator: Simulator, state: State, total_time: float) -> tuple[floa
     nodes = list(walk(metric.expression))
     if any(isinstance(node, Fluent) and node.function == "is-violated" for node in nodes):
         return None, "the metric counts violated preferences, which are not evaluated"
-    final = State(state.facts, {**state.values, ("total-time",): float(total_time)})
+    final = WorldState(state.facts, {**state.values, ("total-time",): float(total_time)})
     try:
         return simulator.value(metric.expression, final, {}), ""
     except StepFailure as failure:
