@@ -416,10 +416,10 @@ def test_an_engine_that_is_not_installed_names_the_extra():
 @pytest.mark.planner
 def test_compare_with_two_planners_resumes_and_reports_per_planner(tmp_path):
     pytest.importorskip("up_lpg")
-    from relevance_plan.generators.generate import generate_suite
+    from relevance_plan.generators import WORLDS, Settings
 
     suite = tmp_path / "coffee-simple"
-    generate_suite("coffee", "simple", 1, 5, suite, distractors=3)
+    WORLDS["coffee"].suite(1, 5, suite, Settings("simple", distractors=3))
     store = tmp_path / "results.sqlite"
     arguments = [
         "compare",

@@ -8,19 +8,19 @@ import random
 import pytest
 
 from relevance_plan.data import DOMAINS_DIR
-from relevance_plan.generators.sized import NEW_WORLDS, generate_sized_problem
+from relevance_plan.generators import WORLDS, Settings
 from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.relevance import exploration, repair
 from relevance_plan.relevance.exploration import relaxed_reachability
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
 from relevance_plan.relevance.task import PlanningTask
 
-WORLDS = ("logistics-manygoals", "logistics-manygoals-typed", "miconic-manygoals", "miconic-manygoals-typed")
+CASES = ("logistics-manygoals", "logistics-manygoals-typed", "miconic-manygoals", "miconic-manygoals-typed")
 
 
 def task_of(world: str, seed: int, size: int) -> tuple[PlanningTask, dict]:
-    problem = generate_sized_problem(world, seed, 1, size)
-    domain = read_domain((DOMAINS_DIR / NEW_WORLDS[world].domain / "domain.pddl").read_text())
+    problem = WORLDS[world].problem(seed, 1, Settings(size=size))
+    domain = read_domain(WORLDS[world].domain_path.read_text())
     return PlanningTask(domain, read_problem(problem.pddl_text, domain)), problem.sidecar
 
 
@@ -54,7 +54,7 @@ def holds_relaxed(task: PlanningTask, check: exploration.Reachability) -> bool:
     return all(atom in facts for atom in goal)
 
 
-@pytest.mark.parametrize("world", WORLDS)
+@pytest.mark.parametrize("world", CASES)
 def test_the_shared_class_is_found_and_decides_as_the_plain_check(monkeypatch, world):
     task, sidecar = task_of(world, 4, 240)
     shared = exploration.relaxed_task(task).shared

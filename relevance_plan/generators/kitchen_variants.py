@@ -58,7 +58,7 @@ class KitchenVariant:
     kind: str  # TEMPORAL or NUMERIC
 
 
-KITCHEN_VARIANTS: dict[str, KitchenVariant] = {
+_VARIANTS: dict[str, KitchenVariant] = {
     variant.name: variant
     for variant in (
         KitchenVariant("coffee-temporal", "coffee", TEMPORAL),
@@ -68,10 +68,19 @@ KITCHEN_VARIANTS: dict[str, KitchenVariant] = {
 }
 
 
+# The variants this module makes (generators.worlds registers them).
+VARIANT_NAMES = tuple(_VARIANTS)
+
+
 def _variant(world: object) -> KitchenVariant:
-    if world not in KITCHEN_VARIANTS:
-        raise UsageError(f"unknown kitchen variant {world!r}: choose one of {', '.join(KITCHEN_VARIANTS)}")
-    return KITCHEN_VARIANTS[world]
+    if world not in _VARIANTS:
+        raise UsageError(f"unknown kitchen variant {world!r}: choose one of {', '.join(_VARIANTS)}")
+    return _VARIANTS[world]
+
+
+def variant_base(world: str) -> str:
+    """The kitchen world whose scenes the variant ``world`` uses."""
+    return _variant(world).base
 
 
 def variant_rng(seed: int, world: str, difficulty: str, index: int) -> random.Random:
