@@ -341,25 +341,20 @@ def generate_suite(
     ``InputFileError`` when the directory cannot be written."""
     check_suite_arguments(world, difficulty, count, seed, distractors)
     make = functools.partial(generate_problem, world, difficulty, seed, distractors=distractors)
-    return write_kitchen_suite(
-        world, difficulty, GENERATOR_VERSION, make, count, seed, distractors, out_dir, progress, force
-    )
+    manifest = suite_manifest(GENERATOR_VERSION, world, difficulty, count, seed, distractors=distractors)
+    return write_kitchen_suite(manifest, make, out_dir, progress, force)
 
 
 def write_kitchen_suite(
-    world: str,
-    difficulty: str,
-    version: str,
+    manifest: dict[str, Any],
     make_problem: Callable[[int], GeneratedProblem],
-    count: int,
-    seed: int,
-    distractors: int | None,
     out_dir: Path,
     progress: ProgressCallback | None = None,
     force: bool = False,
 ) -> list[Path]:
-    """A suite of a kitchen world or variant (``write_suite``'s layout); problem ``i`` is ``make_problem(i)``."""
-    manifest = suite_manifest(version, world, difficulty, count, seed, distractors=distractors)
+    """A suite of a kitchen world or variant (``write_suite``'s layout) of the world, difficulty and
+    count ``manifest`` names (``suite_manifest``); problem ``i`` is ``make_problem(i)``."""
+    world, difficulty, count = manifest["world"], manifest["difficulty"], manifest["count"]
     names = [problem_name(world, difficulty, index) for index in range(1, count + 1)]
     domain = DOMAINS_DIR / world / "domain.pddl"
     return write_suite(out_dir, domain, names, make_problem, manifest, "distractor_count", progress, force)

@@ -34,6 +34,7 @@ from relevance_plan.generators.generate import (
     check_suite_arguments,
     generate_problem,
     problem_name,
+    suite_manifest,
     write_kitchen_suite,
 )
 from relevance_plan.generators.problem import goal_objects, problem_goal, problem_init, problem_objects
@@ -155,6 +156,5 @@ def generate_variant_suite(
     variant = _variant(world)
     check_suite_arguments(variant.base, difficulty, count, seed, distractors)
     make = functools.partial(generate_variant_problem, world, difficulty, seed, distractors=distractors)
-    return write_kitchen_suite(
-        world, difficulty, VARIANT_VERSION, make, count, seed, distractors, out_dir, progress, force
-    )
+    manifest = suite_manifest(VARIANT_VERSION, world, difficulty, count, seed, distractors=distractors)
+    return write_kitchen_suite(manifest, make, out_dir, progress, force)
