@@ -208,3 +208,35 @@ def test_learns_old_time_limit_is_a_deprecated_name_for_timeout(tmp_path):
     code, _, stderr = run(*learn, "--time-limit", "5", "--timeout", "5")
     assert code == ExitCode.USAGE and "--timeout only" in one_line_error(stderr)
     assert not (tmp_path / "m.json").exists()
+
+
+# --------------------------------------------------------------------------- the method, one spelling
+
+
+def test_the_method_is_one_enum_spelled_one_way_everywhere():
+    import json
+
+    from relevance_plan.cli.common import method_option
+    from relevance_plan.errors import UsageError
+    from relevance_plan.planning.methods import METHODS, Method
+    from relevance_plan.planning.options import PlanOptions
+    from relevance_plan.planning.planners.fast_downward import head_start
+    from relevance_plan.planning.results import PlanResult, PlanStatus
+
+    options = PlanOptions(method="pure")
+    assert options.method is Method.PURE and not options.method.prunes and not options.narrows_first
+    assert PlanOptions().method is Method.RELEVANCE and PlanOptions().narrows_first
+    assert METHODS == tuple(method.value for method in Method) == ("relevance", "pure", "random", "oracle")
+    assert f"{Method.ORACLE}" == str(Method.ORACLE) == "oracle" == Method.ORACLE
+    result = PlanResult(method=options.method, status=PlanStatus.SOLVED)
+    assert json.loads(json.dumps(result.to_json()))["method"] == "pure"
+    assert head_start.DEFAULT_METHOD is Method.RELEVANCE
+    with pytest.raises(UsageError, match="unknown method 'puree' \\(choose from: relevance, pure, random, oracle\\)"):
+        PlanOptions(method="puree")
+
+    @method_option
+    def command(method):
+        pass
+
+    (choice,) = [param for param in command.__click_params__ if param.name == "method"]
+    assert tuple(choice.type.choices) == METHODS and choice.default == Method.RELEVANCE

@@ -24,9 +24,13 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
+import relevance_plan.generators.classic as classic
+import relevance_plan.generators.generate as generate
+import relevance_plan.generators.kitchen_variants as kitchen_variants
+import relevance_plan.generators.scenes as scenes
+import relevance_plan.generators.sized as sized
 from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.errors import UsageError
-from relevance_plan.generators import classic, generate, kitchen_variants, scenes, sized
 from relevance_plan.generators.generate import Generated
 from relevance_plan.progress import ProgressCallback
 
