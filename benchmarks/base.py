@@ -38,8 +38,9 @@ from relevance_plan.batch.jobs import Job
 from relevance_plan.batch.rows import result_row
 from relevance_plan.batch.store import ResultStore
 from relevance_plan.batch.suites import SuiteProblem, find_suite_problems
-from relevance_plan.planning.loop import PlanOptions, plan_task
+from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.results import PlanResult, PlanStatus
+from relevance_plan.planning.run import plan_task
 
 REPO = Path(__file__).resolve().parent.parent
 DOMAINS = REPO / "relevance_plan" / "data" / "domains"

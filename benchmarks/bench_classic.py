@@ -45,16 +45,19 @@ from base import (
     table_row,
 )
 
-from relevance_plan.generators.classic import BUILDERS, generate_classic_problem
-from relevance_plan.planning.loop import PlanOptions
+from relevance_plan.generators import CLASSIC, worlds_of
+from relevance_plan.generators.classic import generate_classic_problem
+from relevance_plan.planning.options import PlanOptions
 
 UNPADDED_SIZES = {"blocksworld": 40, "logistics": 60, "gripper": 60, "ferry": 60, "grid": 60, "miconic": 80}
 METHODS = ("pure", "relevance", "oracle")
+# The six classic domains, by their untyped worlds' names (--typed runs their typed forms).
+FAMILIES = tuple(world.name for world in worlds_of(CLASSIC) if world.base == world.name)
 
 
 def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    add_worlds_option(parser, BUILDERS, BUILDERS, f"classic worlds to run (default: all of {', '.join(BUILDERS)})")
+    add_worlds_option(parser, FAMILIES, FAMILIES, f"classic worlds to run (default: all of {', '.join(FAMILIES)})")
     parser.add_argument("--typed", action="store_true", help="use the typed variants")
     parser.add_argument("--unpadded", action="store_true", help="every movable object in the goal, small sizes")
     parser.add_argument("--count", type=int, default=1, help="problems per world (default: 1)")

@@ -25,7 +25,7 @@ from pathlib import Path
 from base import Store, add_store_option, run_method, show_time, speedup, table_header, table_row
 
 from relevance_plan.generators.padded import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
-from relevance_plan.planning.loop import PlanOptions
+from relevance_plan.planning.options import PlanOptions
 
 CASES = [
     ("blocksworld", BLOCKSWORLD_DOMAIN, lambda n: blocksworld_problem(n, seed=1, in_the_way=3), (100, 200, 300)),

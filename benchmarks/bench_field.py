@@ -373,8 +373,9 @@ def _domain_name(problem: Path) -> str:
 
 def _relevance(entry: SuiteProblem, timeout: float, scratch: Path, in_process: bool, tool: list[str], env: dict):
     if in_process:
-        from relevance_plan.planning.loop import PlanOptions, plan_task
+        from relevance_plan.planning.options import PlanOptions
         from relevance_plan.planning.results import PlanStatus
+        from relevance_plan.planning.run import plan_task
 
         laps = Laps()
         result = plan_task(entry.domain, entry.problem, PlanOptions(timeout=timeout, scorer="goal"))

@@ -92,7 +92,7 @@ def _add_objects(graph, dsg, rng: random.Random, objects: int, places: list) -> 
 
 
 def measure_graph(objects: int, seed: int, timeout: float, folder: Path) -> list:
-    from relevance_plan.planning.loop import PlanOptions
+    from relevance_plan.planning.options import PlanOptions
     from relevance_plan.scene_graphs.importer import DOMAIN_FILE, ImportOptions, import_scene, read_graph
 
     graph_path = folder / f"graph-{objects}-{seed}.json"

@@ -91,10 +91,11 @@ from relevance_plan.pddl.formulas import literals
 from relevance_plan.pddl.model import Problem
 from relevance_plan.pddl.plans import Plan
 from relevance_plan.pddl.writer import write_pruned_problem
-from relevance_plan.planning.loop import PlanOptions, PlanStatus, plan_task
+from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.planners.base import PlannerStatus
 from relevance_plan.planning.planners.registry import DEFAULT_PLANNER_CONFIG
-from relevance_plan.planning.results import PlanResult
+from relevance_plan.planning.results import PlanResult, PlanStatus
+from relevance_plan.planning.run import plan_task
 from relevance_plan.relevance.analysis.task import PlanningTask
 from relevance_plan.relevance.scoring.learning.learned_model import learned_model_text
 from relevance_plan.relevance.setup import ScoringOptions, score_problem

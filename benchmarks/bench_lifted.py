@@ -59,9 +59,9 @@ from corpus import benchmark_sets
 from relevance_plan.batch.jobs import Job
 from relevance_plan.batch.rows import row_from_json
 from relevance_plan.io import load_domain, load_problem
-from relevance_plan.planning.loop import PlanOptions
+from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.planners.fast_downward.command_line import find_fast_downward
-from relevance_plan.supervision.val import find_validate
+from relevance_plan.planning.validation.val_program import find_validate
 
 SETS = {
     "v4tiny5": "taskographyv4tiny5",

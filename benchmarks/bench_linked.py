@@ -88,8 +88,8 @@ from relevance_plan.batch.rows import row_from_json
 from relevance_plan.batch.suites import SuiteProblem
 from relevance_plan.errors import RelevancePlanError
 from relevance_plan.io import load_domain, load_problem
-from relevance_plan.planning.loop import PlanOptions
-from relevance_plan.supervision.val import find_validate
+from relevance_plan.planning.options import PlanOptions
+from relevance_plan.planning.validation.val_program import find_validate
 
 TOOL = [sys.executable, "-m", "relevance_plan"]
 PLANNER = ["--planner", "fast-downward", "--planner-config", "lama-first"]

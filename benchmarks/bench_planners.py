@@ -27,9 +27,9 @@ from pathlib import Path
 
 from base import Measured, Store, add_store_option, run_method, speedup, table_header, table_row
 
-from relevance_plan.generators.generate import generate_suite
+from relevance_plan.generators import WORLDS, Settings
 from relevance_plan.generators.padded import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
-from relevance_plan.planning.loop import PlanOptions
+from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.planners.registry import make_planner, split_planner_names
 
 
@@ -37,7 +37,7 @@ def problems(scratch: Path) -> list[tuple[str, Path, Path]]:
     found = []
     for distractors in (10, 50, 100):
         suite = scratch / f"coffee-{distractors}"
-        (problem,) = generate_suite("coffee", "simple", 1, 1, suite, distractors=distractors)
+        (problem,) = WORLDS["coffee"].suite(1, 1, suite, Settings("simple", distractors=distractors))
         found.append((f"coffee +{distractors}", suite / "domain.pddl", problem))
     for name, domain_text, problem_text in (
         ("blocksworld +60", BLOCKSWORLD_DOMAIN, blocksworld_problem(60, seed=1, in_the_way=3)),

@@ -29,9 +29,10 @@ from pathlib import Path
 
 from base import Store, add_store_option, median, median_run, ratio
 
-from relevance_plan.generators.generate import generate_suite
-from relevance_plan.planning.loop import PlanOptions, plan_task
+from relevance_plan.generators import WORLDS, Settings
+from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.results import PlanResult, PlanStatus
+from relevance_plan.planning.run import plan_task
 
 
 @dataclass
@@ -55,7 +56,7 @@ class Cell:
 
 def run_cell(world: str, size: int, args: argparse.Namespace, scratch: Path, store: Store) -> Cell:
     suite = scratch / f"{world}-{size}"
-    generate_suite(world, "simple", args.problems, args.seed, suite, distractors=size)
+    WORLDS[world].suite(args.problems, args.seed, suite, Settings("simple", distractors=size))
     cell = Cell(world, size)
     for problem in sorted(p for p in suite.glob("*.pddl") if p.name != "domain.pddl"):
         for method in args.methods:

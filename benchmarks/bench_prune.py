@@ -22,7 +22,7 @@ from pathlib import Path
 
 from base import REPO, Laps, median, run_timed
 
-from relevance_plan.generators.generate import generate_problem
+from relevance_plan.generators import WORLDS, Settings
 from relevance_plan.io import load_domain, load_problem, write_text_atomic
 from relevance_plan.relevance.analysis.task import PlanningTask
 from relevance_plan.relevance.scoring.knowledge import load_knowledge_model
@@ -71,7 +71,7 @@ def main(argv: list[str] | None = None) -> int:
     print("|---|---|---|---|---|---|---|---|---|---|")
     with tempfile.TemporaryDirectory(prefix="bench-prune-") as scratch:
         for objects, target in TARGETS.items():
-            generated = generate_problem("coffee", "simple", 1, 0, distractors=objects - 19)
+            generated = WORLDS["coffee"].problem(1, 0, Settings("simple", distractors=objects - 19))
             problem_path = Path(scratch) / f"coffee-{objects}.pddl"
             problem_path.write_text(generated.pddl_text)
             out = Path(scratch) / "pruned.pddl"

@@ -64,7 +64,6 @@ from dataclasses import asdict
 from pathlib import Path
 
 from base import (
-    DOMAINS,
     Laps,
     Measured,
     Store,
@@ -80,10 +79,10 @@ from base import (
     table_row,
 )
 
-from relevance_plan.generators.sized import CLASSIC_WORLDS, generate_sized_problem
+from relevance_plan.generators import CLASSIC, WORLDS, Settings, worlds_of
 from relevance_plan.io import load_domain, load_problem, write_text_atomic
 from relevance_plan.pddl.sexpr import collection_paused
-from relevance_plan.planning.loop import PlanOptions
+from relevance_plan.planning.options import PlanOptions
 from relevance_plan.relevance.analysis.task import PlanningTask
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
 
@@ -95,7 +94,8 @@ SIZES = {
     "miconic-manygoals-typed": (1000, 2000),
 }
 DEFAULT_WORLDS = ("scenegraph", "logistics-manygoals", "miconic-manygoals")
-PRUNE_WORLDS = (*SIZES, *CLASSIC_WORLDS)  # the pruning table may take our padded classic worlds too
+# the pruning table may take our padded classic worlds too
+PRUNE_WORLDS = (*SIZES, *(world.name for world in worlds_of(CLASSIC)))
 PRUNE_TARGETS = {500: 0.3, 5000: 1.0}  # objects -> seconds, in-process
 SPEEDUP_TARGET = 10.0  # geometric mean of pure/relevance over the scene-graph cells
 ORACLE_TARGET = 1.5  # relevance / oracle
@@ -105,14 +105,11 @@ STAGES = ("read", "score", "select", "write", "total")
 
 def write_problem(world: str, seed: int, index: int, size: int, folder: Path) -> tuple[Path, Path, dict]:
     """One generated problem with its sidecar next to it (the oracle reads it); returns (domain, problem, sidecar)."""
-    problem = generate_sized_problem(world, seed, index, size)
+    problem = WORLDS[world].problem(seed, index, Settings(size=size))
     path = folder / f"{problem.name}-{size}.pddl"
     path.write_text(problem.pddl_text)
     path.with_suffix(".json").write_text(json.dumps(problem.sidecar))
-    domain = problem.sidecar["domain"]
-    if world in CLASSIC_WORLDS and problem.sidecar["form"] == "typed":
-        domain += "-typed"  # a classic world's sidecar names the domain and its form apart
-    return DOMAINS / domain / "domain.pddl", path, problem.sidecar
+    return WORLDS[world].domain_path, path, problem.sidecar
 
 
 def prune_stages(domain_path: Path, problem_path: Path, out: Path) -> dict:

@@ -70,8 +70,8 @@ from pathlib import Path
 from base import REPO, Laps, percentile, progress, run_timed, table_header, table_row
 
 from relevance_plan.data import DOMAINS_DIR, PROBLEMS_DIR
+from relevance_plan.generators import WORLDS, Settings
 from relevance_plan.generators.scenegraph import SceneGraphEvents
-from relevance_plan.generators.sized import generate_sized_problem
 from relevance_plan.io import load_task
 from relevance_plan.pddl.formulas import literals
 from relevance_plan.pddl.parser import read_problem
@@ -109,7 +109,7 @@ LABELS = (
 def scene_session(size: int, seed: int, folder: Path, plans: bool) -> tuple[Session, SceneGraphEvents, dict]:
     """The scene's file written and read back, a session started on it (as ``watch`` does), timed."""
     problem_path = folder / "scene.pddl"
-    problem_path.write_text(generate_sized_problem("scenegraph", seed, 1, size).pddl_text)
+    problem_path.write_text(WORLDS["scenegraph"].problem(seed, 1, Settings(size=size)).pddl_text)
     laps = Laps()
     domain, problem = load_task(SCENEGRAPH_DOMAIN, problem_path)
     laps.lap("read")
@@ -302,7 +302,7 @@ def load(args: argparse.Namespace) -> None:
     """``watch`` on a generated scene with ten item moves: wall time and peak memory of the command."""
     with tempfile.TemporaryDirectory() as folder:
         problem_path = Path(folder) / "scene.pddl"
-        problem_path.write_text(generate_sized_problem("scenegraph", args.seed, 1, args.size).pddl_text)
+        problem_path.write_text(WORLDS["scenegraph"].problem(args.seed, 1, Settings(size=args.size)).pddl_text)
         domain, problem = load_task(SCENEGRAPH_DOMAIN, problem_path)
         goal = [(atom.predicate, *atom.args) for atom, _ in literals(problem.goal)]
         stream = SceneGraphEvents(dict(problem.objects), problem.init, goal, random.Random(args.seed))

@@ -63,11 +63,12 @@ from relevance_plan.generators.padded import pad_with_clones
 from relevance_plan.io import load_domain, load_problem, write_text_atomic
 from relevance_plan.pddl.formatter import format_problem
 from relevance_plan.pddl.model import Domain, Problem
-from relevance_plan.planning.loop import PlanOptions, plan_task
+from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.planners.preparation import prepare_planner
 from relevance_plan.planning.planners.registry import make_planner
 from relevance_plan.planning.race import race_by_default
 from relevance_plan.planning.results import PlanResult, PlanStatus
+from relevance_plan.planning.run import plan_task
 
 # (world, how its size is given, sizes, planners)
 GRID = (

@@ -46,7 +46,7 @@ from relevance_plan.io import load_task
 from relevance_plan.pddl.model import Domain, Problem, all_objects
 from relevance_plan.pddl.plans import Plan, format_plan
 from relevance_plan.planning.planners.registry import make_planner
-from relevance_plan.planning.validate import (
+from relevance_plan.planning.validation import (
     ValidationResult,
     ValidationStatus,
     up_validator,

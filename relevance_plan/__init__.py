@@ -25,7 +25,7 @@ _EXPORTS = {
     "plan": "relevance_plan.api",
     "Session": "relevance_plan.session",
     "EventReport": "relevance_plan.session",
-    "PlanOptions": "relevance_plan.planning.loop",
+    "PlanOptions": "relevance_plan.planning.options",
     "PlanResult": "relevance_plan.planning.results",
     "PlanStatus": "relevance_plan.planning.results",
     "ScoringOptions": "relevance_plan.relevance.setup",

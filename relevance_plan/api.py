@@ -11,7 +11,7 @@
 Both accept a path (``str`` or ``os.PathLike``) or the PDDL text itself for
 the domain and for the problem; names keep the user's spelling in every
 output.  ``prune`` takes the scoring options, ``plan`` every option of
-:class:`~relevance_plan.planning.loop.PlanOptions`.  Errors are the
+:class:`~relevance_plan.planning.options.PlanOptions`.  Errors are the
 package's own (:class:`~relevance_plan.errors.RelevancePlanError` and its
 subclasses, carrying the file and line); nothing here prints or exits.
 """
@@ -25,8 +25,9 @@ from typing import Any
 
 from relevance_plan.io import Source, is_pddl_text, load_sources
 from relevance_plan.pddl.sexpr import collection_paused
-from relevance_plan.planning.loop import PlanOptions, plan_task
+from relevance_plan.planning.options import Method, PlanOptions
 from relevance_plan.planning.results import PlanResult
+from relevance_plan.planning.run import plan_task
 from relevance_plan.progress import ProgressCallback
 from relevance_plan.relevance.analysis.task import PlanningTask
 from relevance_plan.relevance.selection.prune import Selection, Thresholds
@@ -73,7 +74,7 @@ def plan(domain: Source, problem: Source, *, progress: ProgressCallback | None =
 
     chosen = dict(options)
     if chosen.get("race") is None:
-        chosen["race"] = race_by_default(chosen.get("method", "relevance"))
+        chosen["race"] = race_by_default(chosen.get("method", Method.RELEVANCE))
     plan_options = PlanOptions(**_thresholds(chosen))
     with tempfile.TemporaryDirectory(prefix="relevance-plan-api-") as scratch:
         domain_path = _as_file(domain, Path(scratch) / "domain.pddl")

@@ -9,10 +9,12 @@ from support import planner_script
 
 from relevance_plan.io import load_task
 from relevance_plan.pddl.plans import Plan
-from relevance_plan.planning.loop import MIN_BUDGET, Budgets, PlanOptions, plan_task, run_attempts
+from relevance_plan.planning.attempts import MIN_BUDGET, AttemptLoop, Budgets, run_attempts
+from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome
 from relevance_plan.planning.planners.registry import make_planner
 from relevance_plan.planning.results import AttemptStatus, PlanStatus
+from relevance_plan.planning.run import plan_task
 from relevance_plan.relevance.analysis.task import PlanningTask
 from relevance_plan.relevance.selection.prune import Thresholds
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
@@ -68,7 +70,7 @@ def test_pruned_attempts_get_growing_budgets_and_the_full_problem_the_rest(coffe
         return OUT_OF_TIME
 
     options = PlanOptions(timeout=timeout, thresholds=STRICT)
-    attempts, _ = run_attempts(task, selection, call_planner, options, started=time.perf_counter(), budgets=Budgets(1))
+    attempts, _ = run_attempts(AttemptLoop(task, call_planner, options, time.perf_counter()), selection, Budgets(1))
     pruned = [limit for full, limit in calls if not full]
     assert len(pruned) >= 2 and calls[-1][0], calls  # widened to the full problem
     assert pruned == [2.0**n for n in range(len(pruned))]
@@ -84,7 +86,8 @@ def test_without_budgets_a_pruned_attempt_gets_its_share(coffee_files):
         limits.append(limit)
         return OUT_OF_TIME
 
-    run_attempts(task, selection, call_planner, PlanOptions(timeout=60, thresholds=STRICT), started=time.perf_counter())
+    options = PlanOptions(timeout=60, thresholds=STRICT)
+    run_attempts(AttemptLoop(task, call_planner, options, time.perf_counter()), selection)
     assert limits[0] > 20  # half of the time left: a planner that proves unsolvability ends early by itself
 
 

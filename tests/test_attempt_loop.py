@@ -11,9 +11,10 @@ from relevance_plan.errors import RelevancePlanError
 from relevance_plan.generators.padded import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
 from relevance_plan.io import load_task
 from relevance_plan.pddl.plans import Plan
-from relevance_plan.planning.loop import PlanOptions, plan_task
+from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.results import PlanStatus
-from relevance_plan.planning.validate import ValidationStatus, validate_with_up
+from relevance_plan.planning.run import plan_task
+from relevance_plan.planning.validation import ValidationStatus, validate_with_up
 from relevance_plan.relevance.selection.prune import Thresholds
 
 
@@ -214,7 +215,7 @@ def test_every_status_enum_spells_its_values_one_way():
     from relevance_plan.exitcodes import PLAN_STATUS_EXIT
     from relevance_plan.planning.planners.base import PlannerStatus
     from relevance_plan.planning.results import AttemptStatus
-    from relevance_plan.planning.validate import ValidationStatus
+    from relevance_plan.planning.validation import ValidationStatus
 
     values = [status.value for enum in (PlanStatus, AttemptStatus, PlannerStatus, ValidationStatus) for status in enum]
     assert all(value == _spelling(value) for value in values), values
@@ -231,7 +232,7 @@ def test_plan_json_spells_every_status_one_way(tmp_path, coffee_domain_path):
 
     from relevance_plan.planning.planners.base import PlannerStatus
     from relevance_plan.planning.results import AttemptStatus
-    from relevance_plan.planning.validate import ValidationStatus
+    from relevance_plan.planning.validation import ValidationStatus
 
     coffee = tmp_path / "coffee.pddl"
     coffee.write_text(coffee_problem(extra_plates=2))
@@ -273,7 +274,7 @@ def test_plan_json_spells_every_status_one_way(tmp_path, coffee_domain_path):
 
 def test_a_failed_first_attempt_costs_no_more_than_its_share(coffee_files):
     # every pruned attempt fails: each may use only its share of the time left, the full problem the rest
-    from relevance_plan.planning.loop import run_attempts
+    from relevance_plan.planning.attempts import AttemptLoop, run_attempts
     from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome
     from relevance_plan.relevance.analysis.task import PlanningTask
     from relevance_plan.relevance.setup import ScoringOptions, score_problem
@@ -290,7 +291,7 @@ def test_a_failed_first_attempt_costs_no_more_than_its_share(coffee_files):
         return RunOutcome(status=status, exit_code=12, plan=Plan(()), plan_cost=None, wall_time=0.01, planner="fake")
 
     options = PlanOptions(timeout=60, first_share=0.25)
-    attempts, _ = run_attempts(task, selection, call_planner, options, started=time.perf_counter())
+    attempts, _ = run_attempts(AttemptLoop(task, call_planner, options, time.perf_counter()), selection)
     assert len(attempts) >= 2 and calls[-1][0]  # widened until the full problem was planned
     assert not calls[0][0] and calls[0][1] <= 60 * 0.25 + 0.01
     for full, limit in calls:

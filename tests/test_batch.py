@@ -26,8 +26,8 @@ from relevance_plan.batch.jobs import build_jobs, run_job
 from relevance_plan.batch.store import SCHEMA_VERSION, ResultStore
 from relevance_plan.errors import InputFileError, SchedulerError, StoreError, UsageError
 from relevance_plan.exitcodes import ExitCode
-from relevance_plan.generators.generate import generate_suite
-from relevance_plan.planning.loop import PlanOptions
+from relevance_plan.generators import WORLDS, Settings
+from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.planners.fast_downward import adapter as fast_downward
 from relevance_plan.relevance.selection.prune import Thresholds
 
@@ -38,7 +38,7 @@ ALL_METHODS = "relevance,pure,random,oracle"
 
 
 def tiny_suite(directory: Path, world: str = "coffee", count: int = 2, distractors: int = 5) -> Path:
-    generate_suite(world, "simple", count, 0, directory, distractors=distractors)
+    WORLDS[world].suite(count, 0, directory, Settings("simple", distractors=distractors))
     return directory
 
 

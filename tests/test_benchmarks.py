@@ -9,7 +9,8 @@ import pytest
 
 from relevance_plan.batch.report import build_report
 from relevance_plan.batch.store import read_rows
-from relevance_plan.planning.loop import PlanOptions, plan_task
+from relevance_plan.planning.options import PlanOptions
+from relevance_plan.planning.run import plan_task
 
 
 def test_the_statistics_leave_missing_values_out_and_say_when_there_are_none():
@@ -147,7 +148,7 @@ def test_bench_linked_plans_a_cell_with_pure_and_the_tool_and_checks_each_plan_o
 
     from support import REPO
 
-    from relevance_plan.supervision.val import find_validate
+    from relevance_plan.planning.validation.val_program import find_validate
 
     raw = tmp_path / "raw.jsonl"
     command = [sys.executable, str(REPO / "benchmarks" / "bench_linked.py"), "--sets", "blocksworld"]

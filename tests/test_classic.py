@@ -8,11 +8,13 @@ from click.testing import CliRunner
 
 from relevance_plan.cli import main
 from relevance_plan.data import DOMAINS_DIR
-from relevance_plan.generators.classic import CLASSIC_WORLDS, generate_classic_problem
+from relevance_plan.generators import CLASSIC, worlds_of
+from relevance_plan.generators.classic import generate_classic_problem
 from relevance_plan.pddl.parser import read_domain, read_problem
-from relevance_plan.planning.loop import PlanOptions, plan_task
+from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.results import PlanStatus
-from relevance_plan.planning.validate import ValidationStatus, validate_plan
+from relevance_plan.planning.run import plan_task
+from relevance_plan.planning.validation import ValidationStatus, validate_plan
 from relevance_plan.relevance.analysis.task import PlanningTask
 from relevance_plan.relevance.reachability.exploration import relaxed_reachability
 from relevance_plan.relevance.scoring.scorers import SCORERS, ScoreRequest
@@ -141,7 +143,7 @@ def test_an_unpruneable_problem_goes_straight_to_the_full_problem(tmp_path):
 
 
 @pytest.mark.planner
-@pytest.mark.parametrize("world", CLASSIC_WORLDS)
+@pytest.mark.parametrize("world", [world.name for world in worlds_of(CLASSIC)])
 def test_relevance_plans_are_valid_on_the_original(tmp_path, world):
     problem = generate_classic_problem(world, seed=2, index=1, size=60)
     domain_path, problem_path = tmp_path / "domain.pddl", tmp_path / "problem.pddl"

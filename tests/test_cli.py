@@ -64,7 +64,7 @@ def test_prune_writes_a_problem_that_planners_read(problem, tmp_path):
     # and Fast Downward solves it; the plan validates on the ORIGINAL problem
     from relevance_plan.io import load_task
     from relevance_plan.planning.planners.fast_downward.adapter import run_fast_downward
-    from relevance_plan.planning.validate import validate_plan
+    from relevance_plan.planning.validation import validate_plan
 
     outcome = run_fast_downward(COFFEE_DOMAIN, out, time_limit=60)
     assert outcome.solved

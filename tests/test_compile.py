@@ -31,9 +31,10 @@ from relevance_plan.pddl.compile import (
 from relevance_plan.pddl.formatter import format_domain, format_formula, format_problem
 from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.pddl.plans import Plan, PlanStep
-from relevance_plan.pddl.simulator import Simulator, initial_state, simulate
+from relevance_plan.pddl.simulator import Simulator, initial_state
 from relevance_plan.planning.planners.preparation import COMPILED_FEATURES, compile_for
 from relevance_plan.planning.planners.requirements import HIERARCHICAL_TYPING, STRIPS, TYPING, problem_features
+from relevance_plan.planning.validation import simulate
 
 STATES = 3_000
 

@@ -151,8 +151,8 @@ def _chain_problem(length: int) -> str:
 
 
 def test_a_recursive_domain_gives_the_same_verdicts_as_every_binding(monkeypatch):
-    from relevance_plan.pddl import simulator as simulation
     from relevance_plan.pddl.plans import PlanStep
+    from relevance_plan.planning.validation import simulate
 
     domain = read_domain(REACH_DOMAIN)
     problem = read_problem(_chain_problem(6), domain)
@@ -161,13 +161,13 @@ def test_a_recursive_domain_gives_the_same_verdicts_as_every_binding(monkeypatch
     plans += [valid[:i] + valid[i + 1 :] for i in range(len(valid))]
     plans += [valid[:i] + [valid[i + 1], valid[i]] + valid[i + 2 :] for i in range(len(valid) - 1)]
     plans += [valid[:2] + [PlanStep("open", ("n1",))] + valid[2:], valid + [PlanStep("open", ("n0",))]]
-    fast = [simulation.simulate(domain, problem, plan) for plan in plans]
+    fast = [simulate(domain, problem, plan) for plan in plans]
 
     def every_binding(self, state):
         state.facts = _reference(self, state)
 
-    monkeypatch.setattr(simulation.Simulator, "derive", every_binding)
-    slow = [simulation.simulate(domain, problem, plan) for plan in plans]
+    monkeypatch.setattr(Simulator, "derive", every_binding)
+    slow = [simulate(domain, problem, plan) for plan in plans]
     assert [(s.valid, s.failed_step, s.message) for s in fast] == [(s.valid, s.failed_step, s.message) for s in slow]
     assert fast[0].valid and not fast[1].valid and not fast[2].valid  # the verdicts differ: the test can fail
     assert sum(not s.valid for s in fast) >= len(plans) // 2

@@ -53,10 +53,10 @@ def test_the_repair_picks_one_airplane_where_one_suffices():
 def test_the_first_selection_keeps_one_of_many_nearby_airplanes():
     # generated many-goal logistics: every airport is near a goal object, so the goal scorer selects
     # nearly every airplane; the first selection keeps the one a relaxed plan needs
-    from relevance_plan.generators.sized import generate_sized_problem
+    from relevance_plan.generators import WORLDS, Settings
 
     for world in ("logistics-manygoals", "logistics-manygoals-typed"):
-        generated = generate_sized_problem(world, 2, 1, 120)
+        generated = WORLDS[world].problem(2, 1, Settings(size=120))
         domain = load_domain(DOMAINS_DIR / generated.sidecar["domain"] / "domain.pddl")
         problem = read_problem(generated.pddl_text, domain)
         scoring = score_problem(PlanningTask(domain, problem), ScoringOptions())
@@ -73,12 +73,12 @@ def test_the_first_selection_keeps_one_of_many_nearby_airplanes():
 def test_a_second_truck_in_one_city_goes_when_the_first_can_stand_in_for_it(monkeypatch):
     """Trucks are needed one per city, so no truck stands in for most others; but when one round
     adds two trucks of one city and the relaxed plan uses both, the one the other can replace goes."""
-    from relevance_plan.generators.sized import NEW_WORLDS, generate_sized_problem
+    from relevance_plan.generators import WORLDS, Settings
     from relevance_plan.relevance.selection import repair
 
     pairwise = repair.PAIRWISE_UP_TO
-    generated = generate_sized_problem("logistics-manygoals", 5, 1, 200)
-    domain = load_domain(DOMAINS_DIR / NEW_WORLDS["logistics-manygoals"].domain / "domain.pddl")
+    generated = WORLDS["logistics-manygoals"].problem(5, 1, Settings(size=200))
+    domain = load_domain(WORLDS["logistics-manygoals"].domain_path)
 
     def trucks_of_city_eight(pairwise: int) -> set[str]:
         monkeypatch.setattr(repair, "PAIRWISE_UP_TO", pairwise)

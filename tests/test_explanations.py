@@ -158,7 +158,7 @@ def test_a_failing_comparison_says_its_values():
     )
     problem = read_problem("(define (problem p) (:domain d) (:init (= (fuel) 3)) (:goal (< (fuel) 0)))", domain)
     from relevance_plan.pddl.plans import Plan, PlanStep
-    from relevance_plan.pddl.simulator import simulate
+    from relevance_plan.planning.validation import simulate
 
     found = simulate(domain, problem, Plan((PlanStep("go", ()),)))
     assert found.message == "step 1 (go): precondition not satisfied: (>= (fuel) 10) is false (3 >= 10)"

@@ -8,8 +8,7 @@ from collections import deque
 
 import pytest
 
-from relevance_plan.data import DOMAINS_DIR
-from relevance_plan.generators.sized import NEW_WORLDS, generate_sized_problem
+from relevance_plan.generators import WORLDS, Settings
 from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.relevance.analysis.distances import object_distances
 from relevance_plan.relevance.analysis.facts import fan_in
@@ -22,13 +21,9 @@ from relevance_plan.relevance.setup import ScoringOptions, score_problem
 
 
 def task_of(world: str, size: int, seed: int = 2) -> tuple[PlanningTask, dict]:
-    problem = generate_sized_problem(world, seed, 1, size)
+    problem = WORLDS[world].problem(seed, 1, Settings(size=size))
     sidecar = problem.sidecar
-    if world in NEW_WORLDS:
-        name = NEW_WORLDS[world].domain
-    else:  # a classic world's sidecar names the domain and its form apart
-        name = sidecar["domain"] + ("-typed" if sidecar["form"] == "typed" else "")
-    domain = read_domain((DOMAINS_DIR / name / "domain.pddl").read_text())
+    domain = read_domain(WORLDS[world].domain_path.read_text())
     return PlanningTask(domain, read_problem(problem.pddl_text, domain)), sidecar
 
 
@@ -174,12 +169,12 @@ def test_the_repairs_selection_is_the_same_in_every_process():
 
     script = (
         "from relevance_plan.data import DOMAINS_DIR\n"
-        "from relevance_plan.generators.sized import generate_sized_problem\n"
+        "from relevance_plan.generators import WORLDS, Settings\n"
         "from relevance_plan.pddl.parser import read_domain, read_problem\n"
         "from relevance_plan.relevance.analysis.task import PlanningTask\n"
         "from relevance_plan.relevance.setup import ScoringOptions, score_problem\n"
         "for world, domain in (('grid', 'grid'), ('scenegraph', 'scenegraph'), ('logistics-manygoals', 'logistics')):\n"
-        "    problem = generate_sized_problem(world, 3, 1, 500)\n"
+        "    problem = WORLDS[world].problem(3, 1, Settings(size=500))\n"
         "    d = read_domain((DOMAINS_DIR / domain / 'domain.pddl').read_text())\n"
         "    task = PlanningTask(d, read_problem(problem.pddl_text, d))\n"
         "    kept = score_problem(task, ScoringOptions(), method='relevance').first_selection(narrow=True).kept\n"

@@ -9,7 +9,7 @@ import pytest
 
 from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.errors import RelevancePlanError
-from relevance_plan.generators.sized import generate_sized_problem
+from relevance_plan.generators import WORLDS, Settings
 from relevance_plan.pddl import parser
 from relevance_plan.pddl.parser import read_domain, read_problem
 
@@ -41,7 +41,7 @@ def same(fast, full) -> None:
 
 @pytest.mark.parametrize("world", ["miconic-manygoals", "logistics-manygoals-typed", "scenegraph"])
 def test_generated_problems_read_the_same(monkeypatch, world):
-    problem = generate_sized_problem(world, 3, 1, 300)
+    problem = WORLDS[world].problem(3, 1, Settings(size=300))
     folder = problem.sidecar["domain"]
     if problem.sidecar.get("form") == "typed" and (DOMAINS_DIR / f"{folder}-typed").exists():
         folder += "-typed"

@@ -30,8 +30,9 @@ from relevance_plan.generators import (  # noqa: E402
     DISTRACTOR_RANGES,
     KITCHENWARE_TYPES,
     SCENES,
-    generate_problem,
-    generate_suite,
+    WORLDS,
+    Settings,
+    find_world,
     kind_of,
     write_base_scenes,
 )
@@ -298,7 +299,7 @@ def test_generated_sizes_and_invariants(world, difficulty):
     base = SCENES[f"{world}-{difficulty}"]
     counts = []
     for index in range(1, 41):
-        problem = generate_problem(world, difficulty, 11, index)
+        problem = WORLDS[world].problem(11, index, Settings(difficulty))
         sidecar = problem.sidecar
         counts.append(sidecar["distractor_count"])
         assert low <= sidecar["distractor_count"] <= high
@@ -320,24 +321,24 @@ def test_generated_sizes_and_invariants(world, difficulty):
 def test_same_arguments_same_problem_across_processes():
     script = (
         "import sys; sys.path.insert(0, sys.argv[1]);"
-        "from generators import generate_problem;"
-        "p = generate_problem('coffee', 'hard', 5, 2);"
+        "from generators import WORLDS, Settings;"
+        "p = WORLDS['coffee'].problem(5, 2, Settings('hard'));"
         "sys.stdout.write(p.pddl_text + p.sidecar_text)"
     )
     outputs = outputs_under_hash_seeds(script, ("1", "2"), str(REPO))
-    problem = generate_problem("coffee", "hard", 5, 2)
+    problem = WORLDS["coffee"].problem(5, 2, Settings("hard"))
     assert outputs[0] == outputs[1] == problem.pddl_text + problem.sidecar_text
 
 
 def test_distractor_override_scales_to_2000(tmp_path):
-    paths = generate_suite("coffee", "simple", 1, 3, tmp_path / "big", distractors=2000)
+    paths = WORLDS["coffee"].suite(1, 3, tmp_path / "big", Settings("simple", distractors=2000))
     sidecar = json.loads(paths[0].with_suffix(".json").read_text())
     assert sidecar["distractor_count"] == 2000 and len(set(sidecar["distractors"])) == 2000
     assert sidecar["objects_total"] == 19 + 2000
     assert len({kind_of(n) for n in sidecar["distractors"]}) == 200
     assert "dinner_plate_3" in sidecar["distractors"]  # kinds repeat with indices (scene has dinner_plate_1)
     assert len(declared_objects(paths[0].read_text())) == 2019
-    zero = generate_problem("cereal", "hard", 3, 1, distractors=0)
+    zero = WORLDS["cereal"].problem(3, 1, Settings("hard", distractors=0))
     assert zero.sidecar["distractor_count"] == 0 and zero.sidecar["objects_total"] == 26
 
 
@@ -350,8 +351,8 @@ def read_tree(directory: Path) -> dict[str, bytes]:
 
 def test_suite_layout_and_determinism(tmp_path):
     calls = []
-    paths = generate_suite(
-        "cereal", "simple", 3, 42, tmp_path / "a", progress=lambda e: calls.append((e.done, e.total))
+    paths = WORLDS["cereal"].suite(
+        3, 42, tmp_path / "a", Settings("simple"), progress=lambda e: calls.append((e.done, e.total))
     )
     assert calls == [(1, 3), (2, 3), (3, 3)]
     assert [p.name for p in paths] == [f"cereal-simple-00{i}.pddl" for i in (1, 2, 3)]
@@ -367,19 +368,19 @@ def test_suite_layout_and_determinism(tmp_path):
     sidecar = json.loads(tree["cereal-simple-002.json"])
     assert sidecar["seed"] == 42 and sidecar["index"] == 2 and sidecar["base_scene"] == "cereal-simple"
     assert tree["cereal-simple-002.json"].decode() == json.dumps(sidecar, sort_keys=True, indent=2) + "\n"
-    assert tree["cereal-simple-002.pddl"].decode() == generate_problem("cereal", "simple", 42, 2).pddl_text
+    assert tree["cereal-simple-002.pddl"].decode() == WORLDS["cereal"].problem(42, 2, Settings("simple")).pddl_text
 
-    generate_suite("cereal", "simple", 3, 42, tmp_path / "b")
+    WORLDS["cereal"].suite(3, 42, tmp_path / "b", Settings("simple"))
     assert read_tree(tmp_path / "b") == tree
-    generate_suite("cereal", "simple", 3, 43, tmp_path / "c")
+    WORLDS["cereal"].suite(3, 43, tmp_path / "c", Settings("simple"))
     other = read_tree(tmp_path / "c")
     assert all(other[f"cereal-simple-00{i}.pddl"] != tree[f"cereal-simple-00{i}.pddl"] for i in (1, 2, 3))
 
 
 def test_suite_replaces_only_its_own_directories(tmp_path):
     target = tmp_path / "suite"
-    generate_suite("coffee", "simple", 3, 1, target)
-    generate_suite("coffee", "hard", 2, 1, target)  # a previous suite of ours: replaced
+    WORLDS["coffee"].suite(3, 1, target, Settings("simple"))
+    WORLDS["coffee"].suite(2, 1, target, Settings("hard"))  # a previous suite of ours: replaced
     assert sorted(p.name for p in target.iterdir()) == sorted(
         ["domain.pddl", "suite.json"] + [f"coffee-hard-00{i}{s}" for i in (1, 2) for s in (".pddl", ".json")]
     )
@@ -387,11 +388,11 @@ def test_suite_replaces_only_its_own_directories(tmp_path):
     foreign.mkdir()
     (foreign / "notes.txt").write_text("mine")
     with pytest.raises(UsageError):
-        generate_suite("coffee", "simple", 1, 1, foreign)
+        WORLDS["coffee"].suite(1, 1, foreign, Settings("simple"))
     assert read_tree(foreign) == {"notes.txt": b"mine"}
     empty = tmp_path / "empty"
     empty.mkdir()
-    generate_suite("coffee", "simple", 1, 1, empty)
+    WORLDS["coffee"].suite(1, 1, empty, Settings("simple"))
     assert (empty / "suite.json").exists()
     assert sorted(p.name for p in tmp_path.iterdir()) == ["empty", "foreign", "suite"], "no staging left behind"
 
@@ -410,26 +411,25 @@ def test_suite_replaces_only_its_own_directories(tmp_path):
     ],
 )
 def test_bad_arguments_raise_usage_error_and_write_nothing(tmp_path, kwargs):
-    arguments = {"world": "coffee", "difficulty": "simple", "count": 2, "seed": 1, "out_dir": tmp_path / "out"}
+    arguments = {"world": "coffee", "difficulty": "simple", "count": 2, "seed": 1, "distractors": None}
     arguments.update(kwargs)
+    settings = Settings(arguments["difficulty"], arguments["distractors"])
     with pytest.raises(UsageError) as info:
-        generate_suite(**arguments)
+        find_world(arguments["world"]).suite(arguments["count"], arguments["seed"], tmp_path / "out", settings)
     assert "\n" not in str(info.value)
     assert list(tmp_path.iterdir()) == []
     if "count" not in kwargs:  # the same checks guard the pure function
         with pytest.raises(UsageError):
-            generate_problem(
-                arguments["world"], arguments["difficulty"], arguments["seed"], 1, arguments.get("distractors")
-            )
+            find_world(arguments["world"]).problem(arguments["seed"], 1, settings)
 
 
 def test_unwritable_directory_raises_input_file_error(tmp_path):
     blocker = tmp_path / "a_file"
     blocker.write_text("not a directory")
     with pytest.raises(InputFileError):
-        generate_suite("coffee", "simple", 1, 1, blocker / "suite")
+        WORLDS["coffee"].suite(1, 1, blocker / "suite", Settings("simple"))
     with pytest.raises(InputFileError):
-        generate_suite("coffee", "simple", 1, 1, blocker)
+        WORLDS["coffee"].suite(1, 1, blocker, Settings("simple"))
     with pytest.raises(InputFileError):
         write_base_scenes(blocker / "problems")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["a_file"]
@@ -453,7 +453,7 @@ def _write_case(tmp_path: Path, scene_name: str, index: int | None, distractors:
         sidecar = json.loads(problem_path.with_suffix(".json").read_text())
     else:
         difficulty = scene_name.split("-")[1]
-        problem = generate_problem(world, difficulty, 2026, index, distractors)
+        problem = WORLDS[world].problem(2026, index, Settings(difficulty, distractors=distractors))
         problem_path = tmp_path / f"{problem.name}.pddl"
         problem_path.write_text(problem.pddl_text)
         sidecar = problem.sidecar

@@ -11,9 +11,10 @@ import time
 import pytest
 from support import DOMAINS, TOOL, modules_after, write_file
 
-from relevance_plan.planning.loop import PlanOptions, plan_task
+from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.planners.fast_downward import head_start
 from relevance_plan.planning.results import PlanStatus
+from relevance_plan.planning.run import plan_task
 
 GRIPPER = DOMAINS / "gripper" / "domain.pddl"
 GRIPPER_PROBLEM = """(define (problem two-balls) (:domain gripper)
@@ -46,10 +47,10 @@ def test_the_fast_path_imports_nothing_heavy(gripper_problem):
     )
     assert not [m for m in modules if m.split(".")[0] in HEAVY]
     ours = {m for m in modules if m.startswith("relevance_plan")}
-    # the relevance stage with what it reads (the sentence encoder, the sidecar), the PDDL reader and the CLI
-    stage = ("relevance_plan.pddl", "relevance_plan.relevance", "relevance_plan.text", "relevance_plan.sidecar")
-    assert not {m for m in ours if m.startswith((*stage, "relevance_plan.cli"))}
-    assert "relevance_plan.planning.loop" not in ours
+    assert not {
+        m for m in ours if m.startswith(("relevance_plan.pddl", "relevance_plan.relevance", "relevance_plan.cli"))
+    }
+    assert not ours & {f"relevance_plan.planning.{name}" for name in ("options", "attempts", "run", "summary")}
     assert "dataclasses" not in modules  # its import (inspect, ast, ...) alone would delay the driver ~10 ms
 
 
@@ -68,7 +69,7 @@ def test_plan_imports_only_what_it_uses_and_leaves_no_temporary_folder(gripper_p
     assert done.returncode == 0, done.stderr
     # -X importtime: one line on stderr per module imported, "import time: self | cumulative | name"
     modules = {line.rsplit("|", 1)[1].strip() for line in done.stderr.splitlines() if line.startswith("import time:")}
-    assert "relevance_plan.planning.loop" in modules  # the lines were read
+    assert "relevance_plan.planning.run" in modules  # the lines were read
     assert not [m for m in modules if m.startswith(NOT_FOR_PLAN)]
     # plan ends without the interpreter's teardown: its folders are gone all the same
     assert (tmp_path / "sas_plan").is_file() and not list(temporary.iterdir())

@@ -6,7 +6,7 @@ from __future__ import annotations
 import pytest
 
 from relevance_plan.data import DOMAINS_DIR
-from relevance_plan.generators.sized import generate_sized_problem
+from relevance_plan.generators import WORLDS, Settings
 from relevance_plan.io import load_domain
 from relevance_plan.pddl.model import TimedLiteral
 from relevance_plan.pddl.parser import read_domain, read_problem
@@ -21,7 +21,7 @@ SCENEGRAPH = DOMAINS_DIR / "scenegraph" / "domain.pddl"
 def scene_task(size: int = 300, seed: int = 1, extra: tuple = ()) -> PlanningTask:
     """A generated scene graph, with ``extra`` facts added to its initial state."""
     domain = load_domain(SCENEGRAPH)
-    text = generate_sized_problem("scenegraph", seed, 1, size).pddl_text
+    text = WORLDS["scenegraph"].problem(seed, 1, Settings(size=size)).pddl_text
     if extra:
         facts = " ".join(f"({' '.join(fact)})" for fact in extra)
         text = text.replace("(:init", f"(:init {facts}", 1)

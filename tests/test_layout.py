@@ -13,7 +13,8 @@ from support import REPO
 from relevance_plan.batch.jobs import build_jobs, run_job
 from relevance_plan.batch.keys import FINGERPRINT_RULES, config_fingerprint, config_hash
 from relevance_plan.generators.padded import GRIPPER_DOMAIN, gripper_problem
-from relevance_plan.planning.loop import PLAN_OPTION_FIELDS, PlanOptions, plan_task
+from relevance_plan.planning.options import PLAN_OPTION_FIELDS, PlanOptions
+from relevance_plan.planning.run import plan_task
 from relevance_plan.relevance.selection.prune import Thresholds
 
 # A value other than the default for every option (None where the default is set).
@@ -226,50 +227,59 @@ def test_no_module_imports_one_that_imports_it_back():
     assert not cycles
 
 
-# --------------------------------------------------------------------------- folders and classes of one kind
-
-MAX_MODULES_PER_FOLDER = 14  # a folder of one kind of thing, as pyperplan's search/ and heuristics/
-MAX_METHODS_PER_CLASS = 20
-# the stage's own code, held to the class rules (the other packages have their own pending splits)
-STAGE_PACKAGES = ("relevance", "text")
+# --------------------------------------------------------------------------- classes and signatures
 
 
-def _classes(path) -> list:
+def _definitions(folder, kinds):
+    """(path, node) of every definition of ``kinds`` under ``folder`` of the package, ``relevance/``
+    left out (its own layout is kept by its own contracts)."""
     import ast
 
-    return [node for node in ast.walk(ast.parse(path.read_text())) if isinstance(node, ast.ClassDef)]
+    for path in sorted((REPO / "relevance_plan" / folder).rglob("*.py")):
+        if "relevance" in path.relative_to(REPO / "relevance_plan").parts[:1]:
+            continue
+        for node in ast.walk(ast.parse(path.read_text())):
+            if isinstance(node, kinds):
+                yield path.relative_to(REPO), node
 
 
-def test_no_folder_of_the_package_holds_more_than_fourteen_modules():
-    package = REPO / "relevance_plan"
-    crowded = {
-        str(folder.relative_to(REPO)): count
-        for folder in [package, *(p for p in package.rglob("*") if p.is_dir() and p.name != "__pycache__")]
-        if (count := sum(1 for m in folder.glob("*.py") if m.name != "__init__.py")) > MAX_MODULES_PER_FOLDER
-    }
-    assert crowded == {}
-
-
-def test_no_class_of_the_relevance_stage_or_the_text_encoder_has_more_than_twenty_methods():
+def test_no_class_outside_the_relevance_engine_has_more_than_20_methods():
     import ast
 
-    large = {
-        f"{path.relative_to(REPO)}:{cls.name}": methods
-        for package in STAGE_PACKAGES
-        for path in (REPO / "relevance_plan" / package).rglob("*.py")
-        for cls in _classes(path)
-        if (methods := sum(isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)) for item in cls.body))
-        > MAX_METHODS_PER_CLASS
-    }
-    assert large == {}
+    big = [
+        f"{path}: {node.name} ({count} methods)"
+        for path, node in _definitions(".", ast.ClassDef)
+        if (count := sum(isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)) for item in node.body)) > 20
+    ]
+    assert not big
 
 
-def test_a_class_name_of_the_relevance_stage_or_the_text_encoder_names_one_class():
-    # one name per concept: a private class spelled like another module's class (``_Draft``, ``Draft``)
-    # is two concepts sharing a word as much as two public ones are
-    where: dict[str, list[str]] = {}
-    for package in STAGE_PACKAGES:
-        for path in sorted((REPO / "relevance_plan" / package).rglob("*.py")):
-            for cls in _classes(path):
-                where.setdefault(cls.name.lstrip("_"), []).append(f"{path.relative_to(REPO)}:{cls.name}")
-    assert {name: found for name, found in where.items() if len(found) > 1} == {}
+def test_no_class_name_is_defined_twice_outside_the_relevance_engine():
+    import ast
+    from collections import defaultdict
+
+    where = defaultdict(list)
+    for path, node in _definitions(".", ast.ClassDef):
+        where[node.name].append(str(path))
+    assert {name: paths for name, paths in where.items() if len(paths) > 1} == {}
+
+
+# The attempt loop's modules (planning/, its planner adapters aside), the validators, the worlds, the session.
+NARROW = ["planning", "planning/validation", "generators", "session"]
+
+
+@pytest.mark.parametrize("folder", NARROW)
+def test_no_function_of_the_loop_the_validators_the_worlds_or_the_session_takes_more_than_8_parameters(folder):
+    import ast
+
+    def count(arguments: ast.arguments) -> int:
+        names = [a.arg for a in (*arguments.posonlyargs, *arguments.args, *arguments.kwonlyargs)]
+        return len([n for n in names if n not in ("self", "cls")]) + bool(arguments.vararg) + bool(arguments.kwarg)
+
+    found = [
+        (path, node)
+        for path, node in _definitions(folder, (ast.FunctionDef, ast.AsyncFunctionDef))
+        if "planners" not in path.parts
+    ]
+    wide = [f"{path}: {node.name} ({count(node.args)})" for path, node in found if count(node.args) > 8]
+    assert found and not wide

@@ -263,21 +263,23 @@ def test_a_task_past_its_deadline_stops_every_analysis_naming_the_step(copied_co
 @pytest.mark.parametrize("step", ["scoring", "pruning and closure", "widening"])
 def test_a_deadline_passing_inside_a_step_ends_the_run_as_out_of_time(monkeypatch, copied_coffee_files, step):
     from relevance_plan.errors import OutOfTimeError
-    from relevance_plan.planning import loop
-    from relevance_plan.planning.loop import PlanOptions, plan_task
+    from relevance_plan.planning import attempts, run
+    from relevance_plan.planning.options import PlanOptions
     from relevance_plan.planning.results import PlanStatus
+    from relevance_plan.planning.run import plan_task
+    from relevance_plan.relevance.selection.prune import Thresholds
     from relevance_plan.relevance.setup import Scoring
 
     def out_of_time(*args, **kwargs):
         raise OutOfTimeError("out of time while doing it (the --timeout ran out)")
 
     if step == "scoring":
-        monkeypatch.setattr(loop, "score_problem", out_of_time)
+        monkeypatch.setattr(run, "score_problem", out_of_time)
     elif step == "pruning and closure":
         monkeypatch.setattr(Scoring, "first_selection", out_of_time)
     else:
-        monkeypatch.setattr(loop, "widen", out_of_time)
-    strict = loop.Thresholds(0.2, 0.85)  # drops the whitener and the stirrer: the first attempt fails
+        monkeypatch.setattr(attempts, "widen", out_of_time)
+    strict = Thresholds(0.2, 0.85)  # drops the whitener and the stirrer: the first attempt fails
     options = PlanOptions(timeout=60, race=False, thresholds=strict) if step == "widening" else PlanOptions(timeout=60)
     result = plan_task(*copied_coffee_files, options)
     if step == "widening":  # the widening runs out after the failed first attempt: the run stops there

@@ -20,7 +20,7 @@ from relevance_plan.pddl.model import Spelling
 from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.pddl.plans import format_plan, read_plan
 from relevance_plan.planning.results import PlanStatus
-from relevance_plan.planning.validate import val_available, validate_builtin, validate_with_val
+from relevance_plan.planning.validation import val_available, validate_builtin, validate_with_val
 
 # Every kind of name in mixed case, each also used in another case than its declaration's: the
 # declaration's spelling is the one shown ("Item" is declared before "ITEM" names it as a parent).

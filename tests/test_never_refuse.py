@@ -18,10 +18,11 @@ from support import one_line_error, run, task_fixture
 
 from relevance_plan.errors import PlannerError, UnsupportedFeatureError
 from relevance_plan.exitcodes import ExitCode
-from relevance_plan.planning.loop import PlanOptions, plan_task
+from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.planners import auto
 from relevance_plan.planning.planners.up import adapter as up_engines
 from relevance_plan.planning.results import PlanStatus
+from relevance_plan.planning.run import plan_task
 
 JAVA_MISSING = "Java runtime not found: apt-get install default-jre-headless"
 
@@ -140,12 +141,12 @@ def test_a_plan_no_validator_can_check_is_exit_41_never_solved(tmp_path, move_fi
 
 @pytest.mark.planner
 def test_plan_plans_the_full_problem_when_the_analysis_refuses(tmp_path, move_files, monkeypatch):
-    import relevance_plan.planning.loop as loop
+    import relevance_plan.planning.run as run
 
     def refuse(*args, **kwargs):
         raise UnsupportedFeatureError("a construct the analysis does not know")
 
-    monkeypatch.setattr(loop, "score_problem", refuse)
+    monkeypatch.setattr(run, "score_problem", refuse)
     messages = []
     result = plan_task(
         *move_files,

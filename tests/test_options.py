@@ -14,7 +14,7 @@ from support import COFFEE_DOMAIN, coffee_problem, invoke, one_line_error, run, 
 from relevance_plan.cli import main
 from relevance_plan.cli.choices import CheckedName, NamedChoice, NamedChoices
 from relevance_plan.cli.common import handle_errors
-from relevance_plan.cli.numbers import Number
+from relevance_plan.cli.numbers import NumberOption
 from relevance_plan.exitcodes import ExitCode
 
 
@@ -36,7 +36,7 @@ def _numeric_options() -> list[tuple[str, click.Parameter]]:
         (name, param)
         for name, command in _commands().items()
         for param in command.params
-        if isinstance(param.type, (click.types.IntParamType, click.types.FloatParamType, Number))
+        if isinstance(param.type, (click.types.IntParamType, click.types.FloatParamType, NumberOption))
     ]
 
 
@@ -64,7 +64,7 @@ def arguments(tmp_path):
 def test_every_numeric_option_is_checked_in_one_place():
     found = _numeric_options()
     assert {name for name, _ in found} >= {"plan", "learn", "compare", "report", "generate", "demo", "sweep"}
-    unchecked = [f"{name} {param.opts[0]}" for name, param in found if not isinstance(param.type, Number)]
+    unchecked = [f"{name} {param.opts[0]}" for name, param in found if not isinstance(param.type, NumberOption)]
     assert not unchecked
 
 
@@ -189,7 +189,7 @@ def test_validators_as_a_comma_list_or_repeated(tmp_path):
 
 @pytest.mark.planner
 def test_plan_with_builtin_and_val_as_validation_md_writes_it(tmp_path):
-    from relevance_plan.planning.validate import val_available
+    from relevance_plan.planning.validation import val_available
 
     if not val_available():
         pytest.skip("VAL is not installed")
@@ -208,3 +208,35 @@ def test_learns_old_time_limit_is_a_deprecated_name_for_timeout(tmp_path):
     code, _, stderr = run(*learn, "--time-limit", "5", "--timeout", "5")
     assert code == ExitCode.USAGE and "--timeout only" in one_line_error(stderr)
     assert not (tmp_path / "m.json").exists()
+
+
+# --------------------------------------------------------------------------- the method, one spelling
+
+
+def test_the_method_is_one_enum_spelled_one_way_everywhere():
+    import json
+
+    from relevance_plan.cli.common import method_option
+    from relevance_plan.errors import UsageError
+    from relevance_plan.planning.methods import METHODS, Method
+    from relevance_plan.planning.options import PlanOptions
+    from relevance_plan.planning.planners.fast_downward import head_start
+    from relevance_plan.planning.results import PlanResult, PlanStatus
+
+    options = PlanOptions(method="pure")
+    assert options.method is Method.PURE and not options.method.prunes and not options.narrows_first
+    assert PlanOptions().method is Method.RELEVANCE and PlanOptions().narrows_first
+    assert METHODS == tuple(method.value for method in Method) == ("relevance", "pure", "random", "oracle")
+    assert f"{Method.ORACLE}" == str(Method.ORACLE) == "oracle" == Method.ORACLE
+    result = PlanResult(method=options.method, status=PlanStatus.SOLVED)
+    assert json.loads(json.dumps(result.to_json()))["method"] == "pure"
+    assert head_start.DEFAULT_METHOD is Method.RELEVANCE
+    with pytest.raises(UsageError, match="unknown method 'puree' \\(choose from: relevance, pure, random, oracle\\)"):
+        PlanOptions(method="puree")
+
+    @method_option
+    def command(method):
+        pass
+
+    (choice,) = [param for param in command.__click_params__ if param.name == "method"]
+    assert tuple(choice.type.choices) == METHODS and choice.default == Method.RELEVANCE

@@ -137,3 +137,16 @@ def test_nothing_to_clone_is_said_not_skipped():
     assert pad_with_clones(domain, problem, 0) is problem
     with pytest.raises(UsageError, match="at least 0"):
         pad_with_clones(domain, problem, -1)
+
+
+def test_the_padded_worlds_are_written_for_the_shipped_domains():
+    from relevance_plan.data import DOMAINS_DIR
+    from relevance_plan.generators import padded
+
+    for name, text, problem in (
+        ("blocksworld-typed", padded.BLOCKSWORLD_DOMAIN, padded.blocksworld_problem(5, seed=1)),
+        ("gripper-typed", padded.GRIPPER_DOMAIN, padded.gripper_problem(5)),
+    ):
+        assert text == (DOMAINS_DIR / name / "domain.pddl").read_text(encoding="utf-8")
+        domain = read_domain(text)
+        assert read_problem(problem, domain).domain_name == domain.name == name

@@ -11,8 +11,8 @@ from support import invoke, write_file
 from relevance_plan.errors import counted
 from relevance_plan.io import load_domain, load_problem
 from relevance_plan.pddl.plans import read_plan
-from relevance_plan.planning.loop import plan_cost_of
-from relevance_plan.planning.validate import validate_plan
+from relevance_plan.planning.summary import plan_cost_of
+from relevance_plan.planning.validation import validate_plan
 
 ROADS = """(define (domain roads)
   (:requirements :typing :action-costs)

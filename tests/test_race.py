@@ -9,9 +9,10 @@ import time
 import pytest
 from support import planner_script, process_gone
 
-from relevance_plan.planning.loop import PlanOptions, plan_task
+from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.race import Race, race_by_default, usable_cores
 from relevance_plan.planning.results import AttemptStatus, PlanStatus
+from relevance_plan.planning.run import plan_task
 from relevance_plan.supervision.process import CancelScope, cancel_scope
 
 # A planner that hangs (after noting its pid) on one kind of input and asks Fast Downward on the other.

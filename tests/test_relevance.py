@@ -8,8 +8,8 @@ from support import coffee_problem
 
 from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.errors import MissingExtraError, ModelError, UsageError
+from relevance_plan.generators import WORLDS, Settings
 from relevance_plan.generators.padded import BLOCKSWORLD_DOMAIN, GRIPPER_DOMAIN, blocksworld_problem, gripper_problem
-from relevance_plan.generators.sized import generate_sized_problem
 from relevance_plan.io import load_domain
 from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.relevance.analysis.constraint_rules import infer_constraint_rules, single_valued_predicates
@@ -318,7 +318,7 @@ def test_goal_scorer_on_classic_domains():
 
 @pytest.mark.parametrize("world,size", [("miconic-manygoals", 200), ("logistics-manygoals-typed", 120)])
 def test_goal_regression_checks_the_initial_state_as_a_full_scan_would(world, size):
-    generated = generate_sized_problem(world, 1, 1, size)
+    generated = WORLDS[world].problem(1, 1, Settings(size=size))
     domain = load_domain(DOMAINS_DIR / generated.sidecar["domain"] / "domain.pddl")
     problem = read_problem(generated.pddl_text, domain)
     regression = _Regression(domain, problem, index_init(problem))

@@ -7,7 +7,7 @@ import random
 import pytest
 
 from relevance_plan.data import DOMAINS_DIR
-from relevance_plan.generators.sized import NEW_WORLDS, generate_sized_problem
+from relevance_plan.generators import WORLDS, Settings
 from relevance_plan.io import load_domain
 from relevance_plan.pddl.parser import read_problem
 from relevance_plan.relevance.analysis.distances import NearestBetween, ObjectGraph, graph_distances, walk_bounds
@@ -17,7 +17,7 @@ from relevance_plan.relevance.selection.repair import REPAIR_MAX_FAN, RepairOrde
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
 
 # (world, size): a building, many-goal worlds with trucks and airplanes, the grid, temporal and numeric ones
-WORLDS = [
+CASES = [
     ("scenegraph", 500),
     ("logistics-manygoals", 120),
     ("miconic-manygoals-typed", 300),
@@ -29,8 +29,8 @@ WORLDS = [
 
 
 def sized_task(world: str, seed: int, size: int | None = None) -> PlanningTask:
-    generated = generate_sized_problem(world, seed, 1, size)
-    folder = NEW_WORLDS[world].domain if world in NEW_WORLDS else world
+    generated = WORLDS[world].problem(seed, 1, Settings(size=size))
+    folder = WORLDS[world].domain
     domain = load_domain(DOMAINS_DIR / folder / "domain.pddl")
     return PlanningTask(domain, read_problem(generated.pddl_text, domain))
 
@@ -44,7 +44,7 @@ def sorted_by_sums(task: PlanningTask, graph, sources, targets, hub, far) -> lis
     return [(toward, name) for total, toward, name in keys if total < far]
 
 
-@pytest.mark.parametrize(("world", "size"), WORLDS)
+@pytest.mark.parametrize(("world", "size"), CASES)
 @pytest.mark.parametrize("max_fan", [REPAIR_MAX_FAN, None])
 def test_the_search_gives_the_objects_in_the_order_of_sorting_them_all(world, size, max_fan):
     task = sized_task(world, 4, size)
@@ -103,7 +103,7 @@ def without_search(monkeypatch):
     monkeypatch.setattr(NearestBetween, "groups", exhausted)
 
 
-@pytest.mark.parametrize(("world", "size"), WORLDS)
+@pytest.mark.parametrize(("world", "size"), CASES)
 def test_the_repair_keeps_what_it_kept_when_every_ranking_sorted_all(world, size, monkeypatch):
     searches = []
     monkeypatch.setattr(NearestBetween, "groups", counted(NearestBetween.groups, searches))
@@ -172,7 +172,7 @@ def missing_by_sorting(order: RepairOrder, kept: set[str]) -> list[str]:
     return sorted(key[2] for key in best.values())
 
 
-@pytest.mark.parametrize(("world", "size"), WORLDS)
+@pytest.mark.parametrize(("world", "size"), CASES)
 def test_the_members_of_missing_classes_are_those_ranking_every_object_gives(world, size):
     task = sized_task(world, 5, size)
     rng = random.Random(world)

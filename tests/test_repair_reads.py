@@ -8,7 +8,7 @@ import random
 import pytest
 
 from relevance_plan.data import DOMAINS_DIR
-from relevance_plan.generators.sized import generate_sized_problem
+from relevance_plan.generators import WORLDS, Settings
 from relevance_plan.io import load_domain
 from relevance_plan.pddl.parser import read_problem
 from relevance_plan.relevance.analysis.distances import GrowingDistances, ObjectGraph, graph_distances
@@ -22,7 +22,7 @@ from relevance_plan.session.state import LiveIndex
 
 def scenegraph_task(size: int, seed: int, **fields) -> PlanningTask:
     domain = load_domain(DOMAINS_DIR / "scenegraph" / "domain.pddl")
-    problem = read_problem(generate_sized_problem("scenegraph", seed, 1, size).pddl_text, domain)
+    problem = read_problem(WORLDS["scenegraph"].problem(seed, 1, Settings(size=size)).pddl_text, domain)
     return PlanningTask(domain, problem, **fields)
 
 

@@ -40,35 +40,28 @@ SIZED = {
 def cases() -> Iterator[tuple[str, Path, str]]:
     """(case name, domain file, problem text): the shipped scenes, then generated problems by world and seed."""
     from relevance_plan.data import DOMAINS_DIR, PROBLEMS_DIR
-    from relevance_plan.generators import (
-        SIZED_WORLDS,
-        WORLD_NAMES,
-        generate_problem,
-        generate_sized_problem,
-        generate_variant_problem,
-    )
-    from relevance_plan.generators.kitchen_variants import KITCHEN_VARIANTS
-    from relevance_plan.generators.sized import NEW_WORLDS
+    from relevance_plan.generators import WORLDS
 
     for problem in sorted(PROBLEMS_DIR.glob("*.pddl")):
         yield f"shipped/{problem.stem}", DOMAINS_DIR / problem.stem.split("-")[0] / "domain.pddl", problem.read_text()
-    for world in WORLD_NAMES:
-        for difficulty in ("simple", "hard"):
+    for world in WORLDS.values():
+        for name, settings in _settings(world):
             for seed in SEEDS:
-                generated = generate_problem(world, difficulty, seed, 1)
-                yield f"{world}/{difficulty}/{seed}", DOMAINS_DIR / world / "domain.pddl", generated.pddl_text
-    for world in KITCHEN_VARIANTS:
-        for seed in SEEDS:
-            generated = generate_variant_problem(world, "simple", seed, 1)
-            yield f"{world}/simple/{seed}", DOMAINS_DIR / world / "domain.pddl", generated.pddl_text
-    for world in SIZED_WORLDS:
-        size = SIZED.get(world.removesuffix("-typed"))
-        if size is None:
-            continue
-        for seed in SEEDS:
-            generated = generate_sized_problem(world, seed, 1, size)
-            folder = NEW_WORLDS[world].domain if world in NEW_WORLDS else world
-            yield f"{world}/{size}/{seed}", DOMAINS_DIR / folder / "domain.pddl", generated.pddl_text
+                generated = world.problem(seed, 1, settings)
+                yield f"{world.name}/{name}/{seed}", world.domain_path, generated.pddl_text
+
+
+def _settings(world) -> list[tuple[str, object]]:
+    """(the case's middle name, the settings) of each case of ``world``: a kitchen world's
+    difficulties, a variant's simple one, a sized world's size from SIZED (none: not a case)."""
+    from relevance_plan.generators import KITCHEN, KITCHEN_VARIANT, Settings
+
+    if world.family == KITCHEN:
+        return [(difficulty, Settings(difficulty)) for difficulty in ("simple", "hard")]
+    if world.family == KITCHEN_VARIANT:
+        return [("simple", Settings("simple"))]
+    size = SIZED.get(world.base)
+    return [] if size is None else [(str(size), Settings(size=size))]
 
 
 def first_selection(domain: Path, problem_text: str) -> list[str]:
@@ -88,11 +81,9 @@ def test_the_record_covers_every_case():
 
 
 def groups() -> list[str]:
-    from relevance_plan.generators import SIZED_WORLDS, WORLD_NAMES
-    from relevance_plan.generators.kitchen_variants import KITCHEN_VARIANTS
+    from relevance_plan.generators import WORLDS
 
-    sized = [world for world in SIZED_WORLDS if world.removesuffix("-typed") in SIZED]
-    return ["shipped", *WORLD_NAMES, *KITCHEN_VARIANTS, *sized]
+    return ["shipped", *(name for name, world in WORLDS.items() if _settings(world))]
 
 
 @pytest.mark.parametrize("world", groups())

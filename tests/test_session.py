@@ -15,10 +15,10 @@ from relevance_plan.generators.padded import BLOCKSWORLD_DOMAIN, blocksworld_pro
 from relevance_plan.io import load_domain, load_task
 from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.pddl.plans import read_plan
-from relevance_plan.planning.loop import PlanOptions
+from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.planners.registry import make_planner
 from relevance_plan.planning.results import PlanStatus
-from relevance_plan.planning.validate import validate_plan
+from relevance_plan.planning.validation import validate_plan
 from relevance_plan.relevance.analysis.task import PlanningTask
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
 from relevance_plan.session import TRIGGERS, Session

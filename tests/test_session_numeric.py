@@ -8,7 +8,7 @@ import pytest
 from support import run
 
 from relevance_plan import Session
-from relevance_plan.generators import generate_variant_suite
+from relevance_plan.generators import WORLDS, Settings
 from relevance_plan.io import load_task
 from relevance_plan.pddl.model import goal_objects
 
@@ -16,7 +16,7 @@ from relevance_plan.pddl.model import goal_objects
 @pytest.fixture(scope="module")
 def numeric_suite(tmp_path_factory):
     out = tmp_path_factory.mktemp("coffee-numeric")
-    generate_variant_suite("coffee-numeric", "simple", 1, 1, out)
+    WORLDS["coffee-numeric"].suite(1, 1, out, Settings("simple"))
     problem = sorted(p for p in out.glob("*.pddl") if p.name != "domain.pddl")[0]
     return out / "domain.pddl", problem
 

@@ -8,8 +8,7 @@ import random
 import pytest
 
 from relevance_plan.data import DOMAINS_DIR
-from relevance_plan.generators import generate_variant_suite
-from relevance_plan.generators.sized import generate_sized_problem
+from relevance_plan.generators import WORLDS, Settings
 from relevance_plan.io import load_domain, load_task
 from relevance_plan.pddl.formulas import names_in
 from relevance_plan.pddl.parser import read_problem
@@ -33,7 +32,7 @@ def assert_indexed_as_written(scene: LiveScene) -> None:
 
 def test_the_index_follows_facts_objects_and_removals_as_the_written_state_reads():
     domain = load_domain(DOMAINS_DIR / "scenegraph" / "domain.pddl")
-    scene = LiveScene(domain, read_problem(generate_sized_problem("scenegraph", 4, 1, 150).pddl_text, domain))
+    scene = LiveScene(domain, read_problem(WORLDS["scenegraph"].problem(4, 1, Settings(size=150)).pddl_text, domain))
     assert_indexed_as_written(scene)
     rng = random.Random(4)
     places = [n for n, t in scene.objects.items() if t == "place"]
@@ -61,7 +60,7 @@ def test_the_index_follows_facts_objects_and_removals_as_the_written_state_reads
 
 
 def test_numeric_terms_link_objects_after_the_facts_in_the_order_values_were_first_set(tmp_path):
-    generate_variant_suite("coffee-numeric", "simple", 1, 1, tmp_path)
+    WORLDS["coffee-numeric"].suite(1, 1, tmp_path, Settings("simple"))
     problem_path = sorted(p for p in tmp_path.glob("*.pddl") if p.name != "domain.pddl")[0]
     domain, problem = load_task(tmp_path / "domain.pddl", problem_path)
     scene = LiveScene(domain, problem)
@@ -76,7 +75,7 @@ def test_numeric_terms_link_objects_after_the_facts_in_the_order_values_were_fir
 
 def test_the_snapshot_is_made_once_per_change_and_each_change_is_recorded_once():
     domain = load_domain(DOMAINS_DIR / "scenegraph" / "domain.pddl")
-    scene = LiveScene(domain, read_problem(generate_sized_problem("scenegraph", 2, 1, 60).pddl_text, domain))
+    scene = LiveScene(domain, read_problem(WORLDS["scenegraph"].problem(2, 1, Settings(size=60)).pddl_text, domain))
     first = scene.snapshot_problem()
     assert scene.snapshot_problem() is first
     receptacle = next(n for n, t in scene.objects.items() if t == "receptacle")
@@ -94,7 +93,7 @@ def test_the_snapshot_is_made_once_per_change_and_each_change_is_recorded_once()
 
 def test_the_objects_are_written_grouped_by_type_in_the_order_they_came():
     domain = load_domain(DOMAINS_DIR / "scenegraph" / "domain.pddl")
-    scene = LiveScene(domain, read_problem(generate_sized_problem("scenegraph", 2, 1, 60).pddl_text, domain))
+    scene = LiveScene(domain, read_problem(WORLDS["scenegraph"].problem(2, 1, Settings(size=60)).pddl_text, domain))
     scene.add_object("cup_new", "item", "cup_new")  # items come last: the order stays the scene's own
     scene.add_object("sink_new", "receptacle", "sink_new")  # a receptacle after the items: written with its type
     scene.add_object("lamp_new", "item", "lamp_new")

@@ -9,8 +9,8 @@ import random
 import pytest
 
 from relevance_plan.data import DOMAINS_DIR
+from relevance_plan.generators import WORLDS, Settings
 from relevance_plan.generators.scenegraph import SceneGraphEvents
-from relevance_plan.generators.sized import generate_sized_problem
 from relevance_plan.io import load_domain
 from relevance_plan.pddl.formulas import literals
 from relevance_plan.pddl.parser import read_problem
@@ -28,7 +28,7 @@ def scene_session(size: int, seed: int, new_place_first: bool = False) -> tuple[
     """A session on a generated scene, and its events (``new_place_first``: every item's move seen in
     the new receptacle before it leaves the old)."""
     domain = load_domain(SCENEGRAPH_DOMAIN)
-    problem = read_problem(generate_sized_problem("scenegraph", seed, 1, size).pddl_text, domain)
+    problem = read_problem(WORLDS["scenegraph"].problem(seed, 1, Settings(size=size)).pddl_text, domain)
     session = Session(domain, problem, ScoringOptions())
     goal = [(atom.predicate, *atom.args) for atom, _ in literals(problem.goal)]
     rng = random.Random(seed)

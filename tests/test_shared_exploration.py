@@ -8,7 +8,7 @@ import random
 import pytest
 
 from relevance_plan.data import DOMAINS_DIR
-from relevance_plan.generators.sized import NEW_WORLDS, generate_sized_problem
+from relevance_plan.generators import WORLDS, Settings
 from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.relevance.analysis.task import PlanningTask
 from relevance_plan.relevance.reachability import exploration, schemas
@@ -17,12 +17,12 @@ from relevance_plan.relevance.reachability.exploration import relaxed_reachabili
 from relevance_plan.relevance.selection import repair
 from relevance_plan.relevance.setup import ScoringOptions, score_problem
 
-WORLDS = ("logistics-manygoals", "logistics-manygoals-typed", "miconic-manygoals", "miconic-manygoals-typed")
+CASES = ("logistics-manygoals", "logistics-manygoals-typed", "miconic-manygoals", "miconic-manygoals-typed")
 
 
 def task_of(world: str, seed: int, size: int) -> tuple[PlanningTask, dict]:
-    problem = generate_sized_problem(world, seed, 1, size)
-    domain = read_domain((DOMAINS_DIR / NEW_WORLDS[world].domain / "domain.pddl").read_text())
+    problem = WORLDS[world].problem(seed, 1, Settings(size=size))
+    domain = read_domain(WORLDS[world].domain_path.read_text())
     return PlanningTask(domain, read_problem(problem.pddl_text, domain)), problem.sidecar
 
 
@@ -56,7 +56,7 @@ def holds_relaxed(task: PlanningTask, check: exploration.Reachability) -> bool:
     return all(atom in facts for atom in goal)
 
 
-@pytest.mark.parametrize("world", WORLDS)
+@pytest.mark.parametrize("world", CASES)
 def test_the_shared_class_is_found_and_decides_as_the_plain_check(monkeypatch, world):
     task, sidecar = task_of(world, 4, 240)
     shared = schemas.relaxed_task(task).shared

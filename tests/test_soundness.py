@@ -27,8 +27,8 @@ from support import (
 
 from relevance_plan.io import load_task
 from relevance_plan.pddl.parser import read_domain, read_problem
-from relevance_plan.planning.loop import PlanOptions
-from relevance_plan.planning.validate import validate_plan
+from relevance_plan.planning.options import PlanOptions
+from relevance_plan.planning.validation import validate_plan
 from relevance_plan.relevance.analysis.soundness import KeptObjects
 from relevance_plan.relevance.analysis.task import PlanningTask
 from relevance_plan.relevance.setup import score_problem

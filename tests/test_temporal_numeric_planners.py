@@ -17,14 +17,15 @@ from support import run, task_fixture, write_task
 from relevance_plan.errors import UnsupportedFeatureError
 from relevance_plan.io import load_task
 from relevance_plan.pddl.plans import PlanStep, format_plan, read_plan
-from relevance_plan.planning.loop import PlanOptions, plan_task
+from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.planners import auto
 from relevance_plan.planning.planners import requirements as f
 from relevance_plan.planning.planners.base import PlannerStatus
 from relevance_plan.planning.planners.lpg import classify, lpg_binary, read_lpg_plan
 from relevance_plan.planning.planners.registry import make_planner
 from relevance_plan.planning.results import PlanStatus
-from relevance_plan.planning.validate import ValidationStatus, validate_builtin, validate_with_up
+from relevance_plan.planning.run import plan_task
+from relevance_plan.planning.validation import ValidationStatus, validate_builtin, validate_with_up
 from relevance_plan.supervision.process import ProcessRun
 
 JAVA_MISSING = "Java runtime not found: apt-get install default-jre-headless"

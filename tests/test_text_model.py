@@ -545,9 +545,8 @@ def test_a_near_miss_of_a_name_is_a_question_naming_the_closest_names(kitchen, t
 
 @pytest.mark.parametrize("vocabulary", [ModelVocabulary.OBJECTIVE, ModelVocabulary.TASK])
 def test_one_token_near_no_name_is_no_entry_of_the_model_never_words(kitchen, vocabulary):
-    from relevance_plan.relevance.text.understanding import understand
-
     from relevance_plan.errors import ModelError
+    from relevance_plan.relevance.scoring.word_understanding import understand
 
     match = match_text("nosuch", kitchen, vocabulary, text_model=_Refusing())
     assert match.status is MatchStatus.UNKNOWN_NAME and match.chosen is None
@@ -564,9 +563,8 @@ def test_an_object_kind_of_one_token_is_still_words(kitchen):
 
 
 def test_a_cue_of_one_token_is_a_name_of_a_task_or_an_objective(kitchen):
-    from relevance_plan.relevance.text.understanding import understand_cue
-
     from relevance_plan.errors import ModelError
+    from relevance_plan.relevance.scoring.word_understanding import understand_cue
 
     assert understand_cue("coffee-time", kitchen).chosen == "coffee-time"
     assert understand_cue("make-coffee", kitchen).chosen == "make-coffee"

@@ -6,7 +6,7 @@ import pytest
 
 import relevance_plan as rp
 from relevance_plan.data import DOMAINS_DIR
-from relevance_plan.generators.sized import generate_sized_problem
+from relevance_plan.generators import WORLDS, Settings
 from relevance_plan.io import load_sources
 from relevance_plan.relevance.analysis.task import PlanningTask
 from relevance_plan.relevance.reachability.exploration import relaxed_reachability
@@ -80,7 +80,7 @@ def test_the_repaired_selection_is_admitted_by_the_sharper_check():
 @pytest.mark.parametrize("index", range(3))
 def test_the_generated_worlds_full_problems_and_first_selections_are_admitted(world, index):
     # every generated problem is solvable: the check must never refute it, nor the first selection
-    generated = generate_sized_problem(world, 0, index, 60)
+    generated = WORLDS[world].problem(0, index, Settings(size=60))
     selection = rp.prune(DOMAINS_DIR / world / "domain.pddl", generated.pddl_text)
     assert timed_relaxed_reachability(selection.task, selection.task.problem.objects.keys()) is True
     assert timed_relaxed_reachability(selection.task, selection.kept) is True
@@ -163,7 +163,7 @@ def test_without_numeric_conditions_effects_or_goals_the_check_is_skipped_for_it
 
     assert applies(task_of(ROVER_DOMAIN, rover_problem(3)))
     # durations read from functions, but no number in a condition, an effect or the goal
-    generated = generate_sized_problem("driverlog-temporal", 0, 0, 30)
+    generated = WORLDS["driverlog-temporal"].problem(0, 0, Settings(size=30))
     domain_text = (DOMAINS_DIR / "driverlog-temporal" / "domain.pddl").read_text()
     task = task_of(domain_text, generated.pddl_text)
     assert task.domain.temporal and task.domain.numeric and not applies(task)

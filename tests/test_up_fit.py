@@ -25,13 +25,14 @@ from unified_planning.shortcuts import OneshotPlanner, PlanValidator, get_enviro
 
 from relevance_plan.io import load_task  # noqa: E402
 from relevance_plan.pddl.plans import read_plan  # noqa: E402
-from relevance_plan.planning.loop import PlanOptions, plan_task  # noqa: E402
+from relevance_plan.planning.options import PlanOptions  # noqa: E402
 from relevance_plan.planning.planners import auto  # noqa: E402
 from relevance_plan.planning.planners import requirements as f  # noqa: E402
 from relevance_plan.planning.planners.up.child import _plan_lines  # noqa: E402
 from relevance_plan.planning.planners.up.fitting import fit_problem  # noqa: E402
 from relevance_plan.planning.results import PlanStatus  # noqa: E402
-from relevance_plan.planning.validate import validate_builtin  # noqa: E402
+from relevance_plan.planning.run import plan_task  # noqa: E402
+from relevance_plan.planning.validation import validate_builtin  # noqa: E402
 
 # A robot carries parcels between places; rooms and a yard are places, parcels are things.
 # The distance is a static function with whole values, undefined from a place to itself;

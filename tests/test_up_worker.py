@@ -15,7 +15,7 @@ import pytest
 from support import BIG_DOMAIN, SMALL_GRIPPER_DOMAIN, big_problem, process_gone, small_gripper_problem
 
 from relevance_plan.generators.padded import GRIPPER_DOMAIN, gripper_problem
-from relevance_plan.planning.loop import PlanOptions, plan_task
+from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.planners.base import PlannerStatus
 from relevance_plan.planning.planners.registry import make_planner
 from relevance_plan.planning.planners.supply import warm_planners, warm_up
@@ -23,6 +23,7 @@ from relevance_plan.planning.planners.up.adapter import engine_module_installed
 from relevance_plan.planning.planners.up.pool import COPY_NICE, EngineWorker, ForkedWorker, current_pool
 from relevance_plan.planning.race import THREAD_NAME
 from relevance_plan.planning.results import PlanStatus
+from relevance_plan.planning.run import plan_task
 
 needs_pyperplan = pytest.mark.skipif(not engine_module_installed("pyperplan"), reason="up-pyperplan not installed")
 

@@ -16,7 +16,7 @@ from support import run, write_file
 
 from relevance_plan.io import load_task
 from relevance_plan.pddl.plans import Plan, read_plan
-from relevance_plan.planning.validate import (
+from relevance_plan.planning.validation import (
     ValidationStatus,
     val_available,
     validate_builtin,
@@ -270,8 +270,8 @@ def test_val_judges_a_plan_already_found_whatever_stops_the_planners(cost_task):
     """The race stops the other side's planners through the cancel scope of their thread; VAL, judging
     a plan that side found, is not one of them (when it was, a plan of builtin,val was judged by
     builtin alone whenever the other side decided first)."""
+    from relevance_plan.planning.validation.val_program import run_val
     from relevance_plan.supervision.process import CancelScope, cancel_scope
-    from relevance_plan.supervision.val import run_val
 
     stopped = CancelScope()
     stopped.cancel()

@@ -6,7 +6,7 @@ from support import coffee_problem
 from relevance_plan.io import load_domain
 from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.pddl.plans import Plan, PlanStep, format_plan, read_plan
-from relevance_plan.planning.validate import (
+from relevance_plan.planning.validation import (
     ValidationStatus,
     validate_builtin,
     validate_plan,
@@ -110,7 +110,7 @@ def test_adl_features_quantifiers_conditional_effects_equality():
 
 def test_no_runnable_validator_is_reported_not_guessed(task, monkeypatch):
     domain, problem = task
-    from relevance_plan.supervision import val
+    from relevance_plan.planning.validation import val_program as val
 
     monkeypatch.setattr(val, "find_validate", lambda: None)
     result = validate_plan(domain, problem, read_plan(COFFEE_PLAN), validators=("val",))

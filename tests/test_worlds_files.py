@@ -10,8 +10,7 @@ import pytest
 from support import invoke, one_line_error, outputs_under_hash_seeds
 
 from relevance_plan.data import DOMAINS_DIR
-from relevance_plan.generators.kitchen_variants import KITCHEN_VARIANTS, generate_variant_problem
-from relevance_plan.generators.sized import NEW_WORLDS, generate_sized_problem
+from relevance_plan.generators import KITCHEN_VARIANT, MANY_OBJECT, WORLDS, Settings, worlds_of
 from relevance_plan.pddl.formatter import format_domain, format_problem
 from relevance_plan.pddl.parser import read_domain, read_problem
 
@@ -20,14 +19,14 @@ SMALL = {"scenegraph": 200, "miconic-manygoals": 200, "miconic-manygoals-typed":
 
 def generated(world: str, seed: int = 4, index: int = 2) -> tuple[str, str, dict]:
     """(domain folder, problem text, sidecar) of one small problem of ``world``."""
-    if world in KITCHEN_VARIANTS:
-        problem = generate_variant_problem(world, "hard", seed, index, distractors=12)
+    if WORLDS[world].family == KITCHEN_VARIANT:
+        problem = WORLDS[world].problem(seed, index, Settings("hard", distractors=12))
         return world, problem.pddl_text, problem.sidecar
-    problem = generate_sized_problem(world, seed, index, SMALL.get(world, 80))
-    return NEW_WORLDS[world].domain, problem.pddl_text, problem.sidecar
+    problem = WORLDS[world].problem(seed, index, Settings(size=SMALL.get(world, 80)))
+    return WORLDS[world].domain, problem.pddl_text, problem.sidecar
 
 
-ALL_NEW = sorted(KITCHEN_VARIANTS) + sorted(NEW_WORLDS)
+ALL_NEW = sorted(world.name for family in (KITCHEN_VARIANT, MANY_OBJECT) for world in worlds_of(family))
 
 
 @pytest.mark.parametrize("world", ALL_NEW)
@@ -90,8 +89,7 @@ def test_cli_writes_identical_suites(tmp_path, world, options):
     assert tree == read_tree(tmp_path / "b")
     manifest = json.loads(tree["suite.json"])
     assert manifest["world"] == world and manifest["seed"] == 9 and len(manifest["problems"]) == 2
-    folder = world if world in KITCHEN_VARIANTS else NEW_WORLDS[world].domain
-    assert tree["domain.pddl"] == (DOMAINS_DIR / folder / "domain.pddl").read_bytes()
+    assert tree["domain.pddl"] == WORLDS[world].domain_path.read_bytes()
     for entry in manifest["problems"]:
         sidecar = json.loads(tree[entry["sidecar"]])
         assert sidecar["world"] == world and sidecar["necessary"]
@@ -120,18 +118,33 @@ def test_cli_refuses_bad_options_in_one_line(tmp_path, arguments, message):
 
 ACROSS_PROCESSES = (
     "import sys\n"
-    "from relevance_plan.generators import generate_sized_problem, generate_variant_problem\n"
+    "from relevance_plan.generators import WORLDS, Settings\n"
     "for world in ('scenegraph', 'driverlog-temporal', 'zenotravel-numeric', 'logistics-manygoals'):\n"
-    "    sys.stdout.write(generate_sized_problem(world, 3, 1, 120).pddl_text)\n"
-    "sys.stdout.write(generate_variant_problem('cereal-temporal', 'hard', 3, 1).pddl_text)\n"
+    "    sys.stdout.write(WORLDS[world].problem(3, 1, Settings(size=120)).pddl_text)\n"
+    "sys.stdout.write(WORLDS['cereal-temporal'].problem(3, 1, Settings('hard')).pddl_text)\n"
 )
 
 
 def test_same_bytes_across_processes_and_hash_seeds():
     outputs = outputs_under_hash_seeds(ACROSS_PROCESSES)
     here = "".join(
-        generate_sized_problem(world, 3, 1, 120).pddl_text
+        WORLDS[world].problem(3, 1, Settings(size=120)).pddl_text
         for world in ("scenegraph", "driverlog-temporal", "zenotravel-numeric", "logistics-manygoals")
     )
-    here += generate_variant_problem("cereal-temporal", "hard", 3, 1).pddl_text
+    here += WORLDS["cereal-temporal"].problem(3, 1, Settings("hard")).pddl_text
     assert outputs[0] == outputs[1] == here
+
+
+def test_generate_names_every_world_of_the_registry_in_its_order():
+    from support import invoke
+
+    from relevance_plan.generators import WORLDS
+
+    # click wraps the help at hyphens too: "driverlog-" may end a line
+    shown = " ".join(invoke("generate", "--help").output.split()).replace("- ", "-")
+    # a typed form is named as its untyped world's "(each also as NAME-typed)"
+    missing = [name for name in WORLDS if name not in shown and name.removesuffix("-typed") not in shown]
+    assert not missing and "NAME-typed" in shown
+    unknown = invoke("generate", "no-such-world", "-o", "unused")
+    assert unknown.exit_code == 30
+    assert f"choose one of {', '.join(WORLDS)}" in unknown.stderr

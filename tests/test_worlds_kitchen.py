@@ -6,8 +6,7 @@ from __future__ import annotations
 import pytest
 
 from relevance_plan.data import DOMAINS_DIR
-from relevance_plan.generators.generate import generate_problem
-from relevance_plan.generators.kitchen_variants import KITCHEN_VARIANTS, NUMERIC, generate_variant_problem
+from relevance_plan.generators import KITCHEN_VARIANT, WORLDS, Settings, worlds_of
 from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.relevance.scoring.knowledge import (
     check_knowledge_model_applies,
@@ -15,7 +14,8 @@ from relevance_plan.relevance.scoring.knowledge import (
     load_knowledge_model,
 )
 
-CASES = [(world, difficulty) for world in KITCHEN_VARIANTS for difficulty in ("simple", "hard")]
+VARIANTS = [w.name for w in worlds_of(KITCHEN_VARIANT)]
+CASES = [(world, difficulty) for world in VARIANTS for difficulty in ("simple", "hard")]
 
 
 def parsed(folder: str, text: str):
@@ -26,15 +26,15 @@ def parsed(folder: str, text: str):
 @pytest.mark.parametrize("world,difficulty", CASES)
 @pytest.mark.parametrize("distractors", [None, 40])
 def test_variant_is_the_kitchen_problem_plus_numbers(world, difficulty, distractors):
-    variant = KITCHEN_VARIANTS[world]
-    kitchen = generate_problem(variant.base, difficulty, 8, 3, distractors)
-    problem = generate_variant_problem(world, difficulty, 8, 3, distractors)
+    variant = WORLDS[world]
+    kitchen = WORLDS[variant.base].problem(8, 3, Settings(difficulty, distractors))
+    problem = variant.problem(8, 3, Settings(difficulty, distractors))
     _, base = parsed(variant.base, kitchen.pddl_text)
     _, timed = parsed(world, problem.pddl_text)
     assert dict(timed.objects) == dict(base.objects) and timed.goal == base.goal
     added = timed.init - base.init
     assert base.init <= timed.init
-    assert added == ({("dock", kitchen.scene.robot_start)} if variant.kind == NUMERIC else set())
+    assert added == ({("dock", kitchen.scene.robot_start)} if world.endswith("-numeric") else set())
     for key in ("distractors", "constraints", "necessary", "relevant", "roles", "objects_total"):
         assert problem.sidecar[key] == kitchen.sidecar[key], key
     assert problem.sidecar["world"] == world and problem.sidecar["base_world"] == variant.base
@@ -46,7 +46,7 @@ def test_variant_is_the_kitchen_problem_plus_numbers(world, difficulty, distract
 
 def test_the_battery_always_allows_a_trip_through_the_dock():
     for index in range(1, 30):
-        problem = generate_variant_problem("coffee-numeric", "hard", 1, index)
+        problem = WORLDS["coffee-numeric"].problem(1, index, Settings("hard"))
         _, parsed_problem = parsed("coffee-numeric", problem.pddl_text)
         values = parsed_problem.numeric_init
         longest = max(v for k, v in values.items() if k[0] == "distance")
@@ -55,9 +55,9 @@ def test_the_battery_always_allows_a_trip_through_the_dock():
         assert problem.scene.robot_start in problem.sidecar["necessary"]
 
 
-@pytest.mark.parametrize("world", sorted(KITCHEN_VARIANTS))
+@pytest.mark.parametrize("world", sorted(VARIANTS))
 def test_the_base_worlds_knowledge_model_is_shipped_for_the_variant(world):
-    base = KITCHEN_VARIANTS[world].base
+    base = WORLDS[world].base
     path = find_knowledge_model(world, None)
     assert path == DOMAINS_DIR / world / "relevance.yaml"
     # A copy with its own domain name: every other line is the base world's.
@@ -73,16 +73,17 @@ def test_the_base_worlds_knowledge_model_is_shipped_for_the_variant(world):
 
 def test_a_variant_needs_a_known_difficulty_and_a_non_negative_distractor_count():
     from relevance_plan.errors import UsageError
+    from relevance_plan.generators.kitchen_variants import generate_variant_problem
 
     with pytest.raises(UsageError, match="difficulty"):
-        generate_variant_problem("coffee-temporal", "medium", 1, 1)
+        WORLDS["coffee-temporal"].problem(1, 1, Settings("medium"))
     with pytest.raises(UsageError, match="distractors"):
-        generate_variant_problem("cereal-temporal", "simple", 1, 1, distractors=-1)
+        WORLDS["cereal-temporal"].problem(1, 1, Settings("simple", distractors=-1))
     with pytest.raises(UsageError, match="kitchen variant"):
         generate_variant_problem("coffee", "simple", 1, 1)
 
 
-@pytest.mark.parametrize("world", sorted(KITCHEN_VARIANTS))
+@pytest.mark.parametrize("world", sorted(VARIANTS))
 def test_prune_scores_a_variant_with_the_shipped_model(tmp_path, world):
     import json
 

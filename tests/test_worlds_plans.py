@@ -16,12 +16,11 @@ from pathlib import Path
 import pytest
 
 from relevance_plan.data import DOMAINS_DIR
-from relevance_plan.generators.kitchen_variants import generate_variant_problem
-from relevance_plan.generators.sized import NEW_WORLDS, generate_sized_problem
+from relevance_plan.generators import WORLDS, Settings
 from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.pddl.plans import Plan, PlanStep, read_plan
-from relevance_plan.pddl.simulator import simulate
 from relevance_plan.pddl.writer import write_pruned_problem
+from relevance_plan.planning.validation import simulate
 
 pytestmark = pytest.mark.planner
 
@@ -90,14 +89,14 @@ def check_world(tmp_path: Path, folder: str, text: str, necessary: list[str], fu
     ],
 )
 def test_kitchen_variants_full_with_few_distractors(tmp_path, world, difficulty, distractors):
-    problem = generate_variant_problem(world, difficulty, 3, 1, distractors=distractors)
+    problem = WORLDS[world].problem(3, 1, Settings(difficulty, distractors=distractors))
     check_world(tmp_path, world, problem.pddl_text, problem.sidecar["necessary"])
 
 
 @pytest.mark.parametrize("world", ["coffee-temporal", "cereal-temporal", "coffee-numeric"])
 @pytest.mark.parametrize("difficulty", ["simple", "hard"])
 def test_kitchen_variants_necessary_set_with_the_papers_distractors(tmp_path, world, difficulty):
-    problem = generate_variant_problem(world, difficulty, 5, 2)
+    problem = WORLDS[world].problem(5, 2, Settings(difficulty))
     check_world(tmp_path, world, problem.pddl_text, problem.sidecar["necessary"], full=False)
 
 
@@ -113,8 +112,8 @@ def test_kitchen_variants_necessary_set_with_the_papers_distractors(tmp_path, wo
     ],
 )
 def test_sized_worlds_full_and_necessary(tmp_path, world, size):
-    problem = generate_sized_problem(world, 3, 1, size)
-    check_world(tmp_path, NEW_WORLDS[world].domain, problem.pddl_text, problem.sidecar["necessary"])
+    problem = WORLDS[world].problem(3, 1, Settings(size=size))
+    check_world(tmp_path, WORLDS[world].domain, problem.pddl_text, problem.sidecar["necessary"])
 
 
 @pytest.mark.slow
@@ -123,11 +122,11 @@ def test_sized_worlds_full_and_necessary(tmp_path, world, size):
     [("scenegraph", 500), ("driverlog-temporal", 100), ("zenotravel-numeric", 100), ("miconic-manygoals", 1000)],
 )
 def test_sized_worlds_at_benchmark_sizes(tmp_path, world, size):
-    problem = generate_sized_problem(world, 1, 1, size)
-    check_world(tmp_path, NEW_WORLDS[world].domain, problem.pddl_text, problem.sidecar["necessary"])
+    problem = WORLDS[world].problem(1, 1, Settings(size=size))
+    check_world(tmp_path, WORLDS[world].domain, problem.pddl_text, problem.sidecar["necessary"])
 
 
 @pytest.mark.slow
 def test_coffee_temporal_hard_full_size(tmp_path):
-    problem = generate_variant_problem("coffee-temporal", "hard", 1, 1)
+    problem = WORLDS["coffee-temporal"].problem(1, 1, Settings("hard"))
     check_world(tmp_path, "coffee-temporal", problem.pddl_text, problem.sidecar["necessary"])

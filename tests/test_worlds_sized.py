@@ -9,44 +9,47 @@ from collections import deque
 
 import pytest
 
-from relevance_plan.data import DOMAINS_DIR
-from relevance_plan.generators.classic import CLASSIC_WORLDS, generate_classic_problem
-from relevance_plan.generators.sized import NEW_WORLDS, SIZED_WORLDS, generate_sized_problem
+from relevance_plan.generators import CLASSIC, MANY_OBJECT, WORLDS, Settings, worlds_of
+from relevance_plan.generators.classic import generate_classic_problem
 from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.relevance.analysis.task import PlanningTask
 from relevance_plan.relevance.reachability.exploration import relaxed_reachability
 
 # sha256 over the twelve classic worlds (seed 7, index 2, size 80): text and sidecar, as the
 # generator wrote them before the sized worlds shared its code.
+# The newer worlds, made by size like the classic ones.
+NEWER = [world.name for world in worlds_of(MANY_OBJECT)]
 CLASSIC_DIGEST = "f130722851a82235b0d802d2a5790285ea05ac18e1c44fc3fe564403797db7e9"
 
 
 def task_of(world: str, seed: int, index: int, size: int):
-    problem = generate_sized_problem(world, seed, index, size)
-    domain = read_domain((DOMAINS_DIR / NEW_WORLDS[world].domain / "domain.pddl").read_text())
+    problem = WORLDS[world].problem(seed, index, Settings(size=size))
+    domain = read_domain(WORLDS[world].domain_path.read_text())
     return PlanningTask(domain, read_problem(problem.pddl_text, domain)), problem.sidecar
 
 
 def test_classic_worlds_keep_their_bytes():
     digest = hashlib.sha256()
-    for world in CLASSIC_WORLDS:
-        problem = generate_classic_problem(world, 7, 2, 80)
-        assert generate_sized_problem(world, 7, 2, 80) == problem
+    classic = worlds_of(CLASSIC)
+    for world in classic:
+        problem = generate_classic_problem(world.name, 7, 2, 80)
+        assert world.problem(7, 2, Settings(size=80)) == problem
         digest.update(problem.pddl_text.encode())
         digest.update(json.dumps(problem.sidecar, sort_keys=True).encode())
     assert digest.hexdigest() == CLASSIC_DIGEST
-    assert SIZED_WORLDS[: len(CLASSIC_WORLDS)] == CLASSIC_WORLDS
+    sized = [world for world in WORLDS.values() if world.sized]
+    assert sized[: len(classic)] == list(classic)
 
 
-@pytest.mark.parametrize("world", sorted(NEW_WORLDS))
+@pytest.mark.parametrize("world", sorted(NEWER))
 @pytest.mark.parametrize("size", [60, 400])
 def test_object_count_follows_the_size(world, size):
-    problem = generate_sized_problem(world, 3, 1, size)
+    problem = WORLDS[world].problem(3, 1, Settings(size=size))
     assert abs(problem.sidecar["objects_total"] - size) <= 0.05 * size + 6
     assert problem.sidecar["size"] == size and problem.sidecar["necessary"]
 
 
-@pytest.mark.parametrize("world", sorted(NEW_WORLDS))
+@pytest.mark.parametrize("world", sorted(NEWER))
 def test_necessary_reaches_the_goal_and_the_goal_needs_its_key_object(world):
     task, sidecar = task_of(world, 6, 1, 200)
     necessary = set(sidecar["necessary"])
@@ -66,7 +69,7 @@ def test_necessary_reaches_the_goal_and_the_goal_needs_its_key_object(world):
 
 @pytest.mark.parametrize("form", ["logistics-manygoals", "logistics-manygoals-typed"])
 def test_manygoal_logistics_has_every_package_in_the_goal_and_needs_one_airplane(form):
-    problem = generate_sized_problem(form, 2, 1, 200)
+    problem = WORLDS[form].problem(2, 1, Settings(size=200))
     task, _ = task_of(form, 2, 1, 200)
     objects = task.problem.objects
     kinds = {name: name.rstrip("0123456789-").removesuffix("-") for name in objects}
@@ -76,14 +79,14 @@ def test_manygoal_logistics_has_every_package_in_the_goal_and_needs_one_airplane
     assert len(airplanes) >= 200 // 4
     assert set(problem.sidecar["necessary"]) & airplanes == {"plane1"}
     untyped, typed = (
-        generate_sized_problem(f, 2, 1, 200) for f in ("logistics-manygoals", "logistics-manygoals-typed")
+        WORLDS[f].problem(2, 1, Settings(size=200)) for f in ("logistics-manygoals", "logistics-manygoals-typed")
     )
     assert untyped.sidecar["necessary"] == typed.sidecar["necessary"]
     assert "- airplane" in typed.pddl_text and "(airplane plane1)" in untyped.pddl_text
 
 
 def test_manygoal_miconic_serves_a_tenth_of_the_passengers():
-    problem = generate_sized_problem("miconic-manygoals", 2, 1, 1000)
+    problem = WORLDS["miconic-manygoals"].problem(2, 1, Settings(size=1000))
     passengers = [n for n in problem.sidecar["necessary"] if n.startswith("pass")]
     assert len(passengers) == len(problem.sidecar["goal_objects"]) == (1000 - 100) // 10
 
@@ -163,8 +166,8 @@ def test_zenotravel_planes_can_always_fly_slowly_after_refuelling():
     assert task.problem.metric.direction == "minimize"
 
 
-@pytest.mark.parametrize("world", sorted(NEW_WORLDS))
+@pytest.mark.parametrize("world", sorted(NEWER))
 def test_default_size_is_the_worlds_benchmark_size(world):
-    problem = generate_sized_problem(world, 1, 1)
-    assert problem.sidecar["size"] == NEW_WORLDS[world].default_size >= 100
-    assert problem == generate_sized_problem(world, 1, 1, NEW_WORLDS[world].default_size)
+    problem = WORLDS[world].problem(1, 1)
+    assert problem.sidecar["size"] >= 100
+    assert problem == WORLDS[world].problem(1, 1, Settings(size=problem.sidecar["size"]))

@@ -29,7 +29,7 @@ from relevance_plan.batch.jobs import Job, build_jobs
 from relevance_plan.batch.store import ResultKey, ResultStore, check_store_writable
 from relevance_plan.errors import UsageError, counted
 from relevance_plan.limits import DEFAULT_TIMEOUT, MAX_TIMEOUT
-from relevance_plan.planning.loop import PlanOptions
+from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.planners.registry import make_planner
 from relevance_plan.planning.results import PlanStatus
 from relevance_plan.progress import ProgressCallback, ProgressEvent, ignore

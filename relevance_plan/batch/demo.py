@@ -20,7 +20,7 @@ from relevance_plan.batch.compare import CompareSummary, check_compare_options, 
 from relevance_plan.batch.report import build_report, format_report
 from relevance_plan.batch.store import KEY_COLUMNS, ResultStore
 from relevance_plan.errors import InputFileError, UsageError
-from relevance_plan.planning.loop import METHODS, PlanOptions
+from relevance_plan.planning.options import METHODS, PlanOptions
 from relevance_plan.progress import ProgressCallback
 
 DEMO_SUITES = (("coffee", "simple"), ("cereal", "simple"))
@@ -88,7 +88,7 @@ def run_demo(
 def _run_in(
     workdir: Path, count: int, timeout: float, jobs: int, distractors: int, progress: ProgressCallback | None
 ) -> DemoRun:
-    from relevance_plan.generators.generate import generate_suite
+    from relevance_plan.generators.worlds import WORLDS, Settings
 
     try:
         workdir.mkdir(parents=True, exist_ok=True)
@@ -97,7 +97,7 @@ def _run_in(
     suites = []
     for world, difficulty in DEMO_SUITES:
         suite = workdir / "suites" / f"{world}-{difficulty}"
-        generate_suite(world, difficulty, count, DEMO_SEED, suite, distractors=distractors)
+        WORLDS[world].suite(count, DEMO_SEED, suite, Settings(difficulty, distractors))
         suites.append(suite)
     store_path = workdir / STORE_NAME
     options = PlanOptions(timeout=timeout)

@@ -22,7 +22,8 @@ from relevance_plan.batch.rows import error_row, result_row
 from relevance_plan.batch.store import ResultKey
 from relevance_plan.batch.suites import find_suite_problems, suite_name
 from relevance_plan.errors import InputFileError, PlannerError, RelevancePlanError, UsageError
-from relevance_plan.planning.loop import METHODS, PlanOptions, plan_task
+from relevance_plan.planning.options import METHODS, Method, PlanOptions
+from relevance_plan.planning.run import plan_task
 from relevance_plan.sidecar import read_sidecar_for
 
 
@@ -37,7 +38,7 @@ class Job:
     domain_path: str | None
     problem_path: str
     suite: str
-    method: str
+    method: Method
     seed: int
     options: PlanOptions
     input_error: str | None = None
@@ -84,18 +85,18 @@ def _sidecar_fields(problem_path: str) -> tuple[str | None, str | None]:
     return (sidecar.world, sidecar.difficulty) if sidecar is not None else (None, None)
 
 
-def parse_methods(methods: str | Iterable[str]) -> tuple[str, ...]:
+def parse_methods(methods: str | Iterable[str]) -> tuple[Method, ...]:
     """Methods from 'relevance,pure' or a sequence; duplicates dropped, order kept."""
     if isinstance(methods, str):
         methods = methods.split(",")
-    chosen: list[str] = []
+    chosen: list[Method] = []
     for method in (m.strip() for m in methods):
         if not method:
             continue
         if method not in METHODS:
             raise UsageError(f"unknown method '{method}' (choose from: {', '.join(METHODS)})")
         if method not in chosen:
-            chosen.append(method)
+            chosen.append(Method(method))
     if not chosen:
         raise UsageError(f"no method given (choose from: {', '.join(METHODS)})")
     return tuple(chosen)

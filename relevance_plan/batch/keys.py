@@ -20,7 +20,7 @@ from relevance_plan import __version__
 from relevance_plan.batch.store import ResultKey
 from relevance_plan.errors import InputFileError, RelevancePlanError
 from relevance_plan.io import load_domain, read_bytes
-from relevance_plan.planning.loop import PLAN_OPTION_FIELDS, PlanOptions
+from relevance_plan.planning.options import PLAN_OPTION_FIELDS, Method, PlanOptions
 from relevance_plan.planning.planners.registry import DEFAULT_PLANNER_CONFIG, make_planner
 from relevance_plan.relevance.scoring.knowledge import find_knowledge_model
 from relevance_plan.sidecar import sidecar_path
@@ -123,12 +123,12 @@ def config_fingerprint(options: PlanOptions, domain_path: str | None, problem_pa
     MODEL (a model retrained at the same path must not reuse rows), and for
     the oracle the sha256 of the sidecar (its ground truth).
     """
-    from relevance_plan.planning.validate import default_validators
+    from relevance_plan.planning.validation import default_validators
 
     unlisted = set(PLAN_OPTION_FIELDS) - set(FINGERPRINT_RULES)
     if unlisted:
         raise AssertionError(f"PlanOptions fields without a fingerprint rule: {sorted(unlisted)}")
-    pruning = options.method != "pure"
+    pruning = options.method.prunes
     config: dict[str, Any] = {"tool_version": __version__, "method": options.method}
     for name, rule in FINGERPRINT_RULES.items():
         if rule == "always" or (rule == "pruning" and pruning):
@@ -147,7 +147,7 @@ def config_fingerprint(options: PlanOptions, domain_path: str | None, problem_pa
         learned = options.scoring.learned_model_path
         if learned is not None:
             config["learned_model_hash"] = _file_hash(learned)
-        if options.method == "oracle" or options.scorer == "oracle":
+        if options.method is Method.ORACLE or options.scorer == "oracle":
             config["sidecar_hash"] = _file_hash(sidecar_path(problem_path))
     return config
 

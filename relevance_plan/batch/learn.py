@@ -33,7 +33,7 @@ from relevance_plan.pddl.model import Domain, Problem
 from relevance_plan.pddl.plans import Plan
 from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome
 from relevance_plan.planning.planners.registry import DEFAULT_PLANNER_CONFIG, make_planner
-from relevance_plan.planning.validate import validate_plan
+from relevance_plan.planning.validation import validate_plan
 from relevance_plan.relevance.analysis.task import PlanningTask
 from relevance_plan.relevance.scoring.learning.features import FeatureConfig, object_features
 from relevance_plan.relevance.scoring.learning.fit import LabelledProblem, fit_learned_model, with_hubs

@@ -50,7 +50,7 @@ from dataclasses import asdict, dataclass, field
 from typing import Any
 
 from relevance_plan.errors import UsageError
-from relevance_plan.planning.loop import METHODS
+from relevance_plan.planning.options import METHODS, Method
 
 FORMATS = ("markdown", "csv", "latex")
 NOT_APPLICABLE = "–"
@@ -180,12 +180,12 @@ def build_report(rows: Iterable[dict[str, Any]]) -> list[ReportRecord]:
         n = len(group)
         times = [job_time(r) for r in group]
         median = medians[(suite, method)]
-        pure = method == "pure"
+        pure = method == Method.PURE
         first_failures = sum(1 for r in group if r["first_attempt_status"] != SOLVED)
         final_failures = sum(1 for r in group if r["status"] not in (SOLVED, OUT_OF_TIME))
         fractions = [r["objects_kept"] / r["objects_total"] for r in group if r["objects_total"]]
         known = [float(r["plan_cost"]) for r in group if r["status"] == SOLVED and r.get("plan_cost") is not None]
-        pure_costs = costs.get((suite, "pure"))
+        pure_costs = costs.get((suite, Method.PURE))
         over_pure, pairs = cost_ratio(costs[(suite, method)], pure_costs) if pure_costs is not None else (None, 0)
         records.append(
             ReportRecord(
@@ -198,8 +198,8 @@ def build_report(rows: Iterable[dict[str, Any]]) -> list[ReportRecord]:
                 timeout_rate=_share(sum(1 for r in group if r["status"] == OUT_OF_TIME), n),
                 first_failure_rate=None if pure else _share(first_failures, n),
                 failure_rate=None if pure else _share(final_failures, n),
-                pure_over_method=_ratio(medians.get((suite, "pure")), median),
-                oracle_over_method=_ratio(medians.get((suite, "oracle")), median),
+                pure_over_method=_ratio(medians.get((suite, Method.PURE)), median),
+                oracle_over_method=_ratio(medians.get((suite, Method.ORACLE)), median),
                 mean_objects_kept=_mean([r["objects_kept"] for r in group]),
                 mean_objects_total=_mean([r["objects_total"] for r in group]),
                 mean_kept_fraction=_mean(fractions) if fractions else None,
@@ -261,9 +261,9 @@ def report_table(records: Sequence[ReportRecord]) -> tuple[list[str], list[tuple
         present = {m for m in methods if (suite, m) in by_key}
         lines = []
         for label, attribute, pattern in _METRICS:
-            if attribute in ("pure_over_method", "cost_over_pure") and "pure" not in present:
+            if attribute in ("pure_over_method", "cost_over_pure") and Method.PURE not in present:
                 continue
-            if attribute == "oracle_over_method" and "oracle" not in present:
+            if attribute == "oracle_over_method" and Method.ORACLE not in present:
                 continue
             lines.append((label, [_cell(by_key.get((suite, m)), attribute, pattern) for m in methods]))
         blocks.append((suite, lines))
@@ -502,13 +502,13 @@ def paired_times(rows: Sequence[dict[str, Any]]) -> list[TimePair]:
     """Pure and relevance times of every (problem, seed) that has both, medians over repeated rows."""
     grouped: dict[tuple, dict[str, list[dict]]] = {}
     for row in rows:
-        if row["method"] in ("pure", "relevance"):
+        if row["method"] in (Method.PURE, Method.RELEVANCE):
             key = (row["suite"], row["problem_hash"] if "problem_hash" in row else row["problem"], row["seed"])
             grouped.setdefault(key, {}).setdefault(row["method"], []).append(row)
     pairs = []
     for (suite, _, _), methods in sorted(grouped.items(), key=lambda item: tuple(map(str, item[0]))):
-        if "pure" in methods and "relevance" in methods:
-            pure, relevance = methods["pure"], methods["relevance"]
+        if Method.PURE in methods and Method.RELEVANCE in methods:
+            pure, relevance = methods[Method.PURE], methods[Method.RELEVANCE]
             pairs.append(
                 TimePair(
                     suite,

@@ -222,7 +222,7 @@ class ResultStore:
         try:
             connection = sqlite3.connect(building, isolation_level=None)
             try:
-                self._create(connection)
+                self.meta = _create_tables(connection)
                 connection.execute("PRAGMA journal_mode = WAL")
             finally:
                 connection.close()
@@ -310,77 +310,21 @@ class ResultStore:
     def _check_or_create(self, connection: sqlite3.Connection, create: bool = True) -> None:
         """Check the tables (``create``: inside one write transaction, creating or migrating them)."""
         if not create:
-            self._check(connection, self._tables(connection), writing=False)
+            self.meta, self.missing_columns = _checked_schema(connection, _tables(connection), False, self.path)
             return
         # IMMEDIATE takes the write lock first (waiting up to the busy timeout): a run that creates
         # the same new store at this moment either creates the tables or finds them made.
         connection.execute("BEGIN IMMEDIATE")
         try:
-            tables = self._tables(connection)
+            tables = _tables(connection)
             if tables:
-                self._check(connection, tables, writing=True)
+                self.meta, self.missing_columns = _checked_schema(connection, tables, True, self.path)
             else:
-                self._create(connection)
+                self.meta = _create_tables(connection)
             connection.execute("COMMIT")
         except BaseException:
             _roll_back(connection)
             raise
-
-    @staticmethod
-    def _tables(connection: sqlite3.Connection) -> set[str]:
-        return {row[0] for row in connection.execute("SELECT name FROM sqlite_master WHERE type = 'table'")}
-
-    def _check(self, connection: sqlite3.Connection, tables: set[str], writing: bool) -> None:
-        """Check an existing store; ``writing`` (inside the caller's transaction) migrates an older schema."""
-        if not tables:
-            raise StoreError("SQLite database without relevance-plan results (no tables)", path=str(self.path))
-        if "meta" not in tables or "results" not in tables:
-            raise StoreError(
-                "SQLite database without relevance-plan results (no meta/results table)", path=str(self.path)
-            )
-        meta = dict(connection.execute("SELECT key, value FROM meta").fetchall())
-        found = meta.get("schema_version")
-        version = _version_number(found)
-        if version is None or not OLDEST_SCHEMA_VERSION <= version <= SCHEMA_VERSION:
-            creator = meta.get("tool_version", "an unknown version")
-            raise StoreError(
-                f"results store has schema version {found} (written by relevance-plan {creator}); this is "
-                f"relevance-plan {__version__} with schema version {SCHEMA_VERSION}: use a new --store file",
-                path=str(self.path),
-            )
-        later = {name for added, names in ADDED_IN.items() if added > version for name in names}
-        present = {row[1] for row in connection.execute("PRAGMA table_info(results)")}
-        missing = [name for name in COLUMNS if name not in present and name not in later]
-        if missing:
-            raise StoreError(
-                f"results store lacks the column(s) {', '.join(missing)}: use a new --store file", path=str(self.path)
-            )
-        if later and writing:
-            self._migrate(connection, version, present)
-            meta["schema_version"] = str(SCHEMA_VERSION)
-        self.missing_columns = tuple(sorted(later)) if not writing else ()
-        self.meta = meta
-
-    def _migrate(self, connection: sqlite3.Connection, found: int, present: set[str]) -> None:
-        """Bring an older store to ``SCHEMA_VERSION`` in the caller's transaction: new columns only."""
-        kinds = dict(DATA_COLUMNS)
-        for version in range(found + 1, SCHEMA_VERSION + 1):
-            for name in ADDED_IN.get(version, ()):
-                if name not in present:
-                    connection.execute(f"ALTER TABLE results ADD COLUMN {name} {kinds[name]}")
-        connection.execute("UPDATE meta SET value = ? WHERE key = 'schema_version'", (str(SCHEMA_VERSION),))
-        connection.execute("INSERT OR REPLACE INTO meta (key, value) VALUES ('migrated_by', ?)", (__version__,))
-
-    def _create(self, connection: sqlite3.Connection) -> None:
-        """The tables of a new store, in the caller's transaction."""
-        connection.execute("CREATE TABLE meta (key TEXT PRIMARY KEY, value TEXT NOT NULL)")
-        connection.executemany(
-            "INSERT INTO meta (key, value) VALUES (?, ?)",
-            [("schema_version", str(SCHEMA_VERSION)), ("tool_version", __version__)],
-        )
-        connection.execute(_CREATE_RESULTS)
-        connection.execute("CREATE INDEX results_suite ON results (suite, method)")
-        self.meta = {"schema_version": str(SCHEMA_VERSION), "tool_version": __version__}
 
     # ------------------------------------------------------------------ access
 
@@ -469,6 +413,68 @@ class ResultStore:
         self.close()
         if discard:
             self._remove_files()
+
+
+# --------------------------------------------------------------------------- the schema
+
+
+def _tables(connection: sqlite3.Connection) -> set[str]:
+    return {row[0] for row in connection.execute("SELECT name FROM sqlite_master WHERE type = 'table'")}
+
+
+def _checked_schema(
+    connection: sqlite3.Connection, tables: set[str], writing: bool, path: Path
+) -> tuple[dict[str, str], tuple[str, ...]]:
+    """The meta table of an existing store, and the columns an older schema lacks (read as None);
+    ``writing`` (inside the caller's transaction) migrates an older schema instead."""
+    if not tables:
+        raise StoreError("SQLite database without relevance-plan results (no tables)", path=str(path))
+    if "meta" not in tables or "results" not in tables:
+        raise StoreError("SQLite database without relevance-plan results (no meta/results table)", path=str(path))
+    meta = dict(connection.execute("SELECT key, value FROM meta").fetchall())
+    found = meta.get("schema_version")
+    version = _version_number(found)
+    if version is None or not OLDEST_SCHEMA_VERSION <= version <= SCHEMA_VERSION:
+        creator = meta.get("tool_version", "an unknown version")
+        raise StoreError(
+            f"results store has schema version {found} (written by relevance-plan {creator}); this is "
+            f"relevance-plan {__version__} with schema version {SCHEMA_VERSION}: use a new --store file",
+            path=str(path),
+        )
+    later = {name for added, names in ADDED_IN.items() if added > version for name in names}
+    present = {row[1] for row in connection.execute("PRAGMA table_info(results)")}
+    missing = [name for name in COLUMNS if name not in present and name not in later]
+    if missing:
+        raise StoreError(
+            f"results store lacks the column(s) {', '.join(missing)}: use a new --store file", path=str(path)
+        )
+    if later and writing:
+        _migrate(connection, version, present)
+        meta["schema_version"] = str(SCHEMA_VERSION)
+    return meta, tuple(sorted(later)) if not writing else ()
+
+
+def _migrate(connection: sqlite3.Connection, found: int, present: set[str]) -> None:
+    """Bring an older store to ``SCHEMA_VERSION`` in the caller's transaction: new columns only."""
+    kinds = dict(DATA_COLUMNS)
+    for version in range(found + 1, SCHEMA_VERSION + 1):
+        for name in ADDED_IN.get(version, ()):
+            if name not in present:
+                connection.execute(f"ALTER TABLE results ADD COLUMN {name} {kinds[name]}")
+    connection.execute("UPDATE meta SET value = ? WHERE key = 'schema_version'", (str(SCHEMA_VERSION),))
+    connection.execute("INSERT OR REPLACE INTO meta (key, value) VALUES ('migrated_by', ?)", (__version__,))
+
+
+def _create_tables(connection: sqlite3.Connection) -> dict[str, str]:
+    """The tables of a new store, in the caller's transaction; returns its meta table."""
+    connection.execute("CREATE TABLE meta (key TEXT PRIMARY KEY, value TEXT NOT NULL)")
+    connection.executemany(
+        "INSERT INTO meta (key, value) VALUES (?, ?)",
+        [("schema_version", str(SCHEMA_VERSION)), ("tool_version", __version__)],
+    )
+    connection.execute(_CREATE_RESULTS)
+    connection.execute("CREATE INDEX results_suite ON results (suite, method)")
+    return {"schema_version": str(SCHEMA_VERSION), "tool_version": __version__}
 
 
 # Columns whose numbers cannot be negative (times, counts); every stored number is finite.

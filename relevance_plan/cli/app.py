@@ -35,8 +35,8 @@ from relevance_plan.cli.numbers import DISTRACTORS, OBJECTS, SEED, SUITE_SIZE
 from relevance_plan.errors import RelevancePlanError, UnsupportedFeatureError, UsageError, counted
 from relevance_plan.exitcodes import EXIT_CODE_DESCRIPTIONS, ExitCode, exit_code_for_status
 from relevance_plan.pddl.formatter import format_number
-from relevance_plan.planning.loop import plan_task
 from relevance_plan.planning.results import PlanResult, PlanStatus
+from relevance_plan.planning.run import plan_task
 from relevance_plan.relevance.analysis.task import PlanningTask
 from relevance_plan.relevance.selection.prune import Selection
 from relevance_plan.relevance.setup import Scoring, ScoringOptions, score_problem
@@ -141,30 +141,20 @@ def generate(world, difficulty, count, seed, out_dir, distractors, size, force):
     zenotravel-numeric, scenegraph, logistics-manygoals and miconic-manygoals (each
     also as NAME-typed)."""
     from relevance_plan.cli.display import progress_bar
-    from relevance_plan.generators.generate import generate_suite
-    from relevance_plan.generators.kitchen_variants import KITCHEN_VARIANTS, generate_variant_suite
-    from relevance_plan.generators.scenes import WORLD_NAMES
-    from relevance_plan.generators.sized import SIZED_WORLDS, check_sized_arguments, generate_sized_suite
+    from relevance_plan.generators.worlds import Settings, find_world
 
-    kitchen_worlds = WORLD_NAMES + tuple(KITCHEN_VARIANTS)
-    if world in SIZED_WORLDS:
-        if distractors is not None:
-            raise UsageError("--distractors applies to the kitchen worlds; classic and sized worlds take --size")
-        check_sized_arguments(world, count, seed, size)
-        with progress_bar(f"generate {world}", count) as bar:
-            paths = generate_sized_suite(world, count, seed, Path(out_dir), size=size, progress=bar, force=force)
-    else:
-        if world not in kitchen_worlds:
-            raise UsageError(f"unknown world {world!r}: choose one of {', '.join(kitchen_worlds + SIZED_WORLDS)}")
-        if size is not None:
-            raise UsageError(
-                "--size applies to the classic worlds and the other sized worlds; kitchen worlds take --distractors"
-            )
-        write = generate_suite if world in WORLD_NAMES else generate_variant_suite
-        with progress_bar(f"generate {world}-{difficulty}", count) as bar:
-            paths = write(
-                world, difficulty, count, seed, Path(out_dir), distractors=distractors, progress=bar, force=force
-            )
+    chosen = find_world(world)
+    if chosen.sized and distractors is not None:
+        raise UsageError("--distractors applies to the kitchen worlds; classic and sized worlds take --size")
+    if not chosen.sized and size is not None:
+        raise UsageError(
+            "--size applies to the classic worlds and the other sized worlds; kitchen worlds take --distractors"
+        )
+    settings = Settings(difficulty, distractors, size)
+    chosen.check(count, seed, settings)
+    label = world if chosen.sized else f"{world}-{difficulty}"
+    with progress_bar(f"generate {label}", count) as bar:
+        paths = chosen.suite(count, seed, Path(out_dir), settings, progress=bar, force=force)
     click.echo(f"wrote {counted(len(paths), 'problem')} to {out_dir}")
 
 

@@ -22,9 +22,9 @@ from relevance_plan.cli.common import (
 from relevance_plan.cli.display import progress_bar
 from relevance_plan.cli.numbers import DISTRACTORS, DPI, JOBS, SEED, SEEDS, SUITE_SIZE, THRESHOLDS, seconds
 from relevance_plan.errors import UsageError, counted
-from relevance_plan.planning.loop import METHODS
+from relevance_plan.planning.options import METHODS, Method
 
-DEFAULT_METHODS = "relevance,pure,random"
+DEFAULT_METHODS = ",".join(method.value for method in (Method.RELEVANCE, Method.PURE, Method.RANDOM))
 LEARN_TIMEOUT = 60.0  # seconds for each planner run of learn
 
 

@@ -27,10 +27,10 @@ from relevance_plan.cli.numbers import MEGABYTES, SEED, THRESHOLD, seconds
 from relevance_plan.errors import InputFileError, RelevancePlanError, UsageError, ValidatorUnavailableError
 from relevance_plan.exitcodes import ExitCode, exit_code_for_error
 from relevance_plan.limits import DEFAULT_TIMEOUT
-from relevance_plan.planning.loop import METHODS, PlanOptions
+from relevance_plan.planning.options import METHODS, Method, PlanOptions
 from relevance_plan.planning.planners.registry import DEFAULT_PLANNER, DEFAULT_PLANNER_CONFIG
 from relevance_plan.planning.results import PlanResult
-from relevance_plan.planning.validate import VALIDATOR_CHOICES
+from relevance_plan.planning.validation import VALIDATOR_CHOICES
 from relevance_plan.relevance.scoring.scorers import SCORERS
 from relevance_plan.relevance.selection.prune import DEFAULT_TAU, Thresholds
 from relevance_plan.relevance.setup import ScoringOptions, check_scorer, given_cues
@@ -327,7 +327,7 @@ def planning_options(per_job: bool = False):
     return group
 
 
-def take_plan_options(values: dict, method: str = "relevance") -> PlanOptions:
+def take_plan_options(values: dict, method: str = Method.RELEVANCE) -> PlanOptions:
     """PlanOptions from a command's parsed values (scoring and planning keys are removed).
 
     What can be checked before planning is checked here: the pass-through
@@ -335,7 +335,7 @@ def take_plan_options(values: dict, method: str = "relevance") -> PlanOptions:
     """
     scoring = take_scoring(values)
     given = given_cues(scoring)
-    if given and method != "relevance":
+    if given and method != Method.RELEVANCE:
         verb = "applies" if len(given) == 1 else "apply"
         raise UsageError(f"{' and '.join(given)} {verb} to --method relevance only, not to --method {method}")
     taken = {key: values.pop(key) for key in PLANNING_KEYS}
@@ -367,7 +367,7 @@ def split_planner_args(text: str | None) -> tuple[str, ...]:
 
 def require_installed_validators(names) -> None:
     """A validator asked for by name must be able to run; found before planning, not after."""
-    from relevance_plan.planning.validate import val_available
+    from relevance_plan.planning.validation import val_available
 
     if "val" in (names or ()) and not val_available():
         raise ValidatorUnavailableError(
@@ -407,4 +407,6 @@ race_option = click.option(
     " (default: on for relevance with two or more usable cores).",
 )
 
-method_option = click.option("--method", type=NamedChoice(METHODS, "method"), default="relevance", show_default=True)
+method_option = click.option(
+    "--method", type=NamedChoice(METHODS, "method"), default=Method.RELEVANCE.value, show_default=True
+)

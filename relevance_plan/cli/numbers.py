@@ -1,6 +1,6 @@
 """The numeric options of every command, checked in one place while the command line is read.
 
-Each numeric option is a :class:`Number` (or a :class:`Numbers`, a comma-separated
+Each numeric option is a :class:`NumberOption` (or a :class:`NumbersOption`, a comma-separated
 list): text that is not a number at all is click's usage error (exit 2, as a
 misspelt option is); a number that is not finite or falls outside its range
 is a bad argument value (exit 30), said in one line naming the option,
@@ -16,7 +16,7 @@ import click
 
 from relevance_plan.exitcodes import ExitCode
 from relevance_plan.limits import MAX_COUNT, MAX_DISTRACTORS, MAX_TIMEOUT
-from relevance_plan.planning.loop import MAX_MEMORY_MB, MIN_MEMORY_MB
+from relevance_plan.planning.options import MAX_MEMORY_MB, MIN_MEMORY_MB
 
 # Seeds within this size either way: the generators' floor, and what a results store's INTEGER column holds.
 _SEED_SIZE = 1 << 62
@@ -33,7 +33,7 @@ class OutOfRange(click.BadParameter):
         return f"{option} {self.message}"
 
 
-class Number(click.ParamType):
+class NumberOption(click.ParamType):
     """An int or a float, finite, within ``[low, high]`` (``low`` excluded when ``above``; no ``high``:
     no upper bound)."""
 
@@ -66,8 +66,8 @@ class Number(click.ParamType):
         return self.check(self.parse(value, param, ctx), value, param, ctx)
 
 
-class Numbers(Number):
-    """A comma-separated list of :class:`Number` values, as a tuple (duplicates dropped, order kept)."""
+class NumbersOption(NumberOption):
+    """A comma-separated list of :class:`NumberOption` values, as a tuple (duplicates dropped, order kept)."""
 
     def convert(self, value, param, ctx):
         if isinstance(value, tuple):
@@ -85,19 +85,19 @@ class Numbers(Number):
         return "comma-separated values, each " + super().describe()
 
 
-def seconds(what: str = "a number of seconds") -> Number:
+def seconds(what: str = "a number of seconds") -> NumberOption:
     """A time limit: above 0, at most ``MAX_TIMEOUT``."""
-    return Number(float, 0.0, MAX_TIMEOUT, above=True, what=what)
+    return NumberOption(float, 0.0, MAX_TIMEOUT, above=True, what=what)
 
 
-def count(low: int, high: int | None, what: str = "an integer") -> Number:
-    return Number(int, low, high, what=what)
+def count(low: int, high: int | None, what: str = "an integer") -> NumberOption:
+    return NumberOption(int, low, high, what=what)
 
 
-THRESHOLD = Number(float, 0.0, 1.0, what="a threshold")
-THRESHOLDS = Numbers(float, 0.0, 1.0, what="a threshold")
-SEED = Number(int, -_SEED_SIZE, None, what="an integer seed")  # hashed or given to random.Random: any size
-SEEDS = Numbers(int, -_SEED_SIZE, _SEED_SIZE, what="an integer seed")  # each in a stored row
+THRESHOLD = NumberOption(float, 0.0, 1.0, what="a threshold")
+THRESHOLDS = NumbersOption(float, 0.0, 1.0, what="a threshold")
+SEED = NumberOption(int, -_SEED_SIZE, None, what="an integer seed")  # hashed or given to random.Random: any size
+SEEDS = NumbersOption(int, -_SEED_SIZE, _SEED_SIZE, what="an integer seed")  # each in a stored row
 JOBS = count(1, None, "a number of jobs")  # threads start as jobs do: more than the jobs cost nothing
 DPI = count(1, 2400, "a number of dots per inch")
 SUITE_SIZE = count(1, MAX_COUNT, "a number of problems")

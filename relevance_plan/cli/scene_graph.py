@@ -26,14 +26,14 @@ from relevance_plan.cli.common import (
     scoring_options,
     take_plan_options,
 )
-from relevance_plan.cli.numbers import Number
+from relevance_plan.cli.numbers import NumberOption
 from relevance_plan.cli.paths import own_command_path_checks
 from relevance_plan.exitcodes import ExitCode
 
 OUTPUT_FILES = ("domain.pddl", "problem.pddl", "problem.json")
-SIMILARITY = Number(float, 0.0, 1.0, what="a similarity")
-GRAPH_MEGABYTES = Number(float, 0.0, 65536.0, above=True, what="megabytes")
-IDLE_SECONDS = Number(float, 0.0, 86400.0, above=True, what="seconds")
+SIMILARITY = NumberOption(float, 0.0, 1.0, what="a similarity")
+GRAPH_MEGABYTES = NumberOption(float, 0.0, 65536.0, above=True, what="megabytes")
+IDLE_SECONDS = NumberOption(float, 0.0, 86400.0, above=True, what="seconds")
 
 
 def import_options(command):

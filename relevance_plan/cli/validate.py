@@ -11,7 +11,7 @@ from relevance_plan.cli.common import handle_errors, json_option, json_text, tas
 from relevance_plan.errors import counted
 from relevance_plan.exitcodes import ExitCode
 from relevance_plan.pddl.formatter import format_number
-from relevance_plan.planning.validate import VALIDATORS
+from relevance_plan.planning.validation import VALIDATORS
 
 # What VAL was always given to judge a plan; the builtin simulator takes milliseconds.
 VALIDATE_TIMEOUT = 60.0
@@ -38,7 +38,7 @@ def validate(domain_path, problem_path, plan_path, validator, timeout, as_json):
     step and why), 41 when the validator cannot run or judge within --timeout.
     """
     from relevance_plan.cli.files import check_regular_file
-    from relevance_plan.planning.validate import check_plan_file
+    from relevance_plan.planning.validation import check_plan_file
 
     if validator != "builtin":  # VAL and unified-planning read the files again
         for path, what in ((domain_path, "domain file"), (problem_path, "problem file")):

@@ -13,23 +13,28 @@ static facts, the goal atoms and, where a cheap sufficient set exists, the
 objects a plan needs.  The untyped text adds one unary fact per class
 (``TYPE_FACTS``); the typed text declares the class as the object's type.
 
-Their suites (``sized.generate_sized_suite``) have the same layout as the
+Their suites (:func:`write_classic_suite`) have the same layout as the
 kitchen suites: ``domain.pddl``, ``<world>-NNN.pddl`` with a ``.json``
 sidecar each, and ``suite.json``.
 """
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import math
 import random
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any, NamedTuple
 
+from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.errors import UsageError
+from relevance_plan.generators.generate import suite_manifest, write_suite
 from relevance_plan.pddl.formatter import format_problem_parts
 from relevance_plan.pddl.model import Metric
+from relevance_plan.progress import ProgressCallback
 
 GENERATOR = "relevance_plan.generators"
 CLASSIC_VERSION = "1"
@@ -318,7 +323,7 @@ def _miconic(rng: random.Random, size: int, dense: bool = False) -> Instance:
     return inst
 
 
-BUILDERS: dict[str, Callable[..., Instance]] = {
+_BUILDERS: dict[str, Callable[..., Instance]] = {
     "blocksworld": _blocksworld,
     "logistics": _logistics,
     "gripper": _gripper,
@@ -327,12 +332,13 @@ BUILDERS: dict[str, Callable[..., Instance]] = {
     "miconic": _miconic,
 }
 
-CLASSIC_WORLDS: tuple[str, ...] = tuple(BUILDERS) + tuple(f"{name}-typed" for name in BUILDERS)
+# The classic worlds, untyped then typed (generators.worlds registers them).
+CLASSIC_NAMES: tuple[str, ...] = tuple(_BUILDERS) + tuple(f"{name}-typed" for name in _BUILDERS)
 
 
 def _split(world: str) -> tuple[str, bool]:
-    if world not in CLASSIC_WORLDS:
-        raise UsageError(f"unknown classic world {world!r}: choose one of {', '.join(CLASSIC_WORLDS)}")
+    if world not in CLASSIC_NAMES:
+        raise UsageError(f"unknown classic world {world!r}: choose one of {', '.join(CLASSIC_NAMES)}")
     typed = world.endswith("-typed")
     return (world[: -len("-typed")] if typed else world), typed
 
@@ -383,7 +389,7 @@ def generate_classic_problem(
     check_int("index", index, 0)
     size = DEFAULT_SIZES[base] if size is None else size
     check_int("size", size, 10)
-    inst = BUILDERS[base](classic_rng(seed, world, index, size), size, dense)
+    inst = _BUILDERS[base](classic_rng(seed, world, index, size), size, dense)
     name = classic_problem_name(world, index, dense)
     comment = (
         f"{name}: {len(inst.objects)} objects, goal on {len(inst.goal)} atoms\n"
@@ -429,3 +435,21 @@ def check_suite_numbers(count: int, seed: int, size: int | None) -> None:
     check_int("seed", seed, -(1 << 62))
     if size is not None:
         check_int("size", size, 10)
+
+
+def write_classic_suite(
+    world: str,
+    count: int,
+    seed: int,
+    out_dir: Path,
+    size: int | None = None,
+    progress: ProgressCallback | None = None,
+    force: bool = False,
+) -> list[Path]:
+    """Write ``count`` problems of a classic world into ``out_dir`` (the kitchen suites' layout and rules)."""
+    check_classic_arguments(world, count, seed, size)
+    make = functools.partial(generate_classic_problem, world, seed, size=size)
+    manifest = suite_manifest(CLASSIC_VERSION, world, None, count, seed, size=size)
+    names = [classic_problem_name(world, index) for index in range(1, count + 1)]
+    domain_path = DOMAINS_DIR / world / "domain.pddl"
+    return write_suite(out_dir, domain_path, names, make, manifest, "objects_total", progress, force)

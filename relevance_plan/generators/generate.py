@@ -31,7 +31,7 @@ from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.errors import InputFileError, UsageError
 from relevance_plan.generators.catalog import CATALOG
 from relevance_plan.generators.problem import choose_roles, format_scene, necessary_objects, relevant_objects
-from relevance_plan.generators.scenes import DIFFICULTIES, SCENES, WORLD_NAMES, Item, SceneLayout, name_key
+from relevance_plan.generators.scenes import DIFFICULTIES, KITCHENS, SCENES, Item, SceneLayout, name_key
 from relevance_plan.io import new_directory_mode
 from relevance_plan.limits import MAX_COUNT, MAX_DISTRACTORS
 from relevance_plan.progress import ProgressCallback, ProgressEvent
@@ -57,9 +57,6 @@ CONSTRAINT_COUNTS: dict[tuple[str, str], int] = {
 """Random on-top constraints added per problem (cereal adds none)."""
 
 
-BASE_SCENE_NAMES = tuple(f"{w}-{d}" for w in WORLD_NAMES for d in DIFFICULTIES)
-
-
 @dataclass(frozen=True)
 class GeneratedProblem:
     name: str
@@ -80,8 +77,8 @@ def sidecar_json(data: dict[str, Any]) -> str:
 
 
 def _check_world(world: object, difficulty: object) -> None:
-    if world not in WORLD_NAMES:
-        raise UsageError(f"unknown world {world!r}: choose one of {', '.join(WORLD_NAMES)}")
+    if world not in KITCHENS:
+        raise UsageError(f"unknown world {world!r}: choose one of {', '.join(KITCHENS)}")
     if difficulty not in DIFFICULTIES:
         raise UsageError(f"unknown difficulty {difficulty!r}: choose one of {', '.join(DIFFICULTIES)}")
 
@@ -344,25 +341,20 @@ def generate_suite(
     ``InputFileError`` when the directory cannot be written."""
     check_suite_arguments(world, difficulty, count, seed, distractors)
     make = functools.partial(generate_problem, world, difficulty, seed, distractors=distractors)
-    return write_kitchen_suite(
-        world, difficulty, GENERATOR_VERSION, make, count, seed, distractors, out_dir, progress, force
-    )
+    manifest = suite_manifest(GENERATOR_VERSION, world, difficulty, count, seed, distractors=distractors)
+    return write_kitchen_suite(manifest, make, out_dir, progress, force)
 
 
 def write_kitchen_suite(
-    world: str,
-    difficulty: str,
-    version: str,
+    manifest: dict[str, Any],
     make_problem: Callable[[int], GeneratedProblem],
-    count: int,
-    seed: int,
-    distractors: int | None,
     out_dir: Path,
     progress: ProgressCallback | None = None,
     force: bool = False,
 ) -> list[Path]:
-    """A suite of a kitchen world or variant (``write_suite``'s layout); problem ``i`` is ``make_problem(i)``."""
-    manifest = suite_manifest(version, world, difficulty, count, seed, distractors=distractors)
+    """A suite of a kitchen world or variant (``write_suite``'s layout) of the world, difficulty and
+    count ``manifest`` names (``suite_manifest``); problem ``i`` is ``make_problem(i)``."""
+    world, difficulty, count = manifest["world"], manifest["difficulty"], manifest["count"]
     names = [problem_name(world, difficulty, index) for index in range(1, count + 1)]
     domain = DOMAINS_DIR / world / "domain.pddl"
     return write_suite(out_dir, domain, names, make_problem, manifest, "distractor_count", progress, force)
@@ -488,7 +480,7 @@ def write_base_scenes(problems_dir: Path) -> list[Path]:
     written: list[Path] = []
     try:
         problems_dir.mkdir(parents=True, exist_ok=True)
-        for scene_name in BASE_SCENE_NAMES:
+        for scene_name in SCENES:
             problem = base_scene_problem(scene_name)
             for suffix, text in ((".pddl", problem.pddl_text), (".json", problem.sidecar_text)):
                 target = problems_dir / f"{scene_name}{suffix}"

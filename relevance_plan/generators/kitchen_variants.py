@@ -34,6 +34,7 @@ from relevance_plan.generators.generate import (
     check_suite_arguments,
     generate_problem,
     problem_name,
+    suite_manifest,
     write_kitchen_suite,
 )
 from relevance_plan.generators.problem import goal_objects, problem_goal, problem_init, problem_objects
@@ -58,7 +59,7 @@ class KitchenVariant:
     kind: str  # TEMPORAL or NUMERIC
 
 
-KITCHEN_VARIANTS: dict[str, KitchenVariant] = {
+_VARIANTS: dict[str, KitchenVariant] = {
     variant.name: variant
     for variant in (
         KitchenVariant("coffee-temporal", "coffee", TEMPORAL),
@@ -68,10 +69,19 @@ KITCHEN_VARIANTS: dict[str, KitchenVariant] = {
 }
 
 
+# The variants this module makes (generators.worlds registers them).
+VARIANT_NAMES = tuple(_VARIANTS)
+
+
 def _variant(world: object) -> KitchenVariant:
-    if world not in KITCHEN_VARIANTS:
-        raise UsageError(f"unknown kitchen variant {world!r}: choose one of {', '.join(KITCHEN_VARIANTS)}")
-    return KITCHEN_VARIANTS[world]
+    if world not in _VARIANTS:
+        raise UsageError(f"unknown kitchen variant {world!r}: choose one of {', '.join(_VARIANTS)}")
+    return _VARIANTS[world]
+
+
+def variant_base(world: str) -> str:
+    """The kitchen world whose scenes the variant ``world`` uses."""
+    return _variant(world).base
 
 
 def variant_rng(seed: int, world: str, difficulty: str, index: int) -> random.Random:
@@ -146,6 +156,5 @@ def generate_variant_suite(
     variant = _variant(world)
     check_suite_arguments(variant.base, difficulty, count, seed, distractors)
     make = functools.partial(generate_variant_problem, world, difficulty, seed, distractors=distractors)
-    return write_kitchen_suite(
-        world, difficulty, VARIANT_VERSION, make, count, seed, distractors, out_dir, progress, force
-    )
+    manifest = suite_manifest(VARIANT_VERSION, world, difficulty, count, seed, distractors=distractors)
+    return write_kitchen_suite(manifest, make, out_dir, progress, force)

@@ -17,33 +17,16 @@ import random
 from collections.abc import Iterable
 from dataclasses import replace
 
+from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.errors import UsageError
+from relevance_plan.io import read_text
 from relevance_plan.pddl.formulas import GroundAtom, numeric_effects
 from relevance_plan.pddl.model import Domain, Problem, TimedLiteral, frozen, pinned_objects
 from relevance_plan.relevance.analysis.types import static_predicates
 
-BLOCKSWORLD_DOMAIN = """(define (domain blocksworld)
-  (:requirements :strips :typing)
-  (:types block)
-  (:predicates (on ?x - block ?y - block) (ontable ?x - block) (clear ?x - block)
-               (handempty) (holding ?x - block))
-  (:action pick-up
-    :parameters (?x - block)
-    :precondition (and (clear ?x) (ontable ?x) (handempty))
-    :effect (and (not (ontable ?x)) (not (clear ?x)) (not (handempty)) (holding ?x)))
-  (:action put-down
-    :parameters (?x - block)
-    :precondition (holding ?x)
-    :effect (and (not (holding ?x)) (clear ?x) (handempty) (ontable ?x)))
-  (:action stack
-    :parameters (?x - block ?y - block)
-    :precondition (and (holding ?x) (clear ?y))
-    :effect (and (not (holding ?x)) (not (clear ?y)) (clear ?x) (handempty) (on ?x ?y)))
-  (:action unstack
-    :parameters (?x - block ?y - block)
-    :precondition (and (on ?x ?y) (clear ?x) (handempty))
-    :effect (and (holding ?x) (clear ?y) (not (clear ?x)) (not (handempty)) (not (on ?x ?y)))))
-"""
+# The shipped typed domains the padded problems are written for (package data, read once).
+BLOCKSWORLD_DOMAIN = read_text(DOMAINS_DIR / "blocksworld-typed" / "domain.pddl", "domain file")
+GRIPPER_DOMAIN = read_text(DOMAINS_DIR / "gripper-typed" / "domain.pddl", "domain file")
 
 
 def blocksworld_problem(extra: int, seed: int = 0, in_the_way: int = 2) -> str:
@@ -69,31 +52,11 @@ def blocksworld_problem(extra: int, seed: int = 0, in_the_way: int = 2) -> str:
         init.append(f"(clear {tower[-1]})")
     objects = " ".join(goal_blocks + extras)
     return (
-        f"(define (problem bw-{extra}-{seed}) (:domain blocksworld)\n"
+        f"(define (problem bw-{extra}-{seed}) (:domain blocksworld-typed)\n"
         f"  (:objects {objects} - block)\n"
         "  (:init " + "\n    ".join(init) + ")\n"
         "  (:goal (and (on a b) (on b c))))\n"
     )
-
-
-GRIPPER_DOMAIN = """(define (domain gripper-typed)
-  (:requirements :strips :typing)
-  (:types room ball gripper)
-  (:predicates (at-robby ?r - room) (at ?b - ball ?r - room) (free ?g - gripper)
-               (carry ?o - ball ?g - gripper))
-  (:action move
-    :parameters (?from ?to - room)
-    :precondition (at-robby ?from)
-    :effect (and (at-robby ?to) (not (at-robby ?from))))
-  (:action pick
-    :parameters (?obj - ball ?room - room ?g - gripper)
-    :precondition (and (at ?obj ?room) (at-robby ?room) (free ?g))
-    :effect (and (carry ?obj ?g) (not (at ?obj ?room)) (not (free ?g))))
-  (:action drop
-    :parameters (?obj - ball ?room - room ?g - gripper)
-    :precondition (and (carry ?obj ?g) (at-robby ?room))
-    :effect (and (at ?obj ?room) (free ?g) (not (carry ?obj ?g)))))
-"""
 
 
 def gripper_problem(extra: int, rooms: int = 6) -> str:

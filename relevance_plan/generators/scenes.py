@@ -1,4 +1,4 @@
-"""The two benchmark worlds and their four base scenes, as immutable data.
+"""The two kitchen worlds and their four base scenes, as immutable data.
 
 A scene lists places, items, humans and the robot's start place.  Places are
 surfaces (always accessible) or containers (closed at the start).  An item is
@@ -43,7 +43,6 @@ SURFACE = "surface"
 CONTAINER = "container"
 PLACE_KINDS = (SURFACE, CONTAINER)
 
-WORLD_NAMES = ("coffee", "cereal")
 DIFFICULTIES = ("simple", "hard")
 
 DEPENDENCY_KINDS = ("in-closed-container", "covered", "sealed", "return")
@@ -58,8 +57,8 @@ def name_key(name: str) -> tuple[str, int]:
 
 
 @dataclass(frozen=True)
-class World:
-    """What a world's domain needs from a scene and what its objective is."""
+class KitchenSpec:
+    """What a kitchen world's domain needs from a scene and what its objective is."""
 
     name: str
     item_types: tuple[str, ...]
@@ -76,8 +75,9 @@ class World:
     """(predicate, type): a unary fact true at the start for every such item."""
 
 
-WORLDS: dict[str, World] = {
-    "coffee": World(
+# The kitchen domains by world name (the worlds themselves are generators.worlds.WORLDS).
+KITCHENS: dict[str, KitchenSpec] = {
+    "coffee": KitchenSpec(
         name="coffee",
         item_types=(
             "cup",
@@ -99,7 +99,7 @@ WORLDS: dict[str, World] = {
         returned_types=(),
         init_markers=(("empty", "cup"),),
     ),
-    "cereal": World(
+    "cereal": KitchenSpec(
         name="cereal",
         item_types=(
             "bowl",
@@ -182,8 +182,8 @@ class SceneLayout:
         return f"{self.world}-{self.difficulty}"
 
     @property
-    def world_spec(self) -> World:
-        return WORLDS[self.world]
+    def world_spec(self) -> KitchenSpec:
+        return KITCHENS[self.world]
 
     @property
     def objects_total(self) -> int:
@@ -247,9 +247,9 @@ class SceneLayout:
 
 
 def _check_scene(scene: SceneLayout) -> None:
-    if scene.world not in WORLDS:
+    if scene.world not in KITCHENS:
         raise ValueError(f"unknown world {scene.world!r}")
-    world = WORLDS[scene.world]
+    world = KITCHENS[scene.world]
     names = scene.object_names()
     duplicates = sorted({n for n in names if names.count(n) > 1}) if len(set(names)) != len(names) else []
     if duplicates:
@@ -294,7 +294,7 @@ def _check_scene(scene: SceneLayout) -> None:
 
 def compute_dependencies(scene: SceneLayout) -> tuple[Dependency, ...]:
     """Natural task dependencies of a scene (see the module docstring), sorted."""
-    world = WORLDS[scene.world]
+    world = KITCHENS[scene.world]
     found: list[Dependency] = []
     above = {i.on: i.name for i in scene.items if i.on is not None}
     places = {p.name: p for p in scene.places}

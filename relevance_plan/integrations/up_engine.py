@@ -12,7 +12,7 @@ problem it
    (``relevance.setup``: the knowledge model when one applies to the domain,
    else the domain-independent ``goal`` scorer; an engine cannot ask for
    cues, so insufficient cues fall back to the goal scorer);
-3. runs the attempt loop of ``relevance-plan plan`` (``planning.loop``) with
+3. runs the attempt loop of ``relevance-plan plan`` (``planning.attempts``) with
    the inner planner as its planner: each attempt gives the inner planner a
    UP problem restricted to the kept objects, maps its plan back to the
    original problem's actions and objects and validates it on the original
@@ -66,11 +66,13 @@ from relevance_plan.errors import RelevancePlanError, UsageError, counted
 from relevance_plan.pddl.model import Domain
 from relevance_plan.pddl.parser import read_domain, read_problem
 from relevance_plan.pddl.plans import Plan, PlanStep
-from relevance_plan.planning.loop import PlanOptions, run_attempts, summarise
+from relevance_plan.planning.attempts import AttemptLoop, run_attempts
+from relevance_plan.planning.options import Method, PlanOptions
 from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome
 from relevance_plan.planning.planners.up.adapter import UP_STATUS, up_status_name
 from relevance_plan.planning.results import Attempt, PlanStatus
-from relevance_plan.planning.validate import validate_plan
+from relevance_plan.planning.summary import RunFacts, summarise
+from relevance_plan.planning.validation import validate_plan
 from relevance_plan.relevance.analysis.task import PlanningTask
 from relevance_plan.relevance.scoring.knowledge import KnowledgeModel, load_knowledge_model
 from relevance_plan.relevance.scoring.scorers import SCORERS
@@ -145,7 +147,7 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin, AnytimePlannerMixin):
         self._domain = domain
         # The same options object `plan` builds: the same loop makes the same choices.
         self._options = PlanOptions(
-            method="relevance",
+            method=Method.RELEVANCE,
             thresholds=Thresholds(float(tau_class), float(tau_element)),
             scorer=scorer,
             widen_factor=float(widen_factor),
@@ -231,25 +233,18 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin, AnytimePlannerMixin):
         else:
             selection = stage.scoring.first_selection(options.narrows_first)
             relevance_time = time.perf_counter() - started
-            attempts, widening_time = run_attempts(
-                stage.scoring.task, selection, inner, options, started=started, model=stage.scoring.knowledge_model
-            )
+            loop = AttemptLoop(stage.scoring.task, inner, options, started, stage.scoring.knowledge_model)
+            attempts, widening_time = run_attempts(loop, selection)
             relevance_time += widening_time
         for attempt in attempts:
             messages.append(describe_attempt(attempt, total))
 
         found = inner.lifted.get(attempts[-1].number) if attempts else None
         if stage is not None:
-            result = summarise(
-                stage.scoring.task,
-                options,
-                attempts,
-                started,
-                relevance_time,
-                None,
-                planner=self.engine.name,
-                scorer=stage.scoring.scorer,
+            facts = RunFacts(
+                stage.scoring.task, started, relevance_time, planner=self.engine.name, scorer=stage.scoring.scorer
             )
+            result = summarise(facts, options, attempts)
             status, summary = _final_status(result, found, attempts)
         else:
             status, summary = _final_status_whole(problem, found, attempts)

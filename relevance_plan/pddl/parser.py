@@ -94,6 +94,10 @@ class _Scope:
 
 
 class _Reader:
+    """Reads one file's lists: symbols, terms, parameters and the formulas (conditions, effects,
+    numeric expressions); every failure names the file and the line.  Headers and typed lists
+    are read by the functions below the class."""
+
     def __init__(self, path: str | None):
         self.path = path
 
@@ -108,12 +112,6 @@ class _Reader:
             self.fail(f"expected {what}, found a list", item)
         return item.text.lower()
 
-    @staticmethod
-    def keyword_of(node: object) -> str | None:
-        if isinstance(node, Node) and node.items and isinstance(node.items[0], Symbol):
-            return node.items[0].text.lower()
-        return None
-
     def opened(self, node: Item, what: str) -> tuple[Node, str | None, list[Item]] | None:
         """A list, its head keyword (None: not a keyword) and its arguments; None for ``()``, which
         is true; a symbol where ``what`` is expected fails."""
@@ -121,91 +119,12 @@ class _Reader:
             self.fail(f"expected {what}, found '{node.text}'", node)
         if not node.items:
             return None
-        return node, self.keyword_of(node), node.items[1:]
-
-    def header(self, root: Node, kind: str) -> tuple[str, list[Item]]:
-        items = root.items
-        if not items or self.keyword_of(root) != "define":
-            self.fail("expected '(define ...)'", root)
-        if len(items) < 2 or not isinstance(items[1], Node) or len(items[1].items) != 2:
-            self.fail(f"expected '({kind} NAME)' after define", items[1] if len(items) > 1 else root)
-        head = items[1]
-        head_kind = self.symbol(head.items[0], kind)
-        if head_kind != kind:
-            other = "problem" if kind == "domain" else "domain"
-            if head_kind == other:
-                self.fail(f"this is a PDDL {other} file, not a {kind} file", head)
-            self.fail(f"expected '({kind} NAME)', found '({head_kind} ...)'", head)
-        return self.symbol(head.items[1], f"{kind} name"), items[2:]
-
-    def requirements(self, body: list[Item]) -> frozenset[str]:
-        found = set()
-        for item in body:
-            requirement = self.symbol(item, "a requirement")
-            if requirement in UNSUPPORTED_REQUIREMENTS:
-                self.fail(
-                    f"requirement '{requirement}': {UNSUPPORTED_REQUIREMENTS[requirement]} are not supported",
-                    item,
-                    UnsupportedFeatureError,
-                )
-            if not requirement.startswith(":"):
-                self.fail(f"requirement '{requirement}' must start with ':'", item)
-            found.add(requirement)
-        return frozenset(found)
-
-    # ---------------------------------------------------------------- typed lists
-
-    def type_name(self, item: Item) -> str:
-        if isinstance(item, Node):
-            if self.keyword_of(item) != "either" or len(item.items) < 2:
-                self.fail("expected a type name or '(either TYPE ...)'", item)
-            members = [self.symbol(member, "a type name") for member in item.items[1:]]
-            return "(either " + " ".join(members) + ")" if len(members) > 1 else members[0]
-        return item.text.lower()
-
-    def typed_list(self, items: list[Item], what: str) -> tuple[list[tuple[Symbol, str]], list[ObjectGroup]]:
-        """'a b - t c - u d' -> [(symbol, type)] and the groups ((symbols...), type item | None)."""
-        result: list[tuple[Symbol, str]] = []
-        groups: list[ObjectGroup] = []
-        pending: list[Symbol] = []
-        index = 0
-        while index < len(items):
-            item = items[index]
-            if isinstance(item, Node):
-                self.fail(f"unexpected list in {what}", item)
-            if len(item.text) > 1 and item.text[0] == "-" and item.text[1].isalpha():
-                # '?x -type', a dash glued to its type as some published domains write it
-                if not pending:
-                    self.fail(f"type given to nothing in {what}", item)
-                type_name = item.text[1:].lower()
-                result.extend((symbol, type_name) for symbol in pending)
-                groups.append((tuple(pending), item))
-                pending = []
-                index += 1
-                continue
-            if item.text == "-":
-                if index + 1 >= len(items):
-                    self.fail(f"missing type after '-' in {what}", item)
-                if not pending:
-                    self.fail(f"type given to nothing in {what}", item)
-                type_item = items[index + 1]
-                type_name = self.type_name(type_item)
-                result.extend((symbol, type_name) for symbol in pending)
-                groups.append((tuple(pending), type_item))
-                pending = []
-                index += 2
-                continue
-            pending.append(item)
-            index += 1
-        if pending:
-            result.extend((symbol, "object") for symbol in pending)
-            groups.append((tuple(pending), None))
-        return result, groups
+        return node, _keyword_of(node), node.items[1:]
 
     def parameters(self, node: Item, scope: _Scope | None, *, unique: bool = True) -> f.Parameters:
         if not isinstance(node, Node):
             self.fail("expected a parameter list", node)
-        pairs, _ = self.typed_list(node.items, "parameter list")
+        pairs, _ = _typed_list(self, node.items, "parameter list")
         params: list[tuple[str, str]] = []
         for symbol, type_name in pairs:
             if not symbol.text.startswith("?"):
@@ -250,7 +169,7 @@ class _Reader:
             if text in scope.functions or text in BUILTIN_FUNCTIONS:
                 return f.Fluent(text)  # a 0-ary function written without parentheses
             self.fail(f"expected a number or a numeric expression, found '{item.text}'", item)
-        head = self.keyword_of(item)
+        head = _keyword_of(item)
         if head is None:
             self.fail("expected a numeric expression", item)
         args = item.items[1:]
@@ -334,18 +253,14 @@ class _Reader:
             self.fail("'preference' takes a name and a condition", node)
         if scope.trajectory and head in f.MODAL_OPERATORS and head not in scope.predicates:
             return self.modal(node, head, args, scope)
-        if scope.trajectory and head == "at" and len(args) == 2 and self.keyword_of_symbol(args[0]) == "end":
+        if scope.trajectory and head == "at" and len(args) == 2 and _keyword_of_symbol(args[0]) == "end":
             return f.Modal("at-end", (), (self.condition(args[1], scope),))
         return None
-
-    @staticmethod
-    def keyword_of_symbol(item: Item) -> str | None:
-        return item.text.lower() if isinstance(item, Symbol) else None
 
     def timed_part(self, node: Node, head: str, args: list[Item], scope: _Scope) -> tuple[str, Node] | None:
         if not scope.durative or len(args) != 2 or not isinstance(args[1], Node):
             return None
-        second = self.keyword_of_symbol(args[0])
+        second = _keyword_of_symbol(args[0])
         if head == "at" and second in ("start", "end"):
             return second, args[1]
         if head == "over" and second == "all":
@@ -367,7 +282,7 @@ class _Reader:
         return f.Modal(head, tuple(numbers), tuple(self.condition(part, scope) for part in parts))
 
     def atom(self, node: Node, scope: _Scope) -> f.Atom | f.Equality:
-        head = self.keyword_of(node)
+        head = _keyword_of(node)
         if head is None:
             self.fail("expected an atom", node)
         args = tuple(self.term(item, scope, head) for item in node.items[1:])
@@ -434,6 +349,101 @@ class _Reader:
         return f.NumericEffect(head, target, self.expression(args[1], scope))
 
 
+# --------------------------------------------------------------------------- headers and typed lists
+
+
+def _keyword_of(node: object) -> str | None:
+    """The head keyword of a list (lower-cased); None for a symbol, ``()`` or a list headed by a list."""
+    if isinstance(node, Node) and node.items and isinstance(node.items[0], Symbol):
+        return node.items[0].text.lower()
+    return None
+
+
+def _keyword_of_symbol(item: Item) -> str | None:
+    return item.text.lower() if isinstance(item, Symbol) else None
+
+
+def _header(reader: _Reader, root: Node, kind: str) -> tuple[str, list[Item]]:
+    items = root.items
+    if not items or _keyword_of(root) != "define":
+        reader.fail("expected '(define ...)'", root)
+    if len(items) < 2 or not isinstance(items[1], Node) or len(items[1].items) != 2:
+        reader.fail(f"expected '({kind} NAME)' after define", items[1] if len(items) > 1 else root)
+    head = items[1]
+    head_kind = reader.symbol(head.items[0], kind)
+    if head_kind != kind:
+        other = "problem" if kind == "domain" else "domain"
+        if head_kind == other:
+            reader.fail(f"this is a PDDL {other} file, not a {kind} file", head)
+        reader.fail(f"expected '({kind} NAME)', found '({head_kind} ...)'", head)
+    return reader.symbol(head.items[1], f"{kind} name"), items[2:]
+
+
+def _requirements(reader: _Reader, body: list[Item]) -> frozenset[str]:
+    found = set()
+    for item in body:
+        requirement = reader.symbol(item, "a requirement")
+        if requirement in UNSUPPORTED_REQUIREMENTS:
+            reader.fail(
+                f"requirement '{requirement}': {UNSUPPORTED_REQUIREMENTS[requirement]} are not supported",
+                item,
+                UnsupportedFeatureError,
+            )
+        if not requirement.startswith(":"):
+            reader.fail(f"requirement '{requirement}' must start with ':'", item)
+        found.add(requirement)
+    return frozenset(found)
+
+
+def _type_name(reader: _Reader, item: Item) -> str:
+    if isinstance(item, Node):
+        if _keyword_of(item) != "either" or len(item.items) < 2:
+            reader.fail("expected a type name or '(either TYPE ...)'", item)
+        members = [reader.symbol(member, "a type name") for member in item.items[1:]]
+        return "(either " + " ".join(members) + ")" if len(members) > 1 else members[0]
+    return item.text.lower()
+
+
+def _typed_list(reader: _Reader, items: list[Item], what: str) -> tuple[list[tuple[Symbol, str]], list[ObjectGroup]]:
+    """'a b - t c - u d' -> [(symbol, type)] and the groups ((symbols...), type item | None)."""
+    result: list[tuple[Symbol, str]] = []
+    groups: list[ObjectGroup] = []
+    pending: list[Symbol] = []
+    index = 0
+    while index < len(items):
+        item = items[index]
+        if isinstance(item, Node):
+            reader.fail(f"unexpected list in {what}", item)
+        if len(item.text) > 1 and item.text[0] == "-" and item.text[1].isalpha():
+            # '?x -type', a dash glued to its type as some published domains write it
+            if not pending:
+                reader.fail(f"type given to nothing in {what}", item)
+            type_name = item.text[1:].lower()
+            result.extend((symbol, type_name) for symbol in pending)
+            groups.append((tuple(pending), item))
+            pending = []
+            index += 1
+            continue
+        if item.text == "-":
+            if index + 1 >= len(items):
+                reader.fail(f"missing type after '-' in {what}", item)
+            if not pending:
+                reader.fail(f"type given to nothing in {what}", item)
+            type_item = items[index + 1]
+            type_name = _type_name(reader, type_item)
+            result.extend((symbol, type_name) for symbol in pending)
+            groups.append((tuple(pending), type_item))
+            pending = []
+            index += 2
+            continue
+        pending.append(item)
+        index += 1
+    if pending:
+        result.extend((symbol, "object") for symbol in pending)
+        groups.append((tuple(pending), None))
+    return result, groups
+
+
 # --------------------------------------------------------------------------- domains
 
 
@@ -475,7 +485,7 @@ def read_domain(text: str, path: str | None = None, deadline: float | None = Non
 
 def _read_domain(text: str, path: str | None, deadline: float | None) -> Domain:
     reader = _Reader(path)
-    name, sections = reader.header(parse_sexpr(text, path, deadline), "domain")
+    name, sections = _header(reader, parse_sexpr(text, path, deadline), "domain")
     parts = _DomainParts()
     for section in sections:
         _read_domain_section(reader, section, parts)
@@ -517,16 +527,16 @@ def _read_domain(text: str, path: str | None, deadline: float | None) -> Domain:
 
 
 def _read_domain_section(reader: _Reader, section: Item, parts: _DomainParts) -> None:
-    key = reader.keyword_of(section)
+    key = _keyword_of(section)
     if key is None or not isinstance(section, Node):
         reader.fail("expected a '(:section ...)'", section)
     body = section.items[1:]
     if key == ":requirements":
-        parts.requirements = parts.requirements | reader.requirements(body)
+        parts.requirements = parts.requirements | _requirements(reader, body)
     elif key == ":types":
         _read_types(reader, body, parts)
     elif key == ":constants":
-        pairs, _ = reader.typed_list(body, ":constants")
+        pairs, _ = _typed_list(reader, body, ":constants")
         for symbol, type_name in pairs:
             _check_type(reader, type_name, parts.types, symbol, f"constant '{symbol.text}'", PDDLParseError)
             parts.constants[symbol.text.lower()] = type_name
@@ -577,7 +587,7 @@ def _check_type(
 
 def _read_types(reader: _Reader, body: list[Item], parts: _DomainParts) -> None:
     types = parts.types
-    pairs, groups = reader.typed_list(body, ":types")
+    pairs, groups = _typed_list(reader, body, ":types")
     for symbol, parent in pairs:
         name = symbol.text.lower()
         if parent.startswith("(either"):
@@ -599,7 +609,7 @@ def _read_functions(reader: _Reader, body: list[Item], parts: _DomainParts) -> N
         if isinstance(item, Symbol) and item.text == "-":
             if index + 1 >= len(body):
                 reader.fail("missing type after '-' in :functions", item)
-            kind = reader.type_name(body[index + 1])
+            kind = _type_name(reader, body[index + 1])
             if kind != NUMBER:
                 reader.fail(
                     f"object fluents (functions of type '{kind}') are not supported", item, UnsupportedFeatureError
@@ -621,9 +631,9 @@ _DURATIVE_FIELDS = (":parameters", ":duration", ":condition", ":effect")
 
 def _read_action(reader: _Reader, node: Node, scope: _Scope) -> Action:
     items = node.items
-    durative = reader.keyword_of(node) == ":durative-action"
+    durative = _keyword_of(node) == ":durative-action"
     if len(items) < 2:
-        reader.fail(f"'{reader.keyword_of(node)}' needs a name", node)
+        reader.fail(f"'{_keyword_of(node)}' needs a name", node)
     name = reader.symbol(items[1], "an action name")
     allowed = _DURATIVE_FIELDS if durative else _ACTION_FIELDS
     fields: dict[str, Item] = {}
@@ -882,7 +892,7 @@ def _read_problem_from(
     atoms: _PlainAtoms | None,
 ) -> Problem:
     reader = _Reader(path)
-    name, sections = reader.header(root, "problem")
+    name, sections = _header(reader, root, "problem")
     found, requirements = _problem_sections(reader, root, sections, domain)
     objects, display, groups = _read_objects(reader, found.get(":objects"), domain)
     check_deadline(deadline, "reading the objects", path)
@@ -921,7 +931,7 @@ def _problem_sections(
     found: dict[str, Any] = {"init": []}
     requirements: frozenset[str] = frozenset()
     for section in sections:
-        key = reader.keyword_of(section)
+        key = _keyword_of(section)
         if key is None or not isinstance(section, Node):
             reader.fail("expected a '(:section ...)'", section)
         if key in found and key != ":init":
@@ -930,7 +940,7 @@ def _problem_sections(
         if key == ":domain":
             found[key] = _domain_name(reader, section, domain)
         elif key == ":requirements":
-            requirements = reader.requirements(body)
+            requirements = _requirements(reader, body)
             found[key] = True
         elif key == ":init":
             found["init"].extend(body)
@@ -1003,7 +1013,7 @@ def _read_objects(
     display: dict[str, str] = {}
     if section is None:
         return objects, display, ()
-    pairs, groups = reader.typed_list(section.items[1:], ":objects")
+    pairs, groups = _typed_list(reader, section.items[1:], ":objects")
     for symbol, type_name in pairs:
         lowered = symbol.text.lower()
         for member in type_name.removeprefix("(either ").rstrip(")").split():
@@ -1026,7 +1036,7 @@ def _read_init(
             check_deadline(deadline, "reading ':init'", reader.path, node.line)
         if not isinstance(node, Node) or not node.items:
             reader.fail("expected an atom in ':init'", node)
-        head = reader.keyword_of(node)
+        head = _keyword_of(node)
         mentioned: set[str] = set()
         if head == "at" and len(node.items) == 3 and _number(_text(node.items[1])) is not None:
             parts.timed.append(_read_timed_literal(reader, node, scope, mentioned))
@@ -1081,7 +1091,7 @@ def _read_timed_literal(reader: _Reader, node: Node, scope: _Scope, mentioned: s
     inner = node.items[2]
     if not isinstance(inner, Node):
         reader.fail("expected '(at TIME FACT)'", node)
-    head = reader.keyword_of(inner)
+    head = _keyword_of(inner)
     if head == "=":
         term, value = _read_numeric_value(reader, inner, scope)
         mentioned.update(term[1:])

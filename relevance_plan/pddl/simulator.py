@@ -46,7 +46,7 @@ from collections import defaultdict
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 
-from relevance_plan.errors import SimulationTimeout, counted
+from relevance_plan.errors import SimulationTimeout
 from relevance_plan.pddl import formulas as f
 from relevance_plan.pddl.formatter import format_formula, format_number, format_step
 from relevance_plan.pddl.model import (
@@ -58,7 +58,7 @@ from relevance_plan.pddl.model import (
     TimedLiteral,
     all_objects,
 )
-from relevance_plan.pddl.plans import Plan, PlanStep
+from relevance_plan.pddl.plans import PlanStep
 
 DURATION_TOLERANCE = 1e-3  # planners print durations with three decimals
 SAME_INSTANT = 1e-9
@@ -74,24 +74,13 @@ class StepFailure(Exception):
         self.step = step
 
 
-@dataclass(frozen=True)
-class Simulation:
-    valid: bool
-    message: str
-    failed_step: int | None = None
-    cost: float | None = None  # the total-cost fluent at the end, when the problem has one
-    makespan: float | None = None  # timed plans
-    metric: float | None = None  # the value of the problem's :metric at the end, when it can be evaluated
-    metric_note: str = ""  # why the metric has no value (preferences, a value never set)
-
-
 @dataclass
-class State:
+class WorldState:
     facts: set[f.GroundAtom]
     values: dict[f.GroundAtom, float]  # (function, args...) -> float
 
-    def copy(self) -> State:
-        return State(set(self.facts), dict(self.values))
+    def copy(self) -> WorldState:
+        return WorldState(set(self.facts), dict(self.values))
 
 
 class Simulator:
@@ -139,7 +128,7 @@ class Simulator:
     # ---------------------------------------------------------------- conditions
 
     def holds(
-        self, formula: f.Formula, state: State, binding: Mapping[str, str], index: _FactIndex | None = None
+        self, formula: f.Formula, state: WorldState, binding: Mapping[str, str], index: _FactIndex | None = None
     ) -> bool:
         """Does ``formula`` hold in ``state`` under ``binding``?  With ``index`` (the facts of
         ``state``, indexed), quantifiers try only the bindings the facts allow."""
@@ -176,7 +165,7 @@ class Simulator:
             return True if isinstance(formula, f.Preference) else self.holds(formula.body, state, binding, index)
         raise StepFailure(f"cannot evaluate {type(formula).__name__} in a condition")
 
-    def value(self, expression: f.Expression, state: State, binding: Mapping[str, str]) -> float:
+    def value(self, expression: f.Expression, state: WorldState, binding: Mapping[str, str]) -> float:
         if isinstance(expression, f.Number):
             return expression.value
         if isinstance(expression, f.Fluent):
@@ -211,7 +200,9 @@ class Simulator:
 
     # ---------------------------------------------------------------- effects
 
-    def effects(self, effect: f.Formula, state: State, binding: Mapping[str, str], when: str | None = None) -> Effects:
+    def effects(
+        self, effect: f.Formula, state: WorldState, binding: Mapping[str, str], when: str | None = None
+    ) -> Effects:
         """What ``effect`` does in ``state`` (conditions and values read in ``state``); for a
         durative action, only its parts at ``when`` ("start" or "end")."""
         found = Effects(set(), set(), {})
@@ -233,7 +224,7 @@ class Simulator:
     def _collect(
         self,
         effect: f.Formula,
-        state: State,
+        state: WorldState,
         binding: Mapping[str, str],
         when: str | None,
         current: str | None,
@@ -265,7 +256,7 @@ class Simulator:
             if current == when:
                 self._numeric(effect, state, binding, found)
 
-    def _numeric(self, effect: f.NumericEffect, state: State, binding: Mapping[str, str], found: Effects) -> None:
+    def _numeric(self, effect: f.NumericEffect, state: WorldState, binding: Mapping[str, str], found: Effects) -> None:
         key = (effect.fluent.function, *(binding.get(a, a) for a in effect.fluent.args))
         amount = self.value(effect.value, state, binding)
         if self.track_reads:
@@ -282,7 +273,7 @@ class Simulator:
 
     # ---------------------------------------------------------------- derived predicates
 
-    def derive(self, state: State) -> None:
+    def derive(self, state: WorldState) -> None:
         """Replace the derived facts of ``state`` by those its basic facts imply (stratified fixpoint).
 
         Semi-naive: after a stratum's first round, a rule is tried again only when a predicate its
@@ -324,7 +315,7 @@ class Simulator:
         return self._candidates(cover, {}, index)
 
     def _quantified(
-        self, formula: f.Exists | f.Forall, state: State, binding: Mapping[str, str], index: _FactIndex
+        self, formula: f.Exists | f.Forall, state: WorldState, binding: Mapping[str, str], index: _FactIndex
     ) -> bool:
         """``exists`` or ``forall`` tried only on the bindings under which its body (for ``forall``,
         the body's negation) may hold, found in ``index``; under every other binding the body holds
@@ -544,7 +535,7 @@ class Effects:
     deltas: dict[f.GroundAtom, float] = field(default_factory=dict)  # increase and decrease, summed
     reads: set[tuple[str, ...]] = field(default_factory=set)  # read by the effects: ("fact"|"value", ...)
 
-    def apply(self, state: State) -> None:
+    def apply(self, state: WorldState) -> None:
         state.facts.difference_update(self.deletes - self.adds)  # add-after-delete, as the planners do
         state.facts.update(self.adds)
         state.values.update(self.values)
@@ -580,7 +571,7 @@ def _update(op: str, old: float | None, amount: float, key: f.GroundAtom) -> flo
     return old / amount
 
 
-def why_false(simulator: Simulator, formula: f.Formula, state: State, binding: Mapping[str, str]) -> str:
+def why_false(simulator: Simulator, formula: f.Formula, state: WorldState, binding: Mapping[str, str]) -> str:
     """The part of ``formula`` that fails in ``state``, named: the atom that is false (or true, under
     a ``not``), the comparison with its values, the quantifier's failing instance."""
     spelling = simulator.problem.spelling
@@ -645,8 +636,8 @@ def _strata(domain: Domain) -> tuple[tuple[DerivedPredicate, ...], ...]:
     return tuple(tuple(r for r in domain.derived if level[r.head.predicate] == i) for i in range(top + 1))
 
 
-def initial_state(problem: Problem) -> State:
-    return State(set(problem.init), dict(problem.numeric_init))
+def initial_state(problem: Problem) -> WorldState:
+    return WorldState(set(problem.init), dict(problem.numeric_init))
 
 
 def cost_functions(domain: Domain, problem: Problem) -> frozenset[str]:
@@ -674,50 +665,23 @@ def cost_functions(domain: Domain, problem: Problem) -> frozenset[str]:
     return frozenset({"total-cost"} | ((increased & in_metric) - other))
 
 
+# --------------------------------------------------------------------------- running a plan
+
+
+def run_plan(simulator: Simulator, steps: Sequence[PlanStep]) -> tuple[WorldState, float | None]:
+    """Run ``steps`` from the problem's initial state: the final state and, for a timed plan
+    (steps with start times, a temporal domain or timed literals: PDDL 2.1 semantics), its
+    makespan (None for a sequential plan).  :class:`StepFailure` names the step that fails."""
+    problem = simulator.problem
+    if any(step.time is not None for step in steps) or simulator.domain.temporal or problem.timed_literals:
+        return _run_timed(simulator, steps)
+    return _run_sequential(simulator, steps), None
+
+
 # --------------------------------------------------------------------------- sequential plans
 
 
-def simulate(
-    domain: Domain, problem: Problem, plan: Plan | Sequence[PlanStep], deadline: float | None = None
-) -> Simulation:
-    """Run ``plan`` on ``problem``; a timed plan (steps with start times) gets PDDL 2.1 semantics."""
-    steps = plan.steps if isinstance(plan, Plan) else tuple(plan)
-    simulator = Simulator(domain, problem, deadline)
-    try:
-        if any(step.time is not None for step in steps) or domain.temporal or problem.timed_literals:
-            state, makespan = _run_timed(simulator, steps)
-        else:
-            state, makespan = _run_sequential(simulator, steps), None
-        if not simulator.holds(problem.goal, state, {}):
-            unmet = why_false(simulator, problem.goal, state, {})
-            raise StepFailure(f"the goal is not satisfied at the end of the plan: {unmet}")
-    except StepFailure as failure:
-        return Simulation(False, failure.message, failure.step)
-    cost = state.values.get(("total-cost",))
-    if cost is None and "total-cost" in domain.functions:
-        cost = 0.0
-    metric, note = _metric(simulator, state, len(steps) if makespan is None else makespan)
-    what = counted(len(steps), "step") + (f", makespan {makespan:g}" if makespan is not None else "")
-    return Simulation(True, f"{what}, goal reached", cost=cost, makespan=makespan, metric=metric, metric_note=note)
-
-
-def _metric(simulator: Simulator, state: State, total_time: float) -> tuple[float | None, str]:
-    """The problem's metric in the final state, or None and why not.  ``total-time`` is the
-    makespan of a timed plan and, as in VAL, the number of steps of a sequential one."""
-    metric = simulator.problem.metric
-    if metric is None:
-        return None, ""
-    nodes = list(f.walk(metric.expression))
-    if any(isinstance(node, f.Fluent) and node.function == "is-violated" for node in nodes):
-        return None, "the metric counts violated preferences, which are not evaluated"
-    final = State(state.facts, {**state.values, ("total-time",): float(total_time)})
-    try:
-        return simulator.value(metric.expression, final, {}), ""
-    except StepFailure as failure:
-        return None, f"the metric cannot be evaluated: {failure.message}"
-
-
-def _run_sequential(simulator: Simulator, steps: Sequence[PlanStep]) -> State:
+def _run_sequential(simulator: Simulator, steps: Sequence[PlanStep]) -> WorldState:
     simulator.track_reads = False  # one step at a time: nothing can interfere
     state = initial_state(simulator.problem)
     simulator.derive(state)
@@ -771,7 +735,7 @@ class _Happening:
     duration: float | None = None  # a start whose given duration is checked in the state it starts in
 
 
-def _run_timed(simulator: Simulator, steps: Sequence[PlanStep]) -> tuple[State, float]:
+def _run_timed(simulator: Simulator, steps: Sequence[PlanStep]) -> tuple[WorldState, float]:
     state = initial_state(simulator.problem)
     simulator.derive(state)
     happenings = _happenings(simulator, steps, state)
@@ -794,7 +758,7 @@ def _run_timed(simulator: Simulator, steps: Sequence[PlanStep]) -> tuple[State, 
     return state, makespan
 
 
-def _happenings(simulator: Simulator, steps: Sequence[PlanStep], state: State) -> list[_Happening]:
+def _happenings(simulator: Simulator, steps: Sequence[PlanStep], state: WorldState) -> list[_Happening]:
     happenings: list[_Happening] = []
     for number, step in enumerate(steps, start=1):
         action, binding = _bind(simulator, step, number)
@@ -814,7 +778,7 @@ def _happenings(simulator: Simulator, steps: Sequence[PlanStep], state: State) -
 
 
 def _duration(
-    simulator: Simulator, action: Action, step: PlanStep, binding: Mapping[str, str], state: State, number: int
+    simulator: Simulator, action: Action, step: PlanStep, binding: Mapping[str, str], state: WorldState, number: int
 ) -> float:
     """The step's duration.  One the plan gives is checked against the action's constraint when the
     step starts, in the values its fluents have then (a rover's recharge lasts as long as its
@@ -842,7 +806,7 @@ def _check_duration(
     action: Action,
     step: PlanStep | None,
     binding: Mapping[str, str],
-    state: State,
+    state: WorldState,
     number: int,
     duration: float,
 ) -> None:
@@ -855,7 +819,7 @@ def _check_duration(
 
 
 def _duration_fits(
-    simulator: Simulator, part: f.Comparison, duration: float, state: State, binding: Mapping[str, str]
+    simulator: Simulator, part: f.Comparison, duration: float, state: WorldState, binding: Mapping[str, str]
 ) -> bool:
     timed = dict(binding)
     timed["?duration"] = repr(duration)
@@ -866,7 +830,9 @@ def _duration_fits(
     return _compare(part.op, left, right) or abs(left - right) <= DURATION_TOLERANCE
 
 
-def _apply_group(simulator: Simulator, state: State, group: list[_Happening], running: dict[int, _Happening]) -> None:
+def _apply_group(
+    simulator: Simulator, state: WorldState, group: list[_Happening], running: dict[int, _Happening]
+) -> None:
     """Apply the happenings of one instant: conditions in the state before, then every effect at once."""
     found: list[tuple[_Happening, Effects, set[tuple[str, ...]]]] = []
     for happening in group:
@@ -887,7 +853,7 @@ def _apply_group(simulator: Simulator, state: State, group: list[_Happening], ru
 
 
 def _happening_effects(
-    simulator: Simulator, state: State, happening: _Happening
+    simulator: Simulator, state: WorldState, happening: _Happening
 ) -> tuple[Effects, set[tuple[str, ...]]]:
     literal = happening.literal
     if literal is not None:
@@ -922,7 +888,7 @@ def _at(condition: f.Formula, when: str) -> f.And:
     return f.And(tuple(part.body for part in f.conjuncts_timed(condition) if part.when == when))
 
 
-def _check_invariant(simulator: Simulator, state: State, start: _Happening) -> None:
+def _check_invariant(simulator: Simulator, state: WorldState, start: _Happening) -> None:
     action, binding = start.action, start.binding
     assert action is not None and binding is not None
     invariant = _at(action.precondition, "all")

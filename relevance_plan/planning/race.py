@@ -20,6 +20,7 @@ import threading
 from collections.abc import Callable
 from typing import Generic, TypeVar
 
+from relevance_plan.planning.methods import Method
 from relevance_plan.supervision.process import CancelScope, cancel_scope
 from relevance_plan.supervision.spawn import usable_cores
 
@@ -29,7 +30,7 @@ THREAD_NAME = "relevance-plan-race"
 
 def race_by_default(method: str) -> bool:
     """``plan``'s default: race when pruning may guess wrong and a second core is there to take it."""
-    return method == "relevance" and usable_cores() >= 2
+    return method == Method.RELEVANCE and usable_cores() >= 2
 
 
 class Race(Generic[T]):

@@ -5,7 +5,7 @@ an :class:`Attempt` (one run on one object set) in an :class:`AttemptStatus`,
 which is the planner's status unless a plan was found, and then what its
 validation on the original problem said; a problem's :class:`PlanResult` in a
 :class:`PlanStatus`, taken from the last attempt (``PLANNER_TO_PLAN_STATUS``
-and ``loop.summarise``); the CLI's exit code from the :class:`PlanStatus`
+and ``summary.summarise``); the CLI's exit code from the :class:`PlanStatus`
 (``exitcodes.PLAN_STATUS_EXIT``).  docs/how-it-works.md has the whole table.
 """
 
@@ -20,9 +20,10 @@ from typing import Any
 
 from relevance_plan.pddl.model import UNSPELLED, Problem, Spelling
 from relevance_plan.pddl.plans import Plan, format_plan, format_plan_step
+from relevance_plan.planning.methods import Method
 from relevance_plan.planning.planners.base import PlannerStatus, RunOutcome
 from relevance_plan.planning.planners.registry import DEFAULT_PLANNER
-from relevance_plan.planning.validate import ValidationResult, ValidationStatus
+from relevance_plan.planning.validation import ValidationResult, ValidationStatus
 from relevance_plan.progress import ProgressCallback, ProgressEvent
 from relevance_plan.relevance.scoring.word_matching import WordMatch
 from relevance_plan.relevance.selection.prune import Selection, Thresholds
@@ -117,7 +118,7 @@ class Attempt:
 
 @dataclass(frozen=True)
 class PlanResult:
-    method: str
+    method: Method
     status: PlanStatus
     plan: Plan = Plan()
     plan_cost: float | None = None
@@ -177,7 +178,7 @@ class PlanResult:
             return self.refusal
         if self.selection is not None:
             return self.selection.unpruned_reason or None
-        return "method 'pure' plans the full problem" if self.method == "pure" else None
+        return f"method '{Method.PURE}' plans the full problem" if self.method == Method.PURE else None
 
     @property
     def first_attempt_status(self) -> str:
@@ -277,8 +278,8 @@ class RunRecord:
     reports its attempt too: the facts are one frozen value, replaced under a lock.
     """
 
-    def __init__(self, method: str, progress: ProgressCallback | None = None):
-        self.method = method
+    def __init__(self, method: Method | str, progress: ProgressCallback | None = None):
+        self.method = Method(method)
         self._progress = progress
         self._started = time.perf_counter()
         self._lock = threading.Lock()
@@ -393,7 +394,9 @@ class RunRecord:
         )
 
 
-def kept_count(attempts: Sequence[Attempt], selection: Selection | None, total: int | None, method: str) -> int | None:
+def kept_count(
+    attempts: Sequence[Attempt], selection: Selection | None, total: int | None, method: Method
+) -> int | None:
     """A result's ``objects_kept``: the last attempt's that was not stopped; before any such attempt,
     the first selection's; for method 'pure', all; None when no selection was made."""
     ran = [a for a in attempts if not a.stopped]
@@ -401,7 +404,7 @@ def kept_count(attempts: Sequence[Attempt], selection: Selection | None, total: 
         return ran[-1].objects_kept
     if selection is not None:
         return len(selection.kept)
-    return total if method == "pure" else None
+    return total if not method.prunes else None
 
 
 def race_sides(result: PlanResult) -> dict[str, str]:

@@ -49,7 +49,7 @@ class GraphClass:
 
 
 @dataclass(frozen=True)
-class Vocabulary:
+class LabelVocabulary:
     things: Mapping[str, GraphClass]
     rooms: Mapping[str, GraphClass]
 
@@ -76,7 +76,7 @@ def _read_classes(entries: Any, rooms: bool, path: str) -> dict[str, GraphClass]
 
 
 @functools.lru_cache(maxsize=4)
-def load_vocabulary(path: Path = VOCABULARY_FILE) -> Vocabulary:
+def load_vocabulary(path: Path = VOCABULARY_FILE) -> LabelVocabulary:
     """The classes a label can be (``data/scene_graphs/classes.yaml`` unless told otherwise)."""
     import yaml
 
@@ -87,7 +87,7 @@ def load_vocabulary(path: Path = VOCABULARY_FILE) -> Vocabulary:
         raise ModelError("the class vocabulary must be a mapping with 'things' and 'rooms'", path=str(path))
     things = _read_classes(data.get("things", {}), False, str(path))
     rooms = _read_classes(data.get("rooms", {}), True, str(path))
-    return Vocabulary(MappingProxyType(things), MappingProxyType(rooms))
+    return LabelVocabulary(MappingProxyType(things), MappingProxyType(rooms))
 
 
 # --------------------------------------------------------------------------- the user's mapping
@@ -232,7 +232,7 @@ class LabelQuery:
 
 
 def place_labels(
-    queries: Sequence[LabelQuery], vocabulary: Vocabulary, floor: float = DEFAULT_FLOOR
+    queries: Sequence[LabelQuery], vocabulary: LabelVocabulary, floor: float = DEFAULT_FLOOR
 ) -> tuple[Placement, ...]:
     """Each label as a class of the vocabulary, or a question (see the module docstring)."""
     placed: list[Placement | None] = []
@@ -256,7 +256,7 @@ def _by_meaning(
     queries: Sequence[LabelQuery],
     unplaced: list[int],
     placed: list[Placement | None],
-    vocabulary: Vocabulary,
+    vocabulary: LabelVocabulary,
     floor: float,
 ) -> list[Placement | None]:
     try:
@@ -292,9 +292,9 @@ def _by_meaning(
     return placed
 
 
-def _nearest_one(query: LabelQuery, vocabulary: Vocabulary) -> tuple[tuple[str, float], ...]:
+def _nearest_one(query: LabelQuery, vocabulary: LabelVocabulary) -> tuple[tuple[str, float], ...]:
     return nearest([query.name or ""], vocabulary.of(query.layer))[0]
 
 
-def _coarse(query: LabelQuery, vocabulary: Vocabulary) -> str | None:
+def _coarse(query: LabelQuery, vocabulary: LabelVocabulary) -> str | None:
     return spelled(query.coarse, vocabulary.of(query.layer)) if query.coarse else None

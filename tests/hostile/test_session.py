@@ -217,13 +217,13 @@ MOVES = 100
 @functools.lru_cache(maxsize=1)
 def _scene_and_moves() -> tuple[str, bytes]:
     """A generated scene graph and its item moves, each seen in the new receptacle first (made once)."""
+    from relevance_plan.generators import WORLDS, Settings
     from relevance_plan.generators.scenegraph import SceneGraphEvents
-    from relevance_plan.generators.sized import generate_sized_problem
     from relevance_plan.io import load_domain
     from relevance_plan.pddl.formulas import literals
     from relevance_plan.pddl.parser import read_problem
 
-    text = generate_sized_problem("scenegraph", 3, 1, SCENE_SIZE).pddl_text
+    text = WORLDS["scenegraph"].problem(3, 1, Settings(size=SCENE_SIZE)).pddl_text
     problem = read_problem(text, load_domain(DOMAINS_DIR / "scenegraph" / "domain.pddl"))
     goal = [(atom.predicate, *atom.args) for atom, _ in literals(problem.goal)]
     stream = SceneGraphEvents(dict(problem.objects), problem.init, goal, random.Random(3), new_place_first=True)

@@ -16,7 +16,7 @@ from pathlib import Path
 
 from relevance_plan.data import DOMAINS_DIR
 from relevance_plan.io import load_task
-from relevance_plan.planning.loop import PlanOptions
+from relevance_plan.planning.options import PlanOptions
 from relevance_plan.planning.planners.registry import make_planner
 from relevance_plan.relevance.setup import ScoringOptions
 from relevance_plan.session import Session

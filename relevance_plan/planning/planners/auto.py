@@ -53,7 +53,7 @@ PDDL_PLUS = "PDDL+"  # how the reader's refusals of processes, events and contin
 
 
 @dataclass(frozen=True)
-class Candidate:
+class PlannerCandidate:
     name: str  # as --planner takes it
     takes: frozenset[str]
     installed: Callable[[], bool]
@@ -65,7 +65,7 @@ def has_module(name: str) -> bool:
     return importlib.util.find_spec(name) is not None
 
 
-def _engine(engine: str, package: str) -> Candidate:
+def _engine(engine: str, package: str) -> PlannerCandidate:
     needs_java = engine in JAVA_ENGINES
 
     def installed() -> bool:
@@ -78,13 +78,13 @@ def _engine(engine: str, package: str) -> Candidate:
         return ", and ".join(missing)
 
     takes = ENGINE_FEATURES[engine] - FITTED_ONLY.get(engine, frozenset())  # only what it surely takes
-    return Candidate(f"up:{engine}", takes, installed, install, lambda _: UnifiedPlanningPlanner(engine))
+    return PlannerCandidate(f"up:{engine}", takes, installed, install, lambda _: UnifiedPlanningPlanner(engine))
 
 
-FAST_DOWNWARD = Candidate(
+FAST_DOWNWARD = PlannerCandidate(
     "fast-downward", FAST_DOWNWARD_FEATURES, lambda: True, str, lambda config: FastDownwardPlanner(config)
 )
-LPG = Candidate("lpg", LPG_FEATURES, lambda: lpg_binary() is not None, lambda: LPG_HINT, lambda _: LpgPlanner())
+LPG = PlannerCandidate("lpg", LPG_FEATURES, lambda: lpg_binary() is not None, lambda: LPG_HINT, lambda _: LpgPlanner())
 ARIES = _engine("aries", "up-aries")
 TAMER = _engine("tamer", "up-tamer")
 ENHSP = _engine("enhsp", "up-enhsp")
@@ -103,7 +103,7 @@ class Choice:
     reason: str  # why it was chosen, for the progress line and the JSON
 
 
-def family(uses: frozenset[str]) -> tuple[str, Sequence[Candidate]]:
+def family(uses: frozenset[str]) -> tuple[str, Sequence[PlannerCandidate]]:
     """The problem's family, and its planners in order of preference."""
     if uses <= f.CLASSICAL:
         return "classical", CLASSICAL_ORDER

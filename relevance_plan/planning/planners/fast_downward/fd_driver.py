@@ -35,7 +35,7 @@ TYPE_CHECKING = False  # typing's own flag would import typing
 if TYPE_CHECKING:
     from typing import TypedDict
 
-    class _Run(TypedDict):
+    class _DriverRun(TypedDict):
         inputs: list[str]
         search: list[str]
         alias: str | None
@@ -56,12 +56,12 @@ _TIME_UNITS = {"s": 1, "m": 60, "h": 3600}
 _MEMORY_UNITS = {"k": 2**10, "m": 2**20, "g": 2**30}
 
 
-class _NotPlain(Exception):
+class _NotThisDriver(Exception):
     """The arguments ask for something only the real driver does."""
 
 
-def _read(arguments: list[str]) -> _Run:
-    """The run the arguments describe; ``_NotPlain`` when this driver does not do it."""
+def _read(arguments: list[str]) -> _DriverRun:
+    """The run the arguments describe; ``_NotThisDriver`` when this driver does not do it."""
     options: dict[str, str] = {}
     flags: set[str] = set()
     index = 0
@@ -74,15 +74,15 @@ def _read(arguments: list[str]) -> _Run:
             options[name] = arguments[index + 1]
             index += 2
         else:
-            raise _NotPlain(name)
+            raise _NotThisDriver(name)
     inputs = arguments[index : index + 2]
     search = arguments[index + 2 :]
     if len(inputs) != 2 or any(item.startswith("-") or not os.path.isfile(item) for item in inputs):
-        raise _NotPlain("inputs")
+        raise _NotThisDriver("inputs")
     if len(search) % 2 or not set(search[::2]) <= _SEARCH_OPTIONS:
-        raise _NotPlain("search options")
+        raise _NotThisDriver("search options")
     if ("--alias" in options) == bool(search):
-        raise _NotPlain("one of --alias or search options")
+        raise _NotThisDriver("one of --alias or search options")
     return {
         "inputs": inputs,
         "search": search,
@@ -100,12 +100,12 @@ def _amount(text: str | None, units: dict[str, int], default: str) -> int | None
         return None
     number, unit = (text[:-1], text[-1].lower()) if text[-1:].isalpha() else (text, default)
     if not number.isdigit() or unit not in units:
-        raise _NotPlain("limit")
+        raise _NotThisDriver("limit")
     return int(number) * units[unit]
 
 
 def _search_options(driver: str, alias: str) -> list[str]:
-    """The search options of ``alias``, from the driver's own table; ``_NotPlain`` for a portfolio or
+    """The search options of ``alias``, from the driver's own table; ``_NotThisDriver`` for a portfolio or
     an alias whose options the driver itself reads."""
     sys.path.insert(0, os.path.dirname(driver))
     try:
@@ -113,11 +113,11 @@ def _search_options(driver: str, alias: str) -> list[str]:
 
         options = aliases.ALIASES.get(alias)
     except Exception as error:  # noqa: BLE001 - a driver laid out otherwise: it reads its aliases itself
-        raise _NotPlain(f"alias table: {error}") from None
+        raise _NotThisDriver(f"alias table: {error}") from None
     finally:
         del sys.path[0]
     if options is None or any(option.startswith(("--if-", "--always")) for option in options):
-        raise _NotPlain(f"alias {alias}")
+        raise _NotThisDriver(f"alias {alias}")
     return list(options)
 
 
@@ -164,14 +164,14 @@ def _wait(pid: int) -> int:
     return os.waitstatus_to_exitcode(status)
 
 
-def _plan(driver: str, run: _Run) -> int:
-    """Translate, then search: the driver's exit code.  ``_NotPlain`` (before anything is left
+def _plan(driver: str, run: _DriverRun) -> int:
+    """Translate, then search: the driver's exit code.  ``_NotThisDriver`` (before anything is left
     behind) when the alias turns out to be one only the driver reads."""
     root = os.path.dirname(os.path.abspath(driver))
     binaries = os.path.join(root, "builds", "release", "bin")
     search_binary = os.path.join(binaries, "downward")
     if not (os.path.isdir(os.path.join(binaries, "fast_downward")) and os.access(search_binary, os.X_OK)):
-        raise _NotPlain("build")
+        raise _NotThisDriver("build")
     time_limit, memory = run["time_limit"], run["memory_limit"]
     python_path = os.pathsep.join(filter(None, [binaries, os.environ.get("PYTHONPATH")]))
     translate = [sys.executable, "-m", "fast_downward.translate", *run["inputs"], "--sas-file", SAS_FILE]
@@ -189,7 +189,7 @@ def _plan(driver: str, run: _Run) -> int:
         if not search:
             assert run["alias"] is not None  # _read takes an alias when no search options are given
             search = _search_options(driver, run["alias"])
-    except _NotPlain:
+    except _NotThisDriver:
         os.kill(translator, 9)  # SIGKILL: the real driver translates again
         _wait(translator)
         _remove(SAS_FILE)
@@ -223,7 +223,7 @@ def main() -> None:
     driver, arguments = sys.argv[1], sys.argv[2:]
     try:
         code = _plan(driver, _read(arguments))
-    except _NotPlain:
+    except _NotThisDriver:
         sys.stdout.flush()
         os.execv(sys.executable, [sys.executable, driver, *arguments])
     # as the driver exits: a death by signal N as -N, which the exit status carries as 256 - N

@@ -15,7 +15,7 @@ decided here: every argument is checked again by the CLI, and a head start
 that does not match is simply not used.
 
 Everything this module imports at its top delays the driver, so that is
-``os``, ``sys``, ``limits``, ``command_line`` and ``spawn`` (no ``re``, ``typing``,
+``os``, ``sys``, ``limits``, ``methods``, ``command_line`` and ``spawn`` (no ``re``, ``typing``,
 ``pathlib``, ``subprocess``, ``contextlib`` or ``threading``): the
 command line and the domain are read with string methods, and what waits
 for the run (``process``) is imported once the tool needs it.
@@ -29,6 +29,7 @@ import os
 import sys
 
 from relevance_plan.limits import DEFAULT_TIMEOUT, MAX_TIMEOUT
+from relevance_plan.planning.methods import Method
 from relevance_plan.planning.planners.fast_downward import command_line
 from relevance_plan.supervision import spawn
 
@@ -57,7 +58,7 @@ VALUE_OPTIONS = frozenset(
 FLAGS = frozenset(
     {"--json", "--no-race", "--no-relax", "--no-widen", "--place-kinds", "--quiet", "--race", "--verbose", "-q"}
 )
-DEFAULT_METHOD = "relevance"
+DEFAULT_METHOD = Method.RELEVANCE
 DEFAULT_PLANNER = "auto"
 # --timeout's and --planner-config's defaults are shared: relevance_plan.limits, command_line.DEFAULT_CONFIG.
 
@@ -242,7 +243,7 @@ def _full_run_wanted(
         return None
     method = values.get("--method", DEFAULT_METHOD)
     races = "--race" in flags or ("--no-race" not in flags and spawn.usable_cores() >= 2)
-    if not (method == "pure" or (method == "relevance" and races)):
+    if not (method == Method.PURE or (method == Method.RELEVANCE and races)):
         return None
     planner = values.get("--planner", DEFAULT_PLANNER)
     if planner not in ("auto", "fast-downward"):

@@ -14,7 +14,7 @@ Where it comes from, in order:
 
 :func:`run_val` runs it once on a plan text and returns what it printed;
 reading the verdict out of that is the validator's business
-(``planning/validate.py``).
+(``planning/validation/val.py``).
 """
 
 from __future__ import annotations
