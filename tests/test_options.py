@@ -121,7 +121,7 @@ def test_a_name_an_option_does_not_know_is_exit_30_in_every_command(name, param,
     option = max(param.opts, key=len)
     value = "relevance,no-such-name" if param.name == "methods" else "no-such-name"
     before = sorted(tmp_path.rglob("*"))
-    code, _, stderr = run(name, *arguments[name], option, value)
+    code, _, stderr = run(*name.split(), *arguments[name], option, value)
     assert code == ExitCode.USAGE, f"{name} {option} {value}: {stderr}"
     assert "'no-such-name'" in one_line_error(stderr)
     assert sorted(tmp_path.rglob("*")) == before

@@ -209,10 +209,13 @@ def _targets(out_dir: str, graph_path: str) -> list[Path]:
 @handle_errors
 def watch(graph_paths, zmq_url, idle_timeout, plan_in_loop, goals, **values):
     """A live session over successive scene graphs (files, or a ZMQ stream): one JSON line per event."""
+    from relevance_plan.planning.planners.registry import make_planner
     from relevance_plan.scene_graphs.live import GraphSession, file_updates, zmq_updates
 
     options = _options(values)
     plan_options = take_plan_options(values)
+    # a planner that does not exist is refused before any graph is read, as watch refuses it
+    make_planner(plan_options.planner, plan_options.planner_config, check=plan_in_loop)
     if bool(graph_paths) == bool(zmq_url):
         raise click.UsageError("give the graphs as files, or --zmq URL, not both and not neither")
     if not goals:
