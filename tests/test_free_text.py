@@ -243,6 +243,11 @@ def test_words_that_end_in_a_question_still_say_what_they_were_taken_for(tmp_pat
         "prune", COFFEE_DOMAIN, COFFEE_HARD, "-o", tmp_path / "small.pddl", "--objective", "could I get a cold drink"
     )
     assert "understood: 'could I get a cold drink' as objective drink-at-break" in pruned.stderr
+    events = tmp_path / "events.jsonl"
+    events.write_text('{"event": "unset", "fact": ["clear", "coffee_pot_1"]}\n')
+    watched = invoke("watch", COFFEE_DOMAIN, COFFEE_HARD, "--events", events, "--objective", "could I get a cold drink")
+    first = json.loads(watched.stdout.splitlines()[0])
+    assert not first["sufficient"] and first["understood"][0]["chosen"] == "drink-at-break"
 
 
 COMMANDS = {

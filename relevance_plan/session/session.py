@@ -270,7 +270,8 @@ class Session:
             ask=self.ask() if asking else None,
             seconds=seconds,
             spelling=self.scene.spelling,
-            understood=self.updates.understood() if reasons else (),
+            # what free text was taken for: with each determination, and whenever the cues fall short
+            understood=self.updates.understood() if reasons or not scores.sufficient else (),
         )
 
 
