@@ -206,6 +206,14 @@ def test_build_jobs_rejects_bad_input(tmp_path, suite):
         build_jobs([suite], "pure", "0,x")
 
 
+def test_an_objective_no_model_knows_fails_the_comparison_before_any_job(suite, tmp_path):
+    store = tmp_path / "r.sqlite"
+    result = invoke("compare", suite, "--objective", "nosuch", "--methods", "pure", "--store", store, "--timeout", 10)
+    assert result.exit_code == 35, result.output
+    assert "unknown objective 'nosuch'" in result.output and "relevance.yaml" in result.output
+    assert not store.exists()
+
+
 # --------------------------------------------------------------------------- running
 
 

@@ -138,6 +138,7 @@ def compare(
     for planner in planners or (options.planner,):
         make_planner(planner, options.planner_config, check=True)
     unique = _unique(build_jobs(suites, methods, seeds, options, planners))
+    check_named_cues(list(unique.values()), options)
 
     # The scheduler is reached before the store is opened: an unreachable one leaves no empty store.
     client = connect_scheduler(scheduler, scheduler_timeout) if scheduler is not None else None
@@ -162,6 +163,35 @@ def compare(
         scheduler=scheduler,
         keys=tuple(unique),
     )
+
+
+def check_named_cues(jobs: Sequence[Job], options: PlanOptions) -> None:
+    """Raise what scoring raises (``ModelError``: an objective, task or human the model does not know)
+    when the cues the options give fail on the first problem of every domain of ``jobs``: such a
+    comparison would fail every job, so it fails at once, as ``plan`` does."""
+    if options.objective is None and options.model_task is None and options.human is None:
+        return
+    from relevance_plan.errors import ModelError
+    from relevance_plan.io import load_task
+    from relevance_plan.relevance.analysis.task import PlanningTask
+    from relevance_plan.relevance.setup import score_problem
+
+    first_by_domain: dict[str, Job] = {}
+    for job in jobs:
+        if job.input_error is None and job.domain_path is not None:
+            first_by_domain.setdefault(job.domain_path, job)
+    failures: list[ModelError] = []
+    for domain_path, job in first_by_domain.items():
+        domain, problem = load_task(domain_path, job.problem_path)
+        try:
+            task = PlanningTask(domain, problem)
+            score_problem(task, options.scoring, domain_path=domain_path, problem_path=job.problem_path)
+        except ModelError as error:
+            failures.append(error)
+        else:
+            return
+    if failures:
+        raise failures[0]
 
 
 def _run(

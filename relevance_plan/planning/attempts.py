@@ -184,7 +184,10 @@ def run_attempts(
         widen_started = time.perf_counter()
         try:
             widened, added_back = widen(
-                pruned, Widening(options.widen_factor, _goal_filter(options)), state.added_back, loop.model
+                pruned,
+                Widening(options.widen_factor, _goal_filter(options), step=state.pruned_before - 1),
+                state.added_back,
+                loop.model,
             )
         except OutOfTimeError:
             break  # the --timeout ran out while widening: as when it runs out between attempts

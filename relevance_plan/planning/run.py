@@ -285,11 +285,23 @@ def _proved_unsolvable(run: _TaskRun) -> PlanResult | None:
     return replace(result, objects_kept=run.total)
 
 
+# A ring's first budget: this share of the --timeout (at least MIN_RING_BUDGET), growing by RING_BUDGET_GROWTH.
+RING_BUDGET_SHARE = 0.1
+MIN_RING_BUDGET = 0.5
+RING_BUDGET_GROWTH = 1.5
+
+
 def _budgets(run: _TaskRun, first: _FirstSelection) -> Budgets | None:
     """The pruned attempts' budgets, for a planner that cannot prove a pruned problem unsolvable."""
     selection = first.selection
-    if selection is None or not selection.removed or not run.options.widen or run.planner.proves_unsolvable:
+    if selection is None or not selection.removed or not run.options.widen:
         return None
+    if run.planner.proves_unsolvable:
+        if not run.task.network or run.options.timeout is None:
+            return None
+        # in a network a pruned problem that is too tight may take long to prove so: each ring
+        # gets a small share of the --timeout, so that the next ring, not the budget's end, decides
+        return Budgets(max(MIN_RING_BUDGET, RING_BUDGET_SHARE * run.options.timeout), RING_BUDGET_GROWTH)
     budgets = Budgets.after(first.seconds)
     run.say(
         f"{run.planner.name} cannot prove a pruned problem unsolvable: pruned attempts get"

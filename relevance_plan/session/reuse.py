@@ -46,6 +46,7 @@ from relevance_plan.pddl.model import UNSPELLED, Domain, Spelling
 from relevance_plan.relevance.analysis.constraint_rules import ConstraintRule, single_valued_predicates
 from relevance_plan.relevance.analysis.facts import FactIndex
 from relevance_plan.relevance.analysis.goal_regression import GoalAnalysis, GoalReads, analyse_goal_reading
+from relevance_plan.relevance.analysis.network import find_network
 from relevance_plan.relevance.analysis.task import PlanningTask, hub_degree
 from relevance_plan.relevance.analysis.types import declares_types, infer_types, static_predicates
 from relevance_plan.relevance.reachability.schemas import relaxed_task
@@ -66,6 +67,7 @@ KNOWN_ANALYSES = frozenset(
         "kept_for_soundness",  # see selection_read: any change, when a quantifier ranges over objects
         "goal_distance",  # read by the sharper (numeric) check only, which reads everything
         "object_profiles",  # read by widening only
+        "network",  # static links: kept in the basis, compared when a static fact changes (_task_inputs)
     }
 )
 ANALYSES = frozenset(name for name, value in vars(PlanningTask).items() if isinstance(value, cached_property))
@@ -122,6 +124,7 @@ class SelectionBasis:
     singletons: frozenset[str]  # the predicates with one fact, from which the single-valued ones come
     single_valued: frozenset[str]  # the single-valued predicates closure keeps the objects of
     rules: Mapping[str, tuple[ConstraintRule, ...]]  # closure's rules by predicate
+    network: frozenset[str] = frozenset()  # the predicates of the task's network (``analysis.network``)
 
 
 def selection_basis(
@@ -161,6 +164,7 @@ def selection_basis(
         singletons=index.singletons,
         single_valued=closure.singletons,
         rules=rules_by_predicate(closure.rules),
+        network=task.network.predicates,
     )
 
 
@@ -259,6 +263,18 @@ def _task_inputs(basis: SelectionBasis, scene: LiveScene, changes: EventChanges)
     static = static_predicates(scene.domain)
     if basis.selection.scores.alternatives and any(atom[0] in static for atom in delta.atoms):
         return "a static fact changed while alternatives are set aside"
+    return _network_links(basis, scene, {atom[0] for atom in delta.atoms if len(atom) == 3 and atom[0] in static})
+
+
+def _network_links(basis: SelectionBasis, scene: LiveScene, links: set[str]) -> str:
+    """Whether a changed static link changes the network closure and widening follow."""
+    if not links:
+        return ""
+    if links & basis.network:
+        return "a link of the network changed"
+    classes = {**scene.domain.constants, **scene.objects}
+    if find_network(scene.domain, classes, scene.index).predicates != basis.network:
+        return "the static links now make a network"
     return ""
 
 

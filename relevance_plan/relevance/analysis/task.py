@@ -19,6 +19,7 @@ from relevance_plan.relevance.analysis.distances import object_distances
 from relevance_plan.relevance.analysis.facts import FactIndex, index_init, object_profiles
 from relevance_plan.relevance.analysis.goal_regression import GoalAnalysis, analyse_goal
 from relevance_plan.relevance.analysis.invariants import count_keeping_for
+from relevance_plan.relevance.analysis.network import Network, find_network
 from relevance_plan.relevance.analysis.soundness import KeptObjects, objects_to_keep, soundness_requirements
 from relevance_plan.relevance.analysis.types import InferredTypes, infer_types
 from relevance_plan.relevance.analysis.witnesses import WitnessNeed, exists_needs, shortfall_reason, witness_needs
@@ -76,6 +77,13 @@ class PlanningTask:
     def object_type(self, name: str) -> str:
         """The declared type of an object, or its inferred class in an untyped domain."""
         return self.typing.problem.objects[name]
+
+    @cached_property
+    def network(self) -> Network:
+        """The static links joining many objects of one class (``network``): closure does not follow them."""
+        typing = self.typing
+        classes = {**typing.domain.constants, **typing.problem.objects}
+        return find_network(typing.domain, classes, self.init_index)
 
     @cached_property
     def goal_objects(self) -> frozenset[str]:

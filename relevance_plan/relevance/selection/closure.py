@@ -69,13 +69,16 @@ def close_over_constraints(
     candidates: Set[str],
     singleton_predicates: Set[str] = frozenset(),
     already: Set[str] = frozenset(),
+    on_demand: Set[str] = frozenset(),
 ) -> tuple[frozenset[str], tuple[Restored, ...]]:
     """Return (closed kept set, what was put back and why); inputs are not changed.
 
     ``candidates`` are the prunable objects; domain constants never need restoring.
     ``already``: a part of ``kept`` that is closed already (with the singleton
     facts), so only what the rest needs is walked: growing a set one object
-    at a time costs one walk in all.
+    at a time costs one walk in all.  What blocks an object of ``on_demand`` is not followed: kept
+    without it, the object stays blocked (a cell with its obstacle pruned is a wall), and the
+    reachability repair brings the blocker back where a relaxed plan must move it.
     """
     rules_by_predicate: dict[str, list[ConstraintRule]] = defaultdict(list)
     for rule in rules:
@@ -99,7 +102,7 @@ def close_over_constraints(
         name = worklist.pop()
         for fact in index.by_object.get(name, ()):
             for rule in rules_by_predicate.get(fact[0], ()):
-                if fact[1 + rule.when_kept] == name:
+                if fact[1 + rule.when_kept] == name and not (rule.kind == "blocker" and name in on_demand):
                     keep(fact[1 + rule.restore], name, rule, fact, worklist)
     return frozenset(result), tuple(restored)
 
@@ -139,11 +142,19 @@ class ConstraintClosure:
     task: PlanningTask
     rules: tuple[ConstraintRule, ...]
     singletons: frozenset[str]  # predicates with a single initial fact
+    on_demand: frozenset[str] = frozenset()  # the network's members: their blockers come back on demand
 
     @classmethod
     def of(cls, task: PlanningTask, knowledge_model: KnowledgeModel | None) -> ConstraintClosure:
         domain, index = task.domain, task.init_index
-        return cls(task, constraint_rules(domain, index, knowledge_model), single_valued_predicates(domain, index))
+        rules = constraint_rules(domain, index, knowledge_model)
+        network = task.network
+        if network:
+            # a link of a network ties each member to the next: followed, it keeps the whole grid,
+            # so which members a plan needs is left to the reachability repair (the way, not the network)
+            links = network.predicates
+            rules = tuple(rule for rule in rules if not (rule.kind == "anchor" and rule.predicate in links))
+        return cls(task, rules, single_valued_predicates(domain, index), network.members)
 
     def __call__(self, names: Set[str], already: Set[str] = frozenset()) -> tuple[frozenset[str], tuple[Restored, ...]]:
         """``names`` closed (``already``: a part of them this closure closed before, whose links were followed)."""
@@ -167,7 +178,7 @@ class ConstraintClosure:
     def _over_constraints(self, names: Set[str], already: Set[str]) -> tuple[frozenset[str], tuple[Restored, ...]]:
         task = self.task
         return close_over_constraints(
-            names, self.rules, task.init_index, task.problem.objects.keys(), self.singletons, already
+            names, self.rules, task.init_index, task.problem.objects.keys(), self.singletons, already, self.on_demand
         )
 
 

@@ -38,6 +38,7 @@ from relevance_plan.relevance.scoring.knowledge import KnowledgeModel, check_thr
 from relevance_plan.relevance.scoring.scorers import ScoreResult
 from relevance_plan.relevance.scoring.scorers.knowledge_model import UNKNOWN_CLASS
 from relevance_plan.relevance.selection.closure import ConstraintClosure, Restored
+from relevance_plan.relevance.selection.neighbourhood import next_ring
 from relevance_plan.relevance.selection.repair import repair_selection
 
 DEFAULT_TAU = 0.2
@@ -345,6 +346,7 @@ class Widening:
     goal_filter: bool = False
     growth: float = GROWTH  # the kept set grows at least this many times (and by four objects)
     full_above: float = FULL_ABOVE  # past this share of the objects, the full problem
+    step: int = 0  # how many widenings came before this one (rings alternate by it: ``neighbourhood``)
 
 
 def widen(
@@ -361,8 +363,15 @@ def widen(
     about as much as the last one.  When that would keep more than
     ``full_above`` of the objects, the result is the full problem.  The
     alternatives set aside stay aside, and come back late.
+
+    In a network (``PlanningTask.network``), a selection the repair made grows by rings instead
+    (:func:`_widen_by_rings`): tens of objects next to the kept ones, not twice as many.
     """
     task, kept = result.task, result.kept
+    if task.network and result.removed:
+        by_rings = _widen_by_rings(result, widening, extra, knowledge_model)
+        if by_rings is not None:
+            return by_rings
     total = len(task.problem.objects)
     target = max(len(kept) + 4, int(widening.growth * len(kept) + 0.999))
     thresholds = result.thresholds.scaled(widening.factor)
@@ -379,6 +388,28 @@ def widen(
         extra |= frozenset(ranked[: target - len(widened.kept)])
         widened = prune_with_scores(task, result.scores, thresholds, knowledge_model, extra, settings)
     return widened, extra
+
+
+def _widen_by_rings(
+    result: Selection, widening: Widening, extra: Set[str], knowledge_model: KnowledgeModel | None
+) -> tuple[Selection, frozenset[str]] | None:
+    """The selection with the next ring of its network (``neighbourhood.next_ring``) kept too, closed
+    and repaired again; None when no ring is left to add."""
+    task = result.task
+    closure = ConstraintClosure.of(task, knowledge_model)
+    around = next_ring(task, closure, result.kept, widening.step)
+    if not around:
+        return None
+    total = len(task.problem.objects)
+    grown = frozenset(extra) | result.kept | around
+    if len(grown) > widening.full_above * total:
+        why = f"widening would keep more than {widening.full_above:.0%} of the objects: the full problem"
+        return full_problem(task, result.scores, result.thresholds, result.selected, (), why), frozenset(
+            task.problem.objects
+        )
+    settings = PruneSettings(repair=True, full_above=widening.full_above, set_aside=result.set_aside)
+    widened = prune_with_scores(task, result.scores, result.thresholds, knowledge_model, grown, settings)
+    return widened, grown
 
 
 def ranked_names(

@@ -340,6 +340,9 @@ def classify(
 # --------------------------------------------------------------------------- one run
 
 
+DRIVER_CPU_SLACK = 2.0  # seconds of CPU the driver may use beyond the attempt's wall-clock limit
+
+
 def run_fast_downward(
     domain_path: str | os.PathLike[str],
     problem_path: str | os.PathLike[str],
@@ -355,9 +358,9 @@ def run_fast_downward(
 ) -> RunOutcome:
     """Run Fast Downward on one task and classify the result.
 
-    ``time_limit`` (seconds) goes to the driver as a CPU limit and, plus a
-    grace period (``process.watchdog_deadline``), to a wall-clock watchdog that
-    kills the whole process group.  ``driver_limits=False`` withholds the
+    ``time_limit`` (seconds), plus a grace period (``process.watchdog_deadline``),
+    goes to a wall-clock watchdog that kills the whole process group, and plus
+    ``DRIVER_CPU_SLACK`` to the driver as a CPU limit.  ``driver_limits=False`` withholds the
     limits from the driver so that only the watchdog applies (for tests).
     ``extra_arguments`` end the command line; ``work_dir`` is the directory
     the driver works in and leaves its files in (default: a temporary one).
@@ -365,7 +368,10 @@ def run_fast_downward(
     """
     domain, problem = _check_run(domain_path, problem_path, time_limit, memory_limit_mb)
     driver = find_fast_downward()
-    driver_time_limit = time_limit if driver_limits else None
+    # The driver counts its own start and the translator against its limit, and gives the search only
+    # what is left: held to a short limit exactly, it stops a search that has barely begun.  The wall
+    # clock is the watchdog's (at ``time_limit``); the driver's CPU limit sits above it, a backstop.
+    driver_time_limit = time_limit + DRIVER_CPU_SLACK if driver_limits and time_limit is not None else None
     command = build_command(
         python,
         driver,
