@@ -3,6 +3,7 @@ YAML alias bombs are refused at once, and absurd limit values are usage errors."
 
 from __future__ import annotations
 
+import re
 import subprocess
 import sys
 import time
@@ -31,7 +32,8 @@ def test_timeout_covers_reading_and_scoring(tmp_path):
     )
     assert code == ExitCode.OUT_OF_TIME
     line = one_line_error(stderr)
-    assert "out of time while" in line and "--timeout" in line
+    # the deadline may stop a step (which says so) or the CLI's alarm may stop the run: one wording
+    assert re.search(r"out of time (while|after) ", line) and "--timeout" in line, line
     assert time.monotonic() - started < 20  # the deadline is the behaviour: 0.05 s, bounded generously
 
 

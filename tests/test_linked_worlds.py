@@ -94,15 +94,20 @@ def test_widening_in_a_network_adds_a_ring_not_the_double():
     assert len(widened.kept) < 2 * len(first.kept)
 
 
-def test_odd_rings_bring_the_occupants_of_their_cells():
+def test_odd_rings_bring_what_stands_on_the_kept_cells_and_even_ones_only_free_cells():
     problem = grid_problem(8, wall_with_gap(8, 6))
     task = task_of(problem)
     selection = api.prune(GRID_DOMAIN, problem, scorer="goal")
     closure = ConstraintClosure.of(task, None)
+    walls = {cell(x, 4) for x in range(8) if x != 6}
     free = next_ring(task, closure, selection.kept, 0)
-    full = next_ring(task, closure, selection.kept, 1)
-    assert not {name for name in free if name.startswith("box")}
-    assert free <= full and {name for name in full if name.startswith("box")}
+    assert free and not free & walls and not {name for name in free if name.startswith("box")}
+    kept = selection.kept | {cell(0, 4)}  # a cell kept while its obstacle is pruned: a wall
+    assert "box0" not in closure(kept)[0]  # closure leaves a network member's blocker to the repair
+    full = next_ring(task, closure, kept, 1)
+    boxes = {name for name in full if name.startswith("box")}
+    assert boxes == {"box0"} - selection.kept
+    assert ring(task, kept) <= full
 
 
 @pytest.mark.planner

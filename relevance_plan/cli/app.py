@@ -401,7 +401,7 @@ def _plan_within_timeout(domain_path, problem_path, options, quiet: bool, keep_w
     except Interrupted as error:
         if error.signum != DEADLINE_SIGNAL:
             raise
-        return record.stopped(f"the {timeout:g} s --timeout ran out {record.where()}")
+        return record.stopped(f"out of time {record.where()}: the {timeout:g} s --timeout ran out")
 
 
 def _attempt_label(attempt) -> str:

@@ -76,9 +76,9 @@ def close_over_constraints(
     ``candidates`` are the prunable objects; domain constants never need restoring.
     ``already``: a part of ``kept`` that is closed already (with the singleton
     facts), so only what the rest needs is walked: growing a set one object
-    at a time costs one walk in all.  What blocks an object of ``on_demand`` is not followed: kept
-    without it, the object stays blocked (a cell with its obstacle pruned is a wall), and the
-    reachability repair brings the blocker back where a relaxed plan must move it.
+    at a time costs one walk in all.  The inferred rules are not followed from an object of
+    ``on_demand`` (a network's member): kept without what blocks it, it stays blocked (a cell whose
+    obstacle is pruned is a wall), and the reachability repair brings back what a relaxed plan needs.
     """
     rules_by_predicate: dict[str, list[ConstraintRule]] = defaultdict(list)
     for rule in rules:
@@ -102,11 +102,12 @@ def close_over_constraints(
         name = worklist.pop()
         for fact in index.by_object.get(name, ()):
             for rule in rules_by_predicate.get(fact[0], ()):
-                if fact[1 + rule.when_kept] == name and not (rule.kind == "blocker" and name in on_demand):
+                if fact[1 + rule.when_kept] == name and not (rule.kind in _ON_DEMAND and name in on_demand):
                     keep(fact[1 + rule.restore], name, rule, fact, worklist)
     return frozenset(result), tuple(restored)
 
 
+_ON_DEMAND = frozenset({"blocker", "anchor"})  # the rules not followed from an object of ``on_demand``
 SINGLETON = ConstraintRule("", 0, 0, "singleton")  # a predicate's only initial fact keeps its objects
 
 # What a blocker rule's fact is, by the knowledge model's scene role of its predicate: the first

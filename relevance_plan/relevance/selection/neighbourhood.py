@@ -4,7 +4,7 @@ Where static links join everything, a failed selection lacks what lies next to i
 the route to step aside into, the cell an obstacle can be pushed to), seldom something far away.
 So widening there adds a ring: the network's members one link from a kept member.  A ring comes
 in two sizes: its free members (nothing a blocker rule ties to them stands there), which cost the
-planner little, and the whole ring, whose occupants closure then brings along.
+planner little, and the whole ring, with what stands on the members kept so far.
 """
 
 from __future__ import annotations
@@ -61,10 +61,12 @@ def occupants(task: PlanningTask, closure: ConstraintClosure, names: Set[str]) -
 
 def next_ring(task: PlanningTask, closure: ConstraintClosure, kept: Set[str], step: int) -> frozenset[str]:
     """What widening step ``step`` (from 0) adds: on even steps the ring's free members (the whole
-    ring when none is free), on odd steps the whole ring with its occupants, and the occupants of
-    the kept members (closure brings a network member's blockers back only on demand)."""
+    ring when none is free), on odd steps the whole ring and the occupants of the kept members
+    (closure brings a network member's blockers back only on demand): an occupied cell of the new
+    ring stays a wall until a later step keeps what stands on it, so obstacles come back from the
+    way outwards, not all at once."""
     around = ring(task, kept)
     free = around - occupied(task, closure, around)
     if step % 2 == 0 and free:
         return free
-    return around | (occupants(task, closure, around | kept) - kept)
+    return around | (occupants(task, closure, kept) - kept)
