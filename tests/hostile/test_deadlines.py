@@ -240,7 +240,7 @@ COUNTS = [
         setup=BIG,
         writes=("err",),
         timeout=2,
-        check=_counts(None, "none"),
+        check=_counts(None, "any"),  # read in time on a fast machine: then the counts are the real ones
     ),
     Scenario(
         "deadlines/summary-while-reading-a-huge-problem",

@@ -34,7 +34,7 @@ OPTIONS = [
         for label, value in (("nan", "nan"), ("inf", "inf"), ("zero", "0"), ("negative", "-1"), ("huge", "1e999"))
     ),
     Scenario("learning/seed-not-a-number", args=LEARN + ("--seed", "x"), codes=(2,), check=one_line("--seed")),
-    Scenario("learning/unknown-labels", args=LEARN + ("--labels", "magic"), codes=(2,), check=one_line("--labels")),
+    Scenario("learning/unknown-labels", args=LEARN + ("--labels", "magic"), codes=(USAGE,), check=one_line("--labels")),
     Scenario("learning/both-timeout-names", args=LEARN + ("--timeout", "5", "--time-limit", "5"), codes=(USAGE,)),
     Scenario("learning/no-training-problem", args=("learn", "D.pddl", "-o", "m.json"), codes=(USAGE,)),
 ]
