@@ -140,6 +140,17 @@ def test_the_relaxed_check_wants_a_vase_per_goal_atom_and_keeps_the_way_to_each(
 TWO_GOALS = (("classrelation", "vase", "shelf"), ("classrelation", "vase", "table"))
 
 
+def test_a_budget_that_ends_while_the_witnesses_are_sought_is_an_incomplete_check_not_a_crash(house_task):
+    # the goal is reached before the exploration ends; seeking the witnesses explores on, and a
+    # budget that ends there means "nothing known", as one that ends before
+    task, _ = house_task(6)
+    everything = frozenset(task.problem.objects)
+    complete = relaxed_reachability(task, everything)
+    assert complete.reachable
+    incomplete = [budget for budget in range(1, 400) if not relaxed_reachability(task, everything, budget).complete]
+    assert incomplete and all(not relaxed_reachability(task, everything, b).reachable for b in incomplete)
+
+
 @pytest.mark.planner
 def test_the_first_selection_keeps_a_vase_per_goal_atom_and_solves_at_once(house_task, tmp_path):
     task, (domain, problem) = house_task(4)

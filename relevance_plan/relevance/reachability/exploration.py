@@ -78,9 +78,10 @@ def relaxed_reachability(
     try:
         exploration = Exploration(task, kept, Work(budget, deadline))
         exploration.run()
+        # the outcome may explore on, to the end, for the goal's witnesses: within the same budget
+        return exploration.outcome()
     except OutOfBudget:
         return Reachability(False, False)
-    return exploration.outcome()
 
 
 class Exploration:

@@ -102,10 +102,10 @@ def repair_selection(
     try:
         exploration = Exploration(task, kept, repair.work())
         exploration.run()
+        check = exploration.outcome()  # may explore on for the goal's witnesses, within the budget
     except OutOfBudget:
         task.check_time("checking the selection")  # the --timeout, not the repair's own bound
         return _observed(task, kept, (kept, (), Reachability(False, False)), RepairReads(None, set()))
-    check = exploration.outcome()
     if check.reachable:
         return _observed(task, kept, _sharpen(repair, kept, (), check), reads)
     order = RepairOrder(task, scores, reads)
