@@ -3,7 +3,7 @@
 Nothing is imported here: the launcher's head start reads these before the
 rest of the tool is imported, and ``plan``, ``compare``, ``watch``, the
 Fast Downward adapter and the head start must agree on them; the command
-line checks its numeric options against them (``cli.numbers``) without
+line checks its numeric options against them (``cli.arguments.numbers``) without
 importing the generators.
 """
 

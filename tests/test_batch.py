@@ -21,7 +21,7 @@ import pytest
 from support import REPO, TOOL, invoke, make_row, process_gone, write_store
 
 from relevance_plan.batch.compare import compare
-from relevance_plan.batch.executors import connect_scheduler
+from relevance_plan.batch.executors import Workers, connect_scheduler
 from relevance_plan.batch.jobs import build_jobs, run_job
 from relevance_plan.batch.store import SCHEMA_VERSION, ResultStore
 from relevance_plan.errors import InputFileError, SchedulerError, StoreError, UsageError
@@ -220,7 +220,9 @@ def test_an_objective_no_model_knows_fails_the_comparison_before_any_job(suite, 
 @pytest.mark.planner
 def test_compare_stores_every_job_once_and_resumes(suite, tmp_path):
     store = tmp_path / "r.sqlite"
-    summary = compare([suite], ALL_METHODS, PlanOptions(timeout=60), jobs=2, store_path=store, progress=None)
+    summary = compare(
+        [suite], ALL_METHODS, PlanOptions(timeout=60), store_path=store, workers=Workers(jobs=2), progress=None
+    )
     assert (summary.total, summary.already_stored, summary.ran) == (8, 0, 8)
     rows = read_store(store)
     assert len(rows) == 8
@@ -231,7 +233,9 @@ def test_compare_stores_every_job_once_and_resumes(suite, tmp_path):
     assert by_method["pure"]["world"] == "coffee" and by_method["pure"]["difficulty"] == "simple"
     result = json.loads(by_method["relevance"]["result_json"])
     assert result["status"] == "solved" and result["plan"]
-    again = compare([suite], ALL_METHODS, PlanOptions(timeout=60), jobs=2, store_path=store, progress=None)
+    again = compare(
+        [suite], ALL_METHODS, PlanOptions(timeout=60), store_path=store, workers=Workers(jobs=2), progress=None
+    )
     assert (again.already_stored, again.ran) == (8, 0)
     assert read_store(store) == rows
 
@@ -240,7 +244,9 @@ def test_compare_stores_every_job_once_and_resumes(suite, tmp_path):
 def test_input_error_becomes_a_row_not_a_crash(suite, tmp_path):
     (suite / "coffee-simple-009.pddl").write_text("(define (problem broken) (:domain coffee) (:objects a - ")
     store = tmp_path / "r.sqlite"
-    summary = compare([suite], "pure,relevance", PlanOptions(timeout=60), jobs=2, store_path=store, progress=None)
+    summary = compare(
+        [suite], "pure,relevance", PlanOptions(timeout=60), store_path=store, workers=Workers(jobs=2), progress=None
+    )
     assert summary.ran == 6
     rows = read_store(store)
     broken = [r for r in rows if r["problem"] == "coffee-simple-009.pddl"]
@@ -259,7 +265,9 @@ def test_input_error_becomes_a_row_not_a_crash(suite, tmp_path):
 def test_planner_crash_is_recorded_with_its_exit_code(suite, tmp_path, monkeypatch, body, code):
     monkeypatch.setenv(fast_downward.FAST_DOWNWARD_ENV, str(fake_planner(tmp_path, body)))
     store = tmp_path / "r.sqlite"
-    summary = compare([suite], "pure,relevance", PlanOptions(timeout=30), jobs=2, store_path=store, progress=None)
+    summary = compare(
+        [suite], "pure,relevance", PlanOptions(timeout=30), store_path=store, workers=Workers(jobs=2), progress=None
+    )
     assert summary.ran == 4 and summary.failed == 4
     rows = read_store(store)
     assert len(rows) == 4
@@ -275,7 +283,7 @@ def test_missing_planner_stops_the_batch_and_stores_nothing(suite, tmp_path, mon
     monkeypatch.setenv(fast_downward.FAST_DOWNWARD_ENV, str(tmp_path / "no-such-driver.py"))
     store = tmp_path / "r.sqlite"
     with pytest.raises(PlannerError):
-        compare([suite], "pure", PlanOptions(timeout=30), jobs=1, store_path=store, progress=None)
+        compare([suite], "pure", PlanOptions(timeout=30), store_path=store, workers=Workers(jobs=1), progress=None)
     assert read_store(store) == []
 
 
@@ -455,16 +463,13 @@ def test_dask_cluster_runs_the_jobs_into_the_local_store(tmp_path):
         finally:
             client.close()
         store = tmp_path / "results.sqlite"
-        summary = compare(
-            [suite], ALL_METHODS, PlanOptions(timeout=60), jobs=1, store_path=store, scheduler=address, progress=None
-        )
+        on_cluster = {"store_path": store, "workers": Workers(scheduler=address), "progress": None}
+        summary = compare([suite], ALL_METHODS, PlanOptions(timeout=60), **on_cluster)
         assert (summary.total, summary.ran, summary.failed) == (4, 4, 0)
         rows = read_store(store)
         assert sorted(r["method"] for r in rows) == sorted(ALL_METHODS.split(","))
         assert {r["status"] for r in rows} == {"solved"}
-        again = compare(
-            [suite], ALL_METHODS, PlanOptions(timeout=60), jobs=1, store_path=store, scheduler=address, progress=None
-        )
+        again = compare([suite], ALL_METHODS, PlanOptions(timeout=60), **on_cluster)
         assert (again.already_stored, again.ran) == (4, 0)
     finally:
         for process in reversed(processes):  # the worker first, then the scheduler

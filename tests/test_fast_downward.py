@@ -49,7 +49,7 @@ def test_planner_arguments() -> None:
 
 def test_command_puts_driver_options_before_files_and_search_after(tmp_path: Path) -> None:
     domain, problem = tmp_path / "d.pddl", tmp_path / "p.pddl"
-    command = fd_command.build_command("py", Path("fd.py"), domain, problem, "ff-gbfs", 9.2, 100)
+    command = fd_command.build_command(("py", "fd.py"), domain, problem, "ff-gbfs", 9.2, 100)
     assert command[:8] == [
         "py",
         "fd.py",
@@ -62,7 +62,7 @@ def test_command_puts_driver_options_before_files_and_search_after(tmp_path: Pat
     ]
     assert command[8:10] == [str(domain), str(problem)]
     assert command[10:] == list(fast_downward.PLANNER_CONFIGS["ff-gbfs"])
-    command = fd_command.build_command("py", Path("fd.py"), domain, problem, "lama", None, None)
+    command = fd_command.build_command(("py", "fd.py"), domain, problem, "lama", None, None)
     assert command[2:] == ["--plan-file", "sas_plan", "--alias", "seq-sat-lama-2011", str(domain), str(problem)]
 
 
@@ -146,7 +146,9 @@ def test_missing_file_raises_before_starting(gripper: tuple[Path, Path], tmp_pat
 
 def test_unstartable_interpreter(gripper: tuple[Path, Path], tmp_path: Path) -> None:
     with pytest.raises(errors.PlannerError):
-        fast_downward.run_fast_downward(*gripper, python=str(tmp_path / "no-python"))
+        fast_downward.run_fast_downward(
+            *gripper, process=fast_downward.DriverProcess(python=str(tmp_path / "no-python"))
+        )
 
 
 def test_bad_limits(gripper: tuple[Path, Path]) -> None:
@@ -221,7 +223,9 @@ def test_out_of_time(big40: tuple[Path, Path], time_limit: int) -> None:
     # Unlimited, translating big40 takes ~5.5 s.  The driver's CPU limit is the time limit plus
     # DRIVER_CPU_SLACK: the translator runs out of it (exit 21, or SIGXCPU).
     # A long grace: this is about the driver's own limit, which the watchdog must not pre-empt on a busy machine.
-    outcome = fast_downward.run_fast_downward(*big40, time_limit=time_limit, watchdog_grace=5.0)
+    outcome = fast_downward.run_fast_downward(
+        *big40, time_limit=time_limit, process=fast_downward.DriverProcess(watchdog_grace=5.0)
+    )
     assert outcome.status is PlannerStatus.OUT_OF_TIME
     assert outcome.exit_code in (21, -signal.SIGXCPU)
     assert outcome.cpu_time < time_limit + fast_downward.DRIVER_CPU_SLACK + 1.0

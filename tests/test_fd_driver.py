@@ -85,7 +85,7 @@ def test_the_intermediate_file_is_removed_unless_kept(tmp_path, monkeypatch):
     workdir = tmp_path / "scratch"
     workdir.mkdir()
     command = fd_command.build_command(
-        sys.executable, fd_command.driver_location(), domain, problem, "lama-first", 30, None
+        (sys.executable, str(fd_command.driver_location())), domain, problem, "lama-first", 30, None
     )
     run = process.run_process_group(
         fd_command.through_lean_driver(command), workdir, 60, what="Fast Downward", program=command[1]

@@ -12,9 +12,9 @@ from click.testing import CliRunner
 from support import COFFEE_DOMAIN, coffee_problem, invoke, one_line_error, run, write_file
 
 from relevance_plan.cli import main
-from relevance_plan.cli.choices import CheckedName, NamedChoice, NamedChoices
+from relevance_plan.cli.arguments.choices import CheckedName, NamedChoice, NamedChoices
+from relevance_plan.cli.arguments.numbers import NumberOption
 from relevance_plan.cli.common import handle_errors
-from relevance_plan.cli.numbers import NumberOption
 from relevance_plan.exitcodes import ExitCode
 
 

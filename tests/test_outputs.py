@@ -302,7 +302,7 @@ def _stdout_outputs_and_flags() -> list[tuple[str, str, str]]:
     import click
 
     from relevance_plan.cli import main
-    from relevance_plan.cli.paths import NOT_STDOUT, OUTPUT_FILES, STDOUT_FLAGS
+    from relevance_plan.cli.arguments.paths import NOT_STDOUT, OUTPUT_FILES, STDOUT_FLAGS
 
     context = click.Context(main)
     found = []

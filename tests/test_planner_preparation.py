@@ -199,7 +199,7 @@ def test_validator_val_without_val_is_refused_before_planning(coffee_files, monk
 
 def test_fast_downward_arguments_come_after_the_inputs():
     command = fd_command.build_command(
-        "python", Path("fd.py"), Path("d"), Path("p"), "astar-blind", None, None, ("--translate-options", "-x")
+        ("python", "fd.py"), Path("d"), Path("p"), "astar-blind", None, None, ("--translate-options", "-x")
     )
     assert command[-5:] == ["p", "--search", "astar(blind())", "--translate-options", "-x"]
 

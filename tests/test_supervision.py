@@ -39,7 +39,9 @@ def big40(tmp_path: Path) -> tuple[Path, Path]:
 
 @pytest.mark.planner
 def test_watchdog_kills_whole_process_group(big40: tuple[Path, Path]) -> None:
-    outcome = fast_downward.run_fast_downward(*big40, time_limit=1, driver_limits=False, watchdog_grace=0.5)
+    outcome = fast_downward.run_fast_downward(
+        *big40, time_limit=1, process=fast_downward.DriverProcess(driver_limits=False, watchdog_grace=0.5)
+    )
     assert outcome.killed_by_watchdog
     assert outcome.status is PlannerStatus.OUT_OF_TIME
     assert outcome.exit_code == -signal.SIGKILL

@@ -21,6 +21,7 @@ from typing import Any
 from relevance_plan.batch.executors import (
     DEFAULT_SCHEDULER_TIMEOUT,
     SCHEDULER_ADDRESS,
+    Workers,
     connect_scheduler,
     run_dask,
     run_local,
@@ -106,10 +107,8 @@ def compare(
     *,
     planners: Sequence[str] = (),
     seeds: str | Iterable[int] = (0,),
-    jobs: int = 1,
     store_path: str | os.PathLike = "results.sqlite",
-    scheduler: str | None = None,
-    scheduler_timeout: float = DEFAULT_SCHEDULER_TIMEOUT,
+    workers: Workers = Workers(),
     progress: ProgressCallback | None = None,
 ) -> CompareSummary:
     """Run every method (with every planner) on every problem of ``suites``; store one row per job.
@@ -117,8 +116,7 @@ def compare(
     ``options`` are the ``plan`` options every job shares (its method, seed
     and planner are set per job; ``planners`` empty means ``options.planner``).
     Jobs already in the store are skipped, so rerunning an interrupted
-    command resumes it.  ``jobs`` threads run locally; with ``scheduler``
-    the Dask workers' threads run the jobs instead (``jobs`` is unused).
+    command resumes it.  ``workers`` say where the jobs run (local threads or a Dask scheduler's workers).
     Returns counts for this run; the numbers themselves come from
     ``report.build_report`` over the stored rows.
 
@@ -131,7 +129,8 @@ def compare(
     ``KeyboardInterrupt`` after Ctrl-C/SIGTERM.
     """
     started = time.perf_counter()
-    check_compare_options(jobs=jobs, scheduler=scheduler, scheduler_timeout=scheduler_timeout)
+    jobs, scheduler = workers.jobs, workers.scheduler
+    check_compare_options(jobs=jobs, scheduler=scheduler, scheduler_timeout=workers.scheduler_timeout)
     if options.timeout is None:
         raise UsageError("compare needs a time limit per job: the timeout of every method's row")
     check_store_writable(store_path)
@@ -141,7 +140,7 @@ def compare(
     check_named_cues(list(unique.values()), options)
 
     # The scheduler is reached before the store is opened: an unreachable one leaves no empty store.
-    client = connect_scheduler(scheduler, scheduler_timeout) if scheduler is not None else None
+    client = connect_scheduler(scheduler, workers.scheduler_timeout) if scheduler is not None else None
     try:
         with ResultStore(store_path) as store:
             stored = store.keys()

@@ -17,6 +17,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from relevance_plan.batch.compare import CompareSummary, check_compare_options, compare
+from relevance_plan.batch.executors import Workers
 from relevance_plan.batch.report import build_report, format_report
 from relevance_plan.batch.store import KEY_COLUMNS, ResultStore
 from relevance_plan.errors import InputFileError, UsageError
@@ -101,7 +102,7 @@ def _run_in(
         suites.append(suite)
     store_path = workdir / STORE_NAME
     options = PlanOptions(timeout=timeout)
-    summary = compare(suites, METHODS, options, jobs=jobs, store_path=store_path, progress=progress)
+    summary = compare(suites, METHODS, options, store_path=store_path, workers=Workers(jobs=jobs), progress=progress)
     wanted = set(summary.keys)
     # Read through a writing connection: closing it folds the store's WAL back in, leaving one file.
     with ResultStore(store_path, create=False) as store:

@@ -25,6 +25,7 @@ import struct
 import threading
 import time
 from collections.abc import Callable, Sequence
+from dataclasses import dataclass
 from typing import Any
 
 from relevance_plan.batch.jobs import Job, run_job
@@ -40,6 +41,16 @@ _STOP_GRACE = 30.0  # seconds to wait for running jobs after their planners were
 _POLL_SECONDS = 0.2  # how often a running batch looks at its stop event
 
 Record = Callable[[dict[str, Any]], None]
+
+
+@dataclass(frozen=True)
+class Workers:
+    """Where a batch's jobs run: ``jobs`` local threads, or the Dask workers of ``scheduler``
+    (``jobs`` unused then), reached within ``scheduler_timeout`` seconds."""
+
+    jobs: int = 1
+    scheduler: str | None = None
+    scheduler_timeout: float = DEFAULT_SCHEDULER_TIMEOUT
 
 
 # --------------------------------------------------------------------------- local

@@ -78,12 +78,20 @@ def closed(task: PlanningTask, names: Iterable[str]) -> frozenset[str]:
     return prune_with_scores(task, scores).kept
 
 
+@dataclass(frozen=True)
+class TrainingPlanner:
+    """The planner that solves the training problems (a registry name) and its configuration."""
+
+    name: str = "fast-downward"
+    config: str = DEFAULT_PLANNER_CONFIG
+
+
 class Solver:
     """Solves a problem (or a subset of its objects) and validates the plan on the original problem."""
 
-    def __init__(self, domain_path: str, planner: str, config: str, time_limit: float, scratch: str):
+    def __init__(self, domain_path: str, planner: TrainingPlanner, time_limit: float, scratch: str):
         self.domain_path = domain_path
-        self.planner = make_planner(planner, config)
+        self.planner = make_planner(planner.name, planner.config)
         self.time_limit = time_limit
         self.scratch = scratch
         self.runs = 0
@@ -183,8 +191,7 @@ def learn(
     time_limit: float = 60.0,
     labels: str = DEFAULT_LABELS,
     seed: int = 0,
-    planner: str = "fast-downward",
-    planner_config: str = DEFAULT_PLANNER_CONFIG,
+    planner: TrainingPlanner = TrainingPlanner(),
     config: FeatureConfig = FeatureConfig(),
     say: Say = _quiet,
 ) -> LearnReport:
@@ -199,7 +206,7 @@ def learn(
     labelled: list[LabelledProblem] = []
     skipped: list[tuple[str, str]] = []
     with tempfile.TemporaryDirectory(prefix="relevance-plan-learn-") as scratch:
-        solver = Solver(os.fspath(domain_path), planner, planner_config, time_limit, scratch)
+        solver = Solver(os.fspath(domain_path), planner, time_limit, scratch)
         for number, path in enumerate(problem_paths, 1):
             result = label_problem(domain, os.fspath(path), solver, labels, config, seed)
             if isinstance(result, str):
@@ -279,7 +286,7 @@ def learn_from_store(
     labelled: list[LabelledProblem] = []
     skipped = [(os.fspath(p), "no solved run in the store") for p in problem_paths if os.fspath(p) not in plans]
     with tempfile.TemporaryDirectory(prefix="relevance-plan-learn-") as scratch:
-        solver = Solver(os.fspath(domain_path), "fast-downward", DEFAULT_PLANNER_CONFIG, time_limit, scratch)
+        solver = Solver(os.fspath(domain_path), TrainingPlanner(), time_limit, scratch)
         for number, (path, text) in enumerate(sorted(plans.items()), 1):
             begun = time.perf_counter()
             task = PlanningTask(domain, load_problem(path, domain))

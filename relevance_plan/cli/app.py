@@ -13,6 +13,7 @@ from pathlib import Path
 import click
 
 from relevance_plan import __version__
+from relevance_plan.cli.arguments.numbers import DISTRACTORS, OBJECTS, SEED, SUITE_SIZE
 from relevance_plan.cli.common import (
     fail,
     file_option,
@@ -31,7 +32,6 @@ from relevance_plan.cli.common import (
     write_plan_files,
 )
 from relevance_plan.cli.exits import ToolGroup
-from relevance_plan.cli.numbers import DISTRACTORS, OBJECTS, SEED, SUITE_SIZE
 from relevance_plan.errors import RelevancePlanError, UnsupportedFeatureError, UsageError, counted
 from relevance_plan.exitcodes import EXIT_CODE_DESCRIPTIONS, ExitCode, exit_code_for_status
 from relevance_plan.pddl.formatter import format_number
@@ -76,7 +76,7 @@ class _Commands(ToolGroup):
 
     def get_command(self, ctx: click.Context, cmd_name: str) -> click.Command | None:
         if cmd_name not in self.commands and cmd_name in LAZY_COMMANDS:
-            from relevance_plan.cli.paths import own_command_path_checks
+            from relevance_plan.cli.arguments.paths import own_command_path_checks
 
             command = getattr(importlib.import_module(LAZY_COMMANDS[cmd_name]), cmd_name.replace("-", "_"))
             own_command_path_checks(command)
@@ -265,7 +265,7 @@ def prune(domain_path, problem_path, output, pass_through, as_json, **values):
     """
     from relevance_plan.cli.files import names_stdout, write_output
 
-    to_stdout = names_stdout(output)  # never with --json (cli.paths refuses both on standard output)
+    to_stdout = names_stdout(output)  # never with --json (cli.arguments.paths refuses both on standard output)
     try:
         scoring, result = _score_and_prune(domain_path, problem_path, take_scoring(values))
     except UnsupportedFeatureError as refused:
@@ -311,18 +311,19 @@ def prune(domain_path, problem_path, output, pass_through, as_json, **values):
 @json_option("Print one JSON object.")
 @quiet_option()
 @handle_errors
-def plan(domain_path, problem_path, method, plan_file, keep_work, race, as_json, quiet, **values):
+def plan(domain_path, problem_path, plan_file, keep_work, as_json, quiet, **values):
     """Prune, plan, validate on the original problem, widen until solved."""
     from relevance_plan.cli.files import names_stdout
     from relevance_plan.planning.planners.preparation import check_keep_directory
     from relevance_plan.planning.planners.registry import make_planner
 
-    to_stdout = names_stdout(plan_file)  # never with --json (cli.paths refuses both on standard output)
+    to_stdout = names_stdout(plan_file)  # never with --json (cli.arguments.paths refuses both on standard output)
 
     from dataclasses import replace
 
     from relevance_plan.planning.race import race_by_default
 
+    method, race = values.pop("method"), values.pop("race")  # plan options that depend on each other
     options = take_plan_options(values, method)
     options = replace(options, race=race_by_default(method) if race is None else race)
     make_planner(options.planner, options.planner_config, check=True)
@@ -528,6 +529,6 @@ def exit_codes():
         click.echo(f"{int(code):>4}  {code.name:<18} {EXIT_CODE_DESCRIPTIONS[code]}")
 
 
-from relevance_plan.cli.paths import own_path_checks  # noqa: E402
+from relevance_plan.cli.arguments.paths import own_path_checks  # noqa: E402
 
 own_path_checks(main)

@@ -6,7 +6,8 @@ from pathlib import Path
 
 import click
 
-from relevance_plan.cli.choices import NamedChoice
+from relevance_plan.cli.arguments.choices import NamedChoice
+from relevance_plan.cli.arguments.numbers import DISTRACTORS, DPI, JOBS, SEED, SEEDS, SUITE_SIZE, THRESHOLDS, seconds
 from relevance_plan.cli.common import (
     file_option,
     handle_errors,
@@ -20,7 +21,6 @@ from relevance_plan.cli.common import (
     timeout_option,
 )
 from relevance_plan.cli.display import progress_bar
-from relevance_plan.cli.numbers import DISTRACTORS, DPI, JOBS, SEED, SEEDS, SUITE_SIZE, THRESHOLDS, seconds
 from relevance_plan.errors import UsageError, counted
 from relevance_plan.planning.options import METHODS, Method
 
@@ -66,14 +66,16 @@ LEARN_TIMEOUT = 60.0  # seconds for each planner run of learn
 @click.option("--seeds", type=SEEDS, default="0", show_default=True, help="Comma-separated seeds; one job per seed.")
 @quiet_option("No progress display.")
 @handle_errors
-def compare(suite_dirs, methods, planners, jobs, store_path, scheduler, scheduler_timeout, seeds, quiet, **values):
+def compare(suite_dirs, methods, planners, store_path, seeds, quiet, **values):
     """Run each method on every problem of the SUITE_DIRs and store the results.
 
     Rerunning the same command resumes: stored jobs are not run again.
     """
     from relevance_plan.batch.compare import compare as run_compare
+    from relevance_plan.batch.executors import Workers
     from relevance_plan.planning.planners.registry import split_planner_names
 
+    workers = Workers(values.pop("jobs"), values.pop("scheduler"), values.pop("scheduler_timeout"))
     options = take_plan_options(values)
     with progress_bar("compare", live=None if not quiet else False) as bar:
         summary = run_compare(
@@ -82,10 +84,8 @@ def compare(suite_dirs, methods, planners, jobs, store_path, scheduler, schedule
             options,
             planners=split_planner_names(planners) if planners else (),
             seeds=seeds,
-            jobs=jobs,
             store_path=store_path,
-            scheduler=scheduler,
-            scheduler_timeout=scheduler_timeout,
+            workers=workers,
             progress=None if quiet else bar,
         )
     click.echo(summary.describe())
@@ -126,7 +126,7 @@ def compare(suite_dirs, methods, planners, jobs, store_path, scheduler, schedule
     " ('-': the page on standard output, instead of the table).",
 )
 @handle_errors
-def report(store_path, fmt, as_json, as_csv, suite, plots_dir, plot_format, dpi, html_path):
+def report(store_path, fmt, as_json, as_csv, suite, html_path, **plots):
     """Print the comparison table computed from the rows of STORE (or, with --json/--csv, every job)."""
     from relevance_plan.batch.report import build_report, format_jobs, format_report
     from relevance_plan.batch.store import read_rows
@@ -136,7 +136,8 @@ def report(store_path, fmt, as_json, as_csv, suite, plots_dir, plot_format, dpi,
     given = per_job + ([f"--format {fmt}"] if fmt is not None else [])
     if len(given) > 1:
         raise UsageError(f"choose one output: {' or '.join(given)}")
-    page_on_stdout = html_path is not None and names_stdout(html_path)  # alone there (cli.paths)
+    page_on_stdout = html_path is not None and names_stdout(html_path)  # alone there (cli.arguments.paths)
+    plots_dir, plot_format, dpi = plots["plots_dir"], plots["plot_format"], plots["dpi"]
     if plots_dir is not None:
         from relevance_plan.batch.plots import check_plot_targets, require_matplotlib
 
@@ -239,13 +240,22 @@ def demo(workdir, count, timeout, jobs, distractors, tiny, quiet):
     click.echo(f"more: relevance-plan report {run.store_path} --format latex --plots {run.workdir / 'plots'}")
 
 
+_OLD_TIMEOUT = "learn: --time-limit"
+
+
+def _old_timeout(context: click.Context, _parameter: click.Parameter, value: float | None) -> None:
+    """Keeps ``--time-limit``'s value aside for the command, which says it is deprecated."""
+    if value is not None:
+        context.meta[_OLD_TIMEOUT] = value
+
+
 @click.command()
 @click.argument("domain_path", metavar="DOMAIN", type=click.Path(dir_okay=False))
 @click.argument("problem_paths", metavar="PROBLEM...", nargs=-1, type=click.Path(dir_okay=False))
 @file_option("-o", "--output", "output_path", required=True, help="Model file (JSON).")
 @timeout_option(LEARN_TIMEOUT, "Seconds for each planner run on a problem.")
 # The option's name until 0.12, kept for a release: hidden, said to be deprecated when used.
-@click.option("--time-limit", "time_limit", type=seconds(), default=None, hidden=True)
+@click.option("--time-limit", type=seconds(), default=None, hidden=True, expose_value=False, callback=_old_timeout)
 @click.option(
     "--labels",
     type=NamedChoice(("plan", "minimal"), "labelling"),
@@ -262,7 +272,7 @@ def demo(workdir, count, timeout, jobs, distractors, tiny, quiet):
 )
 @quiet_option()
 @handle_errors
-def learn(domain_path, problem_paths, output_path, timeout, time_limit, labels, seed, store_path, quiet):
+def learn(domain_path, problem_paths, output_path, timeout, labels, seed, store_path, quiet):
     """Learn which objects matter from solved PROBLEMs of DOMAIN; use the model with --scorer learned:MODEL.
 
     "-o -" writes the model to standard output (the summary goes to stderr).
@@ -272,6 +282,7 @@ def learn(domain_path, problem_paths, output_path, timeout, time_limit, labels, 
     from relevance_plan.cli.files import names_stdout, write_output
     from relevance_plan.relevance.scoring.learning.learned_model import learned_model_text
 
+    time_limit = click.get_current_context().meta.get(_OLD_TIMEOUT)
     if time_limit is not None:
         if click.get_current_context().get_parameter_source("timeout") is click.core.ParameterSource.COMMANDLINE:
             raise UsageError("give --timeout only (--time-limit is its old, deprecated name)")

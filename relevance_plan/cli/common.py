@@ -22,8 +22,8 @@ from typing import Any
 
 import click
 
-from relevance_plan.cli.choices import CheckedName, NamedChoice, NamedChoices
-from relevance_plan.cli.numbers import MEGABYTES, SEED, THRESHOLD, seconds
+from relevance_plan.cli.arguments.choices import CheckedName, NamedChoice, NamedChoices
+from relevance_plan.cli.arguments.numbers import MEGABYTES, SEED, THRESHOLD, seconds
 from relevance_plan.errors import InputFileError, RelevancePlanError, UsageError, ValidatorUnavailableError
 from relevance_plan.exitcodes import ExitCode, exit_code_for_error
 from relevance_plan.limits import DEFAULT_TIMEOUT

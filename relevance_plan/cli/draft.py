@@ -50,7 +50,7 @@ def draft_model(domain_path, problem_paths, output, as_json, quiet):
             "adjustments": list(drafted.adjustments),
             "problems": [_check_json(check) for check in drafted.checks],
         }
-        click.echo(json_text(data))  # never beside the model on stdout (cli.paths refuses both there)
+        click.echo(json_text(data))  # never beside the model on stdout (cli.arguments.paths refuses both there)
     elif not quiet:
         for check in drafted.checks:
             click.echo(f"{'' if check.matched else 'not matched: '}{check.describe()}", err=to_stdout)

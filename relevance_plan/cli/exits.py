@@ -12,7 +12,7 @@ ever reaches the user:
 * the tool itself runs out of memory (``ulimit -v``), however the interpreter says so: one line, exit 21;
 * click refuses the command line (an unknown option, a missing argument, a
   number out of its range): one line naming what is wrong, not click's
-  four, exit 2 (30 for a number out of range, ``cli.numbers``).
+  four, exit 2 (30 for a number out of range, ``cli.arguments.numbers``).
 """
 
 from __future__ import annotations

@@ -16,6 +16,8 @@ from pathlib import Path
 
 import click
 
+from relevance_plan.cli.arguments.numbers import NumberOption
+from relevance_plan.cli.arguments.paths import own_command_path_checks
 from relevance_plan.cli.common import (
     fail,
     file_option,
@@ -26,8 +28,6 @@ from relevance_plan.cli.common import (
     scoring_options,
     take_plan_options,
 )
-from relevance_plan.cli.numbers import NumberOption
-from relevance_plan.cli.paths import own_command_path_checks
 from relevance_plan.exitcodes import ExitCode
 
 OUTPUT_FILES = ("domain.pddl", "problem.pddl", "problem.json")

@@ -6,7 +6,7 @@ import sys
 
 import click
 
-from relevance_plan.cli.choices import NamedChoice
+from relevance_plan.cli.arguments.choices import NamedChoice
 from relevance_plan.cli.common import handle_errors, json_option, json_text, task_arguments, timeout_option
 from relevance_plan.errors import counted
 from relevance_plan.exitcodes import ExitCode

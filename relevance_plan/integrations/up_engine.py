@@ -84,6 +84,18 @@ ENGINE_NAME = "relevance"
 # Scorers a user may choose through params; the oracle needs a generator's sidecar.
 ENGINE_SCORERS = tuple(name for name in SCORERS if name != "oracle")
 
+# The engine's own parameters (``params=`` of the factory, given with the inner planner's) and their defaults.
+ENGINE_PARAMETERS = {
+    "tau_class": DEFAULT_TAU,
+    "tau_element": DEFAULT_TAU,
+    "scorer": None,
+    "model": None,
+    "domain": None,
+    "widen_factor": 0.5,
+    "first_share": 0.5,
+    "seed": 0,
+}
+
 # What our PDDL reader handles (pddl.SUPPORTED_REQUIREMENTS).  The engine
 # supports the intersection of this with the inner planner's kind.
 _READER_FEATURES = {
@@ -122,37 +134,28 @@ class RelevanceMetaEngine(MetaEngine, OneshotPlannerMixin, AnytimePlannerMixin):
     yields each better plan, validated on the original problem.
     """
 
-    def __init__(
-        self,
-        *args,
-        tau_class: float = DEFAULT_TAU,
-        tau_element: float = DEFAULT_TAU,
-        scorer: str | None = None,
-        model: str | None = None,
-        domain: str | None = None,
-        widen_factor: float = 0.5,
-        first_share: float = 0.5,
-        seed: int = 0,
-        **kwargs,
-    ):
-        # Our options are taken out here; the rest belongs to the inner planner.
-        Thresholds(float(tau_class), float(tau_element))
+    def __init__(self, *args, **kwargs):
+        # Our parameters are taken out here; the rest belongs to the inner planner.
+        own = {name: kwargs.pop(name, default) for name, default in ENGINE_PARAMETERS.items()}
+        thresholds = Thresholds(float(own["tau_class"]), float(own["tau_element"]))
+        scorer, widen_factor, first_share = own["scorer"], float(own["widen_factor"]), float(own["first_share"])
         if scorer is not None and scorer not in ENGINE_SCORERS:
             raise UsageError(f"unknown scorer '{scorer}' (choose from: {', '.join(ENGINE_SCORERS)})")
-        if not 0.0 < float(widen_factor) < 1.0:
-            raise UsageError(f"widen_factor must be in (0, 1), got {widen_factor}")
-        if not 0.0 < float(first_share) <= 1.0:
-            raise UsageError(f"first_share must be in (0, 1], got {first_share}")
+        if not 0.0 < widen_factor < 1.0:
+            raise UsageError(f"widen_factor must be in (0, 1), got {own['widen_factor']}")
+        if not 0.0 < first_share <= 1.0:
+            raise UsageError(f"first_share must be in (0, 1], got {own['first_share']}")
+        model = own["model"]
         self._model: KnowledgeModel | None = load_knowledge_model(model) if model is not None else None
-        self._domain = domain
+        self._domain: str | None = own["domain"]
         # The same options object `plan` builds: the same loop makes the same choices.
         self._options = PlanOptions(
             method=Method.RELEVANCE,
-            thresholds=Thresholds(float(tau_class), float(tau_element)),
+            thresholds=thresholds,
             scorer=scorer,
-            widen_factor=float(widen_factor),
-            first_share=float(first_share),
-            seed=int(seed),
+            widen_factor=widen_factor,
+            first_share=first_share,
+            seed=int(own["seed"]),
             timeout=None,
         )
         MetaEngine.__init__(self, *args, **kwargs)

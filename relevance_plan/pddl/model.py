@@ -262,13 +262,10 @@ def make_problem(
     init: Iterable[GroundAtom],
     goal: Formula,
     *,
-    display: Mapping[str, str] | None = None,
     numeric_init: Mapping[GroundAtom, float] | None = None,
     metric: Metric | None = None,
-    spelling: Spelling = UNSPELLED,
 ) -> Problem:
-    """A problem built in code (no source text); ``init`` keeps its order when formatted.  ``display``:
-    the objects' spelling; ``spelling``: the domain's names (``Domain.spelling``)."""
+    """A problem built in code (no source text, names as written); ``init`` keeps its order when formatted."""
     order: dict[GroundAtom, int] = {}
     for atom in init:
         order.setdefault(tuple(atom), len(order))
@@ -279,7 +276,7 @@ def make_problem(
         init=frozenset(order),
         goal=goal,
         text="",
-        spelling=spelling.with_objects(frozen(display or {})),
+        spelling=UNSPELLED,
         numeric_init=frozen(numeric_init or {}),
         metric=metric,
         init_order=frozen(order),

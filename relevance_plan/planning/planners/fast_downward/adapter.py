@@ -343,6 +343,15 @@ def classify(
 DRIVER_CPU_SLACK = 2.0  # seconds of CPU the driver may use beyond the attempt's wall-clock limit
 
 
+@dataclass(frozen=True)
+class DriverProcess:
+    """How the driver's process is started and watched: the tool's defaults; tests change them."""
+
+    python: str = sys.executable  # the interpreter the driver runs under
+    driver_limits: bool = True  # False: the limits are the watchdog's alone, none goes to the driver
+    watchdog_grace: float | None = None  # beyond the time limit before the group is killed (None: the default)
+
+
 def run_fast_downward(
     domain_path: str | os.PathLike[str],
     problem_path: str | os.PathLike[str],
@@ -350,31 +359,29 @@ def run_fast_downward(
     config: str = DEFAULT_CONFIG,
     time_limit: float | None = DEFAULT_TIMEOUT,
     memory_limit_mb: int | None = None,
-    python: str = sys.executable,
-    driver_limits: bool = True,
-    watchdog_grace: float | None = None,
     extra_arguments: Sequence[str] = (),
     work_dir: str | None = None,
+    process: DriverProcess = DriverProcess(),
 ) -> RunOutcome:
     """Run Fast Downward on one task and classify the result.
 
     ``time_limit`` (seconds), plus a grace period (``process.watchdog_deadline``),
     goes to a wall-clock watchdog that kills the whole process group, and plus
-    ``DRIVER_CPU_SLACK`` to the driver as a CPU limit.  ``driver_limits=False`` withholds the
-    limits from the driver so that only the watchdog applies (for tests).
+    ``DRIVER_CPU_SLACK`` to the driver as a CPU limit; ``process`` changes how the driver is run and
+    watched (its interpreter, the limits left to the watchdog alone: for tests).
     ``extra_arguments`` end the command line; ``work_dir`` is the directory
     the driver works in and leaves its files in (default: a temporary one).
     An anytime configuration's plans are all in the outcome's ``plans``.
     """
     domain, problem = _check_run(domain_path, problem_path, time_limit, memory_limit_mb)
+    python, driver_limits, watchdog_grace = process.python, process.driver_limits, process.watchdog_grace
     driver = find_fast_downward()
     # The driver counts its own start and the translator against its limit, and gives the search only
     # what is left: held to a short limit exactly, it stops a search that has barely begun.  The wall
     # clock is the watchdog's (at ``time_limit``); the driver's CPU limit sits above it, a backstop.
     driver_time_limit = time_limit + DRIVER_CPU_SLACK if driver_limits and time_limit is not None else None
     command = build_command(
-        python,
-        driver,
+        (python, str(driver)),
         domain,
         problem,
         config,

@@ -114,8 +114,7 @@ def _split_driver_options(arguments: tuple[str, ...]) -> tuple[list[str], list[s
 
 
 def build_command(
-    python: str,
-    driver: str | Path,
+    launcher: tuple[str, str],
     domain: str | Path,
     problem: str | Path,
     config: str,
@@ -124,8 +123,9 @@ def build_command(
     extra_arguments: Sequence[str] = (),
     keep_sas_file: bool = False,
 ) -> list[str]:
-    """The driver's command line; ``extra_arguments`` (``--planner-args``) come last, after the inputs and
-    the configuration's component options (e.g. ``--translate-options --invariant-generation-max-candidates 0``)."""
+    """The driver's command line (``launcher``: the interpreter and the driver script).  ``extra_arguments``
+    (``--planner-args``) come last, after the inputs and the configuration's component options
+    (e.g. ``--translate-options --invariant-generation-max-candidates 0``)."""
     limits: list[str] = []
     if time_limit is not None:
         limits += ["--overall-time-limit", f"{math.ceil(time_limit)}s"]
@@ -134,9 +134,10 @@ def build_command(
     before, after = _split_driver_options(planner_arguments(config))
     if keep_sas_file:
         before.append("--keep-sas-file")
+    python, driver = launcher
     return [
         python,
-        str(driver),
+        driver,
         "--plan-file",
         PLAN_FILE,
         *limits,

@@ -198,7 +198,7 @@ def start_for_plan(arguments: Sequence[str]) -> None:
         return
     domain, problem, config, timeout, memory, extra = wanted
     driver = command_line.driver_location()
-    command = command_line.build_command(sys.executable, driver, domain, problem, config, timeout, memory, extra)
+    command = command_line.build_command((sys.executable, str(driver)), domain, problem, config, timeout, memory, extra)
     workdir = spawn.scratch_folder("fd")
     if workdir is None:
         return
