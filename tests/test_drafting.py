@@ -92,7 +92,7 @@ def test_a_drafted_model_loads_and_names_only_the_domain_s_predicates(drafted, n
     result, tasks = drafted[name]
     domain = tasks[0].domain
     model = check_knowledge_model_applies(parse_knowledge_model(result.text, "drafted.yaml"), domain)
-    assert model.sufficiency_check and model.objectives and all(name.startswith("goal-") for name in model.objectives)
+    assert model.reachability_check and model.objectives and all(name.startswith("goal-") for name in model.objectives)
     scene = yaml.safe_load(result.text)["scene"]
     assert all(value == "none" or value in domain.predicates for value in scene.values()), scene
     assert {c for c in model.classes} >= {t for task in tasks for t in task.problem.objects.values()}
@@ -145,7 +145,7 @@ def test_a_drafted_model_prunes_no_worse_than_no_model_on_its_problems(drafted, 
 
 def test_dependencies_that_keep_too_much_are_left_out_and_said(drafted):
     # a toolbox with two keys: a dependency keeps both (and the cabinet the spare is in); the
-    # sufficiency check keeps the one a plan uses
+    # reachability check keeps the one a plan uses
     text = drafted["workshop"][0].text
     assert "dependencies: []" in text
     assert "#  - predicate: fits" in text and "left out" in text
@@ -283,6 +283,15 @@ def test_containment_gives_a_placement_factor_and_access_judges_only_its_places(
     assert "in-closed-container 0.5" in scores.explanations["socket_wrench_1"]
 
 
-def test_sufficiency_check_must_be_true_or_false():
-    with pytest.raises(ModelError, match="'sufficiency_check' must be true or false"):
-        parse_knowledge_model(SCENE_MODEL.format(scene="") + "sufficiency_check: maybe\n", "m.yaml")
+def test_the_reachability_flag_is_read_under_its_old_name_too():
+    old = parse_knowledge_model(SCENE_MODEL.format(scene="") + "sufficiency_check: true\n", "m.yaml")
+    assert old.reachability_check
+    with pytest.raises(ModelError, match="give 'reachability_check' only"):
+        parse_knowledge_model(
+            SCENE_MODEL.format(scene="") + "sufficiency_check: true\nreachability_check: true\n", "m.yaml"
+        )
+
+
+def test_reachability_check_must_be_true_or_false():
+    with pytest.raises(ModelError, match="'reachability_check' must be true or false"):
+        parse_knowledge_model(SCENE_MODEL.format(scene="") + "reachability_check: maybe\n", "m.yaml")

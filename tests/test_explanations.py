@@ -60,10 +60,10 @@ def _task(domain_path, problem_path):
     return domain, load_problem(problem_path, domain)
 
 
-def test_the_sufficiency_check_and_a_dependency_are_named_not_called_closure(tmp_path):
+def test_the_reachability_check_and_a_dependency_are_named_not_called_closure(tmp_path):
     domain_path, problems = world("laboratory")
     found = steps_of(domain_path, problems[0])  # the goal scorer: the door a relaxed plan passes
-    assert found["prep_lab_door_1"][:2] == (True, decisions.SUFFICIENCY_CHECK)
+    assert found["prep_lab_door_1"][:2] == (True, decisions.REACHABILITY_CHECK)
     assert "relaxed plan" in found["prep_lab_door_1"][2]
     model = tmp_path / "relevance.yaml"
     model.write_text(

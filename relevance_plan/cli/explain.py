@@ -2,7 +2,7 @@
 
 Each object's line names the step that kept or dropped it
 (``relevance.selection.decisions``): the goal, the thresholds, closure, a dependency,
-the sufficiency check, soundness, the goal filter, set aside.  Free text the
+the reachability check, soundness, the goal filter, set aside.  Free text the
 model understood is shown with its similarity.
 """
 

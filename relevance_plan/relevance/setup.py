@@ -90,9 +90,9 @@ class Scoring:
         ``narrow`` (the relevance method) the goal filter, and blocked alternatives and those no
         relaxed plan needs set aside (a bet on the first attempt only: widening sets nothing more
         aside, and brings these back last); with a knowledge model that asks for it
-        (``sufficiency_check``), the sufficiency check as without a model, negative preconditions
+        (``reachability_check``), the reachability check as without a model, negative preconditions
         counted (``completion``)."""
-        checked = narrow and self.knowledge_model is not None and self.knowledge_model.sufficiency_check
+        checked = narrow and self.knowledge_model is not None and self.knowledge_model.reachability_check
         settings = PruneSettings(
             goal_filter=self.options.goal_filter and narrow,
             prefer_free=self.options.prefer_free and narrow,

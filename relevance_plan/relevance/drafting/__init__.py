@@ -108,7 +108,7 @@ def _leave_out_dependencies(
     run: _CheckInputs, draft: Draft, checks: list[ProblemCheck]
 ) -> tuple[Draft, list[ProblemCheck], list[str]]:
     """Without each dependency in turn: left out when every problem stays sufficient with fewer objects
-    kept (a lock with two keys: the sufficiency check takes the one a plan uses, a dependency both)."""
+    kept (a lock with two keys: the reachability check takes the one a plan uses, a dependency both)."""
     notes = []
     for dependency in draft.dependencies:
         why = "with it the draft keeps more, and without it lacks nothing"

@@ -2,7 +2,7 @@
 
 For each given problem, the draft's first selection (what ``plan`` would try
 first with the model) is compared with the goal scorer's, and both are put to
-the sufficiency check with the negative preconditions compiled into
+the reachability check with the negative preconditions compiled into
 complements (``pddl.compile``), so that a lock nothing can open counts: the
 relaxation the planning loop uses passes over ``(not (locked ?s))``.  What a
 selection lacks is what the repair (``repair.repair_selection``) adds to it.
@@ -167,7 +167,7 @@ def _static_link(
     type), to a kept object."""
     static = static_predicates(task.domain)
     if not any(t in portable for t in task.domain.ancestors(task.problem.objects[name])):
-        return None  # what is not carried (a door, a room) comes back through the sufficiency check
+        return None  # what is not carried (a door, a room) comes back through the reachability check
     for atom in sorted(task.init_index.by_object.get(name, ())):
         if atom[0] in static and atom[0] in used and len(atom) == 3 and atom[1] != atom[2]:
             restore = atom.index(name) - 1

@@ -4,7 +4,7 @@ The goal scorer regresses each problem's goal through the action schemas
 (``goal_regression.analyse_goal``) to the types that can play a role in reaching it;
 its first selection (``prune``'s) is what a problem needs according to that
 analysis.  Drafting reads both, per problem: the goal's objects, the members
-of each class the selection chose or the sufficiency check added, the role
+of each class the selection chose or the reachability check added, the role
 depth of each type.
 """
 
@@ -37,7 +37,7 @@ class ProblemEvidence:
 
     @property
     def chosen(self) -> frozenset[str]:
-        """Objects the goal scorer selected for their roles, or its sufficiency check added (not the goal's)."""
+        """Objects the goal scorer selected for their roles, or its reachability check added (not the goal's)."""
         added = {r.name for r in self.selection.restored if r.rule == "reachability"}
         return (self.selection.selected | added) - self.task.goal_objects
 

@@ -61,7 +61,7 @@ def _header(draft: Draft, problems: Sequence[str], notes: Sequence[str]) -> list
         "entropy_bound: 1.0",
         "# The first selection is checked for relaxed reachability and completed, as without a model:",
         "# what the robot must pass through (doors, rooms) is found there, not in the priors.",
-        "sufficiency_check: true",
+        "reachability_check: true",
         "",
         "defaults:",
         "  unknown_class_relevance: 0.05  # an object whose class the model does not know",

@@ -1,6 +1,6 @@
 """Relaxed reachability: whether a kept set of objects can reach the goal, deletes ignored.
 
-The cheap sufficiency check every selection passes before a planner runs ("unreachable" is a
+The cheap reachability check every selection passes before a planner runs ("unreachable" is a
 proof: no plan exists on those objects).  From the bottom up (each module imports only modules
 listed before it)::
 

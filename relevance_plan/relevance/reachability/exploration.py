@@ -1,4 +1,4 @@
-"""The cheap sufficiency check before any planner call: relaxed reachability on the kept objects.
+"""The cheap reachability check before any planner call: relaxed reachability on the kept objects.
 
 ``relaxed_reachability`` grounds the actions on the kept objects only (joins
 over the positive preconditions of the task's join schemas, ``schemas.py``, as

@@ -157,7 +157,7 @@ class KnowledgeModel:
     humans: Mapping[str, Human]
     dependencies: tuple[ModelDependency, ...] = field(default=())
     # the first selection is checked for relaxed reachability and repaired, as the goal scorer's is
-    sufficiency_check: bool = False
+    reachability_check: bool = False
     # the line of each key, by its path (("scene", "containment")): checks against a domain name it
     lines: Mapping[tuple[str, ...], int] = field(default_factory=_no_lines, compare=False, repr=False)
 
@@ -268,7 +268,7 @@ def parse_knowledge_model(text: str, path: str = "<model>") -> KnowledgeModel:
             _read_humans(check, check.mapping(data, "humans", required=False), classes, task_classes, objectives)
         ),
         dependencies=_read_dependencies(check, data),
-        sufficiency_check=_read_flag(check, data, "sufficiency_check"),
+        reachability_check=_read_reachability_flag(check, data),
         lines=MappingProxyType(dict(_key_lines(data))),
     )
 
@@ -280,6 +280,8 @@ def _key_lines(mapping: _LineDict, above: tuple[str, ...] = ()) -> Iterator[tupl
         if isinstance(value, _LineDict):
             yield from _key_lines(value, (*above, key))
 
+
+OLD_REACHABILITY_KEY = "sufficiency_check"  # the name of ``reachability_check`` until 0.12
 
 _TOP_LEVEL_KEYS = {
     "version",
@@ -294,8 +296,18 @@ _TOP_LEVEL_KEYS = {
     "placement",
     "humans",
     "dependencies",
-    "sufficiency_check",
+    "reachability_check",
+    OLD_REACHABILITY_KEY,
 }
+
+
+def _read_reachability_flag(check: _Checker, data: _LineDict) -> bool:
+    """``reachability_check``, or the same flag under its name until 0.12 (read for one more release)."""
+    if OLD_REACHABILITY_KEY in data and "reachability_check" in data:
+        check.fail(
+            f"give 'reachability_check' only ('{OLD_REACHABILITY_KEY}' is its old name)", data, OLD_REACHABILITY_KEY
+        )
+    return _read_flag(check, data, OLD_REACHABILITY_KEY if OLD_REACHABILITY_KEY in data else "reachability_check")
 
 
 def _read_flag(check: _Checker, data: _LineDict, key: str) -> bool:

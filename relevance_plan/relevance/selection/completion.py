@@ -1,11 +1,11 @@
 """Completing a first selection for what the relaxed check passes over: the negative preconditions.
 
-The sufficiency check (``exploration``, ``repair``) ignores conditions such
+The reachability check (``exploration``, ``repair``) ignores conditions such
 as ``(not (locked ?s))``: on it, a toolbox opens without its key.  Compiled
 into complements (``(not-locked ?s)``, true of every unlocked storage and
 added by ``unlock``: ``pddl.compile``), the same check sees the lock, and the
 repair adds the key, the drawer it is in and the way there.  A knowledge
-model asks for this with ``sufficiency_check: true`` (drafted models do); the
+model asks for this with ``reachability_check: true`` (drafted models do); the
 drafting check uses it to compare a draft with the goal scorer.
 """
 

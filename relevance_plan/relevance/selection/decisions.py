@@ -3,7 +3,7 @@
 A selection (``prune.Selection``) says what was kept; this says, for each
 object, which step kept or dropped it and why: the goal names it; it passed
 the thresholds; closure, a dependency of the knowledge model, the
-sufficiency check or soundness put it back; or it stayed below the
+reachability check or soundness put it back; or it stayed below the
 thresholds, the goal filter left it out (relevant, but no action toward the
 goal can use it), or it was set aside for a later attempt.  ``score`` prints
 these, ``score --why NAME`` follows one object's chain back to what the goal
@@ -29,7 +29,7 @@ GOAL_FILTER = "goal filter"
 SET_ASIDE = "set aside"
 CLOSURE = "closure"
 DEPENDENCY = "dependency"
-SUFFICIENCY_CHECK = "sufficiency check"
+REACHABILITY_CHECK = "reachability check"
 SOUNDNESS = "soundness"
 FULL_PROBLEM = "full problem"
 NO_CUES = "insufficient cues"
@@ -40,7 +40,7 @@ _RESTORING_STEP = {
     "anchor": CLOSURE,
     "singleton": CLOSURE,
     "model": DEPENDENCY,
-    "reachability": SUFFICIENCY_CHECK,
+    "reachability": REACHABILITY_CHECK,
     "soundness": SOUNDNESS,
 }
 
@@ -166,7 +166,7 @@ def classes_kept(selection: Selection, decisions: Mapping[str, Decision] | None 
 
 
 def kept_summary(selection: Selection) -> str:
-    """``kept 9 of 54 objects (4 relevant, 2 by closure, 1 by the sufficiency check)``."""
+    """``kept 9 of 54 objects (4 relevant, 2 by closure, 1 by the reachability check)``."""
     counts = Counter(d.step for d in decide(selection).values() if d.kept)
     parts = [f"{counts[step]} {label}" for step, label in _SUMMARY_LABELS if counts[step]]
     total = len(selection.task.problem.objects)
@@ -178,7 +178,7 @@ _SUMMARY_LABELS = (
     (THRESHOLDS, "relevant"),
     (CLOSURE, "by closure"),
     (DEPENDENCY, "by a dependency"),
-    (SUFFICIENCY_CHECK, "by the sufficiency check"),
+    (REACHABILITY_CHECK, "by the reachability check"),
     (SOUNDNESS, "for soundness"),
     (FULL_PROBLEM, "as the full problem"),
     (NO_CUES, "undecided"),
