@@ -18,7 +18,7 @@ TYPE_CHECKING = False  # typing's own flag would import typing (the launcher's p
 if TYPE_CHECKING:
     from typing import Any
 
-__version__ = "0.11.0"  # the one place it is written: pyproject.toml reads it from here
+__version__ = "0.12.0"  # the one place it is written: pyproject.toml reads it from here
 
 _EXPORTS = {
     "prune": "relevance_plan.api",

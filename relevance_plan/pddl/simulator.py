@@ -128,7 +128,7 @@ class Simulator:
     # ---------------------------------------------------------------- conditions
 
     def holds(
-        self, formula: f.Formula, state: WorldState, binding: Mapping[str, str], index: _FactIndex | None = None
+        self, formula: f.Formula, state: WorldState, binding: Mapping[str, str], index: _StateFacts | None = None
     ) -> bool:
         """Does ``formula`` hold in ``state`` under ``binding``?  With ``index`` (the facts of
         ``state``, indexed), quantifiers try only the bindings the facts allow."""
@@ -207,7 +207,7 @@ class Simulator:
         durative action, only its parts at ``when`` ("start" or "end")."""
         found = Effects(set(), set(), {})
         # quantified effect conditions are joined over an index of the state, as derived rules are
-        index = _FactIndex(state.facts) if self._quantified_conditions(effect) else None
+        index = _StateFacts(state.facts) if self._quantified_conditions(effect) else None
         self._collect(effect, state, binding, when, None, found, index)
         return found
 
@@ -229,7 +229,7 @@ class Simulator:
         when: str | None,
         current: str | None,
         found: Effects,
-        index: _FactIndex | None = None,
+        index: _StateFacts | None = None,
     ) -> None:
         if isinstance(effect, f.Atom):
             if current == when:
@@ -283,7 +283,7 @@ class Simulator:
             return
         derived = self.domain.derived_predicates
         state.facts = {fact for fact in state.facts if fact[0] not in derived}
-        index = _FactIndex(state.facts)
+        index = _StateFacts(state.facts)
         for stratum in self._strata:
             pending = list(stratum)
             while pending:
@@ -305,7 +305,7 @@ class Simulator:
             self._mentioned[id(rule)] = found
         return found
 
-    def _rule_bindings(self, rule: DerivedPredicate, index: _FactIndex) -> Iterator[dict[str, str]]:
+    def _rule_bindings(self, rule: DerivedPredicate, index: _StateFacts) -> Iterator[dict[str, str]]:
         """Bindings of ``rule``'s parameters under which its body may hold: those of the atoms the
         body needs (see :func:`_cover`), found in ``index``, rather than every object for every
         parameter; the caller checks the whole body."""
@@ -315,7 +315,7 @@ class Simulator:
         return self._candidates(cover, {}, index)
 
     def _quantified(
-        self, formula: f.Exists | f.Forall, state: WorldState, binding: Mapping[str, str], index: _FactIndex
+        self, formula: f.Exists | f.Forall, state: WorldState, binding: Mapping[str, str], index: _StateFacts
     ) -> bool:
         """``exists`` or ``forall`` tried only on the bindings under which its body (for ``forall``,
         the body's negation) may hold, found in ``index``; under every other binding the body holds
@@ -329,7 +329,7 @@ class Simulator:
                 return positive
         return not positive
 
-    def _candidates(self, cover: _Cover, binding: Mapping[str, str], index: _FactIndex) -> Iterator[dict[str, str]]:
+    def _candidates(self, cover: _Cover, binding: Mapping[str, str], index: _StateFacts) -> Iterator[dict[str, str]]:
         """``binding`` extended by each binding of the cover's variables that one of its alternatives
         allows (each once); a variable the alternative leaves open takes every object of its type."""
         outer = {k: v for k, v in binding.items() if k not in cover.types}
@@ -347,7 +347,7 @@ class Simulator:
                         yield inner
 
     def _join(
-        self, items: list[f.Atom | f.Equality], binding: dict[str, str], types: Mapping[str, str], index: _FactIndex
+        self, items: list[f.Atom | f.Equality], binding: dict[str, str], types: Mapping[str, str], index: _StateFacts
     ) -> Iterator[dict[str, str]]:
         """Bindings extending ``binding`` under which every item holds in ``index`` (the most bound
         item first); a variable not in ``types`` is the outer binding's, or stands for itself."""
@@ -423,7 +423,7 @@ class Simulator:
         return cached
 
 
-class _FactIndex:
+class _StateFacts:
     """The facts of a state by predicate and by (predicate, position, value), kept up to date as
     facts are added."""
 

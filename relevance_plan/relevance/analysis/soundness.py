@@ -49,7 +49,7 @@ from relevance_plan.pddl.model import Domain, Problem, Spelling
 
 
 @dataclass(frozen=True)
-class KeptForSoundness:
+class SoundnessRequirement:
     """Objects of ``type_name`` (those ``guard`` admits, if any) that a quantifier ranges over."""
 
     type_name: str
@@ -60,26 +60,26 @@ class KeptForSoundness:
     linked: bool = False  # ... in a fact whose other objects are kept (the atom's other terms name kept objects)
 
 
-def soundness_requirements(domain: Domain, problem: Problem) -> tuple[KeptForSoundness, ...]:
+def soundness_requirements(domain: Domain, problem: Problem) -> tuple[SoundnessRequirement, ...]:
     """Every quantifier whose range must stay whole, with where it is (the goal's first)."""
     problem_part = _requirements(_problem_formulas(problem), _never_gained(domain), problem.spelling)
     return problem_part + _domain_requirements(domain)
 
 
 @functools.lru_cache(maxsize=16)
-def _domain_requirements(domain: Domain) -> tuple[KeptForSoundness, ...]:
+def _domain_requirements(domain: Domain) -> tuple[SoundnessRequirement, ...]:
     never_gained = _never_gained(domain)
     return _requirements(_domain_formulas(domain), never_gained, domain.spelling) + _effects_over_others(
         domain, never_gained
     )
 
 
-def _effects_over_others(domain: Domain, never_gained: Callable[[str, int], bool]) -> tuple[KeptForSoundness, ...]:
+def _effects_over_others(domain: Domain, never_gained: Callable[[str, int], bool]) -> tuple[SoundnessRequirement, ...]:
     """A universally quantified effect whose atom or fluent does not name its variable (``(forall (?p)
     (when (boarded ?p) (overloaded)))``, ``(forall (?p) (increase (load) (weight ?p)))``) sets a kept
     fact once for every object, pruned ones too: each object of the range stays, or only those the
     condition's atoms can admit (see ``_guards``)."""
-    found: dict[tuple[str, str | None, int, str], KeptForSoundness] = {}
+    found: dict[tuple[str, str | None, int, str], SoundnessRequirement] = {}
     spelling = domain.spelling
     for action in domain.actions:
         where = f"action '{spelling.action(action.name)}'"
@@ -103,7 +103,7 @@ def _effects_over_others(domain: Domain, never_gained: Callable[[str, int], bool
             variables = " ".join(variable for variable, _ in others)
             text = _short(f"(forall ({variables}) ... {format_formula(effect, spelling)})")
             for variable, type_name in others:
-                item = KeptForSoundness(type_name, where, text, *guards.get(variable, (None, 0, False)))
+                item = SoundnessRequirement(type_name, where, text, *guards.get(variable, (None, 0, False)))
                 found.setdefault((type_name, item.guard, item.guard_position, where), item)
     return tuple(found.values())
 
@@ -112,15 +112,15 @@ def _requirements(
     formulas: Iterable[tuple[str, f.Formula, str, f.Parameters]],
     never_gained: Callable[[str, int], bool],
     spelling: Spelling,
-) -> tuple[KeptForSoundness, ...]:
-    found: dict[tuple[str, str | None, int, str], KeptForSoundness] = {}
+) -> tuple[SoundnessRequirement, ...]:
+    found: dict[tuple[str, str | None, int, str], SoundnessRequirement] = {}
     for where, formula, mode, effect_variables in formulas:
         bound = _bound_variables(formula) | {variable for variable, _ in effect_variables}
         for quantifier, _ in _risky(formula, mode):
             guards = _guards(quantifier, never_gained, bound)
             text = _short(format_formula(quantifier, spelling))
             for variable, type_name in quantifier.parameters:
-                item = KeptForSoundness(type_name, where, text, *guards.get(variable, (None, 0, False)))
+                item = SoundnessRequirement(type_name, where, text, *guards.get(variable, (None, 0, False)))
                 found.setdefault((type_name, item.guard, item.guard_position, where), item)
     return tuple(found.values())
 
@@ -141,22 +141,22 @@ class KeptObjects:
     """What the soundness rule keeps: ``always`` whatever else is kept; each of ``linked`` once
     all the other objects of one of its guard's facts are kept (the receptacle holding a kept item)."""
 
-    always: Mapping[str, KeptForSoundness]
-    linked: Mapping[str, tuple[KeptForSoundness, tuple[frozenset[str], ...]]]  # -> (requirement, facts' others)
+    always: Mapping[str, SoundnessRequirement]
+    linked: Mapping[str, tuple[SoundnessRequirement, tuple[frozenset[str], ...]]]  # -> (requirement, facts' others)
 
     @functools.cached_property
-    def _by_partner(self) -> Mapping[str, tuple[tuple[str, KeptForSoundness, frozenset[str]], ...]]:
-        index: dict[str, list[tuple[str, KeptForSoundness, frozenset[str]]]] = {}
+    def _by_partner(self) -> Mapping[str, tuple[tuple[str, SoundnessRequirement, frozenset[str]], ...]]:
+        index: dict[str, list[tuple[str, SoundnessRequirement, frozenset[str]]]] = {}
         for name, (requirement, partner_sets) in self.linked.items():
             for partners in partner_sets:
                 for partner in partners:
                     index.setdefault(partner, []).append((name, requirement, partners))
         return {partner: tuple(entries) for partner, entries in index.items()}
 
-    def admitted(self, kept: Set[str], added: Iterable[str]) -> dict[str, KeptForSoundness]:
+    def admitted(self, kept: Set[str], added: Iterable[str]) -> dict[str, SoundnessRequirement]:
         """The linked objects outside ``kept`` that a fact naming one of ``added`` (a part of ``kept``:
         what is new since the last look) links to kept objects only."""
-        found: dict[str, KeptForSoundness] = {}
+        found: dict[str, SoundnessRequirement] = {}
         for partner in added:
             for name, requirement, partners in self._by_partner.get(partner, ()):
                 if name not in kept and name not in found and partners <= kept:
@@ -164,7 +164,7 @@ class KeptObjects:
         return found
 
 
-def objects_to_keep(domain: Domain, problem: Problem, requirements: tuple[KeptForSoundness, ...]) -> KeptObjects:
+def objects_to_keep(domain: Domain, problem: Problem, requirements: tuple[SoundnessRequirement, ...]) -> KeptObjects:
     """Each object a requirement keeps, with the first requirement that applies."""
     places: dict[str, set[int]] = {}
     for requirement in requirements:
@@ -180,8 +180,8 @@ def objects_to_keep(domain: Domain, problem: Problem, requirements: tuple[KeptFo
                 if len(atom) > position + 1:
                     others = frozenset(a for i, a in enumerate(atom[1:]) if i != position and a in objects)
                     named.setdefault((atom[0], position), {}).setdefault(atom[position + 1], set()).add(others)
-    always: dict[str, KeptForSoundness] = {}
-    linked: dict[str, tuple[KeptForSoundness, set[frozenset[str]]]] = {}
+    always: dict[str, SoundnessRequirement] = {}
+    linked: dict[str, tuple[SoundnessRequirement, set[frozenset[str]]]] = {}
     for requirement in requirements:
         facts = named.get((requirement.guard, requirement.guard_position), {}) if requirement.guard else None
         for name, type_name in problem.objects.items():

@@ -28,7 +28,7 @@ from relevance_plan.relevance.analysis.constraint_rules import (
     single_valued_predicates,
 )
 from relevance_plan.relevance.analysis.facts import FactIndex
-from relevance_plan.relevance.analysis.soundness import KeptForSoundness
+from relevance_plan.relevance.analysis.soundness import SoundnessRequirement
 from relevance_plan.relevance.analysis.task import PlanningTask
 from relevance_plan.relevance.scoring.knowledge import KnowledgeModel
 
@@ -183,7 +183,7 @@ class ConstraintClosure:
         )
 
 
-def soundness_reason(name: str, requirement: KeptForSoundness, spelling: Spelling = UNSPELLED) -> Restored:
+def soundness_reason(name: str, requirement: SoundnessRequirement, spelling: Spelling = UNSPELLED) -> Restored:
     admitted = f" with ({spelling.predicate(requirement.guard)} ...)" if requirement.guard else ""
     every = spelling.type(requirement.type_name)
     note = f"{requirement.where} quantifies over every {every}{admitted}: {requirement.formula}"
