@@ -58,10 +58,10 @@ imported = time.perf_counter()
 load_text_model()
 loaded = time.perf_counter()
 match_text("I'd love something hot with milk", model, ModelVocabulary.OBJECTIVE)
-match_text("I'd love something hot with milk", model, ModelVocabulary.TASK)
+match_text("I'd love something hot with milk", model, ModelVocabulary.ACTIVITY)
 place_kinds(["oat_milk_carton"], model)
 embedded = time.perf_counter()
-match_text("could I get a cold drink", model, ModelVocabulary.TASK)
+match_text("could I get a cold drink", model, ModelVocabulary.ACTIVITY)
 one_more = time.perf_counter()
 print(json.dumps({
     "import": imported - started, "load": loaded - imported, "vocabulary": embedded - loaded,

@@ -23,6 +23,7 @@ import tempfile
 from pathlib import Path
 from typing import Any
 
+from relevance_plan.errors import UsageError
 from relevance_plan.io import Source, is_pddl_text, load_sources
 from relevance_plan.pddl.sexpr import collection_paused
 from relevance_plan.planning.options import Method, PlanOptions
@@ -35,6 +36,10 @@ from relevance_plan.relevance.setup import ScoringOptions, score_problem
 
 
 def _thresholds(options: dict[str, Any]) -> dict[str, Any]:
+    if "model_task" in options:  # the name of ``activity`` until 0.12, taken for one more release
+        if "activity" in options:
+            raise UsageError("give activity only (model_task is its name until 0.12)")
+        options["activity"] = options.pop("model_task")
     tau_class = options.pop("tau_class", None)
     tau_element = options.pop("tau_element", None)
     if tau_class is not None or tau_element is not None:
@@ -49,7 +54,7 @@ def _thresholds(options: dict[str, Any]) -> dict[str, Any]:
 def prune(domain: Source, problem: Source, **options: Any) -> Selection:
     """The objects ``plan`` tries first, and the pruned problem (``Selection.text``).
 
-    Options: ``scorer``, ``model_path``, ``objective``, ``model_task``, ``human``,
+    Options: ``scorer``, ``model_path``, ``objective``, ``activity``, ``human``,
     ``tau_class``, ``tau_element``, ``seed``, ``goal_filter``, ``prefer_free``, ``economical``.
     """
     scoring_options = ScoringOptions(**_thresholds(dict(options)))

@@ -45,7 +45,9 @@ EXIT_CODE_DESCRIPTIONS: dict[ExitCode, str] = {
     ExitCode.NO_VALID_PLAN: (
         "no valid plan: search ended without one (incomplete search, invalid plans, or --no-widen failure)"
     ),
-    ExitCode.INSUFFICIENT_CUES: "insufficient cues: relevance cannot be decided; give --task, --objective or --human",
+    ExitCode.INSUFFICIENT_CUES: (
+        "insufficient cues: relevance cannot be decided; give --activity, --objective or --human"
+    ),
     ExitCode.PLAN_INVALID: "the plan is invalid on the problem (validate)",
     ExitCode.OUT_OF_TIME: "out of time",
     ExitCode.OUT_OF_MEMORY: "out of memory (the tool's, or a planner that died under --memory-limit)",
@@ -58,7 +60,7 @@ EXIT_CODE_DESCRIPTIONS: dict[ExitCode, str] = {
     ExitCode.UNSUPPORTED_PDDL: "PDDL feature not supported (by the tool, or by the planner or its reader)",
     ExitCode.DOMAIN_MISMATCH: "problem does not belong to the domain",
     ExitCode.MODEL: (
-        "invalid knowledge model (YAML, schema, probability; its file and line), or a human, objective or task name"
+        "invalid knowledge model (YAML, schema, probability; its file and line), or a human, objective or activity name"
         " it lacks"
     ),
     ExitCode.STORE: "results store unusable or from an incompatible version",

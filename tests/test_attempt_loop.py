@@ -116,7 +116,7 @@ def test_insufficient_cues_is_its_own_outcome(coffee_files):
     domain_path, problem_path = coffee_files
     result = plan_task(domain_path, problem_path, PlanOptions(objective="drink-at-break", timeout=60))
     assert result.status is PlanStatus.INSUFFICIENT_CUES
-    assert "give --task or --human" in result.message
+    assert "give --activity or --human" in result.message
     resolved = plan_task(domain_path, problem_path, PlanOptions(objective="drink-at-break", human="alice", timeout=60))
     assert resolved.status is PlanStatus.SOLVED
 

@@ -106,7 +106,7 @@ def test_every_entry_of_a_drafted_model_says_where_it_came_from(drafted, name):
     # a scene role, a prior, a kind weight: each on a line with its comment
     for role in data["scene"]:
         assert any(line.startswith(f"  {role}:") and "#" in line for line in lines), role
-    for priors in data["tasks"].values():
+    for priors in data["activities"].values():
         for class_name in priors:
             assert any(line.strip().startswith(f"{class_name}:") and "  # " in line for line in lines), class_name
     for class_name in data["classes"]:
@@ -121,7 +121,7 @@ def test_objectives_come_from_the_problems_goals(drafted):
     assert objectives["goal-at"].goal_predicates == ("at",)
     assert "torque wrench at workbench" in objectives["goal-at"].description
     # P(class | task): the goal's classes and the roles the goal scorer filled are high, the others low
-    priors = result.model.task_classes["goal-tightened"]
+    priors = result.model.activity_classes["goal-tightened"]
     assert priors["wrench"] > 0.5 and priors["bolt"] > 0.5 and priors["tool"] < 0.2 and priors["key"] < 0.2
 
 

@@ -1,4 +1,4 @@
-"""What the human says, through the front ends: --objective TEXT, --task TEXT, a cue in words, unknown kinds.
+"""What the human says, through the front ends: --objective TEXT, --activity TEXT, a cue in words, unknown kinds.
 
 The text package itself (tokenizer, encoder, matching) is tested in test_text_model.py; here the
 commands.  Tests that understand words need the real weights and skip, saying what to install,
@@ -46,16 +46,16 @@ def score_json(*args):
 
 @needs_weights
 def test_an_objective_and_a_task_in_words_are_reported_with_their_similarity():
-    code, data = score_json("--objective", "could I get a cold drink", "--task", "coffee brewed cold, over ice")
+    code, data = score_json("--objective", "could I get a cold drink", "--activity", "coffee brewed cold, over ice")
     assert code == 0
-    assert data["objective"] == "drink-at-break" and data["tasks"] == {"cold-brew-coffee": 1.0}
+    assert data["objective"] == "drink-at-break" and data["activities"] == data["tasks"] == {"cold-brew-coffee": 1.0}
     assert data["objective_match"]["chosen"] == "drink-at-break" and 0.35 <= data["objective_match"]["similarity"] < 1
-    assert data["task_match"]["chosen"] == "cold-brew-coffee" and data["task_match"]["candidates"][1]["name"]
+    assert data["activity_match"]["chosen"] == "cold-brew-coffee" and data["activity_match"]["candidates"][1]["name"]
 
 
 def test_a_name_of_the_model_needs_no_text_model(monkeypatch):
     monkeypatch.setitem(sys.modules, "numpy", None)
-    code, data = score_json("--objective", "drink-at-break", "--task", "tea")
+    code, data = score_json("--objective", "drink-at-break", "--task", "tea")  # --activity by its name until 0.12
     assert code == 0 and data["objective"] == "drink-at-break" and data["objective_match"] is None
 
 
@@ -79,10 +79,10 @@ def test_words_like_nothing_in_the_model_are_a_question_not_a_guess():
 
 def test_words_without_the_text_extra_are_one_line_naming_it(monkeypatch):
     monkeypatch.setitem(sys.modules, "numpy", None)
-    result = invoke("score", COFFEE_DOMAIN, COFFEE_HARD, "--task", "something hot with milk")
+    result = invoke("score", COFFEE_DOMAIN, COFFEE_HARD, "--activity", "something hot with milk")
     assert result.exit_code == ExitCode.USAGE
     line = one_line_error(result.stderr)
-    assert "unknown task 'something hot with milk'" in line and "pip install 'relevance-plan[text]'" in line
+    assert "unknown activity 'something hot with milk'" in line and "pip install 'relevance-plan[text]'" in line
 
 
 @needs_weights
@@ -101,10 +101,10 @@ def test_a_cue_in_words_in_watch_is_understood_or_asked_about(tmp_path):
     )
     result = invoke("watch", COFFEE_DOMAIN, SCENE, "--objective", "drink-at-break", "--events", events)
     first, second, third = (json.loads(line) for line in result.output.splitlines())
-    assert first["triggered"] and first["reason"] == "cue: task tea" and first["understood"][0]["chosen"] == "tea"
+    assert first["triggered"] and first["reason"] == "cue: activity tea" and first["understood"][0]["chosen"] == "tea"
     assert "tea_bag_1" in first["relevant"]
     assert not second["triggered"] and second["understood"][0]["chosen"] is None
-    assert second["ask"]["cue"] == "task" and "fix my bicycle" in second["ask"]["question"]
+    assert second["ask"]["cue"] == "activity" and "fix my bicycle" in second["ask"]["question"]
     assert second["ask"]["options"]
     # words that name no task but an objective are taken as the objective (the one in force: nothing changes)
     assert third["understood"][0]["vocabulary"] == "objective" and third["understood"][0]["chosen"] == "drink-at-break"
@@ -150,7 +150,7 @@ def test_kinds_the_model_does_not_list_are_placed_under_their_class_or_asked_abo
     [
         ["--objective", "fetch the wrench"],
         ["--human", "bob"],
-        ["--task", "x"],
+        ["--activity", "x"],
         ["--place-kinds"],
     ],
 )
@@ -266,13 +266,17 @@ def test_a_misspelt_name_is_a_question_naming_the_closest_names_without_the_text
 
 
 @pytest.mark.parametrize("command", COMMANDS)
-@pytest.mark.parametrize("option, vocabulary", [("--objective", "objective"), ("--task", "task")])
-def test_a_name_the_model_does_not_have_is_a_model_error_in_every_command(command, option, vocabulary, monkeypatch):
+@pytest.mark.parametrize(
+    "option, vocabulary, plural", [("--objective", "objective", "objectives"), ("--activity", "activity", "activities")]
+)
+def test_a_name_the_model_does_not_have_is_a_model_error_in_every_command(
+    command, option, vocabulary, plural, monkeypatch
+):
     monkeypatch.setitem(sys.modules, "numpy", None)
     result = invoke(*COMMANDS[command], option, "nosuch")
     assert result.exit_code == ExitCode.MODEL
     line = one_line_error(result.stderr)
-    assert f"unknown {vocabulary} 'nosuch' (the model's {vocabulary}s: " in line and "relevance.yaml" in line
+    assert f"unknown {vocabulary} 'nosuch' (the model's {plural}: " in line and "relevance.yaml" in line
 
 
 def test_the_python_api_follows_the_same_rule(monkeypatch):
@@ -293,6 +297,6 @@ def test_a_cue_of_one_token_in_watch_is_a_name_or_a_rejected_event(tmp_path, mon
     events.write_text("".join(json.dumps({"event": "cue", "text": text}) + "\n" for text in cues))
     result = invoke("watch", COFFEE_DOMAIN, SCENE, "--objective", "drink-at-break", "--events", events)
     named, near, unknown = (json.loads(line) for line in result.output.splitlines())
-    assert named["reason"] == "cue: task tea" and named["understood"][0]["similarity"] == 1.0
+    assert named["reason"] == "cue: activity tea" and named["understood"][0]["similarity"] == 1.0
     assert near["ask"] is not None and "drink-at-break" in near["ask"]["question"] and not near["triggered"]
-    assert "unknown task or objective 'nosuch'" in unknown["error"] and "drink-at-break" in unknown["error"]
+    assert "unknown activity or objective 'nosuch'" in unknown["error"] and "drink-at-break" in unknown["error"]

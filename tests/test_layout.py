@@ -32,7 +32,7 @@ OTHER_VALUES = {
     "prefer_free": False,
     "economical": False,
     "objective": "drink",
-    "model_task": "hot",
+    "activity": "hot",
     "human": "alice",
     "place_kinds": True,
     "seed": 3,

@@ -83,9 +83,9 @@ def test_model_messages_name_the_class(copied_coffee_files, tmp_path):
     from relevance_plan.relevance.scoring.knowledge import parse_knowledge_model
 
     data = yaml.safe_load(text)
-    task = next(iter(data["tasks"]))
-    class_name = next(iter(data["tasks"][task]))
-    data["tasks"][task][class_name] = 7
+    task = next(iter(data["activities"]))
+    class_name = next(iter(data["activities"][task]))
+    data["activities"][task][class_name] = 7
     model.write_text(yaml.safe_dump(data))
     code, _, stderr = run("score", domain, problem, "--model", model)
     assert code == ExitCode.MODEL

@@ -18,7 +18,7 @@ from relevance_plan.relevance.analysis.goal_regression import _Regression
 from relevance_plan.relevance.analysis.task import PlanningTask
 from relevance_plan.relevance.scoring.knowledge import parse_knowledge_model
 from relevance_plan.relevance.scoring.scorers import SCORERS, ScoreRequest
-from relevance_plan.relevance.scoring.scorers.knowledge_model import task_entropy
+from relevance_plan.relevance.scoring.scorers.knowledge_model import activity_entropy
 from relevance_plan.relevance.selection.closure import close_over_constraints
 from relevance_plan.relevance.selection.prune import PruneSettings, Thresholds, prune_with_scores, select_relevant
 
@@ -101,16 +101,18 @@ def test_element_relevance_is_class_times_kind_times_placement(task, model):
 def test_entropy_test_reports_ambiguity_with_leading_tasks(task, model):
     result = score(task, model, objective="drink")
     assert not result.sufficient
-    assert result.task_entropy == pytest.approx(task_entropy({"hot": 0.4, "tea": 0.35, "water": 0.25}))
-    assert result.task_entropy == pytest.approx(-(0.4 * math.log(0.4) + 0.35 * math.log(0.35) + 0.25 * math.log(0.25)))
+    assert result.activity_entropy == pytest.approx(activity_entropy({"hot": 0.4, "tea": 0.35, "water": 0.25}))
+    assert result.activity_entropy == pytest.approx(
+        -(0.4 * math.log(0.4) + 0.35 * math.log(0.35) + 0.25 * math.log(0.25))
+    )
     assert "objective ambiguous: hot 0.40, tea 0.35" in result.insufficiency
-    assert "--task or --human" in result.insufficiency
+    assert "--activity or --human" in result.insufficiency
 
 
 def test_task_or_human_resolves_ambiguity(task, model):
-    assert score(task, model, objective="drink", model_task="hot").sufficient
+    assert score(task, model, objective="drink", activity="hot").sufficient
     preferred = score(task, model, objective="drink", human="dana")
-    assert preferred.sufficient and preferred.task_distribution == {"tea": 1.0}
+    assert preferred.sufficient and preferred.activity_distribution == {"tea": 1.0}
     assert preferred.class_scores["whitener"] == pytest.approx(0.7)  # the human's preference, not the prior (absent)
     assert preferred.element_scores["paper_cup_1"] == pytest.approx(0.9 * 1.0)  # dana's kind preference
 
@@ -128,15 +130,15 @@ def test_unknown_names_are_errors(task, model):
     # one token is a name, never words: near no name of the model, it is the model's error
     with pytest.raises(ModelError, match="unknown objective 'lunch' \\(the model's objectives: "):
         score(task, model, objective="lunch")
-    with pytest.raises(ModelError, match="unknown task 'soup' \\(the model's tasks: "):
-        score(task, model, model_task="soup")
+    with pytest.raises(ModelError, match="unknown activity 'soup' \\(the model's activities: "):
+        score(task, model, activity="soup")
 
 
 @pytest.mark.parametrize(
     "kwargs, match",
     [
         ({"objective": "a light lunch"}, "unknown objective 'a light lunch'"),
-        ({"model_task": "hot soup"}, "unknown task 'hot soup'"),
+        ({"activity": "hot soup"}, "unknown activity 'hot soup'"),
     ],
 )
 def test_an_objective_or_task_the_model_lacks_is_free_text_which_needs_the_extra(
@@ -373,7 +375,7 @@ def test_oracle_needs_a_sidecar(task):
         (lambda t: t.replace("cup: 0.9, whitener: 0.8", "cup: 0.9, milkk: 0.8"), "unknown class 'milkk'", 13),
         (lambda t: t.replace("in-closed-container: 0.8", "in-closed-container: high"), "must be a number", 28),
         (lambda t: t.replace("version: 1", "version: 7"), "'version' must be 1", 2),
-        (lambda t: t.replace("  tea: {cup: 0.9}\n", ""), "task 'tea' that has no entry", None),
+        (lambda t: t.replace("  tea: {cup: 0.9}\n", ""), "activity 'tea' that has no entry", None),
         (lambda t: t.replace("tasks: {hot: 0.75", "tasks: {hot: [0.75"), "invalid YAML", 9),
         (lambda t: t + "colors: [red]\n", "unknown key 'colors'", None),
     ],

@@ -181,7 +181,7 @@ def test_goal_human_and_cue_events_trigger_once_and_repeats_do_not():
             "human changed: alice (recorded preferences 'alice')",
         ),
         ({"event": "goal", "goal": "(and (coffee-served alice) (stirred paper_cup_1))"}, "goal changed"),
-        ({"event": "cue", "task": "tea"}, "cue: task tea"),
+        ({"event": "cue", "activity": "tea"}, "cue: activity tea"),
         ({"event": "cue", "objective": "serve-coffee-with-creamer"}, "cue: objective serve-coffee-with-creamer"),
     ):
         report = session.handle(event)
@@ -189,7 +189,7 @@ def test_goal_human_and_cue_events_trigger_once_and_repeats_do_not():
         assert_same_as_scratch(session, reason)
         again = session.handle(event)
         assert not again.triggered and again.error is None
-    assert session.options.human == "alice" and session.options.model_task == "tea"
+    assert session.options.human == "alice" and session.options.activity == "tea"
     assert "paper_cup_1" in session.selection.selected  # named in the goal
 
 
@@ -300,7 +300,10 @@ def random_event(rng: random.Random, session: Session, counter: list, new_place_
         return {"event": "add", "object": name, "type": "human", "facts": [["human-at", name, rng.choice(places)]]}
     if roll < 0.96:
         if rng.random() < 0.5:
-            return {"event": "cue", "task": rng.choice(["cold-brew-coffee", "tea", "water", "hot-coffee-with-creamer"])}
+            return {
+                "event": "cue",
+                "activity": rng.choice(["cold-brew-coffee", "tea", "water", "hot-coffee-with-creamer"]),
+            }
         return {"event": "cue", "objective": rng.choice(["drink-at-break", "serve-coffee-with-creamer"])}
     return rng.choice(
         [
@@ -357,7 +360,7 @@ def run_coffee_stream(seed: int, new_place_first: bool = False) -> None:
             import relevance_plan as rp
 
             how = {"objective": session.options.objective, "human": session.options.human}
-            pruned = rp.prune(COFFEE_DOMAIN, session.scene.problem_text(), **how, model_task=session.options.model_task)
+            pruned = rp.prune(COFFEE_DOMAIN, session.scene.problem_text(), **how, activity=session.options.activity)
             assert session.kept == pruned.kept, f"seed {seed} step {step}"
     assert 0 < triggered < 120
     assert (halfway > 0) == new_place_first
@@ -430,13 +433,13 @@ def test_insufficient_cues_keep_the_previous_decision_stale_until_a_cue():
     report = session.handle({"event": "human", "name": "alice", "preferences": None})
     assert report.triggered and not report.sufficient and report.stale
     assert "objective ambiguous" in report.insufficiency
-    assert report.ask.cue == "task" and report.ask.options[0] == "cold-brew-coffee"
+    assert report.ask.cue == "activity" and report.ask.options[0] == "cold-brew-coffee"
     assert report.selection.kept == before  # the previous selection stays in force
     # While stale, element events still trigger but the selection waits for cues.
     report = session.handle({"event": "add", "object": "mug_9", "type": "cup", "facts": stand("mug_9", "table_1")})
-    assert report.triggered and report.stale and session.kept == before and report.ask.cue == "task"
+    assert report.triggered and report.stale and session.kept == before and report.ask.cue == "activity"
     assert_same_as_scratch(session)
-    report = session.handle({"event": "cue", "task": "cold-brew-coffee"})
+    report = session.handle({"event": "cue", "activity": "cold-brew-coffee"})
     assert report.triggered and report.sufficient and not report.stale
     assert "mug_9" in report.added
     assert_same_as_scratch(session)
@@ -448,8 +451,8 @@ def test_no_objective_asks_for_one():
     report = session.handle({"event": "human", "name": "bob", "preferences": None})
     assert not report.sufficient and report.ask.cue == "objective"
     report = session.handle({"event": "cue", "objective": "drink-at-break"})
-    assert not report.sufficient and report.ask.cue == "task"
-    report = session.handle({"event": "cue", "task": "cold-brew-coffee"})
+    assert not report.sufficient and report.ask.cue == "activity"
+    report = session.handle({"event": "cue", "activity": "cold-brew-coffee"})
     assert report.sufficient and report.selection is not None and report.ask.cue == "preference"
 
 
@@ -474,8 +477,8 @@ def test_no_objective_asks_for_one():
         ('{"event": "goal", "goal": "(coffee-served nobody)"}', "goal does not parse"),
         ('{"event": "goal", "goal": "(served alice)"}', "unknown predicate"),
         ('{"event": "human", "name": "alice", "preferences": "carol"}', "unknown preference profile 'carol'"),
-        ('{"event": "cue", "task": "juggling"}', "unknown task"),
-        ('{"event": "cue"}', "either 'task' or 'objective'"),
+        ('{"event": "cue", "activity": "juggling"}', "unknown activity"),
+        ('{"event": "cue"}', "either 'activity' or 'objective'"),
     ],
 )
 def test_invalid_events_are_rejected_and_the_session_carries_on(line, message):
@@ -672,7 +675,7 @@ def test_the_shipped_example_replays_the_paper_demonstration():
     alice, alice_goal, bob_arrives, bob, bob_goal, cue = reports[6:12]
     assert alice.sufficient and "paper_cup_1" not in alice.selection.kept  # she dislikes paper cups
     assert alice.ask is None and bob_arrives.sufficient
-    assert not bob.sufficient and bob.ask.cue == "task" and bob.stale
+    assert not bob.sufficient and bob.ask.cue == "activity" and bob.stale
     assert not bob_goal.sufficient and bob_goal.selection.kept == bob_arrives.selection.kept
     assert cue.sufficient and not cue.stale and cue.ask.cue == "preference" and "bob" in cue.selection.kept
 
@@ -702,7 +705,7 @@ def test_watch_on_the_shipped_example_reports_what_prune_keeps_after_every_event
         current = (snap / "current.pddl").read_text()
         assert current == session.scene.problem_text()
         how = session.options  # the human and task cues the events gave
-        pruned = rp.prune(COFFEE_DOMAIN, current, objective=how.objective, human=how.human, model_task=how.model_task)
+        pruned = rp.prune(COFFEE_DOMAIN, current, objective=how.objective, human=how.human, activity=how.activity)
         shown = {pruned.task.problem.display(n) for n in pruned.kept}
         if report.sufficient:
             assert {session.scene.display[n] for n in session.kept} == shown, line

@@ -33,7 +33,7 @@ from relevance_plan.relevance.scoring.word_matching import (
     ModelVocabulary,
     match_text,
     place_kinds,
-    resolve_model_task,
+    resolve_activity,
     resolve_objective,
     with_placed_kinds,
 )
@@ -399,9 +399,9 @@ def test_a_text_between_two_entries_is_a_question(kitchen):
 
 def test_a_task_is_matched_by_its_name_and_the_classes_it_needs(kitchen):
     stand_in = CountingWords()
-    match = resolve_model_task("make a cup", kitchen, text_model=stand_in)
+    match = resolve_activity("make a cup", kitchen, text_model=stand_in)
     assert match.status is MatchStatus.TOO_CLOSE  # both tasks need a cup...
-    match = resolve_model_task("coffee in a cup", kitchen, text_model=stand_in)
+    match = resolve_activity("coffee in a cup", kitchen, text_model=stand_in)
     assert match.chosen == "make-coffee"  # ...and only one needs coffee
     assert "make coffee: coffee, cup" in stand_in.texts
 
@@ -412,7 +412,7 @@ def test_a_text_spelling_an_entry_needs_no_text_model(kitchen):
             raise AssertionError("the text model was used")
 
     assert resolve_objective("Tea-Time", kitchen, text_model=Refusing()).chosen == "tea-time"
-    assert resolve_model_task("make coffee", kitchen, text_model=Refusing()).similarity == 1.0
+    assert resolve_activity("make coffee", kitchen, text_model=Refusing()).similarity == 1.0
     (mug,) = place_kinds(["mug"], kitchen, text_model=Refusing())
     assert mug.chosen == "cup" and mug.text == "mug"
 
@@ -524,7 +524,7 @@ def test_the_free_text_example_of_the_docs_prints_what_it_says(capsys):
     exec(compile(snippet, "knowledge-model.md", "exec"), {})
     printed = capsys.readouterr().out.splitlines()
     assert printed[0] == "drink-at-break 0.5"
-    assert printed[1].startswith("None 'fix my bicycle' is like no task of the model (nearest: water 0.17, ")
+    assert printed[1].startswith("None 'fix my bicycle' is like no activity of the model (nearest: water 0.17, ")
 
 
 # --------------------------------------------------------------------------- names before words
@@ -543,7 +543,7 @@ def test_a_near_miss_of_a_name_is_a_question_naming_the_closest_names(kitchen, t
     assert "tea-time" in match.insufficiency and match.as_json()["status"] == "near-name"
 
 
-@pytest.mark.parametrize("vocabulary", [ModelVocabulary.OBJECTIVE, ModelVocabulary.TASK])
+@pytest.mark.parametrize("vocabulary", [ModelVocabulary.OBJECTIVE, ModelVocabulary.ACTIVITY])
 def test_one_token_near_no_name_is_no_entry_of_the_model_never_words(kitchen, vocabulary):
     from relevance_plan.errors import ModelError
     from relevance_plan.relevance.scoring.word_understanding import understand
@@ -553,7 +553,7 @@ def test_one_token_near_no_name_is_no_entry_of_the_model_never_words(kitchen, vo
     with pytest.raises(ModelError) as refused:
         understand("nosuch", kitchen, vocabulary)
     names = "tea-time, coffee-time" if vocabulary is ModelVocabulary.OBJECTIVE else "make-tea, make-coffee"
-    assert f"unknown {vocabulary.value} 'nosuch' (the model's {vocabulary.value}s: {names}" in refused.value.message
+    assert f"unknown {vocabulary.value} 'nosuch' (the model's {vocabulary.plural}: {names}" in refused.value.message
     assert refused.value.path == "kitchen.yaml"
 
 
@@ -571,5 +571,5 @@ def test_a_cue_of_one_token_is_a_name_of_a_task_or_an_objective(kitchen):
     near = understand_cue("coffe-time", kitchen)
     assert near.status is MatchStatus.NEAR_NAME and near.vocabulary is ModelVocabulary.OBJECTIVE
     assert understand_cue("make-cofee", kitchen).candidates[0].name == "make-coffee"
-    with pytest.raises(ModelError, match="unknown task or objective 'nosuch'.*make-tea.*tea-time"):
+    with pytest.raises(ModelError, match="unknown activity or objective 'nosuch'.*make-tea.*tea-time"):
         understand_cue("nosuch", kitchen)

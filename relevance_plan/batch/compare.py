@@ -165,10 +165,10 @@ def compare(
 
 
 def check_named_cues(jobs: Sequence[Job], options: PlanOptions) -> None:
-    """Raise what scoring raises (``ModelError``: an objective, task or human the model does not know)
+    """Raise what scoring raises (``ModelError``: an objective, activity or human the model does not know)
     when the cues the options give fail on the first problem of every domain of ``jobs``: such a
     comparison would fail every job, so it fails at once, as ``plan`` does."""
-    if options.objective is None and options.model_task is None and options.human is None:
+    if options.objective is None and options.activity is None and options.human is None:
         return
     from relevance_plan.errors import ModelError
     from relevance_plan.io import load_task

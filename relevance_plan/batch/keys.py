@@ -104,7 +104,7 @@ FINGERPRINT_RULES: dict[str, str] = {
     "economical": "pruning",
     "model_path": "derived",  # as the sha256 of the model file the run would use
     "objective": "pruning",
-    "model_task": "pruning",
+    "activity": "pruning",
     "human": "pruning",
     "place_kinds": "derived",  # when on (keys of runs without it stay as they were)
 }

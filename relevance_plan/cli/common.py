@@ -182,7 +182,7 @@ SCORING_KEYS = (
     "scorer",
     "model_path",
     "objective",
-    "model_task",
+    "activity",
     "human",
     "place_kinds",
     "tau_class",
@@ -192,7 +192,7 @@ SCORING_KEYS = (
 
 
 def scoring_options(command=None, *, with_seed: bool = True):
-    """--scorer --model --objective --task --human --place-kinds --tau-class --tau-element [--seed]."""
+    """--scorer --model --objective --activity --human --place-kinds --tau-class --tau-element [--seed]."""
     if command is None:
         return functools.partial(scoring_options, with_seed=with_seed)
     seed = [click.option("--seed", type=SEED, default=0, show_default=True, help="Seed of the random scorer.")]
@@ -218,10 +218,12 @@ def scoring_options(command=None, *, with_seed: bool = True):
                 " default: matched from the goal.",
             ),
             click.option(
+                "--activity",
                 "--task",
-                "model_task",
+                "activity",
                 default=None,
-                help="Fix the model's task, P(task | objective) = 1: its name, or a cue in words (the 'text' extra).",
+                help="Fix the model's activity, P(activity | objective) = 1: its name, or a cue in words (the 'text'"
+                " extra).  --task is its name until 0.12.",
             ),
             click.option("--human", default=None, help="Apply this human's recorded preferences."),
             click.option(

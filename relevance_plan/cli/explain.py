@@ -30,9 +30,13 @@ def selection_json(result: Selection) -> dict:
         "insufficiency": scores.insufficiency or None,
         "objective": scores.objective,
         "objective_match": matches["objective"].as_json() if "objective" in matches else None,
-        "tasks": scores.task_distribution,
-        "task_match": matches["task"].as_json() if "task" in matches else None,
-        "task_entropy": scores.task_entropy,
+        "activities": scores.activity_distribution,
+        "activity_match": matches["activity"].as_json() if "activity" in matches else None,
+        "activity_entropy": scores.activity_entropy,
+        # their names until 0.12, written for one more release
+        "tasks": scores.activity_distribution,
+        "task_match": matches["activity"].as_json() if "activity" in matches else None,
+        "task_entropy": scores.activity_entropy,
         "kinds_placed": [m.as_json() for m in scores.understood if m.vocabulary.value == "class"],
         "tau_class": result.thresholds.tau_class,
         "tau_element": result.thresholds.tau_element,
@@ -46,11 +50,14 @@ def selection_json(result: Selection) -> dict:
 
 
 def scores_header(scores: ScoreResult) -> list[str]:
-    """The scorer, the objective and tasks, and what free text was understood as."""
+    """The scorer, the objective and activities, and what free text was understood as."""
     header = f"scorer: {scores.scorer}"
     if scores.objective:
-        tasks = ", ".join(f"{t} {p:.2f}" for t, p in sorted(scores.task_distribution.items(), key=lambda i: -i[1]))
-        header += f"   objective: {scores.objective}   tasks: {tasks}   H = {scores.task_entropy:.2f} nats"
+        ranked = sorted(scores.activity_distribution.items(), key=lambda i: -i[1])
+        activities = ", ".join(f"{t} {p:.2f}" for t, p in ranked)
+        header += (
+            f"   objective: {scores.objective}   activities: {activities}   H = {scores.activity_entropy:.2f} nats"
+        )
     return [header, *understood_lines(scores.understood)]
 
 

@@ -50,7 +50,7 @@ class PlanOptions:
     economical: bool = True  # for 'relevance': first try, of many candidates for a role, those a relaxed plan needs
     model_path: str | None = None
     objective: str | None = None
-    model_task: str | None = None
+    activity: str | None = None
     human: str | None = None
     place_kinds: bool = False
     seed: int = 0

@@ -144,7 +144,7 @@ class PlanResult:
     plans: tuple[Plan, ...] = ()  # an anytime planner's valid plans, in the order found (``plan`` is the last)
     deciding_side: str = ""  # with a race: the side that won it (Attempt.wins), "full" or "pruned"; "" if none did
     race: bool = False  # the full problem was planned beside the pruned attempts (planning.race)
-    understood: tuple[WordMatch, ...] = ()  # free text (--objective, --task) and what it was taken for, or asked
+    understood: tuple[WordMatch, ...] = ()  # free text (--objective, --activity) and what it was taken for, or asked
 
     @property
     def first_kept(self) -> int | None:

@@ -34,7 +34,7 @@ class ScoringOptions:
     scorer: str | None = None  # None: 'model' when a knowledge model applies, else 'goal'
     model_path: str | None = None  # None: found next to the domain or among the shipped worlds
     objective: str | None = None
-    model_task: str | None = None  # the knowledge model's task (P(task | objective) = 1)
+    activity: str | None = None  # the knowledge model's task (P(task | objective) = 1)
     human: str | None = None
     place_kinds: bool = False  # kinds and types the model does not list go under their nearest class (free text)
     thresholds: Thresholds = field(default_factory=Thresholds)
@@ -126,7 +126,7 @@ def resolve_knowledge_model(
 
 
 # The options only a knowledge model reads, as the command line spells them.
-CUE_OPTIONS = {"objective": "--objective", "model_task": "--task", "human": "--human", "place_kinds": "--place-kinds"}
+CUE_OPTIONS = {"objective": "--objective", "activity": "--activity", "human": "--human", "place_kinds": "--place-kinds"}
 
 
 def given_cues(options: ScoringOptions) -> list[str]:
@@ -136,7 +136,7 @@ def given_cues(options: ScoringOptions) -> list[str]:
 
 def without_cues(options: ScoringOptions) -> ScoringOptions:
     """``options`` without the knowledge-model options (for a fallback to another scorer that says so)."""
-    return replace(options, objective=None, model_task=None, human=None, place_kinds=False)
+    return replace(options, objective=None, activity=None, human=None, place_kinds=False)
 
 
 def check_cues_used(options: ScoringOptions, scorer: str, domain_name: str) -> None:
@@ -204,7 +204,7 @@ def score_problem(
     request = ScoreRequest(
         knowledge_model=knowledge_model,
         objective=options.objective,
-        model_task=options.model_task,
+        activity=options.activity,
         human=options.human,
         seed=options.seed,
         necessary=necessary,

@@ -203,15 +203,15 @@ class Determination:
         scores = scores or self.updates.scores.result()
         if not scores.sufficient:
             unclear = [m for m in scores.understood if m.chosen is None and m.vocabulary.value != "class"]
-            if unclear:  # --objective or --task in words the model did not understand
+            if unclear:  # --objective or --activity in words the model did not understand
                 options = tuple(candidate.name for candidate in unclear[0].candidates)
                 return Ask(unclear[0].vocabulary.value, unclear[0].insufficiency, options)
             if scores.objective is None:
                 return Ask("objective", "What would you like to do?", tuple(model.objectives))
-            if scores.task_entropy is not None and scores.task_entropy > model.entropy_bound:
-                ranked = sorted(scores.task_distribution.items(), key=lambda item: (-item[1], item[0]))
-                tasks = tuple(name for name, _ in ranked)
-                return Ask("task", "Which would you like: " + ", ".join(tasks) + "?", tasks)
+            if scores.activity_entropy is not None and scores.activity_entropy > model.entropy_bound:
+                ranked = sorted(scores.activity_distribution.items(), key=lambda item: (-item[1], item[0]))
+                activities = tuple(name for name, _ in ranked)
+                return Ask("activity", "Which would you like: " + ", ".join(activities) + "?", activities)
             return Ask("model", scores.insufficiency)
         if self.updates.options.human is not None or self.selection is None or scores.scorer != "model":
             return None

@@ -6,7 +6,8 @@
     {"event": "set", "fluent": [FUNCTION, ARG, ...], "value": NUMBER}   (a numeric fluent's new value)
     {"event": "goal", "goal": "(and ...)"}
     {"event": "human", "name": NAME, "preferences": PROFILE}   (PROFILE may be null: none recorded)
-    {"event": "cue", "task": TASK}   or   {"event": "cue", "objective": NAME}   or   {"event": "cue", "text": WORDS}
+    {"event": "cue", "activity": NAME}   or   {"event": "cue", "objective": NAME}   or   {"event": "cue", "text": WORDS}
+    ("task" for "activity": its name until 0.12, read for one more release)
     {"event": "plan"}
 
 Extra fields are allowed and ignored.  A malformed or impossible event
@@ -84,7 +85,7 @@ class Event:
     value: float | None = None  # ... and its new value
     goal: Formula | None = None
     profile: str | None = None  # human: the model's profile
-    task: str | None = None  # cue
+    activity: str | None = None  # cue
     objective: str | None = None  # cue
     understood: WordMatch | None = None  # cue in words: what it was understood as (or the question)
 
@@ -199,10 +200,12 @@ def _check_human(data: dict, scene: LiveScene, model: KnowledgeModel | None) -> 
 
 
 def _check_cue(data: dict, scene: LiveScene, model: KnowledgeModel | None) -> Event:
-    """A cue names the model's task or objective, or gives the human's words (one field per way)."""
-    task, objective, text = data.get("task"), data.get("objective"), data.get("text")
-    if sum(value is not None for value in (task, objective, text)) != 1:
-        raise EventError("a cue gives either 'task' or 'objective', or 'text' (the human's words)")
+    """A cue names the model's activity or objective, or gives the human's words (one field per way)."""
+    if "task" in data and "activity" in data:
+        raise EventError("give 'activity' only ('task' is its name until 0.12)")
+    activity, objective, text = data.get("activity", data.get("task")), data.get("objective"), data.get("text")
+    if sum(value is not None for value in (activity, objective, text)) != 1:
+        raise EventError("a cue gives either 'activity' or 'objective', or 'text' (the human's words)")
     if model is None:
         raise EventError("cues need a knowledge model (this session has none)")
     if text is not None:
@@ -213,15 +216,15 @@ def _check_cue(data: dict, scene: LiveScene, model: KnowledgeModel | None) -> Ev
                 f" thousand or so); this one holds {len(words):,}"
             )
         return _understood_cue(words, model)
-    if task is not None and (not isinstance(task, str) or task not in model.task_classes):
-        raise EventError(f"unknown task {task!r} (the model has: {', '.join(model.task_classes)})")
+    if activity is not None and (not isinstance(activity, str) or activity not in model.activity_classes):
+        raise EventError(f"unknown activity {activity!r} (the model has: {', '.join(model.activity_classes)})")
     if objective is not None and (not isinstance(objective, str) or objective not in model.objectives):
         raise EventError(f"unknown objective {objective!r} (the model has: {', '.join(model.objectives)})")
-    return Event("cue", task=task, objective=objective)
+    return Event("cue", activity=activity, objective=objective)
 
 
 def _understood_cue(text: str, model: KnowledgeModel) -> Event:
-    """A cue in words, as the model's nearest task, else its nearest objective, else a question
+    """A cue in words, as the model's nearest activity, else its nearest objective, else a question
     (``understanding.understand_cue``); one token that names nothing of the model is refused."""
     from relevance_plan.errors import MissingExtraError, ModelError
     from relevance_plan.relevance.scoring.word_matching import ModelVocabulary
@@ -235,8 +238,8 @@ def _understood_cue(text: str, model: KnowledgeModel) -> Event:
         raise EventError(error.message) from None
     if match.chosen is None:
         return Event("cue", understood=match)
-    if match.vocabulary is ModelVocabulary.TASK:
-        return Event("cue", task=match.chosen, understood=match)
+    if match.vocabulary is ModelVocabulary.ACTIVITY:
+        return Event("cue", activity=match.chosen, understood=match)
     return Event("cue", objective=match.chosen, understood=match)
 
 

@@ -19,7 +19,7 @@ if TYPE_CHECKING:  # the text package is imported only when free text is given
 class Ask:
     """What to ask the human: the missing cue, the question, the choices."""
 
-    cue: str  # "objective", "task", "model" (insufficient cues) or "preference" (which kind)
+    cue: str  # "objective", "activity", "model" (insufficient cues) or "preference" (which kind)
     question: str
     options: tuple = ()
 

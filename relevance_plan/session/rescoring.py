@@ -59,7 +59,7 @@ def request_for(options: ScoringOptions, model: KnowledgeModel | None) -> ScoreR
     return ScoreRequest(
         knowledge_model=model,
         objective=options.objective,
-        model_task=options.model_task,
+        activity=options.activity,
         human=options.human,
         seed=options.seed,
         place_kinds=options.place_kinds,

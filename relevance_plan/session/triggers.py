@@ -70,7 +70,7 @@ def human_changed(change: Change) -> str | None:
 def cue_received(change: Change) -> str | None:
     event = change.event
     if event.kind == "cue" and change.changed:
-        return f"cue: task {event.task}" if event.task else f"cue: objective {event.objective}"
+        return f"cue: activity {event.activity}" if event.activity else f"cue: objective {event.objective}"
     return None
 
 

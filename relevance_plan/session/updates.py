@@ -56,7 +56,7 @@ class SceneUpdates:
             scene.remove_object(event.name)
             if self.served == event.name:  # the human served left: their preferences and cues go too
                 self.served = None
-                options = replace(options, human=None, model_task=None)
+                options = replace(options, human=None, activity=None)
         elif event.fluent is not None:
             assert event.value is not None
             scene.set_value(event.fluent, event.value)
@@ -68,15 +68,15 @@ class SceneUpdates:
             if event.goal != scene.goal:
                 scene.set_goal(event.goal)
         elif event.kind == "human":
-            options = replace(options, human=event.profile, model_task=None)
+            options = replace(options, human=event.profile, activity=None)
             if event.name != self.served:
                 self.served = event.name
                 return self._rescore(scene.take_delta(), options, True)
         elif event.kind == "cue":
-            if event.task is None and event.objective is None:
+            if event.activity is None and event.objective is None:
                 return False, set(), scene.take_delta()  # words not understood: nothing changes, the report asks
-            if event.task is not None:
-                options = replace(options, model_task=event.task)
+            if event.activity is not None:
+                options = replace(options, activity=event.activity)
             else:
                 options = replace(options, objective=event.objective)
             # the cue in force, said again: worth a determination only if none was made yet
@@ -116,7 +116,7 @@ class SceneUpdates:
             self.passing = set()
 
     def understood(self) -> tuple:
-        """What the free text in force (``--objective`` or ``--task`` in words) was taken for."""
+        """What the free text in force (``--objective`` or ``--activity`` in words) was taken for."""
         context = getattr(self.scores, "context", None)  # the live knowledge model's, without a full result
         if context is not None:
             return context.understood

@@ -215,17 +215,20 @@ FREE_TEXT = [
             f"messages/{command[0]}-unknown-{option.strip('-')}-is-the-models-error",
             args=command + (option, "nosuch"),
             codes=(MODEL,),
-            check=says(f"unknown {vocabulary} 'nosuch' (the model's {vocabulary}s: "),
-            quick=command is SCORE and option == "--task",
+            check=says(f"unknown {vocabulary} 'nosuch' (the model's {plural}: "),
+            quick=command is SCORE and option == "--activity",
         )
         for command in (SCORE, ("prune", "D.pddl", "P.pddl", "-o", "out.pddl"), PLAN_WORDS)
-        for option, vocabulary in (("--objective", "objective"), ("--task", "task"))
+        for option, vocabulary, plural in (
+            ("--objective", "objective", "objectives"),
+            ("--activity", "activity", "activities"),
+        )
     ),
     Scenario(
         "messages/watch-cue-of-one-unknown-token",
         args=("watch", "D.pddl", "P.pddl", "--events", "cues.jsonl"),
         setup=files(cues_dot_jsonl='{"event": "cue", "text": "nosuch"}\n{"event": "cue", "text": "te"}\n'),
-        check=says("unknown task or objective 'nosuch'", "names nearest it: tea", where="stdout"),
+        check=says("unknown activity or objective 'nosuch'", "names nearest it: tea", where="stdout"),
     ),
 ]
 

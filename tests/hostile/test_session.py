@@ -42,7 +42,7 @@ def hostile_events() -> dict[str, bytes]:
             "goal-two-lists": json.dumps({"event": "goal", "goal": "(and) (and)"}).encode(),
             "goal-unknown-object": json.dumps({"event": "goal", "goal": "(coffee-served nobody)"}).encode(),
             "human-injection": json.dumps({"event": "human", "name": INJECTED, "preferences": None}).encode(),
-            "cue-list": json.dumps({"event": "cue", "task": ["tea"]}).encode(),
+            "cue-list": json.dumps({"event": "cue", "activity": ["tea"]}).encode(),
             "remove-a-goal-object": json.dumps({"event": "remove", "object": "alice"}).encode(),
             "unknown-kind": json.dumps({"event": "explode"}).encode(),
             "json-array": b"[1, 2, 3]",

@@ -35,7 +35,7 @@ def draft_text(draft: Draft, problems: Sequence[str], notes: Sequence[str] = ())
     lines = _header(draft, problems, notes)
     lines += _scene(draft)
     lines += _objectives(draft)
-    lines += _tasks(draft)
+    lines += _activities(draft)
     lines += _classes(draft)
     lines += ["", "# P(e | h, C, O): factors from where an element is; a condition not listed counts 1.", "placement:"]
     lines += [f"  {condition}: {value:g}  # {why}" for condition, value, why in PLACEMENT]
@@ -82,23 +82,23 @@ def _scene(draft: Draft) -> list[str]:
 
 
 def _objectives(draft: Draft) -> list[str]:
-    lines = ["", "# One objective per set of goal predicates of the given problems, one task each.", "objectives:"]
+    lines = ["", "# One objective per set of goal predicates of the given problems, one activity each.", "objectives:"]
     for objective in draft.objectives.values():
         lines += [
             f"  {name(objective.name)}:",
             f"    # from {', '.join(objective.problems)}",
             f"    description: {json.dumps(objective.description)}",
             f"    goal_predicates: [{', '.join(name(p) for p in objective.goal_predicates)}]",
-            f"    tasks: {{{name(objective.name)}: 1.0}}",
+            f"    activities: {{{name(objective.name)}: 1.0}}",
         ]
     return lines
 
 
-def _tasks(draft: Draft) -> list[str]:
+def _activities(draft: Draft) -> list[str]:
     lines = [
         "",
-        "# P(class | task, objective): high for what the goal names or a role the goal scorer filled.",
-        "tasks:",
+        "# P(class | activity, objective): high for what the goal names or a role the goal scorer filled.",
+        "activities:",
     ]
     for objective in draft.objectives:
         lines.append(f"  {name(objective)}:")

@@ -3,7 +3,7 @@
 From the bottom up (each module imports only modules listed before it)::
 
     scene.py               the scene a knowledge model scores: elements, kinds, places
-    knowledge.py           the knowledge model (YAML): classes, tasks, objectives, humans,
+    knowledge.py           the knowledge model (YAML): classes, activities, objectives, humans,
                            dependencies
     word_matching.py       a person's words mapped to a knowledge model's names by meaning (the
                            sentence encoder is ``relevance_plan.text``, loaded on use)

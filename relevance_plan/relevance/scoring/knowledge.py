@@ -115,15 +115,15 @@ class Objective:
     name: str
     description: str
     goal_predicates: tuple[str, ...]
-    tasks: Mapping[str, float]  # P(T | O)
+    activities: Mapping[str, float]  # P(T | O), T the activity (the paper's task)
 
 
 @dataclass(frozen=True)
 class Human:
     name: str
     description: str
-    objective_tasks: Mapping[str, Mapping[str, float]]  # objective -> P(T | O)
-    task_classes: Mapping[str, Mapping[str, float]]  # task -> class -> P(C | T, O)
+    objective_activities: Mapping[str, Mapping[str, float]]  # objective -> P(T | O)
+    activity_classes: Mapping[str, Mapping[str, float]]  # activity -> class -> P(C | T, O)
     kind_relevance: Mapping[str, Mapping[str, float]]  # class -> kind -> P(h | C, O)
 
 
@@ -151,7 +151,7 @@ class KnowledgeModel:
     unknown_class_relevance: float
     scene: ScenePredicates
     objectives: Mapping[str, Objective]
-    task_classes: Mapping[str, Mapping[str, float]]
+    activity_classes: Mapping[str, Mapping[str, float]]
     classes: Mapping[str, ModelClass]
     placement: Mapping[str, float]
     humans: Mapping[str, Human]
@@ -237,6 +237,7 @@ def parse_knowledge_model(text: str, path: str = "<model>") -> KnowledgeModel:
     check = _Checker(path)
     if not isinstance(data, _LineDict):
         check.fail("the model must be a YAML mapping")
+    _read_old_names(check, data)
     check.known_keys(data, _TOP_LEVEL_KEYS, "the model")
     if data.get("version") != SCHEMA_VERSION:
         check.fail(f"'version' must be {SCHEMA_VERSION}", data, "version")
@@ -251,8 +252,8 @@ def parse_knowledge_model(text: str, path: str = "<model>") -> KnowledgeModel:
     unknown_relevance = _optional_probability(check, defaults, "unknown_class_relevance", 0.05)
     default_kind = _optional_probability(check, defaults, "kind_relevance", 0.5)
     classes = _read_classes(check, check.mapping(data, "classes"), default_kind)
-    task_classes = _read_tasks(check, check.mapping(data, "tasks"), classes)
-    objectives = _read_objectives(check, check.mapping(data, "objectives"), task_classes)
+    activity_classes = _read_activities(check, check.mapping(data, "activities"), classes)
+    objectives = _read_objectives(check, check.mapping(data, "objectives"), activity_classes)
     return KnowledgeModel(
         path=path,
         domain=domain.lower(),
@@ -261,14 +262,14 @@ def parse_knowledge_model(text: str, path: str = "<model>") -> KnowledgeModel:
         unknown_class_relevance=unknown_relevance,
         scene=_read_scene(check, check.mapping(data, "scene", required=False)),
         objectives=MappingProxyType(objectives),
-        task_classes=MappingProxyType(task_classes),
+        activity_classes=MappingProxyType(activity_classes),
         classes=MappingProxyType(classes),
         placement=_read_placement(check, check.mapping(data, "placement", required=False)),
         humans=MappingProxyType(
-            _read_humans(check, check.mapping(data, "humans", required=False), classes, task_classes, objectives)
+            _read_humans(check, check.mapping(data, "humans", required=False), classes, activity_classes, objectives)
         ),
         dependencies=_read_dependencies(check, data),
-        reachability_check=_read_reachability_flag(check, data),
+        reachability_check=_read_flag(check, data, "reachability_check"),
         lines=MappingProxyType(dict(_key_lines(data))),
     )
 
@@ -281,8 +282,6 @@ def _key_lines(mapping: _LineDict, above: tuple[str, ...] = ()) -> Iterator[tupl
             yield from _key_lines(value, (*above, key))
 
 
-OLD_REACHABILITY_KEY = "sufficiency_check"  # the name of ``reachability_check`` until 0.12
-
 _TOP_LEVEL_KEYS = {
     "version",
     "domain",
@@ -291,23 +290,37 @@ _TOP_LEVEL_KEYS = {
     "defaults",
     "scene",
     "objectives",
-    "tasks",
+    "activities",
     "classes",
     "placement",
     "humans",
     "dependencies",
     "reachability_check",
-    OLD_REACHABILITY_KEY,
 }
 
 
-def _read_reachability_flag(check: _Checker, data: _LineDict) -> bool:
-    """``reachability_check``, or the same flag under its name until 0.12 (read for one more release)."""
-    if OLD_REACHABILITY_KEY in data and "reachability_check" in data:
-        check.fail(
-            f"give 'reachability_check' only ('{OLD_REACHABILITY_KEY}' is its old name)", data, OLD_REACHABILITY_KEY
-        )
-    return _read_flag(check, data, OLD_REACHABILITY_KEY if OLD_REACHABILITY_KEY in data else "reachability_check")
+# Keys by their names until 0.12, read for one more release: (the mappings they are in, old, new).
+OLD_NAMES = (
+    ("the model", "sufficiency_check", "reachability_check"),
+    ("the model", "tasks", "activities"),
+    ("objectives", "tasks", "activities"),
+    ("humans", "tasks", "activities"),
+)
+
+
+def _read_old_names(check: _Checker, data: _LineDict) -> None:
+    """Each key of ``OLD_NAMES`` moved to its new name, in place (the model as read, before any check);
+    the two names given together fail."""
+    for where, old, new in OLD_NAMES:
+        section = data.get(where) if where != "the model" else None
+        entries = [data] if where == "the model" else list(section.values()) if isinstance(section, dict) else []
+        for entry in entries:
+            if not isinstance(entry, _LineDict) or old not in entry:
+                continue
+            if new in entry:
+                check.fail(f"give '{new}' only ('{old}' is its name until 0.12)", entry, old)
+            entry.lines[new] = entry.lines[old]
+            entry[new] = entry.pop(old)
 
 
 def _read_flag(check: _Checker, data: _LineDict, key: str) -> bool:
@@ -398,41 +411,45 @@ def _read_classes(check: _Checker, section: _LineDict, default_kind: float) -> d
     return classes
 
 
-def _read_tasks(
+def _read_activities(
     check: _Checker, section: _LineDict, classes: Mapping[str, ModelClass]
 ) -> dict[str, Mapping[str, float]]:
-    task_classes: dict[str, Mapping[str, float]] = {}
-    for task, entry in section.items():
+    activity_classes: dict[str, Mapping[str, float]] = {}
+    for activity, entry in section.items():
         if not isinstance(entry, _LineDict):
-            check.fail(f"task '{task}' must map classes to P(class | task, objective)", section, task)
+            check.fail(f"activity '{activity}' must map classes to P(class | activity, objective)", section, activity)
         for class_name in entry:
             if class_name not in classes:
-                check.fail(f"task '{task}' names unknown class '{class_name}'", entry, class_name)
-        task_classes[task] = check.probabilities(entry, functools.partial(_given, task=task))
-    return task_classes
+                check.fail(f"activity '{activity}' names unknown class '{class_name}'", entry, class_name)
+        activity_classes[activity] = check.probabilities(entry, functools.partial(_given, activity=activity))
+    return activity_classes
 
 
-def _given(class_name: str, task: str) -> str:
-    return f"P({class_name} | {task})"
+def _given(class_name: str, activity: str) -> str:
+    return f"P({class_name} | {activity})"
 
 
-def _read_objectives(check: _Checker, section: _LineDict, task_classes: Mapping[str, Any]) -> dict[str, Objective]:
+def _read_objectives(check: _Checker, section: _LineDict, activity_classes: Mapping[str, Any]) -> dict[str, Objective]:
     objectives: dict[str, Objective] = {}
     for name, entry in section.items():
         if not isinstance(entry, _LineDict):
             check.fail(f"objective '{name}' must be a mapping", section, name)
-        check.known_keys(entry, {"description", "goal_predicates", "tasks"}, f"objective '{name}'")
-        tasks = check.mapping(entry, "tasks")
-        probabilities = check.probabilities(tasks, f"P(task | {name})")
-        _check_distribution(check, tasks, probabilities, f"P(task | {name})")
-        for task in probabilities:
-            if task not in task_classes:
-                check.fail(f"objective '{name}' names task '{task}' that has no entry under 'tasks'", tasks, task)
+        check.known_keys(entry, {"description", "goal_predicates", "activities"}, f"objective '{name}'")
+        activities = check.mapping(entry, "activities")
+        probabilities = check.probabilities(activities, f"P(activity | {name})")
+        _check_distribution(check, activities, probabilities, f"P(activity | {name})")
+        for activity in probabilities:
+            if activity not in activity_classes:
+                check.fail(
+                    f"objective '{name}' names activity '{activity}' that has no entry under 'activities'",
+                    activities,
+                    activity,
+                )
         objectives[name] = Objective(
             name=name,
             description=str(entry.get("description", "")),
             goal_predicates=check.names(entry, "goal_predicates"),
-            tasks=probabilities,
+            activities=probabilities,
         )
     return objectives
 
@@ -452,19 +469,19 @@ def _read_humans(
     check: _Checker,
     section: _LineDict,
     classes: Mapping[str, Any],
-    task_classes: Mapping[str, Any],
+    activity_classes: Mapping[str, Any],
     objectives: Mapping[str, Any],
 ) -> dict[str, Human]:
     humans: dict[str, Human] = {}
     for name, entry in section.items():
         if not isinstance(entry, _LineDict):
             check.fail(f"human '{name}' must be a mapping", section, name)
-        check.known_keys(entry, {"description", "objectives", "tasks", "kind_relevance"}, f"human '{name}'")
+        check.known_keys(entry, {"description", "objectives", "activities", "kind_relevance"}, f"human '{name}'")
         humans[name] = Human(
             name=name,
             description=str(entry.get("description", "")),
-            objective_tasks=MappingProxyType(_human_objectives(check, name, entry, task_classes, objectives)),
-            task_classes=MappingProxyType(_human_tasks(check, name, entry, classes)),
+            objective_activities=MappingProxyType(_human_objectives(check, name, entry, activity_classes, objectives)),
+            activity_classes=MappingProxyType(_human_activities(check, name, entry, classes)),
             kind_relevance=MappingProxyType(_human_kinds(check, name, entry, classes)),
         )
     return humans
@@ -490,32 +507,41 @@ def _human_tables(
 
 
 def _human_objectives(
-    check: _Checker, name: str, entry: _LineDict, task_classes: Mapping[str, Any], objectives: Mapping[str, Any]
+    check: _Checker, name: str, entry: _LineDict, activity_classes: Mapping[str, Any], objectives: Mapping[str, Any]
 ) -> dict[str, Mapping[str, float]]:
     found = {}
-    for objective, tasks in _human_tables(
-        check, name, entry, "objectives", ("objective", objectives), "objective '{}' must map tasks to probabilities"
+    for objective, activities in _human_tables(
+        check,
+        name,
+        entry,
+        "objectives",
+        ("objective", objectives),
+        "objective '{}' must map activities to probabilities",
     ):
-        probabilities = check.probabilities(tasks, f"{name}: P(task | {objective})")
-        _check_distribution(check, tasks, probabilities, f"{name}: P(task | {objective})")
-        for task in probabilities:
-            if task not in task_classes:
-                check.fail(f"human '{name}' names task '{task}' that has no entry under 'tasks'", tasks, task)
+        probabilities = check.probabilities(activities, f"{name}: P(activity | {objective})")
+        _check_distribution(check, activities, probabilities, f"{name}: P(activity | {objective})")
+        for activity in probabilities:
+            if activity not in activity_classes:
+                check.fail(
+                    f"human '{name}' names activity '{activity}' that has no entry under 'activities'",
+                    activities,
+                    activity,
+                )
         found[objective] = probabilities
     return found
 
 
-def _human_tasks(
+def _human_activities(
     check: _Checker, name: str, entry: _LineDict, classes: Mapping[str, Any]
 ) -> dict[str, Mapping[str, float]]:
     found = {}
-    for task, entry_classes in _human_tables(
-        check, name, entry, "tasks", None, "task '{}' must map classes to probabilities"
+    for activity, entry_classes in _human_tables(
+        check, name, entry, "activities", None, "activity '{}' must map classes to probabilities"
     ):
         for class_name in entry_classes:
             if class_name not in classes:
                 check.fail(f"human '{name}' names unknown class '{class_name}'", entry_classes, class_name)
-        found[task] = check.probabilities(entry_classes, f"{name}: P(class | {task})")
+        found[activity] = check.probabilities(entry_classes, f"{name}: P(class | {activity})")
     return found
 
 

@@ -1,6 +1,6 @@
 """What the human says, mapped to a knowledge model's vocabulary by meaning.
 
-Three vocabularies: the model's objectives, its tasks, and its classes (for an
+Three vocabularies: the model's objectives, its activities, and its classes (for an
 object kind the model does not list).  Each entry is embedded as a few short
 phrases taken from what the model already says about it; a text is matched to
 the entry with the most similar phrase (cosine similarity of the text model's
@@ -12,7 +12,7 @@ insufficient cues with the candidates, so the caller asks instead of
 guessing.  A text that spells an entry's name (``drink-at-break``,
 ``drink at break``) is that entry, without the text model.
 
-Names come before words.  For objectives and tasks, a text of one token (no
+Names come before words.  For objectives and activities, a text of one token (no
 space: ``drink-at-brek``, ``nosuch``) is read as a name, never as words: a
 name one or two typing slips from some of the model's names is a question
 naming them (``near-name``), and one near none is a name the model does not
@@ -41,8 +41,18 @@ if TYPE_CHECKING:
 
 class ModelVocabulary(str, Enum):
     OBJECTIVE = "objective"
-    TASK = "task"
+    ACTIVITY = "activity"
     CLASS = "class"
+
+    @property
+    def plural(self) -> str:
+        return (
+            "activities"
+            if self is ModelVocabulary.ACTIVITY
+            else "classes"
+            if self is ModelVocabulary.CLASS
+            else "objectives"
+        )
 
 
 class MatchStatus(str, Enum):
@@ -54,7 +64,7 @@ class MatchStatus(str, Enum):
 
 
 # Vocabularies whose entries a one-token text is taken to name (an object kind is always words).
-NAMED_VOCABULARIES = frozenset({"objective", "task"})
+NAMED_VOCABULARIES = frozenset({"objective", "activity"})
 # A name is near when this share of its letters (at least one) covers the edits between them.
 TYPING_SLIPS = 0.2
 
@@ -73,13 +83,13 @@ class MatchRule:
 DEFAULT_RULES: Mapping[ModelVocabulary, MatchRule] = MappingProxyType(
     {
         ModelVocabulary.OBJECTIVE: MatchRule(floor=0.35, margin=0.03),
-        ModelVocabulary.TASK: MatchRule(floor=0.35, margin=0.03),
+        ModelVocabulary.ACTIVITY: MatchRule(floor=0.35, margin=0.03),
         ModelVocabulary.CLASS: MatchRule(floor=0.55, margin=0.05),
     }
 )
 # Candidates a match reports (the nearest and its runners-up).
 SHOWN_CANDIDATES = 3
-# A class a task needs with at least this probability is named in the task's phrases.
+# A class an activity needs with at least this probability is named in the activity's phrases.
 NEEDED_CLASS = 0.5
 
 
@@ -125,7 +135,7 @@ class WordMatch:
             )
         if self.status is MatchStatus.TOO_CLOSE:
             return (
-                f"'{said}' fits several {self.vocabulary.value}s about equally ({shown};"
+                f"'{said}' fits several {self.vocabulary.plural} about equally ({shown};"
                 f" margin {self.rule.margin:.2f}) — say which"
             )
         if self.status is MatchStatus.NEAR_NAME:
@@ -155,17 +165,17 @@ def plain_words(name: str) -> str:
 def vocabulary_phrases(model: KnowledgeModel, vocabulary: ModelVocabulary) -> Mapping[str, tuple[str, ...]]:
     """Entry name -> the phrases embedded for it, all from the model's own words.
 
-    - an objective: its name and its description (not its tasks' names, which
+    - an objective: its name and its description (not its activities' names, which
       objectives share and which would blur them);
-    - a task: its name, and its name with the classes it most needs;
+    - an activity: its name, and its name with the classes it most needs;
     - a class: its name, its PDDL types and its kinds, each a phrase.
     """
     phrases: dict[str, tuple[str, ...]] = {}
     if vocabulary is ModelVocabulary.OBJECTIVE:
         for name, objective in model.objectives.items():
             phrases[name] = _distinct(plain_words(name), objective.description)
-    elif vocabulary is ModelVocabulary.TASK:
-        for name, classes in model.task_classes.items():
+    elif vocabulary is ModelVocabulary.ACTIVITY:
+        for name, classes in model.activity_classes.items():
             ranked = sorted(classes.items(), key=lambda item: (-item[1], item[0]))
             needed = ", ".join(plain_words(c) for c, p in ranked if p >= NEEDED_CLASS)
             phrases[name] = _distinct(plain_words(name), f"{plain_words(name)}: {needed}" if needed else "")
@@ -231,9 +241,9 @@ def resolve_objective(text: str, model: KnowledgeModel, text_model: TextModel | 
     return match_text(text, model, ModelVocabulary.OBJECTIVE, text_model=text_model)
 
 
-def resolve_model_task(text: str, model: KnowledgeModel, text_model: TextModel | None = None) -> WordMatch:
-    """A cue, as one of the model's tasks (``--task TEXT``, a ``cue`` event's text)."""
-    return match_text(text, model, ModelVocabulary.TASK, text_model=text_model)
+def resolve_activity(text: str, model: KnowledgeModel, text_model: TextModel | None = None) -> WordMatch:
+    """A cue, as one of the model's activities (``--activity TEXT``, a ``cue`` event's text)."""
+    return match_text(text, model, ModelVocabulary.ACTIVITY, text_model=text_model)
 
 
 def place_kinds(

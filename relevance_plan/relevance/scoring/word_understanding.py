@@ -1,4 +1,4 @@
-"""The human's words where the model expects a name: ``--objective TEXT``, ``--task TEXT``, a cue, an unknown kind.
+"""The human's words where the model expects a name: ``--objective TEXT``, ``--activity TEXT``, a cue, an unknown kind.
 
 A value that names an entry of the model is that entry, with no text model
 at all.  One token that names none is a name still: a question naming the
@@ -24,14 +24,14 @@ from relevance_plan.relevance.scoring.word_matching import (
 )
 
 # The option each vocabulary's free text comes from, for messages.
-OPTIONS = {ModelVocabulary.OBJECTIVE: "--objective", ModelVocabulary.TASK: "--task"}
+OPTIONS = {ModelVocabulary.OBJECTIVE: "--objective", ModelVocabulary.ACTIVITY: "--activity"}
 
 
 def entries(model: KnowledgeModel, vocabulary: ModelVocabulary) -> Mapping[str, object]:
     if vocabulary is ModelVocabulary.OBJECTIVE:
         return model.objectives
-    if vocabulary is ModelVocabulary.TASK:
-        return model.task_classes
+    if vocabulary is ModelVocabulary.ACTIVITY:
+        return model.activity_classes
     return model.classes
 
 
@@ -47,29 +47,31 @@ def understand(text: str, model: KnowledgeModel, vocabulary: ModelVocabulary) ->
 
 
 def understand_cue(text: str, model: KnowledgeModel) -> WordMatch:
-    """A cue in the human's words, as the model's task it names or means (a cue is about what to
-    make, as a task cue is), else its objective; else the question, about the task.
+    """A cue in the human's words, as the model's activity it names or means (a cue is about what to
+    make, as an activity cue is), else its objective; else the question, about the activity.
 
     One token is a name of either vocabulary: near some, the question names them; near none,
     :class:`ModelError` listing both."""
-    task = _matched(text, model, ModelVocabulary.TASK)
-    if task.chosen is not None:
-        return task
+    activity = _matched(text, model, ModelVocabulary.ACTIVITY)
+    if activity.chosen is not None:
+        return activity
     objective = _matched(text, model, ModelVocabulary.OBJECTIVE)
     if objective.chosen is not None:
         return objective
-    if task.status is MatchStatus.UNKNOWN_NAME and objective.status is MatchStatus.UNKNOWN_NAME:
-        raise ModelError(_unknown_name(text, model, (ModelVocabulary.TASK, ModelVocabulary.OBJECTIVE)), path=model.path)
-    if task.status is not MatchStatus.NEAR_NAME and objective.status is MatchStatus.NEAR_NAME:
+    if activity.status is MatchStatus.UNKNOWN_NAME and objective.status is MatchStatus.UNKNOWN_NAME:
+        raise ModelError(
+            _unknown_name(text, model, (ModelVocabulary.ACTIVITY, ModelVocabulary.OBJECTIVE)), path=model.path
+        )
+    if activity.status is not MatchStatus.NEAR_NAME and objective.status is MatchStatus.NEAR_NAME:
         return objective
-    return task
+    return activity
 
 
 def _unknown_name(text: str, model: KnowledgeModel, vocabularies: tuple[ModelVocabulary, ...]) -> str:
     """ "unknown objective 'nosuch' (the model's objectives: ...)", for each vocabulary."""
     what = " or ".join(vocabulary.value for vocabulary in vocabularies)
     known = "; ".join(
-        f"the model's {vocabulary.value}s: {', '.join(entries(model, vocabulary)) or 'none'}"
+        f"the model's {vocabulary.plural}: {', '.join(entries(model, vocabulary)) or 'none'}"
         for vocabulary in vocabularies
     )
     return f"unknown {what} '{printable(text, 80)}' ({known}; words of your own take more than one word)"

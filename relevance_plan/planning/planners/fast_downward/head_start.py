@@ -50,9 +50,9 @@ if TYPE_CHECKING:
 # command line: no head start.
 VALUE_OPTIONS = frozenset(
     {
-        "--human", "--keep-work", "--memory-limit", "--method", "--model", "--objective", "--plan-file",
-        "--planner", "--planner-args", "--planner-config", "--scorer", "--seed", "--task", "--tau-class",
-        "--tau-element", "--timeout", "--validator",
+        "--activity", "--human", "--keep-work", "--memory-limit", "--method", "--model", "--objective",
+        "--plan-file", "--planner", "--planner-args", "--planner-config", "--scorer", "--seed", "--task",
+        "--tau-class", "--tau-element", "--timeout", "--validator",
     }
 )  # fmt: skip
 FLAGS = frozenset(

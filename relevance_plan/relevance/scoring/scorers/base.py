@@ -16,7 +16,7 @@ if TYPE_CHECKING:  # the text package is imported only when free text is given
 class ScoreRequest:
     knowledge_model: KnowledgeModel | None = None
     objective: str | None = None
-    model_task: str | None = None  # the knowledge model's task (a kind of activity), not the planning task
+    activity: str | None = None  # the knowledge model's activity (the paper's task T)
     human: str | None = None
     seed: int = 0
     place_kinds: bool = False  # kinds and types the model does not list are placed under their nearest class
@@ -36,8 +36,8 @@ class ScoreResult:
     # one of many candidates for a role (fifty airplanes): a few may do, the first selection keeps those it needs
     alternatives: frozenset[str] = frozenset()
     objective: str | None = None
-    task_distribution: Mapping[str, float] = field(default_factory=dict)
-    task_entropy: float | None = None
+    activity_distribution: Mapping[str, float] = field(default_factory=dict)
+    activity_entropy: float | None = None
     # free text mapped to the model's names (the objective, the task, object kinds), each with its similarity
     understood: tuple[WordMatch, ...] = ()
     # thresholds -> the elements they admit, found once per result (a live session keeps one result

@@ -32,7 +32,7 @@ UNKNOWN_CLASS = "(unknown)"
 MAX_UNKNOWN_SHARE = 0.5
 
 
-def task_entropy(distribution: Mapping[str, float]) -> float:
+def activity_entropy(distribution: Mapping[str, float]) -> float:
     return max(0.0, -sum(p * math.log(p) for p in distribution.values() if p > 0))  # never -0.0
 
 
@@ -90,13 +90,13 @@ class KnowledgeContext:
     understood: tuple[WordMatch, ...] = ()  # the request's free text, mapped to the model's names
     _class_values: dict[str, float] = field(default_factory=dict, repr=False)
 
-    def class_given_task(self, task_name: str, class_name: str) -> float:
+    def class_given_activity(self, activity: str, class_name: str) -> float:
         if self.human is not None:
-            preferred = self.human.task_classes.get(task_name, {})
+            preferred = self.human.activity_classes.get(activity, {})
             if class_name in preferred:
                 return preferred[class_name]
-        # A class a task does not mention is irrelevant to it.
-        return self.knowledge_model.task_classes[task_name].get(class_name, 0.0)
+        # A class an activity does not mention is irrelevant to it.
+        return self.knowledge_model.activity_classes[activity].get(class_name, 0.0)
 
     def kind_relevance(self, model_class: ModelClass, kind: str) -> float:
         human = self.human
@@ -117,14 +117,14 @@ class KnowledgeContext:
                 if model_class.fixed_relevance is not None:
                     value = model_class.fixed_relevance
                 else:
-                    value = sum(self.class_given_task(t, class_name) * p for t, p in self.distribution.items())
+                    value = sum(self.class_given_activity(t, class_name) * p for t, p in self.distribution.items())
             self._class_values[class_name] = value
         return value
 
 
 def knowledge_context(goal: Formula, request: ScoreRequest) -> KnowledgeContext:
     """The objective and P(task | objective) for ``goal`` (a formula) under ``request``; an objective
-    or a task given as free text is mapped to the model's nearest (or asked about: insufficient cues)."""
+    or an activity given as free text is mapped to the model's nearest (or asked about: insufficient cues)."""
     knowledge_model = request.knowledge_model
     if knowledge_model is None:
         raise ModelError("the model scorer needs a knowledge model (--model FILE)")
@@ -140,25 +140,25 @@ def knowledge_context(goal: Formula, request: ScoreRequest) -> KnowledgeContext:
     objective, problem_with_objective = _choose_objective(goal, knowledge_model, request)
     if objective is None:
         return KnowledgeContext(knowledge_model, human, None, {}, None, problem_with_objective, understood)
-    if request.model_task is not None:
-        if request.model_task not in knowledge_model.task_classes:
+    if request.activity is not None:
+        if request.activity not in knowledge_model.activity_classes:
             raise ModelError(
-                f"unknown task '{request.model_task}' (model has: {', '.join(knowledge_model.task_classes)})",
+                f"unknown activity '{request.activity}' (model has: {', '.join(knowledge_model.activity_classes)})",
                 path=knowledge_model.path,
             )
-        distribution = {request.model_task: 1.0}
-    elif human is not None and objective in human.objective_tasks:
-        distribution = dict(human.objective_tasks[objective])
+        distribution = {request.activity: 1.0}
+    elif human is not None and objective in human.objective_activities:
+        distribution = dict(human.objective_activities[objective])
     else:
-        distribution = dict(knowledge_model.objectives[objective].tasks)
-    entropy = task_entropy(distribution)
+        distribution = dict(knowledge_model.objectives[objective].activities)
+    entropy = activity_entropy(distribution)
     insufficiency = ""
     if entropy > knowledge_model.entropy_bound:
         leading = sorted(distribution.items(), key=lambda item: -item[1])[:3]
         shown = ", ".join(f"{name} {p:.2f}" for name, p in leading)
         insufficiency = (
             f"objective ambiguous: {shown} (entropy {entropy:.2f} > {knowledge_model.entropy_bound:.2f} nats)"
-            " — give --task or --human"
+            " — give --activity or --human"
         )
     return KnowledgeContext(knowledge_model, human, objective, distribution, entropy, insufficiency, understood)
 
@@ -166,11 +166,11 @@ def knowledge_context(goal: Formula, request: ScoreRequest) -> KnowledgeContext:
 def _understood(
     request: ScoreRequest, knowledge_model: KnowledgeModel
 ) -> tuple[ScoreRequest, tuple[WordMatch, ...], str]:
-    """The request with its free-text objective and task replaced by the model's names, the
+    """The request with its free-text objective and activity replaced by the model's names, the
     mappings, and why the cues are insufficient when one of them is not clear ("" when both are)."""
-    objective, task = request.objective, request.model_task
+    objective, activity = request.objective, request.activity
     if (objective is None or objective in knowledge_model.objectives) and (
-        task is None or task in knowledge_model.task_classes
+        activity is None or activity in knowledge_model.activity_classes
     ):
         return request, (), ""
     from relevance_plan.relevance.scoring.word_matching import ModelVocabulary
@@ -180,15 +180,15 @@ def _understood(
     if objective is not None and objective not in knowledge_model.objectives:
         matches.append(understand(objective, knowledge_model, ModelVocabulary.OBJECTIVE))
         objective = matches[-1].chosen
-    if task is not None and task not in knowledge_model.task_classes:
-        matches.append(understand(task, knowledge_model, ModelVocabulary.TASK))
-        task = matches[-1].chosen
+    if activity is not None and activity not in knowledge_model.activity_classes:
+        matches.append(understand(activity, knowledge_model, ModelVocabulary.ACTIVITY))
+        activity = matches[-1].chosen
     unclear = [
         f"{match.insufficiency} — say it otherwise, or give {OPTIONS[match.vocabulary]} NAME"
         for match in matches
         if match.chosen is None
     ]
-    return replace(request, objective=objective, model_task=task), tuple(matches), "; ".join(unclear)
+    return replace(request, objective=objective, activity=activity), tuple(matches), "; ".join(unclear)
 
 
 def class_of(element: Element, knowledge_model: KnowledgeModel) -> str:
@@ -245,8 +245,8 @@ def insufficient_result(objects: Iterable[str], context: KnowledgeContext, messa
         sufficient=False,
         insufficiency=message,
         objective=context.objective,
-        task_distribution=dict(context.distribution),
-        task_entropy=context.entropy,
+        activity_distribution=dict(context.distribution),
+        activity_entropy=context.entropy,
         understood=context.understood,
     )
 
@@ -326,8 +326,8 @@ def scored_result(
         explanations=explanations,
         unknown=unknown,
         objective=context.objective,
-        task_distribution=context.distribution,
-        task_entropy=context.entropy,
+        activity_distribution=context.distribution,
+        activity_entropy=context.entropy,
         understood=context.understood,
     )
 
