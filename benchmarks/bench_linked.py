@@ -53,6 +53,10 @@ takes a minute or two.
     python benchmarks/bench_linked.py --sets mazenamo --cells 10x10_hard 10x10_expert --per-cell 5
     python benchmarks/bench_linked.py --sets difficultlogistics gnad --per-cell 3 --seed 1
     python benchmarks/bench_linked.py --sets mazenamo --methods pure relevance learned:out/mazenamo.json
+    python benchmarks/bench_linked.py --sets gnad --analysis-only
+
+``--analysis-only`` plans nothing: it times ``relevance-plan prune`` (read, score, select, write the
+pruned problem) as a whole process on every chosen problem, against the cell's budget.
 """
 
 from __future__ import annotations
@@ -418,11 +422,39 @@ def flax_table(results: dict[tuple[str, str], dict[str, list[Run]]], methods: li
 # --------------------------------------------------------------------------- main
 
 
+def analysis_only(cells: list[Cell]) -> int:
+    """The tool's own analysis on each problem, no planner: ``relevance-plan prune`` (read, score, select,
+    write) as a whole process, its seconds against the cell's budget, and what it keeps."""
+    print("| cell | problem | objects | kept | prune s | share of the budget |")
+    print("|---|---|---|---|---|---|")
+    worst = 0.0
+    with tempfile.TemporaryDirectory(prefix="bench-linked-") as folder:
+        for cell in cells:
+            for problem in cell.problems:
+                out = Path(folder) / "pruned.pddl"
+                command = [*TOOL, "prune", str(problem.domain), str(problem.problem), "-o", str(out), "--json"]
+                timed = run_timed(command, timeout=cell.budget + 30)
+                try:
+                    data = json.loads(timed.stdout)
+                except json.JSONDecodeError:
+                    data = {}
+                kept, total = data.get("objects_kept"), data.get("objects_total")
+                share = timed.seconds / cell.budget
+                worst = max(worst, share)
+                shown = f"{kept} of {total}" if timed.code == 0 else f"failed (exit {timed.code})"
+                row = [cell.name, problem.problem.stem, total, shown, f"{timed.seconds:.2f}", f"{share:.1%}"]
+                print("| " + " | ".join(str(value) for value in row) + " |", flush=True)
+    print(f"\nlargest share of a budget: {worst:.1%} (target: at most 10 %)")
+    return 0
+
+
 def main() -> int:
     args = parse_args()
     cells = chosen_cells(args)
     if not cells:
         raise SystemExit("error: no test cell of the chosen sets matches --cells")  # parse_args checks the names
+    if args.analysis_only:
+        return analysis_only(cells)
     raw_path = args.out or OUT / f"bench_linked-{time.strftime('%Y%m%d-%H%M%S')}.jsonl"
     raw_path.parent.mkdir(parents=True, exist_ok=True)
     has_val = find_validate() is not None
@@ -452,6 +484,11 @@ def parse_args() -> argparse.Namespace:
     )
     parser.add_argument("--timeout", type=float, default=None, help="seconds per run for every cell (default: its own)")
     parser.add_argument("--out", type=Path, default=None, help="the raw output, a JSON object a line (default: out/)")
+    parser.add_argument(
+        "--analysis-only",
+        action="store_true",
+        help="instead: time the tool's own analysis (relevance-plan prune, no planner) against each cell's budget",
+    )
     add_store_option(parser)
     args = parser.parse_args()
     if args.per_cell is not None and args.per_cell < 1:
