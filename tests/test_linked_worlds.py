@@ -13,7 +13,7 @@ from relevance_plan.relevance.analysis.network import NETWORK_MIN_OBJECTS
 from relevance_plan.relevance.analysis.task import PlanningTask
 from relevance_plan.relevance.selection.closure import ConstraintClosure
 from relevance_plan.relevance.selection.neighbourhood import next_ring, ring
-from relevance_plan.relevance.selection.prune import Widening, widen
+from relevance_plan.relevance.selection.prune import Widening, alternative_route, widen
 
 
 def task_of(problem_text: str, domain_text: str = GRID_DOMAIN) -> PlanningTask:
@@ -116,3 +116,16 @@ def test_a_plan_through_a_maze_is_found_on_a_pruned_problem_and_valid_on_the_ori
     result = api.plan(GRID_DOMAIN, problem, timeout=60, race=False)
     assert result.status.value == "solved" and result.valid
     assert result.objects_kept < result.objects_total
+
+
+def test_the_first_widening_adds_another_way_that_avoids_the_failed_one():
+    selection = api.prune(GRID_DOMAIN, grid_problem(8), scorer="goal")
+    task, first = selection.task, selection.kept
+    other = alternative_route(selection, None)
+    anchored = {arg for name in selection.selected for fact in task.init_index.by_object[name] for arg in fact[1:]}
+    avoided = (first & task.network.members) - selection.selected - anchored
+    assert avoided and other and not (other & avoided)
+    # the other way reaches the goal corner from the start on cells of its own
+    assert {cell(0, 0), cell(7, 7)} <= other | selection.selected | anchored
+    widened, _ = widen(selection, Widening(0.5, step=0))
+    assert other - first <= widened.kept and len(widened.kept) < len(task.problem.objects) / 2

@@ -10,7 +10,7 @@
   on comes back, each with its reason, and what a quantifier ranges over stays;
 * **set aside**: alternatives the first attempt bets it can do without, left
   for a later one: blocked ones while a free one of their class is kept
-  (:func:`free_alternatives`), and the spare candidates of a populous role,
+  (:func:`without_blocked_alternatives`), and the spare candidates of a populous role,
   which the repair brings back as a relaxed plan needs them;
 * **repair** (``repair.repair_selection``): a kept set on which the goal is
   unreachable even ignoring deletes gets what a relaxed plan needs;
@@ -103,7 +103,7 @@ class Selection:
     kept: frozenset[str]  # after closure
     restored: tuple[Restored, ...]  # in the order closure found them
     text: str = field(repr=False)  # the pruned problem in the user's own layout
-    set_aside: frozenset[str] = frozenset()  # relevant alternatives left for a later attempt (see free_alternatives)
+    set_aside: frozenset[str] = frozenset()  # alternatives left for a later attempt (without_blocked_alternatives)
     unpruned_reason: str = ""  # why every object is kept, when one is ("" when the selection prunes)
     # goal atom -> the kept object it is met through, where it needs one of its own (``witnesses``)
     witnesses: tuple[tuple[GroundAtom, str], ...] = ()
@@ -193,7 +193,7 @@ def _select(
     """The relevant objects and the extra ones, without what earlier selections set aside."""
     set_aside = settings.set_aside - extra
     selected = (select_relevant(task, scores, thresholds, settings.goal_filter) - set_aside) | extra
-    return _Partial(selected, set_aside)
+    return _Partial(selected & task.problem.objects.keys(), set_aside)
 
 
 def _close(draft: _Partial, closure: ConstraintClosure) -> _Partial:
@@ -204,8 +204,8 @@ def _close(draft: _Partial, closure: ConstraintClosure) -> _Partial:
 def _set_aside_blocked(
     task: PlanningTask, scores: ScoreResult, draft: _Partial, closure: ConstraintClosure
 ) -> _Partial:
-    """Without the blocked alternatives (``free_alternatives``), closed again."""
-    narrowed = free_alternatives(task, scores, draft.selected, draft.restored)
+    """Without the blocked alternatives (``without_blocked_alternatives``), closed again."""
+    narrowed = without_blocked_alternatives(task, scores, draft.selected, draft.restored)
     if narrowed == draft.selected:
         return draft
     return _close(replace(draft, selected=narrowed, set_aside=draft.set_aside | (draft.selected - narrowed)), closure)
@@ -271,7 +271,7 @@ def select_relevant(
     return frozenset(selected)
 
 
-def free_alternatives(
+def without_blocked_alternatives(
     task: PlanningTask, scores: ScoreResult, selected: frozenset[str], restored: Sequence[Restored]
 ) -> frozenset[str]:
     """``selected`` without the objects that something stands on, when another selected
@@ -397,7 +397,9 @@ def _widen_by_rings(
     and repaired again; None when no ring is left to add."""
     task = result.task
     closure = ConstraintClosure.of(task, knowledge_model)
-    around = next_ring(task, closure, result.kept, widening.step)
+    around = alternative_route(result, knowledge_model) - result.kept if widening.step == 0 else frozenset()
+    if not around:
+        around = next_ring(task, closure, result.kept, widening.step)
     if not around:
         return None
     total = len(task.problem.objects)
@@ -410,6 +412,36 @@ def _widen_by_rings(
     settings = PruneSettings(repair=True, full_above=widening.full_above, set_aside=result.set_aside)
     widened = prune_with_scores(task, result.scores, result.thresholds, knowledge_model, grown, settings)
     return widened, grown
+
+
+def alternative_route(result: Selection, knowledge_model: KnowledgeModel | None) -> frozenset[str]:
+    """The network members and other objects of a selection made as the first one is, on the problem
+    without the members ``result`` kept beyond its selected objects and their anchors: another way to
+    the goal, that avoids the one which failed (empty when the goal is out of reach without it)."""
+    task = result.task
+    network = task.network
+    by_object = task.init_index.by_object
+    anchored = {arg for name in result.selected for fact in by_object.get(name, ()) for arg in fact[1:]}
+    avoided = (result.kept & network.members) - result.selected - anchored
+    if not avoided:
+        return frozenset()
+    problem = task.problem
+    objects = {name: kind for name, kind in problem.objects.items() if name not in avoided}
+    init = frozenset(fact for fact in problem.init if not avoided.intersection(fact[1:]))
+    reduced = replace(
+        problem,
+        objects=objects,
+        init=init,
+        init_order={fact: order for fact, order in problem.init_order.items() if fact in init},
+        numeric_init={fact: value for fact, value in problem.numeric_init.items() if fact in init},
+        object_groups=(),
+        init_spans=(),
+    )
+    other_task = PlanningTask(task.domain, reduced, deadline=task.deadline)
+    other = prune_with_scores(other_task, result.scores, result.thresholds, knowledge_model)
+    if not other.removed:  # no way without what was avoided: the whole rest was kept
+        return frozenset()
+    return other.kept
 
 
 def ranked_names(
