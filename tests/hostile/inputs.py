@@ -146,7 +146,7 @@ def slow_model() -> str:
     """A coffee model padded to about 2 MB of mappings (slow for a YAML reader), otherwise valid."""
     text = (REPO / "domains" / "coffee" / "relevance.yaml").read_text()
     padding = "".join(f"  t{i}:\n" + "".join(f"    c{j}: 0.5\n" for j in range(20)) for i in range(8000))
-    return text.replace("tasks:\n", "tasks:\n" + padding, 1)
+    return text.replace("activities:\n", "activities:\n" + padding, 1)
 
 
 # --------------------------------------------------------------------------- small helpers for scenarios
