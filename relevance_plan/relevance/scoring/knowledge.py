@@ -436,15 +436,9 @@ def _read_objectives(check: _Checker, section: _LineDict, activity_classes: Mapp
             check.fail(f"objective '{name}' must be a mapping", section, name)
         check.known_keys(entry, {"description", "goal_predicates", "activities"}, f"objective '{name}'")
         activities = check.mapping(entry, "activities")
-        probabilities = check.probabilities(activities, f"P(activity | {name})")
-        _check_distribution(check, activities, probabilities, f"P(activity | {name})")
-        for activity in probabilities:
-            if activity not in activity_classes:
-                check.fail(
-                    f"objective '{name}' names activity '{activity}' that has no entry under 'activities'",
-                    activities,
-                    activity,
-                )
+        probabilities = _activity_distribution(
+            check, activities, f"P(activity | {name})", f"objective '{name}'", activity_classes
+        )
         objectives[name] = Objective(
             name=name,
             description=str(entry.get("description", "")),
@@ -452,6 +446,19 @@ def _read_objectives(check: _Checker, section: _LineDict, activity_classes: Mapp
             activities=probabilities,
         )
     return objectives
+
+
+def _activity_distribution(
+    check: _Checker, table: _LineDict, what: str, whose: str, activity_classes: Mapping[str, Any]
+) -> Mapping[str, float]:
+    """``table`` as P(activity | objective) (``what``, of ``whose`` entry): probabilities summing to 1, over
+    activities the model has."""
+    probabilities = check.probabilities(table, what)
+    _check_distribution(check, table, probabilities, what)
+    for activity in probabilities:
+        if activity not in activity_classes:
+            check.fail(f"{whose} names activity '{activity}' that has no entry under 'activities'", table, activity)
+    return probabilities
 
 
 def _read_placement(check: _Checker, section: _LineDict) -> Mapping[str, float]:
@@ -518,15 +525,9 @@ def _human_objectives(
         ("objective", objectives),
         "objective '{}' must map activities to probabilities",
     ):
-        probabilities = check.probabilities(activities, f"{name}: P(activity | {objective})")
-        _check_distribution(check, activities, probabilities, f"{name}: P(activity | {objective})")
-        for activity in probabilities:
-            if activity not in activity_classes:
-                check.fail(
-                    f"human '{name}' names activity '{activity}' that has no entry under 'activities'",
-                    activities,
-                    activity,
-                )
+        probabilities = _activity_distribution(
+            check, activities, f"{name}: P(activity | {objective})", f"human '{name}'", activity_classes
+        )
         found[objective] = probabilities
     return found
 
