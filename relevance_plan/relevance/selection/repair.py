@@ -42,7 +42,9 @@ from relevance_plan.relevance.reachability.schemas import MEMBER, Step, relaxed_
 from relevance_plan.relevance.selection.closure import Restored
 
 BUDGET_PER_OBJECT = 5_000  # the budget grows with the problem, as the planner's own grounding does
-REPAIR_SECONDS = 5.0  # and the repair's checks together stop after this long
+REPAIR_SECONDS = 5.0  # and the repair's checks together stop after this long,
+REPAIR_SHARE = 0.2  # or after this share of a longer --timeout (the full problem races beside it)
+BINDINGS_PER_SECOND = 1_000_000  # past the budget per object, time decides: a check tries about 300,000 a second
 REPAIR_MAX_FAN = 4.0  # repair candidates are ranked by hops that do not pass from a class-like value to its members
 DOMINANCE_TRIES = 8  # kept objects of its class a repair candidate is compared with
 PAIRWISE_UP_TO = 64  # added objects of one class compared each with all others after the repair
@@ -85,17 +87,20 @@ def repair_selection(
     lacks, then by score, then by hops from the kept objects in the initial
     state; ``close`` is closure over constraints (it returns the closed set
     and its own reasons).  ``budget`` bounds each check (default: grows with
-    the problem); past ``give_up_above`` kept objects the search stops and
+    the problem, and with the time the checks may take); past ``give_up_above`` kept objects the search stops and
     returns what it has.
     """
     total = len(task.problem.objects)
+    now = time.monotonic()
+    seconds = REPAIR_SECONDS if task.deadline is None else max(REPAIR_SECONDS, REPAIR_SHARE * (task.deadline - now))
+    bindings = max(DEFAULT_BUDGET, BUDGET_PER_OBJECT * total, int(BINDINGS_PER_SECOND * seconds))
     repair = _Repair(
         task,
         kept,
         scores,
         close,
-        max(DEFAULT_BUDGET, BUDGET_PER_OBJECT * total) if budget is None else budget,
-        min(time.monotonic() + REPAIR_SECONDS, math.inf if task.deadline is None else task.deadline),
+        bindings if budget is None else budget,
+        min(now + seconds, math.inf if task.deadline is None else task.deadline),
         total if give_up_above is None else give_up_above,
     )
     reads = RepairReads(set(kept), set())
