@@ -50,6 +50,7 @@ OPPOSITE = {"Up": "Down", "Down": "Up", "Left": "Right", "Right": "Left"}
 LINKS = {"Up": "upTo", "Down": "downTo", "Left": "leftTo", "Right": "rightTo"}  # (LINK a b): a lies that way of b
 
 Cell = tuple[int, int]
+DOMAIN = Path(__file__).resolve().parent / "corpus" / "flax" / "mazenamo_problems" / "domain.pddl"
 
 
 @dataclass(frozen=True)
@@ -137,12 +138,17 @@ def _place_on_route(rng: random.Random, route: list[Cell], count: int, inside: s
     return placed, kept_free
 
 
-def draw_maze(size: int, level: str, seed: int, index: int) -> Maze:
-    """Maze ``index`` of (size, level, seed); the same arguments give the same maze."""
+def check_maze(size: int, level: str) -> None:
+    """ValueError for a size or level no maze has."""
     if size < 6:
         raise ValueError(f"size {size}: a maze needs at least 6 cells a side")
     if level not in OBSTACLES_ON_ROUTE:
         raise ValueError(f"level {level!r}: choose one of {', '.join(LEVELS)}")
+
+
+def draw_maze(size: int, level: str, seed: int, index: int) -> Maze:
+    """Maze ``index`` of (size, level, seed); the same arguments give the same maze."""
+    check_maze(size, level)
     rng = maze_rng(size, level, seed, index)
     start, goal = _corner_cell(rng, size, far=False), _corner_cell(rng, size, far=True)
     route = _cheapest_route(rng, size, start, goal)
@@ -224,6 +230,7 @@ def witness_plan(maze: Maze) -> list[str]:
 def write_mazes(folder: Path, domain: Path, size: int, level: str, seed: int, count: int) -> list[Path]:
     """``count`` mazes of (size, level, seed) as problem files in ``folder`` beside a copy of ``domain``;
     each with its witness plan (``NAME.witness.plan``).  The folder must be new or empty (a scratch folder)."""
+    check_maze(size, level)  # before anything is written
     folder.mkdir(parents=True, exist_ok=True)
     if any(folder.iterdir()):
         raise ValueError(f"{folder}: not empty (mazes are written to a new folder)")
@@ -249,9 +256,8 @@ def main() -> int:
     parser.add_argument("--count", type=int, default=5)
     parser.add_argument("--seed", type=int, default=0)
     args = parser.parse_args()
-    domain = Path(__file__).resolve().parent / "corpus" / "flax" / "mazenamo_problems" / "domain.pddl"
     try:
-        paths = write_mazes(args.folder, domain, args.size, args.level, args.seed, args.count)
+        paths = write_mazes(args.folder, DOMAIN, args.size, args.level, args.seed, args.count)
     except ValueError as error:
         parser.error(str(error))
     print(f"wrote {len(paths)} mazes to {args.folder}")
